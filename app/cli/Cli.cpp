@@ -1,0 +1,76 @@
+#include "app/cli/Cli.h"
+
+#include "app/cli/Commands.h"
+#include "app/cli/Progress.h"
+#include "dynamics/core/Errors.h"
+
+#include <fmt/core.h>
+
+namespace rv {
+
+Scene SceneArgs::load() const {
+  std::vector<SceneOverride> overrides;
+  for (const auto& s : sets) overrides.push_back(parseOverride(s));
+  return loadScene(scene, overrides);
+}
+
+void addSceneArgs(CLI::App* cmd, SceneArgs& args) {
+  cmd->add_option("scene", args.scene, "scene file (scenes/<problem>.json)")->required();
+  cmd->add_option("--set", args.sets, "override a parameter or scene field: ID=VALUE (repeatable)")
+      ->type_name("ID=VALUE")
+      ->take_all()
+      ->allow_extra_args(false);
+}
+
+std::pair<int, int> parseSize(const std::string& text) {
+  int w = 0, h = 0;
+  char x = 0, extra = 0;
+  if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') || w < 16 ||
+      h < 16 || w > 16384 || h > 16384)
+    throw InputError("--size " + text + ": expected WIDTHxHEIGHT, each in [16, 16384]");
+  return {w, h};
+}
+
+int runCli(int argc, char** argv, const GuiLauncher& gui) {
+  CLI::App app{"rollviz: bodies rolling without slipping, and the tools of nonlinear dynamics"};
+  app.require_subcommand(0, 1);
+  const std::vector<Command> commands{addListCommand(app), addDescribeCommand(app), addIntegrateCommand(app),
+                                      addRenderCommand(app), addVideoCommand(app)};
+  GuiOptions guiOptions;
+  if (gui) {
+    auto* cmd = app.add_subcommand("gui", "open the GUI on a scene (the default with no arguments)");
+    cmd->add_option("scene", guiOptions.scene, "scene file");
+    cmd->add_option("--screenshot", guiOptions.screenshot, "save a PNG of the window before quitting");
+    cmd->add_option("--quit-after", guiOptions.quitAfter, "quit after this many seconds");
+  }
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e); // prints the message
+    return 2;
+  }
+  installInterruptHandler();
+  try {
+    for (const auto& c : commands)
+      if (c.app->parsed()) return c.run();
+    if (!gui) {
+      fmt::print(stderr, "rollviz-osmesa has no GUI: give a command\n{}", app.help());
+      return 2;
+    }
+    return gui(argc, argv, guiOptions);
+  } catch (const InputError& e) {
+    fmt::print(stderr, "rollviz: {}\n", e.what());
+    return 2;
+  } catch (const ComputationError& e) {
+    fmt::print(stderr, "rollviz: failed: {}\n", e.what());
+    return 1;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "rollviz: failed: {}\n", e.what());
+    return 1;
+  }
+}
+
+} // namespace rv

@@ -1,0 +1,22 @@
+// Cli.h -- the `rollviz` command line (design.md "Command line"): list, describe, integrate, render, video.
+// Exit status: 0 done, 1 a computation that did not succeed, 2 bad input; 130 after Ctrl-C (work kept).
+#pragma once
+#include <functional>
+#include <string>
+
+namespace rv {
+
+/// What `rollviz gui` was asked for.
+struct GuiOptions {
+  std::string scene;      ///< scene file; empty: the last scene, else the default one
+  std::string screenshot; ///< when set: save a screenshot of the window there before quitting
+  double quitAfter = 0;   ///< when > 0: quit after this many seconds (smoke tests, scripted demos)
+};
+
+/// Starts the GUI; null where there is no GUI.
+using GuiLauncher = std::function<int(int argc, char** argv, const GuiOptions& options)>;
+
+/// Runs the command line; returns the exit status.
+int runCli(int argc, char** argv, const GuiLauncher& gui);
+
+} // namespace rv

@@ -1,0 +1,40 @@
+#include "app/cli/Progress.h"
+
+#include <atomic>
+#include <csignal>
+#include <cstdio>
+#include <unistd.h>
+
+namespace rv {
+
+namespace {
+std::atomic<bool> g_interrupted{false};
+extern "C" void onSigint(int) { g_interrupted.store(true); }
+} // namespace
+
+void installInterruptHandler() {
+  struct sigaction sa {};
+  sa.sa_handler = onSigint;
+  sigemptyset(&sa.sa_mask);
+  sigaction(SIGINT, &sa, nullptr);
+}
+
+bool interrupted() { return g_interrupted.load(); }
+
+Progress::Progress(std::string label) : label_(std::move(label)), tty_(::isatty(STDERR_FILENO) == 1) {}
+
+Progress::~Progress() {
+  if (tty_ && last_ >= 0) std::fprintf(stderr, "\r\033[K");
+}
+
+void Progress::update(double fraction) {
+  if (!tty_) return;
+  const int pct = static_cast<int>(fraction * 100);
+  const auto now = std::chrono::steady_clock::now();
+  if (pct == last_ || now - shown_ < std::chrono::milliseconds(200)) return;
+  last_ = pct, shown_ = now;
+  std::fprintf(stderr, "\r%s: %3d%%", label_.c_str(), pct);
+  std::fflush(stderr);
+}
+
+} // namespace rv

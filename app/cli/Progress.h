@@ -1,0 +1,26 @@
+// Progress.h -- progress on stderr when it is a terminal, and Ctrl-C as a request to stop cleanly.
+#pragma once
+#include <chrono>
+#include <string>
+
+namespace rv {
+
+/// Installs a SIGINT handler that only sets a flag; long loops poll interrupted().
+void installInterruptHandler();
+bool interrupted();
+
+/// Prints "label: 42%" on stderr at most a few times a second, only when stderr is a terminal.
+class Progress {
+public:
+  explicit Progress(std::string label);
+  ~Progress();
+  void update(double fraction);
+
+private:
+  std::string label_;
+  bool tty_;
+  int last_ = -1;
+  std::chrono::steady_clock::time_point shown_{};
+};
+
+} // namespace rv

@@ -1,0 +1,89 @@
+// RenderCommands.cpp -- `rollviz render` (PNG) and `rollviz video` (MP4), headless on the linked backend.
+#include "app/cli/Commands.h"
+#include "app/cli/Progress.h"
+#include "dynamics/core/Errors.h"
+#include "dynamics/io/AtomicFile.h"
+#include "render/Snapshot.h"
+#include "render/VisualScene.h"
+#include "render/context/HeadlessContext.h"
+#include "render/video/VideoExport.h"
+
+#include <cmath>
+#include <fmt/core.h>
+#include <memory>
+#include <vtkRenderWindow.h>
+
+namespace rv {
+
+namespace {
+struct RenderOptions {
+  SceneArgs scene;
+  std::string output, size = "1280x720";
+  double time = 10;
+};
+struct VideoOptions {
+  SceneArgs scene;
+  std::string output, size = "1280x720", encoder = "libx264";
+  double duration = 5, speed = 0;
+  int fps = 25;
+};
+} // namespace
+
+Command addRenderCommand(CLI::App& app) {
+  auto* cmd = app.add_subcommand("render", "render the 3D view of a scene at a time into a PNG");
+  auto o = std::make_shared<RenderOptions>();
+  addSceneArgs(cmd, o->scene);
+  cmd->add_option("-o,--output", o->output, "PNG file")->required();
+  cmd->add_option("--size", o->size, "picture size WIDTHxHEIGHT")->capture_default_str();
+  cmd->add_option("--time", o->time, "simulation time to show (the trace covers [0, time])")->capture_default_str();
+  return {cmd, [o] {
+            const auto [w, h] = parseSize(o->size);
+            if (!(std::isfinite(o->time) && o->time >= 0)) throw InputError("--time: must be a finite number >= 0");
+            const Scene scene = o->scene.load();
+            checkWritable(o->output, "-o");
+            auto integrator = scene.startIntegrator();
+            VisualScene visual(*scene.model, scene.view, scene.initialState);
+            Eigen::VectorXd x;
+            playTo(visual, *integrator, o->time, x);
+            auto ctx = createHeadlessContext(w, h);
+            ctx->window()->AddRenderer(visual.renderer());
+            writePng(ctx->window(), o->output, "-o");
+            ctx->window()->RemoveRenderer(visual.renderer());
+            return 0;
+          }};
+}
+
+Command addVideoCommand(CLI::App& app) {
+  auto* cmd = app.add_subcommand("video", "record the 3D view of a scene into an MP4 (H.264)");
+  auto o = std::make_shared<VideoOptions>();
+  addSceneArgs(cmd, o->scene);
+  cmd->add_option("-o,--output", o->output, "MP4 file")->required();
+  cmd->add_option("--duration", o->duration, "seconds of video")->capture_default_str();
+  cmd->add_option("--fps", o->fps, "frames per second")->capture_default_str();
+  cmd->add_option("--size", o->size, "frame size WIDTHxHEIGHT (even numbers)")->capture_default_str();
+  cmd->add_option("--speed", o->speed, "simulation seconds per video second (default: the scene's view.speed)");
+  cmd->add_option("--encoder", o->encoder, "libav encoder (libx264, or mpeg4)")->capture_default_str();
+  return {cmd, [o] {
+            const auto [w, h] = parseSize(o->size);
+            if (!(std::isfinite(o->duration) && o->duration > 0)) throw InputError("--duration: must be positive");
+            if (o->fps < 1 || o->fps > 240) throw InputError("--fps: must lie in [1, 240]");
+            if (w % 2 || h % 2) throw InputError("--size " + o->size + ": a video needs an even width and height");
+            const Scene scene = o->scene.load();
+            checkWritable(o->output, "-o");
+            auto integrator = scene.startIntegrator();
+            VisualScene visual(*scene.model, scene.view, scene.initialState);
+            auto ctx = createHeadlessContext(w, h);
+            ctx->window()->AddRenderer(visual.renderer());
+            VideoSpec spec{.path = o->output, .width = w, .height = h, .fps = o->fps, .duration = o->duration,
+                           .speed = o->speed > 0 ? o->speed : scene.view.speed, .encoder = o->encoder};
+            Progress progress("video");
+            const long frames = exportVideo(visual, ctx->window(), *integrator, spec, [&](long k, long n) {
+              progress.update(static_cast<double>(k) / n);
+              return !interrupted();
+            });
+            ctx->window()->RemoveRenderer(visual.renderer());
+            return interrupted() && frames < std::lround(o->duration * o->fps) ? 130 : 0;
+          }};
+}
+
+} // namespace rv

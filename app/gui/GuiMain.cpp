@@ -1,0 +1,57 @@
+#include "app/gui/GuiMain.h"
+
+#include "app/gui/MainWindow.h"
+#include "app/gui/QtVtkWidget.h"
+#include "scenes/SceneLoader.h"
+
+#include <QApplication>
+#include <QFileInfo>
+#include <QSettings>
+#include <QTimer>
+#include <cstdio>
+#include <cstdlib>
+
+namespace rv {
+
+int runGui(int argc, char** argv, const GuiOptions& options) {
+  const auto set = [](const char* name) { return std::getenv(name) && *std::getenv(name); };
+  if (!set("DISPLAY") && !set("WAYLAND_DISPLAY")) {
+    std::fprintf(stderr, "rollviz: no display to open a window on; headless work goes through "
+                         "`rollviz render` and `rollviz video` (see rollviz --help)\n");
+    return 1;
+  }
+  if (!options.scene.empty()) {
+    try {
+      loadScene(options.scene); // report a bad scene here, on stderr, rather than in a dialog
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "rollviz: %s\n", e.what());
+      return 2;
+    }
+  }
+  qputenv("QT_XCB_GL_INTEGRATION", "xcb_glx"); // VTK 9.1's GLEW needs a GLX context
+  if (!qEnvironmentVariableIsSet("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "xcb");
+  QSurfaceFormat::setDefaultFormat(QtVtkWidget::defaultFormat());
+  QApplication app(argc, argv);
+  QApplication::setOrganizationName("rollviz");
+  QApplication::setApplicationName("rollviz");
+
+  MainWindow window;
+  window.show();
+  QString scene = QString::fromStdString(options.scene);
+  if (scene.isEmpty()) {
+    const QString last = QSettings().value("lastScene").toString();
+    scene = !last.isEmpty() && QFileInfo::exists(last) ? last
+                                                       : QString::fromStdString(defaultScenePath("chaplygin_ball"));
+  }
+  window.openScene(scene);
+
+  if (options.quitAfter > 0)
+    QTimer::singleShot(static_cast<int>(options.quitAfter * 1000), &app, [&] {
+      if (!options.screenshot.empty() && !window.grab().save(QString::fromStdString(options.screenshot), "PNG"))
+        std::fprintf(stderr, "rollviz: cannot write %s\n", options.screenshot.c_str());
+      app.quit();
+    });
+  return app.exec();
+}
+
+} // namespace rv

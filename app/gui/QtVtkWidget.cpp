@@ -1,0 +1,162 @@
+// QtVtkWidget.cpp -- pitfalls solved here (../shared/stack/README.md):
+// 1. VTK's make-current hook calls context()->makeCurrent(surface), never QOpenGLWidget::makeCurrent(),
+//    which rebinds Qt's FBO and breaks VTK's (GL error 0x506);
+// 2. chart interactor styles repaint through interactor timers: they become QTimers;
+// 3. alpha is cleared to 1 after the blit, or Qt blends the widget with what is behind it;
+// 4. VTK renders into its own FBO (no blit) and paintGL blits it into defaultFramebufferObject().
+#include "app/gui/QtVtkWidget.h"
+
+#include <QMouseEvent>
+#include <QOpenGLContext>
+#include <QOpenGLExtraFunctions>
+#include <QTimer>
+#include <QWheelEvent>
+#include <vtkCallbackCommand.h>
+#include <vtkInteractorStyleTrackballCamera.h>
+#include <vtkOpenGLFramebufferObject.h>
+#include <vtkOpenGLState.h>
+
+namespace rv {
+
+namespace {
+unsigned long pressEvent(Qt::MouseButton b) { // vtk *PressEvent; +1 is the matching *ReleaseEvent
+  return b == Qt::LeftButton     ? vtkCommand::LeftButtonPressEvent
+         : b == Qt::RightButton  ? vtkCommand::RightButtonPressEvent
+         : b == Qt::MiddleButton ? vtkCommand::MiddleButtonPressEvent
+                                 : vtkCommand::NoEvent;
+}
+} // namespace
+
+QSurfaceFormat QtVtkWidget::defaultFormat() {
+  QSurfaceFormat f;
+  f.setRenderableType(QSurfaceFormat::OpenGL);
+  f.setVersion(3, 2);
+  f.setProfile(QSurfaceFormat::CoreProfile);
+  f.setAlphaBufferSize(8);
+  f.setDepthBufferSize(24);
+  f.setSamples(0);
+  return f;
+}
+
+QtVtkWidget::QtVtkWidget(QWidget* parent)
+    : QOpenGLWidget(parent), window_(vtkSmartPointer<vtkGenericOpenGLRenderWindow>::New()),
+      interactor_(vtkSmartPointer<vtkGenericRenderWindowInteractor>::New()) {
+  setFormat(defaultFormat());
+  setMouseTracking(true);
+  setFocusPolicy(Qt::StrongFocus);
+  window_->SetReadyForRendering(false); // until initializeGL()
+  window_->SetFrameBlitModeToNoBlit();
+  interactor_->SetRenderWindow(window_);
+  interactor_->EnableRenderOff(); // iren->Render() only fires RenderEvent -> update()
+  vtkNew<vtkInteractorStyleTrackballCamera> style;
+  interactor_->SetInteractorStyle(style);
+  interactor_->Initialize();
+  vtkNew<vtkCallbackCommand> cb;
+  cb->SetCallback(&QtVtkWidget::onVtkEvent);
+  cb->SetClientData(this);
+  for (unsigned long ev :
+       {vtkCommand::WindowMakeCurrentEvent, vtkCommand::WindowIsCurrentEvent, vtkCommand::WindowFrameEvent})
+    window_->AddObserver(ev, cb);
+  for (unsigned long ev : {vtkCommand::RenderEvent, vtkCommand::CreateTimerEvent, vtkCommand::DestroyTimerEvent})
+    interactor_->AddObserver(ev, cb);
+}
+
+QtVtkWidget::~QtVtkWidget() {
+  makeCurrent();
+  window_->Finalize();
+  doneCurrent();
+}
+
+void QtVtkWidget::onVtkEvent(vtkObject*, unsigned long ev, void* cd, void* call) {
+  auto* self = static_cast<QtVtkWidget*>(cd);
+  if (ev == vtkCommand::WindowMakeCurrentEvent) {
+    self->context()->makeCurrent(self->context()->surface());
+  } else if (ev == vtkCommand::WindowIsCurrentEvent) {
+    *static_cast<bool*>(call) = QOpenGLContext::currentContext() == self->context();
+  } else if (ev == vtkCommand::RenderEvent) {
+    self->update();
+  } else if (ev == vtkCommand::WindowFrameEvent && !self->inPaint_) { // rendered outside paintGL: blit
+    self->skipRender_ = true;
+    self->update();
+  } else if (ev == vtkCommand::CreateTimerEvent) {
+    const int id = *static_cast<int*>(call);
+    auto* t = new QTimer(self);
+    t->setSingleShot(self->interactor_->GetTimerEventType() == vtkRenderWindowInteractor::OneShotTimer);
+    QObject::connect(t, &QTimer::timeout, self, [self, id, t] {
+      int tid = id;
+      if (t->isSingleShot()) {
+        self->timers_.erase(id);
+        t->deleteLater();
+      }
+      self->interactor_->InvokeEvent(vtkCommand::TimerEvent, &tid);
+    });
+    self->timers_[id] = t;
+    t->start(int(self->interactor_->GetTimerEventDuration()));
+  } else if (ev == vtkCommand::DestroyTimerEvent) {
+    auto it = self->timers_.find(*static_cast<int*>(call));
+    if (it != self->timers_.end()) {
+      it->second->deleteLater();
+      self->timers_.erase(it);
+    }
+  }
+}
+
+void QtVtkWidget::initializeGL() {
+  window_->SetOwnContext(false);
+  window_->SetForceMaximumHardwareLineWidth(1);
+  window_->SetReadyForRendering(true);
+  window_->OpenGLInitContext(); // glewInit() on Qt's GLX context
+}
+
+void QtVtkWidget::resizeGL(int, int) {
+  interactor_->UpdateSize(int(width() * devicePixelRatioF() + 0.5), int(height() * devicePixelRatioF() + 0.5));
+}
+
+void QtVtkWidget::paintGL() {
+  auto* st = window_->GetState();
+  st->Reset();
+  st->Push();
+  inPaint_ = true;
+  if (!skipRender_) window_->Render();
+  inPaint_ = skipRender_ = false;
+  auto* f = context()->extraFunctions();
+  f->glBindFramebuffer(GL_DRAW_FRAMEBUFFER, defaultFramebufferObject());
+  const GLenum buf = GL_COLOR_ATTACHMENT0;
+  f->glDrawBuffers(1, &buf);
+  st->vtkglDisable(GL_SCISSOR_TEST);
+  const int* sz = window_->GetRenderFramebuffer()->GetLastSize();
+  const int dw = int(width() * devicePixelRatioF() + 0.5), dh = int(height() * devicePixelRatioF() + 0.5);
+  window_->BlitDisplayFramebuffer(0, 0, 0, sz[0], sz[1], 0, 0, dw, dh, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+  f->glViewport(0, 0, dw, dh); // alpha := 1, else Qt blends the widget with what is behind it
+  f->glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_TRUE);
+  f->glClearColor(0, 0, 0, 1);
+  f->glClear(GL_COLOR_BUFFER_BIT);
+  f->glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  st->Pop();
+}
+
+void QtVtkWidget::mousePressEvent(QMouseEvent* e) { mouse(e, pressEvent(e->button())); }
+void QtVtkWidget::mouseReleaseEvent(QMouseEvent* e) {
+  const unsigned long p = pressEvent(e->button());
+  mouse(e, p == vtkCommand::NoEvent ? p : p + 1);
+}
+void QtVtkWidget::mouseMoveEvent(QMouseEvent* e) { mouse(e, vtkCommand::MouseMoveEvent); }
+
+void QtVtkWidget::mouse(QMouseEvent* e, unsigned long vtkEvent) {
+  if (vtkEvent == vtkCommand::NoEvent) return;
+  const double dpr = devicePixelRatioF();
+  interactor_->SetEventInformationFlipY(int(e->position().x() * dpr + 0.5), int(e->position().y() * dpr + 0.5),
+                                        e->modifiers() & Qt::ControlModifier ? 1 : 0,
+                                        e->modifiers() & Qt::ShiftModifier ? 1 : 0);
+  interactor_->InvokeEvent(vtkEvent, e);
+}
+
+void QtVtkWidget::wheelEvent(QWheelEvent* e) {
+  const double dpr = devicePixelRatioF();
+  interactor_->SetEventInformationFlipY(int(e->position().x() * dpr + 0.5), int(e->position().y() * dpr + 0.5));
+  if (e->angleDelta().y() != 0)
+    interactor_->InvokeEvent(
+        e->angleDelta().y() > 0 ? vtkCommand::MouseWheelForwardEvent : vtkCommand::MouseWheelBackwardEvent, e);
+}
+
+} // namespace rv

@@ -1,0 +1,45 @@
+// QtVtkWidget.h -- a Qt 6 QOpenGLWidget hosting a vtkGenericOpenGLRenderWindow (Debian's QVTK widget is
+// built for Qt 5 and cannot share a process with Qt 6). Mouse and wheel go to a VTK interactor.
+#pragma once
+#include <QOpenGLWidget>
+#include <map>
+#include <vtkCommand.h>
+#include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkGenericRenderWindowInteractor.h>
+#include <vtkSmartPointer.h>
+
+class QMouseEvent;
+class QTimer;
+class QWheelEvent;
+
+namespace rv {
+
+class QtVtkWidget : public QOpenGLWidget {
+  Q_OBJECT
+public:
+  explicit QtVtkWidget(QWidget* parent = nullptr);
+  ~QtVtkWidget() override;
+  vtkGenericOpenGLRenderWindow* renderWindow() const { return window_; }
+  vtkGenericRenderWindowInteractor* interactor() const { return interactor_; }
+  /// OpenGL 3.2 core, no multisampling: what VTK 9.1 needs. Set as the default before QApplication.
+  static QSurfaceFormat defaultFormat();
+
+protected:
+  void initializeGL() override;
+  void resizeGL(int, int) override;
+  void paintGL() override;
+  void mousePressEvent(QMouseEvent* e) override;
+  void mouseReleaseEvent(QMouseEvent* e) override;
+  void mouseMoveEvent(QMouseEvent* e) override;
+  void wheelEvent(QWheelEvent* e) override;
+
+private:
+  void mouse(QMouseEvent* e, unsigned long vtkEvent);
+  static void onVtkEvent(vtkObject*, unsigned long ev, void* self, void* callData);
+  vtkSmartPointer<vtkGenericOpenGLRenderWindow> window_;
+  vtkSmartPointer<vtkGenericRenderWindowInteractor> interactor_;
+  std::map<int, QTimer*> timers_;
+  bool inPaint_ = false, skipRender_ = false;
+};
+
+} // namespace rv

@@ -1,0 +1,61 @@
+#include "dynamics/core/Model.h"
+
+#include "dynamics/core/Errors.h"
+
+#include <cmath>
+
+namespace rv {
+
+Model::Model(const ModelInfo& info, const ParameterValues& params) : info_(&info), params_(params) {}
+
+Eigen::VectorXd Model::integrals(const double*) const { return {}; }
+double Model::measureDensity(const double*) const { return 1.0; }
+std::optional<BodyPose> Model::pose(const double*) const { return std::nullopt; }
+
+Eigen::VectorXd Model::stateFromNamed(const std::map<std::string, double>& named,
+                                      const std::string& context) const {
+  for (const auto& n : info_->stateNames)
+    if (!named.count(n)) throw InputError(context + ": missing state component '" + n + "'");
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(dimension());
+  assignNamed(named, context, x);
+  return x;
+}
+
+Eigen::VectorXd Model::stateFromMap(const std::vector<double>&, const MapPointSpec&,
+                                    const std::string& context) const {
+  throw InputError(context + ": " + info_->id + " has no map coordinates; give \"state\" instead");
+}
+
+int Model::findObservable(const std::string& id) const {
+  for (std::size_t i = 0; i < observables_.size(); ++i)
+    if (observables_[i].id == id) return static_cast<int>(i);
+  return -1;
+}
+
+void Model::addObservable(std::string id, std::string description,
+                          std::function<double(double, const double*)> f) {
+  observables_.push_back({std::move(id), std::move(description), std::move(f)});
+}
+
+void Model::addStandardObservables() {
+  addObservable("t", "time", [](double t, const double*) { return t; });
+  for (std::size_t i = 0; i < info_->stateNames.size(); ++i)
+    addObservable(info_->stateNames[i], "state component", [i](double, const double* x) { return x[i]; });
+  for (std::size_t k = 0; k < info_->integralNames.size(); ++k)
+    if (findObservable(info_->integralNames[k]) < 0)
+      addObservable(info_->integralNames[k], "first integral",
+                    [this, k](double, const double* x) { return integrals(x)[static_cast<Eigen::Index>(k)]; });
+}
+
+void Model::assignNamed(const std::map<std::string, double>& named, const std::string& context,
+                        Eigen::VectorXd& x) const {
+  for (const auto& [name, value] : named) {
+    const auto& names = info_->stateNames;
+    const auto it = std::find(names.begin(), names.end(), name);
+    if (it == names.end()) throw InputError(context + "." + name + ": unknown state component of " + info_->id);
+    if (!std::isfinite(value)) throw InputError(context + "." + name + ": must be a finite number");
+    x[it - names.begin()] = value;
+  }
+}
+
+} // namespace rv

@@ -1,0 +1,102 @@
+// Model.h -- one rolling problem or reference system: a constant description (ModelInfo, parameters)
+// and the equations; the mutable state is a plain vector owned by whoever integrates it (MuJoCo's
+// mjModel/mjData split).
+#pragma once
+#include "dynamics/core/ParameterTable.h"
+
+#include <Eigen/Core>
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rv {
+
+/// A named quantity computed from (t, state): energy, Andoyer-Deprit variables, Euler angles, ...
+struct Observable {
+  std::string id;
+  std::string description;
+  std::function<double(double t, const double* x)> value;
+};
+
+/// Where the body is, for drawing: rotation (body -> world), its centre and the contact point.
+struct BodyPose {
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();
+  Eigen::Vector3d contact = Eigen::Vector3d::Zero();
+};
+
+/// Which body and surface the render layer should build for a model.
+enum class BodyShape { None, Ball, Ellipsoid, Paraboloid };
+
+/// The constant description of a model kind.
+struct ModelInfo {
+  std::string id;                       ///< e.g. "chaplygin_ball" (design.md contract)
+  std::string title;                    ///< one line, for lists
+  std::string reference;                ///< where the equations come from
+  ParameterTable parameters;            ///< declared once, used by GUI, CLI and scenes
+  std::vector<std::string> stateNames;  ///< names of the state components, in order
+  int coreDimension = 0;                ///< the leading components that evolve on their own
+  std::vector<std::string> integralNames; ///< first integrals, in the order integrals() returns them
+  bool hasMeasure = false;              ///< measureDensity() is an invariant measure density
+  std::vector<std::string> mapCoordinates; ///< coordinates of a map point given as "initial": {"map": ...}
+  BodyShape body = BodyShape::None;
+};
+
+/// Where a map point lies: the section value and which root (sheet) to complete it on.
+struct MapPointSpec {
+  double sectionValue = 0.0;
+  int root = 1; ///< 1-based index of the root, counted from the smallest
+};
+
+/// A model instance: the equations at fixed parameter values. Immutable after construction.
+class Model {
+public:
+  Model(const ModelInfo& info, const ParameterValues& params);
+  virtual ~Model() = default;
+  Model(const Model&) = delete;
+  Model& operator=(const Model&) = delete;
+
+  const ModelInfo& info() const { return *info_; }
+  const ParameterValues& parameters() const { return params_; }
+  int dimension() const { return static_cast<int>(info_->stateNames.size()); }
+
+  /// dx/dt = f(x) (all models here are autonomous).
+  virtual void rhs(const double* x, double* dx) const = 0;
+  /// Exact Jacobian df/dx, row-major dimension() x dimension().
+  virtual void jacobian(const double* x, double* jac) const = 0;
+  /// Values of the first integrals, in the order of info().integralNames.
+  virtual Eigen::VectorXd integrals(const double* x) const;
+  /// Density of the invariant measure (1 when info().hasMeasure is false).
+  virtual double measureDensity(const double* x) const;
+  /// Pose of the body, for models that have one.
+  virtual std::optional<BodyPose> pose(const double* x) const;
+
+  /// A full state from named components; names the model can derive may be omitted.
+  /// Throws InputError naming `context` and the offending name.
+  virtual Eigen::VectorXd stateFromNamed(const std::map<std::string, double>& named,
+                                         const std::string& context) const;
+  /// A full state from a map point, completed through the energy and the other integrals.
+  /// Throws InputError when the point has no state (outside the region of allowed motion).
+  virtual Eigen::VectorXd stateFromMap(const std::vector<double>& point, const MapPointSpec& spec,
+                                       const std::string& context) const;
+
+  const std::vector<Observable>& observables() const { return observables_; }
+  /// Index of an observable by id, or -1.
+  int findObservable(const std::string& id) const;
+
+protected:
+  /// Adds the state components, t, and the integrals as observables; call from the constructor.
+  void addStandardObservables();
+  void addObservable(std::string id, std::string description, std::function<double(double, const double*)> f);
+  /// Fills `x` from `named`; components absent from `named` keep their value. Rejects unknown names.
+  void assignNamed(const std::map<std::string, double>& named, const std::string& context,
+                   Eigen::VectorXd& x) const;
+
+  const ModelInfo* info_;
+  ParameterValues params_;
+  std::vector<Observable> observables_;
+};
+
+} // namespace rv

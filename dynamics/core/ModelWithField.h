@@ -1,0 +1,38 @@
+// ModelWithField.h -- CRTP base: a model writes its right-hand side once, as a template on the scalar
+// type, and gets rhs() in double and an exact Jacobian through Eigen's forward-mode AutoDiff.
+#pragma once
+#include "dynamics/core/Model.h"
+
+#include <unsupported/Eigen/AutoDiff>
+
+namespace rv {
+
+/// Derived must provide `template <class S> void field(const Vec<S>& x, Vec<S>& dx) const`.
+template <class Derived, int N> class ModelWithField : public Model {
+public:
+  static constexpr int kDim = N;
+  template <class S> using Vec = Eigen::Matrix<S, N, 1>;
+  using Model::Model;
+
+  void rhs(const double* x, double* dx) const final {
+    const Vec<double> in = Eigen::Map<const Vec<double>>(x);
+    Vec<double> out;
+    self().field(in, out);
+    Eigen::Map<Vec<double>> result(dx);
+    result = out;
+  }
+
+  void jacobian(const double* x, double* jac) const final {
+    using AD = Eigen::AutoDiffScalar<Eigen::Matrix<double, N, 1>>;
+    Vec<AD> xa, fa;
+    for (int i = 0; i < N; ++i) xa[i] = AD(x[i], N, i);
+    self().field(xa, fa);
+    for (int i = 0; i < N; ++i)
+      for (int j = 0; j < N; ++j) jac[i * N + j] = fa[i].derivatives()[j];
+  }
+
+private:
+  const Derived& self() const { return static_cast<const Derived&>(*this); }
+};
+
+} // namespace rv

@@ -1,0 +1,72 @@
+// Integrator.h -- one interface for every integration method, registered by name (as REBOUND does),
+// each with dense output on its last step so that sections and video frames land on exact times.
+#pragma once
+#include "dynamics/core/Model.h"
+#include "dynamics/core/ParameterTable.h"
+
+#include <Eigen/Core>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace rv {
+
+/// A stepping method for dx/dt = f(x). Steps allocate nothing (work vectors are sized in start()).
+class Integrator {
+public:
+  virtual ~Integrator() = default;
+  /// Begins at (t0, x0); direction +1 integrates forward in time, -1 backward.
+  virtual void start(const Model& model, double t0, const Eigen::VectorXd& x0, int direction = +1);
+  /// Advances one step. Throws ComputationError when the state stops being finite.
+  virtual void step() = 0;
+  /// State at t in the last step [previousTime(), time()] (either order), from the dense output.
+  virtual void interpolate(double t, Eigen::VectorXd& out) const = 0;
+
+  double time() const { return t_; }
+  double previousTime() const { return tPrev_; }
+  const Eigen::VectorXd& state() const { return x_; }
+  const Model& model() const { return *model_; }
+  int direction() const { return direction_; }
+  /// Number of right-hand-side evaluations since start().
+  long evaluations() const { return evaluations_; }
+
+protected:
+  void evaluate(const Eigen::VectorXd& x, Eigen::VectorXd& dx) {
+    model_->rhs(x.data(), dx.data());
+    ++evaluations_;
+  }
+  /// Throws ComputationError if x_ holds a NaN or an infinity.
+  void checkFinite() const;
+
+  const Model* model_ = nullptr;
+  double t_ = 0, tPrev_ = 0;
+  int direction_ = +1;
+  long evaluations_ = 0;
+  Eigen::VectorXd x_, xPrev_;
+};
+
+/// A registered method: its parameter table and a factory.
+struct IntegratorEntry {
+  std::string id;        ///< "rk4", "merson", "everhart"
+  std::string title;     ///< one line, for lists
+  std::string reference; ///< the paper or book behind it
+  const ParameterTable* parameters;
+  /// Builds the integrator; throws InputError naming the parameter when values are inconsistent.
+  std::function<std::unique_ptr<Integrator>(const ParameterValues&)> create;
+};
+
+/// All integration methods by name.
+class IntegratorRegistry {
+public:
+  static const IntegratorRegistry& builtin();
+  void add(IntegratorEntry entry) { entries_.push_back(std::move(entry)); }
+  /// The entry with this id; throws InputError listing the known ids when there is none.
+  const IntegratorEntry& get(const std::string& id) const;
+  const std::vector<IntegratorEntry>& entries() const { return entries_; }
+
+private:
+  std::vector<IntegratorEntry> entries_;
+};
+
+} // namespace rv

@@ -1,0 +1,55 @@
+#include "dynamics/integrators/Rk4.h"
+
+namespace rv {
+
+const ParameterTable& Rk4::parameterTable() {
+  static const ParameterTable table{
+      {.id = "step", .label = "Step", .defaultValue = 1e-3, .min = 1e-12, .max = 1e3,
+       .description = "constant integration step"},
+  };
+  return table;
+}
+
+IntegratorEntry Rk4::entry() {
+  return {"rk4", "Runge-Kutta 4, fixed step", "Hairer, Norsett, Wanner, Solving ODE I, §II.1",
+          &parameterTable(),
+          [](const ParameterValues& p) -> std::unique_ptr<Integrator> { return std::make_unique<Rk4>(p["step"]); }};
+}
+
+void Rk4::start(const Model& model, double t0, const Eigen::VectorXd& x0, int direction) {
+  Integrator::start(model, t0, x0, direction);
+  const auto n = x0.size();
+  k2_.resize(n), k3_.resize(n), k4_.resize(n), tmp_.resize(n), fPrev_.resize(n);
+  k1_.resize(n);
+  evaluate(x_, k1_); // k1 of the next step is f at the current state: kept, and used for dense output
+}
+
+void Rk4::step() {
+  const double h = direction_ * h_;
+  xPrev_ = x_;
+  fPrev_ = k1_;
+  tmp_ = x_ + 0.5 * h * k1_;
+  evaluate(tmp_, k2_);
+  tmp_ = x_ + 0.5 * h * k2_;
+  evaluate(tmp_, k3_);
+  tmp_ = x_ + h * k3_;
+  evaluate(tmp_, k4_);
+  x_ += (h / 6.0) * (k1_ + 2.0 * k2_ + 2.0 * k3_ + k4_);
+  tPrev_ = t_;
+  t_ = tPrev_ + h;
+  checkFinite();
+  evaluate(x_, k1_);
+}
+
+void Rk4::interpolate(double t, Eigen::VectorXd& out) const {
+  const double h = t_ - tPrev_;
+  if (h == 0) {
+    out = x_;
+    return;
+  }
+  const double s = (t - tPrev_) / h, s2 = s * s, s3 = s2 * s;
+  const double h00 = 2 * s3 - 3 * s2 + 1, h10 = s3 - 2 * s2 + s, h01 = -2 * s3 + 3 * s2, h11 = s3 - s2;
+  out = h00 * xPrev_ + (h10 * h) * fPrev_ + h01 * x_ + (h11 * h) * k1_;
+}
+
+} // namespace rv

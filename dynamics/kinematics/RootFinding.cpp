@@ -1,0 +1,37 @@
+#include "dynamics/kinematics/RootFinding.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rv {
+
+std::vector<double> findRoots(const std::function<double(double)>& f, double a, double b, double step,
+                              double accuracy) {
+  std::vector<double> roots;
+  double x0 = a, f0 = f(a);
+  if (f0 == 0) roots.push_back(a);
+  while (x0 < b) {
+    const double x1 = std::min(b, x0 + step), f1 = f(x1);
+    if (f1 == 0) {
+      roots.push_back(x1);
+    } else if (f0 != 0 && (f0 < 0) != (f1 < 0)) {
+      double lo = x0, hi = x1, flo = f0;
+      for (int it = 0; it < 200 && hi - lo > accuracy * std::max(1.0, std::abs(lo)); ++it) {
+        const double mid = 0.5 * (lo + hi), fm = f(mid);
+        if (mid <= lo || mid >= hi || fm == 0) {
+          lo = hi = mid;
+          break;
+        }
+        if ((fm < 0) == (flo < 0))
+          lo = mid, flo = fm;
+        else
+          hi = mid;
+      }
+      roots.push_back(0.5 * (lo + hi));
+    }
+    x0 = x1, f0 = f1;
+  }
+  return roots;
+}
+
+} // namespace rv

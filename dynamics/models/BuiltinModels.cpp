@@ -1,0 +1,19 @@
+// BuiltinModels.cpp -- the one list of built-in models (explicit, so static linking cannot drop any).
+#include "dynamics/core/ModelRegistry.h"
+#include "dynamics/models/ChaplyginBall.h"
+#include "dynamics/models/Lorenz.h"
+
+namespace rv {
+
+namespace {
+template <class M> ModelEntry entryOf() {
+  return {&M::staticInfo(), [](const ParameterValues& p) -> std::unique_ptr<Model> { return std::make_unique<M>(p); }};
+}
+} // namespace
+
+void registerBuiltinModels(ModelRegistry& registry) {
+  registry.add(entryOf<ChaplyginBall>());
+  registry.add(entryOf<Lorenz>());
+}
+
+} // namespace rv

@@ -1,0 +1,179 @@
+#include "dynamics/models/ChaplyginBall.h"
+
+#include "dynamics/core/Errors.h"
+#include "dynamics/kinematics/AndoyerDeprit.h"
+#include "dynamics/kinematics/RootFinding.h"
+
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+namespace rv {
+
+const ModelInfo& ChaplyginBall::staticInfo() {
+  static const ModelInfo info{
+      .id = "chaplygin_ball",
+      .title = "Chaplygin ball with a gyrostat rolling on a plane (manual §3.5)",
+      .reference = "Borisov, Mamaev, Nonholonomic dynamical systems (2002) §8; Moskvin, Nelin. Dinam. 5 (2009)",
+      .parameters =
+          {
+              {.id = "energy", .label = "Energy", .defaultValue = 0.5, .min = 0, .max = 1e12,
+               .description = "energy h = (M, omega)/2 at which a map point is completed into a state"},
+              {.id = "c", .label = "c", .defaultValue = 0.3, .description = "area constant c = (M + K, gamma)"},
+              {.id = "I1", .label = "I1", .defaultValue = 1.0, .min = 0, .description = "principal moment of inertia"},
+              {.id = "I2", .label = "I2", .defaultValue = 1.4, .min = 0, .description = "principal moment of inertia"},
+              {.id = "I3", .label = "I3", .defaultValue = 1.9, .min = 0, .description = "principal moment of inertia"},
+              {.id = "R", .label = "R", .defaultValue = 1.0, .min = 0, .description = "radius of the ball"},
+              {.id = "m", .label = "m", .defaultValue = 1.0, .min = 0, .description = "mass of the ball"},
+              {.id = "K1", .label = "K1", .defaultValue = 0.0, .description = "gyrostat momentum, body axis 1"},
+              {.id = "K2", .label = "K2", .defaultValue = 0.0, .description = "gyrostat momentum, body axis 2"},
+              {.id = "K3", .label = "K3", .defaultValue = 0.0, .description = "gyrostat momentum, body axis 3"},
+              {.id = "root_step", .label = "Step of root finding", .defaultValue = 1e-3, .min = 1e-12, .max = 1e6,
+               .description = "scan step in G when a map point is completed through the energy"},
+              {.id = "root_accuracy", .label = "Accuracy of root finding", .defaultValue = 1e-15, .min = 0,
+               .max = 1, .description = "relative accuracy of the completed G"},
+          },
+      .stateNames = {"M1", "M2", "M3", "gamma1", "gamma2", "gamma3", "alpha1", "alpha2", "alpha3", "beta1",
+                     "beta2", "beta3", "x", "y", "s_plane", "s_body"},
+      .coreDimension = 6,
+      .integralNames = {"E", "H", "geometric", "n"},
+      .hasMeasure = true,
+      .mapCoordinates = {"l", "L/G"},
+      .body = BodyShape::Ball,
+  };
+  return info;
+}
+
+ChaplyginBall::ChaplyginBall(const ParameterValues& p) : ModelWithField(staticInfo(), p) {
+  const double I[3] = {p["I1"], p["I2"], p["I3"]};
+  for (int i = 0; i < 3; ++i)
+    if (!(I[i] > 0)) throw InputError("I" + std::to_string(i + 1) + ": a moment of inertia must be positive");
+  for (int i = 0; i < 3; ++i)
+    if (I[i] > I[(i + 1) % 3] + I[(i + 2) % 3]) {
+      std::ostringstream os;
+      os << "I" << i + 1 << " = " << I[i] << " exceeds I" << (i + 1) % 3 + 1 << " + I" << (i + 2) % 3 + 1
+         << ": moments of inertia of a body satisfy the triangle inequality";
+      throw InputError(os.str());
+    }
+  if (!(p["m"] > 0)) throw InputError("m: the mass must be positive");
+  if (!(p["R"] > 0)) throw InputError("R: the radius must be positive");
+  R_ = p["R"];
+  D_ = p["m"] * R_ * R_;
+  for (int i = 0; i < 3; ++i) Jinv_[i] = 1.0 / (I[i] + D_);
+  K_ = {p["K1"], p["K2"], p["K3"]};
+
+  addStandardObservables();
+  const auto M = [](const double* x) { return Eigen::Vector3d(x[0], x[1], x[2]); };
+  const auto gam = [](const double* x) { return Eigen::Vector3d(x[3], x[4], x[5]); };
+  const auto omega = [this, M, gam](const double* x) { return angularVelocity<double>(M(x), gam(x)); };
+  const auto ad = [this, M, gam](const double* x) { return toAndoyerDeprit(M(x) + K_, gam(x)); };
+  for (int i = 0; i < 3; ++i)
+    addObservable("omega" + std::to_string(i + 1), "angular velocity, body axis " + std::to_string(i + 1),
+                  [omega, i](double, const double* x) { return omega(x)[i]; });
+  addObservable("G", "Andoyer-Deprit G = |M + K|", [ad](double, const double* x) { return ad(x).G; });
+  addObservable("L", "Andoyer-Deprit L = (M + K)_3", [ad](double, const double* x) { return ad(x).L; });
+  addObservable("l", "Andoyer-Deprit l", [ad](double, const double* x) { return ad(x).l; });
+  addObservable("g", "Andoyer-Deprit g", [ad](double, const double* x) { return ad(x).g; });
+  addObservable("L/G", "Andoyer-Deprit L/G", [ad](double, const double* x) { return ad(x).L / ad(x).G; });
+  addObservable("H/G", "Andoyer-Deprit H/G", [ad](double, const double* x) { return ad(x).H / ad(x).G; });
+  // Euler angles of the body: gamma = (sin th sin ph, sin th cos ph, cos th), alpha3 = sin ps sin th
+  addObservable("theta", "Euler angle theta (nutation)",
+                [](double, const double* x) { return std::acos(std::clamp(x[5], -1.0, 1.0)); });
+  addObservable("phi", "Euler angle phi (proper rotation), mod 2 pi", [](double, const double* x) {
+    return std::fmod(std::atan2(x[3], x[4]) + 2 * std::numbers::pi, 2 * std::numbers::pi);
+  });
+  addObservable("psi", "Euler angle psi (precession), mod 2 pi", [](double, const double* x) {
+    return std::fmod(std::atan2(x[8], -x[11]) + 2 * std::numbers::pi, 2 * std::numbers::pi);
+  });
+  addObservable("RabsX", "contact point (and centre) in the fixed frame, x", [](double, const double* x) { return x[12]; });
+  addObservable("RabsY", "contact point (and centre) in the fixed frame, y", [](double, const double* x) { return x[13]; });
+  addObservable("Vx", "velocity of the centre, x", [this, omega](double, const double* x) {
+    return R_ * omega(x).dot(Eigen::Vector3d(x[9], x[10], x[11]));
+  });
+  addObservable("Vy", "velocity of the centre, y", [this, omega](double, const double* x) {
+    return -R_ * omega(x).dot(Eigen::Vector3d(x[6], x[7], x[8]));
+  });
+  addObservable("Lplane", "length of the trace on the plane", [](double, const double* x) { return x[14]; });
+  addObservable("Lball", "length of the trace on the ball", [](double, const double* x) { return x[15]; });
+  addObservable("Ldiff", "Lplane - Lball", [](double, const double* x) { return x[14] - x[15]; });
+}
+
+Eigen::VectorXd ChaplyginBall::integrals(const double* x) const {
+  const Eigen::Vector3d M(x[0], x[1], x[2]), g(x[3], x[4], x[5]);
+  const Eigen::Vector3d w = angularVelocity<double>(M, g), P = M + K_;
+  Eigen::VectorXd v(4);
+  v << 0.5 * M.dot(w), P.dot(g), g.squaredNorm(), P.squaredNorm(); // (26)
+  return v;
+}
+
+double ChaplyginBall::measureDensity(const double* x) const {
+  const Eigen::Vector3d g(x[3], x[4], x[5]);
+  return 1.0 / std::sqrt(1.0 - D_ * g.dot(Jinv_.cwiseProduct(g))); // (27)
+}
+
+std::optional<BodyPose> ChaplyginBall::pose(const double* x) const {
+  BodyPose p;
+  p.rotation.row(0) = Eigen::Vector3d(x[6], x[7], x[8]).transpose(); // world x-axis in the body frame
+  p.rotation.row(1) = Eigen::Vector3d(x[9], x[10], x[11]).transpose();
+  p.rotation.row(2) = Eigen::Vector3d(x[3], x[4], x[5]).transpose();
+  p.contact = {x[12], x[13], 0};
+  p.center = {x[12], x[13], R_};
+  return p;
+}
+
+Eigen::VectorXd ChaplyginBall::stateFrom(const Eigen::Vector3d& M, const Eigen::Vector3d& gamma) const {
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(kDim);
+  const Eigen::Vector3d g = gamma.normalized();
+  // alpha: the body image of the fixed x-axis, any unit vector orthogonal to gamma; beta = gamma x alpha
+  Eigen::Vector3d seed = std::abs(g[0]) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
+  const Eigen::Vector3d a = (seed - seed.dot(g) * g).normalized(), b = g.cross(a);
+  x << M, g, a, b, 0, 0, 0, 0;
+  return x;
+}
+
+Eigen::VectorXd ChaplyginBall::stateFromNamed(const std::map<std::string, double>& named,
+                                              const std::string& context) const {
+  for (const char* n : {"M1", "M2", "M3", "gamma1", "gamma2", "gamma3"})
+    if (!named.count(n)) throw InputError(context + ": missing state component '" + n + "'");
+  const Eigen::Vector3d g(named.at("gamma1"), named.at("gamma2"), named.at("gamma3"));
+  if (!(g.norm() > 1e-12)) throw InputError(context + ".gamma1: gamma must not be zero");
+  Eigen::VectorXd x = stateFrom(Eigen::Vector3d(named.at("M1"), named.at("M2"), named.at("M3")), g);
+  assignNamed(named, context, x); // explicit alpha, beta, x, y, trace lengths override the derived ones
+  x.segment<3>(3).normalize();
+  return x;
+}
+
+Eigen::VectorXd ChaplyginBall::stateFromMap(const std::vector<double>& point, const MapPointSpec& spec,
+                                            const std::string& context) const {
+  if (point.size() != 2) throw InputError(context + ": chaplygin_ball map points are (l, L/G)");
+  const double l = point[0], LG = point[1], E = params_["energy"], c = params_["c"];
+  if (!(std::abs(LG) <= 1)) throw InputError(context + ": L/G must lie in [-1, 1]");
+  // h(G) on the section: P = M + K from (l, L/G, G), H = c fixed, so H/G = c/G needs G >= |c|
+  const auto stateAt = [&](double G, Eigen::Vector3d& M, Eigen::Vector3d& g) {
+    fromAndoyerDeprit({.L = LG * G, .G = G, .H = c, .l = l, .g = spec.sectionValue}, M, g);
+    M -= K_;
+  };
+  const auto energyGap = [&](double G) {
+    Eigen::Vector3d M, g;
+    stateAt(G, M, g);
+    return 0.5 * M.dot(angularVelocity<double>(M, g)) - E;
+  };
+  // h >= |M|^2 / (2 max J), so every root has G <= sqrt(2 E max J) + |K|
+  const double Gmax = std::sqrt(2 * E / Jinv_.minCoeff()) + K_.norm() + 1e-9;
+  const double Gmin = std::max(std::abs(c), 1e-12);
+  const auto roots = findRoots(energyGap, Gmin, Gmax, params_["root_step"], params_["root_accuracy"]);
+  if (roots.empty() || spec.root < 1 || spec.root > static_cast<int>(roots.size())) {
+    std::ostringstream os;
+    os << context << ": no state at (l, L/G) = (" << l << ", " << LG << ") with energy " << E << " and c = " << c;
+    if (roots.empty())
+      os << " (the point lies outside the region of allowed motion)";
+    else
+      os << " with root " << spec.root << " (there are " << roots.size() << ")";
+    throw InputError(os.str());
+  }
+  Eigen::Vector3d M, g;
+  stateAt(roots[spec.root - 1], M, g);
+  return stateFrom(M, g);
+}
+
+} // namespace rv

@@ -1,0 +1,24 @@
+// Lorenz.h -- the Lorenz system, a reference flow with known Lyapunov exponents (0.906, 0, -14.572 at the
+// classical parameters; their sum is -(sigma + 1 + beta) exactly).
+// Reference: E. N. Lorenz, Deterministic nonperiodic flow, J. Atmos. Sci. 20 (1963) 130-141.
+#pragma once
+#include "dynamics/core/ModelWithField.h"
+
+namespace rv {
+
+class Lorenz final : public ModelWithField<Lorenz, 3> {
+public:
+  explicit Lorenz(const ParameterValues& params);
+  static const ModelInfo& staticInfo();
+
+  template <class S> void field(const Vec<S>& x, Vec<S>& dx) const {
+    dx[0] = sigma_ * (x[1] - x[0]);
+    dx[1] = x[0] * (rho_ - x[2]) - x[1];
+    dx[2] = x[0] * x[1] - beta_ * x[2];
+  }
+
+private:
+  double sigma_, rho_, beta_;
+};
+
+} // namespace rv

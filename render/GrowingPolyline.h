@@ -1,0 +1,33 @@
+// GrowingPolyline.h -- a line that grows by appending points in place (no rebuild per frame), with a
+// minimum spacing so that slow motion does not pile up points, and a cap on the number kept.
+#pragma once
+#include "render/ViewOptions.h"
+
+#include <vtkSmartPointer.h>
+
+class vtkActor;
+class vtkPolyData;
+class vtkRenderer;
+
+namespace rv {
+
+class GrowingPolyline {
+public:
+  /// minSpacing: points closer than this to the last one are skipped (the newest is still shown).
+  GrowingPolyline(double minSpacing, long maxPoints);
+  void attach(vtkRenderer* renderer);
+  void setAppearance(const Rgb& color, double lineWidth, double opacity, bool visible);
+  void append(double x, double y, double z);
+  void clear();
+  long size() const;
+  vtkActor* actor() const;
+
+private:
+  double minSpacing2_;
+  long maxPoints_;
+  bool lastIsProvisional_ = false;
+  vtkSmartPointer<vtkPolyData> data_;
+  vtkSmartPointer<vtkActor> actor_;
+};
+
+} // namespace rv

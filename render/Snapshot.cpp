@@ -1,0 +1,86 @@
+#include "render/Snapshot.h"
+
+#include "dynamics/core/Errors.h"
+#include "dynamics/io/AtomicFile.h"
+
+#include <cstring>
+#include <filesystem>
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPNGReader.h>
+#include <vtkPNGWriter.h>
+#include <vtkRenderWindow.h>
+#include <vtkWindowToImageFilter.h>
+
+namespace rv {
+
+namespace {
+// VTK images are bottom-up; Image is top-down
+Image fromVtk(vtkImageData* img) {
+  Image out;
+  int dims[3];
+  img->GetDimensions(dims);
+  out.width = dims[0], out.height = dims[1];
+  const int nc = img->GetNumberOfScalarComponents();
+  out.rgb.resize(std::size_t(out.width) * out.height * 3);
+  const auto* src = static_cast<const unsigned char*>(img->GetScalarPointer());
+  for (int y = 0; y < out.height; ++y)
+    for (int x = 0; x < out.width; ++x)
+      for (int c = 0; c < 3; ++c)
+        out.rgb[(std::size_t(out.height - 1 - y) * out.width + x) * 3 + c] =
+            src[(std::size_t(y) * out.width + x) * nc + std::min(c, nc - 1)];
+  return out;
+}
+} // namespace
+
+Image capture(vtkRenderWindow* window) {
+  window->Render();
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->ReadFrontBufferOff();
+  grab->SetInputBufferTypeToRGB();
+  grab->Update();
+  return fromVtk(grab->GetOutput());
+}
+
+void writePng(vtkRenderWindow* window, const std::string& path, const std::string& what) {
+  AtomicFile file(path, what);
+  window->Render();
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->ReadFrontBufferOff();
+  grab->SetInputBufferTypeToRGB();
+  vtkNew<vtkPNGWriter> png;
+  png->SetInputConnection(grab->GetOutputPort());
+  png->SetFileName(file.tempPath().c_str());
+  png->Write();
+  if (png->GetErrorCode() != 0 || !std::filesystem::exists(file.tempPath()))
+    throw ComputationError("cannot write the PNG " + path);
+  file.commit();
+}
+
+void writePng(const Image& image, const std::string& path) {
+  vtkNew<vtkImageData> img;
+  img->SetDimensions(image.width, image.height, 1);
+  img->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  auto* dst = static_cast<unsigned char*>(img->GetScalarPointer());
+  for (int y = 0; y < image.height; ++y)
+    std::memcpy(dst + std::size_t(y) * image.width * 3,
+                image.rgb.data() + std::size_t(image.height - 1 - y) * image.width * 3, std::size_t(image.width) * 3);
+  vtkNew<vtkPNGWriter> png;
+  png->SetInputData(img);
+  png->SetFileName(path.c_str());
+  png->Write();
+  if (png->GetErrorCode() != 0) throw ComputationError("cannot write the PNG " + path);
+}
+
+Image readPng(const std::string& path) {
+  if (!std::filesystem::exists(path)) throw ComputationError("no such picture: " + path);
+  vtkNew<vtkPNGReader> png;
+  png->SetFileName(path.c_str());
+  png->Update();
+  if (png->GetErrorCode() != 0) throw ComputationError("cannot read the PNG " + path);
+  return fromVtk(png->GetOutput());
+}
+
+} // namespace rv

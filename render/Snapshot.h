@@ -1,0 +1,29 @@
+// Snapshot.h -- pictures of a render window: RGB pixels for tests and video, PNG files for users.
+#pragma once
+#include <string>
+#include <vector>
+
+class vtkRenderWindow;
+
+namespace rv {
+
+/// An 8-bit RGB picture, rows from the top.
+struct Image {
+  int width = 0, height = 0;
+  std::vector<unsigned char> rgb;
+};
+
+/// Renders the window and reads its pixels back.
+Image capture(vtkRenderWindow* window);
+
+/// Renders the window and writes a PNG to `path` through a temporary name (AtomicFile).
+/// Throws InputError when the path cannot be written (naming `what`), ComputationError when writing fails.
+void writePng(vtkRenderWindow* window, const std::string& path, const std::string& what = "-o");
+
+/// Writes an Image as PNG (used for test artifacts and difference images).
+void writePng(const Image& image, const std::string& path);
+
+/// Reads a PNG into an RGB Image; throws ComputationError when it cannot.
+Image readPng(const std::string& path);
+
+} // namespace rv

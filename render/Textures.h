@@ -1,0 +1,19 @@
+// Textures.h -- procedural textures (no image files needed): the ball's meridian/parallel pattern and the
+// plane's checkerboard with a grid.
+#pragma once
+#include "render/ViewOptions.h"
+
+#include <vtkSmartPointer.h>
+
+class vtkTexture;
+
+namespace rv {
+
+/// Longitude-latitude map for vtkTexturedSphereSource: eight coloured sectors, two hemispheres in two
+/// tones, dark meridians and parallels every 30 degrees.
+vtkSmartPointer<vtkTexture> makeBallTexture(const Rgb& color);
+
+/// One checkerboard cell pair (2 x 2 cells) with grid lines on the cell edges; repeats.
+vtkSmartPointer<vtkTexture> makeCheckerTexture(const Rgb& light, const Rgb& dark, const Rgb& line);
+
+} // namespace rv

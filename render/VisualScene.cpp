@@ -1,0 +1,146 @@
+#include "render/VisualScene.h"
+
+#include "render/objects/BallObject.h"
+#include "render/objects/PhaseCurveObject.h"
+#include "render/objects/PlaneObject.h"
+#include "render/objects/PlaneTraceObject.h"
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <vtkCamera.h>
+#include <vtkLightKit.h>
+#include <vtkRenderer.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
+
+namespace rv {
+
+VisualScene::VisualScene(const Model& model, const ViewOptions& options, const Eigen::VectorXd& x0)
+    : model_(model), options_(options) {
+  renderer_ = vtkSmartPointer<vtkRenderer>::New();
+  renderer_->GradientBackgroundOn();
+  renderer_->SetBackground(0.80, 0.83, 0.88);  // bottom
+  renderer_->SetBackground2(0.36, 0.45, 0.58); // top
+  // no FXAA: with VTK 9.1 on a no-blit headless window it renders a black picture
+  vtkNew<vtkLightKit> lights;
+  lights->AddLightsToRenderer(renderer_);
+
+  overlay_ = vtkSmartPointer<vtkTextActor>::New();
+  overlay_->GetTextProperty()->SetFontSize(16);
+  overlay_->GetTextProperty()->SetColor(0.08, 0.08, 0.12);
+  overlay_->GetTextProperty()->SetFontFamilyToCourier();
+  overlay_->SetDisplayPosition(10, 8);
+  overlay_->SetVisibility(options.overlay);
+  renderer_->AddActor2D(overlay_);
+
+  const auto& names = model.info().integralNames;
+  for (std::size_t i = 0; i < names.size(); ++i)
+    if (names[i] == "E") energyIndex_ = static_cast<int>(i);
+
+  const auto pose = model.pose(x0.data());
+  const long cap = options.maxTracePoints;
+  if (model.info().body == BodyShape::Ball && pose) {
+    scale_ = (pose->center - pose->contact).norm();
+    add(std::make_unique<PlaneObject>("plane", scale_, 40 * scale_));
+    add(std::make_unique<PlaneTraceObject>("trace", scale_, cap));
+    add(std::make_unique<BallObject>("ball", scale_));
+  } else {
+    scale_ = std::max(1.0, x0.head(std::min<Eigen::Index>(3, x0.size())).norm());
+    add(std::make_unique<PhaseCurveObject>("curve", scale_, cap));
+  }
+  show(0.0, x0);
+  resetCamera();
+}
+
+VisualScene::~VisualScene() = default;
+
+vtkRenderer* VisualScene::renderer() const { return renderer_; }
+
+VisualObject& VisualScene::add(std::unique_ptr<VisualObject> object) {
+  for (auto& o : objects_)
+    if (o->name() == object->name()) o.reset();
+  std::erase(objects_, nullptr);
+  object->attach(renderer_);
+  object->apply(options_.object(object->name()));
+  objects_.push_back(std::move(object));
+  return *objects_.back();
+}
+
+VisualObject* VisualScene::find(const std::string& name) const {
+  for (const auto& o : objects_)
+    if (o->name() == name) return o.get();
+  return nullptr;
+}
+
+void VisualScene::setOptions(const std::string& name, const ObjectOptions& options) {
+  options_.objects[name] = options;
+  if (auto* o = find(name)) o->apply(options);
+}
+
+void VisualScene::advance(double t, const Eigen::VectorXd& x) {
+  const auto pose = model_.pose(x.data());
+  const FrameState s{t, x.data(), model_, pose};
+  for (auto& o : objects_) o->advance(s);
+}
+
+void VisualScene::show(double t, const Eigen::VectorXd& x) {
+  const auto pose = model_.pose(x.data());
+  const FrameState s{t, x.data(), model_, pose};
+  for (auto& o : objects_) o->show(s);
+  const Eigen::Vector3d focus = pose ? pose->center : Eigen::Vector3d::Zero();
+  if (options_.camera.follow && pose) {
+    // carry the camera along with the body, keeping whatever view the user has turned to
+    vtkCamera* cam = renderer_->GetActiveCamera();
+    const Eigen::Vector3d d = focus - focus_;
+    double f[3], p[3];
+    cam->GetFocalPoint(f);
+    cam->GetPosition(p);
+    cam->SetFocalPoint(f[0] + d[0], f[1] + d[1], f[2] + d[2]);
+    cam->SetPosition(p[0] + d[0], p[1] + d[1], p[2] + d[2]);
+    renderer_->ResetCameraClippingRange();
+  }
+  focus_ = focus;
+
+  char text[160];
+  if (energyIndex_ >= 0) {
+    const double e = model_.integrals(x.data())[energyIndex_];
+    if (!haveEnergy0_) energy0_ = e, haveEnergy0_ = true;
+    const double rel = (e - energy0_) / (energy0_ != 0 ? std::abs(energy0_) : 1.0);
+    std::snprintf(text, sizeof text, "t = %9.3f    dE/E = %+.2e", t, rel);
+  } else {
+    std::snprintf(text, sizeof text, "t = %9.3f", t);
+  }
+  overlay_->SetInput(text);
+  if (!pose) placeCamera();
+}
+
+void VisualScene::clear() {
+  for (auto& o : objects_) o->clear();
+  haveEnergy0_ = false;
+}
+
+void VisualScene::resetCamera() { placeCamera(); }
+
+void VisualScene::placeCamera() {
+  vtkCamera* cam = renderer_->GetActiveCamera();
+  const double el = options_.camera.elevation * std::numbers::pi / 180;
+  const double az = options_.camera.azimuth * std::numbers::pi / 180;
+  const Eigen::Vector3d dir(std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el));
+  cam->SetViewUp(0, 0, 1);
+  if (model_.info().body == BodyShape::None) {
+    // frame whatever has been drawn so far, from the requested direction
+    cam->SetFocalPoint(0, 0, 0);
+    cam->SetPosition(dir[0], dir[1], dir[2]);
+    renderer_->ResetCamera();
+    return;
+  }
+  const double dist = options_.camera.distance > 0 ? options_.camera.distance : 9 * scale_;
+  const Eigen::Vector3d eye = focus_ + dist * dir;
+  cam->SetFocalPoint(focus_[0], focus_[1], focus_[2]);
+  cam->SetPosition(eye[0], eye[1], eye[2]);
+  cam->SetViewAngle(30);
+  renderer_->ResetCameraClippingRange();
+}
+
+} // namespace rv

@@ -1,0 +1,56 @@
+// VisualScene.h -- the scene graph of the 3D view: named visual objects bound to a model's state, the
+// camera that frames (and follows) the body, the time / energy-error overlay. Used identically on screen,
+// in snapshots and in videos.
+#pragma once
+#include "dynamics/core/Model.h"
+#include "render/ViewOptions.h"
+#include "render/objects/VisualObject.h"
+
+#include <memory>
+#include <vector>
+#include <vtkSmartPointer.h>
+
+class vtkRenderer;
+class vtkTextActor;
+
+namespace rv {
+
+class VisualScene {
+public:
+  /// Builds the default objects for the model's body (ball: plane, ball, trace; none: phase curve).
+  VisualScene(const Model& model, const ViewOptions& options, const Eigen::VectorXd& initialState);
+  ~VisualScene();
+
+  vtkRenderer* renderer() const;
+  /// Registers an object under its name (replacing one of the same name) and applies saved options.
+  VisualObject& add(std::unique_ptr<VisualObject> object);
+  VisualObject* find(const std::string& name) const;
+  const std::vector<std::unique_ptr<VisualObject>>& objects() const { return objects_; }
+  /// Changes an object's appearance; the options are kept for re-runs.
+  void setOptions(const std::string& name, const ObjectOptions& options);
+  const ViewOptions& options() const { return options_; }
+
+  /// A state between frames (traces record it).
+  void advance(double t, const Eigen::VectorXd& x);
+  /// The state to draw in the next frame: places the bodies, the camera and the overlay.
+  void show(double t, const Eigen::VectorXd& x);
+  /// Forgets traces and the energy reference (a new run).
+  void clear();
+  /// Puts the camera back to its default placement around the current state.
+  void resetCamera();
+
+private:
+  void placeCamera();
+  const Model& model_;
+  ViewOptions options_;
+  double scale_ = 1;               ///< size of the body (ball radius), or of the initial state
+  int energyIndex_ = -1;           ///< index of "E" among the integrals
+  double energy0_ = 0;             ///< energy at the start of the run
+  bool haveEnergy0_ = false;
+  Eigen::Vector3d focus_ = Eigen::Vector3d::Zero();
+  vtkSmartPointer<vtkRenderer> renderer_;
+  vtkSmartPointer<vtkTextActor> overlay_;
+  std::vector<std::unique_ptr<VisualObject>> objects_;
+};
+
+} // namespace rv

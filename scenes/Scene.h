@@ -1,0 +1,37 @@
+// Scene.h -- a scene file turned into a dynamics run (model, integrator, initial state) and render options.
+#pragma once
+#include "dynamics/core/ModelRegistry.h"
+#include "dynamics/integrators/Integrator.h"
+#include "render/ViewOptions.h"
+
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace rv {
+
+/// The "poincare" section (used by the map tools).
+struct PoincareSettings {
+  std::string section = "g";
+  double value = 0.0;
+  std::string direction = "positive"; ///< positive | negative | both
+  long points = 2000;
+};
+
+/// A validated scene: everything needed to integrate and to draw.
+struct Scene {
+  std::string source;      ///< the file it came from (for messages)
+  nlohmann::json document; ///< the document after --set overrides (what "save" writes)
+  const ModelEntry* modelEntry = nullptr;
+  std::unique_ptr<Model> model;
+  const IntegratorEntry* integratorEntry = nullptr;
+  std::unique_ptr<ParameterValues> integratorParameters;
+  Eigen::VectorXd initialState;
+  PoincareSettings poincare;
+  ViewOptions view;
+
+  /// A fresh integrator of the scene's method, started at t = 0 from the initial state.
+  std::unique_ptr<Integrator> startIntegrator() const;
+};
+
+} // namespace rv

@@ -1,0 +1,294 @@
+#include "scenes/SceneLoader.h"
+
+#include "dynamics/core/Errors.h"
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+namespace rv {
+
+using nlohmann::json;
+
+namespace {
+
+// the error context: "file:json.path"
+struct Where {
+  std::string file, path;
+  Where operator/(const std::string& key) const { return {file, path.empty() ? key : path + "." + key}; }
+  std::string str() const { return file + ":" + (path.empty() ? "$" : path); }
+  [[noreturn]] void fail(const std::string& reason) const { throw InputError(str() + ": " + reason); }
+};
+
+const json& requireObject(const json& j, const Where& w) {
+  if (!j.is_object()) w.fail("expected an object");
+  return j;
+}
+
+double number(const json& j, const Where& w) {
+  if (!j.is_number()) w.fail("expected a number, got " + j.dump());
+  return j.get<double>();
+}
+
+std::string text(const json& j, const Where& w) {
+  if (!j.is_string()) w.fail("expected a string, got " + j.dump());
+  return j.get<std::string>();
+}
+
+bool boolean(const json& j, const Where& w) {
+  if (!j.is_boolean()) w.fail("expected true or false, got " + j.dump());
+  return j.get<bool>();
+}
+
+void onlyKeys(const json& j, const Where& w, std::initializer_list<const char*> keys) {
+  for (const auto& [k, v] : j.items()) {
+    bool ok = false;
+    for (const char* known : keys) ok = ok || k == known;
+    if (!ok) {
+      std::string list;
+      for (const char* known : keys) list += std::string(" ") + known;
+      (w / k).fail("unknown key (known:" + list + ")");
+    }
+  }
+}
+
+// fills a parameter table's values from a JSON object, skipping `skip`
+void readParameters(const json& j, const Where& w, ParameterValues& values, const std::string& skip = "") {
+  for (const auto& [k, v] : j.items()) {
+    if (k == skip) continue;
+    if (values.table().find(k) < 0) {
+      std::string known;
+      for (const auto& s : values.table().specs()) known += " " + s.id;
+      (w / k).fail("unknown parameter (known:" + known + ")");
+    }
+    try {
+      values.set(k, number(v, w / k));
+    } catch (const InputError& e) {
+      const std::string msg = e.what();
+      if (msg.rfind(w.file + ":", 0) == 0) throw;
+      (w / k).fail(msg.substr(msg.find(": ") == std::string::npos ? 0 : msg.find(": ") + 2));
+    }
+  }
+}
+
+ObjectOptions readObject(const json& j, const Where& w) {
+  requireObject(j, w);
+  onlyKeys(j, w, {"enabled", "color", "opacity", "style", "trace_color", "line_width"});
+  ObjectOptions o;
+  const auto color = [&](const char* key) {
+    const std::string s = text(j[key], w / key);
+    const auto c = parseColor(s);
+    if (!c) (w / key).fail("expected a colour \"#rrggbb\", got \"" + s + "\"");
+    return c;
+  };
+  if (j.contains("enabled")) o.enabled = boolean(j["enabled"], w / "enabled");
+  if (j.contains("color")) o.color = color("color");
+  if (j.contains("trace_color")) o.traceColor = color("trace_color");
+  if (j.contains("opacity")) {
+    o.opacity = number(j["opacity"], w / "opacity");
+    if (o.opacity < 0 || o.opacity > 1) (w / "opacity").fail("must lie in [0, 1]");
+  }
+  if (j.contains("line_width")) {
+    o.lineWidth = number(j["line_width"], w / "line_width");
+    if (!(o.lineWidth > 0 && o.lineWidth <= 50)) (w / "line_width").fail("must lie in (0, 50]");
+  }
+  if (j.contains("style")) {
+    const std::string s = text(j["style"], w / "style");
+    if (s == "fill") o.style = SurfaceStyle::Fill;
+    else if (s == "grid") o.style = SurfaceStyle::Grid;
+    else if (s == "both") o.style = SurfaceStyle::Both;
+    else (w / "style").fail("expected fill, grid or both");
+  }
+  return o;
+}
+
+ViewOptions readView(const json& j, const Where& w) {
+  requireObject(j, w);
+  onlyKeys(j, w, {"objects", "camera", "overlay", "speed", "max_trace_points"});
+  ViewOptions v;
+  if (j.contains("objects")) {
+    requireObject(j["objects"], w / "objects");
+    for (const auto& [name, o] : j["objects"].items()) v.objects[name] = readObject(o, w / "objects" / name);
+  }
+  if (j.contains("camera")) {
+    const Where wc = w / "camera";
+    const json& c = requireObject(j["camera"], wc);
+    onlyKeys(c, wc, {"follow", "distance", "elevation", "azimuth"});
+    if (c.contains("follow")) v.camera.follow = boolean(c["follow"], wc / "follow");
+    if (c.contains("distance")) v.camera.distance = number(c["distance"], wc / "distance");
+    if (c.contains("elevation")) v.camera.elevation = number(c["elevation"], wc / "elevation");
+    if (c.contains("azimuth")) v.camera.azimuth = number(c["azimuth"], wc / "azimuth");
+    if (v.camera.distance < 0) (wc / "distance").fail("must not be negative");
+  }
+  if (j.contains("overlay")) v.overlay = boolean(j["overlay"], w / "overlay");
+  if (j.contains("speed")) {
+    v.speed = number(j["speed"], w / "speed");
+    if (!(v.speed > 0)) (w / "speed").fail("must be positive");
+  }
+  if (j.contains("max_trace_points")) {
+    v.maxTracePoints = static_cast<long>(number(j["max_trace_points"], w / "max_trace_points"));
+    if (v.maxTracePoints < 2) (w / "max_trace_points").fail("must be at least 2");
+  }
+  return v;
+}
+
+PoincareSettings readPoincare(const json& j, const Where& w) {
+  requireObject(j, w);
+  onlyKeys(j, w, {"section", "value", "direction", "points"});
+  PoincareSettings p;
+  if (j.contains("section")) p.section = text(j["section"], w / "section");
+  if (j.contains("value")) p.value = number(j["value"], w / "value");
+  if (j.contains("direction")) {
+    p.direction = text(j["direction"], w / "direction");
+    if (p.direction != "positive" && p.direction != "negative" && p.direction != "both")
+      (w / "direction").fail("expected positive, negative or both");
+  }
+  if (j.contains("points")) {
+    const double n = number(j["points"], w / "points");
+    if (!(n >= 1 && n == static_cast<long>(n))) (w / "points").fail("must be a positive whole number");
+    p.points = static_cast<long>(n);
+  }
+  return p;
+}
+
+Eigen::VectorXd readInitial(const json& j, const Where& w, const Model& model, const PoincareSettings& poincare) {
+  requireObject(j, w);
+  onlyKeys(j, w, {"map", "root", "state"});
+  if (j.contains("map") == j.contains("state")) w.fail("give exactly one of \"map\" or \"state\"");
+  if (j.contains("state")) {
+    const Where ws = w / "state";
+    std::map<std::string, double> named;
+    for (const auto& [k, v] : requireObject(j["state"], ws).items()) named[k] = number(v, ws / k);
+    return model.stateFromNamed(named, ws.str());
+  }
+  const Where wm = w / "map";
+  if (!j["map"].is_array()) wm.fail("expected an array of numbers");
+  std::vector<double> point;
+  for (std::size_t i = 0; i < j["map"].size(); ++i) point.push_back(number(j["map"][i], wm / std::to_string(i)));
+  MapPointSpec spec{.sectionValue = poincare.value};
+  if (j.contains("root")) {
+    const double r = number(j["root"], w / "root");
+    if (!(r >= 1 && r == static_cast<int>(r))) (w / "root").fail("must be a whole number >= 1");
+    spec.root = static_cast<int>(r);
+  }
+  return model.stateFromMap(point, spec, wm.str());
+}
+
+// `--set`: a plain key is a model parameter, a dotted key a path into the document
+void applyOverrides(json& doc, const std::vector<SceneOverride>& overrides) {
+  for (const auto& o : overrides) {
+    const std::string flag = "--set " + o.key;
+    json value = json::parse(o.value, nullptr, false);
+    if (value.is_discarded()) value = o.value;
+    if (o.key.find('.') == std::string::npos) {
+      if (o.key == "problem") {
+        doc["problem"] = value;
+        continue;
+      }
+      if (!doc.contains("problem") || !doc["problem"].is_string()) continue; // reported by validation
+      const ModelEntry& entry = ModelRegistry::builtin().get(doc["problem"].get<std::string>());
+      if (entry.info->parameters.find(o.key) < 0) {
+        std::string known;
+        for (const auto& s : entry.info->parameters.specs()) known += " " + s.id;
+        throw InputError(flag + ": unknown parameter of " + entry.info->id + " (known:" + known + ")");
+      }
+      if (!value.is_number()) throw InputError(flag + ": expected a number, got '" + o.value + "'");
+      doc["parameters"][o.key] = value;
+      continue;
+    }
+    static const std::set<std::string> sections{"integrator", "initial", "poincare", "view", "parameters"};
+    const std::string head = o.key.substr(0, o.key.find('.'));
+    if (!sections.count(head)) throw InputError(flag + ": unknown scene field '" + head + "'");
+    json* node = &doc;
+    std::stringstream path(o.key);
+    for (std::string part; std::getline(path, part, '.');) {
+      if (part.empty()) throw InputError(flag + ": empty name in the path");
+      if (!node->is_object()) *node = json::object();
+      node = &(*node)[part];
+    }
+    *node = value;
+  }
+}
+
+} // namespace
+
+SceneOverride parseOverride(const std::string& text) {
+  const auto eq = text.find('=');
+  if (eq == std::string::npos || eq == 0) throw InputError("--set " + text + ": expected ID=VALUE");
+  return {text.substr(0, eq), text.substr(eq + 1)};
+}
+
+Scene sceneFromJson(json doc, const std::string& source, const std::vector<SceneOverride>& overrides) {
+  const Where root{source, ""};
+  requireObject(doc, root);
+  applyOverrides(doc, overrides);
+  onlyKeys(doc, root, {"problem", "parameters", "integrator", "initial", "poincare", "view", "title", "description"});
+  if (!doc.contains("problem")) root.fail("missing \"problem\"");
+
+  Scene scene;
+  scene.source = source;
+  const std::string problem = text(doc["problem"], root / "problem");
+  try {
+    scene.modelEntry = &ModelRegistry::builtin().get(problem);
+  } catch (const InputError& e) {
+    (root / "problem").fail(e.what());
+  }
+
+  ParameterValues params(scene.modelEntry->info->parameters);
+  if (doc.contains("parameters")) readParameters(requireObject(doc["parameters"], root / "parameters"), root / "parameters", params);
+  try {
+    scene.model = scene.modelEntry->create(params);
+  } catch (const InputError& e) {
+    (root / "parameters").fail(e.what());
+  }
+
+  const Where wi = root / "integrator";
+  const json integ = doc.contains("integrator") ? requireObject(doc["integrator"], wi) : json::object();
+  const std::string method = integ.contains("method") ? text(integ["method"], wi / "method") : "rk4";
+  try {
+    scene.integratorEntry = &IntegratorRegistry::builtin().get(method);
+  } catch (const InputError& e) {
+    (wi / "method").fail(e.what());
+  }
+  scene.integratorParameters = std::make_unique<ParameterValues>(*scene.integratorEntry->parameters);
+  readParameters(integ, wi, *scene.integratorParameters, "method");
+  try {
+    scene.integratorEntry->create(*scene.integratorParameters); // validates combinations of values
+  } catch (const InputError& e) {
+    wi.fail(e.what());
+  }
+
+  if (doc.contains("poincare")) scene.poincare = readPoincare(doc["poincare"], root / "poincare");
+  if (!doc.contains("initial")) root.fail("missing \"initial\" (a map point or a state)");
+  scene.initialState = readInitial(doc["initial"], root / "initial", *scene.model, scene.poincare);
+  if (doc.contains("view")) scene.view = readView(doc["view"], root / "view");
+  scene.document = std::move(doc);
+  return scene;
+}
+
+Scene loadScene(const std::string& path, const std::vector<SceneOverride>& overrides) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open the scene file");
+  json doc;
+  try {
+    doc = json::parse(in);
+  } catch (const json::parse_error& e) {
+    std::string reason = e.what();
+    if (const auto p = reason.find("parse error"); p != std::string::npos) reason = reason.substr(p);
+    throw InputError(path + ":$: malformed JSON: " + reason);
+  }
+  return sceneFromJson(std::move(doc), path, overrides);
+}
+
+std::string scenesDirectory() {
+  if (const char* dir = std::getenv("ROLLVIZ_SCENES_DIR")) return dir;
+  return ROLLVIZ_SCENES_DIR;
+}
+
+std::string defaultScenePath(const std::string& problemId) {
+  return (std::filesystem::path(scenesDirectory()) / (problemId + ".json")).string();
+}
+
+} // namespace rv

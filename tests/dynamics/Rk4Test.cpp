@@ -1,0 +1,108 @@
+// RK4 alone: exact on cubics in t, dense output of order 4 between steps, backward integration retraces,
+// blow-up reported as a ComputationError, and no heap allocation per step.
+#include "dynamics/core/Errors.h"
+#include "dynamics/core/ModelWithField.h"
+#include "dynamics/core/TimeSampler.h"
+#include "dynamics/integrators/Rk4.h"
+#include "tests/dynamics/TestSupport.h"
+
+#include <atomic>
+#include <cmath>
+#include <gtest/gtest.h>
+#include <new>
+
+namespace {
+std::atomic<long> g_allocations{0};
+}
+void* operator new(std::size_t n) {
+  ++g_allocations;
+  if (void* p = std::malloc(n)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+
+namespace rv {
+namespace {
+
+const ModelInfo& oscillatorInfo() {
+  static const ModelInfo info{.id = "oscillator", .stateNames = {"q", "p"}, .coreDimension = 2};
+  return info;
+}
+// harmonic oscillator q'' = -q: q = cos t
+struct Oscillator : ModelWithField<Oscillator, 2> {
+  Oscillator() : ModelWithField(oscillatorInfo(), ParameterValues(oscillatorInfo().parameters)) {}
+  template <class S> void field(const Vec<S>& x, Vec<S>& dx) const { dx[0] = x[1], dx[1] = -x[0]; }
+};
+const ModelInfo& blowupInfo() {
+  static const ModelInfo info{.id = "blowup", .stateNames = {"y"}, .coreDimension = 1};
+  return info;
+}
+// y' = y^2, y(0) = 1 blows up at t = 1
+struct Blowup : ModelWithField<Blowup, 1> {
+  Blowup() : ModelWithField(blowupInfo(), ParameterValues(blowupInfo().parameters)) {}
+  template <class S> void field(const Vec<S>& x, Vec<S>& dx) const { dx[0] = x[0] * x[0]; }
+};
+
+TEST(Rk4, DenseOutputIsFourthOrderBetweenSteps) {
+  Oscillator m;
+  double previous = 0;
+  for (double h : {0.1, 0.05, 0.025}) {
+    Rk4 rk4(h);
+    Eigen::VectorXd x0(2), x(2);
+    x0 << 1, 0;
+    rk4.start(m, 0, x0);
+    double err = 0;
+    ASSERT_TRUE(sampleUniform(rk4, 0.0123, 400, [&](double t, const Eigen::VectorXd& s) {
+      err = std::max(err, std::abs(s[0] - std::cos(t)));
+      return true;
+    }));
+    if (previous > 0) {
+      EXPECT_NEAR(std::log2(previous / err), 4.0, 0.35) << "h = " << h;
+    }
+    previous = err;
+  }
+}
+
+TEST(Rk4, BackwardIntegrationRetracesTheForwardOne) {
+  Oscillator m;
+  Rk4 fwd(0.01), back(0.01);
+  Eigen::VectorXd x0(2);
+  x0 << 1, 0;
+  fwd.start(m, 0, x0);
+  for (int i = 0; i < 500; ++i) fwd.step();
+  back.start(m, fwd.time(), fwd.state(), -1);
+  for (int i = 0; i < 500; ++i) back.step();
+  EXPECT_NEAR(back.time(), 0, 1e-12);
+  EXPECT_NEAR((back.state() - x0).norm(), 0, 1e-9);
+}
+
+TEST(Rk4, BlowUpIsAComputationError) {
+  Blowup m;
+  Rk4 rk4(0.01);
+  Eigen::VectorXd x0(1);
+  x0 << 1;
+  rk4.start(m, 0, x0);
+  const auto run = [&] {
+    for (int i = 0; i < 1000; ++i) rk4.step();
+  };
+  EXPECT_THROW(run(), ComputationError);
+}
+
+TEST(Rk4, StepsDoNotAllocate) {
+  const auto model = test::makeModel("chaplygin_ball", {{"K1", 0.1}});
+  const Eigen::VectorXd x0 = model->stateFromMap({0.5, 0.2}, {}, "test");
+  Rk4 rk4(1e-3);
+  rk4.start(*model, 0, x0);
+  rk4.step();
+  const long before = g_allocations.load();
+  for (int i = 0; i < 1000; ++i) rk4.step();
+  EXPECT_EQ(g_allocations.load() - before, 0);
+  Eigen::VectorXd out(x0.size());
+  const long beforeInterp = g_allocations.load();
+  rk4.interpolate(0.5 * (rk4.time() + rk4.previousTime()), out);
+  EXPECT_EQ(g_allocations.load() - beforeInterp, 0);
+}
+
+} // namespace
+} // namespace rv

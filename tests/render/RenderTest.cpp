@@ -1,0 +1,100 @@
+// Headless render tests, built twice: against the EGL backend and against OSMesa. Both compare with the same
+// baselines, so passing both also shows that the backends agree.
+#include "dynamics/core/TimeSampler.h"
+#include "render/Snapshot.h"
+#include "render/VisualScene.h"
+#include "render/context/HeadlessContext.h"
+#include "render/objects/PlaneTraceObject.h"
+#include "render/video/VideoExport.h"
+#include "scenes/SceneLoader.h"
+#include "tests/render/ImageCompare.h"
+
+#include <gtest/gtest.h>
+#include <vtkCamera.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+
+namespace rv {
+namespace {
+
+Image renderScene(const std::string& id, double t, int w = 640, int h = 360) {
+  const Scene scene = loadScene(defaultScenePath(id));
+  auto integrator = scene.startIntegrator();
+  VisualScene visual(*scene.model, scene.view, scene.initialState);
+  Eigen::VectorXd x;
+  playTo(visual, *integrator, t, x);
+  auto ctx = createHeadlessContext(w, h);
+  ctx->window()->AddRenderer(visual.renderer());
+  Image img = capture(ctx->window());
+  ctx->window()->RemoveRenderer(visual.renderer());
+  return img;
+}
+
+TEST(Render, FlatPicturesAreRejected) {
+  const Image flat{.width = 64, .height = 64, .rgb = std::vector<unsigned char>(64 * 64 * 3, 128)};
+  EXPECT_FALSE(test::isVaried(flat));
+  EXPECT_TRUE(test::isVaried(renderScene("chaplygin_ball", 0.0, 160, 90)));
+}
+
+TEST(Render, DefaultChaplyginBallSceneMatchesItsBaseline) {
+  const Image img = renderScene("chaplygin_ball", 10.0);
+  ASSERT_TRUE(test::isVaried(img));
+  EXPECT_EQ(test::matchesBaseline(img, "chaplygin_ball_t10"), "");
+}
+
+TEST(Render, LorenzSceneMatchesItsBaseline) {
+  const Image img = renderScene("lorenz", 20.0);
+  ASSERT_TRUE(test::isVaried(img));
+  EXPECT_EQ(test::matchesBaseline(img, "lorenz_t20"), "");
+}
+
+TEST(Render, TheBallIsDrawnWhereTheModelPutsIt) {
+  // render with and without the ball: the pixels that change are where the camera projects the ball's centre
+  const Scene scene = loadScene(defaultScenePath("chaplygin_ball"));
+  auto integrator = scene.startIntegrator();
+  VisualScene visual(*scene.model, scene.view, scene.initialState);
+  Eigen::VectorXd x;
+  playTo(visual, *integrator, 3.0, x);
+  auto ctx = createHeadlessContext(640, 360);
+  ctx->window()->AddRenderer(visual.renderer());
+  const Image with = capture(ctx->window());
+  ObjectOptions hidden;
+  hidden.enabled = false;
+  visual.setOptions("ball", hidden);
+  const Image without = capture(ctx->window());
+  const Eigen::Vector3d c = scene.model->pose(x.data())->center;
+  vtkRenderer* ren = visual.renderer();
+  ren->SetWorldPoint(c[0], c[1], c[2], 1);
+  ren->WorldToDisplay();
+  double d[3];
+  ren->GetDisplayPoint(d);
+  ctx->window()->RemoveRenderer(ren);
+  long n = 0;
+  double sx = 0, sy = 0;
+  for (int y = 0; y < with.height; ++y)
+    for (int xx = 0; xx < with.width; ++xx) {
+      const std::size_t p = (std::size_t(y) * with.width + xx) * 3;
+      if (std::abs(int(with.rgb[p]) - int(without.rgb[p])) + std::abs(int(with.rgb[p + 2]) - int(without.rgb[p + 2])) > 30)
+        ++n, sx += xx, sy += y;
+    }
+  ASSERT_GT(n, 500) << "the ball covers a visible area";
+  const double px = sx / n, py = sy / n, projectedY = with.height - 1 - d[1]; // display y is bottom-up
+  EXPECT_NEAR(px, d[0], 6.0);
+  EXPECT_NEAR(py, projectedY, 12.0); // the shadow disc under the ball pulls the centroid down a little
+}
+
+TEST(Render, TraceGrowsAlongTheMotion) {
+  const Scene scene = loadScene(defaultScenePath("chaplygin_ball"));
+  auto integrator = scene.startIntegrator();
+  VisualScene visual(*scene.model, scene.view, scene.initialState);
+  Eigen::VectorXd x;
+  playTo(visual, *integrator, 2.0, x);
+  const auto* trace = dynamic_cast<const PlaneTraceObject*>(visual.find("trace"));
+  ASSERT_NE(trace, nullptr);
+  EXPECT_GT(trace->points(), 100);
+  visual.clear();
+  EXPECT_EQ(trace->points(), 0);
+}
+
+} // namespace
+} // namespace rv

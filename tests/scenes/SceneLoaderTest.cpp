@@ -1,0 +1,89 @@
+// Scene files: the shipped scenes load; every error names the file and the JSON path (or the flag).
+#include "dynamics/core/Errors.h"
+#include "scenes/SceneLoader.h"
+
+#include <gtest/gtest.h>
+
+namespace rv {
+namespace {
+
+using nlohmann::json;
+
+std::string errorOf(const json& doc, const std::vector<SceneOverride>& sets = {}) {
+  try {
+    sceneFromJson(doc, "s.json", sets);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+json ball() {
+  return json::parse(R"({"problem": "chaplygin_ball", "parameters": {"energy": 0.5, "c": 0.3},
+                         "initial": {"map": [0.5, 0.2]}})");
+}
+
+TEST(SceneLoader, ShippedScenesLoad) {
+  for (const char* id : {"chaplygin_ball", "lorenz"}) {
+    const Scene s = loadScene(defaultScenePath(id));
+    EXPECT_EQ(s.model->info().id, id);
+    EXPECT_EQ(s.initialState.size(), s.model->dimension());
+  }
+}
+
+TEST(SceneLoader, ErrorsNameFileAndJsonPath) {
+  json j = ball();
+  j["parameters"]["I9"] = 1;
+  EXPECT_NE(errorOf(j).find("s.json:parameters.I9: unknown parameter"), std::string::npos) << errorOf(j);
+  j = ball();
+  j["parameters"]["m"] = "heavy";
+  EXPECT_NE(errorOf(j).find("s.json:parameters.m: expected a number"), std::string::npos) << errorOf(j);
+  j = ball();
+  j["problem"] = "no_such_problem";
+  EXPECT_NE(errorOf(j).find("s.json:problem: unknown problem 'no_such_problem'"), std::string::npos) << errorOf(j);
+  j = ball();
+  j["integrator"] = {{"method", "rk5"}};
+  EXPECT_NE(errorOf(j).find("s.json:integrator.method: unknown integrator 'rk5'"), std::string::npos) << errorOf(j);
+  j = ball();
+  j["integrator"] = {{"step", -1}};
+  EXPECT_NE(errorOf(j).find("s.json:integrator.step"), std::string::npos) << errorOf(j);
+  j = ball();
+  j["view"] = {{"objects", {{"ball", {{"color", "blue"}}}}}};
+  EXPECT_NE(errorOf(j).find("s.json:view.objects.ball.color: expected a colour"), std::string::npos) << errorOf(j);
+  j = ball();
+  j["initial"] = {{"map", {0.5, 5.0}}};
+  EXPECT_NE(errorOf(j).find("s.json:initial.map: L/G must lie in [-1, 1]"), std::string::npos) << errorOf(j);
+  j = ball();
+  j["parameters"]["I3"] = 5;
+  EXPECT_NE(errorOf(j).find("s.json:parameters: I3 = 5 exceeds I1 + I2"), std::string::npos) << errorOf(j);
+  j = ball();
+  j["colour"] = 1;
+  EXPECT_NE(errorOf(j).find("s.json:colour: unknown key"), std::string::npos) << errorOf(j);
+}
+
+TEST(SceneLoader, OverridesSetParametersAndFields) {
+  const Scene s = sceneFromJson(ball(), "s.json", {parseOverride("energy=0.4"), parseOverride("integrator.step=0.002")});
+  EXPECT_EQ(s.model->parameters()["energy"], 0.4);
+  EXPECT_EQ((*s.integratorParameters)["step"], 0.002);
+  EXPECT_NEAR(s.model->integrals(s.initialState.data())[0], 0.4, 1e-12);
+  EXPECT_NE(errorOf(ball(), {parseOverride("no_such_param=1")}).find("--set no_such_param: unknown parameter"),
+            std::string::npos);
+  EXPECT_NE(errorOf(ball(), {parseOverride("bogus.x=1")}).find("--set bogus.x: unknown scene field"), std::string::npos);
+  EXPECT_THROW(parseOverride("energy"), InputError);
+}
+
+TEST(SceneLoader, MalformedJsonIsAnInputErrorNamingTheFile) {
+  const std::string path = ::testing::TempDir() + "/bad.json";
+  FILE* f = std::fopen(path.c_str(), "w");
+  std::fputs("{ \"problem\": ", f);
+  std::fclose(f);
+  try {
+    loadScene(path);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(path + ":$: malformed JSON"), std::string::npos) << e.what();
+  }
+}
+
+} // namespace
+} // namespace rv
