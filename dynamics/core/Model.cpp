@@ -37,6 +37,10 @@ void Model::addObservable(std::string id, std::string description,
   observables_.push_back({std::move(id), std::move(description), std::move(f)});
 }
 
+void Model::addObservables(std::vector<Observable> list) {
+  for (auto& o : list) observables_.push_back(std::move(o));
+}
+
 void Model::addStandardObservables() {
   addObservable("t", "time", [](double t, const double*) { return t; });
   for (std::size_t i = 0; i < info_->stateNames.size(); ++i)

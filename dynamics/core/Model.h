@@ -90,6 +90,7 @@ protected:
   /// Adds the state components, t, and the integrals as observables; call from the constructor.
   void addStandardObservables();
   void addObservable(std::string id, std::string description, std::function<double(double, const double*)> f);
+  void addObservables(std::vector<Observable> list);
   /// Fills `x` from `named`; components absent from `named` keep their value. Rejects unknown names.
   void assignNamed(const std::map<std::string, double>& named, const std::string& context,
                    Eigen::VectorXd& x) const;

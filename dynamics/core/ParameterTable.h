@@ -23,6 +23,7 @@ class ParameterTable {
 public:
   ParameterTable() = default;
   ParameterTable(std::initializer_list<ParameterSpec> specs) : specs_(specs) {}
+  explicit ParameterTable(std::vector<ParameterSpec> specs) : specs_(std::move(specs)) {}
   /// Index of the parameter with this id, or -1.
   int find(const std::string& id) const;
   const std::vector<ParameterSpec>& specs() const { return specs_; }

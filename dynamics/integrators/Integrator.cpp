@@ -1,6 +1,8 @@
 #include "dynamics/integrators/Integrator.h"
 
 #include "dynamics/core/Errors.h"
+#include "dynamics/integrators/Everhart.h"
+#include "dynamics/integrators/Merson.h"
 #include "dynamics/integrators/Rk4.h"
 
 #include <cmath>
@@ -27,10 +29,23 @@ void Integrator::checkFinite() const {
   }
 }
 
+void Integrator::hermite(double t, const Eigen::VectorXd& fPrev, const Eigen::VectorXd& f, Eigen::VectorXd& out) const {
+  const double h = t_ - tPrev_;
+  if (h == 0) {
+    out = x_;
+    return;
+  }
+  const double s = (t - tPrev_) / h, s2 = s * s, s3 = s2 * s;
+  out = (2 * s3 - 3 * s2 + 1) * xPrev_ + ((s3 - 2 * s2 + s) * h) * fPrev + (-2 * s3 + 3 * s2) * x_ +
+        ((s3 - s2) * h) * f;
+}
+
 const IntegratorRegistry& IntegratorRegistry::builtin() {
   static const IntegratorRegistry registry = [] {
     IntegratorRegistry r;
     r.add(Rk4::entry());
+    r.add(Merson::entry());
+    r.add(Everhart::entry());
     return r;
   }();
   return registry;

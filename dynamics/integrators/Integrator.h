@@ -38,6 +38,8 @@ protected:
   }
   /// Throws ComputationError if x_ holds a NaN or an infinity.
   void checkFinite() const;
+  /// Cubic Hermite interpolation on the last step from the states and derivatives at both ends.
+  void hermite(double t, const Eigen::VectorXd& fPrev, const Eigen::VectorXd& f, Eigen::VectorXd& out) const;
 
   const Model* model_ = nullptr;
   double t_ = 0, tPrev_ = 0;

@@ -41,15 +41,6 @@ void Rk4::step() {
   evaluate(x_, k1_);
 }
 
-void Rk4::interpolate(double t, Eigen::VectorXd& out) const {
-  const double h = t_ - tPrev_;
-  if (h == 0) {
-    out = x_;
-    return;
-  }
-  const double s = (t - tPrev_) / h, s2 = s * s, s3 = s2 * s;
-  const double h00 = 2 * s3 - 3 * s2 + 1, h10 = s3 - 2 * s2 + s, h01 = -2 * s3 + 3 * s2, h11 = s3 - s2;
-  out = h00 * xPrev_ + (h10 * h) * fPrev_ + h01 * x_ + (h11 * h) * k1_;
-}
+void Rk4::interpolate(double t, Eigen::VectorXd& out) const { hermite(t, fPrev_, k1_, out); }
 
 } // namespace rv

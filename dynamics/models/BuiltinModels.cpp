@@ -1,7 +1,9 @@
 // BuiltinModels.cpp -- the one list of built-in models (explicit, so static linking cannot drop any).
 #include "dynamics/core/ModelRegistry.h"
 #include "dynamics/models/ChaplyginBall.h"
+#include "dynamics/models/EllipsoidOnPlane.h"
 #include "dynamics/models/Lorenz.h"
+#include "dynamics/models/ParaboloidOnPlane.h"
 
 namespace rv {
 
@@ -12,6 +14,8 @@ template <class M> ModelEntry entryOf() {
 } // namespace
 
 void registerBuiltinModels(ModelRegistry& registry) {
+  registry.add(entryOf<ParaboloidOnPlane>());
+  registry.add(entryOf<EllipsoidOnPlane>());
   registry.add(entryOf<ChaplyginBall>());
   registry.add(entryOf<Lorenz>());
 }

@@ -3,6 +3,7 @@
 #include "dynamics/core/Errors.h"
 #include "dynamics/kinematics/AndoyerDeprit.h"
 #include "dynamics/kinematics/RootFinding.h"
+#include "dynamics/models/BodyState.h"
 
 #include <cmath>
 #include <numbers>
@@ -33,8 +34,7 @@ const ModelInfo& ChaplyginBall::staticInfo() {
               {.id = "root_accuracy", .label = "Accuracy of root finding", .defaultValue = 1e-15, .min = 0,
                .max = 1, .description = "relative accuracy of the completed G"},
           },
-      .stateNames = {"M1", "M2", "M3", "gamma1", "gamma2", "gamma3", "alpha1", "alpha2", "alpha3", "beta1",
-                     "beta2", "beta3", "x", "y", "s_plane", "s_body"},
+      .stateNames = body_state::names(),
       .coreDimension = 6,
       .integralNames = {"E", "H", "geometric", "n"},
       .hasMeasure = true,
@@ -66,36 +66,9 @@ ChaplyginBall::ChaplyginBall(const ParameterValues& p) : ModelWithField(staticIn
   const auto M = [](const double* x) { return Eigen::Vector3d(x[0], x[1], x[2]); };
   const auto gam = [](const double* x) { return Eigen::Vector3d(x[3], x[4], x[5]); };
   const auto omega = [this, M, gam](const double* x) { return angularVelocity<double>(M(x), gam(x)); };
-  const auto ad = [this, M, gam](const double* x) { return toAndoyerDeprit(M(x) + K_, gam(x)); };
-  for (int i = 0; i < 3; ++i)
-    addObservable("omega" + std::to_string(i + 1), "angular velocity, body axis " + std::to_string(i + 1),
-                  [omega, i](double, const double* x) { return omega(x)[i]; });
-  addObservable("G", "Andoyer-Deprit G = |M + K|", [ad](double, const double* x) { return ad(x).G; });
-  addObservable("L", "Andoyer-Deprit L = (M + K)_3", [ad](double, const double* x) { return ad(x).L; });
-  addObservable("l", "Andoyer-Deprit l", [ad](double, const double* x) { return ad(x).l; });
-  addObservable("g", "Andoyer-Deprit g", [ad](double, const double* x) { return ad(x).g; });
-  addObservable("L/G", "Andoyer-Deprit L/G", [ad](double, const double* x) { return ad(x).L / ad(x).G; });
-  addObservable("H/G", "Andoyer-Deprit H/G", [ad](double, const double* x) { return ad(x).H / ad(x).G; });
-  // Euler angles of the body: gamma = (sin th sin ph, sin th cos ph, cos th), alpha3 = sin ps sin th
-  addObservable("theta", "Euler angle theta (nutation)",
-                [](double, const double* x) { return std::acos(std::clamp(x[5], -1.0, 1.0)); });
-  addObservable("phi", "Euler angle phi (proper rotation), mod 2 pi", [](double, const double* x) {
-    return std::fmod(std::atan2(x[3], x[4]) + 2 * std::numbers::pi, 2 * std::numbers::pi);
-  });
-  addObservable("psi", "Euler angle psi (precession), mod 2 pi", [](double, const double* x) {
-    return std::fmod(std::atan2(x[8], -x[11]) + 2 * std::numbers::pi, 2 * std::numbers::pi);
-  });
-  addObservable("RabsX", "contact point (and centre) in the fixed frame, x", [](double, const double* x) { return x[12]; });
-  addObservable("RabsY", "contact point (and centre) in the fixed frame, y", [](double, const double* x) { return x[13]; });
-  addObservable("Vx", "velocity of the centre, x", [this, omega](double, const double* x) {
-    return R_ * omega(x).dot(Eigen::Vector3d(x[9], x[10], x[11]));
-  });
-  addObservable("Vy", "velocity of the centre, y", [this, omega](double, const double* x) {
-    return -R_ * omega(x).dot(Eigen::Vector3d(x[6], x[7], x[8]));
-  });
-  addObservable("Lplane", "length of the trace on the plane", [](double, const double* x) { return x[14]; });
-  addObservable("Lball", "length of the trace on the ball", [](double, const double* x) { return x[15]; });
-  addObservable("Ldiff", "Lplane - Lball", [](double, const double* x) { return x[14] - x[15]; });
+  addObservables(body_state::kinematicObservables(
+      omega, [this, M](const double* x) { return Eigen::Vector3d(M(x) + K_); },
+      [this, omega, gam](const double* x) { return Eigen::Vector3d(R_ * omega(x).cross(gam(x))); }));
 }
 
 Eigen::VectorXd ChaplyginBall::integrals(const double* x) const {
@@ -113,22 +86,10 @@ double ChaplyginBall::measureDensity(const double* x) const {
 
 std::optional<BodyPose> ChaplyginBall::pose(const double* x) const {
   BodyPose p;
-  p.rotation.row(0) = Eigen::Vector3d(x[6], x[7], x[8]).transpose(); // world x-axis in the body frame
-  p.rotation.row(1) = Eigen::Vector3d(x[9], x[10], x[11]).transpose();
-  p.rotation.row(2) = Eigen::Vector3d(x[3], x[4], x[5]).transpose();
+  p.rotation = body_state::rotation(x);
   p.contact = {x[12], x[13], 0};
   p.center = {x[12], x[13], R_};
   return p;
-}
-
-Eigen::VectorXd ChaplyginBall::stateFrom(const Eigen::Vector3d& M, const Eigen::Vector3d& gamma) const {
-  Eigen::VectorXd x = Eigen::VectorXd::Zero(kDim);
-  const Eigen::Vector3d g = gamma.normalized();
-  // alpha: the body image of the fixed x-axis, any unit vector orthogonal to gamma; beta = gamma x alpha
-  Eigen::Vector3d seed = std::abs(g[0]) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
-  const Eigen::Vector3d a = (seed - seed.dot(g) * g).normalized(), b = g.cross(a);
-  x << M, g, a, b, 0, 0, 0, 0;
-  return x;
 }
 
 Eigen::VectorXd ChaplyginBall::stateFromNamed(const std::map<std::string, double>& named,
@@ -137,7 +98,8 @@ Eigen::VectorXd ChaplyginBall::stateFromNamed(const std::map<std::string, double
     if (!named.count(n)) throw InputError(context + ": missing state component '" + n + "'");
   const Eigen::Vector3d g(named.at("gamma1"), named.at("gamma2"), named.at("gamma3"));
   if (!(g.norm() > 1e-12)) throw InputError(context + ".gamma1: gamma must not be zero");
-  Eigen::VectorXd x = stateFrom(Eigen::Vector3d(named.at("M1"), named.at("M2"), named.at("M3")), g);
+  Eigen::VectorXd x = body_state::fromMomentumAndVertical(
+      Eigen::Vector3d(named.at("M1"), named.at("M2"), named.at("M3")), g);
   assignNamed(named, context, x); // explicit alpha, beta, x, y, trace lengths override the derived ones
   x.segment<3>(3).normalize();
   return x;
@@ -173,7 +135,7 @@ Eigen::VectorXd ChaplyginBall::stateFromMap(const std::vector<double>& point, co
   }
   Eigen::Vector3d M, g;
   stateAt(roots[spec.root - 1], M, g);
-  return stateFrom(M, g);
+  return body_state::fromMomentumAndVertical(M, g);
 }
 
 } // namespace rv

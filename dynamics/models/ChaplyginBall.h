@@ -31,8 +31,6 @@ public:
   /// omega from M and gamma: M = I omega + D gamma x (omega x gamma), solved in closed form.
   template <class S>
   Eigen::Matrix<S, 3, 1> angularVelocity(const Eigen::Matrix<S, 3, 1>& M, const Eigen::Matrix<S, 3, 1>& g) const;
-  /// A full state from M and gamma: alpha, beta completed to a right-handed frame, x = y = 0.
-  Eigen::VectorXd stateFrom(const Eigen::Vector3d& M, const Eigen::Vector3d& gamma) const;
   double radius() const { return R_; }
 
 private:

@@ -58,7 +58,7 @@ class Cli(unittest.TestCase):
         self.assertIn("rk4", run("list", "integrators").stdout)
         d = run("describe", "chaplygin_ball")
         self.assertEqual(d.returncode, 0, d.stderr)
-        for word in ("I1", "K3", "gamma3", "L/G", "Lplane", "invariant measure: yes"):
+        for word in ("I1", "K3", "gamma3", "L/G", "Lplane", "Lbody", "invariant measure: yes"):
             self.assertIn(word, d.stdout)
         self.assertBadInput(run("describe", "no_such_problem"), "no_such_problem")
 

@@ -1,0 +1,184 @@
+#include "dynamics/integrators/Everhart.h"
+
+#include "dynamics/core/Errors.h"
+
+#include <cmath>
+
+namespace rv {
+
+namespace {
+
+using ld = long double;
+
+// P_n(x) and P_{n-1}(x) by the three-term recurrence
+std::pair<ld, ld> legendre(int n, ld x) {
+  ld p0 = 1, p1 = x;
+  if (n == 0) return {1, 0};
+  for (int k = 2; k <= n; ++k) {
+    const ld p2 = ((2 * k - 1) * x * p1 - (k - 1) * p0) / k;
+    p0 = p1, p1 = p2;
+  }
+  return {p1, p0};
+}
+
+// all roots of f in (lo, hi] by a fine scan and bisection (the polynomials here have well separated roots)
+template <class F> std::vector<ld> roots(F f, ld lo, ld hi, int grid) {
+  std::vector<ld> r;
+  ld a = lo, fa = f(a);
+  for (int i = 1; i <= grid; ++i) {
+    const ld b = lo + (hi - lo) * i / grid, fb = f(b);
+    if (fb == 0) {
+      r.push_back(b);
+    } else if ((fa < 0) != (fb < 0) && fa != 0) {
+      ld x0 = a, x1 = b, f0 = fa;
+      for (int it = 0; it < 200; ++it) {
+        const ld m = (x0 + x1) / 2, fm = f(m);
+        if (m <= x0 || m >= x1) break;
+        if ((fm < 0) == (f0 < 0))
+          x0 = m, f0 = fm;
+        else
+          x1 = m;
+      }
+      r.push_back((x0 + x1) / 2);
+    }
+    a = b, fa = fb;
+  }
+  return r;
+}
+
+ld lagrange(const std::vector<ld>& c, int j, ld t) {
+  ld v = 1;
+  for (std::size_t m = 0; m < c.size(); ++m)
+    if (static_cast<int>(m) != j) v *= (t - c[m]) / (c[j] - c[m]);
+  return v;
+}
+
+} // namespace
+
+const ParameterTable& Everhart::parameterTable() {
+  static const ParameterTable table{
+      {.id = "step", .label = "Step", .defaultValue = 0.05, .min = 1e-12, .max = 1e3, .description = "constant integration step"},
+      {.id = "order", .label = "Order", .defaultValue = 15, .min = 3, .max = 1000,
+       .description = "3, 7, 11, 15, 19, 23 or 27; other values are rounded down to one of these", .integer = true},
+      {.id = "iterations", .label = "Number of iterations", .defaultValue = 12, .min = 1, .max = 100,
+       .description = "most predictor-corrector iterations per step (fewer when the corrector has converged)",
+       .integer = true},
+  };
+  return table;
+}
+
+IntegratorEntry Everhart::entry() {
+  return {"everhart", "Everhart, implicit, Gauss-Radau spacings, orders 3..27",
+          "Everhart 1985; Rein and Spiegel, IAS15, MNRAS 446 (2015)", &parameterTable(),
+          [](const ParameterValues& p) -> std::unique_ptr<Integrator> {
+            return std::make_unique<Everhart>(p["step"], static_cast<int>(p["order"]), static_cast<int>(p["iterations"]));
+          }};
+}
+
+int Everhart::effectiveOrder(int requested) {
+  if (requested < 3) return 0;
+  return std::min(27, 3 + 4 * ((requested - 3) / 4));
+}
+
+Everhart::Everhart(double step, int order, int iterations) : h_(step), maxIterations_(iterations) {
+  const int effective = effectiveOrder(order);
+  if (effective == 0) throw InputError("order " + std::to_string(order) + " is below 3 (use 3, 7, ..., 27)");
+  n_ = (effective + 1) / 2;
+  // left Gauss-Radau points: the zeros of P_{n-1} + P_n on [-1, 1], -1 included
+  const auto radau = roots([&](ld x) { auto [pn, pn1] = legendre(n_, x); return pn + pn1; }, -1.0L + 1e-12L, 1.0L, 40000);
+  cl_ = {0.0L};
+  for (ld x : radau) cl_.push_back((x + 1) / 2);
+  // Gauss-Legendre on [0, 1] with n points integrates the Lagrange polynomials (degree n - 1) exactly
+  for (ld x : roots([&](ld x) { return legendre(n_, x).first; }, -1.0L, 1.0L, 40000)) {
+    auto [pn, pn1] = legendre(n_, x);
+    const ld dp = n_ * (x * pn - pn1) / (x * x - 1);
+    gaussNodes_.push_back((x + 1) / 2);
+    gaussWeights_.push_back(1 / ((1 - x * x) * dp * dp)); // the [-1, 1] weight, halved for [0, 1]
+  }
+  if (static_cast<int>(cl_.size()) != n_ || static_cast<int>(gaussNodes_.size()) != n_)
+    throw ComputationError("Everhart: could not compute the Gauss-Radau spacings");
+  c_.assign(cl_.begin(), cl_.end());
+  A_.resize(n_, n_), extrapolate_.resize(n_, n_), b_.resize(n_);
+  for (int j = 0; j < n_; ++j) {
+    ld bj = 0;
+    for (int k = 0; k < n_; ++k) bj += gaussWeights_[k] * lagrange(cl_, j, gaussNodes_[k]);
+    b_[j] = static_cast<double>(bj);
+    for (int i = 0; i < n_; ++i) {
+      ld aij = 0;
+      for (int k = 0; k < n_; ++k) aij += gaussWeights_[k] * lagrange(cl_, j, cl_[i] * gaussNodes_[k]);
+      A_(i, j) = static_cast<double>(cl_[i] * aij);
+      extrapolate_(j, i) = static_cast<double>(lagrange(cl_, j, 1 + cl_[i]));
+    }
+  }
+}
+
+void Everhart::start(const Model& model, double t0, const Eigen::VectorXd& x0, int direction) {
+  Integrator::start(model, t0, x0, direction);
+  const auto d = x0.size();
+  F_.setZero(d, n_), Fnew_.setZero(d, n_);
+  f1_.resize(d), y_.resize(d), sum_.resize(d);
+  compensation_.setZero(d);
+  havePrevious_ = false;
+  evaluate(x_, f1_);
+}
+
+void Everhart::step() {
+  const double h = direction_ * h_;
+  // predictor: the last step's polynomial continued over this one (or a constant on the first step)
+  if (havePrevious_)
+    Fnew_.noalias() = F_ * extrapolate_;
+  else
+    Fnew_ = f1_.replicate(1, n_);
+  F_.swap(Fnew_);
+  F_.col(0) = f1_;
+  // corrector: F_j = f(x0 + h sum_l A(j, l) F_l) until the node values stop changing (IAS15's rule)
+  double previousChange = 1e300;
+  lastIterations_ = 0;
+  for (int it = 0; it < maxIterations_; ++it) {
+    ++lastIterations_;
+    double change = 0, scale = 0;
+    for (int j = 1; j < n_; ++j) {
+      y_.noalias() = F_ * A_.row(j).transpose();
+      y_ = x_ + h * y_;
+      auto col = Fnew_.col(j);
+      model_->rhs(y_.data(), col.data());
+      ++evaluations_;
+      change = std::max(change, (col - F_.col(j)).lpNorm<Eigen::Infinity>());
+      scale = std::max(scale, col.lpNorm<Eigen::Infinity>());
+    }
+    for (int j = 1; j < n_; ++j) F_.col(j) = Fnew_.col(j);
+    const double relative = scale > 0 ? change / scale : change;
+    if (relative < 1e-16 || (it > 2 && relative >= previousChange)) break; // converged, or only rounding left
+    previousChange = relative;
+  }
+  // x1 = x0 + h sum_j b_j F_j, with compensated (Kahan) summation across steps
+  xPrev_ = x_;
+  sum_.noalias() = F_ * b_;
+  y_ = h * sum_ - compensation_;
+  sum_ = x_ + y_;
+  compensation_ = (sum_ - x_) - y_;
+  x_ = sum_;
+  tPrev_ = t_;
+  t_ = tPrev_ + h;
+  checkFinite();
+  evaluate(x_, f1_);
+  havePrevious_ = true;
+}
+
+void Everhart::interpolate(double t, Eigen::VectorXd& out) const {
+  const double h = t_ - tPrev_;
+  if (h == 0) {
+    out = x_;
+    return;
+  }
+  // x(tau) = x0 + h sum_j (int_0^tau l_j) F_j, the integrals by Gauss-Legendre on [0, tau]
+  const ld tau = static_cast<ld>((t - tPrev_) / h);
+  out = xPrev_;
+  for (int j = 0; j < n_; ++j) {
+    ld w = 0;
+    for (int k = 0; k < n_; ++k) w += gaussWeights_[k] * lagrange(cl_, j, tau * gaussNodes_[k]);
+    out += (h * static_cast<double>(tau * w)) * F_.col(j);
+  }
+}
+
+} // namespace rv

@@ -1,0 +1,179 @@
+// Every integrator's empirical order of convergence, measured on one smooth problem (Boost.Odeint's
+// test/numeric approach): the error at t = T falls by 2^p when the step is halved.
+#include "dynamics/core/ModelWithField.h"
+#include "dynamics/core/Errors.h"
+#include "dynamics/integrators/Everhart.h"
+#include "dynamics/integrators/Merson.h"
+#include "dynamics/integrators/Rk4.h"
+#include "tests/dynamics/TestSupport.h"
+
+#include <cmath>
+#include <gtest/gtest.h>
+
+namespace rv {
+namespace {
+
+const ModelInfo& pendulumInfo() {
+  static const ModelInfo info{.id = "pendulum", .stateNames = {"q", "p", "s"}, .coreDimension = 3};
+  return info;
+}
+// a non-linear, non-polynomial smooth system: pendulum q'' = -sin q, plus s' = q p (couples the components)
+struct Pendulum : ModelWithField<Pendulum, 3> {
+  Pendulum() : ModelWithField(pendulumInfo(), ParameterValues(pendulumInfo().parameters)) {}
+  template <class S> void field(const Vec<S>& x, Vec<S>& dx) const {
+    using std::sin;
+    dx[0] = x[1], dx[1] = -sin(x[0]), dx[2] = x[0] * x[1];
+  }
+};
+
+const ModelInfo& oscillatorInfo() {
+  static const ModelInfo info{.id = "oscillator", .stateNames = {"q", "p", "s"}, .coreDimension = 3};
+  return info;
+}
+// q'' = -q with s' = q p: q = cos t, p = -sin t, s = (cos^2 t - 1) / 2 exactly, so no reference run is needed
+struct Oscillator : ModelWithField<Oscillator, 3> {
+  Oscillator() : ModelWithField(oscillatorInfo(), ParameterValues(oscillatorInfo().parameters)) {}
+  template <class S> void field(const Vec<S>& x, Vec<S>& dx) const { dx[0] = x[1], dx[1] = -x[0], dx[2] = x[0] * x[1]; }
+};
+
+Eigen::VectorXd solveFixed(Integrator& integ, const Model& m, double h, double T) {
+  Eigen::VectorXd x0(3);
+  x0 << 1.2, 0.3, 0.0;
+  integ.start(m, 0, x0);
+  const long n = std::lround(T / h);
+  for (long i = 0; i < n; ++i) integ.step();
+  EXPECT_NEAR(integ.time(), T, 1e-9);
+  return integ.state();
+}
+
+double measuredOrder(const std::function<std::unique_ptr<Integrator>(double)>& make, double h1, double h2, double T) {
+  Pendulum m;
+  Everhart reference(0.01, 27, 30);
+  const Eigen::VectorXd exact = solveFixed(reference, m, 0.01, T);
+  auto a = make(h1), b = make(h2);
+  const double e1 = (solveFixed(*a, m, h1, T) - exact).norm(), e2 = (solveFixed(*b, m, h2, T) - exact).norm();
+  std::printf("  h %.4g -> %.3e, h %.4g -> %.3e\n", h1, e1, h2, e2);
+  return std::log(e1 / e2) / std::log(h1 / h2);
+}
+
+TEST(IntegratorOrder, EverhartFifteenAgainstAnExactSolution) {
+  // 2^15 per halving crosses double rounding quickly: an exact solution and a step ratio of 1.25
+  Oscillator m;
+  Eigen::VectorXd x0(3), exact(3);
+  x0 << 1, 0, 0;
+  const double T = 40;
+  exact << std::cos(T), -std::sin(T), (std::cos(T) * std::cos(T) - 1) / 2;
+  const auto error = [&](double h) {
+    Everhart e(h, 15, 40);
+    e.start(m, 0, x0);
+    for (long i = 0; i < std::lround(T / h); ++i) e.step();
+    return (e.state() - exact).norm();
+  };
+  const double e1 = error(2.0), e2 = error(1.6);
+  std::printf("  h 2 -> %.3e, h 1.6 -> %.3e\n", e1, e2);
+  EXPECT_NEAR(std::log(e1 / e2) / std::log(1.25), 15.0, 0.3);
+}
+
+TEST(IntegratorOrder, Rk4IsFourth) {
+  EXPECT_NEAR(measuredOrder([](double h) { return std::make_unique<Rk4>(h); }, 0.1, 0.05, 4.0), 4.0, 0.3);
+}
+
+TEST(IntegratorOrder, MersonWithAFixedStepIsFourth) {
+  // pin the step (min = max) and let no step be rejected: the order of the formula itself
+  const auto make = [](double h) { return std::make_unique<Merson>(h, 1.0, h, h); };
+  EXPECT_NEAR(measuredOrder(make, 0.1, 0.05, 4.0), 4.0, 0.3);
+}
+
+struct EverhartCase {
+  int order;
+  double h1, h2, T = 8.0;
+};
+class EverhartOrder : public ::testing::TestWithParam<EverhartCase> {};
+
+TEST_P(EverhartOrder, IsTwoNMinusOne) {
+  const auto c = GetParam();
+  const auto make = [&](double h) { return std::make_unique<Everhart>(h, c.order, 40); };
+  EXPECT_NEAR(measuredOrder(make, c.h1, c.h2, c.T), c.order, 0.3) << "order " << c.order;
+}
+INSTANTIATE_TEST_SUITE_P(Orders, EverhartOrder,
+                         ::testing::Values(EverhartCase{3, 0.1, 0.05}, EverhartCase{7, 0.4, 0.2},
+                                           EverhartCase{11, 0.8, 0.4}));
+
+TEST(Everhart, SpacingsAreGaussRadauAndTheWeightsIntegrateExactly) {
+  for (int order : {3, 7, 11, 15, 19, 23, 27}) {
+    Everhart e(0.1, order, 10);
+    const int n = (order + 1) / 2;
+    ASSERT_EQ(static_cast<int>(e.spacings().size()), n);
+    EXPECT_EQ(e.spacings()[0], 0.0);
+    // Radau quadrature with n nodes (one fixed) integrates polynomials of degree 2n - 2 exactly
+    for (int k = 0; k <= 2 * n - 2; ++k) {
+      double q = 0;
+      for (int j = 0; j < n; ++j) q += e.weights()[j] * std::pow(e.spacings()[j], k);
+      EXPECT_NEAR(q, 1.0 / (k + 1), 1e-14) << "order " << order << ", degree " << k;
+    }
+  }
+  Everhart three(0.1, 3, 10); // the classical 2-point Radau IA spacing: 0, 2/3 with weights 1/4, 3/4
+  EXPECT_NEAR(three.spacings()[1], 2.0 / 3.0, 1e-16);
+  EXPECT_NEAR(three.weights()[0], 0.25, 1e-16);
+}
+
+TEST(Everhart, OrdersAreRoundedDownAsTheManualSays) {
+  EXPECT_EQ(Everhart::effectiveOrder(15), 15);
+  EXPECT_EQ(Everhart::effectiveOrder(14), 11);
+  EXPECT_EQ(Everhart::effectiveOrder(100), 27);
+  EXPECT_EQ(Everhart::effectiveOrder(2), 0);
+  EXPECT_THROW(Everhart(0.1, 2, 10), InputError);
+  EXPECT_EQ(Everhart(0.1, 9, 10).order(), 7);
+}
+
+TEST(Everhart, DenseOutputAgreesWithSmallSteps) {
+  Pendulum m;
+  Everhart big(0.5, 15, 30), fine(0.5 / 64, 15, 30);
+  Eigen::VectorXd x0(3), a(3);
+  x0 << 1.2, 0.3, 0.0;
+  big.start(m, 0, x0);
+  fine.start(m, 0, x0);
+  for (int i = 0; i < 4; ++i) big.step();
+  for (int i = 0; i < 3 * 64 + 17; ++i) fine.step(); // t = 1.5 + 17/128, inside the last big step
+  big.interpolate(fine.time(), a);
+  EXPECT_NEAR((a - fine.state()).norm(), 0, 1e-9);
+}
+
+TEST(Merson, KeepsTheLocalErrorNearItsPrecisionAndAdaptsTheStep) {
+  Pendulum m;
+  Everhart reference(0.01, 27, 30);
+  const Eigen::VectorXd exact = solveFixed(reference, m, 0.01, 8.0);
+  double previous = 1e300;
+  for (double precision : {1e-6, 1e-8, 1e-10}) {
+    Merson merson(0.01, precision, 1e-12, 1.0);
+    Eigen::VectorXd x0(3), x(3);
+    x0 << 1.2, 0.3, 0.0;
+    merson.start(m, 0, x0);
+    long steps = 0;
+    while (merson.time() < 8.0) merson.step(), ++steps;
+    merson.interpolate(8.0, x);
+    const double err = (x - exact).norm();
+    // the global error is the local ones summed: at most steps * precision (with a margin for the estimate)
+    EXPECT_LT(err, 10 * steps * precision) << precision;
+    EXPECT_LT(err, previous) << "a tighter precision gives a smaller error";
+    previous = err;
+  }
+}
+
+TEST(Merson, ReachingTheMinimumStepIsAnError) {
+  Pendulum m;
+  Merson merson(0.1, 1e-15, 0.05, 1.0);
+  Eigen::VectorXd x0(3);
+  x0 << 1.2, 0.3, 0.0;
+  merson.start(m, 0, x0);
+  try {
+    for (int i = 0; i < 100; ++i) merson.step();
+    FAIL() << "no error";
+  } catch (const ComputationError& e) {
+    EXPECT_NE(std::string(e.what()).find("minimum"), std::string::npos);
+  }
+  EXPECT_THROW(Merson(0.1, 1e-8, 1.0, 0.5), InputError);
+}
+
+} // namespace
+} // namespace rv
