@@ -1,6 +1,7 @@
 #include "render/VisualScene.h"
 
-#include "render/objects/BallObject.h"
+#include "render/BodyMeshes.h"
+#include "render/objects/BodyObject.h"
 #include "render/objects/PhaseCurveObject.h"
 #include "render/objects/PlaneObject.h"
 #include "render/objects/PlaneTraceObject.h"
@@ -40,11 +41,12 @@ VisualScene::VisualScene(const Model& model, const ViewOptions& options, const E
 
   const auto pose = model.pose(x0.data());
   const long cap = options.maxTracePoints;
-  if (model.info().body == BodyShape::Ball && pose) {
-    scale_ = (pose->center - pose->contact).norm();
+  const auto geometry = model.geometry();
+  if (geometry && pose) {
+    scale_ = bodySize(*geometry);
     add(std::make_unique<PlaneObject>("plane", scale_, 40 * scale_));
     add(std::make_unique<PlaneTraceObject>("trace", scale_, cap));
-    add(std::make_unique<BallObject>("ball", scale_));
+    add(std::make_unique<BodyObject>(geometry->shape == BodyShape::Ball ? "ball" : "body", *geometry));
   } else {
     scale_ = std::max(1.0, x0.head(std::min<Eigen::Index>(3, x0.size())).norm());
     add(std::make_unique<PhaseCurveObject>("curve", scale_, cap));
@@ -128,14 +130,17 @@ void VisualScene::placeCamera() {
   const double az = options_.camera.azimuth * std::numbers::pi / 180;
   const Eigen::Vector3d dir(std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el));
   cam->SetViewUp(0, 0, 1);
-  if (model_.info().body == BodyShape::None) {
+  if (!model_.geometry()) {
     // frame whatever has been drawn so far, from the requested direction
     cam->SetFocalPoint(0, 0, 0);
     cam->SetPosition(dir[0], dir[1], dir[2]);
     renderer_->ResetCamera();
     return;
   }
-  const double dist = options_.camera.distance > 0 ? options_.camera.distance : 9 * scale_;
+  // a ball is framed with room for its trace; an elongated body's size is its longest half-axis already
+  const auto geometry = model_.geometry();
+  const double framing = geometry && geometry->shape == BodyShape::Ball ? 9 : 5;
+  const double dist = options_.camera.distance > 0 ? options_.camera.distance : framing * scale_;
   const Eigen::Vector3d eye = focus_ + dist * dir;
   cam->SetFocalPoint(focus_[0], focus_[1], focus_[2]);
   cam->SetPosition(eye[0], eye[1], eye[2]);

@@ -11,6 +11,7 @@ Model::Model(const ModelInfo& info, const ParameterValues& params) : info_(&info
 Eigen::VectorXd Model::integrals(const double*) const { return {}; }
 double Model::measureDensity(const double*) const { return 1.0; }
 std::optional<BodyPose> Model::pose(const double*) const { return std::nullopt; }
+std::optional<BodyGeometry> Model::geometry() const { return std::nullopt; }
 
 Eigen::VectorXd Model::stateFromNamed(const std::map<std::string, double>& named,
                                       const std::string& context) const {

@@ -30,6 +30,15 @@ struct BodyPose {
 /// Which body and surface the render layer should build for a model.
 enum class BodyShape { None, Ball, Ellipsoid, Paraboloid };
 
+/// The shape of a body in its own frame, relative to the pose's centre (for drawing).
+struct BodyGeometry {
+  BodyShape shape = BodyShape::None;
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero(); ///< ball or ellipsoid centre; paraboloid vertex
+  Eigen::Vector3d semiAxes = Eigen::Vector3d::Ones(); ///< ellipsoid semi-axes (ball: the radius thrice)
+  double p = 1, q = 1;   ///< paraboloid: radii of curvature at the vertex
+  double height = 1;     ///< paraboloid: how far above its vertex it is drawn
+};
+
 /// The constant description of a model kind.
 struct ModelInfo {
   std::string id;                       ///< e.g. "chaplygin_ball" (design.md contract)
@@ -72,6 +81,8 @@ public:
   virtual double measureDensity(const double* x) const;
   /// Pose of the body, for models that have one.
   virtual std::optional<BodyPose> pose(const double* x) const;
+  /// The body's shape in its frame, for models that have one.
+  virtual std::optional<BodyGeometry> geometry() const;
 
   /// A full state from named components; names the model can derive may be omitted.
   /// Throws InputError naming `context` and the offending name.

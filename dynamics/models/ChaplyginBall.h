@@ -23,6 +23,9 @@ public:
   Eigen::VectorXd integrals(const double* x) const override;
   double measureDensity(const double* x) const override;
   std::optional<BodyPose> pose(const double* x) const override;
+  std::optional<BodyGeometry> geometry() const override {
+    return BodyGeometry{.shape = BodyShape::Ball, .semiAxes = Eigen::Vector3d::Constant(R_)};
+  }
   Eigen::VectorXd stateFromNamed(const std::map<std::string, double>& named,
                                  const std::string& context) const override;
   Eigen::VectorXd stateFromMap(const std::vector<double>& point, const MapPointSpec& spec,

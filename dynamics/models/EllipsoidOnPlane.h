@@ -23,6 +23,9 @@ public:
     return -b2_.cast<S>().cwiseProduct(dg) / s + b2g * (b2g.dot(dg) / (s2 * s));
   }
   bool touches(const Eigen::Vector3d&) const { return true; }
+  std::optional<BodyGeometry> geometry() const override {
+    return BodyGeometry{.shape = BodyShape::Ellipsoid, .centre = -a_, .semiAxes = b2_.cwiseSqrt()};
+  }
 
   Eigen::VectorXd stateFromNamed(const std::map<std::string, double>& named, const std::string& context) const override {
     return namedState(named, context);

@@ -22,6 +22,10 @@ public:
   }
   /// The paraboloid touches the plane only while its axis points up (gamma3 > 0).
   bool touches(const Eigen::Vector3d& g) const { return g[2] > 1e-6; }
+  std::optional<BodyGeometry> geometry() const override {
+    return BodyGeometry{.shape = BodyShape::Paraboloid, .centre = Eigen::Vector3d(0, 0, -h_), .p = p_, .q = q_,
+                        .height = 1.5 * std::max(std::max(p_, q_), h_)};
+  }
 
   Eigen::VectorXd stateFromNamed(const std::map<std::string, double>& named, const std::string& context) const override {
     return namedState(named, context);

@@ -1,34 +1,33 @@
-#include "render/objects/BallObject.h"
+#include "render/objects/BodyObject.h"
 
+#include "render/BodyMeshes.h"
 #include "render/Textures.h"
 
 #include <vtkActor.h>
 #include <vtkMatrix4x4.h>
+#include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
 #include <vtkRegularPolygonSource.h>
 #include <vtkRenderer.h>
 #include <vtkTexture.h>
-#include <vtkTexturedSphereSource.h>
 
 namespace rv {
 
-BallObject::BallObject(std::string name, double radius) : VisualObject(std::move(name)), radius_(radius) {
-  vtkNew<vtkTexturedSphereSource> sphere;
-  sphere->SetRadius(radius);
-  sphere->SetThetaResolution(96);
-  sphere->SetPhiResolution(48);
+BodyObject::BodyObject(std::string name, const BodyGeometry& geometry)
+    : VisualObject(std::move(name)), size_(bodySize(geometry)) {
   vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(sphere->GetOutputPort());
-  ball_ = vtkSmartPointer<vtkActor>::New();
-  ball_->SetMapper(mapper);
-  ball_->GetProperty()->SetSpecular(0.35);
-  ball_->GetProperty()->SetSpecularPower(30);
+  mapper->SetInputData(makeBodyMesh(geometry));
+  body_ = vtkSmartPointer<vtkActor>::New();
+  body_->SetMapper(mapper);
+  body_->GetProperty()->SetSpecular(0.35);
+  body_->GetProperty()->SetSpecularPower(30);
+  body_->GetProperty()->BackfaceCullingOff(); // an open paraboloid shows its inside
 
   vtkNew<vtkRegularPolygonSource> disc;
   disc->SetNumberOfSides(64);
   disc->GeneratePolylineOff();
-  disc->SetRadius(0.7 * radius);
+  disc->SetRadius(0.35 * size_);
   vtkNew<vtkPolyDataMapper> discMapper;
   discMapper->SetInputConnection(disc->GetOutputPort());
   shadow_ = vtkSmartPointer<vtkActor>::New();
@@ -39,32 +38,32 @@ BallObject::BallObject(std::string name, double radius) : VisualObject(std::move
   shadow_->PickableOff();
 }
 
-void BallObject::attach(vtkRenderer* renderer) {
+void BodyObject::attach(vtkRenderer* renderer) {
   renderer->AddActor(shadow_);
-  renderer->AddActor(ball_);
+  renderer->AddActor(body_);
 }
 
-void BallObject::apply(const ObjectOptions& o) {
+void BodyObject::apply(const ObjectOptions& o) {
   const Rgb color = o.color.value_or(Rgb{0.19, 0.44, 1.0});
-  ball_->SetTexture(makeBallTexture(color));
-  ball_->SetVisibility(o.enabled);
+  body_->SetTexture(makeBallTexture(color));
+  body_->SetVisibility(o.enabled);
   shadow_->SetVisibility(o.enabled);
-  auto* p = ball_->GetProperty();
+  auto* p = body_->GetProperty();
   p->SetOpacity(o.opacity);
   p->SetRepresentation(o.style == SurfaceStyle::Grid ? VTK_WIREFRAME : VTK_SURFACE);
   p->SetEdgeVisibility(o.style == SurfaceStyle::Both);
   p->SetEdgeColor(0.1, 0.1, 0.1);
 }
 
-void BallObject::show(const FrameState& s) {
+void BodyObject::show(const FrameState& s) {
   if (!s.pose) return;
   vtkNew<vtkMatrix4x4> m;
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) m->SetElement(i, j, s.pose->rotation(i, j));
     m->SetElement(i, 3, s.pose->center[i]);
   }
-  ball_->SetUserMatrix(m);
-  shadow_->SetPosition(s.pose->contact[0], s.pose->contact[1], s.pose->contact[2] + 3e-3 * radius_);
+  body_->SetUserMatrix(m);
+  shadow_->SetPosition(s.pose->contact[0], s.pose->contact[1], s.pose->contact[2] + 3e-3 * size_);
 }
 
 } // namespace rv

@@ -1,0 +1,79 @@
+#include "render/BodyMeshes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <vtkCellArray.h>
+#include <vtkFloatArray.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataNormals.h>
+
+namespace rv {
+
+namespace {
+// a (nu x nv) grid of points p(u, v), u the longitude in [0, 1] (seam duplicated), v in [0, 1]
+template <class F> vtkSmartPointer<vtkPolyData> grid(int nu, int nv, F point) {
+  vtkNew<vtkPoints> pts;
+  vtkNew<vtkFloatArray> tc;
+  tc->SetNumberOfComponents(2);
+  for (int j = 0; j <= nv; ++j)
+    for (int i = 0; i <= nu; ++i) {
+      const double u = double(i) / nu, v = double(j) / nv;
+      const Eigen::Vector3d p = point(u, v);
+      pts->InsertNextPoint(p[0], p[1], p[2]);
+      tc->InsertNextTuple2(u, v);
+    }
+  vtkNew<vtkCellArray> tris;
+  for (int j = 0; j < nv; ++j)
+    for (int i = 0; i < nu; ++i) {
+      const vtkIdType a = j * (nu + 1) + i, b = a + 1, c = a + nu + 1, d = c + 1;
+      const vtkIdType t1[3] = {a, b, d}, t2[3] = {a, d, c};
+      tris->InsertNextCell(3, t1);
+      tris->InsertNextCell(3, t2);
+    }
+  vtkNew<vtkPolyData> raw;
+  raw->SetPoints(pts);
+  raw->SetPolys(tris);
+  raw->GetPointData()->SetTCoords(tc);
+  vtkNew<vtkPolyDataNormals> normals; // smooth shading; keep the seam's texture coordinates
+  normals->SetInputData(raw);
+  normals->SplittingOff();
+  normals->ConsistencyOn();
+  normals->AutoOrientNormalsOff();
+  normals->Update();
+  vtkSmartPointer<vtkPolyData> out = normals->GetOutput();
+  return out;
+}
+} // namespace
+
+double bodySize(const BodyGeometry& g) {
+  switch (g.shape) {
+  case BodyShape::Ball:
+  case BodyShape::Ellipsoid: return g.semiAxes.maxCoeff();
+  case BodyShape::Paraboloid: return std::max({std::sqrt(2 * g.p * g.height), std::sqrt(2 * g.q * g.height), g.height});
+  case BodyShape::None: break;
+  }
+  return 1.0;
+}
+
+vtkSmartPointer<vtkPolyData> makeBodyMesh(const BodyGeometry& g) {
+  constexpr double pi = std::numbers::pi;
+  if (g.shape == BodyShape::Ball || g.shape == BodyShape::Ellipsoid)
+    return grid(96, 48, [&](double u, double v) {
+      const double lon = 2 * pi * u, lat = pi * (v - 0.5);
+      return Eigen::Vector3d(g.centre[0] + g.semiAxes[0] * std::cos(lat) * std::cos(lon),
+                             g.centre[1] + g.semiAxes[1] * std::cos(lat) * std::sin(lon),
+                             g.centre[2] + g.semiAxes[2] * std::sin(lat));
+    });
+  if (g.shape == BodyShape::Paraboloid) // r3 = vertex + (r1^2 / p + r2^2 / q) / 2, up to `height`
+    return grid(96, 32, [&](double u, double v) {
+      const double lon = 2 * pi * u, s = v * std::sqrt(g.height); // s^2 = height above the vertex
+      return Eigen::Vector3d(g.centre[0] + std::sqrt(2 * g.p) * s * std::cos(lon),
+                             g.centre[1] + std::sqrt(2 * g.q) * s * std::sin(lon), g.centre[2] + s * s);
+    });
+  return vtkSmartPointer<vtkPolyData>::New();
+}
+
+} // namespace rv

@@ -1,0 +1,18 @@
+// BodyMeshes.h -- surfaces of the rolling bodies in their own frame, with texture coordinates (longitude,
+// latitude) so that one pattern shows their turning: ball, ellipsoid, paraboloid.
+#pragma once
+#include "dynamics/core/Model.h"
+
+#include <vtkSmartPointer.h>
+
+class vtkPolyData;
+
+namespace rv {
+
+/// A triangulated surface with normals and texture coordinates for the geometry (None: an empty mesh).
+vtkSmartPointer<vtkPolyData> makeBodyMesh(const BodyGeometry& geometry);
+
+/// A length that sets the scene's scale: the largest half-extent of the body.
+double bodySize(const BodyGeometry& geometry);
+
+} // namespace rv

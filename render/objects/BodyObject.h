@@ -1,0 +1,26 @@
+// BodyObject.h -- a rigid body (ball, ellipsoid, paraboloid) drawn from its mesh in its own frame and placed by
+// the pose; textured so that turning and spinning are visible, with a dark disc on the plane under the contact
+// point (a cheap depth cue on software GL).
+#pragma once
+#include "dynamics/core/Model.h"
+#include "render/objects/VisualObject.h"
+
+#include <vtkSmartPointer.h>
+
+class vtkActor;
+
+namespace rv {
+
+class BodyObject final : public VisualObject {
+public:
+  BodyObject(std::string name, const BodyGeometry& geometry);
+  void attach(vtkRenderer* renderer) override;
+  void apply(const ObjectOptions& options) override;
+  void show(const FrameState& s) override;
+
+private:
+  double size_;
+  vtkSmartPointer<vtkActor> body_, shadow_;
+};
+
+} // namespace rv
