@@ -10,8 +10,8 @@
 
 namespace rv {
 
-GrowingPolyline::GrowingPolyline(double minSpacing, long maxPoints)
-    : minSpacing2_(minSpacing * minSpacing), maxPoints_(maxPoints) {
+GrowingPolyline::GrowingPolyline(double minSpacing, long maxPoints, bool asPoints)
+    : minSpacing2_(minSpacing * minSpacing), maxPoints_(maxPoints), asPoints_(asPoints) {
   data_ = vtkSmartPointer<vtkPolyData>::New();
   clear();
   vtkNew<vtkPolyDataMapper> mapper;
@@ -19,6 +19,7 @@ GrowingPolyline::GrowingPolyline(double minSpacing, long maxPoints)
   actor_ = vtkSmartPointer<vtkActor>::New();
   actor_->SetMapper(mapper);
   actor_->GetProperty()->SetRenderLinesAsTubes(true); // honours the line width on core-profile GL
+  actor_->GetProperty()->SetRenderPointsAsSpheres(true);
   actor_->GetProperty()->SetAmbient(0.6);
   actor_->GetProperty()->SetDiffuse(0.5);
 }
@@ -29,6 +30,7 @@ void GrowingPolyline::setAppearance(const Rgb& color, double lineWidth, double o
   auto* p = actor_->GetProperty();
   p->SetColor(color[0], color[1], color[2]);
   p->SetLineWidth(static_cast<float>(lineWidth));
+  p->SetPointSize(static_cast<float>(lineWidth));
   p->SetOpacity(opacity);
   actor_->SetVisibility(visible);
 }
@@ -36,6 +38,7 @@ void GrowingPolyline::setAppearance(const Rgb& color, double lineWidth, double o
 void GrowingPolyline::clear() {
   data_->SetPoints(vtkSmartPointer<vtkPoints>::New());
   data_->SetLines(vtkSmartPointer<vtkCellArray>::New());
+  data_->SetVerts(vtkSmartPointer<vtkCellArray>::New());
   lastIsProvisional_ = false;
   data_->Modified();
 }
@@ -46,6 +49,15 @@ vtkActor* GrowingPolyline::actor() const { return actor_; }
 
 void GrowingPolyline::append(double x, double y, double z) {
   vtkPoints* pts = data_->GetPoints();
+  if (asPoints_) {
+    if (pts->GetNumberOfPoints() >= maxPoints_) return;
+    const vtkIdType id = pts->InsertNextPoint(x, y, z);
+    data_->GetVerts()->InsertNextCell(1, &id);
+    pts->Modified();
+    data_->GetVerts()->Modified();
+    data_->Modified();
+    return;
+  }
   const vtkIdType n = pts->GetNumberOfPoints();
   if (n >= 2) {
     // the newest point is provisional until it is far enough from the one before it: move it

@@ -14,7 +14,8 @@ namespace rv {
 class GrowingPolyline {
 public:
   /// minSpacing: points closer than this to the last one are skipped (the newest is still shown).
-  GrowingPolyline(double minSpacing, long maxPoints);
+  /// asPoints: draw every appended point as a dot, unconnected (the iterates of a map).
+  GrowingPolyline(double minSpacing, long maxPoints, bool asPoints = false);
   void attach(vtkRenderer* renderer);
   void setAppearance(const Rgb& color, double lineWidth, double opacity, bool visible);
   void append(double x, double y, double z);
@@ -25,6 +26,7 @@ public:
 private:
   double minSpacing2_;
   long maxPoints_;
+  bool asPoints_;
   bool lastIsProvisional_ = false;
   vtkSmartPointer<vtkPolyData> data_;
   vtkSmartPointer<vtkActor> actor_;

@@ -49,7 +49,7 @@ VisualScene::VisualScene(const Model& model, const ViewOptions& options, const E
     add(std::make_unique<BodyObject>(geometry->shape == BodyShape::Ball ? "ball" : "body", *geometry));
   } else {
     scale_ = std::max(1.0, x0.head(std::min<Eigen::Index>(3, x0.size())).norm());
-    add(std::make_unique<PhaseCurveObject>("curve", scale_, cap));
+    add(std::make_unique<PhaseCurveObject>(model.isMap() ? "points" : "curve", scale_, cap, model.isMap()));
   }
   show(0.0, x0);
   resetCamera();
@@ -129,7 +129,10 @@ void VisualScene::placeCamera() {
   const double el = options_.camera.elevation * std::numbers::pi / 180;
   const double az = options_.camera.azimuth * std::numbers::pi / 180;
   const Eigen::Vector3d dir(std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el));
-  cam->SetViewUp(0, 0, 1);
+  if (std::abs(std::cos(el)) < 1e-6)
+    cam->SetViewUp(0, 1, 0); // looking straight down (2D maps): y up on the screen
+  else
+    cam->SetViewUp(0, 0, 1);
   if (!model_.geometry()) {
     // frame whatever has been drawn so far, from the requested direction
     cam->SetFocalPoint(0, 0, 0);

@@ -1,9 +1,12 @@
 #include "scenes/Scene.h"
 
+#include "dynamics/integrators/MapIteration.h"
+
 namespace rv {
 
 std::unique_ptr<Integrator> Scene::startIntegrator() const {
-  auto integrator = integratorEntry->create(*integratorParameters);
+  std::unique_ptr<Integrator> integrator =
+      model->isMap() ? std::make_unique<MapIteration>() : integratorEntry->create(*integratorParameters);
   integrator->start(*model, 0.0, initialState);
   return integrator;
 }

@@ -22,8 +22,13 @@ Eigen::VectorXd Model::stateFromNamed(const std::map<std::string, double>& named
   return x;
 }
 
-Eigen::VectorXd Model::stateFromMap(const std::vector<double>&, const MapPointSpec&,
+Eigen::VectorXd Model::stateFromMap(const std::vector<double>& point, const MapPointSpec&,
                                     const std::string& context) const {
+  if (isMap()) { // the point is the state
+    if (static_cast<int>(point.size()) != dimension())
+      throw InputError(context + ": " + info_->id + " map points have " + std::to_string(dimension()) + " coordinates");
+    return Eigen::Map<const Eigen::VectorXd>(point.data(), dimension());
+  }
   throw InputError(context + ": " + info_->id + " has no map coordinates; give \"state\" instead");
 }
 

@@ -30,6 +30,9 @@ struct BodyPose {
 /// Which body and surface the render layer should build for a model.
 enum class BodyShape { None, Ball, Ellipsoid, Paraboloid };
 
+/// A flow (dx/dt = f(x), integrated) or an explicit point map (x -> P(x), iterated).
+enum class ModelKind { Flow, Map };
+
 /// The shape of a body in its own frame, relative to the pose's centre (for drawing).
 struct BodyGeometry {
   BodyShape shape = BodyShape::None;
@@ -50,7 +53,7 @@ struct ModelInfo {
   std::vector<std::string> integralNames; ///< first integrals, in the order integrals() returns them
   bool hasMeasure = false;              ///< measureDensity() is an invariant measure density
   std::vector<std::string> mapCoordinates; ///< coordinates of a map point given as "initial": {"map": ...}
-  BodyShape body = BodyShape::None;
+  ModelKind kind = ModelKind::Flow;
 };
 
 /// Where a map point lies: the section value and which root (sheet) to complete it on.
@@ -71,9 +74,10 @@ public:
   const ParameterValues& parameters() const { return params_; }
   int dimension() const { return static_cast<int>(info_->stateNames.size()); }
 
-  /// dx/dt = f(x) (all models here are autonomous).
+  bool isMap() const { return info_->kind == ModelKind::Map; }
+  /// Flows: dx/dt = f(x) (all models here are autonomous). Maps: out = P(x).
   virtual void rhs(const double* x, double* dx) const = 0;
-  /// Exact Jacobian df/dx, row-major dimension() x dimension().
+  /// Exact Jacobian (df/dx of a flow, dP/dx of a map), row-major dimension() x dimension().
   virtual void jacobian(const double* x, double* jac) const = 0;
   /// Values of the first integrals, in the order of info().integralNames.
   virtual Eigen::VectorXd integrals(const double* x) const;

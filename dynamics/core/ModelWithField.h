@@ -7,6 +7,10 @@
 
 namespace rv {
 
+/// The plain value of a scalar that may carry derivatives (for branch decisions such as wrapping an angle).
+inline double valueOf(double v) { return v; }
+template <class D> double valueOf(const Eigen::AutoDiffScalar<D>& v) { return v.value(); }
+
 /// Derived must provide `template <class S> void field(const Vec<S>& x, Vec<S>& dx) const`.
 template <class Derived, int N> class ModelWithField : public Model {
 public:

@@ -2,8 +2,10 @@
 #include "dynamics/core/ModelRegistry.h"
 #include "dynamics/models/ChaplyginBall.h"
 #include "dynamics/models/EllipsoidOnPlane.h"
+#include "dynamics/models/HenonHeiles.h"
 #include "dynamics/models/Lorenz.h"
 #include "dynamics/models/ParaboloidOnPlane.h"
+#include "dynamics/models/PointMaps.h"
 
 namespace rv {
 
@@ -18,6 +20,9 @@ void registerBuiltinModels(ModelRegistry& registry) {
   registry.add(entryOf<EllipsoidOnPlane>());
   registry.add(entryOf<ChaplyginBall>());
   registry.add(entryOf<Lorenz>());
+  registry.add(entryOf<HenonHeiles>());
+  registry.add(entryOf<HenonMap>());
+  registry.add(entryOf<StandardMap>());
 }
 
 } // namespace rv

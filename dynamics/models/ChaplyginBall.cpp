@@ -39,7 +39,6 @@ const ModelInfo& ChaplyginBall::staticInfo() {
       .integralNames = {"E", "H", "geometric", "n"},
       .hasMeasure = true,
       .mapCoordinates = {"l", "L/G"},
-      .body = BodyShape::Ball,
   };
   return info;
 }

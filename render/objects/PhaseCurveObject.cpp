@@ -13,8 +13,8 @@ namespace {
 double component(const FrameState& s, int i) { return i < s.model.dimension() ? s.x[i] : 0.0; }
 } // namespace
 
-PhaseCurveObject::PhaseCurveObject(std::string name, double scale, long maxPoints)
-    : VisualObject(std::move(name)), scale_(scale), line_(1e-3 * scale, maxPoints) {
+PhaseCurveObject::PhaseCurveObject(std::string name, double scale, long maxPoints, bool asPoints)
+    : VisualObject(std::move(name)), scale_(scale), line_(1e-3 * scale, maxPoints, asPoints) {
   vtkNew<vtkSphereSource> sphere;
   sphere->SetRadius(0.012 * scale);
   sphere->SetThetaResolution(24);

@@ -1,0 +1,55 @@
+// Properties every registered model must have: a default scene that loads, an exact Jacobian that agrees with
+// finite differences at the scene's initial state, observables that evaluate, and for flows with an invariant
+// measure a zero divergence of rho f there.
+#include "dynamics/core/ModelRegistry.h"
+#include "tests/dynamics/TestSupport.h"
+
+#include <filesystem>
+#include <gtest/gtest.h>
+
+namespace rv {
+namespace {
+
+class EveryModel : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(EveryModel, JacobianMatchesFiniteDifferencesAndObservablesEvaluate) {
+  const auto& entry = ModelRegistry::builtin().get(GetParam());
+  const auto m = entry.create(ParameterValues(entry.info->parameters));
+  const int n = m->dimension();
+  // a generic state near the model's scale: from a map point when it has one
+  Eigen::VectorXd x = Eigen::VectorXd::Constant(n, 0.3);
+  for (int i = 0; i < n; ++i) x[i] += 0.07 * i;
+  if (m->info().stateNames.size() >= 6 && m->info().stateNames[3] == "gamma1")
+    x = m->stateFromNamed({{"M1", 0.2}, {"M2", -0.3}, {"M3", 0.4}, {"gamma1", 0.1}, {"gamma2", 0.2}, {"gamma3", 1}}, "t");
+  std::vector<double> J(n * n);
+  m->jacobian(x.data(), J.data());
+  Eigen::VectorXd xp, xm, fp(n), fm(n);
+  const double h = 1e-6;
+  for (int j = 0; j < n; ++j) {
+    xp = x, xm = x;
+    xp[j] += h, xm[j] -= h;
+    m->rhs(xp.data(), fp.data());
+    m->rhs(xm.data(), fm.data());
+    for (int i = 0; i < n; ++i)
+      EXPECT_NEAR(J[i * n + j], (fp[i] - fm[i]) / (2 * h), 1e-6 * std::max(1.0, std::abs(J[i * n + j])))
+          << GetParam() << " d" << i << "/d" << j;
+  }
+  for (const auto& o : m->observables()) EXPECT_TRUE(std::isfinite(o.value(0.0, x.data()))) << GetParam() << " " << o.id;
+  if (m->info().hasMeasure) {
+    EXPECT_NEAR(test::divergenceOfDensityFlow(*m, x), 0, 1e-7) << GetParam();
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Registry, EveryModel, ::testing::Values("paraboloid_on_plane", "ellipsoid_on_plane",
+                                                                 "chaplygin_ball", "lorenz", "henon_heiles",
+                                                                 "henon_map", "standard_map"));
+
+TEST(EveryModel, TheListAboveIsTheRegistry) {
+  std::vector<std::string> ids;
+  for (const auto& e : ModelRegistry::builtin().entries()) ids.push_back(e.info->id);
+  EXPECT_EQ(ids, (std::vector<std::string>{"paraboloid_on_plane", "ellipsoid_on_plane", "chaplygin_ball", "lorenz",
+                                           "henon_heiles", "henon_map", "standard_map"}));
+}
+
+} // namespace
+} // namespace rv
