@@ -65,7 +65,7 @@ Command addDescribeCommand(CLI::App& app) {
     fmt::print("\n\nfirst integrals:");
     if (info.integralNames.empty()) fmt::print(" none");
     for (const auto& n : info.integralNames) fmt::print(" {}", n);
-    fmt::print("\ninvariant measure: {}\n", info.hasMeasure ? "yes" : "none known");
+    fmt::print("\ninvariant measure: {}\n", model->hasInvariantMeasure() ? "yes (at the default parameters)" : "none known");
     fmt::print("map coordinates for \"initial\": {{\"map\": [...]}}:");
     if (info.mapCoordinates.empty()) fmt::print(" none (give \"state\")");
     for (const auto& n : info.mapCoordinates) fmt::print(" {}", n);

@@ -12,6 +12,7 @@ Eigen::VectorXd Model::integrals(const double*) const { return {}; }
 double Model::measureDensity(const double*) const { return 1.0; }
 std::optional<BodyPose> Model::pose(const double*) const { return std::nullopt; }
 std::optional<BodyGeometry> Model::geometry() const { return std::nullopt; }
+std::optional<SupportSurface> Model::support() const { return std::nullopt; }
 
 Eigen::VectorXd Model::stateFromNamed(const std::map<std::string, double>& named,
                                       const std::string& context) const {

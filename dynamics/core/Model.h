@@ -25,6 +25,14 @@ struct BodyPose {
   Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
   Eigen::Vector3d center = Eigen::Vector3d::Zero();
   Eigen::Vector3d contact = Eigen::Vector3d::Zero();
+  Eigen::Vector3d supportNormal = Eigen::Vector3d::UnitZ(); ///< of the fixed surface at the contact, outward
+};
+
+/// The fixed surface a body rolls on, when it is not the plane z = 0: points p(u, v) for u, v in [0, 1]
+/// (u periodic when `closedU`), for drawing.
+struct SupportSurface {
+  std::function<Eigen::Vector3d(double u, double v)> point;
+  bool closedU = true;
 };
 
 /// Which body and surface the render layer should build for a model.
@@ -81,12 +89,16 @@ public:
   virtual void jacobian(const double* x, double* jac) const = 0;
   /// Values of the first integrals, in the order of info().integralNames.
   virtual Eigen::VectorXd integrals(const double* x) const;
-  /// Density of the invariant measure (1 when info().hasMeasure is false).
+  /// Density of the invariant measure (1 when hasInvariantMeasure() is false).
   virtual double measureDensity(const double* x) const;
+  /// Whether measureDensity() is invariant at these parameter values (info().hasMeasure unless a model knows better).
+  virtual bool hasInvariantMeasure() const { return info_->hasMeasure; }
   /// Pose of the body, for models that have one.
   virtual std::optional<BodyPose> pose(const double* x) const;
   /// The body's shape in its frame, for models that have one.
   virtual std::optional<BodyGeometry> geometry() const;
+  /// The surface the body rolls on; nothing means the plane z = 0.
+  virtual std::optional<SupportSurface> support() const;
 
   /// A full state from named components; names the model can derive may be omitted.
   /// Throws InputError naming `context` and the offending name.

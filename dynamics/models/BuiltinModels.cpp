@@ -1,5 +1,7 @@
 // BuiltinModels.cpp -- the one list of built-in models (explicit, so static linking cannot drop any).
 #include "dynamics/core/ModelRegistry.h"
+#include "dynamics/models/BallOnEllipsoid.h"
+#include "dynamics/models/BallOnParaboloid.h"
 #include "dynamics/models/ChaplyginBall.h"
 #include "dynamics/models/EllipsoidOnPlane.h"
 #include "dynamics/models/HenonHeiles.h"
@@ -18,6 +20,8 @@ template <class M> ModelEntry entryOf() {
 void registerBuiltinModels(ModelRegistry& registry) {
   registry.add(entryOf<ParaboloidOnPlane>());
   registry.add(entryOf<EllipsoidOnPlane>());
+  registry.add(entryOf<BallOnEllipsoid>());
+  registry.add(entryOf<BallOnParaboloid>());
   registry.add(entryOf<ChaplyginBall>());
   registry.add(entryOf<Lorenz>());
   registry.add(entryOf<HenonHeiles>());
