@@ -14,7 +14,7 @@ namespace rv {
 
 namespace {
 // a (nu x nv) grid of points p(u, v), u the longitude in [0, 1] (seam duplicated), v in [0, 1]
-template <class F> vtkSmartPointer<vtkPolyData> grid(int nu, int nv, F point) {
+template <class F> vtkSmartPointer<vtkPolyData> grid(int nu, int nv, F point, double repeatU = 1, double repeatV = 1) {
   vtkNew<vtkPoints> pts;
   vtkNew<vtkFloatArray> tc;
   tc->SetNumberOfComponents(2);
@@ -23,7 +23,7 @@ template <class F> vtkSmartPointer<vtkPolyData> grid(int nu, int nv, F point) {
       const double u = double(i) / nu, v = double(j) / nv;
       const Eigen::Vector3d p = point(u, v);
       pts->InsertNextPoint(p[0], p[1], p[2]);
-      tc->InsertNextTuple2(u, v);
+      tc->InsertNextTuple2(u * repeatU, v * repeatV);
     }
   vtkNew<vtkCellArray> tris;
   for (int j = 0; j < nv; ++j)
@@ -47,6 +47,10 @@ template <class F> vtkSmartPointer<vtkPolyData> grid(int nu, int nv, F point) {
   return out;
 }
 } // namespace
+
+vtkSmartPointer<vtkPolyData> makeSurfaceMesh(const SupportSurface& surface) {
+  return grid(128, 64, [&](double u, double v) { return surface.point(u, v); }, 8, 4);
+}
 
 double bodySize(const BodyGeometry& g) {
   switch (g.shape) {

@@ -12,6 +12,9 @@ namespace rv {
 /// A triangulated surface with normals and texture coordinates for the geometry (None: an empty mesh).
 vtkSmartPointer<vtkPolyData> makeBodyMesh(const BodyGeometry& geometry);
 
+/// The fixed surface as a grid of (u, v) in [0, 1]^2, textured with a repeating pattern (8 x 4 repeats).
+vtkSmartPointer<vtkPolyData> makeSurfaceMesh(const SupportSurface& surface);
+
 /// A length that sets the scene's scale: the largest half-extent of the body.
 double bodySize(const BodyGeometry& geometry);
 

@@ -4,8 +4,10 @@
 #include "render/objects/BodyObject.h"
 #include "render/objects/PhaseCurveObject.h"
 #include "render/objects/PlaneObject.h"
-#include "render/objects/PlaneTraceObject.h"
+#include "render/objects/SurfaceObject.h"
+#include "render/objects/ContactTraceObject.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -44,8 +46,11 @@ VisualScene::VisualScene(const Model& model, const ViewOptions& options, const E
   const auto geometry = model.geometry();
   if (geometry && pose) {
     scale_ = bodySize(*geometry);
-    add(std::make_unique<PlaneObject>("plane", scale_, 40 * scale_));
-    add(std::make_unique<PlaneTraceObject>("trace", scale_, cap));
+    if (const auto support = model.support())
+      add(std::make_unique<SurfaceObject>("surface", *support));
+    else
+      add(std::make_unique<PlaneObject>("plane", scale_, 40 * scale_));
+    add(std::make_unique<ContactTraceObject>("trace", scale_, cap));
     add(std::make_unique<BodyObject>(geometry->shape == BodyShape::Ball ? "ball" : "body", *geometry));
   } else {
     scale_ = std::max(1.0, x0.head(std::min<Eigen::Index>(3, x0.size())).norm());
@@ -143,9 +148,18 @@ void VisualScene::placeCamera() {
   // a ball is framed with room for its trace; an elongated body's size is its longest half-axis already
   const auto geometry = model_.geometry();
   const double framing = geometry && geometry->shape == BodyShape::Ball ? 9 : 5;
-  const double dist = options_.camera.distance > 0 ? options_.camera.distance : framing * scale_;
-  const Eigen::Vector3d eye = focus_ + dist * dir;
-  cam->SetFocalPoint(focus_[0], focus_[1], focus_[2]);
+  double dist = options_.camera.distance > 0 ? options_.camera.distance : framing * scale_;
+  Eigen::Vector3d focus = focus_;
+  if (const auto* surface = find("surface"); surface && !options_.camera.follow) {
+    // a fixed surface under the ball: frame all of it
+    double b[6];
+    renderer_->ComputeVisiblePropBounds(b);
+    focus = Eigen::Vector3d((b[0] + b[1]) / 2, (b[2] + b[3]) / 2, (b[4] + b[5]) / 2);
+    if (options_.camera.distance <= 0)
+      dist = 1.9 * std::max({b[1] - b[0], b[3] - b[2], b[5] - b[4]});
+  }
+  const Eigen::Vector3d eye = focus + dist * dir;
+  cam->SetFocalPoint(focus[0], focus[1], focus[2]);
   cam->SetPosition(eye[0], eye[1], eye[2]);
   cam->SetViewAngle(30);
   renderer_->ResetCameraClippingRange();

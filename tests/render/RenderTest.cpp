@@ -4,7 +4,7 @@
 #include "render/Snapshot.h"
 #include "render/VisualScene.h"
 #include "render/context/HeadlessContext.h"
-#include "render/objects/PlaneTraceObject.h"
+#include "render/objects/ContactTraceObject.h"
 #include "render/video/VideoExport.h"
 #include "scenes/SceneLoader.h"
 #include "tests/render/ImageCompare.h"
@@ -41,6 +41,17 @@ TEST(Render, DefaultChaplyginBallSceneMatchesItsBaseline) {
   ASSERT_TRUE(test::isVaried(img));
   EXPECT_EQ(test::matchesBaseline(img, "chaplygin_ball_t10"), "");
 }
+
+class DefaultScene : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(DefaultScene, MatchesItsBaseline) {
+  const Image img = renderScene(GetParam(), 10.0);
+  ASSERT_TRUE(test::isVaried(img));
+  EXPECT_EQ(test::matchesBaseline(img, GetParam() + "_t10"), "");
+}
+INSTANTIATE_TEST_SUITE_P(Rolling, DefaultScene,
+                         ::testing::Values("paraboloid_on_plane", "ellipsoid_on_plane", "ball_on_ellipsoid",
+                                           "ball_on_paraboloid"));
 
 TEST(Render, LorenzSceneMatchesItsBaseline) {
   const Image img = renderScene("lorenz", 20.0);
@@ -89,7 +100,7 @@ TEST(Render, TraceGrowsAlongTheMotion) {
   VisualScene visual(*scene.model, scene.view, scene.initialState);
   Eigen::VectorXd x;
   playTo(visual, *integrator, 2.0, x);
-  const auto* trace = dynamic_cast<const PlaneTraceObject*>(visual.find("trace"));
+  const auto* trace = dynamic_cast<const ContactTraceObject*>(visual.find("trace"));
   ASSERT_NE(trace, nullptr);
   EXPECT_GT(trace->points(), 100);
   visual.clear();

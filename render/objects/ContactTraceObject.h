@@ -1,13 +1,14 @@
-// PlaneTraceObject.h -- the path of the contact point on the plane, drawn just above it.
+// ContactTraceObject.h -- the path of the contact point on the fixed surface (the plane, an ellipsoid, a bowl),
+// drawn just off the surface along its normal.
 #pragma once
 #include "render/GrowingPolyline.h"
 #include "render/objects/VisualObject.h"
 
 namespace rv {
 
-class PlaneTraceObject final : public VisualObject {
+class ContactTraceObject final : public VisualObject {
 public:
-  PlaneTraceObject(std::string name, double scale, long maxPoints);
+  ContactTraceObject(std::string name, double scale, long maxPoints);
   void attach(vtkRenderer* renderer) override { line_.attach(renderer); }
   void apply(const ObjectOptions& options) override;
   void advance(const FrameState& s) override;
