@@ -115,7 +115,7 @@ Everhart::Everhart(double step, int order, int iterations) : h_(step), maxIterat
 void Everhart::start(const Model& model, double t0, const Eigen::VectorXd& x0, int direction) {
   Integrator::start(model, t0, x0, direction);
   const auto d = x0.size();
-  F_.setZero(d, n_), Fnew_.setZero(d, n_);
+  F_.setZero(d, n_), Fnew_.setZero(d, n_), predicted_.setZero(d, n_), correction_.setZero(d, n_);
   f1_.resize(d), y_.resize(d), sum_.resize(d);
   compensation_.setZero(d);
   havePrevious_ = false;
@@ -124,15 +124,22 @@ void Everhart::start(const Model& model, double t0, const Eigen::VectorXd& x0, i
 
 void Everhart::step() {
   const double h = direction_ * h_;
-  // predictor: the last step's polynomial continued over this one (or a constant on the first step)
-  if (havePrevious_)
+  // predictor: the last step's polynomial continued over this one, plus the correction the last prediction
+  // needed (IAS15 carries its predictor's error over the same way); a constant on the first step
+  if (havePrevious_) {
     Fnew_.noalias() = F_ * extrapolate_;
-  else
+    Fnew_ += correction_;
+  } else {
     Fnew_ = f1_.replicate(1, n_);
+    correction_.setZero(F_.rows(), n_);
+  }
   F_.swap(Fnew_);
   F_.col(0) = f1_;
-  // corrector: F_j = f(x0 + h sum_l A(j, l) F_l) until the node values stop changing (IAS15's rule)
-  double previousChange = 1e300;
+  predicted_ = F_;
+  // corrector: F_j = f(x0 + h sum_l A(j, l) F_l), sweeping the nodes in order and using each new value at once
+  // (as Everhart's substeps do, which roughly halves the sweeps of a Jacobi iteration); stop when the change
+  // times the observed contraction is below rounding, or when only rounding is left (IAS15's rule)
+  double previousChange = 0;
   lastIterations_ = 0;
   for (int it = 0; it < maxIterations_; ++it) {
     ++lastIterations_;
@@ -140,17 +147,18 @@ void Everhart::step() {
     for (int j = 1; j < n_; ++j) {
       y_.noalias() = F_ * A_.row(j).transpose();
       y_ = x_ + h * y_;
-      auto col = Fnew_.col(j);
-      model_->rhs(y_.data(), col.data());
+      model_->rhs(y_.data(), f1_.data()); // f1_ is free until the step ends
       ++evaluations_;
-      change = std::max(change, (col - F_.col(j)).lpNorm<Eigen::Infinity>());
-      scale = std::max(scale, col.lpNorm<Eigen::Infinity>());
+      change = std::max(change, (f1_ - F_.col(j)).lpNorm<Eigen::Infinity>());
+      scale = std::max(scale, f1_.lpNorm<Eigen::Infinity>());
+      F_.col(j) = f1_;
     }
-    for (int j = 1; j < n_; ++j) F_.col(j) = Fnew_.col(j);
     const double relative = scale > 0 ? change / scale : change;
-    if (relative < 1e-16 || (it > 2 && relative >= previousChange)) break; // converged, or only rounding left
+    const double contraction = it > 0 && previousChange > 0 ? std::min(1.0, relative / previousChange) : 1.0;
+    if (relative * contraction < 1e-16 || (it > 2 && relative >= previousChange)) break;
     previousChange = relative;
   }
+  if (havePrevious_) correction_ = F_ - predicted_;
   // x1 = x0 + h sum_j b_j F_j, with compensated (Kahan) summation across steps
   xPrev_ = x_;
   sum_.noalias() = F_ * b_;

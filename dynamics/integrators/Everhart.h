@@ -43,6 +43,7 @@ private:
   Eigen::MatrixXd A_, extrapolate_; // A(i, j) = int_0^{c_i} l_j; extrapolate(l, j) = l_l(1 + c_j)
   Eigen::VectorXd b_;
   Eigen::MatrixXd F_, Fnew_;       // right-hand side at the nodes (dim x n)
+  Eigen::MatrixXd predicted_, correction_; // the last prediction and what the corrector changed in it
   Eigen::VectorXd f1_, y_, sum_, compensation_;
 };
 

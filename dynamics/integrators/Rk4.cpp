@@ -26,19 +26,20 @@ void Rk4::start(const Model& model, double t0, const Eigen::VectorXd& x0, int di
 
 void Rk4::step() {
   const double h = direction_ * h_;
-  xPrev_ = x_;
-  fPrev_ = k1_;
-  tmp_ = x_ + 0.5 * h * k1_;
+  // keep the step's start for dense output by swapping buffers, not copying them
+  xPrev_.swap(x_);
+  fPrev_.swap(k1_);
+  tmp_ = xPrev_ + 0.5 * h * fPrev_;
   evaluate(tmp_, k2_);
-  tmp_ = x_ + 0.5 * h * k2_;
+  tmp_ = xPrev_ + 0.5 * h * k2_;
   evaluate(tmp_, k3_);
-  tmp_ = x_ + h * k3_;
+  tmp_ = xPrev_ + h * k3_;
   evaluate(tmp_, k4_);
-  x_ += (h / 6.0) * (k1_ + 2.0 * k2_ + 2.0 * k3_ + k4_);
+  x_ = xPrev_ + (h / 6.0) * (fPrev_ + 2.0 * k2_ + 2.0 * k3_ + k4_);
   tPrev_ = t_;
   t_ = tPrev_ + h;
   checkFinite();
-  evaluate(x_, k1_);
+  evaluate(x_, k1_); // k1 of the next step, and the derivative at this end for dense output
 }
 
 void Rk4::interpolate(double t, Eigen::VectorXd& out) const { hermite(t, fPrev_, k1_, out); }

@@ -3,6 +3,8 @@
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/ModelWithField.h"
 #include "dynamics/core/TimeSampler.h"
+#include "dynamics/integrators/Everhart.h"
+#include "dynamics/integrators/Merson.h"
 #include "dynamics/integrators/Rk4.h"
 #include "tests/dynamics/TestSupport.h"
 
@@ -89,19 +91,26 @@ TEST(Rk4, BlowUpIsAComputationError) {
   EXPECT_THROW(run(), ComputationError);
 }
 
-TEST(Rk4, StepsDoNotAllocate) {
+TEST(Integrators, StepsAndDenseOutputDoNotAllocate) {
   const auto model = test::makeModel("chaplygin_ball", {{"K1", 0.1}});
   const Eigen::VectorXd x0 = model->stateFromMap({0.5, 0.2}, {}, "test");
-  Rk4 rk4(1e-3);
-  rk4.start(*model, 0, x0);
-  rk4.step();
-  const long before = g_allocations.load();
-  for (int i = 0; i < 1000; ++i) rk4.step();
-  EXPECT_EQ(g_allocations.load() - before, 0);
-  Eigen::VectorXd out(x0.size());
-  const long beforeInterp = g_allocations.load();
-  rk4.interpolate(0.5 * (rk4.time() + rk4.previousTime()), out);
-  EXPECT_EQ(g_allocations.load() - beforeInterp, 0);
+  std::vector<std::unique_ptr<Integrator>> all;
+  all.push_back(std::make_unique<Rk4>(1e-3));
+  all.push_back(std::make_unique<Merson>(1e-2, 1e-10, 1e-8, 0.1));
+  all.push_back(std::make_unique<Everhart>(0.1, 15, 12));
+  all.push_back(std::make_unique<Everhart>(0.1, 27, 12));
+  for (auto& integ : all) {
+    integ->start(*model, 0, x0);
+    integ->step();
+    integ->step();
+    const long before = g_allocations.load();
+    for (int i = 0; i < 200; ++i) integ->step();
+    EXPECT_EQ(g_allocations.load() - before, 0) << "steps";
+    Eigen::VectorXd out(x0.size());
+    const long beforeInterp = g_allocations.load();
+    integ->interpolate(0.5 * (integ->time() + integ->previousTime()), out);
+    EXPECT_EQ(g_allocations.load() - beforeInterp, 0) << "dense output";
+  }
 }
 
 } // namespace

@@ -1,0 +1,156 @@
+// Dynamics benchmarks: right-hand sides per second for every model, steps per second for every integrator, and
+// Boost.Odeint side by side on the same right-hand side (<Case>/rollviz vs <Case>/odeint).
+// Run: cmake --preset bench && cmake --build --preset bench && build/bench/tests/bench/bench_dynamics
+#include "dynamics/core/ModelRegistry.h"
+#include "dynamics/integrators/Everhart.h"
+#include "dynamics/integrators/Merson.h"
+#include "dynamics/integrators/Rk4.h"
+
+#include <benchmark/benchmark.h>
+#include <boost/numeric/odeint.hpp>
+#include <cmath>
+#include <vector>
+
+namespace {
+
+using namespace rv;
+namespace odeint = boost::numeric::odeint;
+
+std::unique_ptr<Model> make(const std::string& id) {
+  const auto& e = ModelRegistry::builtin().get(id);
+  return e.create(ParameterValues(e.info->parameters));
+}
+
+// the default scene's start of chaplygin_ball: map point (0.5, 0.2) at E = 0.5, c = 0.3, K = (0.2, 0.1, 0.3)
+std::unique_ptr<Model> chaplygin() {
+  const auto& e = ModelRegistry::builtin().get("chaplygin_ball");
+  ParameterValues p(e.info->parameters);
+  p.set("K1", 0.2), p.set("K2", 0.1), p.set("K3", 0.3);
+  return e.create(p);
+}
+
+Eigen::VectorXd startOf(const Model& m) {
+  const auto& names = m.info().stateNames;
+  if (m.info().id == "ball_on_paraboloid")
+    return m.stateFromNamed({{"omega1", 0.1}, {"omega2", 0.2}, {"omega3", 0.3}, {"x1", 0.2}, {"x2", 0.1}}, "bench");
+  if (names.size() > 5 && names[3] == "gamma1")
+    return m.stateFromNamed({{"M1", 0.2}, {"M2", -0.3}, {"M3", 0.4}, {"gamma1", 0.1}, {"gamma2", 0.2}, {"gamma3", 1}}, "bench");
+  return Eigen::VectorXd::Constant(m.dimension(), 0.3);
+}
+
+void RightHandSide(benchmark::State& state, const std::string& id) {
+  const auto m = make(id);
+  const Eigen::VectorXd x = startOf(*m);
+  Eigen::VectorXd dx(x.size());
+  for (auto _ : state) {
+    m->rhs(x.data(), dx.data());
+    benchmark::DoNotOptimize(dx.data());
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+// odeint's view of a rollviz model
+struct OdeintSystem {
+  const Model* model;
+  void operator()(const std::vector<double>& x, std::vector<double>& dx, double) const { model->rhs(x.data(), dx.data()); }
+};
+
+// RK4 fixed step, h = 1e-3, t = 10 on chaplygin_ball
+void Rk4Chaplygin_rollviz(benchmark::State& state) {
+  const auto m = chaplygin();
+  const Eigen::VectorXd x0 = m->stateFromMap({0.5, 0.2}, {}, "bench");
+  for (auto _ : state) {
+    Rk4 rk4(1e-3);
+    rk4.start(*m, 0, x0);
+    for (int i = 0; i < 10000; ++i) rk4.step();
+    benchmark::DoNotOptimize(rk4.state().data());
+  }
+  state.SetItemsProcessed(state.iterations() * 10000);
+}
+
+void Rk4Chaplygin_odeint(benchmark::State& state) {
+  const auto m = chaplygin();
+  const Eigen::VectorXd x0 = m->stateFromMap({0.5, 0.2}, {}, "bench");
+  odeint::runge_kutta4<std::vector<double>> stepper;
+  for (auto _ : state) {
+    std::vector<double> x(x0.data(), x0.data() + x0.size());
+    double t = 0;
+    for (int i = 0; i < 10000; ++i, t += 1e-3) stepper.do_step(OdeintSystem{m.get()}, x, t, 1e-3);
+    benchmark::DoNotOptimize(x.data());
+  }
+  state.SetItemsProcessed(state.iterations() * 10000);
+}
+
+// high accuracy: chaplygin_ball over t = 1000 to a final relative energy error near 1e-12
+void AccurateChaplygin_rollviz(benchmark::State& state) {
+  const auto m = chaplygin();
+  const Eigen::VectorXd x0 = m->stateFromMap({0.5, 0.2}, {}, "bench");
+  const double E0 = m->integrals(x0.data())[0];
+  double err = 0;
+  long evals = 0;
+  for (auto _ : state) {
+    const double h = 1.0 / static_cast<double>(state.range(0)); // lands on t = 1000
+    Everhart e(h, 15, static_cast<int>(state.range(1)));
+    e.start(*m, 0, x0);
+    for (long i = 0; i < 1000 * state.range(0); ++i) e.step();
+    err = std::abs(m->integrals(e.state().data())[0] - E0) / E0;
+    evals = e.evaluations();
+  }
+  state.counters["energy_error"] = err;
+  state.counters["rhs_evaluations"] = static_cast<double>(evals);
+}
+
+void AccurateChaplygin_odeint(benchmark::State& state) {
+  const auto m = chaplygin();
+  const Eigen::VectorXd x0 = m->stateFromMap({0.5, 0.2}, {}, "bench");
+  const double E0 = m->integrals(x0.data())[0];
+  double err = 0;
+  long evals = 0;
+  for (auto _ : state) {
+    std::vector<double> x(x0.data(), x0.data() + x0.size());
+    long count = 0;
+    auto sys = [&](const std::vector<double>& y, std::vector<double>& dy, double) {
+      ++count;
+      m->rhs(y.data(), dy.data());
+    };
+    odeint::integrate_adaptive(
+        odeint::make_controlled(1e-13, 1e-13, odeint::runge_kutta_fehlberg78<std::vector<double>>()), sys, x, 0.0,
+        1000.0, 0.1);
+    err = std::abs(m->integrals(x.data())[0] - E0) / E0;
+    evals = count;
+  }
+  state.counters["energy_error"] = err;
+  state.counters["rhs_evaluations"] = static_cast<double>(evals);
+}
+
+// steps per second of each integrator on chaplygin_ball
+void Steps(benchmark::State& state, const std::string& method) {
+  const auto m = chaplygin();
+  const Eigen::VectorXd x0 = m->stateFromMap({0.5, 0.2}, {}, "bench");
+  std::unique_ptr<Integrator> integ;
+  if (method == "rk4") integ = std::make_unique<Rk4>(1e-2);
+  if (method == "merson") integ = std::make_unique<Merson>(1e-2, 1e-10, 1e-8, 0.1);
+  if (method == "everhart15") integ = std::make_unique<Everhart>(0.2, 15, 12);
+  if (method == "everhart27") integ = std::make_unique<Everhart>(0.5, 27, 12);
+  integ->start(*m, 0, x0);
+  for (auto _ : state) integ->step();
+  state.SetItemsProcessed(state.iterations());
+}
+
+} // namespace
+
+BENCHMARK_CAPTURE(RightHandSide, paraboloid_on_plane, std::string("paraboloid_on_plane"));
+BENCHMARK_CAPTURE(RightHandSide, ellipsoid_on_plane, std::string("ellipsoid_on_plane"));
+BENCHMARK_CAPTURE(RightHandSide, ball_on_ellipsoid, std::string("ball_on_ellipsoid"));
+BENCHMARK_CAPTURE(RightHandSide, ball_on_paraboloid, std::string("ball_on_paraboloid"));
+BENCHMARK_CAPTURE(RightHandSide, chaplygin_ball, std::string("chaplygin_ball"));
+BENCHMARK_CAPTURE(RightHandSide, lorenz, std::string("lorenz"));
+BENCHMARK_CAPTURE(RightHandSide, henon_heiles, std::string("henon_heiles"));
+BENCHMARK(Rk4Chaplygin_rollviz)->Name("Rk4Chaplygin/rollviz")->Unit(benchmark::kMillisecond);
+BENCHMARK(Rk4Chaplygin_odeint)->Name("Rk4Chaplygin/odeint")->Unit(benchmark::kMillisecond);
+BENCHMARK(AccurateChaplygin_rollviz)->Name("AccurateChaplygin/rollviz")->Unit(benchmark::kMillisecond)->ArgsProduct({{1, 2}, {6, 12}});
+BENCHMARK(AccurateChaplygin_odeint)->Name("AccurateChaplygin/odeint")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(Steps, rk4, std::string("rk4"));
+BENCHMARK_CAPTURE(Steps, merson, std::string("merson"));
+BENCHMARK_CAPTURE(Steps, everhart15, std::string("everhart15"));
+BENCHMARK_CAPTURE(Steps, everhart27, std::string("everhart27"));
