@@ -33,6 +33,16 @@ Eigen::VectorXd Model::stateFromMap(const std::vector<double>& point, const MapP
   throw InputError(context + ": " + info_->id + " has no map coordinates; give \"state\" instead");
 }
 
+void Model::coreJacobian(const double* x, double* jac) const {
+  const int n = dimension(), m = info_->coreDimension;
+  std::vector<double> full(static_cast<std::size_t>(n) * n);
+  jacobian(x, full.data());
+  for (int i = 0; i < m; ++i)
+    for (int j = 0; j < m; ++j) jac[i * m + j] = full[i * n + j];
+}
+
+int Model::sheetOf(const Eigen::VectorXd&, const MapPointSpec&) const { return 1; }
+
 int Model::findObservable(const std::string& id) const {
   for (std::size_t i = 0; i < observables_.size(); ++i)
     if (observables_[i].id == id) return static_cast<int>(i);

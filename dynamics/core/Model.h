@@ -18,6 +18,7 @@ struct Observable {
   std::string id;
   std::string description;
   std::function<double(double t, const double* x)> value;
+  bool angle = false; ///< an angle, defined mod 2 pi (sections on it are crossed where sin(value - v0) = 0)
 };
 
 /// Where the body is, for drawing: rotation (body -> world), its centre and the contact point.
@@ -61,6 +62,7 @@ struct ModelInfo {
   std::vector<std::string> integralNames; ///< first integrals, in the order integrals() returns them
   bool hasMeasure = false;              ///< measureDensity() is an invariant measure density
   std::vector<std::string> mapCoordinates; ///< coordinates of a map point given as "initial": {"map": ...}
+  std::string section;                  ///< observable whose level set is the default Poincare section
   ModelKind kind = ModelKind::Flow;
 };
 
@@ -87,6 +89,8 @@ public:
   virtual void rhs(const double* x, double* dx) const = 0;
   /// Exact Jacobian (df/dx of a flow, dP/dx of a map), row-major dimension() x dimension().
   virtual void jacobian(const double* x, double* jac) const = 0;
+  /// The core block of the Jacobian (coreDimension squared, row-major): what tangent vectors need.
+  virtual void coreJacobian(const double* x, double* jac) const;
   /// Values of the first integrals, in the order of info().integralNames.
   virtual Eigen::VectorXd integrals(const double* x) const;
   /// Density of the invariant measure (1 when hasInvariantMeasure() is false).
@@ -104,6 +108,8 @@ public:
   /// Throws InputError naming `context` and the offending name.
   virtual Eigen::VectorXd stateFromNamed(const std::map<std::string, double>& named,
                                          const std::string& context) const;
+  /// Which sheet (root of the completion, 1-based) a state lies on, for many-sheeted maps; 1 when single-sheeted.
+  virtual int sheetOf(const Eigen::VectorXd& x, const MapPointSpec& spec) const;
   /// A full state from a map point, completed through the energy and the other integrals.
   /// Throws InputError when the point has no state (outside the region of allowed motion).
   virtual Eigen::VectorXd stateFromMap(const std::vector<double>& point, const MapPointSpec& spec,

@@ -35,6 +35,18 @@ public:
       for (int j = 0; j < N; ++j) jac[i * N + j] = fa[i].derivatives()[j];
   }
 
+  /// Derivatives with respect to the core components only: cheaper when the kinematics add many components.
+  void coreJacobian(const double* x, double* jac) const final {
+    using D = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, N, 1>; // no heap: at most N derivatives
+    using AD = Eigen::AutoDiffScalar<D>;
+    const int m = this->info().coreDimension;
+    Vec<AD> xa, fa;
+    for (int i = 0; i < N; ++i) xa[i] = i < m ? AD(x[i], m, i) : AD(x[i], D::Zero(m));
+    self().field(xa, fa);
+    for (int i = 0; i < m; ++i)
+      for (int j = 0; j < m; ++j) jac[i * m + j] = fa[i].derivatives().size() ? fa[i].derivatives()[j] : 0.0;
+  }
+
 private:
   const Derived& self() const { return static_cast<const Derived&>(*this); }
 };

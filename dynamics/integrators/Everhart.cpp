@@ -3,6 +3,7 @@
 #include "dynamics/core/Errors.h"
 
 #include <cmath>
+#include <mutex>
 
 namespace rv {
 
@@ -69,7 +70,7 @@ const ParameterTable& Everhart::parameterTable() {
 
 IntegratorEntry Everhart::entry() {
   return {"everhart", "Everhart, implicit, Gauss-Radau spacings, orders 3..27",
-          "Everhart 1985; Rein and Spiegel, IAS15, MNRAS 446 (2015)", &parameterTable(),
+          "Everhart 1985; Rein and Spiegel, IAS15, MNRAS 446 (2015)", &parameterTable(), true,
           [](const ParameterValues& p) -> std::unique_ptr<Integrator> {
             return std::make_unique<Everhart>(p["step"], static_cast<int>(p["order"]), static_cast<int>(p["iterations"]));
           }};
@@ -80,36 +81,60 @@ int Everhart::effectiveOrder(int requested) {
   return std::min(27, 3 + 4 * ((requested - 3) / 4));
 }
 
+namespace {
+// the spacings, weights and matrices of one order, computed once per process (they cost ~10 ms)
+struct EverhartTables {
+  std::vector<long double> cl, gaussNodes, gaussWeights;
+  Eigen::MatrixXd A, extrapolate;
+  Eigen::VectorXd b;
+};
+
+EverhartTables computeTables(int n) {
+  EverhartTables t;
+  // left Gauss-Radau points: the zeros of P_{n-1} + P_n on [-1, 1], -1 included
+  const auto radau = roots([&](ld x) { auto [pn, pn1] = legendre(n, x); return pn + pn1; }, -1.0L + 1e-12L, 1.0L, 40000);
+  t.cl = {0.0L};
+  for (ld x : radau) t.cl.push_back((x + 1) / 2);
+  // Gauss-Legendre on [0, 1] with n points integrates the Lagrange polynomials (degree n - 1) exactly
+  for (ld x : roots([&](ld x) { return legendre(n, x).first; }, -1.0L, 1.0L, 40000)) {
+    auto [pn, pn1] = legendre(n, x);
+    const ld dp = n * (x * pn - pn1) / (x * x - 1);
+    t.gaussNodes.push_back((x + 1) / 2);
+    t.gaussWeights.push_back(1 / ((1 - x * x) * dp * dp)); // the [-1, 1] weight, halved for [0, 1]
+  }
+  if (static_cast<int>(t.cl.size()) != n || static_cast<int>(t.gaussNodes.size()) != n)
+    throw ComputationError("Everhart: could not compute the Gauss-Radau spacings");
+  t.A.resize(n, n), t.extrapolate.resize(n, n), t.b.resize(n);
+  for (int j = 0; j < n; ++j) {
+    ld bj = 0;
+    for (int k = 0; k < n; ++k) bj += t.gaussWeights[k] * lagrange(t.cl, j, t.gaussNodes[k]);
+    t.b[j] = static_cast<double>(bj);
+    for (int i = 0; i < n; ++i) {
+      ld aij = 0;
+      for (int k = 0; k < n; ++k) aij += t.gaussWeights[k] * lagrange(t.cl, j, t.cl[i] * t.gaussNodes[k]);
+      t.A(i, j) = static_cast<double>(t.cl[i] * aij);
+      t.extrapolate(j, i) = static_cast<double>(lagrange(t.cl, j, 1 + t.cl[i]));
+    }
+  }
+  return t;
+}
+
+const EverhartTables& tablesFor(int n) {
+  static std::once_flag once[15];
+  static EverhartTables tables[15];
+  std::call_once(once[n], [n] { tables[n] = computeTables(n); });
+  return tables[n];
+}
+} // namespace
+
 Everhart::Everhart(double step, int order, int iterations) : h_(step), maxIterations_(iterations) {
   const int effective = effectiveOrder(order);
   if (effective == 0) throw InputError("order " + std::to_string(order) + " is below 3 (use 3, 7, ..., 27)");
   n_ = (effective + 1) / 2;
-  // left Gauss-Radau points: the zeros of P_{n-1} + P_n on [-1, 1], -1 included
-  const auto radau = roots([&](ld x) { auto [pn, pn1] = legendre(n_, x); return pn + pn1; }, -1.0L + 1e-12L, 1.0L, 40000);
-  cl_ = {0.0L};
-  for (ld x : radau) cl_.push_back((x + 1) / 2);
-  // Gauss-Legendre on [0, 1] with n points integrates the Lagrange polynomials (degree n - 1) exactly
-  for (ld x : roots([&](ld x) { return legendre(n_, x).first; }, -1.0L, 1.0L, 40000)) {
-    auto [pn, pn1] = legendre(n_, x);
-    const ld dp = n_ * (x * pn - pn1) / (x * x - 1);
-    gaussNodes_.push_back((x + 1) / 2);
-    gaussWeights_.push_back(1 / ((1 - x * x) * dp * dp)); // the [-1, 1] weight, halved for [0, 1]
-  }
-  if (static_cast<int>(cl_.size()) != n_ || static_cast<int>(gaussNodes_.size()) != n_)
-    throw ComputationError("Everhart: could not compute the Gauss-Radau spacings");
+  const EverhartTables& t = tablesFor(n_);
+  cl_ = t.cl, gaussNodes_ = t.gaussNodes, gaussWeights_ = t.gaussWeights;
+  A_ = t.A, extrapolate_ = t.extrapolate, b_ = t.b;
   c_.assign(cl_.begin(), cl_.end());
-  A_.resize(n_, n_), extrapolate_.resize(n_, n_), b_.resize(n_);
-  for (int j = 0; j < n_; ++j) {
-    ld bj = 0;
-    for (int k = 0; k < n_; ++k) bj += gaussWeights_[k] * lagrange(cl_, j, gaussNodes_[k]);
-    b_[j] = static_cast<double>(bj);
-    for (int i = 0; i < n_; ++i) {
-      ld aij = 0;
-      for (int k = 0; k < n_; ++k) aij += gaussWeights_[k] * lagrange(cl_, j, cl_[i] * gaussNodes_[k]);
-      A_(i, j) = static_cast<double>(cl_[i] * aij);
-      extrapolate_(j, i) = static_cast<double>(lagrange(cl_, j, 1 + cl_[i]));
-    }
-  }
 }
 
 void Everhart::start(const Model& model, double t0, const Eigen::VectorXd& x0, int direction) {

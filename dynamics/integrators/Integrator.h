@@ -54,6 +54,7 @@ struct IntegratorEntry {
   std::string title;     ///< one line, for lists
   std::string reference; ///< the paper or book behind it
   const ParameterTable* parameters;
+  bool fixedStep; ///< the step never changes (needed by the Fourier spectrum)
   /// Builds the integrator; throws InputError naming the parameter when values are inconsistent.
   std::function<std::unique_ptr<Integrator>(const ParameterValues&)> create;
 };

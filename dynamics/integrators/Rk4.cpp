@@ -12,7 +12,7 @@ const ParameterTable& Rk4::parameterTable() {
 
 IntegratorEntry Rk4::entry() {
   return {"rk4", "Runge-Kutta 4, fixed step", "Hairer, Norsett, Wanner, Solving ODE I, §II.1",
-          &parameterTable(),
+          &parameterTable(), true,
           [](const ParameterValues& p) -> std::unique_ptr<Integrator> { return std::make_unique<Rk4>(p["step"]); }};
 }
 

@@ -44,6 +44,7 @@ const ModelInfo& BallOnEllipsoid::staticInfo() {
       .integralNames = {"E", "geometric", "K"},
       .hasMeasure = true,
       .mapCoordinates = {"l", "L/G"},
+      .section = "g",
   };
   return info;
 }
@@ -84,7 +85,9 @@ BallOnEllipsoid::BallOnEllipsoid(const ParameterValues& p)
   const auto ad = [M, gam](const double* s) { return toAndoyerDeprit(M(s), gam(s)); };
   addObservable("G", "Andoyer-Deprit G = |M|", [ad](double, const double* s) { return ad(s).G; });
   addObservable("l", "Andoyer-Deprit l", [ad](double, const double* s) { return ad(s).l; });
+  observables_.back().angle = true;
   addObservable("g", "Andoyer-Deprit g", [ad](double, const double* s) { return ad(s).g; });
+  observables_.back().angle = true;
   addObservable("L/G", "Andoyer-Deprit L/G", [ad](double, const double* s) { return ad(s).L / ad(s).G; });
   addObservable("H/G", "Andoyer-Deprit H/G", [ad](double, const double* s) { return ad(s).H / ad(s).G; });
   addObservable("Lsurface", "length of the contact point's trace on the ellipsoid", [](double, const double* s) { return s[10]; });

@@ -38,6 +38,7 @@ const ModelInfo& BallOnParaboloid::staticInfo() {
         .integralNames = {"E", "F"},
         .hasMeasure = true,
         .mapCoordinates = {"x1", "omega1", "omega2"},
+      .section = "x2",
     };
     return i;
   }();

@@ -45,7 +45,9 @@ std::vector<Observable> kinematicObservables(VectorOf omega, VectorOf momentum, 
   add("G", "Andoyer-Deprit G", [ad](double, const double* x) { return ad(x).G; });
   add("L", "Andoyer-Deprit L", [ad](double, const double* x) { return ad(x).L; });
   add("l", "Andoyer-Deprit l", [ad](double, const double* x) { return ad(x).l; });
+  obs.back().angle = true;
   add("g", "Andoyer-Deprit g", [ad](double, const double* x) { return ad(x).g; });
+  obs.back().angle = true;
   add("L/G", "Andoyer-Deprit L/G", [ad](double, const double* x) { return ad(x).L / ad(x).G; });
   add("H/G", "Andoyer-Deprit H/G", [ad](double, const double* x) { return ad(x).H / ad(x).G; });
   // Euler angles: gamma = (sin th sin ph, sin th cos ph, cos th), alpha3 = sin ps sin th, beta3 = -cos ps sin th
@@ -54,8 +56,10 @@ std::vector<Observable> kinematicObservables(VectorOf omega, VectorOf momentum, 
       [](double, const double* x) { return std::acos(std::clamp(x[kGamma + 2], -1.0, 1.0)); });
   add("phi", "Euler angle phi (proper rotation), mod 2 pi",
       [mod2pi](double, const double* x) { return mod2pi(std::atan2(x[kGamma], x[kGamma + 1])); });
+  obs.back().angle = true;
   add("psi", "Euler angle psi (precession), mod 2 pi",
       [mod2pi](double, const double* x) { return mod2pi(std::atan2(x[kAlpha + 2], -x[kBeta + 2])); });
+  obs.back().angle = true;
   add("RabsX", "centre of mass on the fixed plane, x", [](double, const double* x) { return x[kX]; });
   add("RabsY", "centre of mass on the fixed plane, y", [](double, const double* x) { return x[kY]; });
   add("Vx", "velocity of the centre of mass, x",

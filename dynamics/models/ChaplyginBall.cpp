@@ -39,6 +39,7 @@ const ModelInfo& ChaplyginBall::staticInfo() {
       .integralNames = {"E", "H", "geometric", "n"},
       .hasMeasure = true,
       .mapCoordinates = {"l", "L/G"},
+      .section = "g",
   };
   return info;
 }
@@ -104,25 +105,41 @@ Eigen::VectorXd ChaplyginBall::stateFromNamed(const std::map<std::string, double
   return x;
 }
 
-Eigen::VectorXd ChaplyginBall::stateFromMap(const std::vector<double>& point, const MapPointSpec& spec,
-                                            const std::string& context) const {
-  if (point.size() != 2) throw InputError(context + ": chaplygin_ball map points are (l, L/G)");
-  const double l = point[0], LG = point[1], E = params_["energy"], c = params_["c"];
-  if (!(std::abs(LG) <= 1)) throw InputError(context + ": L/G must lie in [-1, 1]");
+std::vector<double> ChaplyginBall::completionRoots(double l, double LG, double g0) const {
+  const double E = params_["energy"], c = params_["c"];
   // h(G) on the section: P = M + K from (l, L/G, G), H = c fixed, so H/G = c/G needs G >= |c|
-  const auto stateAt = [&](double G, Eigen::Vector3d& M, Eigen::Vector3d& g) {
-    fromAndoyerDeprit({.L = LG * G, .G = G, .H = c, .l = l, .g = spec.sectionValue}, M, g);
-    M -= K_;
-  };
   const auto energyGap = [&](double G) {
     Eigen::Vector3d M, g;
-    stateAt(G, M, g);
+    stateOnSection(l, LG, g0, G, M, g);
     return 0.5 * M.dot(angularVelocity<double>(M, g)) - E;
   };
   // h >= |M|^2 / (2 max J), so every root has G <= sqrt(2 E max J) + |K|
   const double Gmax = std::sqrt(2 * E / Jinv_.minCoeff()) + K_.norm() + 1e-9;
   const double Gmin = std::max(std::abs(c), 1e-12);
-  const auto roots = findRoots(energyGap, Gmin, Gmax, params_["root_step"], params_["root_accuracy"]);
+  return findRoots(energyGap, Gmin, Gmax, params_["root_step"], params_["root_accuracy"]);
+}
+
+void ChaplyginBall::stateOnSection(double l, double LG, double g0, double G, Eigen::Vector3d& M,
+                                   Eigen::Vector3d& g) const {
+  fromAndoyerDeprit({.L = LG * G, .G = G, .H = params_["c"], .l = l, .g = g0}, M, g);
+  M -= K_;
+}
+
+int ChaplyginBall::sheetOf(const Eigen::VectorXd& x, const MapPointSpec& spec) const {
+  const AndoyerDeprit ad = toAndoyerDeprit(x.head<3>() + K_, x.segment<3>(3));
+  const auto roots = completionRoots(ad.l, ad.L / ad.G, spec.sectionValue);
+  int best = 1;
+  for (std::size_t i = 1; i < roots.size(); ++i)
+    if (std::abs(roots[i] - ad.G) < std::abs(roots[best - 1] - ad.G)) best = static_cast<int>(i) + 1;
+  return best;
+}
+
+Eigen::VectorXd ChaplyginBall::stateFromMap(const std::vector<double>& point, const MapPointSpec& spec,
+                                            const std::string& context) const {
+  if (point.size() != 2) throw InputError(context + ": chaplygin_ball map points are (l, L/G)");
+  const double l = point[0], LG = point[1], E = params_["energy"], c = params_["c"];
+  if (!(std::abs(LG) <= 1)) throw InputError(context + ": L/G must lie in [-1, 1]");
+  const auto roots = completionRoots(l, LG, spec.sectionValue);
   if (roots.empty() || spec.root < 1 || spec.root > static_cast<int>(roots.size())) {
     std::ostringstream os;
     os << context << ": no state at (l, L/G) = (" << l << ", " << LG << ") with energy " << E << " and c = " << c;
@@ -133,7 +150,7 @@ Eigen::VectorXd ChaplyginBall::stateFromMap(const std::vector<double>& point, co
     throw InputError(os.str());
   }
   Eigen::Vector3d M, g;
-  stateAt(roots[spec.root - 1], M, g);
+  stateOnSection(l, LG, spec.sectionValue, roots[spec.root - 1], M, g);
   return body_state::fromMomentumAndVertical(M, g);
 }
 

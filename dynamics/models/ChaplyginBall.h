@@ -30,6 +30,8 @@ public:
                                  const std::string& context) const override;
   Eigen::VectorXd stateFromMap(const std::vector<double>& point, const MapPointSpec& spec,
                                const std::string& context) const override;
+  /// The root (G) of the completion nearest to the state's G.
+  int sheetOf(const Eigen::VectorXd& x, const MapPointSpec& spec) const override;
 
   /// omega from M and gamma: M = I omega + D gamma x (omega x gamma), solved in closed form.
   template <class S>
@@ -37,6 +39,9 @@ public:
   double radius() const { return R_; }
 
 private:
+  /// The values of G at which (l, L/G) on g = g0 has the scene's energy and area constant, ascending.
+  std::vector<double> completionRoots(double l, double LG, double g0) const;
+  void stateOnSection(double l, double LG, double g0, double G, Eigen::Vector3d& M, Eigen::Vector3d& g) const;
   Eigen::Vector3d Jinv_, K_; // J = I + D E (diagonal), gyrostat
   double D_, R_;
 };

@@ -15,6 +15,7 @@ const ModelInfo& EllipsoidOnPlane::staticInfo() {
         .coreDimension = 6,
         .integralNames = {"E", "geometric"},
         .mapCoordinates = {"l", "L/G", "H/G"},
+      .section = "g",
     };
     // a solid-looking rattleback: long and flat, centre of mass below the centre, axes turned by psi
     std::vector<ParameterSpec> specs = rigid_body::massParameters(0.082, 0.832, 0.85);

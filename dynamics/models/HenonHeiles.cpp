@@ -19,6 +19,7 @@ const ModelInfo& HenonHeiles::staticInfo() {
       .integralNames = {"E"},
       .hasMeasure = true,
       .mapCoordinates = {"y", "py"},
+      .section = "x",
   };
   return info;
 }

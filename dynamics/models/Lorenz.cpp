@@ -15,6 +15,7 @@ const ModelInfo& Lorenz::staticInfo() {
           },
       .stateNames = {"x", "y", "z"},
       .coreDimension = 3,
+      .section = "z",
   };
   return info;
 }

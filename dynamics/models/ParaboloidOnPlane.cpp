@@ -14,6 +14,7 @@ const ModelInfo& ParaboloidOnPlane::staticInfo() {
         .coreDimension = 6,
         .integralNames = {"E", "geometric"},
         .mapCoordinates = {"l", "L/G", "H/G"},
+      .section = "g",
     };
     std::vector<ParameterSpec> specs = rigid_body::massParameters(1.0, 1.5, 2.0);
     specs.push_back({.id = "p", .label = "p", .defaultValue = 1.0, .min = 0,

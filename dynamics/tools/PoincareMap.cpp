@@ -1,0 +1,102 @@
+#include "dynamics/tools/PoincareMap.h"
+
+#include "dynamics/core/Errors.h"
+
+#include <cmath>
+
+namespace rv {
+
+PoincareMap::PoincareMap(const Model& model, std::unique_ptr<Integrator> integrator, SectionSettings settings)
+    : model_(model), integ_(std::move(integrator)), s_(std::move(settings)) {
+  if (s_.order < 1) throw InputError("poincare: the map order must be at least 1");
+  const auto& obs = model.observables();
+  const auto find = [&](const std::string& id) -> const Observable* {
+    const int i = model.findObservable(id);
+    return i < 0 ? nullptr : &obs[i];
+  };
+  if (!model.isMap()) {
+    const std::string id = s_.observable.empty() ? model.info().section : s_.observable;
+    section_ = find(id);
+    if (!section_) throw InputError("poincare.section: unknown observable '" + id + "' of " + model.info().id);
+  }
+  names_ = model.info().mapCoordinates;
+  if (names_.empty())
+    for (int i = 0; i < model.info().coreDimension; ++i)
+      if (!section_ || model.info().stateNames[i] != section_->id) names_.push_back(model.info().stateNames[i]);
+  for (const auto& n : names_) coords_.push_back(find(n));
+  last_ = integ_->state();
+  work_.resize(last_.size());
+  sigma_ = section_ ? sectionFunction(integ_->time(), integ_->state()) : 0;
+}
+
+double PoincareMap::sectionFunction(double t, const Eigen::VectorXd& x) const {
+  const double v = section_->value(t, x.data()) - s_.value;
+  return section_->angle ? std::sin(v) : v;
+}
+
+bool PoincareMap::acceptable(double t, const Eigen::VectorXd& x) const {
+  if (section_->angle && std::cos(section_->value(t, x.data()) - s_.value) < 0) return false; // the far side
+  return true;
+}
+
+std::vector<double> PoincareMap::coordinatesOf(double t, const Eigen::VectorXd& x) const {
+  std::vector<double> c;
+  for (const Observable* o : coords_) c.push_back(o->value(t, x.data()));
+  return c;
+}
+
+std::optional<MapPoint> PoincareMap::next(const ToolControl& control) {
+  const MapPointSpec spec{.sectionValue = s_.value, .root = s_.root};
+  const int dir = integ_->direction();
+  while (s_.maxPoints <= 0 || points_ < s_.maxPoints) {
+    if (control.stopRequested() || dir * integ_->time() >= s_.maxTime) return std::nullopt;
+    integ_->step();
+    double t = integ_->time();
+    if (model_.isMap()) {
+      work_ = integ_->state();
+    } else {
+      const double sigmaBefore = sigma_;
+      sigma_ = sectionFunction(t, integ_->state());
+      // a crossing in the requested direction of time-forward motion (the sign flips when integrating backward)
+      const double rising = dir * (sigma_ - sigmaBefore);
+      const bool crossed = (sigmaBefore < 0) != (sigma_ < 0) && sigmaBefore != 0;
+      if (!crossed || (s_.checkDirection && rising * s_.direction <= 0)) continue;
+      // Illinois regula falsi on the dense output
+      double a = integ_->previousTime(), b = t, fa = sigmaBefore, fb = sigma_;
+      int side = 0;
+      for (int it = 0; it < 200 && std::abs(b - a) > s_.accuracy; ++it) {
+        double c = (a * fb - b * fa) / (fb - fa);
+        if (!(std::min(a, b) < c && c < std::max(a, b))) c = 0.5 * (a + b);
+        integ_->interpolate(c, work_);
+        const double fc = sectionFunction(c, work_);
+        if (fc == 0) {
+          a = b = c;
+          break;
+        }
+        if ((fc < 0) == (fb < 0)) {
+          b = c, fb = fc;
+          if (side == -1) fa /= 2;
+          side = -1;
+        } else {
+          a = c, fa = fc;
+          if (side == +1) fb /= 2;
+          side = +1;
+        }
+      }
+      t = std::abs(fa) < std::abs(fb) ? a : b;
+      integ_->interpolate(t, work_);
+      if (!acceptable(t, work_)) continue;
+    }
+    ++crossings_;
+    if (crossings_ % s_.order != 0) continue;
+    const int sheet = model_.sheetOf(work_, spec);
+    if (s_.manySheeted && sheet != s_.root) continue;
+    ++points_;
+    last_ = work_;
+    if (s_.maxPoints > 0) control.progress(static_cast<double>(points_) / s_.maxPoints);
+    return MapPoint{coordinatesOf(t, work_), t, sheet};
+  }
+  return std::nullopt;
+}
+
+} // namespace rv

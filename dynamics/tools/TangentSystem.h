@@ -1,0 +1,34 @@
+// TangentSystem.h -- a model together with k tangent vectors in its core coordinates: the variational equations
+// V' = J(x) V of a flow (or V -> J(x) V for a map), with the model's exact Jacobian. Any integrator integrates it.
+#pragma once
+#include "dynamics/core/Model.h"
+
+#include <memory>
+
+namespace rv {
+
+namespace detail {
+struct TangentInfo {
+  ModelInfo tangentInfo;
+};
+} // namespace detail
+
+class TangentSystem final : private detail::TangentInfo, public Model {
+public:
+  /// State: the base state (n components), then k tangent vectors of the core dimension m, column after column.
+  TangentSystem(const Model& base, int vectors);
+  void rhs(const double* x, double* dx) const override;
+  /// Not needed by any tool; throws.
+  void jacobian(const double* x, double* jac) const override;
+
+  const Model& base() const { return base_; }
+  int vectors() const { return k_; }
+  int core() const { return m_; }
+
+private:
+  const Model& base_;
+  int n_, m_, k_;
+  mutable Eigen::MatrixXd J_; // work space (one integrator thread per system)
+};
+
+} // namespace rv
