@@ -6,7 +6,6 @@
 
 #include <Eigen/QR>
 #include <cmath>
-#include <deque>
 
 namespace rv {
 
@@ -64,116 +63,130 @@ void advanceTo(Integrator& integ, const Model& m, double t, Eigen::VectorXd& out
 
 } // namespace
 
+LyapunovRun::LyapunovRun(const Model& model, IntegratorFactory makeIntegrator, const Eigen::VectorXd& x0,
+                         LyapunovSettings settings)
+    : model_(model), make_(std::move(makeIntegrator)), s_(std::move(settings)) {
+  m_ = model.info().coreDimension, n_ = model.dimension();
+  k_ = s_.count > 0 ? s_.count : m_;
+  if (k_ > m_) throw InputError("lyapunov: at most " + std::to_string(m_) + " exponents for " + model.info().id);
+  if (!(s_.interval > 0)) throw InputError("lyapunov: the interval must be positive");
+  if (!(s_.perturbation > 0) || !(s_.maxPerturbation >= s_.perturbation))
+    throw InputError("lyapunov: need 0 < perturbation <= max perturbation");
+  if (s_.estimateEvery < 1) throw InputError("lyapunov: estimate_every must be at least 1");
+  interval_ = model.isMap() ? std::max(1.0, std::round(s_.interval)) : s_.interval;
+  nextOutput_ = s_.outputPeriod;
+  logs_ = Eigen::VectorXd::Zero(k_);
+  V_ = Eigen::MatrixXd::Identity(m_, k_);
+  x_ = x0;
+  if (s_.mode == LyapunovSettings::Mode::Tangent) tangent_ = std::make_unique<TangentSystem>(model, k_);
+  project();
+  startAll(0);
+}
+
+LyapunovRun::~LyapunovRun() = default;
+
+void LyapunovRun::project() {
+  if (!s_.renormalizeIntegrals || model_.integrals(x_.data()).size() == 0) return;
+  const Eigen::MatrixXd N = integralNormals(model_, x_);
+  V_ -= N * (N.transpose() * V_);
+}
+
+// tangent mode: one integrator on (x, V); perturbed mode: k + 1 integrators on x and x + d v_i
+void LyapunovRun::startAll(double t0) {
+  const auto fresh = [&]() -> std::unique_ptr<Integrator> {
+    if (model_.isMap()) return std::make_unique<MapIteration>();
+    return make_();
+  };
+  integs_.clear();
+  if (tangent_) {
+    state_.resize(n_ + m_ * k_);
+    state_.head(n_) = x_;
+    state_.tail(m_ * k_) = Eigen::Map<const Eigen::VectorXd>(V_.data(), m_ * k_);
+    integs_.push_back(fresh());
+    integs_.back()->start(*tangent_, t0, state_);
+  } else {
+    integs_.push_back(fresh());
+    integs_.back()->start(model_, t0, x_);
+    for (int j = 0; j < k_; ++j) {
+      Eigen::VectorXd y = x_;
+      y.head(m_) += s_.perturbation * V_.col(j);
+      integs_.push_back(fresh());
+      integs_.back()->start(model_, t0, y);
+    }
+  }
+}
+
+// one interval: advance, orthonormalise, restart; false when stopped on the way (nothing is changed then)
+bool LyapunovRun::interval(const ToolControl& control) {
+  double step = std::min(interval_, s_.maxTime - t_);
+  if (tangent_) {
+    advanceTo(*integs_[0], *tangent_, t_ + step, state_, control);
+    if (control.stopRequested()) {
+      startAll(t_);
+      return false;
+    }
+    x_ = state_.head(n_);
+    V_ = Eigen::Map<const Eigen::MatrixXd>(state_.data() + n_, m_, k_);
+  } else {
+    for (;;) { // cut the interval short while a perturbation grows beyond its maximum
+      std::vector<Eigen::VectorXd> ends(k_ + 1);
+      for (int j = 0; j <= k_; ++j) advanceTo(*integs_[j], model_, t_ + step, ends[j], control);
+      if (control.stopRequested()) {
+        startAll(t_);
+        return false;
+      }
+      double worst = 0;
+      for (int j = 1; j <= k_; ++j) worst = std::max(worst, (ends[j] - ends[0]).head(m_).norm());
+      if (worst > s_.maxPerturbation && step > 1e-9 * interval_ && !model_.isMap()) {
+        step /= 2;
+        startAll(t_); // x and V still hold the interval's start
+        continue;
+      }
+      x_ = ends[0];
+      for (int j = 0; j < k_; ++j) V_.col(j) = (ends[j + 1] - ends[0]).head(m_) / s_.perturbation;
+      break;
+    }
+  }
+  t_ += step;
+  project();
+  orthonormalize(V_, logs_);
+  startAll(t_);
+  return true;
+}
+
+bool LyapunovRun::run(const std::function<void(const LyapunovEstimate&)>& onEstimate, const ToolControl& control) {
+  result_.stopped = false;
+  while (t_ < s_.maxTime && !result_.converged) {
+    if (control.stopRequested() || !interval(control)) {
+      result_.stopped = true;
+      return false;
+    }
+    const Eigen::VectorXd estimate = logs_ / t_;
+    result_.last.time = t_;
+    result_.last.exponents.assign(estimate.data(), estimate.data() + k_);
+    history_.push_back(estimate);
+    if (static_cast<int>(history_.size()) > s_.estimateEvery) {
+      const double change = (history_.back() - history_.front()).lpNorm<Eigen::Infinity>();
+      history_.erase(history_.begin());
+      successes_ = change < s_.accuracy ? successes_ + 1 : 0;
+      if (s_.successes > 0 && successes_ >= s_.successes) result_.converged = true;
+    }
+    if (t_ >= nextOutput_) {
+      if (onEstimate) onEstimate(result_.last);
+      nextOutput_ += s_.outputPeriod;
+    }
+    control.progress(t_ / s_.maxTime);
+  }
+  if (onEstimate && result_.last.time > 0) onEstimate(result_.last);
+  return true;
+}
+
 LyapunovResult lyapunovExponents(const Model& model, const IntegratorFactory& makeIntegrator, const Eigen::VectorXd& x0,
                                  const LyapunovSettings& s, const std::function<void(const LyapunovEstimate&)>& onEstimate,
                                  const ToolControl& control) {
-  const int m = model.info().coreDimension, n = model.dimension();
-  const int k = s.count > 0 ? s.count : m;
-  if (k > m) throw InputError("lyapunov: at most " + std::to_string(m) + " exponents for " + model.info().id);
-  if (!(s.interval > 0)) throw InputError("lyapunov: the interval must be positive");
-  if (!(s.perturbation > 0) || !(s.maxPerturbation >= s.perturbation))
-    throw InputError("lyapunov: need 0 < perturbation <= max perturbation");
-  const double interval = model.isMap() ? std::max(1.0, std::round(s.interval)) : s.interval;
-  const auto fresh = [&]() -> std::unique_ptr<Integrator> {
-    if (model.isMap()) return std::make_unique<MapIteration>();
-    return makeIntegrator();
-  };
-
-  Eigen::VectorXd logs = Eigen::VectorXd::Zero(k);
-  Eigen::MatrixXd V = Eigen::MatrixXd::Identity(m, k);
-  LyapunovResult result;
-  std::deque<Eigen::VectorXd> history; // estimates of the last estimateEvery iterations
-  int successes = 0;
-  double t = 0, nextOutput = s.outputPeriod;
-  const auto project = [&](const Eigen::VectorXd& x) {
-    if (!s.renormalizeIntegrals || model.integrals(x.data()).size() == 0) return;
-    const Eigen::MatrixXd N = integralNormals(model, x);
-    V -= N * (N.transpose() * V);
-  };
-
-  // tangent mode: one integrator on (x, V); perturbed mode: k + 1 integrators on x and x + d v_i
-  std::unique_ptr<TangentSystem> tangent;
-  std::vector<std::unique_ptr<Integrator>> integs;
-  Eigen::VectorXd x = x0, state;
-  const auto startAll = [&](double t0) {
-    integs.clear();
-    if (s.mode == LyapunovSettings::Mode::Tangent) {
-      state.resize(n + m * k);
-      state.head(n) = x;
-      state.tail(m * k) = Eigen::Map<const Eigen::VectorXd>(V.data(), m * k);
-      integs.push_back(fresh());
-      integs.back()->start(*tangent, t0, state);
-    } else {
-      integs.push_back(fresh());
-      integs.back()->start(model, t0, x);
-      for (int j = 0; j < k; ++j) {
-        Eigen::VectorXd y = x;
-        y.head(m) += s.perturbation * V.col(j);
-        integs.push_back(fresh());
-        integs.back()->start(model, t0, y);
-      }
-    }
-  };
-  if (s.mode == LyapunovSettings::Mode::Tangent) tangent = std::make_unique<TangentSystem>(model, k);
-  project(x);
-  startAll(0);
-
-  while (t < s.maxTime) {
-    if (control.stopRequested()) {
-      result.stopped = true;
-      break;
-    }
-    double step = std::min(interval, s.maxTime - t);
-    if (s.mode == LyapunovSettings::Mode::Tangent) {
-      advanceTo(*integs[0], *tangent, t + step, state, control);
-      if (control.stopRequested()) continue;
-      x = state.head(n);
-      V = Eigen::Map<const Eigen::MatrixXd>(state.data() + n, m, k);
-    } else {
-      // cut the interval short while a perturbation grows beyond its maximum
-      for (;;) {
-        std::vector<Eigen::VectorXd> ends(k + 1);
-        for (int j = 0; j <= k; ++j) advanceTo(*integs[j], model, t + step, ends[j], control);
-        if (control.stopRequested()) break;
-        double worst = 0;
-        for (int j = 1; j <= k; ++j) worst = std::max(worst, (ends[j] - ends[0]).head(m).norm());
-        if (worst > s.maxPerturbation && step > 1e-9 * interval && !model.isMap()) {
-          step /= 2;
-          startAll(t); // x and V still hold the interval's start
-          continue;
-        }
-        x = ends[0];
-        for (int j = 0; j < k; ++j) V.col(j) = (ends[j + 1] - ends[0]).head(m) / s.perturbation;
-        break;
-      }
-      if (control.stopRequested()) continue;
-    }
-    t += step;
-    project(x);
-    orthonormalize(V, logs);
-    startAll(t);
-
-    const Eigen::VectorXd estimate = logs / t;
-    result.last.time = t;
-    result.last.exponents.assign(estimate.data(), estimate.data() + k);
-    history.push_back(estimate);
-    if (static_cast<int>(history.size()) > s.estimateEvery) {
-      const double change = (history.back() - history.front()).lpNorm<Eigen::Infinity>();
-      history.pop_front();
-      successes = change < s.accuracy ? successes + 1 : 0;
-      if (s.successes > 0 && successes >= s.successes) {
-        result.converged = true;
-        break;
-      }
-    }
-    if (t >= nextOutput) {
-      if (onEstimate) onEstimate(result.last);
-      nextOutput += s.outputPeriod;
-    }
-    control.progress(t / s.maxTime);
-  }
-  if (onEstimate && result.last.time > 0) onEstimate(result.last);
-  return result;
+  LyapunovRun run(model, makeIntegrator, x0, s);
+  run.run(onEstimate, control);
+  return run.result();
 }
 
 } // namespace rv

@@ -42,7 +42,38 @@ struct LyapunovResult {
 
 using IntegratorFactory = std::function<std::unique_ptr<Integrator>()>;
 
-/// Runs the algorithm from x0; `onEstimate` receives the running estimates every output period.
+class TangentSystem;
+
+/// The algorithm as a resumable computation: run() goes on from where a stop left it.
+class LyapunovRun {
+public:
+  /// Throws InputError for bad settings.
+  LyapunovRun(const Model& model, IntegratorFactory makeIntegrator, const Eigen::VectorXd& x0, LyapunovSettings settings);
+  ~LyapunovRun();
+  /// Continues until maxTime, convergence or a stop request; `onEstimate` receives the running estimates every
+  /// output period. Returns true when finished (maxTime or converged). Throws ComputationError on a failed step.
+  bool run(const std::function<void(const LyapunovEstimate&)>& onEstimate = {}, const ToolControl& control = {});
+  const LyapunovResult& result() const { return result_; }
+
+private:
+  void startAll(double t0);
+  void project();
+  bool interval(const ToolControl& control);
+  const Model& model_;
+  IntegratorFactory make_;
+  LyapunovSettings s_;
+  int m_, n_, k_;
+  double interval_, t_ = 0, nextOutput_;
+  int successes_ = 0;
+  Eigen::VectorXd logs_, x_, state_;
+  Eigen::MatrixXd V_;
+  std::vector<Eigen::VectorXd> history_;
+  std::unique_ptr<TangentSystem> tangent_;
+  std::vector<std::unique_ptr<Integrator>> integs_;
+  LyapunovResult result_;
+};
+
+/// Runs the algorithm from x0 to the end; `onEstimate` receives the running estimates every output period.
 /// Throws InputError for bad settings, ComputationError when the integration fails.
 LyapunovResult lyapunovExponents(const Model& model, const IntegratorFactory& makeIntegrator, const Eigen::VectorXd& x0,
                                  const LyapunovSettings& settings,
