@@ -1,0 +1,48 @@
+#include "dynamics/jobs/JobTree.h"
+
+#include <algorithm>
+
+namespace rv {
+
+JobTree::~JobTree() { removeAll(); }
+
+Job& JobTree::add(std::unique_ptr<Task> task, Job* parent) {
+  jobs_.push_back(std::make_unique<Job>(nextId_++, std::move(task), parent));
+  return *jobs_.back();
+}
+
+std::vector<Job*> JobTree::children(const Job& job) const {
+  std::vector<Job*> out;
+  for (const auto& j : jobs_)
+    if (j->parent() == &job) out.push_back(j.get());
+  return out;
+}
+
+void JobTree::remove(Job& job) {
+  for (Job* child : children(job)) remove(*child);
+  job.stop();
+  std::erase_if(jobs_, [&](const std::unique_ptr<Job>& j) { return j.get() == &job; });
+}
+
+void JobTree::stopAll() {
+  for (auto& j : jobs_) j->stop();
+}
+
+void JobTree::removeAll() {
+  stopAll();
+  jobs_.clear();
+}
+
+std::vector<Job*> JobTree::jobs() const {
+  std::vector<Job*> out;
+  for (const auto& j : jobs_) out.push_back(j.get());
+  return out;
+}
+
+Job* JobTree::find(int id) const {
+  for (const auto& j : jobs_)
+    if (j->id() == id) return j.get();
+  return nullptr;
+}
+
+} // namespace rv

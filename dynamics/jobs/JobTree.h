@@ -1,0 +1,29 @@
+// JobTree.h -- the tool manager's model: jobs in a tree (a spectrum or Lyapunov job hangs under the trajectory it
+// studies). Used from one thread (the GUI's or the command line's); the jobs themselves run on their own threads.
+#pragma once
+#include "dynamics/jobs/Job.h"
+
+#include <memory>
+#include <vector>
+
+namespace rv {
+
+class JobTree {
+public:
+  ~JobTree();
+  /// Adds a job (not started) under `parent` (nullptr: a root).
+  Job& add(std::unique_ptr<Task> task, Job* parent = nullptr);
+  /// Stops and deletes the job and everything under it.
+  void remove(Job& job);
+  void stopAll();
+  void removeAll();
+  std::vector<Job*> jobs() const;
+  std::vector<Job*> children(const Job& job) const;
+  Job* find(int id) const;
+
+private:
+  std::vector<std::unique_ptr<Job>> jobs_;
+  int nextId_ = 1;
+};
+
+} // namespace rv

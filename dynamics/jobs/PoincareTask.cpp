@@ -1,0 +1,65 @@
+#include "dynamics/jobs/PoincareTask.h"
+
+#include "dynamics/core/Errors.h"
+
+#include <sstream>
+
+namespace rv {
+
+PoincareTask::PoincareTask(RunSpec spec, SectionSettings settings) : spec_(std::move(spec)), settings_(std::move(settings)) {
+  reset();
+}
+
+void PoincareTask::build(const Eigen::VectorXd& x0, double t0) {
+  auto integ = spec_.makeIntegrator(*model_);
+  integ->start(*model_, t0, x0, settings_.backward ? -1 : +1);
+  SectionSettings s = settings_;
+  if (s.maxPoints > 0) s.maxPoints = std::max<long>(0, s.maxPoints - produced_);
+  map_ = std::make_unique<PoincareMap>(*model_, std::move(integ), s);
+}
+
+void PoincareTask::reset() {
+  model_ = spec_.makeModel();
+  last_.reset();
+  produced_ = 0;
+  points_.clear();
+  build(spec_.initialState, 0);
+}
+
+void PoincareTask::edit(RunSpec spec, SectionSettings settings) {
+  const Eigen::VectorXd from = lastState();
+  const double t = last_ ? last_->time : map_->integrator().time();
+  std::unique_ptr<Model> model = spec.makeModel(); // may throw InputError: nothing changes then
+  Eigen::VectorXd x0 = from;
+  if (last_ && !model->isMap()) {
+    try { // the same point of the map on the new level of the integrals
+      x0 = model->stateFromMap(last_->coordinates, {.sectionValue = settings.value, .root = last_->sheet}, "edit");
+    } catch (const InputError&) {
+      x0 = from; // no such state any more: go on from the old one
+    }
+  }
+  spec_ = std::move(spec);
+  settings_ = std::move(settings);
+  model_ = std::move(model);
+  build(x0, t);
+}
+
+bool PoincareTask::run(const ToolControl& control) {
+  while (auto p = map_->next(control)) {
+    last_ = *p;
+    ++produced_;
+    points_.push(std::move(*p));
+  }
+  return !control.stopRequested();
+}
+
+Eigen::VectorXd PoincareTask::lastState() const { return last_ ? map_->lastState() : map_->integrator().state(); }
+
+std::string PoincareTask::describe() const {
+  std::ostringstream os;
+  os << spec_.describe() << " section(" << (settings_.observable.empty() ? model_->info().section : settings_.observable)
+     << "=" << settings_.value << ")";
+  return os.str();
+}
+
+} // namespace rv

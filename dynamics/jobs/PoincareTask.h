@@ -1,0 +1,41 @@
+// PoincareTask.h -- a Poincare map as a job: streams map points; after an edit of the problem, method or section
+// parameters it goes on from its last point, completed again through the new integrals where it can be.
+#pragma once
+#include "dynamics/jobs/Channel.h"
+#include "dynamics/jobs/RunSpec.h"
+#include "dynamics/jobs/Task.h"
+#include "dynamics/tools/PoincareMap.h"
+
+namespace rv {
+
+class PoincareTask final : public Task {
+public:
+  PoincareTask(RunSpec spec, SectionSettings settings);
+  std::string name() const override { return "Poincare map"; }
+  std::string describe() const override;
+  bool run(const ToolControl& control) override;
+  void reset() override;
+
+  /// Only while the job does not run (Job::edit).
+  void edit(RunSpec spec, SectionSettings settings);
+  const RunSpec& spec() const { return spec_; }
+  const SectionSettings& settings() const { return settings_; }
+  /// The points, streamed (thread-safe).
+  Channel<MapPoint>& points() { return points_; }
+  /// The full state at the last point (the trajectory's "current" state for the tools hung under it); only while
+  /// the job does not run.
+  Eigen::VectorXd lastState() const;
+  const std::vector<std::string>& coordinateNames() const { return map_->coordinateNames(); }
+
+private:
+  void build(const Eigen::VectorXd& x0, double t0);
+  RunSpec spec_;
+  SectionSettings settings_;
+  std::unique_ptr<Model> model_;
+  std::unique_ptr<PoincareMap> map_;
+  std::optional<MapPoint> last_;
+  long produced_ = 0;
+  Channel<MapPoint> points_;
+};
+
+} // namespace rv

@@ -1,0 +1,28 @@
+#include "dynamics/jobs/RunSpec.h"
+
+#include "dynamics/integrators/MapIteration.h"
+
+#include <sstream>
+
+namespace rv {
+
+std::unique_ptr<Integrator> RunSpec::makeIntegrator(const Model& m) const {
+  if (m.isMap()) return std::make_unique<MapIteration>();
+  return integrator->create(integratorParameters);
+}
+
+std::string RunSpec::describe() const {
+  std::ostringstream os;
+  const auto list = [&](const ParameterValues& p) {
+    const auto& specs = p.table().specs();
+    for (std::size_t i = 0; i < specs.size(); ++i) os << (i ? ", " : "") << specs[i].id << "=" << p.values()[i];
+  };
+  os << integrator->id << "(";
+  list(integratorParameters);
+  os << ") " << model->info->id << "(";
+  list(modelParameters);
+  os << ")";
+  return os.str();
+}
+
+} // namespace rv

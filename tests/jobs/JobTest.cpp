@@ -1,0 +1,169 @@
+// Jobs: start, stop promptly, continue, edit and continue, restart, delete, the tree; and a random stress of many
+// jobs for ThreadSanitizer (run under the tsan preset: ctest --preset tsan).
+#include "dynamics/core/ModelRegistry.h"
+#include "dynamics/jobs/JobTree.h"
+#include "dynamics/jobs/LyapunovTask.h"
+#include "dynamics/jobs/PoincareTask.h"
+#include "dynamics/jobs/SpectrumTask.h"
+
+#include <chrono>
+#include <gtest/gtest.h>
+#include <random>
+#include <thread>
+
+namespace rv {
+namespace {
+
+using namespace std::chrono_literals;
+
+RunSpec henonHeiles(double energy = 0.125) {
+  RunSpec s(ModelRegistry::builtin().get("henon_heiles"), IntegratorRegistry::builtin().get("everhart"));
+  s.modelParameters.set("energy", energy);
+  s.integratorParameters.set("step", 0.05);
+  s.initialState = s.makeModel()->stateFromMap({0.1, 0.1}, {}, "t");
+  return s;
+}
+
+template <class F> bool waitFor(F done, std::chrono::milliseconds limit = 20000ms) {
+  const auto end = std::chrono::steady_clock::now() + limit;
+  while (!done()) {
+    if (std::chrono::steady_clock::now() > end) return false;
+    std::this_thread::sleep_for(1ms);
+  }
+  return true;
+}
+
+TEST(Job, RunsStopsPromptlyAndContinuesWhereItStopped) {
+  JobTree tree;
+  auto task = std::make_unique<PoincareTask>(henonHeiles(), SectionSettings{});
+  auto* poincare = task.get();
+  Job& job = tree.add(std::move(task));
+  job.start();
+  ASSERT_TRUE(waitFor([&] { return poincare->points().total() >= 20; }));
+  const auto t0 = std::chrono::steady_clock::now();
+  job.stop();
+  EXPECT_LT(std::chrono::steady_clock::now() - t0, 500ms);
+  EXPECT_EQ(job.status(), Job::Status::Stopped);
+  std::vector<MapPoint> first;
+  poincare->points().take(first);
+  const long n = static_cast<long>(first.size());
+  job.start(); // continues: the points go on in time
+  ASSERT_TRUE(waitFor([&] { return poincare->points().total() >= n + 10; }));
+  job.stop();
+  std::vector<MapPoint> more;
+  poincare->points().take(more);
+  ASSERT_FALSE(more.empty());
+  EXPECT_GT(more.front().time, first.back().time);
+}
+
+TEST(Job, EditTheEnergyAndContinueGivesPointsAtTheNewEnergy) {
+  JobTree tree;
+  auto task = std::make_unique<PoincareTask>(henonHeiles(0.125), SectionSettings{});
+  auto* poincare = task.get();
+  Job& job = tree.add(std::move(task));
+  job.start();
+  ASSERT_TRUE(waitFor([&] { return poincare->points().total() >= 5; }));
+  job.edit([](Task& t) {
+    auto& p = static_cast<PoincareTask&>(t);
+    RunSpec s = p.spec();
+    s.modelParameters.set("energy", 0.1);
+    p.edit(s, p.settings());
+  });
+  const long before = poincare->points().total();
+  std::vector<MapPoint> drop;
+  poincare->points().take(drop);
+  job.start();
+  ASSERT_TRUE(waitFor([&] { return poincare->points().total() >= before + 5; }));
+  job.stop();
+  const auto model = poincare->spec().makeModel();
+  const Eigen::VectorXd x = poincare->lastState();
+  EXPECT_NEAR(model->integrals(x.data())[0], 0.1, 1e-10) << "the trajectory goes on at the new energy";
+}
+
+TEST(Job, RestartBeginsAgainAndFinishedJobsReportIt) {
+  JobTree tree;
+  SectionSettings s;
+  s.maxPoints = 30;
+  auto task = std::make_unique<PoincareTask>(henonHeiles(), s);
+  auto* poincare = task.get();
+  Job& job = tree.add(std::move(task));
+  job.start();
+  ASSERT_TRUE(waitFor([&] { return job.status() == Job::Status::Finished; }));
+  EXPECT_EQ(poincare->points().total(), 30);
+  EXPECT_EQ(job.progress(), 1.0);
+  job.restart();
+  ASSERT_TRUE(waitFor([&] { return job.status() == Job::Status::Finished; }));
+  EXPECT_EQ(poincare->points().total(), 30) << "restart clears and recomputes";
+}
+
+TEST(Job, FailuresAreReportedWithTheReason) {
+  JobTree tree;
+  RunSpec spec = henonHeiles();
+  spec.integratorParameters.set("step", 5.0); // blows up
+  spec.initialState << 0, 0.5, 0.6, 0.1;
+  Job& job = tree.add(std::make_unique<PoincareTask>(spec, SectionSettings{}));
+  job.start();
+  ASSERT_TRUE(waitFor([&] { return job.status() == Job::Status::Failed; }));
+  EXPECT_NE(job.error().find("finite"), std::string::npos) << job.error();
+}
+
+TEST(JobTree, ToolsHangUnderTheirTrajectoryAndGoWithIt) {
+  JobTree tree;
+  Job& map = tree.add(std::make_unique<PoincareTask>(henonHeiles(), SectionSettings{}));
+  LyapunovSettings ls;
+  ls.maxTime = 50;
+  Job& lyap = tree.add(std::make_unique<LyapunovTask>(henonHeiles(), ls), &map);
+  SpectrumSettings ss;
+  ss.function = "x";
+  ss.samples = 1024;
+  Job& spec = tree.add(std::make_unique<SpectrumTask>(henonHeiles(), ss), &map);
+  EXPECT_EQ(lyap.parent(), &map);
+  EXPECT_EQ(tree.children(map).size(), 2u);
+  lyap.start();
+  spec.start();
+  ASSERT_TRUE(waitFor([&] { return lyap.status() == Job::Status::Finished && spec.status() == Job::Status::Finished; }));
+  std::vector<SpectrumResult> r;
+  static_cast<SpectrumTask&>(spec.task()).results().take(r);
+  ASSERT_EQ(r.size(), 1u);
+  EXPECT_EQ(r[0].samples, 1024);
+  EXPECT_NEAR(static_cast<LyapunovTask&>(lyap.task()).result().last.time, 50, 1e-9);
+  tree.remove(map);
+  EXPECT_TRUE(tree.jobs().empty());
+}
+
+TEST(JobTree, StressManyJobsInRandomOrder) {
+  JobTree tree;
+  std::mt19937 rng(42);
+  std::vector<MapPoint> sink;
+  for (int i = 0; i < 100; ++i) tree.add(std::make_unique<PoincareTask>(henonHeiles(), SectionSettings{}));
+  for (int op = 0; op < 400; ++op) {
+    auto jobs = tree.jobs();
+    if (jobs.empty()) break;
+    Job& j = *jobs[rng() % jobs.size()];
+    switch (rng() % 7) {
+    case 0:
+    case 1: j.start(); break;
+    case 2: j.stop(); break;
+    case 3: j.restart(); break;
+    case 4:
+      j.edit([&](Task& t) {
+        auto& p = static_cast<PoincareTask&>(t);
+        RunSpec s = p.spec();
+        s.modelParameters.set("energy", 0.1 + 0.02 * (rng() % 3));
+        p.edit(s, p.settings());
+      });
+      break;
+    case 5: static_cast<PoincareTask&>(j.task()).points().take(sink); break;
+    case 6:
+      if (rng() % 4 == 0) tree.remove(j);
+      break;
+    }
+  }
+  tree.stopAll();
+  for (Job* j : tree.jobs()) EXPECT_NE(j->status(), Job::Status::Running);
+  tree.removeAll();
+  EXPECT_TRUE(tree.jobs().empty());
+}
+
+} // namespace
+} // namespace rv
