@@ -1,14 +1,20 @@
 #include "scenes/Scene.h"
 
-#include "dynamics/integrators/MapIteration.h"
 
 namespace rv {
 
 std::unique_ptr<Integrator> Scene::startIntegrator() const {
-  std::unique_ptr<Integrator> integrator =
-      model->isMap() ? std::make_unique<MapIteration>() : integratorEntry->create(*integratorParameters);
+  auto integrator = runSpec().makeIntegrator(*model);
   integrator->start(*model, 0.0, initialState);
   return integrator;
+}
+
+RunSpec Scene::runSpec() const {
+  RunSpec spec(*modelEntry, *integratorEntry);
+  spec.modelParameters = model->parameters();
+  spec.integratorParameters = *integratorParameters;
+  spec.initialState = initialState;
+  return spec;
 }
 
 } // namespace rv

@@ -2,6 +2,10 @@
 #pragma once
 #include "dynamics/core/ModelRegistry.h"
 #include "dynamics/integrators/Integrator.h"
+#include "dynamics/jobs/RunSpec.h"
+#include "dynamics/tools/FourierSpectrum.h"
+#include "dynamics/tools/Lyapunov.h"
+#include "dynamics/tools/PoincareMap.h"
 #include "render/ViewOptions.h"
 
 #include <memory>
@@ -9,14 +13,6 @@
 #include <string>
 
 namespace rv {
-
-/// The "poincare" section (used by the map tools).
-struct PoincareSettings {
-  std::string section = "g";
-  double value = 0.0;
-  std::string direction = "positive"; ///< positive | negative | both
-  long points = 2000;
-};
 
 /// A validated scene: everything needed to integrate and to draw.
 struct Scene {
@@ -27,11 +23,15 @@ struct Scene {
   const IntegratorEntry* integratorEntry = nullptr;
   std::unique_ptr<ParameterValues> integratorParameters;
   Eigen::VectorXd initialState;
-  PoincareSettings poincare;
+  SectionSettings poincare; ///< "poincare": section, value, direction, points (maxPoints), ...
+  LyapunovSettings lyapunov; ///< "lyapunov"
+  SpectrumSettings spectrum; ///< "spectrum"
   ViewOptions view;
 
   /// A fresh integrator of the scene's method, started at t = 0 from the initial state.
   std::unique_ptr<Integrator> startIntegrator() const;
+  /// The scene in dynamics terms, for tasks and jobs.
+  RunSpec runSpec() const;
 };
 
 } // namespace rv

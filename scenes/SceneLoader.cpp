@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <set>
+#include <cmath>
 #include <sstream>
 
 namespace rv {
@@ -134,26 +135,84 @@ ViewOptions readView(const json& j, const Where& w) {
   return v;
 }
 
-PoincareSettings readPoincare(const json& j, const Where& w) {
+double positive(const json& j, const Where& w) {
+  const double v = number(j, w);
+  if (!(v > 0)) w.fail("must be positive");
+  return v;
+}
+
+long count(const json& j, const Where& w, long least = 1) {
+  const double v = number(j, w);
+  if (!(v >= least && v == std::floor(v) && v < 1e15)) w.fail("must be a whole number >= " + std::to_string(least));
+  return static_cast<long>(v);
+}
+
+SectionSettings readPoincare(const json& j, const Where& w) {
   requireObject(j, w);
-  onlyKeys(j, w, {"section", "value", "direction", "points"});
-  PoincareSettings p;
-  if (j.contains("section")) p.section = text(j["section"], w / "section");
+  onlyKeys(j, w, {"section", "value", "direction", "points", "accuracy", "integrate", "many_sheeted", "root", "order",
+                  "max_time"});
+  SectionSettings p;
+  p.maxPoints = 2000;
+  if (j.contains("section")) p.observable = text(j["section"], w / "section");
   if (j.contains("value")) p.value = number(j["value"], w / "value");
   if (j.contains("direction")) {
-    p.direction = text(j["direction"], w / "direction");
-    if (p.direction != "positive" && p.direction != "negative" && p.direction != "both")
-      (w / "direction").fail("expected positive, negative or both");
+    const std::string d = text(j["direction"], w / "direction");
+    if (d == "positive") p.direction = +1;
+    else if (d == "negative") p.direction = -1;
+    else if (d == "both") p.checkDirection = false;
+    else (w / "direction").fail("expected positive, negative or both");
   }
-  if (j.contains("points")) {
-    const double n = number(j["points"], w / "points");
-    if (!(n >= 1 && n == static_cast<long>(n))) (w / "points").fail("must be a positive whole number");
-    p.points = static_cast<long>(n);
+  if (j.contains("points")) p.maxPoints = count(j["points"], w / "points");
+  if (j.contains("accuracy")) p.accuracy = positive(j["accuracy"], w / "accuracy");
+  if (j.contains("integrate")) {
+    const std::string d = text(j["integrate"], w / "integrate");
+    if (d != "forward" && d != "backward") (w / "integrate").fail("expected forward or backward");
+    p.backward = d == "backward";
   }
+  if (j.contains("many_sheeted")) p.manySheeted = boolean(j["many_sheeted"], w / "many_sheeted");
+  if (j.contains("root")) p.root = static_cast<int>(count(j["root"], w / "root"));
+  if (j.contains("order")) p.order = static_cast<int>(count(j["order"], w / "order"));
+  if (j.contains("max_time")) p.maxTime = positive(j["max_time"], w / "max_time");
   return p;
 }
 
-Eigen::VectorXd readInitial(const json& j, const Where& w, const Model& model, const PoincareSettings& poincare) {
+LyapunovSettings readLyapunov(const json& j, const Where& w) {
+  requireObject(j, w);
+  onlyKeys(j, w, {"mode", "count", "interval", "perturbation", "max_perturbation", "estimate_every", "accuracy",
+                  "successes", "output_period", "renormalize", "time"});
+  LyapunovSettings l;
+  if (j.contains("mode")) {
+    const std::string m = text(j["mode"], w / "mode");
+    if (m == "tangent") l.mode = LyapunovSettings::Mode::Tangent;
+    else if (m == "perturbed") l.mode = LyapunovSettings::Mode::Perturbed;
+    else (w / "mode").fail("expected tangent or perturbed");
+  }
+  if (j.contains("count")) l.count = static_cast<int>(count(j["count"], w / "count"));
+  if (j.contains("interval")) l.interval = positive(j["interval"], w / "interval");
+  if (j.contains("perturbation")) l.perturbation = positive(j["perturbation"], w / "perturbation");
+  if (j.contains("max_perturbation")) l.maxPerturbation = positive(j["max_perturbation"], w / "max_perturbation");
+  if (j.contains("estimate_every")) l.estimateEvery = static_cast<int>(count(j["estimate_every"], w / "estimate_every"));
+  if (j.contains("accuracy")) l.accuracy = positive(j["accuracy"], w / "accuracy");
+  if (j.contains("successes")) l.successes = static_cast<int>(count(j["successes"], w / "successes", 0));
+  if (j.contains("output_period")) l.outputPeriod = positive(j["output_period"], w / "output_period");
+  if (j.contains("renormalize")) l.renormalizeIntegrals = boolean(j["renormalize"], w / "renormalize");
+  if (j.contains("time")) l.maxTime = positive(j["time"], w / "time");
+  return l;
+}
+
+SpectrumSettings readSpectrum(const json& j, const Where& w) {
+  requireObject(j, w);
+  onlyKeys(j, w, {"function", "samples", "max_frequency", "peaks", "min_peak_distance"});
+  SpectrumSettings s;
+  if (j.contains("function")) s.function = text(j["function"], w / "function");
+  if (j.contains("samples")) s.samples = count(j["samples"], w / "samples", 8);
+  if (j.contains("max_frequency")) s.maxFrequency = positive(j["max_frequency"], w / "max_frequency");
+  if (j.contains("peaks")) s.peaks = static_cast<int>(count(j["peaks"], w / "peaks", 0));
+  if (j.contains("min_peak_distance")) s.minPeakDistance = number(j["min_peak_distance"], w / "min_peak_distance");
+  return s;
+}
+
+Eigen::VectorXd readInitial(const json& j, const Where& w, const Model& model, const SectionSettings& poincare) {
   requireObject(j, w);
   onlyKeys(j, w, {"map", "root", "state"});
   if (j.contains("map") == j.contains("state")) w.fail("give exactly one of \"map\" or \"state\"");
@@ -168,6 +227,7 @@ Eigen::VectorXd readInitial(const json& j, const Where& w, const Model& model, c
   std::vector<double> point;
   for (std::size_t i = 0; i < j["map"].size(); ++i) point.push_back(number(j["map"][i], wm / std::to_string(i)));
   MapPointSpec spec{.sectionValue = poincare.value};
+  // a map point lies on the section; an angle section's value is its level
   if (j.contains("root")) {
     const double r = number(j["root"], w / "root");
     if (!(r >= 1 && r == static_cast<int>(r))) (w / "root").fail("must be a whole number >= 1");
@@ -198,7 +258,8 @@ void applyOverrides(json& doc, const std::vector<SceneOverride>& overrides) {
       doc["parameters"][o.key] = value;
       continue;
     }
-    static const std::set<std::string> sections{"integrator", "initial", "poincare", "view", "parameters"};
+    static const std::set<std::string> sections{"integrator", "initial", "poincare", "lyapunov", "spectrum", "view",
+                                                "parameters"};
     const std::string head = o.key.substr(0, o.key.find('.'));
     if (!sections.count(head)) throw InputError(flag + ": unknown scene field '" + head + "'");
     json* node = &doc;
@@ -224,7 +285,8 @@ Scene sceneFromJson(json doc, const std::string& source, const std::vector<Scene
   const Where root{source, ""};
   requireObject(doc, root);
   applyOverrides(doc, overrides);
-  onlyKeys(doc, root, {"problem", "parameters", "integrator", "initial", "poincare", "view", "title", "description"});
+  onlyKeys(doc, root, {"problem", "parameters", "integrator", "initial", "poincare", "lyapunov", "spectrum", "view",
+                       "title", "description"});
   if (!doc.contains("problem")) root.fail("missing \"problem\"");
 
   Scene scene;
@@ -260,7 +322,12 @@ Scene sceneFromJson(json doc, const std::string& source, const std::vector<Scene
     wi.fail(e.what());
   }
 
+  scene.poincare.maxPoints = 2000;
   if (doc.contains("poincare")) scene.poincare = readPoincare(doc["poincare"], root / "poincare");
+  if (doc.contains("lyapunov")) scene.lyapunov = readLyapunov(doc["lyapunov"], root / "lyapunov");
+  if (doc.contains("spectrum")) scene.spectrum = readSpectrum(doc["spectrum"], root / "spectrum");
+  if (!scene.poincare.observable.empty() && !scene.model->isMap() && scene.model->findObservable(scene.poincare.observable) < 0)
+    (root / "poincare" / "section").fail("unknown observable '" + scene.poincare.observable + "' of " + problem);
   if (!doc.contains("initial")) root.fail("missing \"initial\" (a map point or a state)");
   scene.initialState = readInitial(doc["initial"], root / "initial", *scene.model, scene.poincare);
   if (doc.contains("view")) scene.view = readView(doc["view"], root / "view");

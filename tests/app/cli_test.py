@@ -161,6 +161,32 @@ class Cli(unittest.TestCase):
         self.assertEqual(s["avg_frame_rate"], "10/1")
         self.assertEqual([f for f in os.listdir(self.dir)], ["v.mp4"], "no temporary left behind")
 
+    def test_poincare_lyapunov_spectrum(self):
+        hh = os.path.join(SRC, "scenes", "henon_heiles.json")
+        out = self.path("p.csv")
+        r = run("poincare", hh, "--points", "4", "--set", "initial.map=[0,0.25]", "-o", out)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        rows = list(csv.reader(open(out)))
+        self.assertEqual(rows[0], ["y", "py", "t", "sheet"])
+        self.assertEqual(len(rows), 5)
+        for row in rows[1:]:  # the straight-line orbit crosses at (0, sqrt(E/2)) every time
+            self.assertAlmostEqual(float(row[0]), 0.0, delta=1e-9)
+            self.assertAlmostEqual(float(row[1]), 0.25, delta=1e-9)
+        r = run("lyapunov", os.path.join(SRC, "scenes", "lorenz.json"), "--time", "500", "--json")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        j = json.loads(r.stdout)
+        self.assertEqual(len(j["exponents"]), 3)
+        self.assertAlmostEqual(j["sum"], -41 / 3, delta=1e-3)
+        self.assertEqual(j["time"], 500)
+        r = run("spectrum", hh, "--function", "x", "--samples", "4096", "--set", "integrator.method=rk4", "--json")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        j = json.loads(r.stdout)
+        self.assertEqual(j["samples"], 4096)
+        self.assertGreater(len(j["peaks"]), 0)
+        self.assertBadInput(run("spectrum", hh, "--function", "x", "--set", "integrator.method=merson"), "fixed-step")
+        self.assertBadInput(run("spectrum", hh, "--function", "nope"), "nope")
+        self.assertBadInput(run("poincare", hh, "--set", "poincare.section=nope"), "poincare.section")
+
     def test_gui_without_a_display_says_so(self):
         r = run("gui", SCENE, env={"WAYLAND_DISPLAY": ""})
         if "WAYLAND_DISPLAY" in os.environ:

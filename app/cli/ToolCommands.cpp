@@ -1,0 +1,175 @@
+// ToolCommands.cpp -- `rollviz poincare`, `rollviz lyapunov`, `rollviz spectrum`: the tools of dynamics/tools run
+// in the foreground, with progress on a terminal and Ctrl-C keeping what was computed (exit 130).
+#include "app/cli/Commands.h"
+#include "app/cli/Progress.h"
+#include "dynamics/core/Errors.h"
+#include "dynamics/io/AtomicFile.h"
+
+#include <cmath>
+#include <cstdio>
+#include <fmt/core.h>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+namespace rv {
+
+namespace {
+
+// output to a file (written under a temporary name) or standard output
+class Output {
+public:
+  explicit Output(const std::string& path) {
+    if (path.empty()) return;
+    file_ = std::make_unique<AtomicFile>(path, "-o");
+    out_ = std::fopen(file_->tempPath().c_str(), "w");
+    if (!out_) throw InputError("-o " + path + ": cannot open for writing");
+  }
+  ~Output() {
+    if (file_ && out_) std::fclose(out_);
+  }
+  FILE* get() const { return out_; }
+  /// Flushes and renames the file into place.
+  void commit() {
+    if (!file_) {
+      std::fflush(out_);
+      return;
+    }
+    const bool ok = std::fflush(out_) == 0 && !std::ferror(out_);
+    std::fclose(out_);
+    out_ = nullptr;
+    if (!ok) throw ComputationError("cannot write " + file_->path());
+    file_->commit();
+  }
+
+private:
+  std::unique_ptr<AtomicFile> file_;
+  FILE* out_ = stdout;
+};
+
+ToolControl cliControl(Progress& progress) {
+  ToolControl c;
+  c.stopRequested = [] { return interrupted(); };
+  c.progress = [&progress](double f) { progress.update(f); };
+  return c;
+}
+
+struct PoincareOptions {
+  SceneArgs scene;
+  long points = 0;
+  std::string output;
+};
+struct LyapunovOptions {
+  SceneArgs scene;
+  double time = 0;
+  bool json = false;
+};
+struct SpectrumOptions {
+  SceneArgs scene;
+  std::string function, output;
+  long samples = 0;
+  bool json = false;
+};
+
+} // namespace
+
+Command addPoincareCommand(CLI::App& app) {
+  auto* cmd = app.add_subcommand("poincare", "points of the Poincare map of a scene's trajectory, as CSV");
+  auto o = std::make_shared<PoincareOptions>();
+  addSceneArgs(cmd, o->scene);
+  cmd->add_option("--points", o->points, "how many points (default: the scene's poincare.points)");
+  cmd->add_option("-o,--output", o->output, "CSV file: the map coordinates, t, sheet (default: standard output)");
+  return {cmd, [o] {
+            if (o->points < 0) throw InputError("--points: must be positive");
+            const Scene scene = o->scene.load();
+            SectionSettings s = scene.poincare;
+            if (o->points > 0) s.maxPoints = o->points;
+            if (s.maxPoints <= 0) s.maxPoints = 2000;
+            auto integ = scene.runSpec().makeIntegrator(*scene.model);
+            integ->start(*scene.model, 0, scene.initialState, s.backward ? -1 : +1);
+            PoincareMap map(*scene.model, std::move(integ), s);
+            Output out(o->output);
+            for (const auto& n : map.coordinateNames()) std::fprintf(out.get(), "%s,", n.c_str());
+            std::fprintf(out.get(), "t,sheet\n");
+            Progress progress("poincare");
+            const ToolControl control = cliControl(progress);
+            while (auto p = map.next(control)) {
+              for (double c : p->coordinates) std::fprintf(out.get(), "%.17g,", c);
+              std::fprintf(out.get(), "%.17g,%d\n", p->time, p->sheet);
+            }
+            out.commit(); // a failed integration throws before this: no file is left behind
+            return interrupted() ? 130 : 0;
+          }};
+}
+
+Command addLyapunovCommand(CLI::App& app) {
+  auto* cmd = app.add_subcommand("lyapunov", "Lyapunov exponents along a scene's trajectory (Benettin)");
+  auto o = std::make_shared<LyapunovOptions>();
+  addSceneArgs(cmd, o->scene);
+  cmd->add_option("--time", o->time, "integration time (default: the scene's lyapunov.time)");
+  cmd->add_flag("--json", o->json, "print one JSON object: exponents, sum, time, converged");
+  return {cmd, [o] {
+            const Scene scene = o->scene.load();
+            LyapunovSettings s = scene.lyapunov;
+            if (o->time < 0 || !std::isfinite(o->time)) throw InputError("--time: must be positive");
+            if (o->time > 0) s.maxTime = o->time;
+            const RunSpec spec = scene.runSpec();
+            const Model& model = *scene.model;
+            Progress progress("lyapunov");
+            const LyapunovResult r = lyapunovExponents(
+                model, [&] { return spec.makeIntegrator(model); }, scene.initialState, s, {}, cliControl(progress));
+            if (o->json) {
+              nlohmann::json j{{"exponents", r.last.exponents}, {"sum", r.last.sum()}, {"time", r.last.time},
+                               {"converged", r.converged}, {"stopped", r.stopped}};
+              fmt::print("{}\n", j.dump());
+            } else {
+              for (std::size_t i = 0; i < r.last.exponents.size(); ++i)
+                fmt::print("lambda{} = {:.10g}\n", i + 1, r.last.exponents[i]);
+              fmt::print("sum = {:.10g}\ntime = {:.10g}\nconverged = {}\n", r.last.sum(), r.last.time, r.converged);
+            }
+            return r.stopped ? 130 : 0;
+          }};
+}
+
+Command addSpectrumCommand(CLI::App& app) {
+  auto* cmd = app.add_subcommand("spectrum", "Fourier spectrum of an observable along a scene's trajectory");
+  auto o = std::make_shared<SpectrumOptions>();
+  addSceneArgs(cmd, o->scene);
+  cmd->add_option("--function", o->function, "observable to expand (default: the scene's spectrum.function)");
+  cmd->add_option("--samples", o->samples, "number of iterations (integration steps) sampled");
+  cmd->add_option("-o,--output", o->output, "CSV file: frequency, amplitude");
+  cmd->add_flag("--json", o->json, "print the peaks as one JSON object");
+  return {cmd, [o] {
+            const Scene scene = o->scene.load();
+            SpectrumSettings s = scene.spectrum;
+            if (!o->function.empty()) s.function = o->function;
+            if (s.function.empty()) throw InputError("--function: give the observable to expand");
+            if (o->samples < 0) throw InputError("--samples: must be positive");
+            if (o->samples > 0) s.samples = o->samples;
+            Output out(o->output.empty() && o->json ? "/dev/null" : o->output);
+            auto integ = scene.startIntegrator();
+            Progress progress("spectrum");
+            const SpectrumResult r = fourierSpectrum(*scene.model, *integ,
+                                                     scene.model->isMap() || scene.integratorEntry->fixedStep, s,
+                                                     cliControl(progress));
+            if (o->output.empty() && o->json) {
+              nlohmann::json peaks = nlohmann::json::array();
+              for (const auto& p : r.peaks) peaks.push_back({{"frequency", p.frequency}, {"amplitude", p.amplitude}});
+              fmt::print("{}\n", nlohmann::json{{"function", s.function}, {"peaks", peaks}, {"step", r.step},
+                                               {"samples", r.samples}}.dump());
+              return interrupted() ? 130 : 0;
+            }
+            std::fprintf(out.get(), "frequency,amplitude\n");
+            for (std::size_t k = 0; k < r.frequency.size(); ++k)
+              std::fprintf(out.get(), "%.17g,%.17g\n", r.frequency[k], r.amplitude[k]);
+            out.commit();
+            if (o->json) {
+              nlohmann::json peaks = nlohmann::json::array();
+              for (const auto& p : r.peaks) peaks.push_back({{"frequency", p.frequency}, {"amplitude", p.amplitude}});
+              fmt::print("{}\n", nlohmann::json{{"function", s.function}, {"peaks", peaks}, {"step", r.step},
+                                               {"samples", r.samples}}.dump());
+            }
+            return interrupted() ? 130 : 0;
+          }};
+}
+
+} // namespace rv
