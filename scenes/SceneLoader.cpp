@@ -2,6 +2,7 @@
 
 #include "dynamics/core/Errors.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -270,6 +271,21 @@ void applyOverrides(json& doc, const std::vector<SceneOverride>& overrides) {
       node = &(*node)[part];
     }
     *node = value;
+    if (o.key == "integrator.method" && value.is_string()) {
+      // the old method's settings do not apply to the new one: keep only the keys the new method knows
+      const IntegratorEntry* entry = nullptr;
+      try {
+        entry = &IntegratorRegistry::builtin().get(value.get<std::string>());
+      } catch (const InputError&) {
+        continue; // reported by validation, naming the field
+      }
+      for (auto it = doc["integrator"].begin(); it != doc["integrator"].end();)
+        if (it.key() != "method" && entry->parameters->find(it.key()) < 0 &&
+            std::none_of(overrides.begin(), overrides.end(), [&](const SceneOverride& x) { return x.key == "integrator." + it.key(); }))
+          it = doc["integrator"].erase(it);
+        else
+          ++it;
+    }
   }
 }
 
