@@ -163,3 +163,33 @@ TEST(FourierSpectrum, OfAHarmonicOscillatorAlongATrajectory) {
 
 } // namespace
 } // namespace rv
+
+namespace rv {
+namespace {
+
+TEST(PoincareMap, ManySheetedMapsKeepTheirSheet) {
+  // with a gyrostat along the axis and a map point near it, |M + K| = G can be reached twice at a low energy
+  const auto m = test::makeModel("chaplygin_ball", {{"energy", 0.1}, {"c", 0.0}, {"K3", 1.0}});
+  const MapPointSpec one{.sectionValue = 0, .root = 1}, two{.sectionValue = 0, .root = 2};
+  const Eigen::VectorXd a = m->stateFromMap({0.3, 0.9}, one, "t"), b = m->stateFromMap({0.3, 0.9}, two, "t");
+  EXPECT_GT((a - b).norm(), 1e-3) << "two different states on the two sheets";
+  EXPECT_NEAR(m->integrals(a.data())[0], 0.1, 1e-12);
+  EXPECT_NEAR(m->integrals(b.data())[0], 0.1, 1e-12);
+  EXPECT_EQ(m->sheetOf(a, one), 1);
+  EXPECT_EQ(m->sheetOf(b, one), 2);
+  SectionSettings s;
+  s.manySheeted = true;
+  s.root = 2;
+  s.maxPoints = 10;
+  PoincareMap map(*m, everhart(*m, b, 0.1), s);
+  int n = 0;
+  while (auto p = map.next()) {
+    EXPECT_EQ(p->sheet, 2);
+    EXPECT_EQ(m->sheetOf(map.lastState(), one), 2);
+    ++n;
+  }
+  EXPECT_EQ(n, 10);
+}
+
+} // namespace
+} // namespace rv
