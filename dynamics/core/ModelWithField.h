@@ -3,6 +3,7 @@
 #pragma once
 #include "dynamics/core/Model.h"
 
+#include <stdexcept>
 #include <unsupported/Eigen/AutoDiff>
 
 namespace rv {
@@ -11,12 +12,17 @@ namespace rv {
 inline double valueOf(double v) { return v; }
 template <class D> double valueOf(const Eigen::AutoDiffScalar<D>& v) { return v.value(); }
 
-/// Derived must provide `template <class S> void field(const Vec<S>& x, Vec<S>& dx) const`.
-template <class Derived, int N> class ModelWithField : public Model {
+/// Derived must provide `template <class S> void field(const Vec<S>& x, Vec<S>& dx) const`. M is the core
+/// dimension (the leading components that evolve on their own); it must equal info().coreDimension.
+template <class Derived, int N, int M = N> class ModelWithField : public Model {
 public:
   static constexpr int kDim = N;
+  static constexpr int kCore = M;
   template <class S> using Vec = Eigen::Matrix<S, N, 1>;
-  using Model::Model;
+  ModelWithField(const ModelInfo& info, const ParameterValues& params) : Model(info, params) {
+    if (info.coreDimension != M || static_cast<int>(info.stateNames.size()) != N)
+      throw std::logic_error(info.id + ": the state sizes of ModelWithField and ModelInfo disagree");
+  }
 
   void rhs(const double* x, double* dx) const final {
     const Vec<double> in = Eigen::Map<const Vec<double>>(x);
@@ -37,14 +43,13 @@ public:
 
   /// Derivatives with respect to the core components only: cheaper when the kinematics add many components.
   void coreJacobian(const double* x, double* jac) const final {
-    using D = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, N, 1>; // no heap: at most N derivatives
+    using D = Eigen::Matrix<double, M, 1>; // M derivatives, fixed size: no heap, unrolled
     using AD = Eigen::AutoDiffScalar<D>;
-    const int m = this->info().coreDimension;
     Vec<AD> xa, fa;
-    for (int i = 0; i < N; ++i) xa[i] = i < m ? AD(x[i], m, i) : AD(x[i], D::Zero(m));
+    for (int i = 0; i < N; ++i) xa[i] = i < M ? AD(x[i], M, i) : AD(x[i], D::Zero());
     self().field(xa, fa);
-    for (int i = 0; i < m; ++i)
-      for (int j = 0; j < m; ++j) jac[i * m + j] = fa[i].derivatives().size() ? fa[i].derivatives()[j] : 0.0;
+    for (int i = 0; i < M; ++i)
+      for (int j = 0; j < M; ++j) jac[i * M + j] = fa[i].derivatives()[j];
   }
 
 private:

@@ -12,7 +12,7 @@
 
 namespace rv {
 
-class BallOnEllipsoid final : public ModelWithField<BallOnEllipsoid, 12> {
+class BallOnEllipsoid final : public ModelWithField<BallOnEllipsoid, 12, 6> {
 public:
   template <class S> using V3 = ball_on_surface::V3<S>;
   explicit BallOnEllipsoid(const ParameterValues& params);

@@ -13,7 +13,7 @@
 
 namespace rv {
 
-class BallOnParaboloid final : public ModelWithField<BallOnParaboloid, 11> {
+class BallOnParaboloid final : public ModelWithField<BallOnParaboloid, 11, 5> {
 public:
   template <class S> using V3 = ball_on_surface::V3<S>;
   explicit BallOnParaboloid(const ParameterValues& params);

@@ -13,7 +13,7 @@
 
 namespace rv {
 
-class ChaplyginBall final : public ModelWithField<ChaplyginBall, 16> {
+class ChaplyginBall final : public ModelWithField<ChaplyginBall, 16, 6> {
 public:
   explicit ChaplyginBall(const ParameterValues& params);
   static const ModelInfo& staticInfo();

@@ -34,9 +34,9 @@ Eigen::Matrix3d fieldMatrix(const ParameterValues& p);
 } // namespace rigid_body
 
 /// The equations, generic in the surface (Derived provides contact<S>(gamma) and contactRate<S>(gamma, dgamma)).
-template <class Derived> class RigidBodyOnPlane : public ModelWithField<Derived, 16> {
+template <class Derived> class RigidBodyOnPlane : public ModelWithField<Derived, 16, 6> {
 public:
-  using Base = ModelWithField<Derived, 16>;
+  using Base = ModelWithField<Derived, 16, 6>;
   template <class S> using Vec = typename Base::template Vec<S>;
   template <class S> using V3 = Eigen::Matrix<S, 3, 1>;
 
