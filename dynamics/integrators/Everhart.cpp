@@ -85,6 +85,7 @@ namespace {
 // the spacings, weights and matrices of one order, computed once per process (they cost ~10 ms)
 struct EverhartTables {
   std::vector<long double> cl, gaussNodes, gaussWeights;
+  std::vector<std::vector<long double>> integrated; // L_j(tau) = int_0^tau l_j = sum_p integrated[j][p] tau^p
   Eigen::MatrixXd A, extrapolate;
   Eigen::VectorXd b;
 };
@@ -115,6 +116,21 @@ EverhartTables computeTables(int n) {
       t.A(i, j) = static_cast<double>(t.cl[i] * aij);
       t.extrapolate(j, i) = static_cast<double>(lagrange(t.cl, j, 1 + t.cl[i]));
     }
+    // monomial coefficients of l_j (a product of n - 1 linear factors), integrated term by term
+    std::vector<long double> poly{1.0L};
+    for (int m = 0; m < n; ++m) {
+      if (m == j) continue;
+      const long double d = t.cl[j] - t.cl[m];
+      std::vector<long double> next(poly.size() + 1, 0.0L);
+      for (std::size_t q = 0; q < poly.size(); ++q) {
+        next[q + 1] += poly[q] / d;
+        next[q] -= poly[q] * t.cl[m] / d;
+      }
+      poly = std::move(next);
+    }
+    std::vector<long double> L(n + 1, 0.0L);
+    for (int q = 0; q < n; ++q) L[q + 1] = poly[q] / (q + 1);
+    t.integrated.push_back(std::move(L));
   }
   return t;
 }
@@ -133,6 +149,7 @@ Everhart::Everhart(double step, int order, int iterations) : h_(step), maxIterat
   n_ = (effective + 1) / 2;
   const EverhartTables& t = tablesFor(n_);
   cl_ = t.cl, gaussNodes_ = t.gaussNodes, gaussWeights_ = t.gaussWeights;
+  integrated_ = &t.integrated;
   A_ = t.A, extrapolate_ = t.extrapolate, b_ = t.b;
   c_.assign(cl_.begin(), cl_.end());
 }
@@ -204,13 +221,14 @@ void Everhart::interpolate(double t, Eigen::VectorXd& out) const {
     out = x_;
     return;
   }
-  // x(tau) = x0 + h sum_j (int_0^tau l_j) F_j, the integrals by Gauss-Legendre on [0, tau]
+  // x(tau) = x0 + h sum_j L_j(tau) F_j, L_j by Horner in long double (the coefficients alternate in sign)
   const ld tau = static_cast<ld>((t - tPrev_) / h);
   out = xPrev_;
   for (int j = 0; j < n_; ++j) {
+    const auto& L = (*integrated_)[j];
     ld w = 0;
-    for (int k = 0; k < n_; ++k) w += gaussWeights_[k] * lagrange(cl_, j, tau * gaussNodes_[k]);
-    out += (h * static_cast<double>(tau * w)) * F_.col(j);
+    for (int q = n_; q >= 1; --q) w = (w + L[q]) * tau;
+    out += (h * static_cast<double>(w)) * F_.col(j);
   }
 }
 

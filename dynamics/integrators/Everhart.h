@@ -40,6 +40,7 @@ private:
   bool havePrevious_ = false;
   std::vector<double> c_;
   std::vector<long double> cl_, gaussNodes_, gaussWeights_;
+  const std::vector<std::vector<long double>>* integrated_ = nullptr; // shared tables, see Everhart.cpp
   Eigen::MatrixXd A_, extrapolate_; // A(i, j) = int_0^{c_i} l_j; extrapolate(l, j) = l_l(1 + c_j)
   Eigen::VectorXd b_;
   Eigen::MatrixXd F_, Fnew_;       // right-hand side at the nodes (dim x n)

@@ -31,12 +31,10 @@ void PoincareTask::edit(RunSpec spec, SectionSettings settings) {
   const double t = last_ ? last_->time : map_->integrator().time();
   std::unique_ptr<Model> model = spec.makeModel(); // may throw InputError: nothing changes then
   Eigen::VectorXd x0 = from;
-  if (last_ && !model->isMap()) {
-    try { // the same point of the map on the new level of the integrals
-      x0 = model->stateFromMap(last_->coordinates, {.sectionValue = settings.value, .root = last_->sheet}, "edit");
-    } catch (const InputError&) {
-      x0 = from; // no such state any more: go on from the old one
-    }
+  if (last_ && !model->isMap() && !model->info().mapCoordinates.empty()) {
+    // the same point of the map on the new level of the integrals (InputError when it has no state there)
+    x0 = model->stateFromMap(last_->coordinates, {.sectionValue = settings.value, .root = std::max(1, last_->sheet)},
+                             "the last map point");
   }
   spec_ = std::move(spec);
   settings_ = std::move(settings);

@@ -16,7 +16,8 @@ public:
   bool run(const ToolControl& control) override;
   void reset() override;
 
-  /// Only while the job does not run (Job::edit).
+  /// Only while the job does not run (Job::edit). Throws InputError, changing nothing, when the last point has no
+  /// state under the new parameters (it lies outside the new region of allowed motion).
   void edit(RunSpec spec, SectionSettings settings);
   const RunSpec& spec() const { return spec_; }
   const SectionSettings& settings() const { return settings_; }

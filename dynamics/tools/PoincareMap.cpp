@@ -89,7 +89,7 @@ std::optional<MapPoint> PoincareMap::next(const ToolControl& control) {
     }
     ++crossings_;
     if (crossings_ % s_.order != 0) continue;
-    const int sheet = model_.sheetOf(work_, spec);
+    const int sheet = s_.manySheeted ? model_.sheetOf(work_, spec) : 0;
     if (s_.manySheeted && sheet != s_.root) continue;
     ++points_;
     last_ = work_;

@@ -30,7 +30,7 @@ struct SectionSettings {
 struct MapPoint {
   std::vector<double> coordinates;
   double time = 0;
-  int sheet = 1;
+  int sheet = 0; ///< the sheet (root of the completion) in many-sheeted mode; 0: not determined (it can be costly)
 };
 
 class PoincareMap {

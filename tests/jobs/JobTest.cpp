@@ -1,5 +1,6 @@
 // Jobs: start, stop promptly, continue, edit and continue, restart, delete, the tree; and a random stress of many
 // jobs for ThreadSanitizer (run under the tsan preset: ctest --preset tsan).
+#include "dynamics/core/Errors.h"
 #include "dynamics/core/ModelRegistry.h"
 #include "dynamics/jobs/JobTree.h"
 #include "dynamics/jobs/LyapunovTask.h"
@@ -66,7 +67,7 @@ TEST(Job, EditTheEnergyAndContinueGivesPointsAtTheNewEnergy) {
   job.edit([](Task& t) {
     auto& p = static_cast<PoincareTask&>(t);
     RunSpec s = p.spec();
-    s.modelParameters.set("energy", 0.1);
+    s.modelParameters.set("energy", 0.15); // a larger region: the last point has a state there
     p.edit(s, p.settings());
   });
   const long before = poincare->points().total();
@@ -77,7 +78,16 @@ TEST(Job, EditTheEnergyAndContinueGivesPointsAtTheNewEnergy) {
   job.stop();
   const auto model = poincare->spec().makeModel();
   const Eigen::VectorXd x = poincare->lastState();
-  EXPECT_NEAR(model->integrals(x.data())[0], 0.1, 1e-10) << "the trajectory goes on at the new energy";
+  EXPECT_NEAR(model->integrals(x.data())[0], 0.15, 1e-10) << "the trajectory goes on at the new energy";
+  // an energy at which the last point has no state: the edit is refused and nothing changes
+  EXPECT_THROW(job.edit([](Task& t) {
+    auto& p = static_cast<PoincareTask&>(t);
+    RunSpec s = p.spec();
+    s.modelParameters.set("energy", 1e-4);
+    p.edit(s, p.settings());
+  }),
+               InputError);
+  EXPECT_EQ(poincare->spec().modelParameters["energy"], 0.15);
 }
 
 TEST(Job, RestartBeginsAgainAndFinishedJobsReportIt) {
@@ -150,7 +160,11 @@ TEST(JobTree, StressManyJobsInRandomOrder) {
         auto& p = static_cast<PoincareTask&>(t);
         RunSpec s = p.spec();
         s.modelParameters.set("energy", 0.1 + 0.02 * (rng() % 3));
-        p.edit(s, p.settings());
+        try {
+          p.edit(s, p.settings());
+        } catch (const InputError&) {
+          // the last point lies outside the new region: refused, as it should be
+        }
       });
       break;
     case 5: static_cast<PoincareTask&>(j.task()).points().take(sink); break;
