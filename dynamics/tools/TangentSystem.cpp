@@ -27,11 +27,18 @@ TangentSystem::TangentSystem(const Model& base, int vectors)
 void TangentSystem::rhs(const double* x, double* dx) const {
   base_.rhs(x, dx);
   // the core block of the Jacobian (the core evolves on its own, so it is all that tangent vectors need)
-  Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> J(J_.data(), m_, m_);
-  base_.coreJacobian(x, J_.data());
-  const Eigen::Map<const Eigen::MatrixXd> V(x + n_, m_, k_);
-  Eigen::Map<Eigen::MatrixXd> dV(dx + n_, m_, k_);
-  dV.noalias() = J * V;
+  base_.coreJacobian(x, J_.data()); // row-major m x m
+  // dV = J V by plain loops: the sizes are tiny and a general matrix product costs more in dispatch than in work
+  const double* J = J_.data();
+  for (int c = 0; c < k_; ++c) {
+    const double* v = x + n_ + c * m_;
+    double* dv = dx + n_ + c * m_;
+    for (int i = 0; i < m_; ++i) {
+      double sum = 0;
+      for (int l = 0; l < m_; ++l) sum += J[i * m_ + l] * v[l];
+      dv[i] = sum;
+    }
+  }
 }
 
 void TangentSystem::jacobian(const double*, double*) const {
