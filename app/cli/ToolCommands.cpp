@@ -46,6 +46,13 @@ private:
   FILE* out_ = stdout;
 };
 
+void printPeaks(const std::string& function, const SpectrumResult& r) {
+  nlohmann::json peaks = nlohmann::json::array();
+  for (const auto& p : r.peaks) peaks.push_back({{"frequency", p.frequency}, {"amplitude", p.amplitude}});
+  fmt::print("{}\n",
+             nlohmann::json{{"function", function}, {"peaks", peaks}, {"step", r.step}, {"samples", r.samples}}.dump());
+}
+
 ToolControl cliControl(Progress& progress) {
   ToolControl c;
   c.stopRequested = [] { return interrupted(); };
@@ -152,10 +159,7 @@ Command addSpectrumCommand(CLI::App& app) {
                                                      scene.model->isMap() || scene.integratorEntry->fixedStep, s,
                                                      cliControl(progress));
             if (o->output.empty() && o->json) {
-              nlohmann::json peaks = nlohmann::json::array();
-              for (const auto& p : r.peaks) peaks.push_back({{"frequency", p.frequency}, {"amplitude", p.amplitude}});
-              fmt::print("{}\n", nlohmann::json{{"function", s.function}, {"peaks", peaks}, {"step", r.step},
-                                               {"samples", r.samples}}.dump());
+              printPeaks(s.function, r);
               return interrupted() ? 130 : 0;
             }
             std::fprintf(out.get(), "frequency,amplitude\n");
@@ -163,10 +167,7 @@ Command addSpectrumCommand(CLI::App& app) {
               std::fprintf(out.get(), "%.17g,%.17g\n", r.frequency[k], r.amplitude[k]);
             out.commit();
             if (o->json) {
-              nlohmann::json peaks = nlohmann::json::array();
-              for (const auto& p : r.peaks) peaks.push_back({{"frequency", p.frequency}, {"amplitude", p.amplitude}});
-              fmt::print("{}\n", nlohmann::json{{"function", s.function}, {"peaks", peaks}, {"step", r.step},
-                                               {"samples", r.samples}}.dump());
+              printPeaks(s.function, r);
             }
             return interrupted() ? 130 : 0;
           }};

@@ -3,6 +3,7 @@
 #include "dynamics/core/Errors.h"
 #include "dynamics/kinematics/AndoyerDeprit.h"
 #include "dynamics/kinematics/RootFinding.h"
+#include "dynamics/models/BodyState.h"
 
 #include <cmath>
 #include <numbers>
@@ -152,11 +153,8 @@ Eigen::VectorXd BallOnEllipsoid::stateFrom(const Eigen::Vector3d& M, const Eigen
 
 Eigen::VectorXd BallOnEllipsoid::stateFromNamed(const std::map<std::string, double>& named,
                                                 const std::string& context) const {
-  for (const char* n : {"M1", "M2", "M3", "gamma1", "gamma2", "gamma3"})
-    if (!named.count(n)) throw InputError(context + ": missing state component '" + n + "'");
-  const Eigen::Vector3d g(named.at("gamma1"), named.at("gamma2"), named.at("gamma3"));
-  if (!(g.norm() > 1e-12)) throw InputError(context + ".gamma1: gamma must not be zero");
-  Eigen::VectorXd s = stateFrom(Eigen::Vector3d(named.at("M1"), named.at("M2"), named.at("M3")), g);
+  const auto [M, g] = body_state::momentumAndVertical(named, context);
+  Eigen::VectorXd s = stateFrom(M, g);
   assignNamed(named, context, s);
   s.segment<3>(3).normalize();
   s.segment<4>(6).normalize();

@@ -1,5 +1,6 @@
 #include "dynamics/models/BodyState.h"
 
+#include "dynamics/core/Errors.h"
 #include "dynamics/kinematics/AndoyerDeprit.h"
 
 #include <algorithm>
@@ -21,6 +22,15 @@ Eigen::VectorXd fromMomentumAndVertical(const Eigen::Vector3d& M, const Eigen::V
   const Eigen::Vector3d a = (seed - seed.dot(g) * g).normalized(), b = g.cross(a);
   x << M, g, a, b, 0, 0, 0, 0;
   return x;
+}
+
+std::pair<Eigen::Vector3d, Eigen::Vector3d> momentumAndVertical(const std::map<std::string, double>& named,
+                                                                const std::string& context) {
+  for (const char* n : {"M1", "M2", "M3", "gamma1", "gamma2", "gamma3"})
+    if (!named.count(n)) throw InputError(context + ": missing state component '" + n + "'");
+  const Eigen::Vector3d g(named.at("gamma1"), named.at("gamma2"), named.at("gamma3"));
+  if (!(g.norm() > 1e-12)) throw InputError(context + ".gamma1: gamma must not be zero");
+  return {Eigen::Vector3d(named.at("M1"), named.at("M2"), named.at("M3")), g};
 }
 
 Eigen::Matrix3d rotation(const double* x) {

@@ -5,6 +5,7 @@
 
 #include <Eigen/Dense>
 #include <functional>
+#include <map>
 
 namespace rv::body_state {
 
@@ -17,6 +18,10 @@ std::vector<std::string> names();
 /// A state with M and the unit vertical gamma (normalised), alpha and beta completing a right-handed fixed frame
 /// (alpha x beta = gamma), the body at the origin of the plane, traces empty.
 Eigen::VectorXd fromMomentumAndVertical(const Eigen::Vector3d& M, const Eigen::Vector3d& gamma);
+
+/// M1..M3 and gamma1..gamma3 from named values; InputError naming `context` when one is missing or gamma is zero.
+std::pair<Eigen::Vector3d, Eigen::Vector3d> momentumAndVertical(const std::map<std::string, double>& named,
+                                                                const std::string& context);
 
 /// The rotation body -> world: rows alpha, beta, gamma.
 Eigen::Matrix3d rotation(const double* x);

@@ -3,6 +3,7 @@
 #include "dynamics/core/Errors.h"
 #include "dynamics/kinematics/AndoyerDeprit.h"
 #include "dynamics/kinematics/RootFinding.h"
+#include "dynamics/models/BodyParameters.h"
 #include "dynamics/models/BodyState.h"
 
 #include <cmath>
@@ -45,17 +46,7 @@ const ModelInfo& ChaplyginBall::staticInfo() {
 }
 
 ChaplyginBall::ChaplyginBall(const ParameterValues& p) : ModelWithField(staticInfo(), p) {
-  const double I[3] = {p["I1"], p["I2"], p["I3"]};
-  for (int i = 0; i < 3; ++i)
-    if (!(I[i] > 0)) throw InputError("I" + std::to_string(i + 1) + ": a moment of inertia must be positive");
-  for (int i = 0; i < 3; ++i)
-    if (I[i] > I[(i + 1) % 3] + I[(i + 2) % 3]) {
-      std::ostringstream os;
-      os << "I" << i + 1 << " = " << I[i] << " exceeds I" << (i + 1) % 3 + 1 << " + I" << (i + 2) % 3 + 1
-         << ": moments of inertia of a body satisfy the triangle inequality";
-      throw InputError(os.str());
-    }
-  if (!(p["m"] > 0)) throw InputError("m: the mass must be positive");
+  const Eigen::Vector3d I = rigid_body::principalMoments(p); // positive, triangle inequality, m > 0
   if (!(p["R"] > 0)) throw InputError("R: the radius must be positive");
   R_ = p["R"];
   D_ = p["m"] * R_ * R_;
@@ -94,12 +85,8 @@ std::optional<BodyPose> ChaplyginBall::pose(const double* x) const {
 
 Eigen::VectorXd ChaplyginBall::stateFromNamed(const std::map<std::string, double>& named,
                                               const std::string& context) const {
-  for (const char* n : {"M1", "M2", "M3", "gamma1", "gamma2", "gamma3"})
-    if (!named.count(n)) throw InputError(context + ": missing state component '" + n + "'");
-  const Eigen::Vector3d g(named.at("gamma1"), named.at("gamma2"), named.at("gamma3"));
-  if (!(g.norm() > 1e-12)) throw InputError(context + ".gamma1: gamma must not be zero");
-  Eigen::VectorXd x = body_state::fromMomentumAndVertical(
-      Eigen::Vector3d(named.at("M1"), named.at("M2"), named.at("M3")), g);
+  const auto [M, g] = body_state::momentumAndVertical(named, context);
+  Eigen::VectorXd x = body_state::fromMomentumAndVertical(M, g);
   assignNamed(named, context, x); // explicit alpha, beta, x, y, trace lengths override the derived ones
   x.segment<3>(3).normalize();
   return x;

@@ -9,6 +9,7 @@
 // all in the body frame; X, Y (centre of mass on the plane); s_plane, s_body (trace lengths).
 #pragma once
 #include "dynamics/core/ModelWithField.h"
+#include "dynamics/models/BodyParameters.h"
 
 #include <Eigen/Dense>
 
@@ -21,17 +22,6 @@ struct RigidBodyConstants {
   Eigen::Matrix3d field = Eigen::Matrix3d::Zero(); ///< B of U = (gamma, B gamma) / 2
 };
 
-/// Builds the common parameter declarations and checks.
-namespace rigid_body {
-/// energy, I1..I3, m, g (in this order).
-std::vector<ParameterSpec> massParameters(double I1, double I2, double I3);
-/// B11 B12 B13 B22 B23 B33.
-std::vector<ParameterSpec> fieldParameters();
-/// Checks I > 0 with the triangle inequality, m > 0; returns diag(I1, I2, I3).
-Eigen::Vector3d principalMoments(const ParameterValues& p);
-/// The symmetric B from B11..B33; InputError when it has a negative eigenvalue.
-Eigen::Matrix3d fieldMatrix(const ParameterValues& p);
-} // namespace rigid_body
 
 /// The equations, generic in the surface (Derived provides contact<S>(gamma) and contactRate<S>(gamma, dgamma)).
 template <class Derived> class RigidBodyOnPlane : public ModelWithField<Derived, 16, 6> {

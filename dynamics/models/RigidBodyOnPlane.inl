@@ -31,12 +31,9 @@ Eigen::VectorXd RigidBodyOnPlane<Derived>::stateFrom(const Eigen::Vector3d& M, c
 template <class Derived>
 Eigen::VectorXd RigidBodyOnPlane<Derived>::namedState(const std::map<std::string, double>& named,
                                                       const std::string& context) const {
-  for (const char* n : {"M1", "M2", "M3", "gamma1", "gamma2", "gamma3"})
-    if (!named.count(n)) throw InputError(context + ": missing state component '" + n + "'");
-  const Eigen::Vector3d g(named.at("gamma1"), named.at("gamma2"), named.at("gamma3"));
-  if (!(g.norm() > 1e-12)) throw InputError(context + ".gamma1: gamma must not be zero");
+  const auto [M, g] = body_state::momentumAndVertical(named, context);
   if (!self().touches(g.normalized())) throw InputError(context + ": the body cannot touch the plane with this gamma");
-  Eigen::VectorXd x = stateFrom(Eigen::Vector3d(named.at("M1"), named.at("M2"), named.at("M3")), g);
+  Eigen::VectorXd x = stateFrom(M, g);
   this->assignNamed(named, context, x);
   x.template segment<3>(3).normalize();
   return x;

@@ -1,6 +1,6 @@
-#include "dynamics/models/RigidBodyOnPlane.h"
+#include "dynamics/models/BodyParameters.h"
 
-#include "dynamics/models/BodyState.h"
+#include "dynamics/core/Errors.h"
 
 #include <Eigen/Eigenvalues>
 #include <sstream>
