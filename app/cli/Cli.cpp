@@ -36,7 +36,7 @@ int runCli(int argc, char** argv, const GuiLauncher& gui) {
   app.require_subcommand(0, 1);
   const std::vector<Command> commands{addListCommand(app),     addDescribeCommand(app), addIntegrateCommand(app),
                                       addPoincareCommand(app), addLyapunovCommand(app), addSpectrumCommand(app),
-                                      addRenderCommand(app),   addVideoCommand(app)};
+                                      addRenderCommand(app),   addVideoCommand(app),    addChartCommand(app)};
   GuiOptions guiOptions;
   if (gui) {
     auto* cmd = app.add_subcommand("gui", "open the GUI on a scene (the default with no arguments)");

@@ -33,6 +33,7 @@ Command addDescribeCommand(CLI::App& app);
 Command addIntegrateCommand(CLI::App& app);
 Command addRenderCommand(CLI::App& app);
 Command addVideoCommand(CLI::App& app);
+Command addChartCommand(CLI::App& app);
 Command addPoincareCommand(CLI::App& app);
 Command addLyapunovCommand(CLI::App& app);
 Command addSpectrumCommand(CLI::App& app);

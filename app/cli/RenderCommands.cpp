@@ -3,8 +3,10 @@
 #include "app/cli/Progress.h"
 #include "dynamics/core/Errors.h"
 #include "dynamics/io/AtomicFile.h"
+#include "dynamics/tools/PoincareMap.h"
 #include "render/Snapshot.h"
 #include "render/VisualScene.h"
+#include "render/charts/PoincareChart.h"
 #include "render/context/HeadlessContext.h"
 #include "render/video/VideoExport.h"
 
@@ -20,6 +22,11 @@ struct RenderOptions {
   SceneArgs scene;
   std::string output, size = "1280x720";
   double time = 10;
+};
+struct ChartOptions {
+  SceneArgs scene;
+  std::string view = "poincare", output, size = "800x800";
+  long points = 0;
 };
 struct VideoOptions {
   SceneArgs scene;
@@ -50,6 +57,46 @@ Command addRenderCommand(CLI::App& app) {
             writePng(ctx->window(), o->output, "-o");
             ctx->window()->RemoveRenderer(visual.renderer());
             return 0;
+          }};
+}
+
+Command addChartCommand(CLI::App& app) {
+  auto* cmd = app.add_subcommand("chart", "draw a view of a scene's tool output as a chart into a PNG");
+  auto o = std::make_shared<ChartOptions>();
+  addSceneArgs(cmd, o->scene);
+  cmd->add_option("--view", o->view, "poincare (multipliers, bifurcation: to come)")->capture_default_str();
+  cmd->add_option("-o,--output", o->output, "PNG file")->required();
+  cmd->add_option("--size", o->size, "picture size WIDTHxHEIGHT")->capture_default_str();
+  cmd->add_option("--points", o->points, "Poincare points to compute (default: the scene's poincare.points)");
+  return {cmd, [o] {
+            const auto [w, h] = parseSize(o->size);
+            if (o->view != "poincare")
+              throw InputError("--view " + o->view + ": not available yet (views: poincare)");
+            const Scene scene = o->scene.load();
+            checkWritable(o->output, "-o");
+            SectionSettings s = scene.poincare;
+            if (o->points > 0) s.maxPoints = o->points;
+            if (s.maxPoints <= 0) s.maxPoints = 2000;
+            auto integ = scene.runSpec().makeIntegrator(*scene.model);
+            integ->start(*scene.model, 0, scene.initialState, s.backward ? -1 : +1);
+            PoincareMap map(*scene.model, std::move(integ), s);
+            std::vector<double> x, y;
+            Progress progress("poincare");
+            ToolControl control;
+            control.stopRequested = [] { return interrupted(); };
+            control.progress = [&](double f) { progress.update(f); };
+            while (auto p = map.next(control)) {
+              x.push_back(p->coordinates.at(0));
+              y.push_back(p->coordinates.size() > 1 ? p->coordinates[1] : p->time);
+            }
+            const auto& names = map.coordinateNames();
+            PoincareChart chart(names.at(0), names.size() > 1 ? names[1] : "t");
+            chart.addSeries(x, y, seriesColor(0));
+            chart.select(0);
+            auto ctx = createHeadlessContext(w, h);
+            chart.attach(ctx->window());
+            writePng(ctx->window(), o->output, "-o");
+            return interrupted() ? 130 : 0;
           }};
 }
 

@@ -187,6 +187,18 @@ class Cli(unittest.TestCase):
         self.assertBadInput(run("spectrum", hh, "--function", "nope"), "nope")
         self.assertBadInput(run("poincare", hh, "--set", "poincare.section=nope"), "poincare.section")
 
+    def test_poincare_chart(self):
+        out = self.path("c.png")
+        r = run("chart", SCENE, "--view", "poincare", "-o", out, "--points", "300", "--size", "400x400")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        size, px = pixels(out)
+        self.assertEqual(size, (400, 400))
+        # white background, axes, blue points: mostly white but with a real number of blue-ish pixels
+        blue = sum(1 for p in px if p[2] > 150 and p[0] < 100)
+        self.assertGreater(blue, 300)
+        self.assertBadInput(run("chart", SCENE, "--view", "nope", "-o", self.path("n.png")), "--view nope")
+        self.assertFalse(os.path.exists(self.path("n.png")))
+
     def test_gui_without_a_display_says_so(self):
         r = run("gui", SCENE, env={"WAYLAND_DISPLAY": ""})
         if "WAYLAND_DISPLAY" in os.environ:

@@ -1,0 +1,38 @@
+// PoincareChart.h -- the Poincare map as a VTK chart (manual §2.4.1): one coloured point series per trajectory,
+// the selected one drawn larger, axes named after the map coordinates. Rendered in any render window (on screen
+// through QtVtkWidget, headless through a HeadlessContext).
+#pragma once
+#include "render/ViewOptions.h"
+
+#include <string>
+#include <vector>
+#include <vtkSmartPointer.h>
+
+class vtkChartXY;
+class vtkContextView;
+class vtkRenderWindow;
+
+namespace rv {
+
+class PoincareChart {
+public:
+  PoincareChart(std::string xTitle, std::string yTitle);
+  ~PoincareChart();
+  /// Adds a trajectory's points (x[i], y[i]); returns its index.
+  int addSeries(const std::vector<double>& x, const std::vector<double>& y, const Rgb& color);
+  /// Draws series `index` emphasised (-1: none).
+  void select(int index);
+  /// Draws into `window` (the chart's view takes it over).
+  void attach(vtkRenderWindow* window);
+  vtkChartXY* chart() const;
+
+private:
+  vtkSmartPointer<vtkContextView> view_;
+  vtkSmartPointer<vtkChartXY> chart_;
+  int selected_ = -1;
+};
+
+/// Distinct colours for successive trajectories.
+Rgb seriesColor(int index);
+
+} // namespace rv
