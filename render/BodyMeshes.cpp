@@ -14,7 +14,8 @@ namespace rv {
 
 namespace {
 // a (nu x nv) grid of points p(u, v), u the longitude in [0, 1] (seam duplicated), v in [0, 1]
-template <class F> vtkSmartPointer<vtkPolyData> grid(int nu, int nv, F point, double repeatU = 1, double repeatV = 1) {
+template <class F>
+vtkSmartPointer<vtkPolyData> grid(int nu, int nv, F point, double repeatU = 1, double repeatV = 1) {
   vtkNew<vtkPoints> pts;
   vtkNew<vtkFloatArray> tc;
   tc->SetNumberOfComponents(2);
@@ -49,15 +50,19 @@ template <class F> vtkSmartPointer<vtkPolyData> grid(int nu, int nv, F point, do
 } // namespace
 
 vtkSmartPointer<vtkPolyData> makeSurfaceMesh(const SupportSurface& surface) {
-  return grid(128, 64, [&](double u, double v) { return surface.point(u, v); }, 8, 4);
+  return grid(
+      128, 64, [&](double u, double v) { return surface.point(u, v); }, 8, 4);
 }
 
 double bodySize(const BodyGeometry& g) {
   switch (g.shape) {
   case BodyShape::Ball:
-  case BodyShape::Ellipsoid: return g.semiAxes.maxCoeff();
-  case BodyShape::Paraboloid: return std::max({std::sqrt(2 * g.p * g.height), std::sqrt(2 * g.q * g.height), g.height});
-  case BodyShape::None: break;
+  case BodyShape::Ellipsoid:
+    return g.semiAxes.maxCoeff();
+  case BodyShape::Paraboloid:
+    return std::max({std::sqrt(2 * g.p * g.height), std::sqrt(2 * g.q * g.height), g.height});
+  case BodyShape::None:
+    break;
   }
   return 1.0;
 }

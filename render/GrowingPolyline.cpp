@@ -24,7 +24,9 @@ GrowingPolyline::GrowingPolyline(double minSpacing, long maxPoints, bool asPoint
   actor_->GetProperty()->SetDiffuse(0.5);
 }
 
-void GrowingPolyline::attach(vtkRenderer* renderer) { renderer->AddActor(actor_); }
+void GrowingPolyline::attach(vtkRenderer* renderer) {
+  renderer->AddActor(actor_);
+}
 
 void GrowingPolyline::setAppearance(const Rgb& color, double lineWidth, double opacity, bool visible) {
   auto* p = actor_->GetProperty();
@@ -43,9 +45,13 @@ void GrowingPolyline::clear() {
   data_->Modified();
 }
 
-long GrowingPolyline::size() const { return data_->GetNumberOfPoints(); }
+long GrowingPolyline::size() const {
+  return data_->GetNumberOfPoints();
+}
 
-vtkActor* GrowingPolyline::actor() const { return actor_; }
+vtkActor* GrowingPolyline::actor() const {
+  return actor_;
+}
 
 void GrowingPolyline::append(double x, double y, double z) {
   vtkPoints* pts = data_->GetPoints();
@@ -63,7 +69,8 @@ void GrowingPolyline::append(double x, double y, double z) {
     // the newest point is provisional until it is far enough from the one before it: move it
     double prev[3];
     pts->GetPoint(n - (lastIsProvisional_ ? 2 : 1), prev);
-    const double d2 = (x - prev[0]) * (x - prev[0]) + (y - prev[1]) * (y - prev[1]) + (z - prev[2]) * (z - prev[2]);
+    const double d2 =
+        (x - prev[0]) * (x - prev[0]) + (y - prev[1]) * (y - prev[1]) + (z - prev[2]) * (z - prev[2]);
     if (lastIsProvisional_) {
       pts->SetPoint(n - 1, x, y, z);
       lastIsProvisional_ = d2 < minSpacing2_;

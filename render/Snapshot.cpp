@@ -66,7 +66,8 @@ void writePng(const Image& image, const std::string& path) {
   auto* dst = static_cast<unsigned char*>(img->GetScalarPointer());
   for (int y = 0; y < image.height; ++y)
     std::memcpy(dst + std::size_t(y) * image.width * 3,
-                image.rgb.data() + std::size_t(image.height - 1 - y) * image.width * 3, std::size_t(image.width) * 3);
+                image.rgb.data() + std::size_t(image.height - 1 - y) * image.width * 3,
+                std::size_t(image.width) * 3);
   vtkNew<vtkPNGWriter> png;
   png->SetInputData(img);
   png->SetFileName(path.c_str());

@@ -19,8 +19,8 @@ enum class SurfaceStyle { Fill, Grid, Both };
 /// Appearance of one visual object.
 struct ObjectOptions {
   bool enabled = true;
-  std::optional<Rgb> color;      ///< nothing: the object's default
-  double opacity = 1.0;          ///< 1 - transparency
+  std::optional<Rgb> color; ///< nothing: the object's default
+  double opacity = 1.0;     ///< 1 - transparency
   SurfaceStyle style = SurfaceStyle::Fill;
   std::optional<Rgb> traceColor; ///< for objects that leave a trace
   double lineWidth = 3.0;        ///< traces, in pixels
@@ -28,18 +28,18 @@ struct ObjectOptions {
 
 /// Camera placement relative to the body (or to the scene's centre when there is none).
 struct CameraOptions {
-  bool follow = true;     ///< keep the body in view as it rolls
-  double distance = 0;    ///< 0: frame the body automatically
-  double elevation = 30;  ///< degrees above the plane
-  double azimuth = -60;   ///< degrees around the vertical
+  bool follow = true;    ///< keep the body in view as it rolls
+  double distance = 0;   ///< 0: frame the body automatically
+  double elevation = 30; ///< degrees above the plane
+  double azimuth = -60;  ///< degrees around the vertical
 };
 
 /// Everything a visual scene needs besides the model.
 struct ViewOptions {
   std::map<std::string, ObjectOptions> objects; ///< by object name: "ball", "plane", "trace", ...
   CameraOptions camera;
-  bool overlay = true;        ///< time and energy-error text
-  double speed = 1.0;         ///< simulation seconds per wall-clock (or video) second
+  bool overlay = true; ///< time and energy-error text
+  double speed = 1.0;  ///< simulation seconds per wall-clock (or video) second
   long maxTracePoints = 1000000;
   const ObjectOptions& object(const std::string& name) const;
 };

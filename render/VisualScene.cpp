@@ -2,10 +2,10 @@
 
 #include "render/BodyMeshes.h"
 #include "render/objects/BodyObject.h"
+#include "render/objects/ContactTraceObject.h"
 #include "render/objects/PhaseCurveObject.h"
 #include "render/objects/PlaneObject.h"
 #include "render/objects/SurfaceObject.h"
-#include "render/objects/ContactTraceObject.h"
 
 #include <algorithm>
 #include <cmath>
@@ -62,7 +62,9 @@ VisualScene::VisualScene(const Model& model, const ViewOptions& options, const E
 
 VisualScene::~VisualScene() = default;
 
-vtkRenderer* VisualScene::renderer() const { return renderer_; }
+vtkRenderer* VisualScene::renderer() const {
+  return renderer_;
+}
 
 VisualObject& VisualScene::add(std::unique_ptr<VisualObject> object) {
   for (auto& o : objects_)
@@ -88,13 +90,15 @@ void VisualScene::setOptions(const std::string& name, const ObjectOptions& optio
 void VisualScene::advance(double t, const Eigen::VectorXd& x) {
   const auto pose = model_.pose(x.data());
   const FrameState s{t, x.data(), model_, pose};
-  for (auto& o : objects_) o->advance(s);
+  for (auto& o : objects_)
+    o->advance(s);
 }
 
 void VisualScene::show(double t, const Eigen::VectorXd& x) {
   const auto pose = model_.pose(x.data());
   const FrameState s{t, x.data(), model_, pose};
-  for (auto& o : objects_) o->show(s);
+  for (auto& o : objects_)
+    o->show(s);
   const Eigen::Vector3d focus = pose ? pose->center : Eigen::Vector3d::Zero();
   if (options_.camera.follow && pose) {
     // carry the camera along with the body, keeping whatever view the user has turned to
@@ -123,11 +127,14 @@ void VisualScene::show(double t, const Eigen::VectorXd& x) {
 }
 
 void VisualScene::clear() {
-  for (auto& o : objects_) o->clear();
+  for (auto& o : objects_)
+    o->clear();
   haveEnergy0_ = false;
 }
 
-void VisualScene::resetCamera() { placeCamera(); }
+void VisualScene::resetCamera() {
+  placeCamera();
+}
 
 void VisualScene::placeCamera() {
   vtkCamera* cam = renderer_->GetActiveCamera();
@@ -155,8 +162,7 @@ void VisualScene::placeCamera() {
     double b[6];
     renderer_->ComputeVisiblePropBounds(b);
     focus = Eigen::Vector3d((b[0] + b[1]) / 2, (b[2] + b[3]) / 2, (b[4] + b[5]) / 2);
-    if (options_.camera.distance <= 0)
-      dist = 1.9 * std::max({b[1] - b[0], b[3] - b[2], b[5] - b[4]});
+    if (options_.camera.distance <= 0) dist = 1.9 * std::max({b[1] - b[0], b[3] - b[2], b[5] - b[4]});
   }
   const Eigen::Vector3d eye = focus + dist * dir;
   cam->SetFocalPoint(focus[0], focus[1], focus[2]);

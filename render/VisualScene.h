@@ -43,9 +43,9 @@ private:
   void placeCamera();
   const Model& model_;
   ViewOptions options_;
-  double scale_ = 1;               ///< size of the body (ball radius), or of the initial state
-  int energyIndex_ = -1;           ///< index of "E" among the integrals
-  double energy0_ = 0;             ///< energy at the start of the run
+  double scale_ = 1;     ///< size of the body (ball radius), or of the initial state
+  int energyIndex_ = -1; ///< index of "E" among the integrals
+  double energy0_ = 0;   ///< energy at the start of the run
   bool haveEnergy0_ = false;
   Eigen::Vector3d focus_ = Eigen::Vector3d::Zero();
   vtkSmartPointer<vtkRenderer> renderer_;

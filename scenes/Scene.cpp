@@ -1,6 +1,5 @@
 #include "scenes/Scene.h"
 
-
 namespace rv {
 
 std::unique_ptr<Integrator> Scene::startIntegrator() const {

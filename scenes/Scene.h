@@ -23,7 +23,7 @@ struct Scene {
   const IntegratorEntry* integratorEntry = nullptr;
   std::unique_ptr<ParameterValues> integratorParameters;
   Eigen::VectorXd initialState;
-  SectionSettings poincare; ///< "poincare": section, value, direction, points (maxPoints), ...
+  SectionSettings poincare;  ///< "poincare": section, value, direction, points (maxPoints), ...
   LyapunovSettings lyapunov; ///< "lyapunov"
   SpectrumSettings spectrum; ///< "spectrum"
   ViewOptions view;

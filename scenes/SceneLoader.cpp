@@ -3,11 +3,11 @@
 #include "dynamics/core/Errors.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <set>
-#include <cmath>
 #include <sstream>
 
 namespace rv {
@@ -47,10 +47,12 @@ bool boolean(const json& j, const Where& w) {
 void onlyKeys(const json& j, const Where& w, std::initializer_list<const char*> keys) {
   for (const auto& [k, v] : j.items()) {
     bool ok = false;
-    for (const char* known : keys) ok = ok || k == known;
+    for (const char* known : keys)
+      ok = ok || k == known;
     if (!ok) {
       std::string list;
-      for (const char* known : keys) list += std::string(" ") + known;
+      for (const char* known : keys)
+        list += std::string(" ") + known;
       (w / k).fail("unknown key (known:" + list + ")");
     }
   }
@@ -62,7 +64,8 @@ void readParameters(const json& j, const Where& w, ParameterValues& values, cons
     if (k == skip) continue;
     if (values.table().find(k) < 0) {
       std::string known;
-      for (const auto& s : values.table().specs()) known += " " + s.id;
+      for (const auto& s : values.table().specs())
+        known += " " + s.id;
       (w / k).fail("unknown parameter (known:" + known + ")");
     }
     try {
@@ -98,10 +101,14 @@ ObjectOptions readObject(const json& j, const Where& w) {
   }
   if (j.contains("style")) {
     const std::string s = text(j["style"], w / "style");
-    if (s == "fill") o.style = SurfaceStyle::Fill;
-    else if (s == "grid") o.style = SurfaceStyle::Grid;
-    else if (s == "both") o.style = SurfaceStyle::Both;
-    else (w / "style").fail("expected fill, grid or both");
+    if (s == "fill")
+      o.style = SurfaceStyle::Fill;
+    else if (s == "grid")
+      o.style = SurfaceStyle::Grid;
+    else if (s == "both")
+      o.style = SurfaceStyle::Both;
+    else
+      (w / "style").fail("expected fill, grid or both");
   }
   return o;
 }
@@ -112,7 +119,8 @@ ViewOptions readView(const json& j, const Where& w) {
   ViewOptions v;
   if (j.contains("objects")) {
     requireObject(j["objects"], w / "objects");
-    for (const auto& [name, o] : j["objects"].items()) v.objects[name] = readObject(o, w / "objects" / name);
+    for (const auto& [name, o] : j["objects"].items())
+      v.objects[name] = readObject(o, w / "objects" / name);
   }
   if (j.contains("camera")) {
     const Where wc = w / "camera";
@@ -144,24 +152,30 @@ double positive(const json& j, const Where& w) {
 
 long count(const json& j, const Where& w, long least = 1) {
   const double v = number(j, w);
-  if (!(v >= least && v == std::floor(v) && v < 1e15)) w.fail("must be a whole number >= " + std::to_string(least));
+  if (!(v >= least && v == std::floor(v) && v < 1e15))
+    w.fail("must be a whole number >= " + std::to_string(least));
   return static_cast<long>(v);
 }
 
 SectionSettings readPoincare(const json& j, const Where& w) {
   requireObject(j, w);
-  onlyKeys(j, w, {"section", "value", "direction", "points", "accuracy", "integrate", "many_sheeted", "root", "order",
-                  "max_time"});
+  onlyKeys(j, w,
+           {"section", "value", "direction", "points", "accuracy", "integrate", "many_sheeted", "root",
+            "order", "max_time"});
   SectionSettings p;
   p.maxPoints = 2000;
   if (j.contains("section")) p.observable = text(j["section"], w / "section");
   if (j.contains("value")) p.value = number(j["value"], w / "value");
   if (j.contains("direction")) {
     const std::string d = text(j["direction"], w / "direction");
-    if (d == "positive") p.direction = +1;
-    else if (d == "negative") p.direction = -1;
-    else if (d == "both") p.checkDirection = false;
-    else (w / "direction").fail("expected positive, negative or both");
+    if (d == "positive")
+      p.direction = +1;
+    else if (d == "negative")
+      p.direction = -1;
+    else if (d == "both")
+      p.checkDirection = false;
+    else
+      (w / "direction").fail("expected positive, negative or both");
   }
   if (j.contains("points")) p.maxPoints = count(j["points"], w / "points");
   if (j.contains("accuracy")) p.accuracy = positive(j["accuracy"], w / "accuracy");
@@ -179,20 +193,26 @@ SectionSettings readPoincare(const json& j, const Where& w) {
 
 LyapunovSettings readLyapunov(const json& j, const Where& w) {
   requireObject(j, w);
-  onlyKeys(j, w, {"mode", "count", "interval", "perturbation", "max_perturbation", "estimate_every", "accuracy",
-                  "successes", "output_period", "renormalize", "time"});
+  onlyKeys(j, w,
+           {"mode", "count", "interval", "perturbation", "max_perturbation", "estimate_every", "accuracy",
+            "successes", "output_period", "renormalize", "time"});
   LyapunovSettings l;
   if (j.contains("mode")) {
     const std::string m = text(j["mode"], w / "mode");
-    if (m == "tangent") l.mode = LyapunovSettings::Mode::Tangent;
-    else if (m == "perturbed") l.mode = LyapunovSettings::Mode::Perturbed;
-    else (w / "mode").fail("expected tangent or perturbed");
+    if (m == "tangent")
+      l.mode = LyapunovSettings::Mode::Tangent;
+    else if (m == "perturbed")
+      l.mode = LyapunovSettings::Mode::Perturbed;
+    else
+      (w / "mode").fail("expected tangent or perturbed");
   }
   if (j.contains("count")) l.count = static_cast<int>(count(j["count"], w / "count"));
   if (j.contains("interval")) l.interval = positive(j["interval"], w / "interval");
   if (j.contains("perturbation")) l.perturbation = positive(j["perturbation"], w / "perturbation");
-  if (j.contains("max_perturbation")) l.maxPerturbation = positive(j["max_perturbation"], w / "max_perturbation");
-  if (j.contains("estimate_every")) l.estimateEvery = static_cast<int>(count(j["estimate_every"], w / "estimate_every"));
+  if (j.contains("max_perturbation"))
+    l.maxPerturbation = positive(j["max_perturbation"], w / "max_perturbation");
+  if (j.contains("estimate_every"))
+    l.estimateEvery = static_cast<int>(count(j["estimate_every"], w / "estimate_every"));
   if (j.contains("accuracy")) l.accuracy = positive(j["accuracy"], w / "accuracy");
   if (j.contains("successes")) l.successes = static_cast<int>(count(j["successes"], w / "successes", 0));
   if (j.contains("output_period")) l.outputPeriod = positive(j["output_period"], w / "output_period");
@@ -209,24 +229,28 @@ SpectrumSettings readSpectrum(const json& j, const Where& w) {
   if (j.contains("samples")) s.samples = count(j["samples"], w / "samples", 8);
   if (j.contains("max_frequency")) s.maxFrequency = positive(j["max_frequency"], w / "max_frequency");
   if (j.contains("peaks")) s.peaks = static_cast<int>(count(j["peaks"], w / "peaks", 0));
-  if (j.contains("min_peak_distance")) s.minPeakDistance = number(j["min_peak_distance"], w / "min_peak_distance");
+  if (j.contains("min_peak_distance"))
+    s.minPeakDistance = number(j["min_peak_distance"], w / "min_peak_distance");
   return s;
 }
 
-Eigen::VectorXd readInitial(const json& j, const Where& w, const Model& model, const SectionSettings& poincare) {
+Eigen::VectorXd readInitial(const json& j, const Where& w, const Model& model,
+                            const SectionSettings& poincare) {
   requireObject(j, w);
   onlyKeys(j, w, {"map", "root", "state"});
   if (j.contains("map") == j.contains("state")) w.fail("give exactly one of \"map\" or \"state\"");
   if (j.contains("state")) {
     const Where ws = w / "state";
     std::map<std::string, double> named;
-    for (const auto& [k, v] : requireObject(j["state"], ws).items()) named[k] = number(v, ws / k);
+    for (const auto& [k, v] : requireObject(j["state"], ws).items())
+      named[k] = number(v, ws / k);
     return model.stateFromNamed(named, ws.str());
   }
   const Where wm = w / "map";
   if (!j["map"].is_array()) wm.fail("expected an array of numbers");
   std::vector<double> point;
-  for (std::size_t i = 0; i < j["map"].size(); ++i) point.push_back(number(j["map"][i], wm / std::to_string(i)));
+  for (std::size_t i = 0; i < j["map"].size(); ++i)
+    point.push_back(number(j["map"][i], wm / std::to_string(i)));
   MapPointSpec spec{.sectionValue = poincare.value};
   // a map point lies on the section; an angle section's value is its level
   if (j.contains("root")) {
@@ -252,15 +276,16 @@ void applyOverrides(json& doc, const std::vector<SceneOverride>& overrides) {
       const ModelEntry& entry = ModelRegistry::builtin().get(doc["problem"].get<std::string>());
       if (entry.info->parameters.find(o.key) < 0) {
         std::string known;
-        for (const auto& s : entry.info->parameters.specs()) known += " " + s.id;
+        for (const auto& s : entry.info->parameters.specs())
+          known += " " + s.id;
         throw InputError(flag + ": unknown parameter of " + entry.info->id + " (known:" + known + ")");
       }
       if (!value.is_number()) throw InputError(flag + ": expected a number, got '" + o.value + "'");
       doc["parameters"][o.key] = value;
       continue;
     }
-    static const std::set<std::string> sections{"integrator", "initial", "poincare", "lyapunov", "spectrum", "view",
-                                                "parameters"};
+    static const std::set<std::string> sections{"integrator", "initial", "poincare",  "lyapunov",
+                                                "spectrum",   "view",    "parameters"};
     const std::string head = o.key.substr(0, o.key.find('.'));
     if (!sections.count(head)) throw InputError(flag + ": unknown scene field '" + head + "'");
     json* node = &doc;
@@ -281,7 +306,8 @@ void applyOverrides(json& doc, const std::vector<SceneOverride>& overrides) {
       }
       for (auto it = doc["integrator"].begin(); it != doc["integrator"].end();)
         if (it.key() != "method" && entry->parameters->find(it.key()) < 0 &&
-            std::none_of(overrides.begin(), overrides.end(), [&](const SceneOverride& x) { return x.key == "integrator." + it.key(); }))
+            std::none_of(overrides.begin(), overrides.end(),
+                         [&](const SceneOverride& x) { return x.key == "integrator." + it.key(); }))
           it = doc["integrator"].erase(it);
         else
           ++it;
@@ -301,8 +327,9 @@ Scene sceneFromJson(json doc, const std::string& source, const std::vector<Scene
   const Where root{source, ""};
   requireObject(doc, root);
   applyOverrides(doc, overrides);
-  onlyKeys(doc, root, {"problem", "parameters", "integrator", "initial", "poincare", "lyapunov", "spectrum", "view",
-                       "title", "description"});
+  onlyKeys(doc, root,
+           {"problem", "parameters", "integrator", "initial", "poincare", "lyapunov", "spectrum", "view",
+            "title", "description"});
   if (!doc.contains("problem")) root.fail("missing \"problem\"");
 
   Scene scene;
@@ -315,7 +342,8 @@ Scene sceneFromJson(json doc, const std::string& source, const std::vector<Scene
   }
 
   ParameterValues params(scene.modelEntry->info->parameters);
-  if (doc.contains("parameters")) readParameters(requireObject(doc["parameters"], root / "parameters"), root / "parameters", params);
+  if (doc.contains("parameters"))
+    readParameters(requireObject(doc["parameters"], root / "parameters"), root / "parameters", params);
   try {
     scene.model = scene.modelEntry->create(params);
   } catch (const InputError& e) {
@@ -342,8 +370,10 @@ Scene sceneFromJson(json doc, const std::string& source, const std::vector<Scene
   if (doc.contains("poincare")) scene.poincare = readPoincare(doc["poincare"], root / "poincare");
   if (doc.contains("lyapunov")) scene.lyapunov = readLyapunov(doc["lyapunov"], root / "lyapunov");
   if (doc.contains("spectrum")) scene.spectrum = readSpectrum(doc["spectrum"], root / "spectrum");
-  if (!scene.poincare.observable.empty() && !scene.model->isMap() && scene.model->findObservable(scene.poincare.observable) < 0)
-    (root / "poincare" / "section").fail("unknown observable '" + scene.poincare.observable + "' of " + problem);
+  if (!scene.poincare.observable.empty() && !scene.model->isMap() &&
+      scene.model->findObservable(scene.poincare.observable) < 0)
+    (root / "poincare" / "section")
+        .fail("unknown observable '" + scene.poincare.observable + "' of " + problem);
   if (!doc.contains("initial")) root.fail("missing \"initial\" (a map point or a state)");
   scene.initialState = readInitial(doc["initial"], root / "initial", *scene.model, scene.poincare);
   if (doc.contains("view")) scene.view = readView(doc["view"], root / "view");

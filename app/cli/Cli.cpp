@@ -10,7 +10,8 @@ namespace rv {
 
 Scene SceneArgs::load() const {
   std::vector<SceneOverride> overrides;
-  for (const auto& s : sets) overrides.push_back(parseOverride(s));
+  for (const auto& s : sets)
+    overrides.push_back(parseOverride(s));
   return loadScene(scene, overrides);
 }
 
@@ -34,9 +35,10 @@ std::pair<int, int> parseSize(const std::string& text) {
 int runCli(int argc, char** argv, const GuiLauncher& gui) {
   CLI::App app{"rollviz: bodies rolling without slipping, and the tools of nonlinear dynamics"};
   app.require_subcommand(0, 1);
-  const std::vector<Command> commands{addListCommand(app),     addDescribeCommand(app), addIntegrateCommand(app),
-                                      addPoincareCommand(app), addLyapunovCommand(app), addSpectrumCommand(app),
-                                      addRenderCommand(app),   addVideoCommand(app),    addChartCommand(app)};
+  const std::vector<Command> commands{
+      addListCommand(app),     addDescribeCommand(app), addIntegrateCommand(app),
+      addPoincareCommand(app), addLyapunovCommand(app), addSpectrumCommand(app),
+      addRenderCommand(app),   addVideoCommand(app),    addChartCommand(app)};
   GuiOptions guiOptions;
   if (gui) {
     auto* cmd = app.add_subcommand("gui", "open the GUI on a scene (the default with no arguments)");

@@ -6,8 +6,8 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <memory>
 #include <fmt/core.h>
+#include <memory>
 
 namespace rv {
 
@@ -31,53 +31,62 @@ Command addListCommand(CLI::App& app) {
       ->required()
       ->check(CLI::IsMember({"problems", "integrators", "scenes"}));
   return {cmd, [whatPtr] {
-    const std::string& what = *whatPtr;
-    if (what == "problems")
-      for (const auto& e : ModelRegistry::builtin().entries()) fmt::print("{}\n", e.info->id);
-    else if (what == "integrators")
-      for (const auto& e : IntegratorRegistry::builtin().entries()) fmt::print("{:<10} {}\n", e.id, e.title);
-    else {
-      std::vector<std::string> files;
-      for (const auto& f : std::filesystem::directory_iterator(scenesDirectory()))
-        if (f.path().extension() == ".json") files.push_back(f.path().string());
-      std::sort(files.begin(), files.end());
-      for (const auto& f : files) fmt::print("{}\n", f);
-    }
-    return 0;
-  }};
+            const std::string& what = *whatPtr;
+            if (what == "problems")
+              for (const auto& e : ModelRegistry::builtin().entries())
+                fmt::print("{}\n", e.info->id);
+            else if (what == "integrators")
+              for (const auto& e : IntegratorRegistry::builtin().entries())
+                fmt::print("{:<10} {}\n", e.id, e.title);
+            else {
+              std::vector<std::string> files;
+              for (const auto& f : std::filesystem::directory_iterator(scenesDirectory()))
+                if (f.path().extension() == ".json") files.push_back(f.path().string());
+              std::sort(files.begin(), files.end());
+              for (const auto& f : files)
+                fmt::print("{}\n", f);
+            }
+            return 0;
+          }};
 }
 
 Command addDescribeCommand(CLI::App& app) {
-  auto* cmd = app.add_subcommand("describe", "parameters, state variables, observables, integrals of a problem");
+  auto* cmd =
+      app.add_subcommand("describe", "parameters, state variables, observables, integrals of a problem");
   auto idPtr = std::make_shared<std::string>();
   cmd->add_option("problem", *idPtr, "problem id (rollviz list problems)")->required();
   return {cmd, [idPtr] {
-    const std::string& id = *idPtr;
-    const ModelEntry& entry = ModelRegistry::builtin().get(id);
-    const ModelInfo& info = *entry.info;
-    const auto model = entry.create(ParameterValues(info.parameters));
-    fmt::print("{}\n  {}\n  reference: {}\n\nparameters (id, default, range, meaning):\n", info.id, info.title,
-               info.reference);
-    printParameters(info.parameters);
-    fmt::print("\nstate ({} components; the first {} evolve on their own):\n ", info.stateNames.size(),
-               info.coreDimension);
-    for (const auto& n : info.stateNames) fmt::print(" {}", n);
-    fmt::print("\n\nfirst integrals:");
-    if (info.integralNames.empty()) fmt::print(" none");
-    for (const auto& n : info.integralNames) fmt::print(" {}", n);
-    fmt::print("\ninvariant measure: {}\n", model->hasInvariantMeasure() ? "yes (at the default parameters)" : "none known");
-    fmt::print("map coordinates for \"initial\": {{\"map\": [...]}}:");
-    if (info.mapCoordinates.empty()) fmt::print(" none (give \"state\")");
-    for (const auto& n : info.mapCoordinates) fmt::print(" {}", n);
-    fmt::print("\n\nobservables (for --columns):\n");
-    for (const auto& o : model->observables()) fmt::print("  {:<10} {}\n", o.id, o.description);
-    fmt::print("\nintegrators (scene \"integrator\" section, or --set integrator.ID=VALUE):\n");
-    for (const auto& e : IntegratorRegistry::builtin().entries()) {
-      fmt::print(" {}: {}\n", e.id, e.title);
-      printParameters(*e.parameters);
-    }
-    return 0;
-  }};
+            const std::string& id = *idPtr;
+            const ModelEntry& entry = ModelRegistry::builtin().get(id);
+            const ModelInfo& info = *entry.info;
+            const auto model = entry.create(ParameterValues(info.parameters));
+            fmt::print("{}\n  {}\n  reference: {}\n\nparameters (id, default, range, meaning):\n", info.id,
+                       info.title, info.reference);
+            printParameters(info.parameters);
+            fmt::print("\nstate ({} components; the first {} evolve on their own):\n ",
+                       info.stateNames.size(), info.coreDimension);
+            for (const auto& n : info.stateNames)
+              fmt::print(" {}", n);
+            fmt::print("\n\nfirst integrals:");
+            if (info.integralNames.empty()) fmt::print(" none");
+            for (const auto& n : info.integralNames)
+              fmt::print(" {}", n);
+            fmt::print("\ninvariant measure: {}\n",
+                       model->hasInvariantMeasure() ? "yes (at the default parameters)" : "none known");
+            fmt::print("map coordinates for \"initial\": {{\"map\": [...]}}:");
+            if (info.mapCoordinates.empty()) fmt::print(" none (give \"state\")");
+            for (const auto& n : info.mapCoordinates)
+              fmt::print(" {}", n);
+            fmt::print("\n\nobservables (for --columns):\n");
+            for (const auto& o : model->observables())
+              fmt::print("  {:<10} {}\n", o.id, o.description);
+            fmt::print("\nintegrators (scene \"integrator\" section, or --set integrator.ID=VALUE):\n");
+            for (const auto& e : IntegratorRegistry::builtin().entries()) {
+              fmt::print(" {}: {}\n", e.id, e.title);
+              printParameters(*e.parameters);
+            }
+            return 0;
+          }};
 }
 
 } // namespace rv

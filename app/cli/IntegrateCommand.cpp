@@ -29,58 +29,60 @@ Command addIntegrateCommand(CLI::App& app) {
   cmd->add_option("--columns", o->columns, "observables, comma separated (rollviz describe PROBLEM)");
   cmd->add_option("-o,--output", o->output, "CSV file (default: standard output)");
   return {cmd, [o] {
-    const double time = o->time, every = o->every;
-    const std::string &columns = o->columns, &output = o->output;
-    const auto& args = o->scene;
-    if (!(std::isfinite(time) && time >= 0)) throw InputError("--time: must be a finite number >= 0");
-    if (!(std::isfinite(every) && every > 0)) throw InputError("--every: must be positive");
-    const Scene scene = args.load();
-    std::vector<int> cols;
-    std::stringstream list(columns);
-    for (std::string c; std::getline(list, c, ',');) {
-      const int i = scene.model->findObservable(c);
-      if (i < 0) throw InputError("--columns: unknown observable '" + c + "' of " + scene.model->info().id +
-                                  " (rollviz describe " + scene.model->info().id + ")");
-      cols.push_back(i);
-    }
-    if (cols.empty()) throw InputError("--columns: give at least one observable");
+            const double time = o->time, every = o->every;
+            const std::string &columns = o->columns, &output = o->output;
+            const auto& args = o->scene;
+            if (!(std::isfinite(time) && time >= 0)) throw InputError("--time: must be a finite number >= 0");
+            if (!(std::isfinite(every) && every > 0)) throw InputError("--every: must be positive");
+            const Scene scene = args.load();
+            std::vector<int> cols;
+            std::stringstream list(columns);
+            for (std::string c; std::getline(list, c, ',');) {
+              const int i = scene.model->findObservable(c);
+              if (i < 0)
+                throw InputError("--columns: unknown observable '" + c + "' of " + scene.model->info().id +
+                                 " (rollviz describe " + scene.model->info().id + ")");
+              cols.push_back(i);
+            }
+            if (cols.empty()) throw InputError("--columns: give at least one observable");
 
-    std::unique_ptr<AtomicFile> file;
-    FILE* out = stdout;
-    if (!output.empty()) {
-      file = std::make_unique<AtomicFile>(output, "-o");
-      out = std::fopen(file->tempPath().c_str(), "w");
-      if (!out) throw InputError("-o " + output + ": cannot open for writing");
-    }
-    const auto& obs = scene.model->observables();
-    for (std::size_t k = 0; k < cols.size(); ++k) std::fprintf(out, "%s%s", k ? "," : "", obs[cols[k]].id.c_str());
-    std::fputc('\n', out);
+            std::unique_ptr<AtomicFile> file;
+            FILE* out = stdout;
+            if (!output.empty()) {
+              file = std::make_unique<AtomicFile>(output, "-o");
+              out = std::fopen(file->tempPath().c_str(), "w");
+              if (!out) throw InputError("-o " + output + ": cannot open for writing");
+            }
+            const auto& obs = scene.model->observables();
+            for (std::size_t k = 0; k < cols.size(); ++k)
+              std::fprintf(out, "%s%s", k ? "," : "", obs[cols[k]].id.c_str());
+            std::fputc('\n', out);
 
-    const long rows = static_cast<long>(std::floor(time / every * (1 + 1e-12))) + 1;
-    auto integrator = scene.startIntegrator();
-    Progress progress("integrate");
-    std::string failure;
-    bool stopped = false;
-    try {
-      stopped = !sampleUniform(*integrator, every, rows, [&](double t, const Eigen::VectorXd& x) {
-        for (std::size_t k = 0; k < cols.size(); ++k)
-          std::fprintf(out, "%s%.17g", k ? "," : "", obs[cols[k]].value(t, x.data()));
-        std::fputc('\n', out);
-        progress.update(rows > 1 ? std::abs(t) / time : 1.0);
-        return !interrupted();
-      });
-    } catch (const ComputationError& e) {
-      failure = e.what();
-    }
-    const bool ok = std::fflush(out) == 0 && !std::ferror(out);
-    if (file) {
-      std::fclose(out);
-      if (!ok) throw ComputationError("cannot write " + output);
-      if (failure.empty()) file->commit(); // a failed run leaves no file behind
-    }
-    if (!failure.empty()) throw ComputationError(failure);
-    return stopped ? 130 : 0;
-  }};
+            const long rows = static_cast<long>(std::floor(time / every * (1 + 1e-12))) + 1;
+            auto integrator = scene.startIntegrator();
+            Progress progress("integrate");
+            std::string failure;
+            bool stopped = false;
+            try {
+              stopped = !sampleUniform(*integrator, every, rows, [&](double t, const Eigen::VectorXd& x) {
+                for (std::size_t k = 0; k < cols.size(); ++k)
+                  std::fprintf(out, "%s%.17g", k ? "," : "", obs[cols[k]].value(t, x.data()));
+                std::fputc('\n', out);
+                progress.update(rows > 1 ? std::abs(t) / time : 1.0);
+                return !interrupted();
+              });
+            } catch (const ComputationError& e) {
+              failure = e.what();
+            }
+            const bool ok = std::fflush(out) == 0 && !std::ferror(out);
+            if (file) {
+              std::fclose(out);
+              if (!ok) throw ComputationError("cannot write " + output);
+              if (failure.empty()) file->commit(); // a failed run leaves no file behind
+            }
+            if (!failure.empty()) throw ComputationError(failure);
+            return stopped ? 130 : 0;
+          }};
 }
 
 } // namespace rv

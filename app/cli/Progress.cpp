@@ -9,7 +9,9 @@ namespace rv {
 
 namespace {
 std::atomic<bool> g_interrupted{false};
-extern "C" void onSigint(int) { g_interrupted.store(true); }
+extern "C" void onSigint(int) {
+  g_interrupted.store(true);
+}
 } // namespace
 
 void installInterruptHandler() {
@@ -19,7 +21,9 @@ void installInterruptHandler() {
   sigaction(SIGINT, &sa, nullptr);
 }
 
-bool interrupted() { return g_interrupted.load(); }
+bool interrupted() {
+  return g_interrupted.load();
+}
 
 Progress::Progress(std::string label) : label_(std::move(label)), tty_(::isatty(STDERR_FILENO) == 1) {}
 

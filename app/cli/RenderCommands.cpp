@@ -42,10 +42,12 @@ Command addRenderCommand(CLI::App& app) {
   addSceneArgs(cmd, o->scene);
   cmd->add_option("-o,--output", o->output, "PNG file")->required();
   cmd->add_option("--size", o->size, "picture size WIDTHxHEIGHT")->capture_default_str();
-  cmd->add_option("--time", o->time, "simulation time to show (the trace covers [0, time])")->capture_default_str();
+  cmd->add_option("--time", o->time, "simulation time to show (the trace covers [0, time])")
+      ->capture_default_str();
   return {cmd, [o] {
             const auto [w, h] = parseSize(o->size);
-            if (!(std::isfinite(o->time) && o->time >= 0)) throw InputError("--time: must be a finite number >= 0");
+            if (!(std::isfinite(o->time) && o->time >= 0))
+              throw InputError("--time: must be a finite number >= 0");
             const Scene scene = o->scene.load();
             checkWritable(o->output, "-o");
             auto integrator = scene.startIntegrator();
@@ -108,21 +110,29 @@ Command addVideoCommand(CLI::App& app) {
   cmd->add_option("--duration", o->duration, "seconds of video")->capture_default_str();
   cmd->add_option("--fps", o->fps, "frames per second")->capture_default_str();
   cmd->add_option("--size", o->size, "frame size WIDTHxHEIGHT (even numbers)")->capture_default_str();
-  cmd->add_option("--speed", o->speed, "simulation seconds per video second (default: the scene's view.speed)");
+  cmd->add_option("--speed", o->speed,
+                  "simulation seconds per video second (default: the scene's view.speed)");
   cmd->add_option("--encoder", o->encoder, "libav encoder (libx264, or mpeg4)")->capture_default_str();
   return {cmd, [o] {
             const auto [w, h] = parseSize(o->size);
-            if (!(std::isfinite(o->duration) && o->duration > 0)) throw InputError("--duration: must be positive");
+            if (!(std::isfinite(o->duration) && o->duration > 0))
+              throw InputError("--duration: must be positive");
             if (o->fps < 1 || o->fps > 240) throw InputError("--fps: must lie in [1, 240]");
-            if (w % 2 || h % 2) throw InputError("--size " + o->size + ": a video needs an even width and height");
+            if (w % 2 || h % 2)
+              throw InputError("--size " + o->size + ": a video needs an even width and height");
             const Scene scene = o->scene.load();
             checkWritable(o->output, "-o");
             auto integrator = scene.startIntegrator();
             VisualScene visual(*scene.model, scene.view, scene.initialState);
             auto ctx = createHeadlessContext(w, h);
             ctx->window()->AddRenderer(visual.renderer());
-            VideoSpec spec{.path = o->output, .width = w, .height = h, .fps = o->fps, .duration = o->duration,
-                           .speed = o->speed > 0 ? o->speed : scene.view.speed, .encoder = o->encoder};
+            VideoSpec spec{.path = o->output,
+                           .width = w,
+                           .height = h,
+                           .fps = o->fps,
+                           .duration = o->duration,
+                           .speed = o->speed > 0 ? o->speed : scene.view.speed,
+                           .encoder = o->encoder};
             Progress progress("video");
             const long frames = exportVideo(visual, ctx->window(), *integrator, spec, [&](long k, long n) {
               progress.update(static_cast<double>(k) / n);

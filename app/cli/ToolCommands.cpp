@@ -1,5 +1,5 @@
-// ToolCommands.cpp -- `rollviz poincare`, `rollviz lyapunov`, `rollviz spectrum`: the tools of dynamics/tools run
-// in the foreground, with progress on a terminal and Ctrl-C keeping what was computed (exit 130).
+// ToolCommands.cpp -- `rollviz poincare`, `rollviz lyapunov`, `rollviz spectrum`: the tools of dynamics/tools
+// run in the foreground, with progress on a terminal and Ctrl-C keeping what was computed (exit 130).
 #include "app/cli/Commands.h"
 #include "app/cli/Progress.h"
 #include "dynamics/core/Errors.h"
@@ -48,9 +48,12 @@ private:
 
 void printPeaks(const std::string& function, const SpectrumResult& r) {
   nlohmann::json peaks = nlohmann::json::array();
-  for (const auto& p : r.peaks) peaks.push_back({{"frequency", p.frequency}, {"amplitude", p.amplitude}});
-  fmt::print("{}\n",
-             nlohmann::json{{"function", function}, {"peaks", peaks}, {"step", r.step}, {"samples", r.samples}}.dump());
+  for (const auto& p : r.peaks)
+    peaks.push_back({{"frequency", p.frequency}, {"amplitude", p.amplitude}});
+  fmt::print(
+      "{}\n",
+      nlohmann::json{{"function", function}, {"peaks", peaks}, {"step", r.step}, {"samples", r.samples}}
+          .dump());
 }
 
 ToolControl cliControl(Progress& progress) {
@@ -84,7 +87,8 @@ Command addPoincareCommand(CLI::App& app) {
   auto o = std::make_shared<PoincareOptions>();
   addSceneArgs(cmd, o->scene);
   cmd->add_option("--points", o->points, "how many points (default: the scene's poincare.points)");
-  cmd->add_option("-o,--output", o->output, "CSV file: the map coordinates, t, sheet (default: standard output)");
+  cmd->add_option("-o,--output", o->output,
+                  "CSV file: the map coordinates, t, sheet (default: standard output)");
   return {cmd, [o] {
             if (o->points < 0) throw InputError("--points: must be positive");
             const Scene scene = o->scene.load();
@@ -95,12 +99,14 @@ Command addPoincareCommand(CLI::App& app) {
             integ->start(*scene.model, 0, scene.initialState, s.backward ? -1 : +1);
             PoincareMap map(*scene.model, std::move(integ), s);
             Output out(o->output);
-            for (const auto& n : map.coordinateNames()) std::fprintf(out.get(), "%s,", n.c_str());
+            for (const auto& n : map.coordinateNames())
+              std::fprintf(out.get(), "%s,", n.c_str());
             std::fprintf(out.get(), "t,sheet\n");
             Progress progress("poincare");
             const ToolControl control = cliControl(progress);
             while (auto p = map.next(control)) {
-              for (double c : p->coordinates) std::fprintf(out.get(), "%.17g,", c);
+              for (double c : p->coordinates)
+                std::fprintf(out.get(), "%.17g,", c);
               std::fprintf(out.get(), "%.17g,%d\n", p->time, p->sheet);
             }
             out.commit(); // a failed integration throws before this: no file is left behind
@@ -123,15 +129,20 @@ Command addLyapunovCommand(CLI::App& app) {
             const Model& model = *scene.model;
             Progress progress("lyapunov");
             const LyapunovResult r = lyapunovExponents(
-                model, [&] { return spec.makeIntegrator(model); }, scene.initialState, s, {}, cliControl(progress));
+                model, [&] { return spec.makeIntegrator(model); }, scene.initialState, s, {},
+                cliControl(progress));
             if (o->json) {
-              nlohmann::json j{{"exponents", r.last.exponents}, {"sum", r.last.sum()}, {"time", r.last.time},
-                               {"converged", r.converged}, {"stopped", r.stopped}};
+              nlohmann::json j{{"exponents", r.last.exponents},
+                               {"sum", r.last.sum()},
+                               {"time", r.last.time},
+                               {"converged", r.converged},
+                               {"stopped", r.stopped}};
               fmt::print("{}\n", j.dump());
             } else {
               for (std::size_t i = 0; i < r.last.exponents.size(); ++i)
                 fmt::print("lambda{} = {:.10g}\n", i + 1, r.last.exponents[i]);
-              fmt::print("sum = {:.10g}\ntime = {:.10g}\nconverged = {}\n", r.last.sum(), r.last.time, r.converged);
+              fmt::print("sum = {:.10g}\ntime = {:.10g}\nconverged = {}\n", r.last.sum(), r.last.time,
+                         r.converged);
             }
             return r.stopped ? 130 : 0;
           }};
@@ -156,8 +167,8 @@ Command addSpectrumCommand(CLI::App& app) {
             auto integ = scene.startIntegrator();
             Progress progress("spectrum");
             const SpectrumResult r = fourierSpectrum(*scene.model, *integ,
-                                                     scene.model->isMap() || scene.integratorEntry->fixedStep, s,
-                                                     cliControl(progress));
+                                                     scene.model->isMap() || scene.integratorEntry->fixedStep,
+                                                     s, cliControl(progress));
             if (o->output.empty() && o->json) {
               printPeaks(s.function, r);
               return interrupted() ? 130 : 0;

@@ -40,14 +40,16 @@ int runGui(int argc, char** argv, const GuiOptions& options) {
   QString scene = QString::fromStdString(options.scene);
   if (scene.isEmpty()) {
     const QString last = QSettings().value("lastScene").toString();
-    scene = !last.isEmpty() && QFileInfo::exists(last) ? last
-                                                       : QString::fromStdString(defaultScenePath("chaplygin_ball"));
+    scene = !last.isEmpty() && QFileInfo::exists(last)
+                ? last
+                : QString::fromStdString(defaultScenePath("chaplygin_ball"));
   }
   window.openScene(scene);
 
   if (options.quitAfter > 0)
     QTimer::singleShot(static_cast<int>(options.quitAfter * 1000), &app, [&] {
-      if (!options.screenshot.empty() && !window.grab().save(QString::fromStdString(options.screenshot), "PNG"))
+      if (!options.screenshot.empty() &&
+          !window.grab().save(QString::fromStdString(options.screenshot), "PNG"))
         std::fprintf(stderr, "rollviz: cannot write %s\n", options.screenshot.c_str());
       app.quit();
     });

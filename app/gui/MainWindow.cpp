@@ -73,7 +73,8 @@ bool MainWindow::openScene(const QString& path) {
   scenePath_ = path;
   speedBox_->setValue(scene_->view.speed);
   QSettings().setValue("lastScene", QFileInfo(path).absoluteFilePath());
-  setWindowTitle(QString("rollviz — %1 (%2)").arg(QFileInfo(path).fileName(), QString::fromStdString(scene_->model->info().id)));
+  setWindowTitle(QString("rollviz — %1 (%2)")
+                     .arg(QFileInfo(path).fileName(), QString::fromStdString(scene_->model->info().id)));
   restart();
   return true;
 }
@@ -113,7 +114,8 @@ void MainWindow::tick() {
     stream_->requestUntil(requested_);
   }
   if (!stream_->take(batch_)) return;
-  for (std::size_t i = 0; i < batch_.states.size(); ++i) visual_->advance(batch_.times[i], batch_.states[i]);
+  for (std::size_t i = 0; i < batch_.states.size(); ++i)
+    visual_->advance(batch_.times[i], batch_.states[i]);
   if (batch_.reached) {
     visual_->show(batch_.atTime, batch_.at);
     shownTime_ = batch_.atTime;
@@ -128,7 +130,9 @@ void MainWindow::tick() {
 }
 
 void MainWindow::showStatus() {
-  QString s = QString("%1   t = %2   %3").arg(QFileInfo(scenePath_).fileName()).arg(shownTime_, 0, 'f', 3)
+  QString s = QString("%1   t = %2   %3")
+                  .arg(QFileInfo(scenePath_).fileName())
+                  .arg(shownTime_, 0, 'f', 3)
                   .arg(playing_ ? "playing" : "paused");
   if (!error_.isEmpty()) s += "   stopped: " + error_;
   status_->setText(s);
@@ -142,8 +146,8 @@ void MainWindow::snapshot() {
 }
 
 void MainWindow::openDialog() {
-  const QString path = QFileDialog::getOpenFileName(this, "Open scene", QString::fromStdString(scenesDirectory()),
-                                                    "Scenes (*.json)");
+  const QString path = QFileDialog::getOpenFileName(
+      this, "Open scene", QString::fromStdString(scenesDirectory()), "Scenes (*.json)");
   if (!path.isEmpty()) openScene(path);
 }
 

@@ -57,7 +57,8 @@ QtVtkWidget::QtVtkWidget(QWidget* parent)
   for (unsigned long ev :
        {vtkCommand::WindowMakeCurrentEvent, vtkCommand::WindowIsCurrentEvent, vtkCommand::WindowFrameEvent})
     window_->AddObserver(ev, cb);
-  for (unsigned long ev : {vtkCommand::RenderEvent, vtkCommand::CreateTimerEvent, vtkCommand::DestroyTimerEvent})
+  for (unsigned long ev :
+       {vtkCommand::RenderEvent, vtkCommand::CreateTimerEvent, vtkCommand::DestroyTimerEvent})
     interactor_->AddObserver(ev, cb);
 }
 
@@ -109,7 +110,8 @@ void QtVtkWidget::initializeGL() {
 }
 
 void QtVtkWidget::resizeGL(int, int) {
-  interactor_->UpdateSize(int(width() * devicePixelRatioF() + 0.5), int(height() * devicePixelRatioF() + 0.5));
+  interactor_->UpdateSize(int(width() * devicePixelRatioF() + 0.5),
+                          int(height() * devicePixelRatioF() + 0.5));
 }
 
 void QtVtkWidget::paintGL() {
@@ -135,28 +137,34 @@ void QtVtkWidget::paintGL() {
   st->Pop();
 }
 
-void QtVtkWidget::mousePressEvent(QMouseEvent* e) { mouse(e, pressEvent(e->button())); }
+void QtVtkWidget::mousePressEvent(QMouseEvent* e) {
+  mouse(e, pressEvent(e->button()));
+}
 void QtVtkWidget::mouseReleaseEvent(QMouseEvent* e) {
   const unsigned long p = pressEvent(e->button());
   mouse(e, p == vtkCommand::NoEvent ? p : p + 1);
 }
-void QtVtkWidget::mouseMoveEvent(QMouseEvent* e) { mouse(e, vtkCommand::MouseMoveEvent); }
+void QtVtkWidget::mouseMoveEvent(QMouseEvent* e) {
+  mouse(e, vtkCommand::MouseMoveEvent);
+}
 
 void QtVtkWidget::mouse(QMouseEvent* e, unsigned long vtkEvent) {
   if (vtkEvent == vtkCommand::NoEvent) return;
   const double dpr = devicePixelRatioF();
-  interactor_->SetEventInformationFlipY(int(e->position().x() * dpr + 0.5), int(e->position().y() * dpr + 0.5),
-                                        e->modifiers() & Qt::ControlModifier ? 1 : 0,
-                                        e->modifiers() & Qt::ShiftModifier ? 1 : 0);
+  interactor_->SetEventInformationFlipY(
+      int(e->position().x() * dpr + 0.5), int(e->position().y() * dpr + 0.5),
+      e->modifiers() & Qt::ControlModifier ? 1 : 0, e->modifiers() & Qt::ShiftModifier ? 1 : 0);
   interactor_->InvokeEvent(vtkEvent, e);
 }
 
 void QtVtkWidget::wheelEvent(QWheelEvent* e) {
   const double dpr = devicePixelRatioF();
-  interactor_->SetEventInformationFlipY(int(e->position().x() * dpr + 0.5), int(e->position().y() * dpr + 0.5));
+  interactor_->SetEventInformationFlipY(int(e->position().x() * dpr + 0.5),
+                                        int(e->position().y() * dpr + 0.5));
   if (e->angleDelta().y() != 0)
-    interactor_->InvokeEvent(
-        e->angleDelta().y() > 0 ? vtkCommand::MouseWheelForwardEvent : vtkCommand::MouseWheelBackwardEvent, e);
+    interactor_->InvokeEvent(e->angleDelta().y() > 0 ? vtkCommand::MouseWheelForwardEvent
+                                                     : vtkCommand::MouseWheelBackwardEvent,
+                             e);
 }
 
 } // namespace rv

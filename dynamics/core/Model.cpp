@@ -8,11 +8,21 @@ namespace rv {
 
 Model::Model(const ModelInfo& info, const ParameterValues& params) : info_(&info), params_(params) {}
 
-Eigen::VectorXd Model::integrals(const double*) const { return {}; }
-double Model::measureDensity(const double*) const { return 1.0; }
-std::optional<BodyPose> Model::pose(const double*) const { return std::nullopt; }
-std::optional<BodyGeometry> Model::geometry() const { return std::nullopt; }
-std::optional<SupportSurface> Model::support() const { return std::nullopt; }
+Eigen::VectorXd Model::integrals(const double*) const {
+  return {};
+}
+double Model::measureDensity(const double*) const {
+  return 1.0;
+}
+std::optional<BodyPose> Model::pose(const double*) const {
+  return std::nullopt;
+}
+std::optional<BodyGeometry> Model::geometry() const {
+  return std::nullopt;
+}
+std::optional<SupportSurface> Model::support() const {
+  return std::nullopt;
+}
 
 Eigen::VectorXd Model::stateFromNamed(const std::map<std::string, double>& named,
                                       const std::string& context) const {
@@ -27,7 +37,8 @@ Eigen::VectorXd Model::stateFromMap(const std::vector<double>& point, const MapP
                                     const std::string& context) const {
   if (isMap()) { // the point is the state
     if (static_cast<int>(point.size()) != dimension())
-      throw InputError(context + ": " + info_->id + " map points have " + std::to_string(dimension()) + " coordinates");
+      throw InputError(context + ": " + info_->id + " map points have " + std::to_string(dimension()) +
+                       " coordinates");
     return Eigen::Map<const Eigen::VectorXd>(point.data(), dimension());
   }
   throw InputError(context + ": " + info_->id + " has no map coordinates; give \"state\" instead");
@@ -38,10 +49,13 @@ void Model::coreJacobian(const double* x, double* jac) const {
   std::vector<double> full(static_cast<std::size_t>(n) * n);
   jacobian(x, full.data());
   for (int i = 0; i < m; ++i)
-    for (int j = 0; j < m; ++j) jac[i * m + j] = full[i * n + j];
+    for (int j = 0; j < m; ++j)
+      jac[i * m + j] = full[i * n + j];
 }
 
-int Model::sheetOf(const Eigen::VectorXd&, const MapPointSpec&) const { return 1; }
+int Model::sheetOf(const Eigen::VectorXd&, const MapPointSpec&) const {
+  return 1;
+}
 
 int Model::findObservable(const std::string& id) const {
   for (std::size_t i = 0; i < observables_.size(); ++i)
@@ -55,7 +69,8 @@ void Model::addObservable(std::string id, std::string description,
 }
 
 void Model::addObservables(std::vector<Observable> list) {
-  for (auto& o : list) observables_.push_back(std::move(o));
+  for (auto& o : list)
+    observables_.push_back(std::move(o));
 }
 
 void Model::addStandardObservables() {
@@ -64,8 +79,9 @@ void Model::addStandardObservables() {
     addObservable(info_->stateNames[i], "state component", [i](double, const double* x) { return x[i]; });
   for (std::size_t k = 0; k < info_->integralNames.size(); ++k)
     if (findObservable(info_->integralNames[k]) < 0)
-      addObservable(info_->integralNames[k], "first integral",
-                    [this, k](double, const double* x) { return integrals(x)[static_cast<Eigen::Index>(k)]; });
+      addObservable(info_->integralNames[k], "first integral", [this, k](double, const double* x) {
+        return integrals(x)[static_cast<Eigen::Index>(k)];
+      });
 }
 
 void Model::assignNamed(const std::map<std::string, double>& named, const std::string& context,
@@ -73,7 +89,8 @@ void Model::assignNamed(const std::map<std::string, double>& named, const std::s
   for (const auto& [name, value] : named) {
     const auto& names = info_->stateNames;
     const auto it = std::find(names.begin(), names.end(), name);
-    if (it == names.end()) throw InputError(context + "." + name + ": unknown state component of " + info_->id);
+    if (it == names.end())
+      throw InputError(context + "." + name + ": unknown state component of " + info_->id);
     if (!std::isfinite(value)) throw InputError(context + "." + name + ": must be a finite number");
     x[it - names.begin()] = value;
   }

@@ -45,24 +45,24 @@ enum class ModelKind { Flow, Map };
 /// The shape of a body in its own frame, relative to the pose's centre (for drawing).
 struct BodyGeometry {
   BodyShape shape = BodyShape::None;
-  Eigen::Vector3d centre = Eigen::Vector3d::Zero(); ///< ball or ellipsoid centre; paraboloid vertex
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();   ///< ball or ellipsoid centre; paraboloid vertex
   Eigen::Vector3d semiAxes = Eigen::Vector3d::Ones(); ///< ellipsoid semi-axes (ball: the radius thrice)
-  double p = 1, q = 1;   ///< paraboloid: radii of curvature at the vertex
-  double height = 1;     ///< paraboloid: how far above its vertex it is drawn
+  double p = 1, q = 1;                                ///< paraboloid: radii of curvature at the vertex
+  double height = 1;                                  ///< paraboloid: how far above its vertex it is drawn
 };
 
 /// The constant description of a model kind.
 struct ModelInfo {
-  std::string id;                       ///< e.g. "chaplygin_ball" (design.md contract)
-  std::string title;                    ///< one line, for lists
-  std::string reference;                ///< where the equations come from
-  ParameterTable parameters;            ///< declared once, used by GUI, CLI and scenes
-  std::vector<std::string> stateNames;  ///< names of the state components, in order
-  int coreDimension = 0;                ///< the leading components that evolve on their own
-  std::vector<std::string> integralNames; ///< first integrals, in the order integrals() returns them
-  bool hasMeasure = false;              ///< measureDensity() is an invariant measure density
+  std::string id;                          ///< e.g. "chaplygin_ball" (design.md contract)
+  std::string title;                       ///< one line, for lists
+  std::string reference;                   ///< where the equations come from
+  ParameterTable parameters;               ///< declared once, used by GUI, CLI and scenes
+  std::vector<std::string> stateNames;     ///< names of the state components, in order
+  int coreDimension = 0;                   ///< the leading components that evolve on their own
+  std::vector<std::string> integralNames;  ///< first integrals, in the order integrals() returns them
+  bool hasMeasure = false;                 ///< measureDensity() is an invariant measure density
   std::vector<std::string> mapCoordinates; ///< coordinates of a map point given as "initial": {"map": ...}
-  std::string section;                  ///< observable whose level set is the default Poincare section
+  std::string section;                     ///< observable whose level set is the default Poincare section
   ModelKind kind = ModelKind::Flow;
 };
 
@@ -95,7 +95,8 @@ public:
   virtual Eigen::VectorXd integrals(const double* x) const;
   /// Density of the invariant measure (1 when hasInvariantMeasure() is false).
   virtual double measureDensity(const double* x) const;
-  /// Whether measureDensity() is invariant at these parameter values (info().hasMeasure unless a model knows better).
+  /// Whether measureDensity() is invariant at these parameter values (info().hasMeasure unless a model knows
+  /// better).
   virtual bool hasInvariantMeasure() const { return info_->hasMeasure; }
   /// Pose of the body, for models that have one.
   virtual std::optional<BodyPose> pose(const double* x) const;
@@ -108,7 +109,8 @@ public:
   /// Throws InputError naming `context` and the offending name.
   virtual Eigen::VectorXd stateFromNamed(const std::map<std::string, double>& named,
                                          const std::string& context) const;
-  /// Which sheet (root of the completion, 1-based) a state lies on, for many-sheeted maps; 1 when single-sheeted.
+  /// Which sheet (root of the completion, 1-based) a state lies on, for many-sheeted maps; 1 when
+  /// single-sheeted.
   virtual int sheetOf(const Eigen::VectorXd& x, const MapPointSpec& spec) const;
   /// A full state from a map point, completed through the energy and the other integrals.
   /// Throws InputError when the point has no state (outside the region of allowed motion).

@@ -13,7 +13,9 @@ const ModelRegistry& ModelRegistry::builtin() {
   return registry;
 }
 
-void ModelRegistry::add(ModelEntry entry) { entries_.push_back(std::move(entry)); }
+void ModelRegistry::add(ModelEntry entry) {
+  entries_.push_back(std::move(entry));
+}
 
 const ModelEntry& ModelRegistry::get(const std::string& id) const {
   std::string known;

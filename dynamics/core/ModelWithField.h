@@ -9,8 +9,12 @@
 namespace rv {
 
 /// The plain value of a scalar that may carry derivatives (for branch decisions such as wrapping an angle).
-inline double valueOf(double v) { return v; }
-template <class D> double valueOf(const Eigen::AutoDiffScalar<D>& v) { return v.value(); }
+inline double valueOf(double v) {
+  return v;
+}
+template <class D> double valueOf(const Eigen::AutoDiffScalar<D>& v) {
+  return v.value();
+}
 
 /// Derived must provide `template <class S> void field(const Vec<S>& x, Vec<S>& dx) const`. M is the core
 /// dimension (the leading components that evolve on their own); it must equal info().coreDimension.
@@ -35,10 +39,12 @@ public:
   void jacobian(const double* x, double* jac) const final {
     using AD = Eigen::AutoDiffScalar<Eigen::Matrix<double, N, 1>>;
     Vec<AD> xa, fa;
-    for (int i = 0; i < N; ++i) xa[i] = AD(x[i], N, i);
+    for (int i = 0; i < N; ++i)
+      xa[i] = AD(x[i], N, i);
     self().field(xa, fa);
     for (int i = 0; i < N; ++i)
-      for (int j = 0; j < N; ++j) jac[i * N + j] = fa[i].derivatives()[j];
+      for (int j = 0; j < N; ++j)
+        jac[i * N + j] = fa[i].derivatives()[j];
   }
 
   /// Derivatives with respect to the core components only: cheaper when the kinematics add many components.
@@ -46,10 +52,12 @@ public:
     using D = Eigen::Matrix<double, M, 1>; // M derivatives, fixed size: no heap, unrolled
     using AD = Eigen::AutoDiffScalar<D>;
     Vec<AD> xa, fa;
-    for (int i = 0; i < N; ++i) xa[i] = i < M ? AD(x[i], M, i) : AD(x[i], D::Zero());
+    for (int i = 0; i < N; ++i)
+      xa[i] = i < M ? AD(x[i], M, i) : AD(x[i], D::Zero());
     self().field(xa, fa);
     for (int i = 0; i < M; ++i)
-      for (int j = 0; j < M; ++j) jac[i * M + j] = fa[i].derivatives()[j];
+      for (int j = 0; j < M; ++j)
+        jac[i * M + j] = fa[i].derivatives()[j];
   }
 
 private:

@@ -14,7 +14,8 @@ int ParameterTable::find(const std::string& id) const {
 }
 
 ParameterValues::ParameterValues(const ParameterTable& table) : table_(&table) {
-  for (const auto& s : table.specs()) values_.push_back(s.defaultValue);
+  for (const auto& s : table.specs())
+    values_.push_back(s.defaultValue);
 }
 
 void ParameterValues::set(const std::string& id, double value, const std::string& context) {
@@ -22,7 +23,8 @@ void ParameterValues::set(const std::string& id, double value, const std::string
   const int i = table_->find(id);
   if (i < 0) {
     std::ostringstream known;
-    for (const auto& s : table_->specs()) known << ' ' << s.id;
+    for (const auto& s : table_->specs())
+      known << ' ' << s.id;
     throw InputError(where + ": unknown parameter '" + id + "' (known:" + known.str() + ")");
   }
   const ParameterSpec& s = table_->specs()[i];

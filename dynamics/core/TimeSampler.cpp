@@ -9,7 +9,8 @@ bool sampleUniform(Integrator& integrator, double every, long count,
   Eigen::VectorXd x(integrator.state().size());
   for (long k = 0; k < count; ++k) {
     const double t = t0 + dir * static_cast<double>(k) * every;
-    while (dir * (integrator.time() - t) < 0) integrator.step();
+    while (dir * (integrator.time() - t) < 0)
+      integrator.step();
     if (t == integrator.time())
       x = integrator.state();
     else

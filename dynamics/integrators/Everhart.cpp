@@ -58,10 +58,24 @@ ld lagrange(const std::vector<ld>& c, int j, ld t) {
 
 const ParameterTable& Everhart::parameterTable() {
   static const ParameterTable table{
-      {.id = "step", .label = "Step", .defaultValue = 0.05, .min = 1e-12, .max = 1e3, .description = "constant integration step"},
-      {.id = "order", .label = "Order", .defaultValue = 15, .min = 3, .max = 1000,
-       .description = "3, 7, 11, 15, 19, 23 or 27; other values are rounded down to one of these", .integer = true},
-      {.id = "iterations", .label = "Number of iterations", .defaultValue = 12, .min = 1, .max = 100,
+      {.id = "step",
+       .label = "Step",
+       .defaultValue = 0.05,
+       .min = 1e-12,
+       .max = 1e3,
+       .description = "constant integration step"},
+      {.id = "order",
+       .label = "Order",
+       .defaultValue = 15,
+       .min = 3,
+       .max = 1000,
+       .description = "3, 7, 11, 15, 19, 23 or 27; other values are rounded down to one of these",
+       .integer = true},
+      {.id = "iterations",
+       .label = "Number of iterations",
+       .defaultValue = 12,
+       .min = 1,
+       .max = 100,
        .description = "most predictor-corrector iterations per step (fewer when the corrector has converged)",
        .integer = true},
   };
@@ -69,10 +83,14 @@ const ParameterTable& Everhart::parameterTable() {
 }
 
 IntegratorEntry Everhart::entry() {
-  return {"everhart", "Everhart, implicit, Gauss-Radau spacings, orders 3..27",
-          "Everhart 1985; Rein and Spiegel, IAS15, MNRAS 446 (2015)", &parameterTable(), true,
+  return {"everhart",
+          "Everhart, implicit, Gauss-Radau spacings, orders 3..27",
+          "Everhart 1985; Rein and Spiegel, IAS15, MNRAS 446 (2015)",
+          &parameterTable(),
+          true,
           [](const ParameterValues& p) -> std::unique_ptr<Integrator> {
-            return std::make_unique<Everhart>(p["step"], static_cast<int>(p["order"]), static_cast<int>(p["iterations"]));
+            return std::make_unique<Everhart>(p["step"], static_cast<int>(p["order"]),
+                                              static_cast<int>(p["iterations"]));
           }};
 }
 
@@ -93,9 +111,15 @@ struct EverhartTables {
 EverhartTables computeTables(int n) {
   EverhartTables t;
   // left Gauss-Radau points: the zeros of P_{n-1} + P_n on [-1, 1], -1 included
-  const auto radau = roots([&](ld x) { auto [pn, pn1] = legendre(n, x); return pn + pn1; }, -1.0L + 1e-12L, 1.0L, 40000);
+  const auto radau = roots(
+      [&](ld x) {
+        auto [pn, pn1] = legendre(n, x);
+        return pn + pn1;
+      },
+      -1.0L + 1e-12L, 1.0L, 40000);
   t.cl = {0.0L};
-  for (ld x : radau) t.cl.push_back((x + 1) / 2);
+  for (ld x : radau)
+    t.cl.push_back((x + 1) / 2);
   // Gauss-Legendre on [0, 1] with n points integrates the Lagrange polynomials (degree n - 1) exactly
   for (ld x : roots([&](ld x) { return legendre(n, x).first; }, -1.0L, 1.0L, 40000)) {
     auto [pn, pn1] = legendre(n, x);
@@ -108,11 +132,13 @@ EverhartTables computeTables(int n) {
   t.A.resize(n, n), t.extrapolate.resize(n, n), t.b.resize(n);
   for (int j = 0; j < n; ++j) {
     ld bj = 0;
-    for (int k = 0; k < n; ++k) bj += t.gaussWeights[k] * lagrange(t.cl, j, t.gaussNodes[k]);
+    for (int k = 0; k < n; ++k)
+      bj += t.gaussWeights[k] * lagrange(t.cl, j, t.gaussNodes[k]);
     t.b[j] = static_cast<double>(bj);
     for (int i = 0; i < n; ++i) {
       ld aij = 0;
-      for (int k = 0; k < n; ++k) aij += t.gaussWeights[k] * lagrange(t.cl, j, t.cl[i] * t.gaussNodes[k]);
+      for (int k = 0; k < n; ++k)
+        aij += t.gaussWeights[k] * lagrange(t.cl, j, t.cl[i] * t.gaussNodes[k]);
       t.A(i, j) = static_cast<double>(t.cl[i] * aij);
       t.extrapolate(j, i) = static_cast<double>(lagrange(t.cl, j, 1 + t.cl[i]));
     }
@@ -129,7 +155,8 @@ EverhartTables computeTables(int n) {
       poly = std::move(next);
     }
     std::vector<long double> L(n + 1, 0.0L);
-    for (int q = 0; q < n; ++q) L[q + 1] = poly[q] / (q + 1);
+    for (int q = 0; q < n; ++q)
+      L[q + 1] = poly[q] / (q + 1);
     t.integrated.push_back(std::move(L));
   }
   return t;
@@ -178,9 +205,9 @@ void Everhart::step() {
   F_.swap(Fnew_);
   F_.col(0) = f1_;
   predicted_ = F_;
-  // corrector: F_j = f(x0 + h sum_l A(j, l) F_l), sweeping the nodes in order and using each new value at once
-  // (as Everhart's substeps do, which roughly halves the sweeps of a Jacobi iteration); stop when the change
-  // times the observed contraction is below rounding, or when only rounding is left (IAS15's rule)
+  // corrector: F_j = f(x0 + h sum_l A(j, l) F_l), sweeping the nodes in order and using each new value at
+  // once (as Everhart's substeps do, which roughly halves the sweeps of a Jacobi iteration); stop when the
+  // change times the observed contraction is below rounding, or when only rounding is left (IAS15's rule)
   double previousChange = 0;
   lastIterations_ = 0;
   for (int it = 0; it < maxIterations_; ++it) {
@@ -227,7 +254,8 @@ void Everhart::interpolate(double t, Eigen::VectorXd& out) const {
   for (int j = 0; j < n_; ++j) {
     const auto& L = (*integrated_)[j];
     ld w = 0;
-    for (int q = n_; q >= 1; --q) w = (w + L[q]) * tau;
+    for (int q = n_; q >= 1; --q)
+      w = (w + L[q]) * tau;
     out += (h * static_cast<double>(w)) * F_.col(j);
   }
 }

@@ -1,8 +1,9 @@
-// Everhart.h -- Everhart's implicit method for first-order systems (manual §2.2.3): on each step the right-hand
-// side is approximated by its interpolation polynomial at Gauss-Radau spacings (the start of the step and the
-// n - 1 left-Radau points), integrated exactly, and the node values are found by predictor-corrector iteration.
-// With n nodes the method has order 2n - 1; the manual's orders 3, 7, ..., 27 use n = 2, 4, ..., 14.
-// References: E. Everhart, An efficient integrator that uses Gauss-Radau spacings, in Dynamics of Comets (1985),
+// Everhart.h -- Everhart's implicit method for first-order systems (manual §2.2.3): on each step the
+// right-hand side is approximated by its interpolation polynomial at Gauss-Radau spacings (the start of the
+// step and the n - 1 left-Radau points), integrated exactly, and the node values are found by
+// predictor-corrector iteration. With n nodes the method has order 2n - 1; the manual's orders 3, 7, ..., 27
+// use n = 2, 4, ..., 14. References: E. Everhart, An efficient integrator that uses Gauss-Radau spacings, in
+// Dynamics of Comets (1985),
 //   185-202; H. Rein, D. S. Spiegel, IAS15, MNRAS 446 (2015) 1424 (stopping rule, compensated summation).
 // The spacings and weights are computed at start-up in long double (no hard-coded tables).
 #pragma once
@@ -43,7 +44,7 @@ private:
   const std::vector<std::vector<long double>>* integrated_ = nullptr; // shared tables, see Everhart.cpp
   Eigen::MatrixXd A_, extrapolate_; // A(i, j) = int_0^{c_i} l_j; extrapolate(l, j) = l_l(1 + c_j)
   Eigen::VectorXd b_;
-  Eigen::MatrixXd F_, Fnew_;       // right-hand side at the nodes (dim x n)
+  Eigen::MatrixXd F_, Fnew_;               // right-hand side at the nodes (dim x n)
   Eigen::MatrixXd predicted_, correction_; // the last prediction and what the corrector changed in it
   Eigen::VectorXd f1_, y_, sum_, compensation_;
 };

@@ -29,7 +29,8 @@ void Integrator::checkFinite() const {
   }
 }
 
-void Integrator::hermite(double t, const Eigen::VectorXd& fPrev, const Eigen::VectorXd& f, Eigen::VectorXd& out) const {
+void Integrator::hermite(double t, const Eigen::VectorXd& fPrev, const Eigen::VectorXd& f,
+                         Eigen::VectorXd& out) const {
   const double h = t_ - tPrev_;
   if (h == 0) {
     out = x_;

@@ -10,21 +10,41 @@ namespace rv {
 
 const ParameterTable& Merson::parameterTable() {
   static const ParameterTable table{
-      {.id = "step", .label = "Step", .defaultValue = 1e-2, .min = 1e-14, .max = 1e3,
+      {.id = "step",
+       .label = "Step",
+       .defaultValue = 1e-2,
+       .min = 1e-14,
+       .max = 1e3,
        .description = "initial step (the method then chooses its own)"},
-      {.id = "precision", .label = "Precision", .defaultValue = 1e-10, .min = 1e-16, .max = 1,
+      {.id = "precision",
+       .label = "Precision",
+       .defaultValue = 1e-10,
+       .min = 1e-16,
+       .max = 1,
        .description = "requested local truncation error per step (max norm)"},
-      {.id = "min_step", .label = "Min. step", .defaultValue = 1e-10, .min = 1e-16, .max = 1e3,
+      {.id = "min_step",
+       .label = "Min. step",
+       .defaultValue = 1e-10,
+       .min = 1e-16,
+       .max = 1e3,
        .description = "the step may not fall below this (an error, not a silent loss of accuracy)"},
-      {.id = "max_step", .label = "Max. step", .defaultValue = 0.1, .min = 1e-14, .max = 1e3,
+      {.id = "max_step",
+       .label = "Max. step",
+       .defaultValue = 0.1,
+       .min = 1e-14,
+       .max = 1e3,
        .description = "the step may not grow beyond this"},
   };
   return table;
 }
 
 IntegratorEntry Merson::entry() {
-  return {"merson", "Runge-Kutta-Merson 4(5), adaptive step", "Merson 1957; Hairer, Norsett, Wanner, Solving ODE I, §II.4",
-          &parameterTable(), false, [](const ParameterValues& p) -> std::unique_ptr<Integrator> {
+  return {"merson",
+          "Runge-Kutta-Merson 4(5), adaptive step",
+          "Merson 1957; Hairer, Norsett, Wanner, Solving ODE I, §II.4",
+          &parameterTable(),
+          false,
+          [](const ParameterValues& p) -> std::unique_ptr<Integrator> {
             return std::make_unique<Merson>(p["step"], p["precision"], p["min_step"], p["max_step"]);
           }};
 }
@@ -37,7 +57,8 @@ Merson::Merson(double step, double precision, double minStep, double maxStep)
 
 void Merson::start(const Model& model, double t0, const Eigen::VectorXd& x0, int direction) {
   Integrator::start(model, t0, x0, direction);
-  for (auto* v : {&k1_, &k2_, &k3_, &k4_, &k5_, &tmp_, &fPrev_, &err_}) v->resize(x0.size());
+  for (auto* v : {&k1_, &k2_, &k3_, &k4_, &k5_, &tmp_, &fPrev_, &err_})
+    v->resize(x0.size());
   rejected_ = 0;
   evaluate(x_, k1_);
 }
@@ -57,11 +78,13 @@ void Merson::step() {
     const double err = err_.lpNorm<Eigen::Infinity>();
     if (!std::isfinite(err) || err > precision_) {
       ++rejected_;
-      const double shrink = std::isfinite(err) ? std::clamp(0.9 * std::pow(precision_ / err, 0.2), 0.1, 0.9) : 0.1;
+      const double shrink =
+          std::isfinite(err) ? std::clamp(0.9 * std::pow(precision_ / err, 0.2), 0.1, 0.9) : 0.1;
       if (h_ <= minStep_) {
         std::ostringstream os;
-        os << "Merson: the step reached its minimum " << minStep_ << " at t = " << t_ << " with a local error " << err
-           << " above the precision " << precision_ << " (lower min_step or relax precision)";
+        os << "Merson: the step reached its minimum " << minStep_ << " at t = " << t_
+           << " with a local error " << err << " above the precision " << precision_
+           << " (lower min_step or relax precision)";
         throw ComputationError(os.str());
       }
       h_ = std::max(minStep_, h_ * shrink);
@@ -80,6 +103,8 @@ void Merson::step() {
   }
 }
 
-void Merson::interpolate(double t, Eigen::VectorXd& out) const { hermite(t, fPrev_, k1_, out); }
+void Merson::interpolate(double t, Eigen::VectorXd& out) const {
+  hermite(t, fPrev_, k1_, out);
+}
 
 } // namespace rv

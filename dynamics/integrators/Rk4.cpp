@@ -4,16 +4,25 @@ namespace rv {
 
 const ParameterTable& Rk4::parameterTable() {
   static const ParameterTable table{
-      {.id = "step", .label = "Step", .defaultValue = 1e-3, .min = 1e-12, .max = 1e3,
+      {.id = "step",
+       .label = "Step",
+       .defaultValue = 1e-3,
+       .min = 1e-12,
+       .max = 1e3,
        .description = "constant integration step"},
   };
   return table;
 }
 
 IntegratorEntry Rk4::entry() {
-  return {"rk4", "Runge-Kutta 4, fixed step", "Hairer, Norsett, Wanner, Solving ODE I, §II.1",
-          &parameterTable(), true,
-          [](const ParameterValues& p) -> std::unique_ptr<Integrator> { return std::make_unique<Rk4>(p["step"]); }};
+  return {"rk4",
+          "Runge-Kutta 4, fixed step",
+          "Hairer, Norsett, Wanner, Solving ODE I, §II.1",
+          &parameterTable(),
+          true,
+          [](const ParameterValues& p) -> std::unique_ptr<Integrator> {
+            return std::make_unique<Rk4>(p["step"]);
+          }};
 }
 
 void Rk4::start(const Model& model, double t0, const Eigen::VectorXd& x0, int direction) {
@@ -42,6 +51,8 @@ void Rk4::step() {
   evaluate(x_, k1_); // k1 of the next step, and the derivative at this end for dense output
 }
 
-void Rk4::interpolate(double t, Eigen::VectorXd& out) const { hermite(t, fPrev_, k1_, out); }
+void Rk4::interpolate(double t, Eigen::VectorXd& out) const {
+  hermite(t, fPrev_, k1_, out);
+}
 
 } // namespace rv

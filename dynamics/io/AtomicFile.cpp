@@ -19,7 +19,8 @@ void checkWritable(const std::string& path, const std::string& what) {
   const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
   if (!fs::is_directory(dir, ec)) throw InputError(what + " " + path + ": no such folder " + dir.string());
   if (::access(dir.c_str(), W_OK) != 0)
-    throw InputError(what + " " + path + ": cannot write in " + dir.string() + " (" + std::strerror(errno) + ")");
+    throw InputError(what + " " + path + ": cannot write in " + dir.string() + " (" + std::strerror(errno) +
+                     ")");
   if (fs::exists(p, ec) && ::access(p.c_str(), W_OK) != 0)
     throw InputError(what + " " + path + ": cannot overwrite (" + std::strerror(errno) + ")");
 }
@@ -28,8 +29,8 @@ AtomicFile::AtomicFile(std::string path, const std::string& what) : path_(std::m
   checkWritable(path_, what);
   const fs::path p(path_);
   // keep the extension: some writers choose the format by it
-  temp_ = (p.parent_path() / ("." + p.stem().string() + ".partial-" + std::to_string(::getpid()) +
-                              p.extension().string()))
+  temp_ = (p.parent_path() /
+           ("." + p.stem().string() + ".partial-" + std::to_string(::getpid()) + p.extension().string()))
               .string();
 }
 

@@ -6,18 +6,26 @@ namespace rv {
 
 const char* toString(Job::Status s) {
   switch (s) {
-  case Job::Status::Ready: return "ready";
-  case Job::Status::Running: return "running";
-  case Job::Status::Stopped: return "stopped";
-  case Job::Status::Finished: return "finished";
-  case Job::Status::Failed: return "failed";
+  case Job::Status::Ready:
+    return "ready";
+  case Job::Status::Running:
+    return "running";
+  case Job::Status::Stopped:
+    return "stopped";
+  case Job::Status::Finished:
+    return "finished";
+  case Job::Status::Failed:
+    return "failed";
   }
   return "?";
 }
 
-Job::Job(int id, std::unique_ptr<Task> task, Job* parent) : id_(id), task_(std::move(task)), parent_(parent) {}
+Job::Job(int id, std::unique_ptr<Task> task, Job* parent)
+    : id_(id), task_(std::move(task)), parent_(parent) {}
 
-Job::~Job() { stop(); }
+Job::~Job() {
+  stop();
+}
 
 void Job::start() {
   const Status s = status();

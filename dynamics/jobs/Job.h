@@ -1,5 +1,5 @@
-// Job.h -- a task running on its own thread: start, stop (promptly: the task polls between steps), continue after
-// editing, restart, and a status, progress and error for the tool manager. Jobs form a tree (JobTree).
+// Job.h -- a task running on its own thread: start, stop (promptly: the task polls between steps), continue
+// after editing, restart, and a status, progress and error for the tool manager. Jobs form a tree (JobTree).
 #pragma once
 #include "dynamics/jobs/Task.h"
 

@@ -4,7 +4,9 @@
 
 namespace rv {
 
-JobTree::~JobTree() { removeAll(); }
+JobTree::~JobTree() {
+  removeAll();
+}
 
 Job& JobTree::add(std::unique_ptr<Task> task, Job* parent) {
   jobs_.push_back(std::make_unique<Job>(nextId_++, std::move(task), parent));
@@ -19,13 +21,15 @@ std::vector<Job*> JobTree::children(const Job& job) const {
 }
 
 void JobTree::remove(Job& job) {
-  for (Job* child : children(job)) remove(*child);
+  for (Job* child : children(job))
+    remove(*child);
   job.stop();
   std::erase_if(jobs_, [&](const std::unique_ptr<Job>& j) { return j.get() == &job; });
 }
 
 void JobTree::stopAll() {
-  for (auto& j : jobs_) j->stop();
+  for (auto& j : jobs_)
+    j->stop();
 }
 
 void JobTree::removeAll() {
@@ -35,7 +39,8 @@ void JobTree::removeAll() {
 
 std::vector<Job*> JobTree::jobs() const {
   std::vector<Job*> out;
-  for (const auto& j : jobs_) out.push_back(j.get());
+  for (const auto& j : jobs_)
+    out.push_back(j.get());
   return out;
 }
 

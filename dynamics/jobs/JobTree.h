@@ -1,5 +1,6 @@
-// JobTree.h -- the tool manager's model: jobs in a tree (a spectrum or Lyapunov job hangs under the trajectory it
-// studies). Used from one thread (the GUI's or the command line's); the jobs themselves run on their own threads.
+// JobTree.h -- the tool manager's model: jobs in a tree (a spectrum or Lyapunov job hangs under the
+// trajectory it studies). Used from one thread (the GUI's or the command line's); the jobs themselves run on
+// their own threads.
 #pragma once
 #include "dynamics/jobs/Job.h"
 

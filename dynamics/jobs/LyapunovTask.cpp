@@ -2,7 +2,8 @@
 
 namespace rv {
 
-LyapunovTask::LyapunovTask(RunSpec spec, LyapunovSettings settings) : spec_(std::move(spec)), settings_(settings) {
+LyapunovTask::LyapunovTask(RunSpec spec, LyapunovSettings settings)
+    : spec_(std::move(spec)), settings_(settings) {
   reset();
 }
 

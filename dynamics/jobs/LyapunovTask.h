@@ -1,4 +1,5 @@
-// LyapunovTask.h -- Lyapunov exponents as a job, started from a trajectory's state; streams the running estimates.
+// LyapunovTask.h -- Lyapunov exponents as a job, started from a trajectory's state; streams the running
+// estimates.
 #pragma once
 #include "dynamics/jobs/Channel.h"
 #include "dynamics/jobs/RunSpec.h"

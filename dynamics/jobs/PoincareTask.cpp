@@ -6,7 +6,8 @@
 
 namespace rv {
 
-PoincareTask::PoincareTask(RunSpec spec, SectionSettings settings) : spec_(std::move(spec)), settings_(std::move(settings)) {
+PoincareTask::PoincareTask(RunSpec spec, SectionSettings settings)
+    : spec_(std::move(spec)), settings_(std::move(settings)) {
   reset();
 }
 
@@ -33,7 +34,8 @@ void PoincareTask::edit(RunSpec spec, SectionSettings settings) {
   Eigen::VectorXd x0 = from;
   if (last_ && !model->isMap() && !model->info().mapCoordinates.empty()) {
     // the same point of the map on the new level of the integrals (InputError when it has no state there)
-    x0 = model->stateFromMap(last_->coordinates, {.sectionValue = settings.value, .root = std::max(1, last_->sheet)},
+    x0 = model->stateFromMap(last_->coordinates,
+                             {.sectionValue = settings.value, .root = std::max(1, last_->sheet)},
                              "the last map point");
   }
   spec_ = std::move(spec);
@@ -51,12 +53,15 @@ bool PoincareTask::run(const ToolControl& control) {
   return !control.stopRequested();
 }
 
-Eigen::VectorXd PoincareTask::lastState() const { return last_ ? map_->lastState() : map_->integrator().state(); }
+Eigen::VectorXd PoincareTask::lastState() const {
+  return last_ ? map_->lastState() : map_->integrator().state();
+}
 
 std::string PoincareTask::describe() const {
   std::ostringstream os;
-  os << spec_.describe() << " section(" << (settings_.observable.empty() ? model_->info().section : settings_.observable)
-     << "=" << settings_.value << ")";
+  os << spec_.describe() << " section("
+     << (settings_.observable.empty() ? model_->info().section : settings_.observable) << "="
+     << settings_.value << ")";
   return os.str();
 }
 

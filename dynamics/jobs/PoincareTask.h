@@ -1,5 +1,6 @@
-// PoincareTask.h -- a Poincare map as a job: streams map points; after an edit of the problem, method or section
-// parameters it goes on from its last point, completed again through the new integrals where it can be.
+// PoincareTask.h -- a Poincare map as a job: streams map points; after an edit of the problem, method or
+// section parameters it goes on from its last point, completed again through the new integrals where it can
+// be.
 #pragma once
 #include "dynamics/jobs/Channel.h"
 #include "dynamics/jobs/RunSpec.h"
@@ -16,15 +17,15 @@ public:
   bool run(const ToolControl& control) override;
   void reset() override;
 
-  /// Only while the job does not run (Job::edit). Throws InputError, changing nothing, when the last point has no
-  /// state under the new parameters (it lies outside the new region of allowed motion).
+  /// Only while the job does not run (Job::edit). Throws InputError, changing nothing, when the last point
+  /// has no state under the new parameters (it lies outside the new region of allowed motion).
   void edit(RunSpec spec, SectionSettings settings);
   const RunSpec& spec() const { return spec_; }
   const SectionSettings& settings() const { return settings_; }
   /// The points, streamed (thread-safe).
   Channel<MapPoint>& points() { return points_; }
-  /// The full state at the last point (the trajectory's "current" state for the tools hung under it); only while
-  /// the job does not run.
+  /// The full state at the last point (the trajectory's "current" state for the tools hung under it); only
+  /// while the job does not run.
   Eigen::VectorXd lastState() const;
   const std::vector<std::string>& coordinateNames() const { return map_->coordinateNames(); }
 

@@ -15,7 +15,8 @@ std::string RunSpec::describe() const {
   std::ostringstream os;
   const auto list = [&](const ParameterValues& p) {
     const auto& specs = p.table().specs();
-    for (std::size_t i = 0; i < specs.size(); ++i) os << (i ? ", " : "") << specs[i].id << "=" << p.values()[i];
+    for (std::size_t i = 0; i < specs.size(); ++i)
+      os << (i ? ", " : "") << specs[i].id << "=" << p.values()[i];
   };
   os << integrator->id << "(";
   list(integratorParameters);

@@ -1,5 +1,6 @@
 // RunSpec.h -- what a trajectory needs, in dynamics terms: the model kind and its parameter values, the
-// integration method and its parameters, the initial state. Tasks rebuild their model and integrators from it.
+// integration method and its parameters, the initial state. Tasks rebuild their model and integrators from
+// it.
 #pragma once
 #include "dynamics/core/ModelRegistry.h"
 #include "dynamics/integrators/Integrator.h"

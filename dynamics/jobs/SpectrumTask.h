@@ -1,4 +1,5 @@
-// SpectrumTask.h -- the Fourier spectrum of an observable along a trajectory, as a job (one result at the end).
+// SpectrumTask.h -- the Fourier spectrum of an observable along a trajectory, as a job (one result at the
+// end).
 #pragma once
 #include "dynamics/jobs/Channel.h"
 #include "dynamics/jobs/RunSpec.h"
@@ -9,7 +10,8 @@ namespace rv {
 
 class SpectrumTask final : public Task {
 public:
-  SpectrumTask(RunSpec spec, SpectrumSettings settings) : spec_(std::move(spec)), settings_(std::move(settings)) {}
+  SpectrumTask(RunSpec spec, SpectrumSettings settings)
+      : spec_(std::move(spec)), settings_(std::move(settings)) {}
   std::string name() const override { return "Fourier spectrum"; }
   std::string describe() const override { return spec_.describe() + " function(" + settings_.function + ")"; }
   /// Samples from the start each time (a spectrum needs its samples in one piece).

@@ -15,32 +15,76 @@ const ModelInfo& BallOnEllipsoid::staticInfo() {
   static const ModelInfo info{
       .id = "ball_on_ellipsoid",
       .title = "Homogeneous ball rolling on a triaxial ellipsoid (manual §3.3)",
-      .reference = "Borisov, Mamaev, Nonholonomic dynamical systems (2002); manual §3.3 with the erratum to (20)",
+      .reference =
+          "Borisov, Mamaev, Nonholonomic dynamical systems (2002); manual §3.3 with the erratum to (20)",
       .parameters =
           {
-              {.id = "energy", .label = "Energy", .defaultValue = 0.5, .min = 0,
+              {.id = "energy",
+               .label = "Energy",
+               .defaultValue = 0.5,
+               .min = 0,
                .description = "energy H of (14) at which a map point is completed"},
-              {.id = "integral", .label = "Integral", .defaultValue = 0.2,
-               .description = "value of the integral K of (20) at which a 2D map point (l, L/G) is completed"},
-              {.id = "mu", .label = "mu", .defaultValue = 0.4, .min = 0, .description = "central moment of inertia of the ball"},
+              {.id = "integral",
+               .label = "Integral",
+               .defaultValue = 0.2,
+               .description =
+                   "value of the integral K of (20) at which a 2D map point (l, L/G) is completed"},
+              {.id = "mu",
+               .label = "mu",
+               .defaultValue = 0.4,
+               .min = 0,
+               .description = "central moment of inertia of the ball"},
               {.id = "D", .label = "D", .defaultValue = 1.0, .min = 0, .description = "D = m R^2"},
               {.id = "R", .label = "R", .defaultValue = 0.3, .min = 0, .description = "radius of the ball"},
-              {.id = "b1", .label = "b1", .defaultValue = 1.5, .min = 0,
+              {.id = "b1",
+               .label = "b1",
+               .defaultValue = 1.5,
+               .min = 0,
                .description = "semi-axis of the ellipsoid on which the centre moves, axis 1"},
-              {.id = "b2", .label = "b2", .defaultValue = 1.1, .min = 0,
+              {.id = "b2",
+               .label = "b2",
+               .defaultValue = 1.1,
+               .min = 0,
                .description = "semi-axis of the ellipsoid on which the centre moves, axis 2"},
-              {.id = "b3", .label = "b3", .defaultValue = 0.8, .min = 0,
+              {.id = "b3",
+               .label = "b3",
+               .defaultValue = 0.8,
+               .min = 0,
                .description = "semi-axis of the ellipsoid on which the centre moves, axis 3"},
-              {.id = "k", .label = "k", .defaultValue = 0.0, .description = "field k |x|^2 / 2 of the centre x (19)"},
-              {.id = "c1", .label = "c1", .defaultValue = 0.0, .min = 0, .description = "field c1 / x1^2 (19)"},
-              {.id = "c2", .label = "c2", .defaultValue = 0.0, .min = 0, .description = "field c2 / x2^2 (19)"},
-              {.id = "c3", .label = "c3", .defaultValue = 0.0, .min = 0, .description = "field c3 / x3^2 (19)"},
-              {.id = "root_step", .label = "Step of root finding", .defaultValue = 1e-3, .min = 1e-9, .max = 1,
+              {.id = "k",
+               .label = "k",
+               .defaultValue = 0.0,
+               .description = "field k |x|^2 / 2 of the centre x (19)"},
+              {.id = "c1",
+               .label = "c1",
+               .defaultValue = 0.0,
+               .min = 0,
+               .description = "field c1 / x1^2 (19)"},
+              {.id = "c2",
+               .label = "c2",
+               .defaultValue = 0.0,
+               .min = 0,
+               .description = "field c2 / x2^2 (19)"},
+              {.id = "c3",
+               .label = "c3",
+               .defaultValue = 0.0,
+               .min = 0,
+               .description = "field c3 / x3^2 (19)"},
+              {.id = "root_step",
+               .label = "Step of root finding",
+               .defaultValue = 1e-3,
+               .min = 1e-9,
+               .max = 1,
                .description = "scan step in H/G when a 2D map point is completed"},
-              {.id = "root_accuracy", .label = "Accuracy of root finding", .defaultValue = 1e-15, .min = 0, .max = 1,
+              {.id = "root_accuracy",
+               .label = "Accuracy of root finding",
+               .defaultValue = 1e-15,
+               .min = 0,
+               .max = 1,
                .description = "accuracy of the completed H/G"},
           },
-      .stateNames = {"M1", "M2", "M3", "gamma1", "gamma2", "gamma3", "q0", "q1", "q2", "q3", "s_surface", "s_ball"},
+      .stateNames = {"M1", "M2", "M3", "gamma1", "gamma2", "gamma3", "q0", "q1", "q2", "q3", "s_surface",
+                     "s_ball"},
       .coreDimension = 6,
       .integralNames = {"E", "geometric", "K"},
       .hasMeasure = true,
@@ -78,8 +122,9 @@ BallOnEllipsoid::BallOnEllipsoid(const ParameterValues& p)
   const auto gam = [](const double* s) { return Eigen::Vector3d(s[3], s[4], s[5]); };
   for (int i = 0; i < 3; ++i) {
     const std::string n = std::to_string(i + 1);
-    addObservable("omega" + n, "angular velocity, fixed axis " + n,
-                  [=, this](double, const double* s) { return ball_on_surface::omega<double>(M(s), gam(s), mu_, D_)[i]; });
+    addObservable("omega" + n, "angular velocity, fixed axis " + n, [=, this](double, const double* s) {
+      return ball_on_surface::omega<double>(M(s), gam(s), mu_, D_)[i];
+    });
     addObservable("x" + n, "centre of the ball, fixed axis " + n,
                   [=, this](double, const double* s) { return centre<double>(gam(s))[i]; });
   }
@@ -91,15 +136,18 @@ BallOnEllipsoid::BallOnEllipsoid(const ParameterValues& p)
   observables_.back().angle = true;
   addObservable("L/G", "Andoyer-Deprit L/G", [ad](double, const double* s) { return ad(s).L / ad(s).G; });
   addObservable("H/G", "Andoyer-Deprit H/G", [ad](double, const double* s) { return ad(s).H / ad(s).G; });
-  addObservable("Lsurface", "length of the contact point's trace on the ellipsoid", [](double, const double* s) { return s[10]; });
-  addObservable("Lball", "length of the contact point's trace on the ball", [](double, const double* s) { return s[11]; });
+  addObservable("Lsurface", "length of the contact point's trace on the ellipsoid",
+                [](double, const double* s) { return s[10]; });
+  addObservable("Lball", "length of the contact point's trace on the ball",
+                [](double, const double* s) { return s[11]; });
   addObservable("Ldiff", "Lsurface - Lball", [](double, const double* s) { return s[10] - s[11]; });
 }
 
 double BallOnEllipsoid::energy(const Eigen::Vector3d& M, const Eigen::Vector3d& g) const {
   const Eigen::Vector3d x = centre<double>(g);
   double U = 0.5 * k_ * x.squaredNorm();
-  for (int i = 0; i < 3; ++i) U += c_[i] / (x[i] * x[i]);
+  for (int i = 0; i < 3; ++i)
+    U += c_[i] / (x[i] * x[i]);
   return ball_on_surface::kinetic(M, g, mu_, D_) + U;
 }
 
@@ -107,7 +155,8 @@ double BallOnEllipsoid::integralK(const Eigen::Vector3d& M, const Eigen::Vector3
   const Eigen::Vector3d w = ball_on_surface::omega<double>(M, g, mu_, D_), gw = g.cross(w);
   const Eigen::Vector3d x = centre<double>(g);
   double field = k_;
-  for (int i = 0; i < 3; ++i) field -= 2 * c_[i] / (B_[i] * x[i] * x[i]);
+  for (int i = 0; i < 3; ++i)
+    field -= 2 * c_[i] / (B_[i] * x[i] * x[i]);
   return gw.dot(Binv_.cwiseProduct(gw)) / g.dot(B_.cwiseProduct(g)) -
          x.dot(Binv_.cwiseProduct(Binv_.cwiseProduct(x))) * field / (mu_ + D_);
 }
@@ -190,9 +239,14 @@ Eigen::VectorXd BallOnEllipsoid::stateFromMap(const std::vector<double>& point, 
     return complete(HG, m, gg) ? integralK(m, gg) - K0 : std::nan("");
   };
   std::vector<double> roots;
-  for (double r : findRoots([&](double HG) { const double v = gap(HG); return std::isnan(v) ? 1e300 : v; },
-                            -1 + 1e-12, 1 - 1e-12, params_["root_step"], params_["root_accuracy"]))
-    if (std::abs(gap(r)) < 1e-8 * std::max(1.0, std::abs(K0))) roots.push_back(r); // not a jump at a forbidden zone
+  for (double r : findRoots(
+           [&](double HG) {
+             const double v = gap(HG);
+             return std::isnan(v) ? 1e300 : v;
+           },
+           -1 + 1e-12, 1 - 1e-12, params_["root_step"], params_["root_accuracy"]))
+    if (std::abs(gap(r)) < 1e-8 * std::max(1.0, std::abs(K0)))
+      roots.push_back(r); // not a jump at a forbidden zone
   if (roots.empty() || spec.root < 1 || spec.root > static_cast<int>(roots.size())) {
     where << " and integral K = " << K0;
     if (roots.empty())

@@ -14,31 +14,65 @@ const ModelInfo& BallOnParaboloid::staticInfo() {
     ModelInfo i{
         .id = "ball_on_paraboloid",
         .title = "Homogeneous ball rolling in a cubically perturbed paraboloid bowl (manual §3.4)",
-        .reference = "Borisov, Mamaev, Nonholonomic dynamical systems (2002); manual §3.4 with the erratum to (22)",
+        .reference =
+            "Borisov, Mamaev, Nonholonomic dynamical systems (2002); manual §3.4 with the erratum to (22)",
         .parameters =
             {
-                {.id = "energy", .label = "Energy", .defaultValue = 0.05, .min = 0,
+                {.id = "energy",
+                 .label = "Energy",
+                 .defaultValue = 0.05,
+                 .min = 0,
                  .description = "energy (M, w)/2 + m g z at which a map point is completed"},
-                {.id = "p", .label = "p", .defaultValue = 1.0, .min = 0,
+                {.id = "p",
+                 .label = "p",
+                 .defaultValue = 1.0,
+                 .min = 0,
                  .description = "radius of curvature of the centre's paraboloid along x (b1 of (21))"},
-                {.id = "q", .label = "q", .defaultValue = 2.0, .min = 0,
+                {.id = "q",
+                 .label = "q",
+                 .defaultValue = 2.0,
+                 .min = 0,
                  .description = "radius of curvature of the centre's paraboloid along y (b2 of (21))"},
                 {.id = "R", .label = "R", .defaultValue = 0.3, .min = 0, .description = "radius of the ball"},
-                {.id = "mu", .label = "mu", .defaultValue = 0.036, .min = 0, .description = "central moment of inertia of the ball"},
+                {.id = "mu",
+                 .label = "mu",
+                 .defaultValue = 0.036,
+                 .min = 0,
+                 .description = "central moment of inertia of the ball"},
                 {.id = "D", .label = "D", .defaultValue = 0.09, .min = 0, .description = "D = m R^2"},
-                {.id = "m", .label = "m", .defaultValue = 1.0, .min = 0, .description = "mass of the ball (weight m g)"},
-                {.id = "g", .label = "g", .defaultValue = 1.0, .min = 0, .description = "acceleration of gravity"},
-                {.id = "Lambda1", .label = "Lambda1", .defaultValue = 0.0, .description = "perturbation L1 x^3 / 3 of (21)"},
-                {.id = "Lambda2", .label = "Lambda2", .defaultValue = 0.0, .description = "perturbation L2 x^2 y / 3 of (21)"},
-                {.id = "Lambda3", .label = "Lambda3", .defaultValue = 0.0, .description = "perturbation L3 x y^2 / 3 of (21)"},
-                {.id = "Lambda4", .label = "Lambda4", .defaultValue = 0.0, .description = "perturbation L4 y^3 / 3 of (21)"},
+                {.id = "m",
+                 .label = "m",
+                 .defaultValue = 1.0,
+                 .min = 0,
+                 .description = "mass of the ball (weight m g)"},
+                {.id = "g",
+                 .label = "g",
+                 .defaultValue = 1.0,
+                 .min = 0,
+                 .description = "acceleration of gravity"},
+                {.id = "Lambda1",
+                 .label = "Lambda1",
+                 .defaultValue = 0.0,
+                 .description = "perturbation L1 x^3 / 3 of (21)"},
+                {.id = "Lambda2",
+                 .label = "Lambda2",
+                 .defaultValue = 0.0,
+                 .description = "perturbation L2 x^2 y / 3 of (21)"},
+                {.id = "Lambda3",
+                 .label = "Lambda3",
+                 .defaultValue = 0.0,
+                 .description = "perturbation L3 x y^2 / 3 of (21)"},
+                {.id = "Lambda4",
+                 .label = "Lambda4",
+                 .defaultValue = 0.0,
+                 .description = "perturbation L4 y^3 / 3 of (21)"},
             },
         .stateNames = {"M1", "M2", "M3", "x1", "x2", "q0", "q1", "q2", "q3", "s_surface", "s_ball"},
         .coreDimension = 5,
         .integralNames = {"E", "F"},
         .hasMeasure = true,
         .mapCoordinates = {"x1", "omega1", "omega2"},
-      .section = "x2",
+        .section = "x2",
     };
     return i;
   }();
@@ -46,13 +80,14 @@ const ModelInfo& BallOnParaboloid::staticInfo() {
 }
 
 BallOnParaboloid::BallOnParaboloid(const ParameterValues& p)
-    : ModelWithField(staticInfo(), p), p_(p["p"]), q_(p["q"]), R_(p["R"]), mu_(p["mu"]), D_(p["D"]), m_(p["m"]),
-      g_(p["g"]), L_{p["Lambda1"], p["Lambda2"], p["Lambda3"], p["Lambda4"]} {
+    : ModelWithField(staticInfo(), p), p_(p["p"]), q_(p["q"]), R_(p["R"]), mu_(p["mu"]), D_(p["D"]),
+      m_(p["m"]), g_(p["g"]), L_{p["Lambda1"], p["Lambda2"], p["Lambda3"], p["Lambda4"]} {
   for (const char* id : {"p", "q", "R", "mu", "D", "m"})
     if (!(p[id] > 0)) throw InputError(std::string(id) + ": must be positive");
   if (!(R_ < std::min(p_, q_)))
-    throw InputError("R: the ball must be smaller than the bowl's least radius of curvature min(p, q) (here " +
-                     std::to_string(std::min(p_, q_)) + ")");
+    throw InputError(
+        "R: the ball must be smaller than the bowl's least radius of curvature min(p, q) (here " +
+        std::to_string(std::min(p_, q_)) + ")");
   addStandardObservables();
   const auto n = [this](const double* s) { return normalAt(s[3], s[4]); };
   const auto w = [this, n](const double* s) {
@@ -60,18 +95,24 @@ BallOnParaboloid::BallOnParaboloid(const ParameterValues& p)
   };
   for (int i = 0; i < 3; ++i) {
     const std::string k = std::to_string(i + 1);
-    addObservable("omega" + k, "angular velocity, fixed axis " + k, [w, i](double, const double* s) { return w(s)[i]; });
-    addObservable("gamma" + k, "normal of the bowl at the contact, axis " + k, [n, i](double, const double* s) { return n(s)[i]; });
+    addObservable("omega" + k, "angular velocity, fixed axis " + k,
+                  [w, i](double, const double* s) { return w(s)[i]; });
+    addObservable("gamma" + k, "normal of the bowl at the contact, axis " + k,
+                  [n, i](double, const double* s) { return n(s)[i]; });
   }
-  addObservable("x3", "height of the centre", [this](double, const double* s) { return height<double>(s[3], s[4]).phi; });
-  addObservable("Lsurface", "length of the contact point's trace on the bowl", [](double, const double* s) { return s[9]; });
-  addObservable("Lball", "length of the contact point's trace on the ball", [](double, const double* s) { return s[10]; });
+  addObservable("x3", "height of the centre",
+                [this](double, const double* s) { return height<double>(s[3], s[4]).phi; });
+  addObservable("Lsurface", "length of the contact point's trace on the bowl",
+                [](double, const double* s) { return s[9]; });
+  addObservable("Lball", "length of the contact point's trace on the ball",
+                [](double, const double* s) { return s[10]; });
   addObservable("Ldiff", "Lsurface - Lball", [](double, const double* s) { return s[9] - s[10]; });
 }
 
 double BallOnParaboloid::energy(const double* s) const {
   const Eigen::Vector3d M(s[0], s[1], s[2]);
-  return ball_on_surface::kinetic(M, normalAt(s[3], s[4]), mu_, D_) + m_ * g_ * height<double>(s[3], s[4]).phi;
+  return ball_on_surface::kinetic(M, normalAt(s[3], s[4]), mu_, D_) +
+         m_ * g_ * height<double>(s[3], s[4]).phi;
 }
 
 Eigen::VectorXd BallOnParaboloid::integrals(const double* s) const {
@@ -105,14 +146,15 @@ std::optional<BodyPose> BallOnParaboloid::pose(const double* s) const {
 }
 
 std::optional<SupportSurface> BallOnParaboloid::support() const {
-  // the bowl the ball touches (the centre's surface moved by -R n), out to where the energy lets the centre climb
+  // the bowl the ball touches (the centre's surface moved by -R n), out to where the energy lets the centre
+  // climb
   const double climb = std::max(params_["energy"] / (m_ * g_), 0.2 * std::max(p_, q_));
   const double ru = 1.4 * std::sqrt(2 * p_ * climb), rv = 1.4 * std::sqrt(2 * q_ * climb);
   return SupportSurface{[this, ru, rv](double a, double r) {
-                          const double u = r * ru * std::cos(2 * std::numbers::pi * a);
-                          const double v = r * rv * std::sin(2 * std::numbers::pi * a);
-                          return Eigen::Vector3d(centre(u, v) - R_ * normalAt(u, v));
-                        }};
+    const double u = r * ru * std::cos(2 * std::numbers::pi * a);
+    const double v = r * rv * std::sin(2 * std::numbers::pi * a);
+    return Eigen::Vector3d(centre(u, v) - R_ * normalAt(u, v));
+  }};
 }
 
 Eigen::VectorXd BallOnParaboloid::stateFrom(const Eigen::Vector3d& w, double u, double v) const {
@@ -140,7 +182,8 @@ Eigen::VectorXd BallOnParaboloid::stateFromNamed(const std::map<std::string, dou
     s = stateFrom(w, named.at("x1"), named.at("x2"));
   } else {
     for (const char* k : {"M1", "M2", "M3"})
-      if (!named.count(k)) throw InputError(context + ": missing state component '" + k + "' (or give omega1..3)");
+      if (!named.count(k))
+        throw InputError(context + ": missing state component '" + k + "' (or give omega1..3)");
     s = stateFrom(Eigen::Vector3d::Zero(), named.at("x1"), named.at("x2"));
   }
   assignNamed(rest, context, s);
@@ -150,7 +193,8 @@ Eigen::VectorXd BallOnParaboloid::stateFromNamed(const std::map<std::string, dou
 
 Eigen::VectorXd BallOnParaboloid::stateFromMap(const std::vector<double>& point, const MapPointSpec& spec,
                                                const std::string& context) const {
-  if (point.size() != 3) throw InputError(context + ": ball_on_paraboloid map points are (x1, omega1, omega2)");
+  if (point.size() != 3)
+    throw InputError(context + ": ball_on_paraboloid map points are (x1, omega1, omega2)");
   const double u = point[0], v = spec.sectionValue, w1 = point[1], w2 = point[2], E = params_["energy"];
   const Eigen::Vector3d n = normalAt(u, v);
   // (M, w) = (mu + D)|w|^2 - D (n, w)^2 = 2 (E - m g z): a quadratic in w3
@@ -160,11 +204,13 @@ Eigen::VectorXd BallOnParaboloid::stateFromMap(const std::vector<double>& point,
   const double disc = b * b - 4 * a * c;
   if (!(disc >= 0)) {
     std::ostringstream os;
-    os << context << ": no state at (x1, omega1, omega2) = (" << u << ", " << w1 << ", " << w2 << ") on x2 = " << v
-       << " with energy " << E << " (the point lies outside the region of allowed motion)";
+    os << context << ": no state at (x1, omega1, omega2) = (" << u << ", " << w1 << ", " << w2
+       << ") on x2 = " << v << " with energy " << E
+       << " (the point lies outside the region of allowed motion)";
     throw InputError(os.str());
   }
-  if (spec.root != 1 && spec.root != 2) throw InputError(context + ": root must be 1 (the smaller omega3) or 2");
+  if (spec.root != 1 && spec.root != 2)
+    throw InputError(context + ": root must be 1 (the smaller omega3) or 2");
   const double w3 = (-b + (spec.root == 1 ? -1 : 1) * std::sqrt(disc)) / (2 * a);
   return stateFrom(Eigen::Vector3d(w1, w2, w3), u, v);
 }

@@ -1,10 +1,10 @@
-// BallOnParaboloid.h -- a homogeneous ball rolling without slipping in a bowl under gravity: its centre moves on
-// the cubically perturbed paraboloid (21), z = u^2/(2 p) + v^2/(2 q) + (L1 u^3 + L2 u^2 v + L3 u v^2 + L4 v^3)/3
-// (rollviz's p, q are the b1, b2 of (21)-(22)). Manual §3.4 with the design.md erratum to (22): the flow runs
-// gamma' = -R g3/(mu + D) gamma x (gamma x B'(gamma x M)). With all L = 0 the measure (23) and the integral
-// F = (24) + (mu + D) m g (g1^2 + g2^2)/g3^2 exist.
-// The centre's horizontal coordinates (u, v) are the state instead of gamma: gamma = n(u, v) is then explicit for
-// any perturbation (no Newton solve), and the map coordinates (x1, w1, w2) at x2 = const are state functions.
+// BallOnParaboloid.h -- a homogeneous ball rolling without slipping in a bowl under gravity: its centre moves
+// on the cubically perturbed paraboloid (21), z = u^2/(2 p) + v^2/(2 q) + (L1 u^3 + L2 u^2 v + L3 u v^2 + L4
+// v^3)/3 (rollviz's p, q are the b1, b2 of (21)-(22)). Manual §3.4 with the design.md erratum to (22): the
+// flow runs gamma' = -R g3/(mu + D) gamma x (gamma x B'(gamma x M)). With all L = 0 the measure (23) and the
+// integral F = (24) + (mu + D) m g (g1^2 + g2^2)/g3^2 exist. The centre's horizontal coordinates (u, v) are
+// the state instead of gamma: gamma = n(u, v) is then explicit for any perturbation (no Newton solve), and
+// the map coordinates (x1, w1, w2) at x2 = const are state functions.
 //
 // State (11): M (fixed frame), u, v; the ball's orientation quaternion q0..q3; trace lengths.
 #pragma once
@@ -20,12 +20,11 @@ public:
   static const ModelInfo& staticInfo();
 
   /// Height of the centre's surface and its first and second derivatives.
-  template <class S> struct Height {
-    S phi, pu, pv, puu, puv, pvv;
-  };
+  template <class S> struct Height { S phi, pu, pv, puu, puv, pvv; };
   template <class S> Height<S> height(const S& u, const S& v) const {
     const double* L = L_;
-    return {u * u / (2 * p_) + v * v / (2 * q_) + (L[0] * u * u * u + L[1] * u * u * v + L[2] * u * v * v + L[3] * v * v * v) / 3.0,
+    return {u * u / (2 * p_) + v * v / (2 * q_) +
+                (L[0] * u * u * u + L[1] * u * u * v + L[2] * u * v * v + L[3] * v * v * v) / 3.0,
             u / p_ + (3.0 * L[0] * u * u + 2.0 * L[1] * u * v + L[2] * v * v) / 3.0,
             v / q_ + (L[1] * u * u + 2.0 * L[2] * u * v + 3.0 * L[3] * v * v) / 3.0,
             1.0 / p_ + (6.0 * L[0] * u + 2.0 * L[1] * v) / 3.0,
@@ -69,7 +68,8 @@ public:
   }
   std::optional<SupportSurface> support() const override;
   /// State from M1..M3 (or omega1..omega3), x1, x2 (the centre's horizontal position).
-  Eigen::VectorXd stateFromNamed(const std::map<std::string, double>& named, const std::string& context) const override;
+  Eigen::VectorXd stateFromNamed(const std::map<std::string, double>& named,
+                                 const std::string& context) const override;
   /// (x1, w1, w2) at x2 = section value, w3 from the energy (root 1: the smaller, 2: the larger).
   Eigen::VectorXd stateFromMap(const std::vector<double>& point, const MapPointSpec& spec,
                                const std::string& context) const override;

@@ -1,7 +1,8 @@
 // BallOnSurface.h -- what a homogeneous ball rolling without slipping on a fixed surface shares, whatever the
 // surface (manual §3.3 equations (11)-(14), written in the fixed frame):
 //   M = mu w + D g x (w x g),  D = m R^2,  x' = R w x g  (x the centre, g the unit normal at the contact),
-//   M' = D g' x (w x g) + R g x F,  F = -grad U(x)  (the torque of the force on the centre about the contact),
+//   M' = D g' x (w x g) + R g x F,  F = -grad U(x)  (the torque of the force on the centre about the
+//   contact),
 // and the ball's orientation as a unit quaternion, q' = (0, w) q / 2.
 // Reference: A. V. Borisov, I. S. Mamaev, Nonholonomic dynamical systems (2002); errata in design.md.
 #pragma once

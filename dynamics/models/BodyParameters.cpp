@@ -9,11 +9,25 @@ namespace rv::rigid_body {
 
 std::vector<ParameterSpec> massParameters(double I1, double I2, double I3) {
   return {
-      {.id = "energy", .label = "Energy", .defaultValue = 1.0,
+      {.id = "energy",
+       .label = "Energy",
+       .defaultValue = 1.0,
        .description = "total energy H of (3) at which a map point is completed into a state"},
-      {.id = "I1", .label = "I1", .defaultValue = I1, .min = 0, .description = "principal central moment of inertia"},
-      {.id = "I2", .label = "I2", .defaultValue = I2, .min = 0, .description = "principal central moment of inertia"},
-      {.id = "I3", .label = "I3", .defaultValue = I3, .min = 0, .description = "principal central moment of inertia"},
+      {.id = "I1",
+       .label = "I1",
+       .defaultValue = I1,
+       .min = 0,
+       .description = "principal central moment of inertia"},
+      {.id = "I2",
+       .label = "I2",
+       .defaultValue = I2,
+       .min = 0,
+       .description = "principal central moment of inertia"},
+      {.id = "I3",
+       .label = "I3",
+       .defaultValue = I3,
+       .min = 0,
+       .description = "principal central moment of inertia"},
       {.id = "m", .label = "m", .defaultValue = 1.0, .min = 0, .description = "mass of the body"},
       {.id = "g", .label = "g", .defaultValue = 1.0, .min = 0, .description = "acceleration of gravity"},
   };
@@ -22,8 +36,11 @@ std::vector<ParameterSpec> massParameters(double I1, double I2, double I3) {
 std::vector<ParameterSpec> fieldParameters() {
   std::vector<ParameterSpec> specs;
   for (const char* id : {"B11", "B12", "B13", "B22", "B23", "B33"})
-    specs.push_back({.id = id, .label = id, .defaultValue = 0.0,
-                     .description = "extra field U = (gamma, B gamma)/2, symmetric positive semi-definite B"});
+    specs.push_back(
+        {.id = id,
+         .label = id,
+         .defaultValue = 0.0,
+         .description = "extra field U = (gamma, B gamma)/2, symmetric positive semi-definite B"});
   return specs;
 }
 
@@ -48,7 +65,8 @@ Eigen::Matrix3d fieldMatrix(const ParameterValues& p) {
   const double least = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(B).eigenvalues().minCoeff();
   if (least < -1e-14 * std::max(1.0, B.norm())) {
     std::ostringstream os;
-    os << "B11..B33: the field matrix B must be positive semi-definite (its least eigenvalue is " << least << ")";
+    os << "B11..B33: the field matrix B must be positive semi-definite (its least eigenvalue is " << least
+       << ")";
     throw InputError(os.str());
   }
   return B;

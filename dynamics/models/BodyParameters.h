@@ -1,4 +1,5 @@
-// BodyParameters.h -- parameter declarations and checks shared by the rigid bodies (mass, inertia, extra field).
+// BodyParameters.h -- parameter declarations and checks shared by the rigid bodies (mass, inertia, extra
+// field).
 #pragma once
 #include "dynamics/core/ParameterTable.h"
 

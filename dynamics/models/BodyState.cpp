@@ -10,8 +10,8 @@
 namespace rv::body_state {
 
 std::vector<std::string> names() {
-  return {"M1", "M2", "M3", "gamma1", "gamma2", "gamma3", "alpha1", "alpha2", "alpha3", "beta1", "beta2", "beta3",
-          "x", "y", "s_plane", "s_body"};
+  return {"M1",     "M2",    "M3",    "gamma1", "gamma2", "gamma3", "alpha1",  "alpha2",
+          "alpha3", "beta1", "beta2", "beta3",  "x",      "y",      "s_plane", "s_body"};
 }
 
 Eigen::VectorXd fromMomentumAndVertical(const Eigen::Vector3d& M, const Eigen::Vector3d& gamma) {
@@ -60,7 +60,8 @@ std::vector<Observable> kinematicObservables(VectorOf omega, VectorOf momentum, 
   obs.back().angle = true;
   add("L/G", "Andoyer-Deprit L/G", [ad](double, const double* x) { return ad(x).L / ad(x).G; });
   add("H/G", "Andoyer-Deprit H/G", [ad](double, const double* x) { return ad(x).H / ad(x).G; });
-  // Euler angles: gamma = (sin th sin ph, sin th cos ph, cos th), alpha3 = sin ps sin th, beta3 = -cos ps sin th
+  // Euler angles: gamma = (sin th sin ph, sin th cos ph, cos th), alpha3 = sin ps sin th, beta3 = -cos ps sin
+  // th
   const auto mod2pi = [](double a) { return std::fmod(a + 2 * std::numbers::pi, 2 * std::numbers::pi); };
   add("theta", "Euler angle theta (nutation)",
       [](double, const double* x) { return std::acos(std::clamp(x[kGamma + 2], -1.0, 1.0)); });
@@ -76,8 +77,10 @@ std::vector<Observable> kinematicObservables(VectorOf omega, VectorOf momentum, 
       [velocity](double, const double* x) { return rotation(x).row(0).dot(velocity(x)); });
   add("Vy", "velocity of the centre of mass, y",
       [velocity](double, const double* x) { return rotation(x).row(1).dot(velocity(x)); });
-  add("Lplane", "length of the contact point's trace on the plane", [](double, const double* x) { return x[kTracePlane]; });
-  add("Lbody", "length of the contact point's trace on the body", [](double, const double* x) { return x[kTraceBody]; });
+  add("Lplane", "length of the contact point's trace on the plane",
+      [](double, const double* x) { return x[kTracePlane]; });
+  add("Lbody", "length of the contact point's trace on the body",
+      [](double, const double* x) { return x[kTraceBody]; });
   add("Ldiff", "Lplane - Lbody", [](double, const double* x) { return x[kTracePlane] - x[kTraceBody]; });
   return obs;
 }

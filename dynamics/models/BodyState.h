@@ -10,16 +10,18 @@
 namespace rv::body_state {
 
 // indices into the state
-constexpr int kM = 0, kGamma = 3, kAlpha = 6, kBeta = 9, kX = 12, kY = 13, kTracePlane = 14, kTraceBody = 15, kSize = 16;
+constexpr int kM = 0, kGamma = 3, kAlpha = 6, kBeta = 9, kX = 12, kY = 13, kTracePlane = 14, kTraceBody = 15,
+              kSize = 16;
 
 /// M1..M3 gamma1..3 alpha1..3 beta1..3 x y s_plane s_body
 std::vector<std::string> names();
 
-/// A state with M and the unit vertical gamma (normalised), alpha and beta completing a right-handed fixed frame
-/// (alpha x beta = gamma), the body at the origin of the plane, traces empty.
+/// A state with M and the unit vertical gamma (normalised), alpha and beta completing a right-handed fixed
+/// frame (alpha x beta = gamma), the body at the origin of the plane, traces empty.
 Eigen::VectorXd fromMomentumAndVertical(const Eigen::Vector3d& M, const Eigen::Vector3d& gamma);
 
-/// M1..M3 and gamma1..gamma3 from named values; InputError naming `context` when one is missing or gamma is zero.
+/// M1..M3 and gamma1..gamma3 from named values; InputError naming `context` when one is missing or gamma is
+/// zero.
 std::pair<Eigen::Vector3d, Eigen::Vector3d> momentumAndVertical(const std::map<std::string, double>& named,
                                                                 const std::string& context);
 

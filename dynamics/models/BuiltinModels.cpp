@@ -13,7 +13,8 @@ namespace rv {
 
 namespace {
 template <class M> ModelEntry entryOf() {
-  return {&M::staticInfo(), [](const ParameterValues& p) -> std::unique_ptr<Model> { return std::make_unique<M>(p); }};
+  return {&M::staticInfo(),
+          [](const ParameterValues& p) -> std::unique_ptr<Model> { return std::make_unique<M>(p); }};
 }
 } // namespace
 

@@ -16,24 +16,61 @@ const ModelInfo& ChaplyginBall::staticInfo() {
   static const ModelInfo info{
       .id = "chaplygin_ball",
       .title = "Chaplygin ball with a gyrostat rolling on a plane (manual §3.5)",
-      .reference = "Borisov, Mamaev, Nonholonomic dynamical systems (2002) §8; Moskvin, Nelin. Dinam. 5 (2009)",
+      .reference =
+          "Borisov, Mamaev, Nonholonomic dynamical systems (2002) §8; Moskvin, Nelin. Dinam. 5 (2009)",
       .parameters =
           {
-              {.id = "energy", .label = "Energy", .defaultValue = 0.5, .min = 0, .max = 1e12,
+              {.id = "energy",
+               .label = "Energy",
+               .defaultValue = 0.5,
+               .min = 0,
+               .max = 1e12,
                .description = "energy h = (M, omega)/2 at which a map point is completed into a state"},
-              {.id = "c", .label = "c", .defaultValue = 0.3, .description = "area constant c = (M + K, gamma)"},
-              {.id = "I1", .label = "I1", .defaultValue = 1.0, .min = 0, .description = "principal moment of inertia"},
-              {.id = "I2", .label = "I2", .defaultValue = 1.4, .min = 0, .description = "principal moment of inertia"},
-              {.id = "I3", .label = "I3", .defaultValue = 1.9, .min = 0, .description = "principal moment of inertia"},
+              {.id = "c",
+               .label = "c",
+               .defaultValue = 0.3,
+               .description = "area constant c = (M + K, gamma)"},
+              {.id = "I1",
+               .label = "I1",
+               .defaultValue = 1.0,
+               .min = 0,
+               .description = "principal moment of inertia"},
+              {.id = "I2",
+               .label = "I2",
+               .defaultValue = 1.4,
+               .min = 0,
+               .description = "principal moment of inertia"},
+              {.id = "I3",
+               .label = "I3",
+               .defaultValue = 1.9,
+               .min = 0,
+               .description = "principal moment of inertia"},
               {.id = "R", .label = "R", .defaultValue = 1.0, .min = 0, .description = "radius of the ball"},
               {.id = "m", .label = "m", .defaultValue = 1.0, .min = 0, .description = "mass of the ball"},
-              {.id = "K1", .label = "K1", .defaultValue = 0.0, .description = "gyrostat momentum, body axis 1"},
-              {.id = "K2", .label = "K2", .defaultValue = 0.0, .description = "gyrostat momentum, body axis 2"},
-              {.id = "K3", .label = "K3", .defaultValue = 0.0, .description = "gyrostat momentum, body axis 3"},
-              {.id = "root_step", .label = "Step of root finding", .defaultValue = 1e-3, .min = 1e-12, .max = 1e6,
+              {.id = "K1",
+               .label = "K1",
+               .defaultValue = 0.0,
+               .description = "gyrostat momentum, body axis 1"},
+              {.id = "K2",
+               .label = "K2",
+               .defaultValue = 0.0,
+               .description = "gyrostat momentum, body axis 2"},
+              {.id = "K3",
+               .label = "K3",
+               .defaultValue = 0.0,
+               .description = "gyrostat momentum, body axis 3"},
+              {.id = "root_step",
+               .label = "Step of root finding",
+               .defaultValue = 1e-3,
+               .min = 1e-12,
+               .max = 1e6,
                .description = "scan step in G when a map point is completed through the energy"},
-              {.id = "root_accuracy", .label = "Accuracy of root finding", .defaultValue = 1e-15, .min = 0,
-               .max = 1, .description = "relative accuracy of the completed G"},
+              {.id = "root_accuracy",
+               .label = "Accuracy of root finding",
+               .defaultValue = 1e-15,
+               .min = 0,
+               .max = 1,
+               .description = "relative accuracy of the completed G"},
           },
       .stateNames = body_state::names(),
       .coreDimension = 6,
@@ -50,7 +87,8 @@ ChaplyginBall::ChaplyginBall(const ParameterValues& p) : ModelWithField(staticIn
   if (!(p["R"] > 0)) throw InputError("R: the radius must be positive");
   R_ = p["R"];
   D_ = p["m"] * R_ * R_;
-  for (int i = 0; i < 3; ++i) Jinv_[i] = 1.0 / (I[i] + D_);
+  for (int i = 0; i < 3; ++i)
+    Jinv_[i] = 1.0 / (I[i] + D_);
   K_ = {p["K1"], p["K2"], p["K3"]};
 
   addStandardObservables();
@@ -129,7 +167,8 @@ Eigen::VectorXd ChaplyginBall::stateFromMap(const std::vector<double>& point, co
   const auto roots = completionRoots(l, LG, spec.sectionValue);
   if (roots.empty() || spec.root < 1 || spec.root > static_cast<int>(roots.size())) {
     std::ostringstream os;
-    os << context << ": no state at (l, L/G) = (" << l << ", " << LG << ") with energy " << E << " and c = " << c;
+    os << context << ": no state at (l, L/G) = (" << l << ", " << LG << ") with energy " << E
+       << " and c = " << c;
     if (roots.empty())
       os << " (the point lies outside the region of allowed motion)";
     else

@@ -35,7 +35,8 @@ public:
 
   /// omega from M and gamma: M = I omega + D gamma x (omega x gamma), solved in closed form.
   template <class S>
-  Eigen::Matrix<S, 3, 1> angularVelocity(const Eigen::Matrix<S, 3, 1>& M, const Eigen::Matrix<S, 3, 1>& g) const;
+  Eigen::Matrix<S, 3, 1> angularVelocity(const Eigen::Matrix<S, 3, 1>& M,
+                                         const Eigen::Matrix<S, 3, 1>& g) const;
   double radius() const { return R_; }
 
 private:
@@ -48,7 +49,7 @@ private:
 
 template <class S>
 Eigen::Matrix<S, 3, 1> ChaplyginBall::angularVelocity(const Eigen::Matrix<S, 3, 1>& M,
-                                                       const Eigen::Matrix<S, 3, 1>& g) const {
+                                                      const Eigen::Matrix<S, 3, 1>& g) const {
   // J omega = M + D (gamma, omega) gamma  =>  (gamma, omega) = (gamma, J^-1 M) / (1 - D (gamma, J^-1 gamma))
   const Eigen::Matrix<S, 3, 1> JiM = Jinv_.cast<S>().cwiseProduct(M), Jig = Jinv_.cast<S>().cwiseProduct(g);
   const S s = g.dot(JiM) / (S(1) - D_ * g.dot(Jig));
@@ -68,7 +69,7 @@ template <class S> void ChaplyginBall::field(const Vec<S>& x, Vec<S>& dx) const 
   const S vx = R_ * w.dot(b), vy = -R_ * w.dot(a); // (30), r = -R gamma
   dx[12] = vx;
   dx[13] = vy;
-  dx[14] = sqrt(vx * vx + vy * vy);                      // speed of the contact point on the plane
+  dx[14] = sqrt(vx * vx + vy * vy);                            // speed of the contact point on the plane
   dx[15] = R_ * sqrt(dx.template segment<3>(3).squaredNorm()); // ... and on the ball: |d(-R gamma)/dt|
 }
 

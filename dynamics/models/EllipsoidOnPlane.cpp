@@ -15,23 +15,44 @@ const ModelInfo& EllipsoidOnPlane::staticInfo() {
         .coreDimension = 6,
         .integralNames = {"E", "geometric"},
         .mapCoordinates = {"l", "L/G", "H/G"},
-      .section = "g",
+        .section = "g",
     };
     // a solid-looking rattleback: long and flat, centre of mass below the centre, axes turned by psi
     std::vector<ParameterSpec> specs = rigid_body::massParameters(0.082, 0.832, 0.85);
     const char* axis[3] = {"1", "2", "3"};
     const double b[3] = {2.0, 0.5, 0.4};
     for (int k = 0; k < 3; ++k)
-      specs.push_back({.id = std::string("b") + axis[k], .label = std::string("b") + axis[k], .defaultValue = b[k],
-                       .min = 0, .description = std::string("semi-axis of the ellipsoid, body axis ") + axis[k]});
+      specs.push_back({.id = std::string("b") + axis[k],
+                       .label = std::string("b") + axis[k],
+                       .defaultValue = b[k],
+                       .min = 0,
+                       .description = std::string("semi-axis of the ellipsoid, body axis ") + axis[k]});
     const double a[3] = {0, 0, -0.1};
     for (int k = 0; k < 3; ++k)
-      specs.push_back({.id = std::string("a") + axis[k], .label = std::string("a") + axis[k], .defaultValue = a[k],
-                       .description = std::string("centre of mass offset from the geometric centre (the centre lies at -a), axis ") + axis[k]});
-    specs.push_back({.id = "phi", .label = "Phi", .defaultValue = 0, .unit = "rad", .description = "Euler angle of the dynamical axes (9)"});
-    specs.push_back({.id = "theta", .label = "Theta", .defaultValue = 0, .unit = "rad", .description = "Euler angle of the dynamical axes (9)"});
-    specs.push_back({.id = "psi", .label = "Psi", .defaultValue = 0.1, .unit = "rad", .description = "Euler angle of the dynamical axes (9)"});
-    for (auto& s : rigid_body::fieldParameters()) specs.push_back(s);
+      specs.push_back(
+          {.id = std::string("a") + axis[k],
+           .label = std::string("a") + axis[k],
+           .defaultValue = a[k],
+           .description =
+               std::string("centre of mass offset from the geometric centre (the centre lies at -a), axis ") +
+               axis[k]});
+    specs.push_back({.id = "phi",
+                     .label = "Phi",
+                     .defaultValue = 0,
+                     .unit = "rad",
+                     .description = "Euler angle of the dynamical axes (9)"});
+    specs.push_back({.id = "theta",
+                     .label = "Theta",
+                     .defaultValue = 0,
+                     .unit = "rad",
+                     .description = "Euler angle of the dynamical axes (9)"});
+    specs.push_back({.id = "psi",
+                     .label = "Psi",
+                     .defaultValue = 0.1,
+                     .unit = "rad",
+                     .description = "Euler angle of the dynamical axes (9)"});
+    for (auto& s : rigid_body::fieldParameters())
+      specs.push_back(s);
     i.parameters = ParameterTable(specs);
     return i;
   }();
@@ -42,7 +63,7 @@ Eigen::Matrix3d EllipsoidOnPlane::eulerRotation(double phi, double theta, double
   const double cf = std::cos(phi), sf = std::sin(phi), ct = std::cos(theta), st = std::sin(theta);
   const double cp = std::cos(psi), sp = std::sin(psi);
   Eigen::Matrix3d Q;
-  Q << cf * cp - ct * sp * sf, cf * sp + ct * cp * sf, sf * st, //
+  Q << cf * cp - ct * sp * sf, cf * sp + ct * cp * sf, sf * st,  //
       -sf * cp - ct * sp * cf, -sf * sp + ct * cp * cf, cf * st, //
       st * sp, -st * cp, ct;
   return Q;

@@ -1,6 +1,7 @@
-// EllipsoidOnPlane.h -- a triaxial ellipsoid with an offset centre of mass and rotated principal axes rolling on
-// a plane (the rattleback family): manual §3.2, equations (2), integrals (3), Gauss map (8) with the erratum
-// r = -B^2 gamma / sqrt(gamma, B^2 gamma) - a, B = diag(b1, b2, b3); inertia Q^T diag(I) Q with Q of (9).
+// EllipsoidOnPlane.h -- a triaxial ellipsoid with an offset centre of mass and rotated principal axes rolling
+// on a plane (the rattleback family): manual §3.2, equations (2), integrals (3), Gauss map (8) with the
+// erratum r = -B^2 gamma / sqrt(gamma, B^2 gamma) - a, B = diag(b1, b2, b3); inertia Q^T diag(I) Q with Q of
+// (9).
 #pragma once
 #include "dynamics/models/RigidBodyOnPlane.h"
 
@@ -27,7 +28,8 @@ public:
     return BodyGeometry{.shape = BodyShape::Ellipsoid, .centre = -a_, .semiAxes = b2_.cwiseSqrt()};
   }
 
-  Eigen::VectorXd stateFromNamed(const std::map<std::string, double>& named, const std::string& context) const override {
+  Eigen::VectorXd stateFromNamed(const std::map<std::string, double>& named,
+                                 const std::string& context) const override {
     return namedState(named, context);
   }
   Eigen::VectorXd stateFromMap(const std::vector<double>& point, const MapPointSpec& spec,

@@ -12,8 +12,13 @@ const ModelInfo& HenonHeiles::staticInfo() {
       .id = "henon_heiles",
       .title = "Henon-Heiles system (reference Hamiltonian flow)",
       .reference = "M. Henon, C. Heiles, Astron. J. 69 (1964) 73",
-      .parameters = {{.id = "energy", .label = "Energy", .defaultValue = 0.125, .min = 0, .max = 1.0 / 6.0,
-                      .description = "energy at which a map point (y, py) is completed (bounded motion below 1/6)"}},
+      .parameters = {{.id = "energy",
+                      .label = "Energy",
+                      .defaultValue = 0.125,
+                      .min = 0,
+                      .max = 1.0 / 6.0,
+                      .description =
+                          "energy at which a map point (y, py) is completed (bounded motion below 1/6)"}},
       .stateNames = {"x", "y", "px", "py"},
       .coreDimension = 4,
       .integralNames = {"E"},
@@ -24,7 +29,9 @@ const ModelInfo& HenonHeiles::staticInfo() {
   return info;
 }
 
-HenonHeiles::HenonHeiles(const ParameterValues& p) : ModelWithField(staticInfo(), p) { addStandardObservables(); }
+HenonHeiles::HenonHeiles(const ParameterValues& p) : ModelWithField(staticInfo(), p) {
+  addStandardObservables();
+}
 
 double HenonHeiles::hamiltonian(const double* s) {
   const double x = s[0], y = s[1];

@@ -1,6 +1,7 @@
 // HenonHeiles.h -- the Henon-Heiles Hamiltonian, a reference flow for the map tools:
-// H = (px^2 + py^2)/2 + (x^2 + y^2)/2 + x^2 y - y^3/3; section x = 0 crossed with px > 0, map coordinates (y, py).
-// Reference: M. Henon, C. Heiles, The applicability of the third integral of motion, Astron. J. 69 (1964) 73.
+// H = (px^2 + py^2)/2 + (x^2 + y^2)/2 + x^2 y - y^3/3; section x = 0 crossed with px > 0, map coordinates (y,
+// py). Reference: M. Henon, C. Heiles, The applicability of the third integral of motion, Astron. J. 69
+// (1964) 73.
 #pragma once
 #include "dynamics/core/ModelWithField.h"
 

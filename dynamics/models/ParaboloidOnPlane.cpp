@@ -9,23 +9,36 @@ const ModelInfo& ParaboloidOnPlane::staticInfo() {
     ModelInfo i{
         .id = "paraboloid_on_plane",
         .title = "Elliptic paraboloid rolling on a plane (manual §3.1)",
-        .reference = "Borisov, Mamaev, Nonholonomic dynamical systems (2002); manual §3.1 with the erratum to (5)",
+        .reference =
+            "Borisov, Mamaev, Nonholonomic dynamical systems (2002); manual §3.1 with the erratum to (5)",
         .stateNames = body_state::names(),
         .coreDimension = 6,
         .integralNames = {"E", "geometric"},
         .mapCoordinates = {"l", "L/G", "H/G"},
-      .section = "g",
+        .section = "g",
     };
     std::vector<ParameterSpec> specs = rigid_body::massParameters(1.0, 1.5, 2.0);
-    specs.push_back({.id = "p", .label = "p", .defaultValue = 1.0, .min = 0,
+    specs.push_back({.id = "p",
+                     .label = "p",
+                     .defaultValue = 1.0,
+                     .min = 0,
                      .description = "principal radius of curvature at the vertex, axis 1"});
-    specs.push_back({.id = "q", .label = "q", .defaultValue = 2.0, .min = 0,
+    specs.push_back({.id = "q",
+                     .label = "q",
+                     .defaultValue = 2.0,
+                     .min = 0,
                      .description = "principal radius of curvature at the vertex, axis 2"});
-    specs.push_back({.id = "h", .label = "h", .defaultValue = 0.5,
+    specs.push_back({.id = "h",
+                     .label = "h",
+                     .defaultValue = 0.5,
                      .description = "height of the centre of mass above the vertex, on the axis"});
-    specs.push_back({.id = "delta", .label = "delta", .defaultValue = 0.2, .unit = "rad",
+    specs.push_back({.id = "delta",
+                     .label = "delta",
+                     .defaultValue = 0.2,
+                     .unit = "rad",
                      .description = "angle of the dynamical axes from the geometric ones about the axis"});
-    for (auto& s : rigid_body::fieldParameters()) specs.push_back(s);
+    for (auto& s : rigid_body::fieldParameters())
+      specs.push_back(s);
     i.parameters = ParameterTable(specs);
     return i;
   }();

@@ -1,5 +1,6 @@
-// ParaboloidOnPlane.h -- an elliptic paraboloid rolling on a plane: manual §3.1, equations (2), integrals (3),
-// surface and Gauss map (5) with the erratum r3 = -h + (p g1^2 + q g2^2) / (2 g3^2), inertia rotated by delta (6).
+// ParaboloidOnPlane.h -- an elliptic paraboloid rolling on a plane: manual §3.1, equations (2), integrals
+// (3), surface and Gauss map (5) with the erratum r3 = -h + (p g1^2 + q g2^2) / (2 g3^2), inertia rotated by
+// delta (6).
 #pragma once
 #include "dynamics/models/RigidBodyOnPlane.h"
 
@@ -12,7 +13,8 @@ public:
 
   /// (5): the contact point of the surface whose outer normal is -gamma (needs gamma3 > 0).
   template <class S> V3<S> contact(const V3<S>& g) const {
-    return V3<S>(-p_ * g[0] / g[2], -q_ * g[1] / g[2], -h_ + (p_ * g[0] * g[0] + q_ * g[1] * g[1]) / (2 * g[2] * g[2]));
+    return V3<S>(-p_ * g[0] / g[2], -q_ * g[1] / g[2],
+                 -h_ + (p_ * g[0] * g[0] + q_ * g[1] * g[1]) / (2 * g[2] * g[2]));
   }
   template <class S> V3<S> contactRate(const V3<S>& g, const V3<S>& dg) const {
     const S g3 = g[2], g32 = g3 * g3;
@@ -23,11 +25,15 @@ public:
   /// The paraboloid touches the plane only while its axis points up (gamma3 > 0).
   bool touches(const Eigen::Vector3d& g) const { return g[2] > 1e-6; }
   std::optional<BodyGeometry> geometry() const override {
-    return BodyGeometry{.shape = BodyShape::Paraboloid, .centre = Eigen::Vector3d(0, 0, -h_), .p = p_, .q = q_,
+    return BodyGeometry{.shape = BodyShape::Paraboloid,
+                        .centre = Eigen::Vector3d(0, 0, -h_),
+                        .p = p_,
+                        .q = q_,
                         .height = 1.5 * std::max(std::max(p_, q_), h_)};
   }
 
-  Eigen::VectorXd stateFromNamed(const std::map<std::string, double>& named, const std::string& context) const override {
+  Eigen::VectorXd stateFromNamed(const std::map<std::string, double>& named,
+                                 const std::string& context) const override {
     return namedState(named, context);
   }
   Eigen::VectorXd stateFromMap(const std::vector<double>& point, const MapPointSpec& spec,

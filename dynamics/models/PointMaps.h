@@ -1,7 +1,8 @@
 // PointMaps.h -- explicit point maps, models of kind Map: rhs() is the map itself, jacobian() its derivative,
 // so that every tool that works on a Poincare map works on them too.
 // References: M. Henon, A two-dimensional mapping with a strange attractor, Comm. Math. Phys. 50 (1976) 69;
-//             B. V. Chirikov, A universal instability of many-dimensional oscillator systems, Phys. Rep. 52 (1979).
+//             B. V. Chirikov, A universal instability of many-dimensional oscillator systems, Phys. Rep. 52
+//             (1979).
 #pragma once
 #include "dynamics/core/ModelWithField.h"
 

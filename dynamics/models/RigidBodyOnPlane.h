@@ -5,8 +5,8 @@
 // Reference: A. V. Borisov, I. S. Mamaev, Nonholonomic dynamical systems (2002); Borisov, Mamaev, Strange
 //            attractors in rattleback dynamics, Physics-Uspekhi 46 (2003).
 //
-// State (16): M (momentum about the contact point), gamma (upward vertical), alpha, beta (fixed horizontal axes),
-// all in the body frame; X, Y (centre of mass on the plane); s_plane, s_body (trace lengths).
+// State (16): M (momentum about the contact point), gamma (upward vertical), alpha, beta (fixed horizontal
+// axes), all in the body frame; X, Y (centre of mass on the plane); s_plane, s_body (trace lengths).
 #pragma once
 #include "dynamics/core/ModelWithField.h"
 #include "dynamics/models/BodyParameters.h"
@@ -22,8 +22,8 @@ struct RigidBodyConstants {
   Eigen::Matrix3d field = Eigen::Matrix3d::Zero(); ///< B of U = (gamma, B gamma) / 2
 };
 
-
-/// The equations, generic in the surface (Derived provides contact<S>(gamma) and contactRate<S>(gamma, dgamma)).
+/// The equations, generic in the surface (Derived provides contact<S>(gamma) and contactRate<S>(gamma,
+/// dgamma)).
 template <class Derived> class RigidBodyOnPlane : public ModelWithField<Derived, 16, 6> {
 public:
   using Base = ModelWithField<Derived, 16, 6>;
@@ -39,7 +39,8 @@ public:
     const S rr = r.squaredNorm();
     for (int i = 0; i < 3; ++i) {
       A(i, i) += c_.mass * rr;
-      for (int j = 0; j < 3; ++j) A(i, j) -= c_.mass * r[i] * r[j];
+      for (int j = 0; j < 3; ++j)
+        A(i, j) -= c_.mass * r[i] * r[j];
     }
     return A.inverse() * M;
   }
@@ -53,8 +54,8 @@ public:
     const V3<S> dg = g.cross(w);
     const V3<S> dr = self().template contactRate<S>(g, dg);
     const V3<S> Bg = c_.field.template cast<S>() * g;
-    dx.template segment<3>(0) = M.cross(w) + c_.mass * dr.cross(w.cross(r)) + (c_.mass * c_.gravity) * r.cross(g) +
-                                g.cross(Bg); // (2)
+    dx.template segment<3>(0) = M.cross(w) + c_.mass * dr.cross(w.cross(r)) +
+                                (c_.mass * c_.gravity) * r.cross(g) + g.cross(Bg); // (2)
     dx.template segment<3>(3) = dg;
     dx.template segment<3>(6) = a.cross(w);
     dx.template segment<3>(9) = b.cross(w);
@@ -106,7 +107,8 @@ protected:
   Eigen::VectorXd stateFrom(const Eigen::Vector3d& M, const Eigen::Vector3d& gamma) const;
   Eigen::VectorXd namedState(const std::map<std::string, double>& named, const std::string& context) const;
   /// (l, L/G, H/G) at g = g0: gamma from the angles, G from the energy (E is quadratic in G).
-  Eigen::VectorXd mapState(const std::vector<double>& point, const MapPointSpec& spec, const std::string& context) const;
+  Eigen::VectorXd mapState(const std::vector<double>& point, const MapPointSpec& spec,
+                           const std::string& context) const;
 
   RigidBodyConstants c_;
 

@@ -26,7 +26,8 @@ SpectrumResult spectrumOf(const std::vector<double>& x, double step, const Spect
   r.samples = n;
   // Hann window; remove the mean so the zero-frequency bin does not hide low peaks
   double mean = 0;
-  for (double v : x) mean += v;
+  for (double v : x)
+    mean += v;
   mean /= n;
   std::vector<double> in(n);
   double windowSum = 0;
@@ -49,7 +50,8 @@ SpectrumResult spectrumOf(const std::vector<double>& x, double step, const Spect
   }
   const double df = 1.0 / (n * step);
   std::vector<double> amp(out.size());
-  for (std::size_t k = 0; k < out.size(); ++k) amp[k] = 2 * std::abs(out[k]) / windowSum;
+  for (std::size_t k = 0; k < out.size(); ++k)
+    amp[k] = 2 * std::abs(out[k]) / windowSum;
   for (std::size_t k = 0; k < out.size(); ++k) {
     if (s.maxFrequency > 0 && k * df > s.maxFrequency) break;
     r.frequency.push_back(k * df);
@@ -59,11 +61,13 @@ SpectrumResult spectrumOf(const std::vector<double>& x, double step, const Spect
   std::vector<SpectrumPeak> candidates;
   for (std::size_t k = 1; k + 1 < r.amplitude.size(); ++k) {
     if (!(amp[k] > amp[k - 1] && amp[k] >= amp[k + 1]) || amp[k] <= 0) continue;
-    const double a = std::log(std::max(amp[k - 1], 1e-300)), b = std::log(amp[k]), c = std::log(std::max(amp[k + 1], 1e-300));
+    const double a = std::log(std::max(amp[k - 1], 1e-300)), b = std::log(amp[k]),
+                 c = std::log(std::max(amp[k + 1], 1e-300));
     const double d = a - 2 * b + c, offset = d < 0 ? 0.5 * (a - c) / d : 0.0;
     candidates.push_back({(k + offset) * df, std::exp(b - 0.25 * (a - c) * offset)});
   }
-  std::sort(candidates.begin(), candidates.end(), [](const auto& p, const auto& q) { return p.amplitude > q.amplitude; });
+  std::sort(candidates.begin(), candidates.end(),
+            [](const auto& p, const auto& q) { return p.amplitude > q.amplitude; });
   for (const auto& c : candidates) {
     if (static_cast<int>(r.peaks.size()) >= s.peaks) break;
     const bool separate = std::all_of(r.peaks.begin(), r.peaks.end(), [&](const SpectrumPeak& p) {
@@ -74,10 +78,11 @@ SpectrumResult spectrumOf(const std::vector<double>& x, double step, const Spect
   return r;
 }
 
-SpectrumResult fourierSpectrum(const Model& model, Integrator& integ, bool fixedStep, const SpectrumSettings& s,
-                               const ToolControl& control) {
+SpectrumResult fourierSpectrum(const Model& model, Integrator& integ, bool fixedStep,
+                               const SpectrumSettings& s, const ToolControl& control) {
   if (!fixedStep)
-    throw InputError("spectrum: needs a fixed-step integrator (rk4 or everhart): the samples must be evenly spaced");
+    throw InputError(
+        "spectrum: needs a fixed-step integrator (rk4 or everhart): the samples must be evenly spaced");
   const int i = model.findObservable(s.function);
   if (i < 0) throw InputError("spectrum: unknown function '" + s.function + "' of " + model.info().id);
   if (s.samples < 8) throw InputError("spectrum: at least 8 samples are needed");

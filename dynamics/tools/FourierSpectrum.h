@@ -1,7 +1,7 @@
 // FourierSpectrum.h -- the amplitude spectrum of an observable along a trajectory (manual §2.3.2), sampled at
-// every step of a fixed-step integrator, Hann-windowed, transformed by FFTW (M. Frigo, S. G. Johnson, The design
-// and implementation of FFTW3, Proc. IEEE 93 (2005) 216), with its strongest peaks located by parabolic
-// interpolation of the log amplitude around each local maximum.
+// every step of a fixed-step integrator, Hann-windowed, transformed by FFTW (M. Frigo, S. G. Johnson, The
+// design and implementation of FFTW3, Proc. IEEE 93 (2005) 216), with its strongest peaks located by
+// parabolic interpolation of the log amplitude around each local maximum.
 #pragma once
 #include "dynamics/integrators/Integrator.h"
 #include "dynamics/tools/ToolControl.h"
@@ -12,11 +12,11 @@
 namespace rv {
 
 struct SpectrumSettings {
-  std::string function;          ///< observable to expand
-  long samples = 16384;          ///< number of iterations (integration steps) sampled
-  double maxFrequency = 0;       ///< frequencies above are computed but not returned (0: all)
-  int peaks = 5;                 ///< how many of the strongest peaks to report
-  double minPeakDistance = 0;    ///< peaks closer than this (in frequency) count as one
+  std::string function;       ///< observable to expand
+  long samples = 16384;       ///< number of iterations (integration steps) sampled
+  double maxFrequency = 0;    ///< frequencies above are computed but not returned (0: all)
+  int peaks = 5;              ///< how many of the strongest peaks to report
+  double minPeakDistance = 0; ///< peaks closer than this (in frequency) count as one
 };
 
 struct SpectrumPeak {
@@ -31,8 +31,8 @@ struct SpectrumResult {
   long samples = 0;                         ///< samples actually taken (fewer when stopped)
 };
 
-/// Samples the observable at t0, t0 + h, ... from a started fixed-step integrator. Throws InputError for an unknown
-/// observable, too few samples or an integrator whose step varies.
+/// Samples the observable at t0, t0 + h, ... from a started fixed-step integrator. Throws InputError for an
+/// unknown observable, too few samples or an integrator whose step varies.
 SpectrumResult fourierSpectrum(const Model& model, Integrator& integrator, bool fixedStep,
                                const SpectrumSettings& settings, const ToolControl& control = {});
 

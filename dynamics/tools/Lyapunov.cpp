@@ -11,7 +11,8 @@ namespace rv {
 
 double LyapunovEstimate::sum() const {
   double s = 0;
-  for (double e : exponents) s += e;
+  for (double e : exponents)
+    s += e;
   return s;
 }
 
@@ -46,7 +47,8 @@ void orthonormalize(Eigen::MatrixXd& V, Eigen::VectorXd& logs) {
 }
 
 // advances an integrator to exactly t (interpolating past it) and restarts it there from `out`
-void advanceTo(Integrator& integ, const Model& m, double t, Eigen::VectorXd& out, const ToolControl& control) {
+void advanceTo(Integrator& integ, const Model& m, double t, Eigen::VectorXd& out,
+               const ToolControl& control) {
   const int dir = integ.direction();
   while (dir * (integ.time() - t) < 0) {
     if (control.stopRequested()) {
@@ -68,7 +70,8 @@ LyapunovRun::LyapunovRun(const Model& model, IntegratorFactory makeIntegrator, c
     : model_(model), make_(std::move(makeIntegrator)), s_(std::move(settings)) {
   m_ = model.info().coreDimension, n_ = model.dimension();
   k_ = s_.count > 0 ? s_.count : m_;
-  if (k_ > m_) throw InputError("lyapunov: at most " + std::to_string(m_) + " exponents for " + model.info().id);
+  if (k_ > m_)
+    throw InputError("lyapunov: at most " + std::to_string(m_) + " exponents for " + model.info().id);
   if (!(s_.interval > 0)) throw InputError("lyapunov: the interval must be positive");
   if (!(s_.perturbation > 0) || !(s_.maxPerturbation >= s_.perturbation))
     throw InputError("lyapunov: need 0 < perturbation <= max perturbation");
@@ -130,20 +133,23 @@ bool LyapunovRun::interval(const ToolControl& control) {
   } else {
     for (;;) { // cut the interval short while a perturbation grows beyond its maximum
       std::vector<Eigen::VectorXd> ends(k_ + 1);
-      for (int j = 0; j <= k_; ++j) advanceTo(*integs_[j], model_, t_ + step, ends[j], control);
+      for (int j = 0; j <= k_; ++j)
+        advanceTo(*integs_[j], model_, t_ + step, ends[j], control);
       if (control.stopRequested()) {
         startAll(t_);
         return false;
       }
       double worst = 0;
-      for (int j = 1; j <= k_; ++j) worst = std::max(worst, (ends[j] - ends[0]).head(m_).norm());
+      for (int j = 1; j <= k_; ++j)
+        worst = std::max(worst, (ends[j] - ends[0]).head(m_).norm());
       if (worst > s_.maxPerturbation && step > 1e-9 * interval_ && !model_.isMap()) {
         step /= 2;
         startAll(t_); // x and V still hold the interval's start
         continue;
       }
       x_ = ends[0];
-      for (int j = 0; j < k_; ++j) V_.col(j) = (ends[j + 1] - ends[0]).head(m_) / s_.perturbation;
+      for (int j = 0; j < k_; ++j)
+        V_.col(j) = (ends[j + 1] - ends[0]).head(m_) / s_.perturbation;
       break;
     }
   }
@@ -154,7 +160,8 @@ bool LyapunovRun::interval(const ToolControl& control) {
   return true;
 }
 
-bool LyapunovRun::run(const std::function<void(const LyapunovEstimate&)>& onEstimate, const ToolControl& control) {
+bool LyapunovRun::run(const std::function<void(const LyapunovEstimate&)>& onEstimate,
+                      const ToolControl& control) {
   result_.stopped = false;
   while (t_ < s_.maxTime && !result_.converged) {
     if (control.stopRequested() || !interval(control)) {
@@ -181,8 +188,9 @@ bool LyapunovRun::run(const std::function<void(const LyapunovEstimate&)>& onEsti
   return true;
 }
 
-LyapunovResult lyapunovExponents(const Model& model, const IntegratorFactory& makeIntegrator, const Eigen::VectorXd& x0,
-                                 const LyapunovSettings& s, const std::function<void(const LyapunovEstimate&)>& onEstimate,
+LyapunovResult lyapunovExponents(const Model& model, const IntegratorFactory& makeIntegrator,
+                                 const Eigen::VectorXd& x0, const LyapunovSettings& s,
+                                 const std::function<void(const LyapunovEstimate&)>& onEstimate,
                                  const ToolControl& control) {
   LyapunovRun run(model, makeIntegrator, x0, s);
   run.run(onEstimate, control);

@@ -17,13 +17,16 @@ PoincareMap::PoincareMap(const Model& model, std::unique_ptr<Integrator> integra
   if (!model.isMap()) {
     const std::string id = s_.observable.empty() ? model.info().section : s_.observable;
     section_ = find(id);
-    if (!section_) throw InputError("poincare.section: unknown observable '" + id + "' of " + model.info().id);
+    if (!section_)
+      throw InputError("poincare.section: unknown observable '" + id + "' of " + model.info().id);
   }
   names_ = model.info().mapCoordinates;
   if (names_.empty())
     for (int i = 0; i < model.info().coreDimension; ++i)
-      if (!section_ || model.info().stateNames[i] != section_->id) names_.push_back(model.info().stateNames[i]);
-  for (const auto& n : names_) coords_.push_back(find(n));
+      if (!section_ || model.info().stateNames[i] != section_->id)
+        names_.push_back(model.info().stateNames[i]);
+  for (const auto& n : names_)
+    coords_.push_back(find(n));
   last_ = integ_->state();
   work_.resize(last_.size());
   sigma_ = section_ ? sectionFunction(integ_->time(), integ_->state()) : 0;
@@ -41,7 +44,8 @@ bool PoincareMap::acceptable(double t, const Eigen::VectorXd& x) const {
 
 std::vector<double> PoincareMap::coordinatesOf(double t, const Eigen::VectorXd& x) const {
   std::vector<double> c;
-  for (const Observable* o : coords_) c.push_back(o->value(t, x.data()));
+  for (const Observable* o : coords_)
+    c.push_back(o->value(t, x.data()));
   return c;
 }
 
@@ -57,7 +61,8 @@ std::optional<MapPoint> PoincareMap::next(const ToolControl& control) {
     } else {
       const double sigmaBefore = sigma_;
       sigma_ = sectionFunction(t, integ_->state());
-      // a crossing in the requested direction of time-forward motion (the sign flips when integrating backward)
+      // a crossing in the requested direction of time-forward motion (the sign flips when integrating
+      // backward)
       const double rising = dir * (sigma_ - sigmaBefore);
       const bool crossed = (sigmaBefore < 0) != (sigma_ < 0) && sigmaBefore != 0;
       if (!crossed || (s_.checkDirection && rising * s_.direction <= 0)) continue;

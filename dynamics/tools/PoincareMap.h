@@ -1,7 +1,8 @@
 // PoincareMap.h -- points where a trajectory crosses a section (manual §2.3.1): the section is a level of an
-// observable (an angle's level is crossed where sin(value - v0) changes sign with cos > 0), crossings are bracketed
-// between steps and located on the integrator's dense output by the Illinois variant of regula falsi (Dowell &
-// Jarratt, BIT 11 (1971) 168) to the requested accuracy in time. For an explicit map every iterate is a point.
+// observable (an angle's level is crossed where sin(value - v0) changes sign with cos > 0), crossings are
+// bracketed between steps and located on the integrator's dense output by the Illinois variant of regula
+// falsi (Dowell & Jarratt, BIT 11 (1971) 168) to the requested accuracy in time. For an explicit map every
+// iterate is a point.
 #pragma once
 #include "dynamics/integrators/Integrator.h"
 #include "dynamics/tools/ToolControl.h"
@@ -14,28 +15,30 @@
 namespace rv {
 
 struct SectionSettings {
-  std::string observable;    ///< empty: the model's default section
-  double value = 0;          ///< the section's level
+  std::string observable; ///< empty: the model's default section
+  double value = 0;       ///< the section's level
   bool checkDirection = true;
-  int direction = +1;        ///< +1: the observable increases through the level, -1: decreases
-  double accuracy = 1e-12;   ///< of the crossing time
-  bool backward = false;     ///< integrate backward in time
-  bool manySheeted = false;  ///< keep only points on sheet `root`
+  int direction = +1;       ///< +1: the observable increases through the level, -1: decreases
+  double accuracy = 1e-12;  ///< of the crossing time
+  bool backward = false;    ///< integrate backward in time
+  bool manySheeted = false; ///< keep only points on sheet `root`
   int root = 1;
-  int order = 1;             ///< keep every order-th crossing (the map to this power)
-  long maxPoints = 0;        ///< 0: no limit
-  double maxTime = 1e300;    ///< stop integrating at this time
+  int order = 1;          ///< keep every order-th crossing (the map to this power)
+  long maxPoints = 0;     ///< 0: no limit
+  double maxTime = 1e300; ///< stop integrating at this time
 };
 
 struct MapPoint {
   std::vector<double> coordinates;
   double time = 0;
-  int sheet = 0; ///< the sheet (root of the completion) in many-sheeted mode; 0: not determined (it can be costly)
+  int sheet =
+      0; ///< the sheet (root of the completion) in many-sheeted mode; 0: not determined (it can be costly)
 };
 
 class PoincareMap {
 public:
-  /// `integrator` must be started (at the trajectory's first point). Throws InputError for an unknown section.
+  /// `integrator` must be started (at the trajectory's first point). Throws InputError for an unknown
+  /// section.
   PoincareMap(const Model& model, std::unique_ptr<Integrator> integrator, SectionSettings settings);
   /// The next point kept by the settings; nothing when stopped, at maxTime or after maxPoints points.
   std::optional<MapPoint> next(const ToolControl& control = {});

@@ -11,7 +11,8 @@ detail::TangentInfo makeTangentInfo(const Model& base, int k) {
   info.id = base.info().id + "+tangent";
   const int m = base.info().coreDimension;
   for (int j = 0; j < k; ++j)
-    for (int i = 0; i < m; ++i) info.stateNames.push_back("v" + std::to_string(j + 1) + "_" + std::to_string(i + 1));
+    for (int i = 0; i < m; ++i)
+      info.stateNames.push_back("v" + std::to_string(j + 1) + "_" + std::to_string(i + 1));
   info.integralNames.clear();
   info.hasMeasure = false;
   return t;
@@ -28,14 +29,16 @@ void TangentSystem::rhs(const double* x, double* dx) const {
   base_.rhs(x, dx);
   // the core block of the Jacobian (the core evolves on its own, so it is all that tangent vectors need)
   base_.coreJacobian(x, J_.data()); // row-major m x m
-  // dV = J V by plain loops: the sizes are tiny and a general matrix product costs more in dispatch than in work
+  // dV = J V by plain loops: the sizes are tiny and a general matrix product costs more in dispatch than in
+  // work
   const double* J = J_.data();
   for (int c = 0; c < k_; ++c) {
     const double* v = x + n_ + c * m_;
     double* dv = dx + n_ + c * m_;
     for (int i = 0; i < m_; ++i) {
       double sum = 0;
-      for (int l = 0; l < m_; ++l) sum += J[i * m_ + l] * v[l];
+      for (int l = 0; l < m_; ++l)
+        sum += J[i * m_ + l] * v[l];
       dv[i] = sum;
     }
   }

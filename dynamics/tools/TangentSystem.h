@@ -1,5 +1,6 @@
-// TangentSystem.h -- a model together with k tangent vectors in its core coordinates: the variational equations
-// V' = J(x) V of a flow (or V -> J(x) V for a map), with the model's exact Jacobian. Any integrator integrates it.
+// TangentSystem.h -- a model together with k tangent vectors in its core coordinates: the variational
+// equations V' = J(x) V of a flow (or V -> J(x) V for a map), with the model's exact Jacobian. Any integrator
+// integrates it.
 #pragma once
 #include "dynamics/core/Model.h"
 
@@ -15,7 +16,8 @@ struct TangentInfo {
 
 class TangentSystem final : private detail::TangentInfo, public Model {
 public:
-  /// State: the base state (n components), then k tangent vectors of the core dimension m, column after column.
+  /// State: the base state (n components), then k tangent vectors of the core dimension m, column after
+  /// column.
   TangentSystem(const Model& base, int vectors);
   void rhs(const double* x, double* dx) const override;
   /// Not needed by any tool; throws.

@@ -15,7 +15,7 @@
 namespace rv {
 
 Rgb seriesColor(int i) {
-  static const Rgb palette[] = {{0.12, 0.38, 0.85}, {0.85, 0.25, 0.15}, {0.15, 0.6, 0.25}, {0.6, 0.25, 0.7},
+  static const Rgb palette[] = {{0.12, 0.38, 0.85}, {0.85, 0.25, 0.15}, {0.15, 0.6, 0.25},  {0.6, 0.25, 0.7},
                                 {0.9, 0.55, 0.1},   {0.1, 0.6, 0.65},   {0.45, 0.45, 0.45}, {0.7, 0.55, 0.2}};
   return palette[i % 8];
 }
@@ -35,7 +35,9 @@ PoincareChart::PoincareChart(std::string xTitle, std::string yTitle) {
 
 PoincareChart::~PoincareChart() = default;
 
-vtkChartXY* PoincareChart::chart() const { return chart_; }
+vtkChartXY* PoincareChart::chart() const {
+  return chart_;
+}
 
 int PoincareChart::addSeries(const std::vector<double>& x, const std::vector<double>& y, const Rgb& c) {
   vtkNew<vtkTable> table;
@@ -62,10 +64,13 @@ int PoincareChart::addSeries(const std::vector<double>& x, const std::vector<dou
 
 void PoincareChart::select(int index) {
   for (vtkIdType i = 0; i < chart_->GetNumberOfPlots(); ++i)
-    if (auto* points = vtkPlotPoints::SafeDownCast(chart_->GetPlot(i))) points->SetMarkerSize(i == index ? 6 : 3);
+    if (auto* points = vtkPlotPoints::SafeDownCast(chart_->GetPlot(i)))
+      points->SetMarkerSize(i == index ? 6 : 3);
   selected_ = index;
 }
 
-void PoincareChart::attach(vtkRenderWindow* window) { view_->SetRenderWindow(window); }
+void PoincareChart::attach(vtkRenderWindow* window) {
+  view_->SetRenderWindow(window);
+}
 
 } // namespace rv

@@ -1,6 +1,6 @@
-// PoincareChart.h -- the Poincare map as a VTK chart (manual §2.4.1): one coloured point series per trajectory,
-// the selected one drawn larger, axes named after the map coordinates. Rendered in any render window (on screen
-// through QtVtkWidget, headless through a HeadlessContext).
+// PoincareChart.h -- the Poincare map as a VTK chart (manual §2.4.1): one coloured point series per
+// trajectory, the selected one drawn larger, axes named after the map coordinates. Rendered in any render
+// window (on screen through QtVtkWidget, headless through a HeadlessContext).
 #pragma once
 #include "render/ViewOptions.h"
 

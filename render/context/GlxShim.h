@@ -13,11 +13,15 @@ using Proc = void (*)();
 using Loader = Proc (*)(const char*);
 inline Loader loader = nullptr; ///< set by a headless backend once its context is current
 inline char fakeDisplay[64];
-template <class F> F real(const char* name) { return reinterpret_cast<F>(dlsym(RTLD_NEXT, name)); }
+template <class F> F real(const char* name) {
+  return reinterpret_cast<F>(dlsym(RTLD_NEXT, name));
+}
 } // namespace rv::glxshim
 
 extern "C" {
-static void* rvShimGetCurrentDisplay() { return rv::glxshim::fakeDisplay; }
+static void* rvShimGetCurrentDisplay() {
+  return rv::glxshim::fakeDisplay;
+}
 
 __attribute__((visibility("default"))) rv::glxshim::Proc glXGetProcAddressARB(const unsigned char* name) {
   using namespace rv::glxshim;

@@ -20,8 +20,17 @@ namespace {
 class OsMesaContext final : public HeadlessContext {
 public:
   OsMesaContext(int w, int h) : buffer_(std::size_t(w) * h * 4), w_(w), h_(h) {
-    const int attr[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 24, OSMESA_PROFILE, OSMESA_CORE_PROFILE,
-                        OSMESA_CONTEXT_MAJOR_VERSION, 3, OSMESA_CONTEXT_MINOR_VERSION, 2, 0};
+    const int attr[] = {OSMESA_FORMAT,
+                        OSMESA_RGBA,
+                        OSMESA_DEPTH_BITS,
+                        24,
+                        OSMESA_PROFILE,
+                        OSMESA_CORE_PROFILE,
+                        OSMESA_CONTEXT_MAJOR_VERSION,
+                        3,
+                        OSMESA_CONTEXT_MINOR_VERSION,
+                        2,
+                        0};
     ctx_ = OSMesaCreateContextAttribs(attr, nullptr);
     if (!ctx_ || !makeCurrent()) throw ComputationError("cannot create an OpenGL 3.2 core OSMesa context");
     glxshim::loader = [](const char* n) { return reinterpret_cast<glxshim::Proc>(OSMesaGetProcAddress(n)); };

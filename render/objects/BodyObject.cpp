@@ -59,7 +59,8 @@ void BodyObject::show(const FrameState& s) {
   if (!s.pose) return;
   vtkNew<vtkMatrix4x4> m;
   for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) m->SetElement(i, j, s.pose->rotation(i, j));
+    for (int j = 0; j < 3; ++j)
+      m->SetElement(i, j, s.pose->rotation(i, j));
     m->SetElement(i, 3, s.pose->center[i]);
   }
   body_->SetUserMatrix(m);

@@ -1,6 +1,6 @@
-// BodyObject.h -- a rigid body (ball, ellipsoid, paraboloid) drawn from its mesh in its own frame and placed by
-// the pose; textured so that turning and spinning are visible, with a dark disc on the plane under the contact
-// point (a cheap depth cue on software GL).
+// BodyObject.h -- a rigid body (ball, ellipsoid, paraboloid) drawn from its mesh in its own frame and placed
+// by the pose; textured so that turning and spinning are visible, with a dark disc on the plane under the
+// contact point (a cheap depth cue on software GL).
 #pragma once
 #include "dynamics/core/Model.h"
 #include "render/objects/VisualObject.h"

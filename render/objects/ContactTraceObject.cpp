@@ -6,7 +6,8 @@ ContactTraceObject::ContactTraceObject(std::string name, double scale, long maxP
     : VisualObject(std::move(name)), lift_(6e-3 * scale), line_(2e-3 * scale, maxPoints) {}
 
 void ContactTraceObject::apply(const ObjectOptions& o) {
-  line_.setAppearance(o.traceColor.value_or(o.color.value_or(Rgb{0.82, 0.13, 0.1})), o.lineWidth, o.opacity, o.enabled);
+  line_.setAppearance(o.traceColor.value_or(o.color.value_or(Rgb{0.82, 0.13, 0.1})), o.lineWidth, o.opacity,
+                      o.enabled);
 }
 
 void ContactTraceObject::advance(const FrameState& s) {

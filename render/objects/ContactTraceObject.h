@@ -1,5 +1,5 @@
-// ContactTraceObject.h -- the path of the contact point on the fixed surface (the plane, an ellipsoid, a bowl),
-// drawn just off the surface along its normal.
+// ContactTraceObject.h -- the path of the contact point on the fixed surface (the plane, an ellipsoid, a
+// bowl), drawn just off the surface along its normal.
 #pragma once
 #include "render/GrowingPolyline.h"
 #include "render/objects/VisualObject.h"

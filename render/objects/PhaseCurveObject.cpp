@@ -10,7 +10,9 @@
 namespace rv {
 
 namespace {
-double component(const FrameState& s, int i) { return i < s.model.dimension() ? s.x[i] : 0.0; }
+double component(const FrameState& s, int i) {
+  return i < s.model.dimension() ? s.x[i] : 0.0;
+}
 } // namespace
 
 PhaseCurveObject::PhaseCurveObject(std::string name, double scale, long maxPoints, bool asPoints)

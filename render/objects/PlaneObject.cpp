@@ -28,7 +28,8 @@ PlaneObject::PlaneObject(std::string name, double cell, double halfSize)
   quad_->GetPointData()->SetTCoords(tc);
   vtkNew<vtkFloatArray> normals;
   normals->SetNumberOfComponents(3);
-  for (int i = 0; i < 4; ++i) normals->InsertNextTuple3(0, 0, 1);
+  for (int i = 0; i < 4; ++i)
+    normals->InsertNextTuple3(0, 0, 1);
   quad_->GetPointData()->SetNormals(normals);
   vtkNew<vtkCellArray> polys;
   const vtkIdType ids[4] = {0, 1, 2, 3};
@@ -43,7 +44,9 @@ PlaneObject::PlaneObject(std::string name, double cell, double halfSize)
   place(0, 0);
 }
 
-void PlaneObject::attach(vtkRenderer* renderer) { renderer->AddActor(actor_); }
+void PlaneObject::attach(vtkRenderer* renderer) {
+  renderer->AddActor(actor_);
+}
 
 void PlaneObject::apply(const ObjectOptions& o) {
   const Rgb light = o.color.value_or(Rgb{0.93, 0.93, 0.91});

@@ -12,7 +12,8 @@
 
 namespace rv {
 
-SurfaceObject::SurfaceObject(std::string name, const SupportSurface& surface) : VisualObject(std::move(name)) {
+SurfaceObject::SurfaceObject(std::string name, const SupportSurface& surface)
+    : VisualObject(std::move(name)) {
   vtkNew<vtkPolyDataMapper> mapper;
   mapper->SetInputData(makeSurfaceMesh(surface));
   actor_ = vtkSmartPointer<vtkActor>::New();
@@ -21,7 +22,9 @@ SurfaceObject::SurfaceObject(std::string name, const SupportSurface& surface) : 
   actor_->GetProperty()->SetSpecular(0.2);
 }
 
-void SurfaceObject::attach(vtkRenderer* renderer) { renderer->AddActor(actor_); }
+void SurfaceObject::attach(vtkRenderer* renderer) {
+  renderer->AddActor(actor_);
+}
 
 void SurfaceObject::apply(const ObjectOptions& o) {
   const Rgb light = o.color.value_or(Rgb{0.93, 0.9, 0.84});

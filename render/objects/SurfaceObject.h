@@ -1,5 +1,6 @@
-// SurfaceObject.h -- the fixed surface a body rolls on when it is not the plane (the ellipsoid under a ball, the
-// bowl), drawn from the model's SupportSurface; translucent by default so that the ball and its path stay visible.
+// SurfaceObject.h -- the fixed surface a body rolls on when it is not the plane (the ellipsoid under a ball,
+// the bowl), drawn from the model's SupportSurface; translucent by default so that the ball and its path stay
+// visible.
 #pragma once
 #include "dynamics/core/Model.h"
 #include "render/objects/VisualObject.h"

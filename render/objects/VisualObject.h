@@ -1,4 +1,5 @@
-// VisualObject.h -- one named thing in a visual scene, bound to the model's state (design.md "Visual object").
+// VisualObject.h -- one named thing in a visual scene, bound to the model's state (design.md "Visual
+// object").
 #pragma once
 #include "dynamics/core/Model.h"
 #include "render/ViewOptions.h"

@@ -82,8 +82,8 @@ Mp4Writer::Mp4Writer(const std::string& path, int width, int height, int fps, co
   m.frame = av_frame_alloc();
   m.frame->format = m.enc->pix_fmt, m.frame->width = width, m.frame->height = height;
   av_frame_get_buffer(m.frame, 0);
-  m.sws = sws_getContext(width, height, AV_PIX_FMT_RGB24, width, height, AV_PIX_FMT_YUV420P, SWS_BICUBIC, nullptr,
-                         nullptr, nullptr);
+  m.sws = sws_getContext(width, height, AV_PIX_FMT_RGB24, width, height, AV_PIX_FMT_YUV420P, SWS_BICUBIC,
+                         nullptr, nullptr, nullptr);
   m.pkt = av_packet_alloc();
 }
 
@@ -109,7 +109,11 @@ void Mp4Writer::finish() {
   m.finished = true;
 }
 
-const char* Mp4Writer::codecName() const { return impl_->enc->codec->name; }
-long Mp4Writer::frames() const { return impl_->next; }
+const char* Mp4Writer::codecName() const {
+  return impl_->enc->codec->name;
+}
+long Mp4Writer::frames() const {
+  return impl_->next;
+}
 
 } // namespace rv

@@ -31,7 +31,8 @@ long exportVideo(VisualScene& scene, vtkRenderWindow* window, Integrator& integr
   long k = 0;
   for (; k < total; ++k) {
     if (progress && !progress(k, total)) break;
-    playTo(scene, integrator, t0 + integrator.direction() * spec.speed * static_cast<double>(k) / spec.fps, x);
+    playTo(scene, integrator, t0 + integrator.direction() * spec.speed * static_cast<double>(k) / spec.fps,
+           x);
     const Image frame = capture(window);
     mp4.add(frame.rgb.data());
   }

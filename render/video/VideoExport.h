@@ -20,8 +20,8 @@ struct VideoSpec {
   std::string path;
   int width = 1280, height = 720;
   int fps = 25;
-  double duration = 5;  ///< seconds of video
-  double speed = 1;     ///< simulation seconds per video second
+  double duration = 5; ///< seconds of video
+  double speed = 1;    ///< simulation seconds per video second
   std::string encoder = "libx264";
 };
 

@@ -1,6 +1,6 @@
-// Dynamics benchmarks: right-hand sides per second for every model, steps per second for every integrator, and
-// Boost.Odeint side by side on the same right-hand side (<Case>/rollviz vs <Case>/odeint).
-// Run: cmake --preset bench && cmake --build --preset bench && build/bench/tests/bench/bench_dynamics
+// Dynamics benchmarks: right-hand sides per second for every model, steps per second for every integrator,
+// and Boost.Odeint side by side on the same right-hand side (<Case>/rollviz vs <Case>/odeint). Run: cmake
+// --preset bench && cmake --build --preset bench && build/bench/tests/bench/bench_dynamics
 #include "dynamics/core/ModelRegistry.h"
 #include "dynamics/integrators/Everhart.h"
 #include "dynamics/integrators/Merson.h"
@@ -32,9 +32,11 @@ std::unique_ptr<Model> chaplygin() {
 Eigen::VectorXd startOf(const Model& m) {
   const auto& names = m.info().stateNames;
   if (m.info().id == "ball_on_paraboloid")
-    return m.stateFromNamed({{"omega1", 0.1}, {"omega2", 0.2}, {"omega3", 0.3}, {"x1", 0.2}, {"x2", 0.1}}, "bench");
+    return m.stateFromNamed({{"omega1", 0.1}, {"omega2", 0.2}, {"omega3", 0.3}, {"x1", 0.2}, {"x2", 0.1}},
+                            "bench");
   if (names.size() > 5 && names[3] == "gamma1")
-    return m.stateFromNamed({{"M1", 0.2}, {"M2", -0.3}, {"M3", 0.4}, {"gamma1", 0.1}, {"gamma2", 0.2}, {"gamma3", 1}}, "bench");
+    return m.stateFromNamed(
+        {{"M1", 0.2}, {"M2", -0.3}, {"M3", 0.4}, {"gamma1", 0.1}, {"gamma2", 0.2}, {"gamma3", 1}}, "bench");
   return Eigen::VectorXd::Constant(m.dimension(), 0.3);
 }
 
@@ -52,7 +54,9 @@ void RightHandSide(benchmark::State& state, const std::string& id) {
 // odeint's view of a rollviz model
 struct OdeintSystem {
   const Model* model;
-  void operator()(const std::vector<double>& x, std::vector<double>& dx, double) const { model->rhs(x.data(), dx.data()); }
+  void operator()(const std::vector<double>& x, std::vector<double>& dx, double) const {
+    model->rhs(x.data(), dx.data());
+  }
 };
 
 // RK4 fixed step, h = 1e-3, t = 10 on chaplygin_ball
@@ -62,7 +66,8 @@ void Rk4Chaplygin_rollviz(benchmark::State& state) {
   for (auto _ : state) {
     Rk4 rk4(1e-3);
     rk4.start(*m, 0, x0);
-    for (int i = 0; i < 10000; ++i) rk4.step();
+    for (int i = 0; i < 10000; ++i)
+      rk4.step();
     benchmark::DoNotOptimize(rk4.state().data());
   }
   state.SetItemsProcessed(state.iterations() * 10000);
@@ -75,7 +80,8 @@ void Rk4Chaplygin_odeint(benchmark::State& state) {
   for (auto _ : state) {
     std::vector<double> x(x0.data(), x0.data() + x0.size());
     double t = 0;
-    for (int i = 0; i < 10000; ++i, t += 1e-3) stepper.do_step(OdeintSystem{m.get()}, x, t, 1e-3);
+    for (int i = 0; i < 10000; ++i, t += 1e-3)
+      stepper.do_step(OdeintSystem{m.get()}, x, t, 1e-3);
     benchmark::DoNotOptimize(x.data());
   }
   state.SetItemsProcessed(state.iterations() * 10000);
@@ -92,7 +98,8 @@ void AccurateChaplygin_rollviz(benchmark::State& state) {
     const double h = 1.0 / static_cast<double>(state.range(0)); // lands on t = 1000
     Everhart e(h, 15, static_cast<int>(state.range(1)));
     e.start(*m, 0, x0);
-    for (long i = 0; i < 1000 * state.range(0); ++i) e.step();
+    for (long i = 0; i < 1000 * state.range(0); ++i)
+      e.step();
     err = std::abs(m->integrals(e.state().data())[0] - E0) / E0;
     evals = e.evaluations();
   }
@@ -114,8 +121,8 @@ void AccurateChaplygin_odeint(benchmark::State& state) {
       m->rhs(y.data(), dy.data());
     };
     odeint::integrate_adaptive(
-        odeint::make_controlled(1e-13, 1e-13, odeint::runge_kutta_fehlberg78<std::vector<double>>()), sys, x, 0.0,
-        1000.0, 0.1);
+        odeint::make_controlled(1e-13, 1e-13, odeint::runge_kutta_fehlberg78<std::vector<double>>()), sys, x,
+        0.0, 1000.0, 0.1);
     err = std::abs(m->integrals(x.data())[0] - E0) / E0;
     evals = count;
   }
@@ -133,7 +140,8 @@ void Steps(benchmark::State& state, const std::string& method) {
   if (method == "everhart15") integ = std::make_unique<Everhart>(0.2, 15, 12);
   if (method == "everhart27") integ = std::make_unique<Everhart>(0.5, 27, 12);
   integ->start(*m, 0, x0);
-  for (auto _ : state) integ->step();
+  for (auto _ : state)
+    integ->step();
   state.SetItemsProcessed(state.iterations());
 }
 
@@ -148,7 +156,10 @@ BENCHMARK_CAPTURE(RightHandSide, lorenz, std::string("lorenz"));
 BENCHMARK_CAPTURE(RightHandSide, henon_heiles, std::string("henon_heiles"));
 BENCHMARK(Rk4Chaplygin_rollviz)->Name("Rk4Chaplygin/rollviz")->Unit(benchmark::kMillisecond);
 BENCHMARK(Rk4Chaplygin_odeint)->Name("Rk4Chaplygin/odeint")->Unit(benchmark::kMillisecond);
-BENCHMARK(AccurateChaplygin_rollviz)->Name("AccurateChaplygin/rollviz")->Unit(benchmark::kMillisecond)->ArgsProduct({{1, 2}, {6, 12}});
+BENCHMARK(AccurateChaplygin_rollviz)
+    ->Name("AccurateChaplygin/rollviz")
+    ->Unit(benchmark::kMillisecond)
+    ->ArgsProduct({{1, 2}, {6, 12}});
 BENCHMARK(AccurateChaplygin_odeint)->Name("AccurateChaplygin/odeint")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(Steps, rk4, std::string("rk4"));
 BENCHMARK_CAPTURE(Steps, merson, std::string("merson"));

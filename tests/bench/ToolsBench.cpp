@@ -1,6 +1,7 @@
-// Tool benchmarks: the Poincare map's cost against plain integration of the same trajectory, crossings per second,
-// Lyapunov spectra of Lorenz (tangent and perturbed modes) beside Boost.Odeint's chaotic_system approach (the
-// variational equations integrated with runge_kutta4 and a QR every interval), and job throughput on 1 and 2 threads.
+// Tool benchmarks: the Poincare map's cost against plain integration of the same trajectory, crossings per
+// second, Lyapunov spectra of Lorenz (tangent and perturbed modes) beside Boost.Odeint's chaotic_system
+// approach (the variational equations integrated with runge_kutta4 and a QR every interval), and job
+// throughput on 1 and 2 threads.
 #include "dynamics/core/ModelRegistry.h"
 #include "dynamics/integrators/Everhart.h"
 #include "dynamics/integrators/Rk4.h"
@@ -20,10 +21,12 @@ namespace {
 
 using namespace rv;
 
-std::unique_ptr<Model> make(const std::string& id, std::initializer_list<std::pair<const char*, double>> set = {}) {
+std::unique_ptr<Model> make(const std::string& id,
+                            std::initializer_list<std::pair<const char*, double>> set = {}) {
   const auto& e = ModelRegistry::builtin().get(id);
   ParameterValues p(e.info->parameters);
-  for (const auto& [k, v] : set) p.set(k, v);
+  for (const auto& [k, v] : set)
+    p.set(k, v);
   return e.create(p);
 }
 
@@ -39,12 +42,16 @@ void PoincareCost(benchmark::State& state, bool withSection) {
       SectionSettings s;
       s.maxTime = 200;
       PoincareMap map(*m, std::move(e), s);
-      while (map.next()) ++crossings;
+      while (map.next())
+        ++crossings;
     } else {
-      while (e->time() < 200) e->step();
+      while (e->time() < 200)
+        e->step();
     }
   }
-  if (withSection) state.counters["crossings_per_second"] = benchmark::Counter(static_cast<double>(crossings), benchmark::Counter::kIsRate);
+  if (withSection)
+    state.counters["crossings_per_second"] =
+        benchmark::Counter(static_cast<double>(crossings), benchmark::Counter::kIsRate);
 }
 
 LyapunovSettings lorenzSettings(LyapunovSettings::Mode mode) {
@@ -61,7 +68,8 @@ void LorenzSpectrum(benchmark::State& state, LyapunovSettings::Mode mode) {
   x0 << 1, 1, 20;
   double l1 = 0;
   for (auto _ : state) {
-    const auto r = lyapunovExponents(*m, [] { return std::make_unique<Rk4>(0.005); }, x0, lorenzSettings(mode));
+    const auto r = lyapunovExponents(
+        *m, [] { return std::make_unique<Rk4>(0.005); }, x0, lorenzSettings(mode));
     l1 = r.last.exponents[0];
   }
   state.counters["lambda1"] = l1;
@@ -89,7 +97,8 @@ void LorenzSpectrum_odeint(benchmark::State& state) {
     boost::numeric::odeint::runge_kutta4<State12> rk4;
     double t = 0, logs[3] = {0, 0, 0};
     for (int k = 0; k < 4000; ++k) { // 4000 intervals of 0.5 = t 2000
-      for (int i = 0; i < 100; ++i, t += 0.005) rk4.do_step(sys, x, t, 0.005);
+      for (int i = 0; i < 100; ++i, t += 0.005)
+        rk4.do_step(sys, x, t, 0.005);
       Eigen::Map<Eigen::Matrix3d> V(&x[3]);
       Eigen::HouseholderQR<Eigen::Matrix3d> qr(V);
       const Eigen::Matrix3d R = qr.matrixQR().triangularView<Eigen::Upper>();
@@ -122,16 +131,26 @@ void JobThroughput(benchmark::State& state) {
     }
     std::this_thread::sleep_for(std::chrono::seconds(1));
     tree.stopAll();
-    for (auto* t : tasks) points += t->points().total();
+    for (auto* t : tasks)
+      points += t->points().total();
   }
-  state.counters["points_per_second"] = benchmark::Counter(static_cast<double>(points), benchmark::Counter::kIsRate);
+  state.counters["points_per_second"] =
+      benchmark::Counter(static_cast<double>(points), benchmark::Counter::kIsRate);
 }
 
 } // namespace
 
-BENCHMARK_CAPTURE(PoincareCost, plain, false)->Name("PoincareCost/plain_integration")->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(PoincareCost, section, true)->Name("PoincareCost/with_section")->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(LorenzSpectrum, tangent, LyapunovSettings::Mode::Tangent)->Name("LorenzSpectrum/rollviz_tangent")->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(LorenzSpectrum, perturbed, LyapunovSettings::Mode::Perturbed)->Name("LorenzSpectrum/rollviz_perturbed")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(PoincareCost, plain, false)
+    ->Name("PoincareCost/plain_integration")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(PoincareCost, section, true)
+    ->Name("PoincareCost/with_section")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(LorenzSpectrum, tangent, LyapunovSettings::Mode::Tangent)
+    ->Name("LorenzSpectrum/rollviz_tangent")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(LorenzSpectrum, perturbed, LyapunovSettings::Mode::Perturbed)
+    ->Name("LorenzSpectrum/rollviz_perturbed")
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(LorenzSpectrum_odeint)->Name("LorenzSpectrum/odeint")->Unit(benchmark::kMillisecond);
 BENCHMARK(JobThroughput)->Arg(1)->Arg(2)->Iterations(1)->UseRealTime()->Unit(benchmark::kMillisecond);

@@ -39,8 +39,10 @@ TEST(AndoyerDeprit, MatchesThePrintedComponentFormulas) {
   const double lg = L / G, hg = H / G, sl = std::sqrt(1 - lg * lg), sh = std::sqrt(1 - hg * hg);
   EXPECT_NEAR(P[0], std::sqrt(G * G - L * L) * std::sin(l), 1e-15);
   EXPECT_NEAR(P[1], std::sqrt(G * G - L * L) * std::cos(l), 1e-15);
-  EXPECT_NEAR(gam[0], (hg * sl + lg * sh * std::cos(g)) * std::sin(l) + sh * std::sin(g) * std::cos(l), 1e-15);
-  EXPECT_NEAR(gam[1], (hg * sl + lg * sh * std::cos(g)) * std::cos(l) - sh * std::sin(g) * std::sin(l), 1e-15);
+  EXPECT_NEAR(gam[0], (hg * sl + lg * sh * std::cos(g)) * std::sin(l) + sh * std::sin(g) * std::cos(l),
+              1e-15);
+  EXPECT_NEAR(gam[1], (hg * sl + lg * sh * std::cos(g)) * std::cos(l) - sh * std::sin(g) * std::sin(l),
+              1e-15);
   EXPECT_NEAR(gam[2], hg * lg - sl * sh * std::cos(g), 1e-15);
 }
 

@@ -1,5 +1,5 @@
-#include "dynamics/core/Errors.h"
 #include "dynamics/io/AtomicFile.h"
+#include "dynamics/core/Errors.h"
 
 #include <filesystem>
 #include <fstream>

@@ -2,11 +2,11 @@
 // and checks that do not come from the equations being tested: M + K is a vector fixed in space (the
 // reaction passes through the contact point), and a ball rolling on a plane leaves traces of equal length
 // on the plane and on itself.
+#include "dynamics/models/ChaplyginBall.h"
 #include "dynamics/core/Errors.h"
 #include "dynamics/integrators/Rk4.h"
 #include "dynamics/kinematics/AndoyerDeprit.h"
 #include "dynamics/models/BodyState.h"
-#include "dynamics/models/ChaplyginBall.h"
 #include "tests/dynamics/TestSupport.h"
 
 #include <gtest/gtest.h>
@@ -15,17 +15,25 @@ namespace rv {
 namespace {
 
 std::unique_ptr<Model> asymmetricBall() {
-  return test::makeModel("chaplygin_ball",
-                         {{"I1", 1.0}, {"I2", 1.4}, {"I3", 1.9}, {"m", 1.3}, {"R", 0.8}, {"K1", 0.2}, {"K2", -0.1}, {"K3", 0.3}});
+  return test::makeModel("chaplygin_ball", {{"I1", 1.0},
+                                            {"I2", 1.4},
+                                            {"I3", 1.9},
+                                            {"m", 1.3},
+                                            {"R", 0.8},
+                                            {"K1", 0.2},
+                                            {"K2", -0.1},
+                                            {"K3", 0.3}});
 }
 
 Eigen::VectorXd genericState(const Model& m) {
-  return m.stateFromNamed({{"M1", 0.7}, {"M2", -0.4}, {"M3", 0.9}, {"gamma1", 0.3}, {"gamma2", 0.5}, {"gamma3", 0.8}}, "test");
+  return m.stateFromNamed(
+      {{"M1", 0.7}, {"M2", -0.4}, {"M3", 0.9}, {"gamma1", 0.3}, {"gamma2", 0.5}, {"gamma3", 0.8}}, "test");
 }
 
 Eigen::Matrix3d spaceFrame(const Eigen::VectorXd& x) { // rows: alpha, beta, gamma in the body frame
   Eigen::Matrix3d Q;
-  Q.row(0) = x.segment<3>(6).transpose(), Q.row(1) = x.segment<3>(9).transpose(), Q.row(2) = x.segment<3>(3).transpose();
+  Q.row(0) = x.segment<3>(6).transpose(), Q.row(1) = x.segment<3>(9).transpose(),
+  Q.row(2) = x.segment<3>(3).transpose();
   return Q;
 }
 
@@ -34,16 +42,19 @@ TEST(ChaplyginBall, Rk4ConservesAllFourIntegralsOverT100) {
   const Eigen::VectorXd x0 = genericState(*model);
   const Eigen::VectorXd I0 = model->integrals(x0.data());
   ASSERT_EQ(I0.size(), 4);
-  for (int k = 0; k < 4; ++k) ASSERT_GT(std::abs(I0[k]), 0.1) << "integral " << k << " too small to test relatively";
+  for (int k = 0; k < 4; ++k)
+    ASSERT_GT(std::abs(I0[k]), 0.1) << "integral " << k << " too small to test relatively";
   Rk4 rk4(1e-3);
   rk4.start(*model, 0, x0);
   double worst[4] = {0, 0, 0, 0};
   while (rk4.time() < 100 - 1e-9) {
     rk4.step();
     const Eigen::VectorXd I = model->integrals(rk4.state().data());
-    for (int k = 0; k < 4; ++k) worst[k] = std::max(worst[k], std::abs(I[k] - I0[k]) / std::abs(I0[k]));
+    for (int k = 0; k < 4; ++k)
+      worst[k] = std::max(worst[k], std::abs(I[k] - I0[k]) / std::abs(I0[k]));
   }
-  for (int k = 0; k < 4; ++k) EXPECT_LE(worst[k], test::tol(1e-9)) << model->info().integralNames[k];
+  for (int k = 0; k < 4; ++k)
+    EXPECT_LE(worst[k], test::tol(1e-9)) << model->info().integralNames[k];
   // the motion is not trivial: the ball turned and travelled
   EXPECT_GT((rk4.state().segment<3>(3) - x0.segment<3>(3)).norm(), 0.1);
   EXPECT_GT(rk4.state()[14], 1.0);
@@ -63,7 +74,9 @@ TEST(ChaplyginBall, MomentumPlusGyrostatIsFixedInSpace) {
     worst = std::max(worst, (spaceFrame(x) * (x.head<3>() + K) - P0).norm());
   }
   EXPECT_LE(worst, test::tol(1e-9) * P0.norm());
-  EXPECT_NEAR((spaceFrame(rk4.state()) * spaceFrame(rk4.state()).transpose() - Eigen::Matrix3d::Identity()).norm(), 0, 1e-9)
+  EXPECT_NEAR(
+      (spaceFrame(rk4.state()) * spaceFrame(rk4.state()).transpose() - Eigen::Matrix3d::Identity()).norm(), 0,
+      1e-9)
       << "alpha, beta, gamma stay an orthonormal frame";
 }
 
@@ -71,7 +84,8 @@ TEST(ChaplyginBall, TracesOnPlaneAndBallHaveEqualLength) {
   const auto model = asymmetricBall();
   Rk4 rk4(1e-3);
   rk4.start(*model, 0, genericState(*model));
-  while (rk4.time() < 20 - 1e-9) rk4.step();
+  while (rk4.time() < 20 - 1e-9)
+    rk4.step();
   const double* x = rk4.state().data();
   EXPECT_GT(x[14], 1.0);
   EXPECT_NEAR(x[14], x[15], 1e-9 * x[14]);
@@ -110,12 +124,14 @@ TEST(ChaplyginBall, AutoDiffJacobianMatchesFiniteDifferences) {
     xp[j] += h, xm[j] -= h;
     model->rhs(xp.data(), fp.data());
     model->rhs(xm.data(), fm.data());
-    for (int i = 0; i < n; ++i) EXPECT_NEAR(J(i, j), (fp[i] - fm[i]) / (2 * h), 1e-7) << i << "," << j;
+    for (int i = 0; i < n; ++i)
+      EXPECT_NEAR(J(i, j), (fp[i] - fm[i]) / (2 * h), 1e-7) << i << "," << j;
   }
 }
 
 TEST(ChaplyginBall, MapPointIsCompletedOnTheRequestedEnergyAndArea) {
-  const auto model = test::makeModel("chaplygin_ball", {{"energy", 0.5}, {"c", 0.3}, {"K1", 0.2}, {"K2", 0.1}, {"K3", 0.3}});
+  const auto model =
+      test::makeModel("chaplygin_ball", {{"energy", 0.5}, {"c", 0.3}, {"K1", 0.2}, {"K2", 0.1}, {"K3", 0.3}});
   const MapPointSpec spec{.sectionValue = 0.4, .root = 1};
   const Eigen::VectorXd x = model->stateFromMap({0.5, 0.2}, spec, "test");
   const Eigen::VectorXd I = model->integrals(x.data());
@@ -138,7 +154,8 @@ TEST(ChaplyginBall, RejectsImpossibleInertiaMassAndRadius) {
   EXPECT_THROW(test::makeModel("chaplygin_ball", {{"I1", 1}, {"I2", 1}, {"I3", 5}}), InputError);
   EXPECT_THROW(test::makeModel("chaplygin_ball", {{"m", 0}}), InputError);
   EXPECT_THROW(test::makeModel("chaplygin_ball", {{"R", 0}}), InputError);
-  EXPECT_NO_THROW(test::makeModel("chaplygin_ball", {{"I1", 1}, {"I2", 1}, {"I3", 2}})); // a flat disc is a body
+  EXPECT_NO_THROW(
+      test::makeModel("chaplygin_ball", {{"I1", 1}, {"I2", 1}, {"I3", 2}})); // a flat disc is a body
 }
 
 } // namespace

@@ -18,9 +18,11 @@ TEST_P(EveryModel, JacobianMatchesFiniteDifferencesAndObservablesEvaluate) {
   const int n = m->dimension();
   // a generic state near the model's scale: from a map point when it has one
   Eigen::VectorXd x = Eigen::VectorXd::Constant(n, 0.3);
-  for (int i = 0; i < n; ++i) x[i] += 0.07 * i;
+  for (int i = 0; i < n; ++i)
+    x[i] += 0.07 * i;
   if (m->info().stateNames.size() >= 6 && m->info().stateNames[3] == "gamma1")
-    x = m->stateFromNamed({{"M1", 0.2}, {"M2", -0.3}, {"M3", 0.4}, {"gamma1", 0.1}, {"gamma2", 0.2}, {"gamma3", 1}}, "t");
+    x = m->stateFromNamed(
+        {{"M1", 0.2}, {"M2", -0.3}, {"M3", 0.4}, {"gamma1", 0.1}, {"gamma2", 0.2}, {"gamma3", 1}}, "t");
   if (GetParam() == "ball_on_paraboloid")
     x = m->stateFromNamed({{"M1", 0.02}, {"M2", -0.03}, {"M3", 0.04}, {"x1", 0.2}, {"x2", -0.1}}, "t");
   std::vector<double> J(n * n);
@@ -36,7 +38,8 @@ TEST_P(EveryModel, JacobianMatchesFiniteDifferencesAndObservablesEvaluate) {
       EXPECT_NEAR(J[i * n + j], (fp[i] - fm[i]) / (2 * h), 1e-6 * std::max(1.0, std::abs(J[i * n + j])))
           << GetParam() << " d" << i << "/d" << j;
   }
-  for (const auto& o : m->observables()) EXPECT_TRUE(std::isfinite(o.value(0.0, x.data()))) << GetParam() << " " << o.id;
+  for (const auto& o : m->observables())
+    EXPECT_TRUE(std::isfinite(o.value(0.0, x.data()))) << GetParam() << " " << o.id;
   if (m->hasInvariantMeasure()) {
     EXPECT_NEAR(test::divergenceOfDensityFlow(*m, x), 0, 1e-7) << GetParam();
   }
@@ -49,7 +52,8 @@ INSTANTIATE_TEST_SUITE_P(Registry, EveryModel,
 
 TEST(EveryModel, TheListAboveIsTheRegistry) {
   std::vector<std::string> ids;
-  for (const auto& e : ModelRegistry::builtin().entries()) ids.push_back(e.info->id);
+  for (const auto& e : ModelRegistry::builtin().entries())
+    ids.push_back(e.info->id);
   EXPECT_EQ(ids, (std::vector<std::string>{"paraboloid_on_plane", "ellipsoid_on_plane", "ball_on_ellipsoid",
                                            "ball_on_paraboloid", "chaplygin_ball", "lorenz", "henon_heiles",
                                            "henon_map", "standard_map"}));

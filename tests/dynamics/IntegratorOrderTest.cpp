@@ -1,7 +1,7 @@
 // Every integrator's empirical order of convergence, measured on one smooth problem (Boost.Odeint's
 // test/numeric approach): the error at t = T falls by 2^p when the step is halved.
-#include "dynamics/core/ModelWithField.h"
 #include "dynamics/core/Errors.h"
+#include "dynamics/core/ModelWithField.h"
 #include "dynamics/integrators/Everhart.h"
 #include "dynamics/integrators/Merson.h"
 #include "dynamics/integrators/Rk4.h"
@@ -33,7 +33,9 @@ const ModelInfo& oscillatorInfo() {
 // q'' = -q with s' = q p: q = cos t, p = -sin t, s = (cos^2 t - 1) / 2 exactly, so no reference run is needed
 struct Oscillator : ModelWithField<Oscillator, 3> {
   Oscillator() : ModelWithField(oscillatorInfo(), ParameterValues(oscillatorInfo().parameters)) {}
-  template <class S> void field(const Vec<S>& x, Vec<S>& dx) const { dx[0] = x[1], dx[1] = -x[0], dx[2] = x[0] * x[1]; }
+  template <class S> void field(const Vec<S>& x, Vec<S>& dx) const {
+    dx[0] = x[1], dx[1] = -x[0], dx[2] = x[0] * x[1];
+  }
 };
 
 Eigen::VectorXd solveFixed(Integrator& integ, const Model& m, double h, double T) {
@@ -41,12 +43,14 @@ Eigen::VectorXd solveFixed(Integrator& integ, const Model& m, double h, double T
   x0 << 1.2, 0.3, 0.0;
   integ.start(m, 0, x0);
   const long n = std::lround(T / h);
-  for (long i = 0; i < n; ++i) integ.step();
+  for (long i = 0; i < n; ++i)
+    integ.step();
   EXPECT_NEAR(integ.time(), T, 1e-9);
   return integ.state();
 }
 
-double measuredOrder(const std::function<std::unique_ptr<Integrator>(double)>& make, double h1, double h2, double T) {
+double measuredOrder(const std::function<std::unique_ptr<Integrator>(double)>& make, double h1, double h2,
+                     double T) {
   Pendulum m;
   Everhart reference(0.01, 27, 30);
   const Eigen::VectorXd exact = solveFixed(reference, m, 0.01, T);
@@ -66,7 +70,8 @@ TEST(IntegratorOrder, EverhartFifteenAgainstAnExactSolution) {
   const auto error = [&](double h) {
     Everhart e(h, 15, 40);
     e.start(m, 0, x0);
-    for (long i = 0; i < std::lround(T / h); ++i) e.step();
+    for (long i = 0; i < std::lround(T / h); ++i)
+      e.step();
     return (e.state() - exact).norm();
   };
   const double e1 = error(2.0), e2 = error(1.6);
@@ -108,7 +113,8 @@ TEST(Everhart, SpacingsAreGaussRadauAndTheWeightsIntegrateExactly) {
     // Radau quadrature with n nodes (one fixed) integrates polynomials of degree 2n - 2 exactly
     for (int k = 0; k <= 2 * n - 2; ++k) {
       double q = 0;
-      for (int j = 0; j < n; ++j) q += e.weights()[j] * std::pow(e.spacings()[j], k);
+      for (int j = 0; j < n; ++j)
+        q += e.weights()[j] * std::pow(e.spacings()[j], k);
       EXPECT_NEAR(q, 1.0 / (k + 1), 1e-14) << "order " << order << ", degree " << k;
     }
   }
@@ -133,8 +139,10 @@ TEST(Everhart, DenseOutputAgreesWithSmallSteps) {
   x0 << 1.2, 0.3, 0.0;
   big.start(m, 0, x0);
   fine.start(m, 0, x0);
-  for (int i = 0; i < 4; ++i) big.step();
-  for (int i = 0; i < 3 * 64 + 17; ++i) fine.step(); // t = 1.5 + 17/128, inside the last big step
+  for (int i = 0; i < 4; ++i)
+    big.step();
+  for (int i = 0; i < 3 * 64 + 17; ++i)
+    fine.step(); // t = 1.5 + 17/128, inside the last big step
   big.interpolate(fine.time(), a);
   EXPECT_NEAR((a - fine.state()).norm(), 0, 1e-9);
 }
@@ -150,7 +158,8 @@ TEST(Merson, KeepsTheLocalErrorNearItsPrecisionAndAdaptsTheStep) {
     x0 << 1.2, 0.3, 0.0;
     merson.start(m, 0, x0);
     long steps = 0;
-    while (merson.time() < 8.0) merson.step(), ++steps;
+    while (merson.time() < 8.0)
+      merson.step(), ++steps;
     merson.interpolate(8.0, x);
     const double err = (x - exact).norm();
     // the global error is the local ones summed: at most steps * precision (with a margin for the estimate)
@@ -167,7 +176,8 @@ TEST(Merson, ReachingTheMinimumStepIsAnError) {
   x0 << 1.2, 0.3, 0.0;
   merson.start(m, 0, x0);
   try {
-    for (int i = 0; i < 100; ++i) merson.step();
+    for (int i = 0; i < 100; ++i)
+      merson.step();
     FAIL() << "no error";
   } catch (const ComputationError& e) {
     EXPECT_NE(std::string(e.what()).find("minimum"), std::string::npos);

@@ -1,8 +1,8 @@
-// Lyapunov exponents against known answers: Lorenz (0.906, 0, -14.572, sum -(sigma + 1 + beta) = -41/3), the Henon
-// map (sum ln b, largest 0.419), and the integrable Chaplygin ball (all exponents tend to zero).
+// Lyapunov exponents against known answers: Lorenz (0.906, 0, -14.572, sum -(sigma + 1 + beta) = -41/3), the
+// Henon map (sum ln b, largest 0.419), and the integrable Chaplygin ball (all exponents tend to zero).
+#include "dynamics/tools/Lyapunov.h"
 #include "dynamics/integrators/Everhart.h"
 #include "dynamics/integrators/Rk4.h"
-#include "dynamics/tools/Lyapunov.h"
 #include "tests/dynamics/TestSupport.h"
 
 #include <cmath>
@@ -31,7 +31,8 @@ TEST(Lyapunov, LorenzTangentMode) {
   LyapunovSettings s;
   s.interval = 0.5;
   s.maxTime = 10000;
-  const auto r = lyapunovExponents(*m, [] { return std::make_unique<Rk4>(0.005); }, lorenzStart(), s);
+  const auto r = lyapunovExponents(
+      *m, [] { return std::make_unique<Rk4>(0.005); }, lorenzStart(), s);
   std::printf("  lorenz tangent: %.5f %.5f %.5f sum %.8f\n", r.last.exponents[0], r.last.exponents[1],
               r.last.exponents[2], r.last.sum());
   expectLorenzExponents(r);
@@ -45,7 +46,8 @@ TEST(Lyapunov, LorenzPerturbedMode) {
   s.perturbation = 1e-7;
   s.maxPerturbation = 1e-4;
   s.maxTime = 10000;
-  const auto r = lyapunovExponents(*m, [] { return std::make_unique<Rk4>(0.005); }, lorenzStart(), s);
+  const auto r = lyapunovExponents(
+      *m, [] { return std::make_unique<Rk4>(0.005); }, lorenzStart(), s);
   std::printf("  lorenz perturbed: %.5f %.5f %.5f sum %.8f\n", r.last.exponents[0], r.last.exponents[1],
               r.last.exponents[2], r.last.sum());
   expectLorenzExponents(r);
@@ -60,8 +62,8 @@ TEST(Lyapunov, HenonMap) {
   Eigen::VectorXd x0(2);
   x0 << 0.1, 0.1;
   const auto r = lyapunovExponents(*m, {}, x0, s);
-  std::printf("  henon: %.6f %.6f sum %.10f (ln 0.3 = %.10f)\n", r.last.exponents[0], r.last.exponents[1], r.last.sum(),
-              std::log(0.3));
+  std::printf("  henon: %.6f %.6f sum %.10f (ln 0.3 = %.10f)\n", r.last.exponents[0], r.last.exponents[1],
+              r.last.sum(), std::log(0.3));
   EXPECT_NEAR(r.last.sum(), std::log(0.3), 1e-6);
   EXPECT_NEAR(r.last.exponents[0], 0.419, test::tol(0.003));
 }
@@ -75,9 +77,11 @@ TEST(Lyapunov, TheIntegrableChaplyginBallHasOnlyVanishingExponents) {
   s.outputPeriod = 1000;
   s.renormalizeIntegrals = true;
   s.count = 2; // six coordinates, four integrals: two exponents left
-  const auto r = lyapunovExponents(*m, [] { return std::make_unique<Everhart>(0.4, 15, 12); }, x0, s);
+  const auto r = lyapunovExponents(
+      *m, [] { return std::make_unique<Everhart>(0.4, 15, 12); }, x0, s);
   std::printf("  chaplygin: %.2e %.2e\n", r.last.exponents[0], r.last.exponents[1]);
-  for (double e : r.last.exponents) EXPECT_LT(std::abs(e), 1e-2);
+  for (double e : r.last.exponents)
+    EXPECT_LT(std::abs(e), 1e-2);
 }
 
 TEST(Lyapunov, StopsWhenAskedAndConvergesByItsCriterion) {
@@ -87,12 +91,14 @@ TEST(Lyapunov, StopsWhenAskedAndConvergesByItsCriterion) {
   int polls = 0;
   ToolControl control;
   control.stopRequested = [&] { return ++polls > 2000; };
-  const auto r = lyapunovExponents(*m, [] { return std::make_unique<Rk4>(0.01); }, lorenzStart(), s, {}, control);
+  const auto r = lyapunovExponents(
+      *m, [] { return std::make_unique<Rk4>(0.01); }, lorenzStart(), s, {}, control);
   EXPECT_TRUE(r.stopped);
   s.successes = 5;
   s.accuracy = 1e-2;
   s.estimateEvery = 50;
-  const auto c = lyapunovExponents(*m, [] { return std::make_unique<Rk4>(0.01); }, lorenzStart(), s);
+  const auto c = lyapunovExponents(
+      *m, [] { return std::make_unique<Rk4>(0.01); }, lorenzStart(), s);
   EXPECT_TRUE(c.converged);
   EXPECT_LT(c.last.time, 1e9);
 }

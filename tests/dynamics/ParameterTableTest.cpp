@@ -1,6 +1,6 @@
+#include "dynamics/core/ParameterTable.h"
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/ModelRegistry.h"
-#include "dynamics/core/ParameterTable.h"
 
 #include <gtest/gtest.h>
 
@@ -42,7 +42,8 @@ TEST(ModelRegistry, EveryModelsDefaultsBuildAndItsObservablesEvaluate) {
     const auto m = e.create(ParameterValues(e.info->parameters));
     EXPECT_EQ(m->dimension(), static_cast<int>(e.info->stateNames.size()));
     EXPECT_GE(m->findObservable("t"), 0) << e.info->id;
-    for (const auto& n : e.info->integralNames) EXPECT_GE(m->findObservable(n), 0) << e.info->id << " " << n;
+    for (const auto& n : e.info->integralNames)
+      EXPECT_GE(m->findObservable(n), 0) << e.info->id << " " << n;
   }
 }
 

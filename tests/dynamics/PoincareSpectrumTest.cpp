@@ -15,7 +15,8 @@
 namespace rv {
 namespace {
 
-std::unique_ptr<Integrator> everhart(const Model& m, const Eigen::VectorXd& x0, double h = 0.05, int dir = +1) {
+std::unique_ptr<Integrator> everhart(const Model& m, const Eigen::VectorXd& x0, double h = 0.05,
+                                     int dir = +1) {
   auto e = std::make_unique<Everhart>(h, 15, 12);
   e->start(m, 0, x0, dir);
   return e;
@@ -39,7 +40,8 @@ TEST(PoincareMap, HenonHeilesStraightLineOrbitIsAFixedPoint) {
 int occupiedCells(const std::vector<MapPoint>& pts) {
   double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
   for (const auto& p : pts)
-    for (int k = 0; k < 2; ++k) lo[k] = std::min(lo[k], p.coordinates[k]), hi[k] = std::max(hi[k], p.coordinates[k]);
+    for (int k = 0; k < 2; ++k)
+      lo[k] = std::min(lo[k], p.coordinates[k]), hi[k] = std::max(hi[k], p.coordinates[k]);
   std::set<int> cells;
   for (const auto& p : pts) {
     const int i = std::min(59, static_cast<int>(60 * (p.coordinates[0] - lo[0]) / (hi[0] - lo[0] + 1e-300)));
@@ -54,7 +56,8 @@ TEST(PoincareMap, ARegularOrbitDrawsACurveAndAChaoticOneAnArea) {
     const auto m = test::makeModel("henon_heiles", {{"energy", E}});
     PoincareMap map(*m, everhart(*m, m->stateFromMap({y, py}, {}, "t")), {});
     std::vector<MapPoint> pts;
-    for (int i = 0; i < 1500; ++i) pts.push_back(*map.next());
+    for (int i = 0; i < 1500; ++i)
+      pts.push_back(*map.next());
     return pts;
   };
   const int regular = occupiedCells(run(0.125, 0.1, 0.1));
@@ -68,7 +71,8 @@ TEST(PoincareMap, BackwardIntegrationRetracesTheForwardPoints) {
   const auto m = test::makeModel("henon_heiles", {{"energy", 0.125}});
   PoincareMap fwd(*m, everhart(*m, m->stateFromMap({0.1, 0.1}, {}, "t")), {});
   std::vector<MapPoint> f;
-  for (int i = 0; i < 6; ++i) f.push_back(*fwd.next());
+  for (int i = 0; i < 6; ++i)
+    f.push_back(*fwd.next());
   // from just past the last forward point, backward: the same points in reverse order
   SectionSettings back;
   back.backward = true;
@@ -95,7 +99,8 @@ TEST(PoincareMap, AngleSectionsOfTheChaplyginBallAndItsSheets) {
   for (int i = 0; i < 20; ++i) {
     const auto p = map.next();
     ASSERT_TRUE(p);
-    EXPECT_NEAR(m->observables()[g].value(p->time, map.lastState().data()), 0.0, 1e-9) << "on g = 0, not g = pi";
+    EXPECT_NEAR(m->observables()[g].value(p->time, map.lastState().data()), 0.0, 1e-9)
+        << "on g = 0, not g = pi";
     EXPECT_NEAR(m->observables()[n].value(p->time, map.lastState().data()), n0, 1e-9);
     EXPECT_EQ(p->sheet, 0) << "not determined in single-sheeted mode";
   }

@@ -27,8 +27,8 @@ TEST(HenonHeiles, EverhartConservesEnergyAndTheFlowPreservesVolume) {
 }
 
 TEST(HenonHeiles, TheStraightLineOrbitStaysOnItsLine) {
-  // the potential has straight-line orbits through the origin along 30, 150 and 270 degrees; at E = 1/8 the one
-  // along 30 degrees crosses x = 0 at (y, py) = (0, sqrt(E/2)) = (0, 0.25) with px = sqrt(3) py
+  // the potential has straight-line orbits through the origin along 30, 150 and 270 degrees; at E = 1/8 the
+  // one along 30 degrees crosses x = 0 at (y, py) = (0, sqrt(E/2)) = (0, 0.25) with px = sqrt(3) py
   const auto m = test::makeModel("henon_heiles", {{"energy", 0.125}});
   const Eigen::VectorXd x0 = m->stateFromMap({0.0, 0.25}, {}, "t");
   EXPECT_NEAR(x0[2], std::sqrt(3.0) * 0.25, 1e-15);

@@ -18,15 +18,38 @@ namespace rv {
 namespace {
 
 std::unique_ptr<Model> offsetEllipsoid() { // offset centre of mass, turned axes, a field
-  return test::makeModel("ellipsoid_on_plane", {{"b1", 1.3}, {"b2", 0.9}, {"b3", 0.6}, {"a1", 0.05}, {"a2", -0.04},
-                                                {"a3", -0.12}, {"phi", 0.3}, {"theta", 0.2}, {"psi", 0.4},
-                                                {"I1", 0.5}, {"I2", 0.7}, {"I3", 0.9}, {"m", 1.3}, {"g", 2.0},
-                                                {"B11", 0.3}, {"B12", 0.1}, {"B22", 0.2}, {"B33", 0.1}});
+  return test::makeModel("ellipsoid_on_plane", {{"b1", 1.3},
+                                                {"b2", 0.9},
+                                                {"b3", 0.6},
+                                                {"a1", 0.05},
+                                                {"a2", -0.04},
+                                                {"a3", -0.12},
+                                                {"phi", 0.3},
+                                                {"theta", 0.2},
+                                                {"psi", 0.4},
+                                                {"I1", 0.5},
+                                                {"I2", 0.7},
+                                                {"I3", 0.9},
+                                                {"m", 1.3},
+                                                {"g", 2.0},
+                                                {"B11", 0.3},
+                                                {"B12", 0.1},
+                                                {"B22", 0.2},
+                                                {"B33", 0.1}});
 }
 std::unique_ptr<Model> turnedParaboloid() {
-  return test::makeModel("paraboloid_on_plane", {{"p", 0.8}, {"q", 1.7}, {"h", 0.4}, {"delta", 0.5}, {"I1", 1.1},
-                                                 {"I2", 1.4}, {"I3", 2.1}, {"m", 0.9}, {"g", 1.5}, {"B13", 0.05},
-                                                 {"B11", 0.2}, {"B33", 0.1}});
+  return test::makeModel("paraboloid_on_plane", {{"p", 0.8},
+                                                 {"q", 1.7},
+                                                 {"h", 0.4},
+                                                 {"delta", 0.5},
+                                                 {"I1", 1.1},
+                                                 {"I2", 1.4},
+                                                 {"I3", 2.1},
+                                                 {"m", 0.9},
+                                                 {"g", 1.5},
+                                                 {"B13", 0.05},
+                                                 {"B11", 0.2},
+                                                 {"B33", 0.1}});
 }
 
 Eigen::VectorXd randomState(std::mt19937& rng, bool upper) {
@@ -46,7 +69,8 @@ template <class Body> Eigen::Vector3d newtonEulerOmegaDot(const Body& body, cons
   const Eigen::Vector3d v = -w.cross(r);
   // F = m (r x w') + m (-w x r' + w x v + g gamma); substitute into the moment equation
   const Eigen::Vector3d Fknown = c.mass * (-w.cross(dr) + w.cross(v) + c.gravity * g);
-  Eigen::Matrix3d A = c.inertia + c.mass * (r.squaredNorm() * Eigen::Matrix3d::Identity() - r * r.transpose());
+  Eigen::Matrix3d A =
+      c.inertia + c.mass * (r.squaredNorm() * Eigen::Matrix3d::Identity() - r * r.transpose());
   const Eigen::Vector3d rhs = -w.cross(c.inertia * w) + r.cross(Fknown) + g.cross(c.field * g);
   return A.lu().solve(rhs);
 }
@@ -60,7 +84,8 @@ template <class Body> Eigen::Vector3d equationTwoOmegaDot(const Body& body, cons
   const Eigen::Vector3d r = body.template contact<double>(g);
   const Eigen::Vector3d w = body.template angularVelocity<double>(M, r);
   const Eigen::Vector3d dr = body.template contactRate<double>(g, dx.segment<3>(3));
-  const Eigen::Matrix3d A = c.inertia + c.mass * (r.squaredNorm() * Eigen::Matrix3d::Identity() - r * r.transpose());
+  const Eigen::Matrix3d A =
+      c.inertia + c.mass * (r.squaredNorm() * Eigen::Matrix3d::Identity() - r * r.transpose());
   const Eigen::Matrix3d dA =
       c.mass * (2 * r.dot(dr) * Eigen::Matrix3d::Identity() - dr * r.transpose() - r * dr.transpose());
   return A.lu().solve(Eigen::Vector3d(dx.head<3>() - dA * w));
@@ -81,7 +106,9 @@ TEST(RigidBodyOnPlane, EquationTwoAgreesWithNewtonEuler) {
 
 // a balanced ball of radius R as a generic rigid body: must move exactly as the Chaplygin ball (K = 0)
 const ModelInfo& sphereInfo() {
-  static const ModelInfo info{.id = "sphere_test", .stateNames = body_state::names(), .coreDimension = 6,
+  static const ModelInfo info{.id = "sphere_test",
+                              .stateNames = body_state::names(),
+                              .coreDimension = 6,
                               .integralNames = {"E", "geometric"}};
   return info;
 }
@@ -106,7 +133,8 @@ TEST(RigidBodyOnPlane, ABallMovesAsTheChaplyginBall) {
   Everhart a(0.02, 15, 20), b(0.02, 15, 20);
   a.start(*chaplygin, 0, x0);
   b.start(sphere, 0, x0);
-  for (int i = 0; i < 2500; ++i) a.step(), b.step();
+  for (int i = 0; i < 2500; ++i)
+    a.step(), b.step();
   EXPECT_LT((a.state() - b.state()).norm(), 1e-10) << "t = 50";
   EXPECT_GT((a.state() - x0).norm(), 0.5) << "and it did move";
 }
@@ -132,10 +160,17 @@ TEST(RigidBodyOnPlane, GaussMapsPutTheContactOnTheSurfaceWithNormalMinusGamma) {
     const Eigen::Vector3d gradp(rp[0] / par.p(), rp[1] / par.q(), -1.0);
     EXPECT_NEAR((gradp.normalized() + gp).norm(), 0, 1e-12);
     // the rates are the derivatives of the maps
-    const Eigen::Vector3d dg = g.cross(Eigen::Vector3d(u(rng), u(rng), u(rng))), dgp = gp.cross(Eigen::Vector3d(u(rng), u(rng), u(rng)));
+    const Eigen::Vector3d dg = g.cross(Eigen::Vector3d(u(rng), u(rng), u(rng))),
+                          dgp = gp.cross(Eigen::Vector3d(u(rng), u(rng), u(rng)));
     const double h = 1e-6;
-    EXPECT_LT((ell.contactRate<double>(g, dg) - (ell.contact<double>(g + h * dg) - ell.contact<double>(g - h * dg)) / (2 * h)).norm(), 1e-8);
-    EXPECT_LT((par.contactRate<double>(gp, dgp) - (par.contact<double>(gp + h * dgp) - par.contact<double>(gp - h * dgp)) / (2 * h)).norm(), 1e-8);
+    EXPECT_LT((ell.contactRate<double>(g, dg) -
+               (ell.contact<double>(g + h * dg) - ell.contact<double>(g - h * dg)) / (2 * h))
+                  .norm(),
+              1e-8);
+    EXPECT_LT((par.contactRate<double>(gp, dgp) -
+               (par.contact<double>(gp + h * dgp) - par.contact<double>(gp - h * dgp)) / (2 * h))
+                  .norm(),
+              1e-8);
   }
 }
 
@@ -155,13 +190,13 @@ TEST(RigidBodyOnPlane, EverhartConservesEnergyToTwelveDigitsOverAThousand) {
     EXPECT_LE(worstGeo, test::tol(1e-12)) << m.info().id;
   };
   for (const auto& m : {offsetEllipsoid(), test::makeModel("ellipsoid_on_plane", {})}) {
-    const Eigen::VectorXd x0 =
-        m->stateFromNamed({{"M1", 0.1}, {"M2", 0.05}, {"M3", -0.4}, {"gamma1", 0.05}, {"gamma2", 0.1}, {"gamma3", 1}}, "t");
+    const Eigen::VectorXd x0 = m->stateFromNamed(
+        {{"M1", 0.1}, {"M2", 0.05}, {"M3", -0.4}, {"gamma1", 0.05}, {"gamma2", 0.1}, {"gamma3", 1}}, "t");
     run(*m, x0, 0.01);
   }
   for (const auto& m : {turnedParaboloid(), test::makeModel("paraboloid_on_plane", {{"energy", 1.0}})}) {
-    const Eigen::VectorXd x0 =
-        m->stateFromNamed({{"M1", 0.2}, {"M2", -0.1}, {"M3", 0.5}, {"gamma1", 0.1}, {"gamma2", 0.15}, {"gamma3", 1}}, "t");
+    const Eigen::VectorXd x0 = m->stateFromNamed(
+        {{"M1", 0.2}, {"M2", -0.1}, {"M3", 0.5}, {"gamma1", 0.1}, {"gamma2", 0.15}, {"gamma3", 1}}, "t");
     run(*m, x0, 0.02);
   }
 }
@@ -185,8 +220,8 @@ TEST(RigidBodyOnPlane, MapPointsAreCompletedOnTheEnergyWithTheirAndoyerDepritCoo
 TEST(RigidBodyOnPlane, TheRattlebackReversesOnlyOneSpin) {
   const auto m = test::makeModel("ellipsoid_on_plane", {});
   const auto spin = [&](double M3) {
-    const Eigen::VectorXd x0 =
-        m->stateFromNamed({{"M1", 0}, {"M2", 0}, {"M3", M3}, {"gamma1", 0}, {"gamma2", 0.02}, {"gamma3", 1}}, "t");
+    const Eigen::VectorXd x0 = m->stateFromNamed(
+        {{"M1", 0}, {"M2", 0}, {"M3", M3}, {"gamma1", 0}, {"gamma2", 0.02}, {"gamma3", 1}}, "t");
     const int w3 = m->findObservable("omega3");
     Everhart e(0.01, 15, 12);
     e.start(*m, 0, x0);

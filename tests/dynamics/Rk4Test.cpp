@@ -1,11 +1,11 @@
 // RK4 alone: exact on cubics in t, dense output of order 4 between steps, backward integration retraces,
 // blow-up reported as a ComputationError, and no heap allocation per step.
+#include "dynamics/integrators/Rk4.h"
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/ModelWithField.h"
 #include "dynamics/core/TimeSampler.h"
 #include "dynamics/integrators/Everhart.h"
 #include "dynamics/integrators/Merson.h"
-#include "dynamics/integrators/Rk4.h"
 #include "tests/dynamics/TestSupport.h"
 
 #include <atomic>
@@ -21,8 +21,12 @@ void* operator new(std::size_t n) {
   if (void* p = std::malloc(n)) return p;
   throw std::bad_alloc();
 }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete(void* p) noexcept {
+  std::free(p);
+}
+void operator delete(void* p, std::size_t) noexcept {
+  std::free(p);
+}
 
 namespace rv {
 namespace {
@@ -72,9 +76,11 @@ TEST(Rk4, BackwardIntegrationRetracesTheForwardOne) {
   Eigen::VectorXd x0(2);
   x0 << 1, 0;
   fwd.start(m, 0, x0);
-  for (int i = 0; i < 500; ++i) fwd.step();
+  for (int i = 0; i < 500; ++i)
+    fwd.step();
   back.start(m, fwd.time(), fwd.state(), -1);
-  for (int i = 0; i < 500; ++i) back.step();
+  for (int i = 0; i < 500; ++i)
+    back.step();
   EXPECT_NEAR(back.time(), 0, 1e-12);
   EXPECT_NEAR((back.state() - x0).norm(), 0, 1e-9);
 }
@@ -86,7 +92,8 @@ TEST(Rk4, BlowUpIsAComputationError) {
   x0 << 1;
   rk4.start(m, 0, x0);
   const auto run = [&] {
-    for (int i = 0; i < 1000; ++i) rk4.step();
+    for (int i = 0; i < 1000; ++i)
+      rk4.step();
   };
   EXPECT_THROW(run(), ComputationError);
 }
@@ -104,7 +111,8 @@ TEST(Integrators, StepsAndDenseOutputDoNotAllocate) {
     integ->step();
     integ->step();
     const long before = g_allocations.load();
-    for (int i = 0; i < 200; ++i) integ->step();
+    for (int i = 0; i < 200; ++i)
+      integ->step();
     EXPECT_EQ(g_allocations.load() - before, 0) << "steps";
     Eigen::VectorXd out(x0.size());
     const long beforeInterp = g_allocations.load();

@@ -1,5 +1,5 @@
-// Jobs: start, stop promptly, continue, edit and continue, restart, delete, the tree; and a random stress of many
-// jobs for ThreadSanitizer (run under the tsan preset: ctest --preset tsan).
+// Jobs: start, stop promptly, continue, edit and continue, restart, delete, the tree; and a random stress of
+// many jobs for ThreadSanitizer (run under the tsan preset: ctest --preset tsan).
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/ModelRegistry.h"
 #include "dynamics/jobs/JobTree.h"
@@ -131,7 +131,8 @@ TEST(JobTree, ToolsHangUnderTheirTrajectoryAndGoWithIt) {
   EXPECT_EQ(tree.children(map).size(), 2u);
   lyap.start();
   spec.start();
-  ASSERT_TRUE(waitFor([&] { return lyap.status() == Job::Status::Finished && spec.status() == Job::Status::Finished; }));
+  ASSERT_TRUE(waitFor(
+      [&] { return lyap.status() == Job::Status::Finished && spec.status() == Job::Status::Finished; }));
   std::vector<SpectrumResult> r;
   static_cast<SpectrumTask&>(spec.task()).results().take(r);
   ASSERT_EQ(r.size(), 1u);
@@ -145,16 +146,23 @@ TEST(JobTree, StressManyJobsInRandomOrder) {
   JobTree tree;
   std::mt19937 rng(42);
   std::vector<MapPoint> sink;
-  for (int i = 0; i < 100; ++i) tree.add(std::make_unique<PoincareTask>(henonHeiles(), SectionSettings{}));
+  for (int i = 0; i < 100; ++i)
+    tree.add(std::make_unique<PoincareTask>(henonHeiles(), SectionSettings{}));
   for (int op = 0; op < 400; ++op) {
     auto jobs = tree.jobs();
     if (jobs.empty()) break;
     Job& j = *jobs[rng() % jobs.size()];
     switch (rng() % 7) {
     case 0:
-    case 1: j.start(); break;
-    case 2: j.stop(); break;
-    case 3: j.restart(); break;
+    case 1:
+      j.start();
+      break;
+    case 2:
+      j.stop();
+      break;
+    case 3:
+      j.restart();
+      break;
     case 4:
       j.edit([&](Task& t) {
         auto& p = static_cast<PoincareTask&>(t);
@@ -167,14 +175,17 @@ TEST(JobTree, StressManyJobsInRandomOrder) {
         }
       });
       break;
-    case 5: static_cast<PoincareTask&>(j.task()).points().take(sink); break;
+    case 5:
+      static_cast<PoincareTask&>(j.task()).points().take(sink);
+      break;
     case 6:
       if (rng() % 4 == 0) tree.remove(j);
       break;
     }
   }
   tree.stopAll();
-  for (Job* j : tree.jobs()) EXPECT_NE(j->status(), Job::Status::Running);
+  for (Job* j : tree.jobs())
+    EXPECT_NE(j->status(), Job::Status::Running);
   tree.removeAll();
   EXPECT_TRUE(tree.jobs().empty());
 }

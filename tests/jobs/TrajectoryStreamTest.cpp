@@ -1,8 +1,8 @@
 // TrajectoryStream: the consumer gets exactly the requested time, every step in between, a prompt stop,
 // and the same motion as a plain integration. Run under the tsan preset for data races.
+#include "dynamics/jobs/TrajectoryStream.h"
 #include "dynamics/core/ModelRegistry.h"
 #include "dynamics/integrators/Rk4.h"
-#include "dynamics/jobs/TrajectoryStream.h"
 
 #include <chrono>
 #include <gtest/gtest.h>
@@ -44,7 +44,8 @@ TEST(TrajectoryStream, DeliversTheStateAtTheRequestedTimeAndEveryStep) {
   EXPECT_EQ(all.times.size(), 500u);
   // same as integrating directly
   auto direct = started(*m, 1e-3);
-  for (int i = 0; i < 500; ++i) direct->step();
+  for (int i = 0; i < 500; ++i)
+    direct->step();
   EXPECT_NEAR((direct->state() - all.at).norm(), 0, 1e-9 * direct->state().norm());
 }
 

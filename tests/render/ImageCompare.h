@@ -10,9 +10,9 @@ namespace rv::test {
 bool isVaried(const Image& image);
 
 struct ImageDifference {
-  double meanAbs = 0;        ///< mean |a - b| over all channels, in 0..255
-  double fractionOver = 0;   ///< fraction of pixels where some channel differs by more than 48
-  Image diff;                ///< |a - b| amplified, for inspection
+  double meanAbs = 0;      ///< mean |a - b| over all channels, in 0..255
+  double fractionOver = 0; ///< fraction of pixels where some channel differs by more than 48
+  Image diff;              ///< |a - b| amplified, for inspection
 };
 
 /// Compares two pictures of the same size (throws std::runtime_error when the sizes differ).

@@ -85,7 +85,9 @@ TEST(Render, TheBallIsDrawnWhereTheModelPutsIt) {
   for (int y = 0; y < with.height; ++y)
     for (int xx = 0; xx < with.width; ++xx) {
       const std::size_t p = (std::size_t(y) * with.width + xx) * 3;
-      if (std::abs(int(with.rgb[p]) - int(without.rgb[p])) + std::abs(int(with.rgb[p + 2]) - int(without.rgb[p + 2])) > 30)
+      if (std::abs(int(with.rgb[p]) - int(without.rgb[p])) +
+              std::abs(int(with.rgb[p + 2]) - int(without.rgb[p + 2])) >
+          30)
         ++n, sx += xx, sy += y;
     }
   ASSERT_GT(n, 500) << "the ball covers a visible area";

@@ -1,6 +1,6 @@
 // Scene files: the shipped scenes load; every error names the file and the JSON path (or the flag).
-#include "dynamics/core/Errors.h"
 #include "scenes/SceneLoader.h"
+#include "dynamics/core/Errors.h"
 
 #include <gtest/gtest.h>
 
@@ -40,16 +40,19 @@ TEST(SceneLoader, ErrorsNameFileAndJsonPath) {
   EXPECT_NE(errorOf(j).find("s.json:parameters.m: expected a number"), std::string::npos) << errorOf(j);
   j = ball();
   j["problem"] = "no_such_problem";
-  EXPECT_NE(errorOf(j).find("s.json:problem: unknown problem 'no_such_problem'"), std::string::npos) << errorOf(j);
+  EXPECT_NE(errorOf(j).find("s.json:problem: unknown problem 'no_such_problem'"), std::string::npos)
+      << errorOf(j);
   j = ball();
   j["integrator"] = {{"method", "rk5"}};
-  EXPECT_NE(errorOf(j).find("s.json:integrator.method: unknown integrator 'rk5'"), std::string::npos) << errorOf(j);
+  EXPECT_NE(errorOf(j).find("s.json:integrator.method: unknown integrator 'rk5'"), std::string::npos)
+      << errorOf(j);
   j = ball();
   j["integrator"] = {{"step", -1}};
   EXPECT_NE(errorOf(j).find("s.json:integrator.step"), std::string::npos) << errorOf(j);
   j = ball();
   j["view"] = {{"objects", {{"ball", {{"color", "blue"}}}}}};
-  EXPECT_NE(errorOf(j).find("s.json:view.objects.ball.color: expected a colour"), std::string::npos) << errorOf(j);
+  EXPECT_NE(errorOf(j).find("s.json:view.objects.ball.color: expected a colour"), std::string::npos)
+      << errorOf(j);
   j = ball();
   j["initial"] = {{"map", {0.5, 5.0}}};
   EXPECT_NE(errorOf(j).find("s.json:initial.map: L/G must lie in [-1, 1]"), std::string::npos) << errorOf(j);
@@ -62,13 +65,16 @@ TEST(SceneLoader, ErrorsNameFileAndJsonPath) {
 }
 
 TEST(SceneLoader, OverridesSetParametersAndFields) {
-  const Scene s = sceneFromJson(ball(), "s.json", {parseOverride("energy=0.4"), parseOverride("integrator.step=0.002")});
+  const Scene s =
+      sceneFromJson(ball(), "s.json", {parseOverride("energy=0.4"), parseOverride("integrator.step=0.002")});
   EXPECT_EQ(s.model->parameters()["energy"], 0.4);
   EXPECT_EQ((*s.integratorParameters)["step"], 0.002);
   EXPECT_NEAR(s.model->integrals(s.initialState.data())[0], 0.4, 1e-12);
-  EXPECT_NE(errorOf(ball(), {parseOverride("no_such_param=1")}).find("--set no_such_param: unknown parameter"),
+  EXPECT_NE(
+      errorOf(ball(), {parseOverride("no_such_param=1")}).find("--set no_such_param: unknown parameter"),
+      std::string::npos);
+  EXPECT_NE(errorOf(ball(), {parseOverride("bogus.x=1")}).find("--set bogus.x: unknown scene field"),
             std::string::npos);
-  EXPECT_NE(errorOf(ball(), {parseOverride("bogus.x=1")}).find("--set bogus.x: unknown scene field"), std::string::npos);
   EXPECT_THROW(parseOverride("energy"), InputError);
 }
 
