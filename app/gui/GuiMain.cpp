@@ -1,6 +1,7 @@
 #include "app/gui/GuiMain.h"
 
 #include "app/gui/MainWindow.h"
+#include "app/gui/MapPanel.h"
 #include "app/gui/QtVtkWidget.h"
 #include "scenes/SceneLoader.h"
 
@@ -51,6 +52,10 @@ int runGui(int argc, char** argv, const GuiOptions& options) {
       if (!options.screenshot.empty() &&
           !window.grab().save(QString::fromStdString(options.screenshot), "PNG"))
         std::fprintf(stderr, "rollviz: cannot write %s\n", options.screenshot.c_str());
+      // a summary for scripted runs and tests
+      std::printf("shown t = %.6g, map trajectories = %d, map points = %ld\n", window.shownTime(),
+                  window.mapPanel()->trajectories(), window.mapPanel()->points());
+      std::fflush(stdout);
       app.quit();
     });
   return app.exec();

@@ -1,10 +1,12 @@
 #include "app/gui/MainWindow.h"
 
+#include "app/gui/MapPanel.h"
 #include "app/gui/QtVtkWidget.h"
 #include "dynamics/core/Errors.h"
 #include "scenes/SceneLoader.h"
 
 #include <QAction>
+#include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -20,7 +22,12 @@ namespace rv {
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   view_ = new QtVtkWidget(this);
   setCentralWidget(view_);
-  resize(1200, 800);
+  map_ = new MapPanel(this);
+  auto* dock = new QDockWidget("Poincaré map", this);
+  dock->setObjectName("map");
+  dock->setWidget(map_);
+  addDockWidget(Qt::RightDockWidgetArea, dock);
+  resize(1400, 800);
 
   auto* bar = addToolBar("Playback");
   bar->setObjectName("playback");
@@ -46,6 +53,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   snap->setToolTip("Save the 3D view as a PNG (Ctrl+S)");
   status_ = new QLabel(this);
   statusBar()->addWidget(status_, 1);
+  connect(map_, &MapPanel::message, this, [this](const QString& m) { statusBar()->showMessage(m, 5000); });
 
   connect(&timer_, &QTimer::timeout, this, &MainWindow::tick);
   timer_.start(16);
@@ -54,6 +62,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 
 MainWindow::~MainWindow() {
   timer_.stop();
+  map_->stopAll();
   stream_.reset();
   if (visual_) view_->renderWindow()->RemoveRenderer(visual_->renderer());
 }
@@ -67,6 +76,7 @@ bool MainWindow::openScene(const QString& path) {
     return false;
   }
   stream_.reset();
+  map_->stopAll(); // its jobs hold the old scene's model until setScene replaces them
   if (visual_) view_->renderWindow()->RemoveRenderer(visual_->renderer());
   visual_.reset();
   scene_ = std::move(scene);
@@ -75,6 +85,7 @@ bool MainWindow::openScene(const QString& path) {
   QSettings().setValue("lastScene", QFileInfo(path).absoluteFilePath());
   setWindowTitle(QString("rollviz — %1 (%2)")
                      .arg(QFileInfo(path).fileName(), QString::fromStdString(scene_->model->info().id)));
+  map_->setScene(*scene_);
   restart();
   return true;
 }
@@ -107,6 +118,7 @@ void MainWindow::togglePlay() {
 
 void MainWindow::tick() {
   const double wall = clock_.restart() / 1000.0;
+  map_->drain();
   if (!stream_) return;
   if (playing_ && error_.isEmpty()) {
     // never run further ahead of what is shown than a fraction of a second of work

@@ -17,6 +17,7 @@ class QLabel;
 namespace rv {
 
 class QtVtkWidget;
+class MapPanel;
 
 class MainWindow : public QMainWindow {
   Q_OBJECT
@@ -28,6 +29,7 @@ public:
   /// Simulation time shown in the last frame.
   double shownTime() const { return shownTime_; }
   QtVtkWidget* view() const { return view_; }
+  MapPanel* mapPanel() const { return map_; }
 
 public slots:
   void togglePlay();
@@ -39,6 +41,7 @@ private:
   void tick();
   void showStatus();
   QtVtkWidget* view_;
+  MapPanel* map_;
   QAction* playAction_;
   QDoubleSpinBox* speedBox_;
   QLabel* status_;

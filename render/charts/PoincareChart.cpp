@@ -39,20 +39,27 @@ vtkChartXY* PoincareChart::chart() const {
   return chart_;
 }
 
-int PoincareChart::addSeries(const std::vector<double>& x, const std::vector<double>& y, const Rgb& c) {
-  vtkNew<vtkTable> table;
+namespace {
+vtkSmartPointer<vtkTable> tableOf(const std::vector<double>& x, const std::vector<double>& y, vtkIdType series) {
+  auto table = vtkSmartPointer<vtkTable>::New();
   vtkNew<vtkDoubleArray> xs, ys;
   xs->SetName("x");
-  ys->SetName(("y" + std::to_string(chart_->GetNumberOfPlots())).c_str());
+  ys->SetName(("y" + std::to_string(series)).c_str());
+  xs->SetNumberOfValues(static_cast<vtkIdType>(x.size()));
+  ys->SetNumberOfValues(static_cast<vtkIdType>(y.size()));
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    xs->SetValue(static_cast<vtkIdType>(i), x[i]);
+    ys->SetValue(static_cast<vtkIdType>(i), y[i]);
+  }
   table->AddColumn(xs);
   table->AddColumn(ys);
-  table->SetNumberOfRows(static_cast<vtkIdType>(x.size()));
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    table->SetValue(static_cast<vtkIdType>(i), 0, x[i]);
-    table->SetValue(static_cast<vtkIdType>(i), 1, y[i]);
-  }
+  return table;
+}
+} // namespace
+
+int PoincareChart::addSeries(const std::vector<double>& x, const std::vector<double>& y, const Rgb& c) {
   vtkPlot* plot = chart_->AddPlot(vtkChart::POINTS);
-  plot->SetInputData(table, 0, 1);
+  plot->SetInputData(tableOf(x, y, chart_->GetNumberOfPlots()), 0, 1);
   plot->SetColor(static_cast<unsigned char>(255 * c[0]), static_cast<unsigned char>(255 * c[1]),
                  static_cast<unsigned char>(255 * c[2]), 255);
   if (auto* points = vtkPlotPoints::SafeDownCast(plot)) {
@@ -60,6 +67,30 @@ int PoincareChart::addSeries(const std::vector<double>& x, const std::vector<dou
     points->SetMarkerSize(3);
   }
   return static_cast<int>(chart_->GetNumberOfPlots()) - 1;
+}
+
+void PoincareChart::setSeries(int index, const std::vector<double>& x, const std::vector<double>& y) {
+  if (vtkPlot* plot = chart_->GetPlot(index)) {
+    plot->SetInputData(tableOf(x, y, index), 0, 1);
+    chart_->RecalculateBounds();
+  }
+}
+
+void PoincareChart::clear() {
+  chart_->ClearPlots();
+  selected_ = -1;
+}
+
+bool PoincareChart::toChart(double px, double py, double& x, double& y) const {
+  const int* p1 = chart_->GetPoint1(); // the plot area's corners in scene pixels
+  const int* p2 = chart_->GetPoint2();
+  const double ax0 = p1[0], ay0 = p1[1], ax1 = p2[0], ay1 = p2[1];
+  if (px < ax0 || px > ax1 || py < ay0 || py > ay1 || ax1 == ax0 || ay1 == ay0) return false;
+  vtkAxis* ax = chart_->GetAxis(vtkAxis::BOTTOM);
+  vtkAxis* ay = chart_->GetAxis(vtkAxis::LEFT);
+  x = ax->GetMinimum() + (px - ax0) / (ax1 - ax0) * (ax->GetMaximum() - ax->GetMinimum());
+  y = ay->GetMinimum() + (py - ay0) / (ay1 - ay0) * (ay->GetMaximum() - ay->GetMinimum());
+  return true;
 }
 
 void PoincareChart::select(int index) {

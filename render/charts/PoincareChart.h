@@ -20,6 +20,12 @@ public:
   ~PoincareChart();
   /// Adds a trajectory's points (x[i], y[i]); returns its index.
   int addSeries(const std::vector<double>& x, const std::vector<double>& y, const Rgb& color);
+  /// Replaces the points of series `index`.
+  void setSeries(int index, const std::vector<double>& x, const std::vector<double>& y);
+  /// Removes every series.
+  void clear();
+  /// Map coordinates of a point of the scene (pixels from the bottom left); false outside the plot area.
+  bool toChart(double px, double py, double& x, double& y) const;
   /// Draws series `index` emphasised (-1: none).
   void select(int index);
   /// Draws into `window` (the chart's view takes it over).

@@ -1,14 +1,26 @@
 #!/bin/bash
-# GUI smoke test: under Xvfb the window opens on the default scene, simulates for two seconds, and a
-# screenshot of it is a real picture (not blank). Usage: gui_smoke.sh ROLLVIZ SRC ARTIFACT_DIR
+# GUI smoke test under Xvfb: the window opens on the default scene and simulates; a real X Ctrl+click (xdotool) on
+# the Poincare map starts a second trajectory whose points arrive; a screenshot of the window is a real picture.
+# Usage: gui_smoke.sh ROLLVIZ SRC ARTIFACT_DIR
 set -euo pipefail
 RV=$1 SRC=$2 OUT=$3
 mkdir -p "$OUT"
 shot="$OUT/gui_smoke.png"
-rm -f "$shot"
+summary="$OUT/gui_smoke.txt"
+rm -f "$shot" "$summary"
 export XDG_CONFIG_HOME=$(mktemp -d) # a fresh QSettings, so the last scene of a user does not leak in
-xvfb-run -a -s '-screen 0 1400x900x24' "$RV" gui "$SRC/scenes/chaplygin_ball.json" --quit-after 2.5 --screenshot "$shot"
+cat >"$OUT/gui_smoke_session.sh" <<SH
+"$RV" gui "$SRC/scenes/chaplygin_ball.json" --quit-after 5 --screenshot "$shot" >"$summary" &
+pid=\$!
+sleep 2.5
+# the window sits at the top left with no window manager; the map dock fills its right part
+xdotool mousemove 1200 300 keydown ctrl click 1 keyup ctrl
+wait \$pid
+SH
+xvfb-run -a -s '-screen 0 1600x1000x24' bash "$OUT/gui_smoke_session.sh"
 [ -f "$shot" ] || { echo "no screenshot written"; exit 1; }
+cat "$summary"
+grep -q "map trajectories = 2" "$summary" || { echo "the click on the map did not start a trajectory"; exit 1; }
 /usr/bin/python3 - "$shot" <<'PY'
 import sys
 from PIL import Image

@@ -1,0 +1,55 @@
+// MapPanel.h -- the map window (manual §2.1, Fig. 3): the Poincare map of the scene as a chart, fed by one
+// Poincare job per trajectory. Ctrl+click on the map starts a new trajectory there (the point is completed
+// through the scene's energy and other integrals). The jobs run on their own threads; this panel only draws.
+#pragma once
+#include "dynamics/jobs/JobTree.h"
+#include "render/charts/PoincareChart.h"
+#include "scenes/Scene.h"
+
+#include <QWidget>
+#include <memory>
+#include <vector>
+
+namespace rv {
+
+class QtVtkWidget;
+class PoincareTask;
+
+class MapPanel : public QWidget {
+  Q_OBJECT
+public:
+  explicit MapPanel(QWidget* parent = nullptr);
+  ~MapPanel() override;
+  /// Drops every trajectory and starts one at the scene's initial state (the scene must outlive the panel's use).
+  void setScene(const Scene& scene);
+  /// Starts a trajectory at map coordinates (x, y); false (with a message) when there is no state there.
+  bool startAt(double x, double y);
+  /// Takes the points computed since the last call and redraws; called by the window's frame timer.
+  void drain();
+  void stopAll();
+  long points() const;
+  int trajectories() const { return static_cast<int>(series_.size()); }
+  QtVtkWidget* view() const { return view_; }
+
+signals:
+  void message(const QString& text);
+
+protected:
+  bool eventFilter(QObject* watched, QEvent* event) override;
+
+private:
+  struct Series {
+    Job* job;
+    PoincareTask* task;
+    std::vector<double> x, y;
+    int plot;
+  };
+  void start(const Eigen::VectorXd& state);
+  QtVtkWidget* view_;
+  std::unique_ptr<PoincareChart> chart_;
+  const Scene* scene_ = nullptr;
+  JobTree jobs_;
+  std::vector<Series> series_;
+};
+
+} // namespace rv
