@@ -19,7 +19,9 @@ MapPanel::MapPanel(QWidget* parent) : QWidget(parent) {
   setMinimumSize(320, 320);
 }
 
-MapPanel::~MapPanel() { jobs_.removeAll(); }
+MapPanel::~MapPanel() {
+  jobs_.removeAll();
+}
 
 void MapPanel::setScene(const Scene& scene) {
   jobs_.removeAll();
@@ -46,11 +48,13 @@ void MapPanel::start(const Eigen::VectorXd& state) {
 bool MapPanel::startAt(double x, double y) {
   if (!scene_) return false;
   try {
-    const MapPointSpec spec{.sectionValue = scene_->poincare.value, .root = std::max(1, scene_->poincare.root)};
+    const MapPointSpec spec{.sectionValue = scene_->poincare.value,
+                            .root = std::max(1, scene_->poincare.root)};
     std::vector<double> point{x, y};
     if (scene_->model->info().mapCoordinates.size() == 3) { // a 3D map: Z from the scene's initial point
       const auto& doc = scene_->document;
-      const bool hasZ = doc.contains("initial") && doc["initial"].contains("map") && doc["initial"]["map"].size() == 3;
+      const bool hasZ =
+          doc.contains("initial") && doc["initial"].contains("map") && doc["initial"]["map"].size() == 3;
       point.push_back(hasZ ? doc["initial"]["map"][2].get<double>() : 0.0);
     }
     start(scene_->model->stateFromMap(point, spec, "map point"));
@@ -77,11 +81,14 @@ void MapPanel::drain() {
   if (changed) view_->update();
 }
 
-void MapPanel::stopAll() { jobs_.stopAll(); }
+void MapPanel::stopAll() {
+  jobs_.stopAll();
+}
 
 long MapPanel::points() const {
   long n = 0;
-  for (const auto& s : series_) n += static_cast<long>(s.x.size());
+  for (const auto& s : series_)
+    n += static_cast<long>(s.x.size());
   return n;
 }
 
@@ -91,7 +98,8 @@ bool MapPanel::eventFilter(QObject* watched, QEvent* event) {
     if (e->button() == Qt::LeftButton && (e->modifiers() & Qt::ControlModifier)) {
       const double dpr = view_->devicePixelRatioF();
       double x, y;
-      if (chart_->toChart(e->position().x() * dpr, (view_->height() - e->position().y()) * dpr, x, y)) startAt(x, y);
+      if (chart_->toChart(e->position().x() * dpr, (view_->height() - e->position().y()) * dpr, x, y))
+        startAt(x, y);
       return true; // not a pan or zoom of the chart
     }
   }

@@ -20,7 +20,8 @@ class MapPanel : public QWidget {
 public:
   explicit MapPanel(QWidget* parent = nullptr);
   ~MapPanel() override;
-  /// Drops every trajectory and starts one at the scene's initial state (the scene must outlive the panel's use).
+  /// Drops every trajectory and starts one at the scene's initial state (the scene must outlive the panel's
+  /// use).
   void setScene(const Scene& scene);
   /// Starts a trajectory at map coordinates (x, y); false (with a message) when there is no state there.
   bool startAt(double x, double y);

@@ -40,7 +40,8 @@ vtkChartXY* PoincareChart::chart() const {
 }
 
 namespace {
-vtkSmartPointer<vtkTable> tableOf(const std::vector<double>& x, const std::vector<double>& y, vtkIdType series) {
+vtkSmartPointer<vtkTable> tableOf(const std::vector<double>& x, const std::vector<double>& y,
+                                  vtkIdType series) {
   auto table = vtkSmartPointer<vtkTable>::New();
   vtkNew<vtkDoubleArray> xs, ys;
   xs->SetName("x");

@@ -6,6 +6,7 @@
 extern "C" {
 #include <libavcodec/avcodec.h>
 #include <libavformat/avformat.h>
+#include <libavutil/log.h>
 #include <libavutil/opt.h>
 #include <libswscale/swscale.h>
 }
@@ -51,6 +52,7 @@ Mp4Writer::Mp4Writer(const std::string& path, int width, int height, int fps, co
     throw InputError("--size " + std::to_string(width) + "x" + std::to_string(height) +
                      ": a video needs an even width and height of at least 16");
   if (fps < 1 || fps > 240) throw InputError("--fps " + std::to_string(fps) + ": must lie in [1, 240]");
+  av_log_set_level(AV_LOG_ERROR); // libx264's banner is noise for users
   impl_ = std::make_unique<Impl>(path, what);
   Impl& m = *impl_;
   m.w = width, m.h = height;

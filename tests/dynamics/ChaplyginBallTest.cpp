@@ -4,6 +4,7 @@
 // on the plane and on itself.
 #include "dynamics/models/ChaplyginBall.h"
 #include "dynamics/core/Errors.h"
+#include "dynamics/integrators/Everhart.h"
 #include "dynamics/integrators/Rk4.h"
 #include "dynamics/kinematics/AndoyerDeprit.h"
 #include "dynamics/models/BodyState.h"
@@ -156,6 +157,47 @@ TEST(ChaplyginBall, RejectsImpossibleInertiaMassAndRadius) {
   EXPECT_THROW(test::makeModel("chaplygin_ball", {{"R", 0}}), InputError);
   EXPECT_NO_THROW(
       test::makeModel("chaplygin_ball", {{"I1", 1}, {"I2", 1}, {"I3", 2}})); // a flat disc is a body
+}
+
+} // namespace
+} // namespace rv
+
+namespace rv {
+namespace {
+
+TEST(ChaplyginBall, EverhartConservesAllFourIntegralsToTwelveDigitsOverAThousand) {
+  // two parameter sets: the default scene's, and a heavier ball with a larger, oblique gyrostat
+  const std::vector<std::pair<std::unique_ptr<Model>, std::vector<double>>> cases = [] {
+    std::vector<std::pair<std::unique_ptr<Model>, std::vector<double>>> c;
+    c.emplace_back(test::makeModel("chaplygin_ball", {{"K1", 0.2}, {"K2", 0.1}, {"K3", 0.3}}),
+                   std::vector<double>{0.5, 0.2});
+    c.emplace_back(test::makeModel("chaplygin_ball", {{"I1", 0.8},
+                                                      {"I2", 1.1},
+                                                      {"I3", 1.5},
+                                                      {"m", 2.0},
+                                                      {"R", 0.7},
+                                                      {"K1", -0.4},
+                                                      {"K2", 0.5},
+                                                      {"K3", 0.2},
+                                                      {"energy", 0.8},
+                                                      {"c", -0.2}}),
+                   std::vector<double>{1.0, -0.3});
+    return c;
+  }();
+  for (const auto& [model, point] : cases) {
+    const Eigen::VectorXd x0 = model->stateFromMap(point, {}, "t");
+    const Eigen::VectorXd I0 = model->integrals(x0.data());
+    Everhart e(0.1, 15, 12);
+    e.start(*model, 0, x0);
+    Eigen::VectorXd worst = Eigen::VectorXd::Zero(4);
+    while (e.time() < 1000 - 1e-9) {
+      e.step();
+      const Eigen::VectorXd I = model->integrals(e.state().data());
+      worst = worst.cwiseMax(((I - I0).array().abs() / I0.array().abs()).matrix());
+    }
+    for (int k = 0; k < 4; ++k)
+      EXPECT_LE(worst[k], test::tol(1e-12)) << model->info().integralNames[k];
+  }
 }
 
 } // namespace
