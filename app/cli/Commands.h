@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,9 @@ struct SceneArgs {
 
 /// Adds the SCENE positional and --set to a subcommand.
 void addSceneArgs(CLI::App* cmd, SceneArgs& args);
+
+/// The scene's Poincare map from its initial state; `points` > 0 overrides poincare.points (default 2000).
+std::unique_ptr<PoincareMap> scenePoincareMap(const Scene& scene, long points);
 
 /// Parses "WxH"; InputError naming --size otherwise.
 std::pair<int, int> parseSize(const std::string& text);

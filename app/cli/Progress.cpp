@@ -41,4 +41,11 @@ void Progress::update(double fraction) {
   std::fflush(stderr);
 }
 
+ToolControl interruptibleControl(Progress& progress) {
+  ToolControl c;
+  c.stopRequested = [] { return interrupted(); };
+  c.progress = [&progress](double f) { progress.update(f); };
+  return c;
+}
+
 } // namespace rv

@@ -1,5 +1,7 @@
 // Progress.h -- progress on stderr when it is a terminal, and Ctrl-C as a request to stop cleanly.
 #pragma once
+#include "dynamics/tools/ToolControl.h"
+
 #include <chrono>
 #include <string>
 
@@ -22,5 +24,8 @@ private:
   int last_ = -1;
   std::chrono::steady_clock::time_point shown_{};
 };
+
+/// Stops on Ctrl-C and reports into `progress` (which must outlive the control).
+ToolControl interruptibleControl(Progress& progress);
 
 } // namespace rv

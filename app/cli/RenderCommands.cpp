@@ -76,22 +76,15 @@ Command addChartCommand(CLI::App& app) {
               throw InputError("--view " + o->view + ": not available yet (views: poincare)");
             const Scene scene = o->scene.load();
             checkWritable(o->output, "-o");
-            SectionSettings s = scene.poincare;
-            if (o->points > 0) s.maxPoints = o->points;
-            if (s.maxPoints <= 0) s.maxPoints = 2000;
-            auto integ = scene.runSpec().makeIntegrator(*scene.model);
-            integ->start(*scene.model, 0, scene.initialState, s.backward ? -1 : +1);
-            PoincareMap map(*scene.model, std::move(integ), s);
+            const auto map = scenePoincareMap(scene, o->points);
             std::vector<double> x, y;
             Progress progress("poincare");
-            ToolControl control;
-            control.stopRequested = [] { return interrupted(); };
-            control.progress = [&](double f) { progress.update(f); };
-            while (auto p = map.next(control)) {
+            const ToolControl control = interruptibleControl(progress);
+            while (auto p = map->next(control)) {
               x.push_back(p->coordinates.at(0));
               y.push_back(p->coordinates.size() > 1 ? p->coordinates[1] : p->time);
             }
-            const auto& names = map.coordinateNames();
+            const auto& names = map->coordinateNames();
             PoincareChart chart(names.at(0), names.size() > 1 ? names[1] : "t");
             chart.addSeries(x, y, seriesColor(0));
             chart.select(0);

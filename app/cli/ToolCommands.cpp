@@ -56,13 +56,6 @@ void printPeaks(const std::string& function, const SpectrumResult& r) {
           .dump());
 }
 
-ToolControl cliControl(Progress& progress) {
-  ToolControl c;
-  c.stopRequested = [] { return interrupted(); };
-  c.progress = [&progress](double f) { progress.update(f); };
-  return c;
-}
-
 struct PoincareOptions {
   SceneArgs scene;
   long points = 0;
@@ -92,19 +85,14 @@ Command addPoincareCommand(CLI::App& app) {
   return {cmd, [o] {
             if (o->points < 0) throw InputError("--points: must be positive");
             const Scene scene = o->scene.load();
-            SectionSettings s = scene.poincare;
-            if (o->points > 0) s.maxPoints = o->points;
-            if (s.maxPoints <= 0) s.maxPoints = 2000;
-            auto integ = scene.runSpec().makeIntegrator(*scene.model);
-            integ->start(*scene.model, 0, scene.initialState, s.backward ? -1 : +1);
-            PoincareMap map(*scene.model, std::move(integ), s);
+            const auto map = scenePoincareMap(scene, o->points);
             Output out(o->output);
-            for (const auto& n : map.coordinateNames())
+            for (const auto& n : map->coordinateNames())
               std::fprintf(out.get(), "%s,", n.c_str());
             std::fprintf(out.get(), "t,sheet\n");
             Progress progress("poincare");
-            const ToolControl control = cliControl(progress);
-            while (auto p = map.next(control)) {
+            const ToolControl control = interruptibleControl(progress);
+            while (auto p = map->next(control)) {
               for (double c : p->coordinates)
                 std::fprintf(out.get(), "%.17g,", c);
               std::fprintf(out.get(), "%.17g,%d\n", p->time, p->sheet);
@@ -130,7 +118,7 @@ Command addLyapunovCommand(CLI::App& app) {
             Progress progress("lyapunov");
             const LyapunovResult r = lyapunovExponents(
                 model, [&] { return spec.makeIntegrator(model); }, scene.initialState, s, {},
-                cliControl(progress));
+                interruptibleControl(progress));
             if (o->json) {
               nlohmann::json j{{"exponents", r.last.exponents},
                                {"sum", r.last.sum()},
@@ -168,7 +156,7 @@ Command addSpectrumCommand(CLI::App& app) {
             Progress progress("spectrum");
             const SpectrumResult r = fourierSpectrum(*scene.model, *integ,
                                                      scene.model->isMap() || scene.integratorEntry->fixedStep,
-                                                     s, cliControl(progress));
+                                                     s, interruptibleControl(progress));
             if (o->output.empty() && o->json) {
               printPeaks(s.function, r);
               return interrupted() ? 130 : 0;

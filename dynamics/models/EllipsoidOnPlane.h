@@ -28,14 +28,6 @@ public:
     return BodyGeometry{.shape = BodyShape::Ellipsoid, .centre = -a_, .semiAxes = b2_.cwiseSqrt()};
   }
 
-  Eigen::VectorXd stateFromNamed(const std::map<std::string, double>& named,
-                                 const std::string& context) const override {
-    return namedState(named, context);
-  }
-  Eigen::VectorXd stateFromMap(const std::vector<double>& point, const MapPointSpec& spec,
-                               const std::string& context) const override {
-    return mapState(point, spec, context);
-  }
   /// Semi-axes and the geometric centre seen from the centre of mass (-a), for drawing.
   Eigen::Vector3d semiAxes() const { return b2_.cwiseSqrt(); }
   Eigen::Vector3d geometricCentre() const { return -a_; }

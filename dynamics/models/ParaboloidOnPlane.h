@@ -32,14 +32,6 @@ public:
                         .height = 1.5 * std::max(std::max(p_, q_), h_)};
   }
 
-  Eigen::VectorXd stateFromNamed(const std::map<std::string, double>& named,
-                                 const std::string& context) const override {
-    return namedState(named, context);
-  }
-  Eigen::VectorXd stateFromMap(const std::vector<double>& point, const MapPointSpec& spec,
-                               const std::string& context) const override {
-    return mapState(point, spec, context);
-  }
   double p() const { return p_; }
   double q() const { return q_; }
   double h() const { return h_; }

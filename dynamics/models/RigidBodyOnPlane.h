@@ -105,11 +105,15 @@ protected:
   void addRigidBodyObservables();
   /// A full state from M and gamma (alpha, beta completed; X = Y = 0).
   Eigen::VectorXd stateFrom(const Eigen::Vector3d& M, const Eigen::Vector3d& gamma) const;
-  Eigen::VectorXd namedState(const std::map<std::string, double>& named, const std::string& context) const;
-  /// (l, L/G, H/G) at g = g0: gamma from the angles, G from the energy (E is quadratic in G).
-  Eigen::VectorXd mapState(const std::vector<double>& point, const MapPointSpec& spec,
-                           const std::string& context) const;
 
+public:
+  Eigen::VectorXd stateFromNamed(const std::map<std::string, double>& named,
+                                 const std::string& context) const override;
+  /// (l, L/G, H/G) at g = g0: gamma from the angles, G from the energy (E is quadratic in G).
+  Eigen::VectorXd stateFromMap(const std::vector<double>& point, const MapPointSpec& spec,
+                               const std::string& context) const override;
+
+protected:
   RigidBodyConstants c_;
 
 private:

@@ -31,8 +31,8 @@ Eigen::VectorXd RigidBodyOnPlane<Derived>::stateFrom(const Eigen::Vector3d& M,
 }
 
 template <class Derived>
-Eigen::VectorXd RigidBodyOnPlane<Derived>::namedState(const std::map<std::string, double>& named,
-                                                      const std::string& context) const {
+Eigen::VectorXd RigidBodyOnPlane<Derived>::stateFromNamed(const std::map<std::string, double>& named,
+                                                          const std::string& context) const {
   const auto [M, g] = body_state::momentumAndVertical(named, context);
   if (!self().touches(g.normalized()))
     throw InputError(context + ": the body cannot touch the plane with this gamma");
@@ -43,9 +43,9 @@ Eigen::VectorXd RigidBodyOnPlane<Derived>::namedState(const std::map<std::string
 }
 
 template <class Derived>
-Eigen::VectorXd RigidBodyOnPlane<Derived>::mapState(const std::vector<double>& point,
-                                                    const MapPointSpec& spec,
-                                                    const std::string& context) const {
+Eigen::VectorXd RigidBodyOnPlane<Derived>::stateFromMap(const std::vector<double>& point,
+                                                        const MapPointSpec& spec,
+                                                        const std::string& context) const {
   if (point.size() != 3)
     throw InputError(context + ": map points of " + this->info().id + " are (l, L/G, H/G)");
   const double l = point[0], LG = point[1], HG = point[2], E = this->params_["energy"];
