@@ -175,10 +175,9 @@ Everhart::Everhart(double step, int order, int iterations) : h_(step), maxIterat
   if (effective == 0) throw InputError("order " + std::to_string(order) + " is below 3 (use 3, 7, ..., 27)");
   n_ = (effective + 1) / 2;
   const EverhartTables& t = tablesFor(n_);
-  cl_ = t.cl, gaussNodes_ = t.gaussNodes, gaussWeights_ = t.gaussWeights;
   integrated_ = &t.integrated;
   A_ = t.A, extrapolate_ = t.extrapolate, b_ = t.b;
-  c_.assign(cl_.begin(), cl_.end());
+  c_.assign(t.cl.begin(), t.cl.end());
 }
 
 void Everhart::start(const Model& model, double t0, const Eigen::VectorXd& x0, int direction) {

@@ -40,7 +40,6 @@ private:
   int n_, maxIterations_, lastIterations_ = 0;
   bool havePrevious_ = false;
   std::vector<double> c_;
-  std::vector<long double> cl_, gaussNodes_, gaussWeights_;
   const std::vector<std::vector<long double>>* integrated_ = nullptr; // shared tables, see Everhart.cpp
   Eigen::MatrixXd A_, extrapolate_; // A(i, j) = int_0^{c_i} l_j; extrapolate(l, j) = l_l(1 + c_j)
   Eigen::VectorXd b_;

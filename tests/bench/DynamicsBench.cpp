@@ -88,10 +88,17 @@ void Rk4Chaplygin_odeint(benchmark::State& state) {
 }
 
 // high accuracy: chaplygin_ball over t = 1000 to a final relative energy error near 1e-12
+struct AccurateCase {
+  std::unique_ptr<Model> model = chaplygin();
+  Eigen::VectorXd x0 = model->stateFromMap({0.5, 0.2}, {}, "bench");
+  double E0 = model->integrals(x0.data())[0];
+};
+
 void AccurateChaplygin_rollviz(benchmark::State& state) {
-  const auto m = chaplygin();
-  const Eigen::VectorXd x0 = m->stateFromMap({0.5, 0.2}, {}, "bench");
-  const double E0 = m->integrals(x0.data())[0];
+  const AccurateCase c;
+  const Model* m = c.model.get();
+  const Eigen::VectorXd& x0 = c.x0;
+  const double E0 = c.E0;
   double err = 0;
   long evals = 0;
   for (auto _ : state) {
@@ -108,9 +115,10 @@ void AccurateChaplygin_rollviz(benchmark::State& state) {
 }
 
 void AccurateChaplygin_odeint(benchmark::State& state) {
-  const auto m = chaplygin();
-  const Eigen::VectorXd x0 = m->stateFromMap({0.5, 0.2}, {}, "bench");
-  const double E0 = m->integrals(x0.data())[0];
+  const AccurateCase c;
+  const Model* m = c.model.get();
+  const Eigen::VectorXd& x0 = c.x0;
+  const double E0 = c.E0;
   double err = 0;
   long evals = 0;
   for (auto _ : state) {
