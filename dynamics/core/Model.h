@@ -2,6 +2,7 @@
 // and the equations; the mutable state is a plain vector owned by whoever integrates it (MuJoCo's
 // mjModel/mjData split).
 #pragma once
+#include "dynamics/core/Diagram.h"
 #include "dynamics/core/ParameterTable.h"
 
 #include <Eigen/Core>
@@ -116,6 +117,9 @@ public:
   /// Throws InputError when the point has no state (outside the region of allowed motion).
   virtual Eigen::VectorXd stateFromMap(const std::vector<double>& point, const MapPointSpec& spec,
                                        const std::string& context) const;
+
+  /// Bifurcation diagrams on the plane of first integrals at these parameter values (none by default).
+  virtual std::vector<Diagram> diagrams() const { return {}; }
 
   const std::vector<Observable>& observables() const { return observables_; }
   /// Index of an observable by id, or -1.
