@@ -40,6 +40,8 @@ const ModelInfo& StandardMap::staticInfo() {
 
 StandardMap::StandardMap(const ParameterValues& p) : ModelWithField(staticInfo(), p), K_(p["K"]) {
   addStandardObservables();
+  for (auto& o : observables_) // both coordinates live on the torus
+    if (o.id == "theta" || o.id == "p") o.angle = true;
 }
 
 } // namespace rv

@@ -30,6 +30,7 @@ PoincareMap::PoincareMap(const Model& model, std::unique_ptr<Integrator> integra
   last_ = integ_->state();
   work_.resize(last_.size());
   sigma_ = section_ ? sectionFunction(integ_->time(), integ_->state()) : 0;
+  startOnSection_ = section_ && std::abs(sigma_) < 1e-9;
 }
 
 double PoincareMap::sectionFunction(double t, const Eigen::VectorXd& x) const {
@@ -65,7 +66,10 @@ std::optional<MapPoint> PoincareMap::next(const ToolControl& control) {
       // backward)
       const double rising = dir * (sigma_ - sigmaBefore);
       const bool crossed = (sigmaBefore < 0) != (sigma_ < 0) && sigmaBefore != 0;
-      if (!crossed || (s_.checkDirection && rising * s_.direction <= 0)) continue;
+      const bool leaving = startOnSection_;
+      startOnSection_ = false;
+      // a point started on the section (a map point) must not count as its own first return
+      if (!crossed || leaving || (s_.checkDirection && rising * s_.direction <= 0)) continue;
       // Illinois regula falsi on the dense output
       double a = integ_->previousTime(), b = t, fa = sigmaBefore, fb = sigma_;
       int side = 0;

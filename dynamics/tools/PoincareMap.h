@@ -62,6 +62,7 @@ private:
   std::vector<std::string> names_;
   Eigen::VectorXd last_, work_;
   double sigma_ = 0;
+  bool startOnSection_ = false; ///< a start on the section is not a crossing
   long crossings_ = 0, points_ = 0;
 };
 

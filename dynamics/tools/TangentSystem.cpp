@@ -23,6 +23,11 @@ TangentSystem::TangentSystem(const Model& base, int vectors)
     : detail::TangentInfo(makeTangentInfo(base, vectors)), Model(tangentInfo, base.parameters()), base_(base),
       n_(base.dimension()), m_(base.info().coreDimension), k_(vectors) {
   J_.resize(m_, m_);
+  observables_ = base.observables(); // they read the base part of the state only: sections work unchanged
+}
+
+int TangentSystem::sheetOf(const Eigen::VectorXd& x, const MapPointSpec& spec) const {
+  return base_.sheetOf(x.head(n_), spec);
 }
 
 void TangentSystem::rhs(const double* x, double* dx) const {

@@ -22,6 +22,8 @@ public:
   void rhs(const double* x, double* dx) const override;
   /// Not needed by any tool; throws.
   void jacobian(const double* x, double* jac) const override;
+  /// The base model's sheet of the base part of the state.
+  int sheetOf(const Eigen::VectorXd& x, const MapPointSpec& spec) const override;
 
   const Model& base() const { return base_; }
   int vectors() const { return k_; }

@@ -1,0 +1,154 @@
+#include "dynamics/tools/FixedPoint.h"
+
+#include "dynamics/core/Errors.h"
+#include "dynamics/core/Format.h"
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
+
+namespace rv {
+
+std::vector<std::complex<double>> multipliersOf(const Eigen::MatrixXd& jacobian) {
+  Eigen::EigenSolver<Eigen::MatrixXd> es(jacobian, false);
+  std::vector<std::complex<double>> m(es.eigenvalues().data(), es.eigenvalues().data() + jacobian.rows());
+  std::sort(m.begin(), m.end(), [](auto a, auto b) {
+    return std::abs(a) != std::abs(b) ? std::abs(a) > std::abs(b) : a.imag() > b.imag();
+  });
+  return m;
+}
+
+namespace {
+
+std::string classifyPair(std::complex<double> a, std::complex<double> b, double tol) {
+  const bool complexPair = std::abs(a.imag()) > tol;
+  if (complexPair) {
+    const double r = std::abs(a);
+    if (std::abs(r - 1) <= tol) return "elliptic";
+    return r < 1 ? "stable focus" : "unstable focus";
+  }
+  const double x = a.real(), y = b.real();
+  if (std::abs(std::abs(x) - 1) <= tol || std::abs(std::abs(y) - 1) <= tol) return "parabolic";
+  const double big = std::abs(x) > std::abs(y) ? x : y, small = std::abs(x) > std::abs(y) ? y : x;
+  if (std::abs(big) > 1 && std::abs(small) < 1) return big < 0 ? "hyperbolic with reflection" : "hyperbolic";
+  return std::abs(big) < 1 ? "stable node" : "unstable node";
+}
+
+} // namespace
+
+std::string classifyFixedPoint(const std::vector<std::complex<double>>& m, double tol) {
+  if (m.size() == 1) {
+    const double r = std::abs(m[0]);
+    return std::abs(r - 1) <= tol ? "parabolic" : r < 1 ? "stable" : "unstable";
+  }
+  if (m.size() == 2) return classifyPair(m[0], m[1], tol);
+  if (m.size() == 3) {
+    // a unit multiplier (an integral, or the direction along a family) is set aside
+    for (int i = 0; i < 3; ++i)
+      if (std::abs(m[i] - 1.0) <= tol) {
+        std::vector<std::complex<double>> rest;
+        for (int j = 0; j < 3; ++j)
+          if (j != i) rest.push_back(m[j]);
+        return classifyPair(rest[0], rest[1], tol);
+      }
+  }
+  int inside = 0, outside = 0;
+  for (auto z : m) {
+    const double r = std::abs(z);
+    if (r < 1 - tol) ++inside;
+    if (r > 1 + tol) ++outside;
+  }
+  if (inside && outside) return "hyperbolic";
+  if (inside) return "stable";
+  if (outside) return "unstable";
+  return "elliptic";
+}
+
+FixedPointResult findFixedPoint(const ReturnMap& map, const Eigen::VectorXd& guess,
+                                const FixedPointSettings& s, const ToolControl& control,
+                                const std::function<void(const SearchPoint&)>& onPoint) {
+  const int d = map.dimension();
+  if (guess.size() != d)
+    throw InputError(format("--guess: the map of %s has %d coordinates, the guess has %d",
+                            map.model().info().id.c_str(), d, static_cast<int>(guess.size())));
+  if (s.maxIterations < 1)
+    throw InputError("fixed point: the maximal number of iterations must be at least 1");
+  if (!(s.accuracy > 0) || !(s.maxDistance > 0))
+    throw InputError("fixed point: the accuracy and the maximal distance must be positive");
+  if (s.section2D && d != 3) throw InputError("fixed point: the 2D section mode needs a 3D map");
+  const int k = s.section2D ? 2 : d; // the unknowns: all coordinates, or x and y at fixed z
+  const long evaluationsBefore = map.evaluations();
+
+  FixedPointResult r;
+  Eigen::VectorXd x = guess;
+  const auto record = [&](const Eigen::VectorXd& p, double residual) {
+    r.path.push_back({p, residual});
+    if (onPoint) onPoint(r.path.back());
+  };
+  const auto residualAt = [&](const Eigen::VectorXd& p) {
+    return map.difference(map(p, control), p).head(k).norm();
+  };
+  for (int it = 0;; ++it) {
+    const Linearization lin = map.linearize(x, s.derivatives, control);
+    const Eigen::VectorXd F = map.difference(lin.image, x).head(k);
+    const Eigen::MatrixXd A = lin.jacobian.topLeftCorner(k, k) - Eigen::MatrixXd::Identity(k, k);
+    double residual = F.norm();
+    record(x, residual);
+    Eigen::FullPivLU<Eigen::MatrixXd> lu(A);
+    if (residual <= s.accuracy) {
+      // converged: up to two more Newton steps, kept only while they reduce the residual
+      for (int polish = 0; polish < 2 && s.method == FixedPointMethod::Newton && lu.isInvertible();
+           ++polish) {
+        Eigen::VectorXd y = x;
+        y.head(k) -= lu.solve(map.difference(map(x, control), x).head(k));
+        const double ry = residualAt(y);
+        if (!(ry < residual)) break;
+        x = y, residual = ry;
+        record(x, residual);
+      }
+      r.point = map.canonical(x);
+      r.residual = residual;
+      r.iterations = it;
+      r.jacobian = lin.jacobian;
+      break;
+    }
+    if (it >= s.maxIterations)
+      throw ComputationError(format("fixed point: no convergence in %d iterations (|Map^%d(x) - x| = %.3g, "
+                                    "accuracy %.3g)",
+                                    s.maxIterations, map.order(), residual, s.accuracy));
+    Eigen::VectorXd dx;
+    if (s.method == FixedPointMethod::Newton) {
+      if (!lu.isInvertible())
+        throw ComputationError(
+            "fixed point: D Map^n - I is singular; try the gradient method or the 2D section");
+      dx = -lu.solve(F);
+    } else {
+      // steepest descent on |F|^2 / 2, the step where its linear model vanishes, halved until it decreases
+      const Eigen::VectorXd g = A.transpose() * F;
+      if (g.norm() == 0) throw ComputationError("fixed point: the gradient of |Map^n(x) - x| vanishes");
+      dx = -(0.5 * residual * residual / g.squaredNorm()) * g;
+    }
+    if (dx.norm() > s.maxDistance) dx *= s.maxDistance / dx.norm();
+    if (s.method == FixedPointMethod::Gradient) {
+      for (int halving = 0;; ++halving) {
+        Eigen::VectorXd y = x;
+        y.head(k) += dx;
+        double ry = std::numeric_limits<double>::infinity();
+        try {
+          ry = residualAt(y);
+        } catch (const ComputationError&) {
+        }
+        if (ry < residual || halving == 40) break;
+        dx /= 2;
+      }
+    }
+    x.head(k) += dx;
+  }
+  r.multipliers = multipliersOf(r.jacobian);
+  r.type = classifyFixedPoint(r.multipliers, s.typeTolerance);
+  r.evaluations = map.evaluations() - evaluationsBefore;
+  return r;
+}
+
+} // namespace rv

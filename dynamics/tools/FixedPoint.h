@@ -1,0 +1,66 @@
+// FixedPoint.h -- fixed points of order n of a map (manual §2.3.4): zeros of F(x) = Map^n(x) - x by Newton's
+// method or by gradient descent on |F|^2 / 2, both with the distance between consecutive points bounded;
+// derivatives by finite differences or variational equations (ReturnMap). For 3D maps the "2D section" mode
+// searches on the plane z = const (degenerate points of maps with an integral). The result carries the
+// multipliers (eigenvalues of D Map^n) and the point's type.
+//
+// Newton with a bounded step: Dennis & Schnabel, Numerical Methods for Unconstrained Optimization and
+// Nonlinear Equations (1983) ch. 6; classification of fixed points of maps: Kuznetsov, Elements of Applied
+// Bifurcation Theory (2004) §1.5.
+#pragma once
+#include "dynamics/tools/ReturnMap.h"
+
+#include <complex>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace rv {
+
+enum class FixedPointMethod { Newton, Gradient };
+
+struct FixedPointSettings {
+  FixedPointMethod method = FixedPointMethod::Newton;
+  int maxIterations = 100;
+  double accuracy = 1e-10;  ///< |Map^n(x) - x| at the fixed point
+  double maxDistance = 0.1; ///< between consecutive points of the search
+  bool section2D = false;   ///< 3D maps: search on the plane z = const (z of the guess)
+  DerivativeSettings derivatives;
+  double typeTolerance = 1e-6; ///< how close to the unit circle (or to +-1) a multiplier counts as on it
+};
+
+/// One point of the search path.
+struct SearchPoint {
+  Eigen::VectorXd point;
+  double residual = 0; ///< |Map^n(x) - x|
+};
+
+struct FixedPointResult {
+  Eigen::VectorXd point;
+  std::vector<std::complex<double>> multipliers; ///< eigenvalues of D Map^n at the point
+  Eigen::MatrixXd jacobian;                      ///< D Map^n at the point
+  std::string type;                              ///< see classifyFixedPoint
+  double residual = 0;
+  int iterations = 0;
+  long evaluations = 0; ///< map evaluations spent
+  std::vector<SearchPoint> path;
+};
+
+/// The type of a fixed point from its multipliers: 2D maps "elliptic", "hyperbolic", "hyperbolic with
+/// reflection", "parabolic" (a multiplier +-1), and for maps that do not preserve area "stable node",
+/// "unstable node", "stable focus", "unstable focus". 3D maps: a multiplier equal to 1 (an integral) is set
+/// aside and the other two classified as above; otherwise "elliptic" (all on the unit circle), "hyperbolic"
+/// (some inside, some outside), "stable" or "unstable".
+std::string classifyFixedPoint(const std::vector<std::complex<double>>& multipliers, double tolerance);
+
+/// Eigenvalues of a square matrix, sorted by decreasing modulus (then by imaginary part).
+std::vector<std::complex<double>> multipliersOf(const Eigen::MatrixXd& jacobian);
+
+/// Searches a fixed point of `map` from `guess`. `onPoint` sees every point of the search path. Throws
+/// ComputationError when the search does not converge in maxIterations (or leaves the region of allowed
+/// motion), InputError for inconsistent settings, Stopped when asked to stop.
+FixedPointResult findFixedPoint(const ReturnMap& map, const Eigen::VectorXd& guess,
+                                const FixedPointSettings& settings, const ToolControl& control = {},
+                                const std::function<void(const SearchPoint&)>& onPoint = {});
+
+} // namespace rv

@@ -1,0 +1,196 @@
+// Fixed points, multipliers and continuation against analytic answers (Henon map, standard map, the
+// straight-line orbit of Henon-Heiles), and finite-difference derivatives of Poincare maps against the
+// variational equations.
+#include "dynamics/tools/FixedPoint.h"
+#include "dynamics/core/Errors.h"
+#include "dynamics/integrators/Everhart.h"
+#include "dynamics/tools/Continuation.h"
+#include "tests/dynamics/TestSupport.h"
+
+#include <cmath>
+#include <gtest/gtest.h>
+#include <numbers>
+
+namespace rv {
+namespace {
+
+constexpr double pi = std::numbers::pi;
+
+IntegratorFactory everhart(double h = 0.05) {
+  return [h] { return std::make_unique<Everhart>(h, 15, 12); };
+}
+
+SectionSettings order(int n) {
+  SectionSettings s;
+  s.order = n;
+  return s;
+}
+
+TEST(FixedPoint, HenonMapBothPointsAreAnalyticAndHyperbolic) {
+  const double a = 1.4, b = 0.3;
+  const auto m = test::makeModel("henon_map", {{"a", a}, {"b", b}});
+  const ReturnMap map(*m, everhart(), order(1));
+  for (double sign : {+1.0, -1.0}) {
+    const double x = (-(1 - b) + sign * std::sqrt((1 - b) * (1 - b) + 4 * a)) / (2 * a);
+    for (auto method : {DerivativeMethod::FiniteDifferences, DerivativeMethod::Variational}) {
+      FixedPointSettings s;
+      s.derivatives.method = method;
+      s.accuracy = 1e-13;
+      const auto r = findFixedPoint(map, Eigen::Vector2d(x + 0.05, b * x - 0.03), s);
+      EXPECT_NEAR(r.point[0], x, 1e-12);
+      EXPECT_NEAR(r.point[1], b * x, 1e-12);
+      EXPECT_NE(r.type.find("hyperbolic"), std::string::npos) << r.type;
+      // det D = -b: the multipliers' product
+      const auto prod = r.multipliers[0] * r.multipliers[1];
+      EXPECT_NEAR(prod.real(), -b, 1e-8);
+      EXPECT_NEAR(prod.imag(), 0, 1e-12);
+      // each multiplier solves lambda^2 + 2 a x lambda - b = 0
+      for (auto l : r.multipliers)
+        EXPECT_NEAR(std::abs(l * l + 2 * a * x * l - b), 0, 1e-7);
+    }
+  }
+}
+
+TEST(FixedPoint, GradientDescentFindsTheHenonPointToo) {
+  const auto m = test::makeModel("henon_map", {});
+  const ReturnMap map(*m, everhart(), order(1));
+  FixedPointSettings s;
+  s.method = FixedPointMethod::Gradient;
+  s.maxIterations = 5000;
+  s.accuracy = 1e-11;
+  s.maxDistance = 0.01;
+  const double x = (-0.7 + std::sqrt(0.49 + 5.6)) / 2.8;
+  std::vector<double> distances;
+  const auto r = findFixedPoint(map, Eigen::Vector2d(0.55, 0.25), s, {},
+                                [&](const SearchPoint& p) { distances.push_back(p.residual); });
+  EXPECT_NEAR(r.point[0], x, 1e-10);
+  EXPECT_NEAR(r.point[1], 0.3 * x, 1e-10);
+  ASSERT_GE(r.path.size(), 2u);
+  for (std::size_t i = 1; i < r.path.size(); ++i) // descent, with bounded steps
+    EXPECT_LE((r.path[i].point - r.path[i - 1].point).norm(), 0.01 + 1e-15);
+}
+
+TEST(FixedPoint, StandardMapCentreIsEllipticWithTraceTwoMinusK) {
+  for (double K : {0.5, 1.5, 3.0, 3.9}) {
+    const auto m = test::makeModel("standard_map", {{"K", K}});
+    const ReturnMap map(*m, everhart(), order(1));
+    const auto r = findFixedPoint(map, Eigen::Vector2d(3.1, 0.05), {});
+    EXPECT_NEAR(r.point[0], pi, 1e-12);
+    EXPECT_NEAR(std::remainder(r.point[1], 2 * pi), 0, 1e-12);
+    EXPECT_EQ(r.type, "elliptic") << "K = " << K;
+    EXPECT_NEAR((r.multipliers[0] + r.multipliers[1]).real(), 2 - K, 1e-9);
+    EXPECT_NEAR(std::abs(r.multipliers[0]), 1, 1e-9);
+  }
+  const auto m = test::makeModel("standard_map", {{"K", 4.5}});
+  const auto r = findFixedPoint(ReturnMap(*m, everhart(), order(1)), Eigen::Vector2d(3.1, 0.05), {});
+  EXPECT_EQ(r.type, "hyperbolic with reflection");
+  // the saddle at the origin, approached across the seam of the torus
+  const auto m1 = test::makeModel("standard_map", {{"K", 1.5}});
+  const auto o = findFixedPoint(ReturnMap(*m1, everhart(), order(1)), Eigen::Vector2d(6.2, 0.05), {});
+  EXPECT_NEAR(std::remainder(o.point[0], 2 * pi), 0, 1e-12);
+  EXPECT_EQ(o.type, "hyperbolic");
+  EXPECT_NEAR((o.multipliers[0] + o.multipliers[1]).real(), 2 + 1.5, 1e-9);
+}
+
+TEST(FixedPoint, HenonHeilesStraightLineOrbitByNewton) {
+  const auto m = test::makeModel("henon_heiles", {{"energy", 0.125}});
+  const ReturnMap map(*m, everhart(), order(1));
+  FixedPointSettings fd, var;
+  var.derivatives.method = DerivativeMethod::Variational;
+  const auto a = findFixedPoint(map, Eigen::Vector2d(0.03, 0.22), fd);
+  const auto b = findFixedPoint(map, Eigen::Vector2d(0.03, 0.22), var);
+  for (const auto* r : {&a, &b}) {
+    // the line at 30 degrees through the origin, crossed at speed sqrt(2E) = 1/2: py = 1/2 sin 30
+    EXPECT_NEAR(r->point[0], 0, 1e-9);
+    EXPECT_NEAR(r->point[1], 0.25, 1e-9);
+    EXPECT_EQ(r->type, "elliptic");
+    for (auto l : r->multipliers)
+      EXPECT_NEAR(std::abs(l), 1, 1e-6);
+  }
+  EXPECT_LT((a.jacobian - b.jacobian).norm(), 1e-6) << a.jacobian << "\n\n" << b.jacobian;
+}
+
+// the variational derivative with the section correction equals finite differences on Poincare maps of the
+// rolling bodies (2D and 3D maps)
+TEST(ReturnMap, VariationalDerivativeMatchesFiniteDifferences) {
+  struct Case {
+    const char* id;
+    std::vector<double> point;
+  };
+  for (const Case& c : {Case{"chaplygin_ball", {0.5, 0.2}}, Case{"ellipsoid_on_plane", {0.3, 0.4, 0.2}}}) {
+    const auto m = test::makeModel(c.id, {});
+    const ReturnMap map(*m, everhart(0.02), order(1));
+    const Eigen::VectorXd x = Eigen::Map<const Eigen::VectorXd>(c.point.data(), c.point.size());
+    DerivativeSettings fd;
+    fd.linearRegion = 1e-4;
+    DerivativeSettings var{.method = DerivativeMethod::Variational};
+    const auto a = map.linearize(x, fd), b = map.linearize(x, var);
+    EXPECT_LT(map.difference(a.image, b.image).norm(), 1e-10) << c.id;
+    EXPECT_LT((a.jacobian - b.jacobian).norm(), 1e-6 * (1 + a.jacobian.norm()))
+        << c.id << "\nFD:\n"
+        << a.jacobian << "\nvariational:\n"
+        << b.jacobian;
+  }
+}
+
+TEST(FixedPoint, FailuresSayWhy) {
+  const auto m = test::makeModel("henon_map", {});
+  const ReturnMap map(*m, everhart(), order(1));
+  FixedPointSettings s;
+  s.maxIterations = 2;
+  s.maxDistance = 1e-3;
+  try {
+    findFixedPoint(map, Eigen::Vector2d(0.2, 0.0), s);
+    FAIL() << "no convergence expected";
+  } catch (const ComputationError& e) {
+    EXPECT_NE(std::string(e.what()).find("no convergence in 2 iterations"), std::string::npos) << e.what();
+  }
+  FixedPointSettings z;
+  z.derivatives.method = DerivativeMethod::FiniteDifferences;
+  z.derivatives.accuracy = 1e-30; // a linear approximation never agrees this well: the step reaches zero
+  z.derivatives.zero = 1e-6;
+  try {
+    findFixedPoint(map, Eigen::Vector2d(0.6, 0.2), z);
+    FAIL() << "the derivative step should reach zero";
+  } catch (const ComputationError& e) {
+    EXPECT_NE(std::string(e.what()).find("value of zero"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(findFixedPoint(map, Eigen::Vector3d(0.6, 0.2, 0), {}), InputError);
+}
+
+TEST(Continuation, StandardMapPeriodDoublingAtKEqualsFour) {
+  ContinuationSettings s;
+  s.parameter = "K";
+  s.to = 4.5;
+  s.step = 0.05;
+  const Continuation::ModelAt at = [](double K) { return test::makeModel("standard_map", {{"K", K}}); };
+  Continuation c(at, everhart(), order(1), 1.5, Eigen::Vector2d(3.14159, 0), s);
+  ASSERT_TRUE(c.run({}));
+  ASSERT_EQ(c.points().size(), 61u);
+  for (const auto& p : c.points())
+    EXPECT_NEAR((p.fixedPoint.multipliers[0] + p.fixedPoint.multipliers[1]).real(), 2 - p.parameter, 1e-9);
+  ASSERT_EQ(c.changes().size(), 1u);
+  const TypeChange& t = c.changes()[0];
+  EXPECT_EQ(t.kind, "multiplier -1");
+  EXPECT_EQ(t.from, "elliptic");
+  EXPECT_EQ(t.to, "hyperbolic with reflection");
+  EXPECT_NEAR(t.parameter, 4.0, 1e-8);
+  EXPECT_NEAR(c.points().back().parameter, 4.5, 1e-15);
+}
+
+TEST(Continuation, StopsAtTypeChangeAndRejectsAWrongDirection) {
+  ContinuationSettings s;
+  s.parameter = "K";
+  s.to = 4.5;
+  s.step = 0.1;
+  s.stopAtTypeChange = true;
+  const Continuation::ModelAt at = [](double K) { return test::makeModel("standard_map", {{"K", K}}); };
+  Continuation c(at, everhart(), order(1), 3.0, Eigen::Vector2d(3.1, 0), s);
+  ASSERT_TRUE(c.run({}));
+  EXPECT_NEAR(c.points().back().parameter, 4.1, 1e-12);
+  s.step = -0.1;
+  EXPECT_THROW(Continuation(at, everhart(), order(1), 3.0, Eigen::Vector2d(3.1, 0), s), InputError);
+}
+
+} // namespace
+} // namespace rv
