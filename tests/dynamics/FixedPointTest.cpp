@@ -4,7 +4,7 @@
 #include "dynamics/tools/FixedPoint.h"
 #include "dynamics/core/Errors.h"
 #include "dynamics/integrators/Everhart.h"
-#include "dynamics/tools/Continuation.h"
+#include "dynamics/tools/BifurcationTree.h"
 #include "tests/dynamics/TestSupport.h"
 
 #include <cmath>
@@ -190,6 +190,59 @@ TEST(Continuation, StopsAtTypeChangeAndRejectsAWrongDirection) {
   EXPECT_NEAR(c.points().back().parameter, 4.1, 1e-12);
   s.step = -0.1;
   EXPECT_THROW(Continuation(at, everhart(), order(1), 3.0, Eigen::Vector2d(3.1, 0), s), InputError);
+}
+
+} // namespace
+} // namespace rv
+
+namespace rv {
+namespace {
+
+// The area-preserving Henon map (b = -1) has the fixed point x = (sqrt(1 + a) - 1) / a with trace
+// 2 - 2 sqrt(1 + a): it doubles at a = 3. Its 2-cycle has x1 + x2 = 2 / a, x1 x2 = (4 - a) / a^2 and
+// tr D(P^2) = 4 a^2 x1 x2 - 2 = 14 - 4a: it doubles at a = 4. (The standard map's 2-cycle does not double:
+// its trace touches -2 and turns back, which the tree correctly ignores.)
+TEST(BifurcationTree, AreaPreservingHenonCascadeMatchesTheAnalyticFirstTwoDoublings) {
+  BifurcationTreeSettings s;
+  s.continuation.parameter = "a";
+  s.continuation.to = 4.2;
+  s.continuation.step = 0.05;
+  s.maxLevels = 2;
+  const Continuation::ModelAt at = [](double a) {
+    return test::makeModel("henon_map", {{"a", a}, {"b", -1}});
+  };
+  std::vector<double> ratioInput;
+  const auto r = bifurcationTree(at, everhart(), order(1), 2.0, Eigen::Vector2d(0.4, -0.4), s);
+  ASSERT_GE(r.doublings.size(), 2u);
+  EXPECT_NEAR(r.doublings[0].parameter, 3.0, 1e-8);
+  EXPECT_EQ(r.doublings[0].order, 1);
+  EXPECT_NEAR(r.doublings[1].parameter, 4.0, 1e-8);
+  EXPECT_EQ(r.doublings[1].order, 2);
+  ASSERT_GE(r.branches.size(), 2u);
+  EXPECT_EQ(r.branches[1].order, 2);
+  for (const auto& p : r.branches[1].points) { // on the analytic 2-cycle: its partner is (-y, ...)
+    const double a = p.parameter, x1 = p.fixedPoint.point[0], x2 = -p.fixedPoint.point[1];
+    EXPECT_NEAR(x1 + x2, 2 / a, 1e-9) << "a = " << a;
+    EXPECT_NEAR(x1 * x2, (4 - a) / (a * a), 1e-9) << "a = " << a;
+  }
+  if (r.doublings.size() >= 3) { // the period-4 orbit doubles a little later (Feigenbaum's ratio ~ 8.7)
+    EXPECT_GT(r.doublings[2].parameter, 4.0);
+    EXPECT_LT(r.doublings[2].parameter, 4.2);
+  }
+}
+
+TEST(BifurcationTree, RefusesAHyperbolicStart) {
+  BifurcationTreeSettings s;
+  s.continuation.parameter = "K";
+  s.continuation.to = 2;
+  s.continuation.step = 0.1;
+  const Continuation::ModelAt at = [](double K) { return test::makeModel("standard_map", {{"K", K}}); };
+  try {
+    bifurcationTree(at, everhart(), order(1), 1.0, Eigen::Vector2d(0.01, 0.01), s);
+    FAIL();
+  } catch (const ComputationError& e) {
+    EXPECT_NE(std::string(e.what()).find("not elliptic"), std::string::npos) << e.what();
+  }
 }
 
 } // namespace

@@ -1,0 +1,103 @@
+#include "dynamics/tools/BifurcationTree.h"
+
+#include "dynamics/core/Errors.h"
+#include "dynamics/core/Format.h"
+
+#include <Eigen/Eigenvalues>
+#include <cmath>
+
+namespace rv {
+
+std::vector<double> BifurcationTreeResult::ratios() const {
+  std::vector<double> r;
+  for (std::size_t k = 2; k < doublings.size(); ++k)
+    r.push_back((doublings[k - 1].parameter - doublings[k - 2].parameter) /
+                (doublings[k].parameter - doublings[k - 1].parameter));
+  return r;
+}
+
+namespace {
+
+// the real eigenvector of the multiplier nearest -1
+Eigen::VectorXd flipDirection(const Eigen::MatrixXd& J) {
+  Eigen::EigenSolver<Eigen::MatrixXd> es(J);
+  Eigen::Index best = 0;
+  for (Eigen::Index i = 1; i < J.rows(); ++i)
+    if (std::abs(es.eigenvalues()[i] + 1.0) < std::abs(es.eigenvalues()[best] + 1.0)) best = i;
+  Eigen::VectorXd v = es.eigenvectors().col(best).real();
+  return v / v.norm();
+}
+
+} // namespace
+
+BifurcationTreeResult bifurcationTree(
+    const Continuation::ModelAt& modelAt, const IntegratorFactory& make, const SectionSettings& section,
+    double start, const Eigen::VectorXd& guess, const BifurcationTreeSettings& s, const ToolControl& control,
+    const std::function<void(const TreeBranch&, const ContinuationPoint&)>& onPoint,
+    const std::function<void(const PeriodDoubling&)>& onDoubling, BifurcationTreeResult* partial) {
+  if (!(s.coefficient > 1)) throw InputError("bifurcation tree: the coefficient must exceed 1");
+  if (!(s.regionSize > 0) || !(s.bifurcationAccuracy > 0))
+    throw InputError("bifurcation tree: the region size and the accuracy must be positive");
+  BifurcationTreeResult local;
+  BifurcationTreeResult& result = partial ? *partial : local;
+  ContinuationSettings cs = s.continuation;
+  cs.stopAtTypeChange = true;
+  cs.bifurcationAccuracy = s.bifurcationAccuracy;
+  SectionSettings sec = section;
+  double p0 = start, region = s.regionSize;
+  Eigen::VectorXd x0 = guess;
+  for (int level = 0; level <= s.maxLevels; ++level) {
+    Continuation c(modelAt, make, sec, p0, x0, cs);
+    result.branches.push_back(TreeBranch{.level = level, .order = sec.order});
+    const auto addPoint = [&](const ContinuationPoint& p) {
+      TreeBranch& b = result.branches.back();
+      if (level == 0 && b.points.empty() && p.fixedPoint.type != "elliptic")
+        throw ComputationError("bifurcation tree: the initial point is " + p.fixedPoint.type +
+                               ", not elliptic; start the tree from an elliptic point");
+      b.points.push_back(p);
+      if (onPoint) onPoint(b, p);
+    };
+    if (!c.run(control, addPoint)) throw Stopped{};
+    if (c.changes().empty()) break; // reached the finite value
+    const TypeChange& t = c.changes().back();
+    if (t.kind != "multiplier -1") break; // the family ends otherwise (e.g. a saddle-node): nothing doubles
+    const PeriodDoubling d{level, sec.order, t.parameter, t.at.fixedPoint.point};
+    result.doublings.push_back(d);
+    if (onDoubling) onDoubling(d);
+    if (level == s.maxLevels) break;
+    // the doubled points, a little past the bifurcation, along the eigenvector of the -1 multiplier
+    const double p1 = t.parameter + cs.step / s.coefficient;
+    if ((cs.to - p1) * cs.step <= 0) break;
+    SectionSettings doubled = sec;
+    doubled.order = 2 * sec.order;
+    const auto model = modelAt(p1);
+    const ReturnMap twice(*model, make, doubled), once(*model, make, sec);
+    const Eigen::VectorXd v = flipDirection(t.at.fixedPoint.jacobian);
+    std::optional<FixedPointResult> found;
+    for (double f : {1.0, 2.0, 0.5, 4.0, 0.25}) {
+      try {
+        auto r = findFixedPoint(twice, t.at.fixedPoint.point + f * region * v, cs.search, control);
+        // a point of the doubled family is not a fixed point of the original order
+        if (once.difference(once(r.point, control), r.point).norm() > 100 * cs.search.accuracy) {
+          found = std::move(r);
+          break;
+        }
+      } catch (const ComputationError&) {
+      }
+    }
+    if (!found)
+      throw ComputationError(
+          format("bifurcation tree: no point of order %d found near the period doubling at "
+                 "%s = %.12g within %g of the point",
+                 doubled.order, cs.parameter.c_str(), t.parameter, 4 * region));
+    sec = doubled;
+    p0 = p1;
+    x0 = found->point;
+    cs.step /= s.coefficient;
+    cs.bifurcationAccuracy /= s.coefficient;
+    region /= s.coefficient;
+  }
+  return result;
+}
+
+} // namespace rv
