@@ -8,8 +8,10 @@
 #include "dynamics/tools/PoincareMap.h"
 #include "render/ViewOptions.h"
 
+#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 
 namespace rv {
@@ -27,6 +29,14 @@ struct Scene {
   LyapunovSettings lyapunov; ///< "lyapunov"
   SpectrumSettings spectrum; ///< "spectrum"
   ViewOptions view;
+  /// The fixed-point family's settings by section key ("fixedpoint", "continuation", ...; see
+  /// ToolSettings.h).
+  std::map<std::string, std::unique_ptr<ParameterValues>> tools;
+  std::vector<double> guess;         ///< "fixedpoint": {"guess": [...]} (empty: none)
+  std::string continuationParameter; ///< "continuation": {"parameter": ...}
+  std::optional<double> continuationTo;
+  /// The settings of a tool section (defaults when the scene has none).
+  const ParameterValues& tool(const std::string& key) const { return *tools.at(key); }
 
   /// A fresh integrator of the scene's method, started at t = 0 from the initial state.
   std::unique_ptr<Integrator> startIntegrator() const;

@@ -1,6 +1,7 @@
 #include "scenes/SceneLoader.h"
 
 #include "dynamics/core/Errors.h"
+#include "dynamics/tools/ToolSettings.h"
 
 #include <algorithm>
 #include <cmath>
@@ -58,10 +59,12 @@ void onlyKeys(const json& j, const Where& w, std::initializer_list<const char*> 
   }
 }
 
-// fills a parameter table's values from a JSON object, skipping `skip`
-void readParameters(const json& j, const Where& w, ParameterValues& values, const std::string& skip = "") {
+// fills a parameter table's values from a JSON object, skipping the keys in `skip`; a choice takes its name
+// (or true/false for no/yes)
+void readParameters(const json& j, const Where& w, ParameterValues& values,
+                    std::initializer_list<const char*> skip = {}) {
   for (const auto& [k, v] : j.items()) {
-    if (k == skip) continue;
+    if (std::any_of(skip.begin(), skip.end(), [&](const char* s) { return k == s; })) continue;
     if (values.table().find(k) < 0) {
       std::string known;
       for (const auto& s : values.table().specs())
@@ -69,7 +72,13 @@ void readParameters(const json& j, const Where& w, ParameterValues& values, cons
       (w / k).fail("unknown parameter (known:" + known + ")");
     }
     try {
-      values.set(k, number(v, w / k));
+      const auto& choices = values.table().specs()[values.table().find(k)].choices;
+      if (!choices.empty() && v.is_string())
+        values.setChoice(k, v.get<std::string>(), (w / k).str());
+      else if (choices.size() == 2 && choices[0] == "no" && v.is_boolean())
+        values.set(k, v.get<bool>() ? 1 : 0);
+      else
+        values.set(k, number(v, w / k));
     } catch (const InputError& e) {
       const std::string msg = e.what();
       if (msg.rfind(w.file + ":", 0) == 0) throw;
@@ -261,6 +270,36 @@ Eigen::VectorXd readInitial(const json& j, const Where& w, const Model& model,
   return model.stateFromMap(point, spec, wm.str());
 }
 
+// the fixed-point family's sections: numbers and choices from their tables, plus a few non-numeric keys
+void readToolSections(const json& doc, const Where& root, Scene& scene) {
+  for (const auto& section : toolSections()) {
+    auto values = std::make_unique<ParameterValues>(*section.table);
+    if (doc.contains(section.key)) {
+      const Where w = root / section.key;
+      const json& j = requireObject(doc[section.key], w);
+      readParameters(j, w, *values, {"guess", "parameter", "to"});
+      if (section.key == "fixedpoint" && j.contains("guess")) {
+        if (!j["guess"].is_array()) (w / "guess").fail("expected an array of numbers");
+        for (std::size_t i = 0; i < j["guess"].size(); ++i)
+          scene.guess.push_back(number(j["guess"][i], w / "guess" / std::to_string(i)));
+      } else if (j.contains("guess")) {
+        (w / "guess").fail("the guess belongs to the \"fixedpoint\" section");
+      }
+      if (section.key == "continuation") {
+        if (j.contains("parameter")) {
+          scene.continuationParameter = text(j["parameter"], w / "parameter");
+          if (scene.model->info().parameters.find(scene.continuationParameter) < 0)
+            (w / "parameter").fail("not a parameter of " + scene.model->info().id);
+        }
+        if (j.contains("to")) scene.continuationTo = number(j["to"], w / "to");
+      } else if (j.contains("parameter") || j.contains("to")) {
+        (w / (j.contains("to") ? "to" : "parameter")).fail("belongs to the \"continuation\" section");
+      }
+    }
+    scene.tools.emplace(section.key, std::move(values));
+  }
+}
+
 // `--set`: a plain key is a model parameter, a dotted key a path into the document
 void applyOverrides(json& doc, const std::vector<SceneOverride>& overrides) {
   for (const auto& o : overrides) {
@@ -287,7 +326,8 @@ void applyOverrides(json& doc, const std::vector<SceneOverride>& overrides) {
     static const std::set<std::string> sections{"integrator", "initial", "poincare",  "lyapunov",
                                                 "spectrum",   "view",    "parameters"};
     const std::string head = o.key.substr(0, o.key.find('.'));
-    if (!sections.count(head)) throw InputError(flag + ": unknown scene field '" + head + "'");
+    if (!sections.count(head) && !findToolSection(head))
+      throw InputError(flag + ": unknown scene field '" + head + "'");
     json* node = &doc;
     std::stringstream path(o.key);
     for (std::string part; std::getline(path, part, '.');) {
@@ -327,9 +367,19 @@ Scene sceneFromJson(json doc, const std::string& source, const std::vector<Scene
   const Where root{source, ""};
   requireObject(doc, root);
   applyOverrides(doc, overrides);
-  onlyKeys(doc, root,
-           {"problem", "parameters", "integrator", "initial", "poincare", "lyapunov", "spectrum", "view",
-            "title", "description"});
+  for (const auto& [key, value] : doc.items()) {
+    static const std::set<std::string> known{"problem",  "parameters", "integrator", "initial",
+                                             "poincare", "lyapunov",   "spectrum",   "view",
+                                             "title",    "description"};
+    if (!known.count(key) && !findToolSection(key)) {
+      std::string list;
+      for (const auto& k : known)
+        list += " " + k;
+      for (const auto& t : toolSections())
+        list += " " + t.key;
+      (root / key).fail("unknown key (known:" + list + ")");
+    }
+  }
   if (!doc.contains("problem")) root.fail("missing \"problem\"");
 
   Scene scene;
@@ -359,7 +409,7 @@ Scene sceneFromJson(json doc, const std::string& source, const std::vector<Scene
     (wi / "method").fail(e.what());
   }
   scene.integratorParameters = std::make_unique<ParameterValues>(*scene.integratorEntry->parameters);
-  readParameters(integ, wi, *scene.integratorParameters, "method");
+  readParameters(integ, wi, *scene.integratorParameters, {"method"});
   try {
     scene.integratorEntry->create(*scene.integratorParameters); // validates combinations of values
   } catch (const InputError& e) {
@@ -374,6 +424,7 @@ Scene sceneFromJson(json doc, const std::string& source, const std::vector<Scene
       scene.model->findObservable(scene.poincare.observable) < 0)
     (root / "poincare" / "section")
         .fail("unknown observable '" + scene.poincare.observable + "' of " + problem);
+  readToolSections(doc, root, scene);
   if (!doc.contains("initial")) root.fail("missing \"initial\" (a map point or a state)");
   scene.initialState = readInitial(doc["initial"], root / "initial", *scene.model, scene.poincare);
   if (doc.contains("view")) scene.view = readView(doc["view"], root / "view");

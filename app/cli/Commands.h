@@ -41,5 +41,12 @@ Command addChartCommand(CLI::App& app);
 Command addPoincareCommand(CLI::App& app);
 Command addLyapunovCommand(CLI::App& app);
 Command addSpectrumCommand(CLI::App& app);
+Command addFixedPointCommand(CLI::App& app);
+Command addContinueCommand(CLI::App& app);
+Command addSeparatrixCommand(CLI::App& app);
+Command addBifurcationTreeCommand(CLI::App& app);
+Command addSurfaceCommand(CLI::App& app);
+Command addRamCommand(CLI::App& app);
+Command addDiagramCommand(CLI::App& app);
 
 } // namespace rv

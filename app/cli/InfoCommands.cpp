@@ -3,6 +3,7 @@
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/ModelRegistry.h"
 #include "dynamics/integrators/Integrator.h"
+#include "dynamics/tools/ToolSettings.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -14,11 +15,15 @@ namespace rv {
 namespace {
 void printParameters(const ParameterTable& table) {
   for (const auto& s : table.specs()) {
-    std::string range;
-    if (s.min > -1e299 || s.max < 1e299)
+    std::string range, value = fmt::format("{}", s.defaultValue);
+    if (!s.choices.empty()) {
+      value = s.choices[static_cast<std::size_t>(s.defaultValue)];
+      for (const auto& c : s.choices)
+        range += (range.empty() ? "" : "|") + c;
+    } else if (s.min > -1e299 || s.max < 1e299)
       range = fmt::format("[{}, {}]", s.min > -1e299 ? fmt::format("{}", s.min) : "-inf",
                           s.max < 1e299 ? fmt::format("{}", s.max) : "inf");
-    fmt::print("  {:<14} {:<12} {:<14} {}{}\n", s.id, fmt::format("{}", s.defaultValue), range, s.description,
+    fmt::print("  {:<20} {:<12} {:<14} {}{}\n", s.id, value, range, s.description,
                s.unit.empty() ? "" : " (" + s.unit + ")");
   }
 }
@@ -27,9 +32,9 @@ void printParameters(const ParameterTable& table) {
 Command addListCommand(CLI::App& app) {
   auto* cmd = app.add_subcommand("list", "list problems, integrators or scenes");
   auto whatPtr = std::make_shared<std::string>();
-  cmd->add_option("what", *whatPtr, "problems | integrators | scenes")
+  cmd->add_option("what", *whatPtr, "problems | integrators | tools | scenes")
       ->required()
-      ->check(CLI::IsMember({"problems", "integrators", "scenes"}));
+      ->check(CLI::IsMember({"problems", "integrators", "tools", "scenes"}));
   return {cmd, [whatPtr] {
             const std::string& what = *whatPtr;
             if (what == "problems")
@@ -38,7 +43,13 @@ Command addListCommand(CLI::App& app) {
             else if (what == "integrators")
               for (const auto& e : IntegratorRegistry::builtin().entries())
                 fmt::print("{:<10} {}\n", e.id, e.title);
-            else {
+            else if (what == "tools") {
+              fmt::print("poincare, lyapunov, spectrum: the scene sections of the same names\n");
+              for (const auto& t : toolSections()) {
+                fmt::print("\n{} (scene section \"{}\", --set {}.ID=VALUE):\n", t.title, t.key, t.key);
+                printParameters(*t.table);
+              }
+            } else {
               std::vector<std::string> files;
               for (const auto& f : std::filesystem::directory_iterator(scenesDirectory()))
                 if (f.path().extension() == ".json") files.push_back(f.path().string());

@@ -1,6 +1,7 @@
 // ToolCommands.cpp -- `rollviz poincare`, `rollviz lyapunov`, `rollviz spectrum`: the tools of dynamics/tools
 // run in the foreground, with progress on a terminal and Ctrl-C keeping what was computed (exit 130).
 #include "app/cli/Commands.h"
+#include "app/cli/Output.h"
 #include "app/cli/Progress.h"
 #include "dynamics/core/Errors.h"
 #include "dynamics/io/AtomicFile.h"
@@ -14,37 +15,6 @@
 namespace rv {
 
 namespace {
-
-// output to a file (written under a temporary name) or standard output
-class Output {
-public:
-  explicit Output(const std::string& path) {
-    if (path.empty()) return;
-    file_ = std::make_unique<AtomicFile>(path, "-o");
-    out_ = std::fopen(file_->tempPath().c_str(), "w");
-    if (!out_) throw InputError("-o " + path + ": cannot open for writing");
-  }
-  ~Output() {
-    if (file_ && out_) std::fclose(out_);
-  }
-  FILE* get() const { return out_; }
-  /// Flushes and renames the file into place.
-  void commit() {
-    if (!file_) {
-      std::fflush(out_);
-      return;
-    }
-    const bool ok = std::fflush(out_) == 0 && !std::ferror(out_);
-    std::fclose(out_);
-    out_ = nullptr;
-    if (!ok) throw ComputationError("cannot write " + file_->path());
-    file_->commit();
-  }
-
-private:
-  std::unique_ptr<AtomicFile> file_;
-  FILE* out_ = stdout;
-};
 
 void printPeaks(const std::string& function, const SpectrumResult& r) {
   nlohmann::json peaks = nlohmann::json::array();

@@ -16,9 +16,9 @@ using DiagramPoint = std::array<double, 2>;
 /// One branch, given parametrically: `points(s)` for s in [min, max] sampled with `step`. A branch may have
 /// no point at some s (outside where it exists: the curve is drawn in pieces) or several (symmetric parts).
 struct DiagramBranch {
-  std::string id;          ///< e.g. "sigma", "sigma0", "sigma1", "tau", "T0"
-  std::string description; ///< what it is and what its parameter means
-  std::string parameter;   ///< the parameter's name, e.g. "lambda"
+  std::string id;                       ///< e.g. "sigma", "sigma0", "sigma1", "tau", "T0"
+  std::string description;              ///< what it is and what its parameter means
+  std::string parameter;                ///< the parameter's name, e.g. "lambda"
   double min = 0, max = 1, step = 0.01; ///< default range and step
   std::function<std::vector<DiagramPoint>(double s)> points;
 };

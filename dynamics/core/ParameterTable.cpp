@@ -39,6 +39,25 @@ void ParameterValues::set(const std::string& id, double value, const std::string
   values_[i] = value;
 }
 
+void ParameterValues::setChoice(const std::string& id, const std::string& name, const std::string& context) {
+  const int i = table_->find(id);
+  if (i < 0) return set(id, 0, context); // reports the unknown id
+  const auto& c = table_->specs()[i].choices;
+  for (std::size_t k = 0; k < c.size(); ++k)
+    if (c[k] == name) return set(id, static_cast<double>(k), context);
+  std::string known;
+  for (const auto& n : c)
+    known += " " + n;
+  throw InputError((context.empty() ? id : context) + ": " + id + " is one of" + known + ", not '" + name +
+                   "'");
+}
+
+const std::string& ParameterValues::choice(const std::string& id) const {
+  const int i = table_->find(id);
+  if (i < 0 || table_->specs()[i].choices.empty()) throw InputError("no choice parameter '" + id + "'");
+  return table_->specs()[i].choices[static_cast<std::size_t>(values_[i])];
+}
+
 double ParameterValues::get(const std::string& id) const {
   const int i = table_->find(id);
   if (i < 0) throw InputError("no parameter '" + id + "'");

@@ -16,6 +16,9 @@ struct ParameterSpec {
   std::string unit;        ///< free text, may be empty
   std::string description; ///< one sentence for tooltips and `rollviz describe`
   bool integer = false;    ///< value must be a whole number (orders, counts)
+  /// A choice among names (the value is the index; scenes and --set take the name), e.g. {"newton",
+  /// "gradient"}. Empty for numbers.
+  std::vector<std::string> choices;
 };
 
 /// An ordered list of parameter declarations.
@@ -41,6 +44,10 @@ public:
   void set(const std::string& id, double value, const std::string& context = "");
   double get(const std::string& id) const;
   double operator[](const std::string& id) const { return get(id); }
+  /// Sets a choice parameter by name; InputError listing the names otherwise.
+  void setChoice(const std::string& id, const std::string& name, const std::string& context = "");
+  /// The name of a choice parameter's value.
+  const std::string& choice(const std::string& id) const;
   const ParameterTable& table() const { return *table_; }
   const std::vector<double>& values() const { return values_; }
 

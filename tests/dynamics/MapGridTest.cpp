@@ -92,7 +92,9 @@ TEST(MapGrid, StopsAndResumesToTheSameGrid) {
   const auto& b = parts.result().values;
   ASSERT_EQ(a.size(), b.size());
   for (std::size_t i = 0; i < a.size(); ++i)
-    if (!(std::isnan(a[i]) && std::isnan(b[i]))) EXPECT_EQ(a[i], b[i]) << i;
+    if (!(std::isnan(a[i]) && std::isnan(b[i]))) {
+      EXPECT_EQ(a[i], b[i]) << i;
+    }
 }
 
 } // namespace

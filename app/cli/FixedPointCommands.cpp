@@ -1,0 +1,574 @@
+// FixedPointCommands.cpp -- `rollviz fixedpoint`, `continue`, `separatrix`, `bifurcation-tree`, `surface`,
+// `ram`, `diagram`: the fixed-point family of tools (dynamics/tools) on a scene's map, in the foreground,
+// with progress on a terminal and Ctrl-C keeping what was computed (exit 130). Settings come from the scene's
+// sections (rollviz list tools) and --set SECTION.ID=VALUE; the flags below are the everyday ones.
+#include "app/cli/Commands.h"
+#include "app/cli/Output.h"
+#include "app/cli/Progress.h"
+#include "dynamics/core/Errors.h"
+#include "dynamics/tools/ToolSettings.h"
+
+#include <cmath>
+#include <fmt/core.h>
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace rv {
+
+namespace {
+
+std::vector<double> parseNumbers(const std::string& text, const std::string& flag) {
+  std::vector<double> v;
+  std::stringstream in(text);
+  for (std::string item; std::getline(in, item, ',');) {
+    char* end = nullptr;
+    const double x = std::strtod(item.c_str(), &end);
+    if (item.empty() || *end != '\0' || !std::isfinite(x))
+      throw InputError(flag + " " + text + ": expected numbers separated by commas");
+    v.push_back(x);
+  }
+  return v;
+}
+
+std::string header(const std::vector<std::string>& names) {
+  std::string h;
+  for (const auto& n : names)
+    h += (h.empty() ? "" : ",") + n;
+  return h;
+}
+
+// what every command of the family shares: the scene, the guess, the order
+struct MapArgs {
+  SceneArgs scene;
+  std::string guess;
+  int order = 0;
+  std::string method;
+};
+
+void addMapArgs(CLI::App* cmd, MapArgs& a, bool withGuess = true) {
+  addSceneArgs(cmd, a.scene);
+  if (withGuess)
+    cmd->add_option("--guess", a.guess,
+                    "starting point x,y[,z] in map coordinates (default: fixedpoint.guess, or the scene's "
+                    "initial map point)");
+  cmd->add_option("--order", a.order, "order n of the map Map^n (default: fixedpoint.order)");
+  cmd->add_option("--method", a.method, "newton | gradient (default: fixedpoint.method)");
+}
+
+// the scene with the flags folded into its tool settings
+struct Setup {
+  Scene scene;
+  RunSpec spec;
+  FixedPointSettings search;
+  SectionSettings section;
+  Eigen::VectorXd guess;
+  IntegratorFactory integrators() const {
+    return [this] { return spec.makeIntegrator(*scene.model); };
+  }
+  ReturnMap map() const { return ReturnMap(*scene.model, integrators(), section); }
+};
+
+std::unique_ptr<Setup> setUp(const MapArgs& a, bool needGuess = true) {
+  Scene scene = a.scene.load();
+  RunSpec spec = scene.runSpec();
+  auto s = std::make_unique<Setup>(Setup{std::move(scene), std::move(spec)});
+  ParameterValues fp = s->scene.tool("fixedpoint");
+  if (a.order < 0) throw InputError("--order: must be at least 1");
+  if (a.order > 0) fp.set("order", a.order, "--order");
+  if (!a.method.empty()) fp.setChoice("method", a.method, "--method");
+  s->search = fixedPointSettings(fp);
+  s->section = s->scene.poincare;
+  s->section.order = static_cast<int>(fp["order"]);
+  const ReturnMap probe = s->map(); // validates the map (coordinates, section)
+  std::vector<double> g;
+  if (!a.guess.empty())
+    g = parseNumbers(a.guess, "--guess");
+  else if (!s->scene.guess.empty())
+    g = s->scene.guess;
+  else if (s->scene.document.contains("initial") && s->scene.document["initial"].contains("map"))
+    g = s->scene.document["initial"]["map"].get<std::vector<double>>();
+  if (needGuess && g.empty()) throw InputError("--guess: give the starting point x,y[,z]");
+  if (needGuess && static_cast<int>(g.size()) != probe.dimension())
+    throw InputError(fmt::format("--guess: the map of {} has {} coordinates ({}), the guess has {}",
+                                 s->scene.model->info().id, probe.dimension(),
+                                 header(probe.coordinateNames()), g.size()));
+  s->guess = Eigen::Map<const Eigen::VectorXd>(g.data(), static_cast<Eigen::Index>(g.size()));
+  return s;
+}
+
+nlohmann::json multipliersJson(const std::vector<std::complex<double>>& m) {
+  nlohmann::json j = nlohmann::json::array();
+  for (auto z : m)
+    j.push_back({z.real(), z.imag()});
+  return j;
+}
+
+std::vector<double> toVector(const Eigen::VectorXd& x) {
+  return {x.data(), x.data() + x.size()};
+}
+
+void printRow(FILE* f, const std::vector<double>& values, const std::string& tail = {}) {
+  for (std::size_t i = 0; i < values.size(); ++i)
+    std::fprintf(f, i ? ",%.17g" : "%.17g", values[i]);
+  std::fprintf(f, "%s\n", tail.c_str());
+}
+
+// the continuation's family: model at a value of the parameter, checked against the parameter's range
+Continuation::ModelAt modelAt(const RunSpec& spec, const std::string& id) {
+  return [spec, id](double value) {
+    ParameterValues p = spec.modelParameters;
+    p.set(id, value, "--to");
+    return spec.model->create(p);
+  };
+}
+
+struct ContinueArgs {
+  MapArgs map;
+  std::string param, output;
+  double to = NAN, step = NAN;
+  bool json = false;
+};
+
+void addContinueArgs(CLI::App* cmd, ContinueArgs& a) {
+  addMapArgs(cmd, a.map);
+  cmd->add_option("--param", a.param, "the model parameter to continue in (default: continuation.parameter)");
+  cmd->add_option("--to", a.to, "finite value of the parameter (default: continuation.to)");
+  cmd->add_option("--step", a.step, "signed step of the parameter (default: continuation.step)");
+  cmd->add_option("-o,--output", a.output, "CSV file (default: standard output)");
+  cmd->add_flag("--json", a.json, "print a JSON summary on standard output");
+}
+
+ContinuationSettings continuationOf(const ContinueArgs& a, const Setup& s) {
+  ParameterValues cv = s.scene.tool("continuation");
+  if (!std::isnan(a.step)) cv.set("step", a.step, "--step");
+  ContinuationSettings c = continuationSettings(cv, s.search);
+  c.parameter = a.param.empty() ? s.scene.continuationParameter : a.param;
+  if (c.parameter.empty()) throw InputError("--param: give the parameter to continue in");
+  if (s.scene.model->info().parameters.find(c.parameter) < 0)
+    throw InputError("--param " + c.parameter + ": not a parameter of " + s.scene.model->info().id);
+  if (!std::isnan(a.to))
+    c.to = a.to;
+  else if (s.scene.continuationTo)
+    c.to = *s.scene.continuationTo;
+  else
+    throw InputError("--to: give the finite value of " + c.parameter);
+  return c;
+}
+
+std::string continuationHeader(const std::string& param, const ReturnMap& map, std::size_t multipliers) {
+  std::vector<std::string> names{param};
+  for (const auto& n : map.coordinateNames())
+    names.push_back(n);
+  for (std::size_t i = 1; i <= multipliers; ++i) {
+    names.push_back(fmt::format("re{}", i));
+    names.push_back(fmt::format("im{}", i));
+  }
+  names.push_back("residual");
+  names.push_back("type");
+  return header(names);
+}
+
+void printContinuationPoint(FILE* f, const ContinuationPoint& p) {
+  std::vector<double> row{p.parameter};
+  for (double x : toVector(p.fixedPoint.point))
+    row.push_back(x);
+  for (auto z : p.fixedPoint.multipliers)
+    row.push_back(z.real()), row.push_back(z.imag());
+  row.push_back(p.fixedPoint.residual);
+  printRow(f, row, "," + p.fixedPoint.type);
+}
+
+nlohmann::json changeJson(const TypeChange& t) {
+  return {{"parameter", t.parameter},
+          {"kind", t.kind},
+          {"from", t.from},
+          {"to", t.to},
+          {"point", toVector(t.at.fixedPoint.point)},
+          {"multipliers", multipliersJson(t.at.fixedPoint.multipliers)}};
+}
+
+struct GridArgs {
+  MapArgs map;
+  std::string x, y, z, output, level;
+  double step = 0;
+  int threads = 0;
+};
+
+void addGridArgs(CLI::App* cmd, GridArgs& a, bool ram) {
+  addMapArgs(cmd, a.map, false);
+  cmd->add_option("--x", a.x, "range of the first map coordinate: MIN,MAX")->required();
+  cmd->add_option("--y", a.y, "range of the second map coordinate: MIN,MAX")->required();
+  cmd->add_option("--z", a.z, "3D grid of a 3D map: range MIN,MAX of the third (else grid.z is its value)");
+  cmd->add_option("--step", a.step, "grid step along every axis (default: grid.step_x, step_y, step_z)");
+  cmd->add_option("--threads", a.threads, "number of threads (default: grid.threads)");
+  cmd->add_option("-o,--output", a.output, "CSV file (default: standard output)");
+  if (ram)
+    cmd->add_option("--level", a.level,
+                    "2D maps: observable giving the energy level's height above the region (default: the "
+                    "completed state component)");
+}
+
+int runGrid(const GridArgs& a, MapGrid::Kind kind) {
+  const auto s = setUp(a.map, false);
+  ParameterValues gv = s->scene.tool("grid");
+  if (a.threads < 0) throw InputError("--threads: must be at least 1");
+  if (a.threads > 0) gv.set("threads", a.threads, "--threads");
+  if (a.step < 0 || std::isnan(a.step)) throw InputError("--step: must be positive");
+  if (a.step > 0)
+    for (const char* k : {"step_x", "step_y", "step_z"})
+      gv.set(k, a.step, "--step");
+  GridSettings g = gridSettings(gv);
+  const auto range = [](const std::string& text, const char* flag, GridAxis& axis) {
+    const auto r = parseNumbers(text, flag);
+    if (r.size() != 2 || !(r[0] <= r[1]))
+      throw InputError(std::string(flag) + " " + text + ": expected MIN,MAX");
+    axis.min = r[0], axis.max = r[1];
+  };
+  range(a.x, "--x", g.axes[0]);
+  range(a.y, "--y", g.axes[1]);
+  if (!a.z.empty()) {
+    range(a.z, "--z", g.axes[2]);
+    g.threeD = true;
+  }
+  const ReturnMap map = s->map();
+  MapGrid grid(map, kind, g, a.level);
+  Output out(a.output);
+  Progress progress(kind == MapGrid::Kind::Surface ? "surface" : "ram");
+  const bool complete = grid.run(interruptibleControl(progress));
+  const int dims = g.threeD ? 3 : map.dimension() == 3 ? 3 : 2;
+  std::vector<std::string> names(map.coordinateNames().begin(), map.coordinateNames().begin() + dims);
+  if (kind == MapGrid::Kind::Surface) {
+    names.push_back("distance");
+  } else {
+    names.push_back("allowed");
+    if (!grid.levelName().empty()) names.push_back(grid.levelName());
+  }
+  std::fprintf(out.get(), "%s\n", header(names).c_str());
+  const GridValues& r = grid.result();
+  for (int k = 0; k < r.size[2]; ++k)
+    for (int j = 0; j < r.size[1]; ++j)
+      for (int i = 0; i < r.size[0]; ++i) {
+        const std::size_t at = (static_cast<std::size_t>(k) * r.size[1] + j) * r.size[0] + i;
+        std::vector<double> row = toVector(grid.node(i, j, k));
+        row.resize(dims);
+        row.push_back(r.values[at]);
+        if (!r.level.empty()) row.push_back(r.level[at]);
+        printRow(out.get(), row);
+      }
+  out.commit();
+  return complete ? 0 : 130;
+}
+
+} // namespace
+
+Command addFixedPointCommand(CLI::App& app) {
+  auto* cmd = app.add_subcommand("fixedpoint",
+                                 "a fixed point of order n of the scene's map, its multipliers and type");
+  auto a = std::make_shared<MapArgs>();
+  auto json = std::make_shared<bool>(false), path = std::make_shared<bool>(false);
+  addMapArgs(cmd, *a);
+  cmd->add_flag("--json", *json,
+                "print one JSON object: point, multipliers [[re, im], ...], type, residual, ...");
+  cmd->add_flag("--path", *path, "also give the whole search path (the manual's \"show all points\")");
+  return {cmd, [a, json, path] {
+            const auto s = setUp(*a);
+            const ReturnMap map = s->map();
+            Progress progress("fixedpoint");
+            FixedPointResult r;
+            try {
+              r = findFixedPoint(map, s->guess, s->search, interruptibleControl(progress));
+            } catch (const Stopped&) {
+              fmt::print(stderr, "rollviz: fixedpoint: stopped\n");
+              return 130;
+            }
+            if (*json) {
+              nlohmann::json j{{"point", toVector(r.point)},
+                               {"coordinates", map.coordinateNames()},
+                               {"multipliers", multipliersJson(r.multipliers)},
+                               {"type", r.type},
+                               {"residual", r.residual},
+                               {"iterations", r.iterations},
+                               {"evaluations", r.evaluations},
+                               {"order", map.order()}};
+              if (*path) {
+                nlohmann::json p = nlohmann::json::array();
+                for (const auto& q : r.path)
+                  p.push_back({{"point", toVector(q.point)}, {"residual", q.residual}});
+                j["path"] = p;
+              }
+              fmt::print("{}\n", j.dump());
+              return 0;
+            }
+            if (*path)
+              for (const auto& q : r.path)
+                fmt::print("search: {:.17g}  |Map^n(x) - x| = {:.3g}\n", fmt::join(toVector(q.point), ", "),
+                           q.residual);
+            fmt::print("point: {:.17g}\n", fmt::join(toVector(r.point), ", "));
+            for (auto z : r.multipliers)
+              fmt::print("multiplier: {:.15g} {:+.15g} i  (|m| = {:.15g})\n", z.real(), z.imag(),
+                         std::abs(z));
+            fmt::print("type: {}\nresidual: {:.3g}\niterations: {}\nmap evaluations: {}\n", r.type,
+                       r.residual, r.iterations, r.evaluations);
+            return 0;
+          }};
+}
+
+Command addContinueCommand(CLI::App& app) {
+  auto* cmd =
+      app.add_subcommand("continue", "continue a fixed point in a parameter: the family, its multipliers "
+                                     "and where its type changes");
+  auto a = std::make_shared<ContinueArgs>();
+  addContinueArgs(cmd, *a);
+  return {
+      cmd, [a] {
+        const auto s = setUp(a->map);
+        const ContinuationSettings c = continuationOf(*a, *s);
+        const double start = s->spec.modelParameters[c.parameter];
+        Continuation cont(modelAt(s->spec, c.parameter), s->integrators(), s->section, start, s->guess, c);
+        Output out(a->output);
+        FILE* changes = a->output.empty() ? stderr : stdout;
+        bool headed = false;
+        const ReturnMap map = s->map();
+        Progress progress("continue");
+        const bool done = cont.run(
+            interruptibleControl(progress),
+            [&](const ContinuationPoint& p) {
+              if (!headed)
+                std::fprintf(out.get(), "%s\n",
+                             continuationHeader(c.parameter, map, p.fixedPoint.multipliers.size()).c_str());
+              headed = true;
+              printContinuationPoint(out.get(), p);
+            },
+            [&](const TypeChange& t) {
+              if (!a->json)
+                fmt::print(changes, "type change at {} = {:.12g}: {} -> {} ({})\n", c.parameter, t.parameter,
+                           t.from, t.to, t.kind);
+            });
+        out.commit();
+        if (a->json) {
+          nlohmann::json ch = nlohmann::json::array();
+          for (const auto& t : cont.changes())
+            ch.push_back(changeJson(t));
+          fmt::print("{}\n",
+                     nlohmann::json{{"parameter", c.parameter},
+                                    {"points", cont.points().size()},
+                                    {"last", cont.points().empty() ? 0.0 : cont.points().back().parameter},
+                                    {"changes", ch}}
+                         .dump());
+        }
+        return done ? 0 : 130;
+      }};
+}
+
+Command addBifurcationTreeCommand(CLI::App& app) {
+  auto* cmd =
+      app.add_subcommand("bifurcation-tree", "the period-doubling cascade of an elliptic fixed point");
+  auto a = std::make_shared<ContinueArgs>();
+  addContinueArgs(cmd, *a);
+  return {
+      cmd, [a] {
+        const auto s = setUp(a->map);
+        const ContinuationSettings c = continuationOf(*a, *s);
+        const BifurcationTreeSettings t = bifurcationTreeSettings(s->scene.tool("bifurcation_tree"), c);
+        const double start = s->spec.modelParameters[c.parameter];
+        Output out(a->output);
+        const ReturnMap map = s->map();
+        std::vector<std::string> names{"level", "order", c.parameter};
+        for (const auto& n : map.coordinateNames())
+          names.push_back(n);
+        names.push_back("type");
+        std::fprintf(out.get(), "%s\n", header(names).c_str());
+        Progress progress("bifurcation-tree");
+        BifurcationTreeResult r;
+        bool stopped = false;
+        try {
+          bifurcationTree(
+              modelAt(s->spec, c.parameter), s->integrators(), s->section, start, s->guess, t,
+              interruptibleControl(progress),
+              [&](const TreeBranch& b, const ContinuationPoint& p) {
+                std::vector<double> row{static_cast<double>(b.level), static_cast<double>(b.order),
+                                        p.parameter};
+                for (double x : toVector(p.fixedPoint.point))
+                  row.push_back(x);
+                printRow(out.get(), row, "," + p.fixedPoint.type);
+              },
+              [&](const PeriodDoubling& d) {
+                if (!a->json)
+                  fmt::print(a->output.empty() ? stderr : stdout,
+                             "period doubling of order {} at {} = {:.12g}\n", d.order, c.parameter,
+                             d.parameter);
+              },
+              &r);
+        } catch (const Stopped&) {
+          stopped = true;
+        }
+        out.commit();
+        if (a->json) {
+          nlohmann::json d = nlohmann::json::array();
+          for (const auto& x : r.doublings)
+            d.push_back({{"level", x.level}, {"order", x.order}, {"parameter", x.parameter}});
+          fmt::print(
+              "{}\n",
+              nlohmann::json{{"parameter", c.parameter}, {"doublings", d}, {"ratios", r.ratios()}}.dump());
+        } else {
+          for (double q : r.ratios())
+            fmt::print(a->output.empty() ? stderr : stdout, "ratio: {:.10g}\n", q);
+        }
+        return stopped ? 130 : 0;
+      }};
+}
+
+Command addSeparatrixCommand(CLI::App& app) {
+  auto* cmd =
+      app.add_subcommand("separatrix", "the separatrices of a hyperbolic fixed point of a 2D map, as CSV");
+  auto a = std::make_shared<MapArgs>();
+  auto branches = std::make_shared<std::string>(), output = std::make_shared<std::string>();
+  addMapArgs(cmd, *a);
+  cmd->add_option("--branch", *branches, "branches 1-4, comma-separated (default: separatrix.branch; 'all')");
+  cmd->add_option("-o,--output", *output,
+                  "CSV file: branch, coordinates, parameter (default: standard output)");
+  return {cmd, [a, branches, output] {
+            const auto s = setUp(*a);
+            const ReturnMap map = s->map();
+            if (map.dimension() != 2) throw InputError("separatrix: separatrices are drawn for 2D maps only");
+            const ParameterValues& sv = s->scene.tool("separatrix");
+            std::vector<int> list;
+            if (*branches == "all")
+              list = {1, 2, 3, 4};
+            else if (!branches->empty())
+              for (double b : parseNumbers(*branches, "--branch")) {
+                if (b != 1 && b != 2 && b != 3 && b != 4)
+                  throw InputError("--branch: branches are 1, 2, 3, 4");
+                list.push_back(static_cast<int>(b));
+              }
+            else
+              list = {static_cast<int>(sv["branch"])};
+            Progress progress("separatrix");
+            const ToolControl control = interruptibleControl(progress);
+            FixedPointResult fp;
+            try {
+              fp = findFixedPoint(map, s->guess, s->search, control);
+            } catch (const Stopped&) {
+              return 130;
+            }
+            Output out(*output);
+            std::fprintf(out.get(), "branch,%s,parameter\n", header(map.coordinateNames()).c_str());
+            for (int b : list) {
+              SeparatrixSettings ss = separatrixSettings(sv, s->search);
+              ss.branch = b;
+              const SeparatrixResult r = growSeparatrix(map, fp, ss, control);
+              for (std::size_t i = 0; i < r.points.size(); ++i) {
+                std::vector<double> row{static_cast<double>(b)};
+                for (double x : toVector(r.points[i]))
+                  row.push_back(x);
+                row.push_back(r.parameters[i]);
+                printRow(out.get(), row);
+              }
+              fmt::print(stderr,
+                         "branch {}: {} points, multiplier {:.12g} ({}), linear region {:g}, ended by {}\n",
+                         b, r.points.size(), r.multiplier, r.unstable ? "outgoing" : "incoming",
+                         r.linearRegion, r.stoppedBecause);
+              if (r.stoppedBecause == "stopped") break;
+            }
+            out.commit();
+            return interrupted() ? 130 : 0;
+          }};
+}
+
+Command addSurfaceCommand(CLI::App& app) {
+  auto* cmd = app.add_subcommand("surface", "the surface z = |Map^n(x) - x| on a grid, as CSV");
+  auto a = std::make_shared<GridArgs>();
+  addGridArgs(cmd, *a, false);
+  return {cmd, [a] { return runGrid(*a, MapGrid::Kind::Surface); }};
+}
+
+Command addRamCommand(CLI::App& app) {
+  auto* cmd = app.add_subcommand("ram", "the region of allowed motion on a grid of the map's plane, as CSV");
+  auto a = std::make_shared<GridArgs>();
+  addGridArgs(cmd, *a, true);
+  return {cmd, [a] { return runGrid(*a, MapGrid::Kind::AllowedRegion); }};
+}
+
+Command addDiagramCommand(CLI::App& app) {
+  auto* cmd = app.add_subcommand(
+      "diagram", "a bifurcation diagram on the plane of first integrals, with the scene's point");
+  auto scene = std::make_shared<SceneArgs>();
+  auto id = std::make_shared<std::string>(), branch = std::make_shared<std::string>(),
+       output = std::make_shared<std::string>();
+  auto range = std::make_shared<std::array<double, 3>>(std::array<double, 3>{NAN, NAN, NAN});
+  auto json = std::make_shared<bool>(false);
+  addSceneArgs(cmd, *scene);
+  cmd->add_option("--diagram", *id, "which diagram (default: the problem's first; see --json)");
+  cmd->add_option("--branch", *branch, "one branch only (default: all)");
+  cmd->add_option("--min", (*range)[0], "smallest value of the branch parameter");
+  cmd->add_option("--max", (*range)[1], "largest value of the branch parameter");
+  cmd->add_option("--step", (*range)[2], "step of the branch parameter");
+  cmd->add_option("-o,--output", *output,
+                  "CSV file: branch, parameter, the two axes (default: standard output)");
+  cmd->add_flag("--json", *json, "print the diagrams, branches and the scene's point as JSON instead");
+  return {cmd, [scene, id, branch, output, range, json] {
+            const Scene sc = scene->load();
+            const std::vector<Diagram> diagrams = sc.model->diagrams();
+            if (diagrams.empty()) throw InputError(sc.model->info().id + " has no bifurcation diagrams");
+            const Diagram* d = &diagrams.front();
+            if (!id->empty()) {
+              d = nullptr;
+              std::string known;
+              for (const auto& x : diagrams) {
+                if (x.id == *id) d = &x;
+                known += " " + x.id;
+              }
+              if (!d) throw InputError("--diagram " + *id + ": unknown (known:" + known + ")");
+            }
+            const DiagramPoint state = d->place(sc.initialState.data());
+            if (*json) {
+              nlohmann::json b = nlohmann::json::array();
+              for (const auto& x : d->branches)
+                b.push_back({{"id", x.id},
+                             {"description", x.description},
+                             {"parameter", x.parameter},
+                             {"min", x.min},
+                             {"max", x.max},
+                             {"step", x.step}});
+              nlohmann::json all = nlohmann::json::array();
+              for (const auto& x : diagrams)
+                all.push_back(x.id);
+              fmt::print("{}\n", nlohmann::json{{"diagram", d->id},
+                                                {"title", d->title},
+                                                {"axes", d->axes},
+                                                {"diagrams", all},
+                                                {"branches", b},
+                                                {"state", state}}
+                                     .dump());
+              return 0;
+            }
+            Output out(*output);
+            std::fprintf(out.get(), "branch,parameter,%s,%s\n", d->axes[0].c_str(), d->axes[1].c_str());
+            bool found = branch->empty();
+            for (const auto& x : d->branches) {
+              if (!branch->empty() && x.id != *branch) continue;
+              found = true;
+              const double lo = std::isnan((*range)[0]) ? x.min : (*range)[0];
+              const double hi = std::isnan((*range)[1]) ? x.max : (*range)[1];
+              const double step = std::isnan((*range)[2]) ? x.step : (*range)[2];
+              if (!(step > 0) || !(hi >= lo))
+                throw InputError("--min/--max/--step: need min <= max and step > 0");
+              const long n = static_cast<long>(std::floor((hi - lo) / step * (1 + 1e-12)));
+              if (n > 10'000'000) throw InputError("--step: more than 1e7 points");
+              for (long k = 0; k <= n; ++k) {
+                const double s = lo + k * step;
+                for (const DiagramPoint& p : x.points(s))
+                  std::fprintf(out.get(), "%s,%.17g,%.17g,%.17g\n", x.id.c_str(), s, p[0], p[1]);
+              }
+            }
+            if (!found) throw InputError("--branch " + *branch + ": no such branch of " + d->id);
+            std::fprintf(out.get(), "state,0,%.17g,%.17g\n", state[0], state[1]);
+            out.commit();
+            return 0;
+          }};
+}
+
+} // namespace rv

@@ -1,0 +1,322 @@
+#include "dynamics/tools/ToolSettings.h"
+
+#include <thread>
+
+namespace rv {
+
+const ParameterTable& fixedPointTable() {
+  static const ParameterTable t{
+      {.id = "order",
+       .label = "Order of FP",
+       .defaultValue = 1,
+       .min = 1,
+       .max = 1e6,
+       .description = "order n of the fixed point: a zero of Map^n(x) - x",
+       .integer = true},
+      {.id = "method",
+       .label = "Method of FP finding",
+       .defaultValue = 0,
+       .min = 0,
+       .max = 1,
+       .description = "newton or gradient (descent on |Map^n(x) - x|^2)",
+       .integer = true,
+       .choices = {"newton", "gradient"}},
+      {.id = "max_iterations",
+       .label = "Max. number of iterations",
+       .defaultValue = 100,
+       .min = 1,
+       .max = 1e7,
+       .description = "the search stops with a message after this many iterations",
+       .integer = true},
+      {.id = "accuracy",
+       .label = "Accuracy of FP location",
+       .defaultValue = 1e-10,
+       .min = 1e-300,
+       .max = 1,
+       .description = "the largest |Map^n(x) - x| accepted at the fixed point"},
+      {.id = "max_distance",
+       .label = "Max. distance between points",
+       .defaultValue = 0.1,
+       .min = 1e-300,
+       .max = 1e300,
+       .description = "bound on the distance between consecutive points of the search"},
+      {.id = "derivatives",
+       .label = "Derivatives",
+       .defaultValue = 0,
+       .min = 0,
+       .max = 1,
+       .description = "variational (along the orbit, with the section correction) or differences (numerical, "
+                      "with the three controls below)",
+       .integer = true,
+       .choices = {"variational", "differences"}},
+      {.id = "linear_region",
+       .label = "Linear approximation region",
+       .defaultValue = 1e-4,
+       .min = 1e-300,
+       .max = 1,
+       .description = "initial step of numerical differentiation"},
+      {.id = "derivative_accuracy",
+       .label = "Accuracy of derivatives finding",
+       .defaultValue = 1e-6,
+       .min = 1e-300,
+       .max = 1,
+       .description = "allowed |Map(x + dx) - Lin(x + dx)| at |dx| = the step"},
+      {.id = "zero",
+       .label = "Value of \"zero\"",
+       .defaultValue = 1e-12,
+       .min = 1e-300,
+       .max = 1,
+       .description = "the differentiation step may not shrink below this"},
+      {.id = "section",
+       .label = "Section",
+       .defaultValue = 1,
+       .min = 0,
+       .max = 1,
+       .description = "3D maps: 2D searches on the plane z = const (degenerate points), 3D in space",
+       .integer = true,
+       .choices = {"2D", "3D"}},
+      {.id = "type_tolerance",
+       .label = "Type tolerance",
+       .defaultValue = 1e-6,
+       .min = 0,
+       .max = 1,
+       .description = "how close to the unit circle (or to +-1) a multiplier counts as on it"},
+  };
+  return t;
+}
+
+const ParameterTable& continuationTable() {
+  static const ParameterTable t{
+      {.id = "step", .label = "Step", .defaultValue = 0.01, .description = "signed step of the parameter"},
+      {.id = "extrapolation",
+       .label = "Extrapolation factor",
+       .defaultValue = 1,
+       .min = -10,
+       .max = 10,
+       .description = "d in X_{n+1} = X_n + (X_n - X_{n-1}) d for the next guess"},
+      {.id = "stop_at_type_change",
+       .label = "Stop at FP type change",
+       .defaultValue = 0,
+       .min = 0,
+       .max = 1,
+       .description = "stop the continuation where the type of the point changes",
+       .integer = true,
+       .choices = {"no", "yes"}},
+      {.id = "bifurcation_accuracy",
+       .label = "Accuracy of bifurcation value",
+       .defaultValue = 1e-10,
+       .min = 1e-300,
+       .max = 1,
+       .description = "of the parameter value where the type changes"},
+  };
+  return t;
+}
+
+const ParameterTable& separatrixTable() {
+  static const ParameterTable t{
+      {.id = "branch",
+       .label = "Separatrix number",
+       .defaultValue = 1,
+       .min = 1,
+       .max = 4,
+       .description = "1, 2: first multiplier (+v, -v); 3, 4: second (incoming when |multiplier| < 1)",
+       .integer = true},
+      {.id = "linear_region",
+       .label = "Linear approximation region",
+       .defaultValue = 1e-3,
+       .min = 1e-300,
+       .max = 1,
+       .description = "length of the initial linear segment (halved until accurate)"},
+      {.id = "linear_accuracy",
+       .label = "Linear approximation accuracy",
+       .defaultValue = 1e-4,
+       .min = 1e-300,
+       .max = 3.2,
+       .description = "allowed angle (radians) between the eigenvector v and Map(v)"},
+      {.id = "max_distance",
+       .label = "Max. distance between points",
+       .defaultValue = 0.01,
+       .min = 1e-300,
+       .max = 1e300,
+       .description = "between neighbouring points of the separatrix"},
+      {.id = "max_angle",
+       .label = "Max. angle of one iteration",
+       .defaultValue = 0.1,
+       .min = 1e-300,
+       .max = 3.2,
+       .description = "largest turn (radians) between consecutive segments"},
+      {.id = "min_angle_distance",
+       .label = "Min. distance for angle control",
+       .defaultValue = 1e-7,
+       .min = 0,
+       .max = 1e300,
+       .description = "shorter segments are not refined for their angle"},
+      {.id = "iterations",
+       .label = "Iterations",
+       .defaultValue = 20,
+       .min = 1,
+       .max = 1e6,
+       .description = "images of the fundamental segment",
+       .integer = true},
+      {.id = "points",
+       .label = "Max. points",
+       .defaultValue = 20000,
+       .min = 2,
+       .max = 1e9,
+       .description = "the branch stops growing at this many points",
+       .integer = true},
+  };
+  return t;
+}
+
+const ParameterTable& bifurcationTreeTable() {
+  static const ParameterTable t{
+      {.id = "accuracy",
+       .label = "Accuracy of bifurcation value",
+       .defaultValue = 1e-8,
+       .min = 1e-300,
+       .max = 1,
+       .description = "initial accuracy of the bifurcation value"},
+      {.id = "region",
+       .label = "Initial size of bifurcation region",
+       .defaultValue = 0.05,
+       .min = 1e-300,
+       .max = 1e300,
+       .description = "distance from the point to the first guess of doubled period"},
+      {.id = "coefficient",
+       .label = "Coefficient of decreasing of the step",
+       .defaultValue = 8.721097200,
+       .min = 1.000001,
+       .max = 1e6,
+       .description = "step, accuracy and region shrink by it at each doubling (Feigenbaum's constant)"},
+      {.id = "levels",
+       .label = "Levels",
+       .defaultValue = 5,
+       .min = 0,
+       .max = 30,
+       .description = "period doublings followed at most",
+       .integer = true},
+  };
+  return t;
+}
+
+const ParameterTable& gridTable() {
+  static const ParameterTable t{
+      {.id = "threads",
+       .label = "Number of threads",
+       .defaultValue = static_cast<double>(std::max(1u, std::thread::hardware_concurrency())),
+       .min = 1,
+       .max = 256,
+       .description = "threads evaluating the grid",
+       .integer = true},
+      {.id = "step_x",
+       .label = "Step along X",
+       .defaultValue = 0.02,
+       .min = 1e-300,
+       .max = 1e300,
+       .description = "grid step along the first map coordinate"},
+      {.id = "step_y",
+       .label = "Step along Y",
+       .defaultValue = 0.02,
+       .min = 1e-300,
+       .max = 1e300,
+       .description = "grid step along the second map coordinate"},
+      {.id = "step_z",
+       .label = "Step along Z",
+       .defaultValue = 0.05,
+       .min = 1e-300,
+       .max = 1e300,
+       .description = "grid step along the third map coordinate (3D grids)"},
+      {.id = "section",
+       .label = "Section",
+       .defaultValue = 0,
+       .min = 0,
+       .max = 1,
+       .description = "3D maps: 2D on the plane z = const, or 3D in space",
+       .integer = true,
+       .choices = {"2D", "3D"}},
+      {.id = "z",
+       .label = "Z of the 2D section",
+       .defaultValue = 0,
+       .description = "third coordinate of the plane of a 2D grid of a 3D map"},
+  };
+  return t;
+}
+
+const std::vector<ToolSection>& toolSections() {
+  static const std::vector<ToolSection> s{
+      {"fixedpoint", "Fixed point finding", &fixedPointTable()},
+      {"continuation", "Fixed point continuation", &continuationTable()},
+      {"separatrix", "Separatrix", &separatrixTable()},
+      {"bifurcation_tree", "Bifurcating tree", &bifurcationTreeTable()},
+      {"grid", "Surface |Map(x) - x| and region of allowed motion", &gridTable()},
+  };
+  return s;
+}
+
+const ToolSection* findToolSection(const std::string& key) {
+  for (const auto& s : toolSections())
+    if (s.key == key) return &s;
+  return nullptr;
+}
+
+FixedPointSettings fixedPointSettings(const ParameterValues& v) {
+  FixedPointSettings s;
+  s.method = v.choice("method") == "newton" ? FixedPointMethod::Newton : FixedPointMethod::Gradient;
+  s.maxIterations = static_cast<int>(v["max_iterations"]);
+  s.accuracy = v["accuracy"];
+  s.maxDistance = v["max_distance"];
+  s.section2D = v.choice("section") == "2D";
+  s.derivatives.method = v.choice("derivatives") == "variational" ? DerivativeMethod::Variational
+                                                                  : DerivativeMethod::FiniteDifferences;
+  s.derivatives.linearRegion = v["linear_region"];
+  s.derivatives.accuracy = v["derivative_accuracy"];
+  s.derivatives.zero = v["zero"];
+  s.typeTolerance = v["type_tolerance"];
+  return s;
+}
+
+ContinuationSettings continuationSettings(const ParameterValues& v, const FixedPointSettings& search) {
+  ContinuationSettings c;
+  c.step = v["step"];
+  c.extrapolation = v["extrapolation"];
+  c.stopAtTypeChange = v.choice("stop_at_type_change") == "yes";
+  c.bifurcationAccuracy = v["bifurcation_accuracy"];
+  c.search = search;
+  return c;
+}
+
+SeparatrixSettings separatrixSettings(const ParameterValues& v, const FixedPointSettings& search) {
+  SeparatrixSettings s;
+  s.branch = static_cast<int>(v["branch"]);
+  s.linearRegion = v["linear_region"];
+  s.linearAccuracy = v["linear_accuracy"];
+  s.maxDistance = v["max_distance"];
+  s.maxAngle = v["max_angle"];
+  s.minAngleDistance = v["min_angle_distance"];
+  s.maxIterations = static_cast<int>(v["iterations"]);
+  s.maxPoints = static_cast<long>(v["points"]);
+  s.fixedPointAccuracy = search.accuracy;
+  return s;
+}
+
+BifurcationTreeSettings bifurcationTreeSettings(const ParameterValues& v, const ContinuationSettings& c) {
+  BifurcationTreeSettings t;
+  t.continuation = c;
+  t.bifurcationAccuracy = v["accuracy"];
+  t.regionSize = v["region"];
+  t.coefficient = v["coefficient"];
+  t.maxLevels = static_cast<int>(v["levels"]);
+  return t;
+}
+
+GridSettings gridSettings(const ParameterValues& v) {
+  GridSettings g;
+  g.threads = static_cast<int>(v["threads"]);
+  g.axes[0].step = v["step_x"], g.axes[1].step = v["step_y"], g.axes[2].step = v["step_z"];
+  g.threeD = v.choice("section") == "3D";
+  g.zValue = v["z"];
+  return g;
+}
+
+} // namespace rv

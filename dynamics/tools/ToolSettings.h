@@ -1,0 +1,37 @@
+// ToolSettings.h -- the parameters of the fixed-point family of tools (manual §2.3.4-§2.3.9), declared once
+// as parameter tables: scene sections ("fixedpoint", "continuation", "separatrix", "bifurcation_tree",
+// "grid"), `--set SECTION.ID=VALUE` and the GUI's fields all come from these declarations.
+#pragma once
+#include "dynamics/tools/BifurcationTree.h"
+#include "dynamics/tools/MapGrid.h"
+#include "dynamics/tools/Separatrix.h"
+
+namespace rv {
+
+/// A tool's settings section: its scene key and table.
+struct ToolSection {
+  std::string key;   ///< scene section, e.g. "fixedpoint"
+  std::string title; ///< as in the manual's menu
+  const ParameterTable* table;
+};
+
+/// Every section, in menu order.
+const std::vector<ToolSection>& toolSections();
+/// The section with this scene key, or nullptr.
+const ToolSection* findToolSection(const std::string& key);
+
+const ParameterTable& fixedPointTable();
+const ParameterTable& continuationTable();
+const ParameterTable& separatrixTable();
+const ParameterTable& bifurcationTreeTable();
+const ParameterTable& gridTable();
+
+FixedPointSettings fixedPointSettings(const ParameterValues& v);
+/// The numeric part (parameter id, finite value and step come from the command or the scene's strings).
+ContinuationSettings continuationSettings(const ParameterValues& v, const FixedPointSettings& search);
+SeparatrixSettings separatrixSettings(const ParameterValues& v, const FixedPointSettings& search);
+BifurcationTreeSettings bifurcationTreeSettings(const ParameterValues& v, const ContinuationSettings& c);
+/// The grid's threads and steps; the ranges are set by the caller.
+GridSettings gridSettings(const ParameterValues& v);
+
+} // namespace rv
