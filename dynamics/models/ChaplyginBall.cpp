@@ -5,7 +5,9 @@
 #include "dynamics/kinematics/RootFinding.h"
 #include "dynamics/models/BodyParameters.h"
 #include "dynamics/models/BodyState.h"
+#include "dynamics/models/ChaplyginDiagram.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -71,6 +73,12 @@ const ModelInfo& ChaplyginBall::staticInfo() {
                .min = 0,
                .max = 1,
                .description = "relative accuracy of the completed G"},
+              {.id = "diagram_n",
+               .label = "n of the (c, h) diagram",
+               .defaultValue = 1.0,
+               .min = 0,
+               .description =
+                   "n = |M + K|^2 at which the (c, h) bifurcation diagram cuts the bifurcation set"},
           },
       .stateNames = body_state::names(),
       .coreDimension = 6,
@@ -83,12 +91,12 @@ const ModelInfo& ChaplyginBall::staticInfo() {
 }
 
 ChaplyginBall::ChaplyginBall(const ParameterValues& p) : ModelWithField(staticInfo(), p) {
-  const Eigen::Vector3d I = rigid_body::principalMoments(p); // positive, triangle inequality, m > 0
+  I_ = rigid_body::principalMoments(p); // positive, triangle inequality, m > 0
   if (!(p["R"] > 0)) throw InputError("R: the radius must be positive");
   R_ = p["R"];
   D_ = p["m"] * R_ * R_;
   for (int i = 0; i < 3; ++i)
-    Jinv_[i] = 1.0 / (I[i] + D_);
+    Jinv_[i] = 1.0 / (I_[i] + D_);
   K_ = {p["K1"], p["K2"], p["K3"]};
 
   addStandardObservables();
@@ -128,6 +136,18 @@ Eigen::VectorXd ChaplyginBall::stateFromNamed(const std::map<std::string, double
   assignNamed(named, context, x); // explicit alpha, beta, x, y, trace lengths override the derived ones
   x.segment<3>(3).normalize();
   return x;
+}
+
+std::vector<Diagram> ChaplyginBall::diagrams() const {
+  const double E = params_["energy"], c = params_["c"];
+  // default ranges reach a few times the n of the scene's energy level: |M + K| <= sqrt(2 E max J) + |K|
+  const double nLevel = std::pow(std::sqrt(2 * E / Jinv_.minCoeff()) + K_.norm(), 2);
+  const double base = std::max({nLevel, c * c, K_.squaredNorm()});
+  return ChaplyginBifurcationSet(I_, D_, K_)
+      .diagrams(c, params_["diagram_n"], base > 0 ? 2 * base : 1.0, [this](const double* x) {
+        const Eigen::VectorXd v = integrals(x);
+        return ChaplyginBifurcationSet::Integrals{v[0], v[1], v[3]};
+      });
 }
 
 std::vector<double> ChaplyginBall::completionRoots(double l, double LG, double g0) const {

@@ -32,6 +32,9 @@ public:
                                const std::string& context) const override;
   /// The root (G) of the completion nearest to the state's G.
   int sheetOf(const Eigen::VectorXd& x, const MapPointSpec& spec) const override;
+  /// "nh": the bifurcation set (31)-(34) in the plane (n, h) at the scene's c; "ch": the same set in the
+  /// plane (c, h) at n = diagram_n (ChaplyginDiagram.h). Their `place` refers to this model.
+  std::vector<Diagram> diagrams() const override;
 
   /// omega from M and gamma: M = I omega + D gamma x (omega x gamma), solved in closed form.
   template <class S>
@@ -43,7 +46,7 @@ private:
   /// The values of G at which (l, L/G) on g = g0 has the scene's energy and area constant, ascending.
   std::vector<double> completionRoots(double l, double LG, double g0) const;
   void stateOnSection(double l, double LG, double g0, double G, Eigen::Vector3d& M, Eigen::Vector3d& g) const;
-  Eigen::Vector3d Jinv_, K_; // J = I + D E (diagonal), gyrostat
+  Eigen::Vector3d I_, Jinv_, K_; // principal moments, J = I + D E (diagonal), gyrostat
   double D_, R_;
 };
 
