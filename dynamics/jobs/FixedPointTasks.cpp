@@ -1,0 +1,153 @@
+#include "dynamics/jobs/FixedPointTasks.h"
+
+#include <sstream>
+
+namespace rv {
+
+std::string MapTaskSpec::describe() const {
+  std::ostringstream os;
+  os << run.describe() << " map order " << section.order;
+  return os.str();
+}
+
+MapHolder::MapHolder(const MapTaskSpec& spec) : model_(spec.run.makeModel()) {
+  const Model* m = model_.get();
+  const RunSpec run = spec.run;
+  map_ = std::make_unique<ReturnMap>(
+      *model_, [run, m] { return run.makeIntegrator(*m); }, spec.section);
+}
+
+namespace {
+// the model at a value of a parameter, for continuation
+Continuation::ModelAt modelAt(const RunSpec& spec, const std::string& id) {
+  return [spec, id](double v) {
+    ParameterValues p = spec.modelParameters;
+    p.set(id, v, "continuation");
+    return spec.model->create(p);
+  };
+}
+IntegratorFactory integrators(const RunSpec& spec) {
+  // makeIntegrator only asks the model whether it is a map: any model of the kind will do
+  auto probe = std::shared_ptr<Model>(spec.makeModel());
+  return [spec, probe] { return spec.makeIntegrator(*probe); };
+}
+} // namespace
+
+FixedPointTask::FixedPointTask(MapTaskSpec spec) : spec_(std::move(spec)) {
+  reset();
+}
+
+void FixedPointTask::reset() {
+  from_ = spec_.guess;
+  path_.clear();
+  std::lock_guard lock(mutex_);
+  result_.reset();
+}
+
+bool FixedPointTask::run(const ToolControl& control) {
+  MapHolder h(spec_);
+  try {
+    FixedPointResult r = findFixedPoint(h.map(), from_, spec_.search, control, [this](const SearchPoint& p) {
+      from_ = p.point;
+      path_.push(p);
+    });
+    std::lock_guard lock(mutex_);
+    result_ = std::move(r);
+    return true;
+  } catch (const Stopped&) {
+    return false;
+  }
+}
+
+std::optional<FixedPointResult> FixedPointTask::result() const {
+  std::lock_guard lock(mutex_);
+  return result_;
+}
+
+ContinuationTask::ContinuationTask(MapTaskSpec spec, ContinuationSettings settings)
+    : spec_(std::move(spec)), settings_(std::move(settings)) {
+  settings_.search = spec_.search;
+  reset();
+}
+
+std::string ContinuationTask::describe() const {
+  return spec_.describe() + " continued in " + settings_.parameter;
+}
+
+void ContinuationTask::reset() {
+  points_.clear();
+  changes_.clear();
+  continuation_ = std::make_unique<Continuation>(
+      modelAt(spec_.run, settings_.parameter), integrators(spec_.run), spec_.section,
+      spec_.run.modelParameters[settings_.parameter], spec_.guess, settings_);
+}
+
+bool ContinuationTask::run(const ToolControl& control) {
+  return continuation_->run(
+      control, [this](const ContinuationPoint& p) { points_.push(p); },
+      [this](const TypeChange& t) { changes_.push(t); });
+}
+
+SeparatrixTask::SeparatrixTask(MapTaskSpec spec, SeparatrixSettings settings)
+    : spec_(std::move(spec)), settings_(settings) {}
+
+bool SeparatrixTask::run(const ToolControl& control) {
+  points_.clear();
+  MapHolder h(spec_);
+  try {
+    const FixedPointResult fp = findFixedPoint(h.map(), spec_.guess, spec_.search, control);
+    const SeparatrixResult r = growSeparatrix(
+        h.map(), fp, settings_, control, [this](const std::vector<Eigen::VectorXd>& b) { points_.push(b); });
+    return r.stoppedBecause != "stopped";
+  } catch (const Stopped&) {
+    return false;
+  }
+}
+
+BifurcationTreeTask::BifurcationTreeTask(MapTaskSpec spec, BifurcationTreeSettings settings)
+    : spec_(std::move(spec)), settings_(std::move(settings)) {
+  settings_.continuation.search = spec_.search;
+}
+
+void BifurcationTreeTask::reset() {
+  points_.clear();
+  doublings_.clear();
+}
+
+bool BifurcationTreeTask::run(const ToolControl& control) {
+  reset();
+  const std::string& id = settings_.continuation.parameter;
+  try {
+    bifurcationTree(
+        modelAt(spec_.run, id), integrators(spec_.run), spec_.section, spec_.run.modelParameters[id],
+        spec_.guess, settings_, control,
+        [this](const TreeBranch& b, const ContinuationPoint& p) {
+          points_.push({b.level, b.order, p});
+        },
+        [this](const PeriodDoubling& d) { doublings_.push(d); });
+    return true;
+  } catch (const Stopped&) {
+    return false;
+  }
+}
+
+GridTask::GridTask(MapTaskSpec spec, MapGrid::Kind kind, GridSettings settings)
+    : spec_(std::move(spec)), kind_(kind), settings_(settings) {
+  reset();
+}
+
+std::string GridTask::name() const {
+  return kind_ == MapGrid::Kind::Surface ? "Surface |Map(x) - x|" : "Region of allowed motion";
+}
+
+void GridTask::reset() {
+  grid_.reset();
+  holder_ = std::make_unique<MapHolder>(spec_);
+  grid_ = std::make_unique<MapGrid>(holder_->map(), kind_, settings_);
+}
+
+bool GridTask::run(const ToolControl& control) {
+  return grid_->run(control);
+}
+
+} // namespace rv
