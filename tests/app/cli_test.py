@@ -199,6 +199,120 @@ class Cli(unittest.TestCase):
         self.assertBadInput(run("chart", SCENE, "--view", "nope", "-o", self.path("n.png")), "--view nope")
         self.assertFalse(os.path.exists(self.path("n.png")))
 
+    def test_fixedpoint_json_and_text(self):
+        r = run("fixedpoint", os.path.join(SRC, "scenes", "henon_map.json"), "--guess", "0.6,0.2", "--json")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        j = json.loads(r.stdout)
+        x = (-0.7 + (0.49 + 5.6) ** 0.5) / 2.8
+        self.assertAlmostEqual(j["point"][0], x, delta=1e-12)
+        self.assertIn("hyperbolic", j["type"])
+        self.assertEqual(len(j["multipliers"]), 2)
+        # the product of the multipliers is det DP = -b
+        (a, b), (c, d) = j["multipliers"]
+        self.assertAlmostEqual(a * c - b * d, -0.3, delta=1e-9)
+        # Henon-Heiles' straight-line orbit, gradient method and the whole path, as text
+        t = run("fixedpoint", os.path.join(SRC, "scenes", "henon_heiles.json"), "--guess", "0.02,0.23",
+                "--path")
+        self.assertEqual(t.returncode, 0, t.stderr)
+        self.assertIn("type: elliptic", t.stdout)
+        self.assertIn("search:", t.stdout)
+
+    def test_fixedpoint_failures(self):
+        hm = os.path.join(SRC, "scenes", "henon_map.json")
+        r = run("fixedpoint", hm, "--guess", "0.2,0", "--set", "fixedpoint.max_iterations=1",
+                "--set", "fixedpoint.max_distance=0.001")
+        self.assertEqual(r.returncode, 1, r.stderr)
+        self.assertIn("no convergence", r.stderr)
+        self.assertBadInput(run("fixedpoint", hm, "--guess", "0.2"), "--guess", "2 coordinates")
+        self.assertBadInput(run("fixedpoint", hm, "--guess", "0.2,x"), "--guess")
+        self.assertBadInput(run("fixedpoint", hm, "--guess", "0.2,0", "--method", "bisection"), "--method",
+                            "newton")
+        self.assertBadInput(run("fixedpoint", hm, "--guess", "0.2,0", "--set", "fixedpoint.accuracy=-1"),
+                            "fixedpoint.accuracy")
+        z = run("fixedpoint", hm, "--guess", "0.6,0.2", "--set", "fixedpoint.derivatives=differences",
+                "--set", "fixedpoint.derivative_accuracy=1e-30", "--set", "fixedpoint.zero=1e-6")
+        self.assertEqual(z.returncode, 1, z.stderr)
+        self.assertIn("value of zero", z.stderr)
+
+    def test_continue_locates_the_period_doubling(self):
+        out = self.path("c.csv")
+        r = run("continue", os.path.join(SRC, "scenes", "standard_map.json"), "--guess", "3.14159,0",
+                "--param", "K", "--to", "4.5", "--step", "0.05", "-o", out)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("hyperbolic with reflection (multiplier -1)", r.stdout)
+        k = float(r.stdout.split("K = ")[1].split(":")[0])
+        self.assertAlmostEqual(k, 4.0, delta=1e-8)
+        rows = list(csv.DictReader(open(out)))
+        self.assertEqual(rows[0]["K"], "0.90000000000000002")
+        self.assertAlmostEqual(float(rows[-1]["K"]), 4.5, delta=1e-12)
+        for row in rows:
+            self.assertAlmostEqual(float(row["re1"]) + float(row["re2"]), 2 - float(row["K"]), delta=1e-9)
+        self.assertBadInput(run("continue", os.path.join(SRC, "scenes", "standard_map.json"), "--guess", "3,0",
+                                "--param", "Q", "--to", "1"), "--param", "Q")
+        self.assertFalse(os.path.exists(self.path("bad.csv")))
+
+    def test_bifurcation_tree_of_the_area_preserving_henon_map(self):
+        r = run("bifurcation-tree", os.path.join(SRC, "scenes", "henon_map.json"), "--set", "b=-1",
+                "--set", "a=2", "--guess", "0.4,-0.4", "--param", "a", "--to", "4.2", "--step", "0.05",
+                "--set", "bifurcation_tree.levels=1", "--json", "-o", self.path("t.csv"))
+        self.assertEqual(r.returncode, 0, r.stderr)
+        j = json.loads(r.stdout)
+        self.assertAlmostEqual(j["doublings"][0]["parameter"], 3.0, delta=1e-8)
+        self.assertAlmostEqual(j["doublings"][1]["parameter"], 4.0, delta=1e-8)
+        h = run("bifurcation-tree", os.path.join(SRC, "scenes", "standard_map.json"), "--guess", "0.01,0.01",
+                "--param", "K", "--to", "2", "--step", "0.1")
+        self.assertEqual(h.returncode, 1, h.stderr)
+        self.assertIn("not elliptic", h.stderr)
+
+    def test_separatrix_surface_ram(self):
+        sm = os.path.join(SRC, "scenes", "standard_map.json")
+        out = self.path("s.csv")
+        r = run("separatrix", sm, "--guess", "0.01,0.01", "--branch", "all", "-o", out,
+                "--set", "separatrix.iterations=5")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        rows = list(csv.DictReader(open(out)))
+        self.assertEqual(sorted({row["branch"] for row in rows}), ["1", "2", "3", "4"])
+        e = run("separatrix", sm, "--guess", "3.1,0")
+        self.assertEqual(e.returncode, 1, e.stderr)
+        self.assertIn("not hyperbolic", e.stderr)
+        surf = self.path("z.csv")
+        r = run("surface", os.path.join(SRC, "scenes", "henon_map.json"), "--x", "0,1", "--y", "0,0.4",
+                "--step", "0.05", "--threads", "2", "-o", surf)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        rows = list(csv.DictReader(open(surf)))
+        self.assertEqual(len(rows), 21 * 9)
+        self.assertEqual(list(rows[0].keys()), ["x", "y", "distance"])
+        ram = self.path("ram.csv")
+        r = run("ram", os.path.join(SRC, "scenes", "henon_heiles.json"), "--x", "-0.6,0.8", "--y", "-0.6,0.6",
+                "--step", "0.05", "-o", ram)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        rows = list(csv.DictReader(open(ram)))
+        for row in rows:
+            y, py = float(row["y"]), float(row["py"])
+            rest = 0.125 - py * py / 2 - (y * y / 2 - y ** 3 / 3)
+            if abs(rest) > 1e-9:
+                self.assertEqual(float(row["allowed"]), 1.0 if rest > 0 else 0.0, row)
+        self.assertBadInput(run("surface", sm, "--x", "1,0", "--y", "0,1"), "--x")
+
+    def test_diagram(self):
+        out = self.path("d.csv")
+        r = run("diagram", SCENE, "-o", out)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        rows = list(csv.DictReader(open(out)))
+        self.assertIn("tau", {row["branch"] for row in rows})
+        state = [row for row in rows if row["branch"] == "state"][0]
+        self.assertAlmostEqual(float(state["h"]), 0.5, delta=1e-9)  # the scene's energy
+        j = json.loads(run("diagram", SCENE, "--json").stdout)
+        self.assertEqual(j["axes"], ["n", "h"])
+        self.assertBadInput(run("diagram", os.path.join(SRC, "scenes", "lorenz.json")), "no bifurcation diagrams")
+        self.assertBadInput(run("diagram", SCENE, "--diagram", "xy"), "--diagram", "nh")
+
+    def test_list_tools(self):
+        r = run("list", "tools")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        for key in ("fixedpoint", "continuation", "separatrix", "bifurcation_tree", "grid", "max_iterations"):
+            self.assertIn(key, r.stdout)
+
     def test_gui_without_a_display_says_so(self):
         r = run("gui", SCENE, env={"WAYLAND_DISPLAY": ""})
         if "WAYLAND_DISPLAY" in os.environ:
