@@ -3,6 +3,7 @@
 #include "scenes/SceneLoader.h"
 
 #include <CLI/CLI.hpp>
+#include <complex>
 #include <functional>
 #include <memory>
 #include <string>
@@ -23,6 +24,10 @@ void addSceneArgs(CLI::App* cmd, SceneArgs& args);
 
 /// The scene's Poincare map from its initial state; `points` > 0 overrides poincare.points (default 2000).
 std::unique_ptr<PoincareMap> scenePoincareMap(const Scene& scene, long points);
+
+/// The multipliers of the scene's fixed point (fixedpoint.guess or the initial map point) along its
+/// continuation (the scene's continuation section), or of the point alone when the scene continues nothing.
+std::vector<std::vector<std::complex<double>>> sceneMultiplierPath(Scene scene, const ToolControl& control);
 
 /// Parses "WxH"; InputError naming --size otherwise.
 std::pair<int, int> parseSize(const std::string& text);

@@ -71,8 +71,7 @@ struct Setup {
   ReturnMap map() const { return ReturnMap(*scene.model, integrators(), section); }
 };
 
-std::unique_ptr<Setup> setUp(const MapArgs& a, bool needGuess = true) {
-  Scene scene = a.scene.load();
+std::unique_ptr<Setup> setUp(Scene scene, const MapArgs& a, bool needGuess = true) {
   RunSpec spec = scene.runSpec();
   auto s = std::make_unique<Setup>(Setup{std::move(scene), std::move(spec)});
   ParameterValues fp = s->scene.tool("fixedpoint");
@@ -97,6 +96,10 @@ std::unique_ptr<Setup> setUp(const MapArgs& a, bool needGuess = true) {
                                  header(probe.coordinateNames()), g.size()));
   s->guess = Eigen::Map<const Eigen::VectorXd>(g.data(), static_cast<Eigen::Index>(g.size()));
   return s;
+}
+
+std::unique_ptr<Setup> setUp(const MapArgs& a, bool needGuess = true) {
+  return setUp(a.scene.load(), a, needGuess);
 }
 
 nlohmann::json multipliersJson(const std::vector<std::complex<double>>& m) {
@@ -333,21 +336,32 @@ Command addContinueCommand(CLI::App& app) {
         bool headed = false;
         const ReturnMap map = s->map();
         Progress progress("continue");
-        const bool done = cont.run(
-            interruptibleControl(progress),
-            [&](const ContinuationPoint& p) {
-              if (!headed)
-                std::fprintf(out.get(), "%s\n",
-                             continuationHeader(c.parameter, map, p.fixedPoint.multipliers.size()).c_str());
-              headed = true;
-              printContinuationPoint(out.get(), p);
-            },
-            [&](const TypeChange& t) {
-              if (!a->json)
-                fmt::print(changes, "type change at {} = {:.12g}: {} -> {} ({})\n", c.parameter, t.parameter,
-                           t.from, t.to, t.kind);
-            });
+        std::string failure;
+        bool done = false;
+        try {
+          done = cont.run(
+              interruptibleControl(progress),
+              [&](const ContinuationPoint& p) {
+                if (!headed)
+                  std::fprintf(out.get(), "%s\n",
+                               continuationHeader(c.parameter, map, p.fixedPoint.multipliers.size()).c_str());
+                headed = true;
+                printContinuationPoint(out.get(), p);
+              },
+              [&](const TypeChange& t) {
+                if (!a->json)
+                  fmt::print(changes, "type change at {} = {:.12g}: {} -> {} ({})\n", c.parameter,
+                             t.parameter, t.from, t.to, t.kind);
+              });
+        } catch (const ComputationError& e) {
+          if (cont.points().empty()) throw;
+          failure = e.what(); // the family up to here is a result: keep it, and say why it ends
+        }
         out.commit();
+        if (!failure.empty()) {
+          fmt::print(stderr, "rollviz: failed: {}\n", failure);
+          return 1;
+        }
         if (a->json) {
           nlohmann::json ch = nlohmann::json::array();
           for (const auto& t : cont.changes())
@@ -569,6 +583,27 @@ Command addDiagramCommand(CLI::App& app) {
             out.commit();
             return 0;
           }};
+}
+
+std::vector<std::vector<std::complex<double>>> sceneMultiplierPath(Scene scene, const ToolControl& control) {
+  const auto s = setUp(std::move(scene), MapArgs{});
+  std::vector<std::vector<std::complex<double>>> steps;
+  if (s->scene.continuationParameter.empty() || !s->scene.continuationTo) {
+    steps.push_back(findFixedPoint(s->map(), s->guess, s->search, control).multipliers);
+    return steps;
+  }
+  ContinueArgs a;
+  const ContinuationSettings c = continuationOf(a, *s);
+  Continuation cont(modelAt(s->spec, c.parameter), s->integrators(), s->section,
+                    s->spec.modelParameters[c.parameter], s->guess, c);
+  try {
+    cont.run(control);
+  } catch (const ComputationError&) {
+    if (cont.points().empty()) throw; // else draw the family as far as it goes
+  }
+  for (const auto& p : cont.points())
+    steps.push_back(p.fixedPoint.multipliers);
+  return steps;
 }
 
 } // namespace rv

@@ -4,6 +4,7 @@
 #include "dynamics/core/Format.h"
 
 #include <cmath>
+#include <optional>
 
 namespace rv {
 
@@ -106,17 +107,28 @@ bool Continuation::run(const ToolControl& control,
     while (true) {
       const ContinuationPoint& last = points_.back();
       if (std::abs(last.parameter - s_.to) <= 1e-12 * std::max(1.0, std::abs(s_.to))) break;
-      // start + k step (no accumulated rounding), the last step shortened to land on the finite value
-      const double stepped = start_ + static_cast<double>(points_.size()) * s_.step;
-      const double p = (s_.to - stepped) * s_.step > 1e-9 * s_.step * s_.step ? stepped : s_.to;
-      Eigen::VectorXd guess = last.fixedPoint.point;
-      if (points_.size() >= 2) {
-        const ContinuationPoint& before = points_[points_.size() - 2];
-        guess += shape_->difference(last.fixedPoint.point, before.fixedPoint.point) * s_.extrapolation *
-                 (p - last.parameter) / (last.parameter - before.parameter);
+      // the next value on the grid start + k step (no accumulated rounding), the last step shortened to land
+      // on the finite value; a step that finds no point is halved (up to 8 times) before the family is given
+      // up
+      const double k = std::floor((last.parameter - start_) / s_.step + 1e-9) + 1;
+      const double stepped = start_ + k * s_.step;
+      double p = (s_.to - stepped) * s_.step > 1e-9 * s_.step * s_.step ? stepped : s_.to;
+      std::optional<ContinuationPoint> next;
+      for (int halving = 0; !next; ++halving) {
+        Eigen::VectorXd guess = last.fixedPoint.point;
+        if (points_.size() >= 2) {
+          const ContinuationPoint& before = points_[points_.size() - 2];
+          guess += shape_->difference(last.fixedPoint.point, before.fixedPoint.point) * s_.extrapolation *
+                   (p - last.parameter) / (last.parameter - before.parameter);
+        }
+        try {
+          next = ContinuationPoint{p, solveAt(p, guess, control)};
+        } catch (const ComputationError&) {
+          if (halving == 8) throw;
+          p = 0.5 * (last.parameter + p);
+        }
       }
-      ContinuationPoint next{p, solveAt(p, guess, control)};
-      points_.push_back(std::move(next));
+      points_.push_back(std::move(*next));
       if (onPoint) onPoint(points_.back());
       // a step that lands on a parabolic point is between types: compare with the last definite one
       const ContinuationPoint& b = points_.back();

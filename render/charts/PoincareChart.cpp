@@ -1,5 +1,6 @@
 #include "render/charts/PoincareChart.h"
 
+#include <cmath>
 #include <vtkAxis.h>
 #include <vtkChartXY.h>
 #include <vtkContextScene.h>
@@ -68,6 +69,39 @@ int PoincareChart::addSeries(const std::vector<double>& x, const std::vector<dou
     points->SetMarkerSize(3);
   }
   return static_cast<int>(chart_->GetNumberOfPlots()) - 1;
+}
+
+int PoincareChart::addCurve(const std::vector<double>& x, const std::vector<double>& y, const Rgb& c,
+                            float width) {
+  int first = -1;
+  std::vector<double> px, py;
+  const auto flush = [&] {
+    if (px.size() >= 2) {
+      vtkPlot* plot = chart_->AddPlot(vtkChart::LINE);
+      plot->SetInputData(tableOf(px, py, chart_->GetNumberOfPlots()), 0, 1);
+      plot->SetColor(static_cast<unsigned char>(255 * c[0]), static_cast<unsigned char>(255 * c[1]),
+                     static_cast<unsigned char>(255 * c[2]), 255);
+      plot->SetWidth(width);
+      if (first < 0) first = static_cast<int>(chart_->GetNumberOfPlots()) - 1;
+    }
+    px.clear(), py.clear();
+  };
+  for (std::size_t i = 0; i < x.size() && i < y.size(); ++i) {
+    if (std::isnan(x[i]) || std::isnan(y[i])) {
+      flush();
+      continue;
+    }
+    px.push_back(x[i]), py.push_back(y[i]);
+  }
+  flush();
+  return first;
+}
+
+void PoincareChart::setRanges(double x0, double x1, double y0, double y1) {
+  vtkAxis* ax = chart_->GetAxis(vtkAxis::BOTTOM);
+  vtkAxis* ay = chart_->GetAxis(vtkAxis::LEFT);
+  ax->SetRange(x0, x1), ay->SetRange(y0, y1);
+  ax->SetBehavior(vtkAxis::FIXED), ay->SetBehavior(vtkAxis::FIXED);
 }
 
 void PoincareChart::setSeries(int index, const std::vector<double>& x, const std::vector<double>& y) {

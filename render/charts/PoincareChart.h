@@ -1,4 +1,5 @@
-// PoincareChart.h -- the Poincare map as a VTK chart (manual §2.4.1): one coloured point series per
+// PoincareChart.h -- the Poincare map as a VTK chart (manual §2.4.1), and the plane of any point or curve
+// plot (multipliers, bifurcation diagrams: ToolCharts.h): one coloured point series per
 // trajectory, the selected one drawn larger, axes named after the map coordinates. Rendered in any render
 // window (on screen through QtVtkWidget, headless through a HeadlessContext).
 #pragma once
@@ -20,6 +21,10 @@ public:
   ~PoincareChart();
   /// Adds a trajectory's points (x[i], y[i]); returns its index.
   int addSeries(const std::vector<double>& x, const std::vector<double>& y, const Rgb& color);
+  /// Adds a curve through (x[i], y[i]), broken where a value is NaN; returns the index of its first piece.
+  int addCurve(const std::vector<double>& x, const std::vector<double>& y, const Rgb& color, float width = 2);
+  /// Fixes the axes' ranges (otherwise they follow the data).
+  void setRanges(double x0, double x1, double y0, double y1);
   /// Replaces the points of series `index`.
   void setSeries(int index, const std::vector<double>& x, const std::vector<double>& y);
   /// Removes every series.

@@ -196,8 +196,22 @@ class Cli(unittest.TestCase):
         # white background, axes, blue points: mostly white but with a real number of blue-ish pixels
         blue = sum(1 for p in px if p[2] > 150 and p[0] < 100)
         self.assertGreater(blue, 300)
-        self.assertBadInput(run("chart", SCENE, "--view", "nope", "-o", self.path("n.png")), "--view nope")
+        self.assertBadInput(run("chart", SCENE, "--view", "nope", "-o", self.path("n.png")), "--view")
         self.assertFalse(os.path.exists(self.path("n.png")))
+
+    def test_multipliers_and_bifurcation_charts(self):
+        for view in ("multipliers", "bifurcation"):
+            out = self.path(view + ".png")
+            r = run("chart", SCENE, "--view", view, "-o", out, "--size", "400x400")
+            self.assertEqual(r.returncode, 0, r.stderr)
+            size, px = pixels(out)
+            self.assertEqual(size, (400, 400))
+            self.assertTrue(varied(px) or len(set(px)) > 50, view)
+            # coloured marks (the unit circle is grey; multipliers and branches are coloured)
+            coloured = sum(1 for p in px if max(p) - min(p) > 80)
+            self.assertGreater(coloured, 40, view)
+        self.assertBadInput(run("chart", os.path.join(SRC, "scenes", "lorenz.json"), "--view", "bifurcation",
+                                "-o", self.path("l.png")), "no bifurcation diagrams")
 
     def test_fixedpoint_json_and_text(self):
         r = run("fixedpoint", os.path.join(SRC, "scenes", "henon_map.json"), "--guess", "0.6,0.2", "--json")
