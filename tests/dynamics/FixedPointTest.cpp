@@ -247,3 +247,60 @@ TEST(BifurcationTree, RefusesAHyperbolicStart) {
 
 } // namespace
 } // namespace rv
+
+namespace rv {
+namespace {
+
+// A balanced ball through the generic rigid body on a plane (a 3D map l, L/G, H/G) is the Chaplygin ball
+// (a 2D map at fixed c): H/G is conserved, so the 3D map has a unit multiplier and a line of fixed points;
+// the "2D section" search at the Chaplygin point's H/G must land on the Chaplygin point, with the same other
+// multipliers. Two independent formulations, one answer.
+TEST(FixedPoint, SectionModeOnA3DMapMatchesTheChaplyginBallsFixedPoint) {
+  const auto ball =
+      test::makeModel("chaplygin_ball", {{"K1", 0}, {"K2", 0}, {"K3", 0}, {"c", 0.3}, {"energy", 0.5}});
+  const ReturnMap map2(*ball, everhart(0.02), order(1));
+  const auto a = findFixedPoint(map2, Eigen::Vector2d(4.5, 0.0), {});
+  ASSERT_EQ(a.type, "elliptic");
+  const Eigen::VectorXd s = ball->stateFromMap({a.point[0], a.point[1]}, {}, "test");
+  const Eigen::Vector3d M = s.head<3>(), g = s.segment<3>(3);
+  const double HG = M.dot(g) / M.norm();
+
+  const auto body = test::makeModel("ellipsoid_on_plane", {{"I1", 1.0},
+                                                           {"I2", 1.4},
+                                                           {"I3", 1.9},
+                                                           {"m", 1.0},
+                                                           {"g", 0.0},
+                                                           {"b1", 1.0},
+                                                           {"b2", 1.0},
+                                                           {"b3", 1.0},
+                                                           {"a1", 0.0},
+                                                           {"a2", 0.0},
+                                                           {"a3", 0.0},
+                                                           {"phi", 0.0},
+                                                           {"theta", 0.0},
+                                                           {"psi", 0.0},
+                                                           {"energy", 0.5}});
+  const ReturnMap map3(*body, everhart(0.02), order(1));
+  ASSERT_EQ(map3.dimension(), 3);
+  FixedPointSettings sec;
+  sec.section2D = true;
+  const auto b = findFixedPoint(map3, Eigen::Vector3d(4.5, 0.0, HG), sec);
+  EXPECT_NEAR(b.point[0], a.point[0], 1e-8);
+  EXPECT_NEAR(b.point[1], a.point[1], 1e-8);
+  EXPECT_NEAR(b.point[2], HG, 1e-14) << "the search stays on the plane z = const";
+  ASSERT_EQ(b.multipliers.size(), 3u);
+  int unit = 0;
+  for (auto m : b.multipliers)
+    unit += std::abs(m - 1.0) < 1e-6;
+  EXPECT_EQ(unit, 1) << "H/G is conserved: one multiplier is 1";
+  EXPECT_EQ(b.type, "elliptic");
+  for (auto m : a.multipliers) { // the others are the Chaplygin map's
+    double best = 1e9;
+    for (auto n : b.multipliers)
+      best = std::min(best, std::abs(m - n));
+    EXPECT_LT(best, 1e-6);
+  }
+}
+
+} // namespace
+} // namespace rv
