@@ -53,6 +53,20 @@ void Model::coreJacobian(const double* x, double* jac) const {
       jac[i * m + j] = full[i * n + j];
 }
 
+void Model::tangentRhs(const double* x, const double* V, int k, double* dx, double* dV) const {
+  const int m = info_->coreDimension;
+  rhs(x, dx);
+  std::vector<double> J(static_cast<std::size_t>(m) * m);
+  coreJacobian(x, J.data());
+  for (int c = 0; c < k; ++c)
+    for (int i = 0; i < m; ++i) {
+      double sum = 0;
+      for (int l = 0; l < m; ++l)
+        sum += J[i * m + l] * V[c * m + l];
+      dV[c * m + i] = sum;
+    }
+}
+
 int Model::sheetOf(const Eigen::VectorXd&, const MapPointSpec&) const {
   return 1;
 }

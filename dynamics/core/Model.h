@@ -92,6 +92,10 @@ public:
   virtual void jacobian(const double* x, double* jac) const = 0;
   /// The core block of the Jacobian (coreDimension squared, row-major): what tangent vectors need.
   virtual void coreJacobian(const double* x, double* jac) const;
+  /// The right-hand side and its derivative along k tangent vectors in core coordinates (V: k columns of
+  /// coreDimension, column after column): dx = f(x), dV = J_core(x) V. What the variational equations need;
+  /// models with a templated field compute both in one pass of directional derivatives.
+  virtual void tangentRhs(const double* x, const double* V, int k, double* dx, double* dV) const;
   /// Values of the first integrals, in the order of info().integralNames.
   virtual Eigen::VectorXd integrals(const double* x) const;
   /// Density of the invariant measure (1 when hasInvariantMeasure() is false).

@@ -60,8 +60,41 @@ public:
         jac[i * M + j] = fa[i].derivatives()[j];
   }
 
+  /// One pass of forward AutoDiff seeded with the tangent vectors (fixed sizes for the 1-3 vectors of map
+  /// derivatives; more go through the Jacobian): the values are f, the derivatives J V.
+  void tangentRhs(const double* x, const double* V, int k, double* dx, double* dV) const final {
+    switch (k) {
+    case 1:
+      return directional<1>(x, V, dx, dV);
+    case 2:
+      return directional<2>(x, V, dx, dV);
+    case 3:
+      return directional<3>(x, V, dx, dV);
+    default:
+      return Model::tangentRhs(x, V, k, dx, dV);
+    }
+  }
+
 private:
   const Derived& self() const { return static_cast<const Derived&>(*this); }
+  template <int K> void directional(const double* x, const double* V, double* dx, double* dV) const {
+    using D = Eigen::Matrix<double, K, 1>;
+    using AD = Eigen::AutoDiffScalar<D>;
+    Vec<AD> xa, fa;
+    for (int i = 0; i < N; ++i) {
+      D seed = D::Zero();
+      if (i < M)
+        for (int c = 0; c < K; ++c)
+          seed[c] = V[c * M + i];
+      xa[i] = AD(x[i], seed);
+    }
+    self().field(xa, fa);
+    for (int i = 0; i < N; ++i)
+      dx[i] = fa[i].value();
+    for (int i = 0; i < M; ++i)
+      for (int c = 0; c < K; ++c)
+        dV[c * M + i] = fa[i].derivatives().size() ? fa[i].derivatives()[c] : 0.0;
+  }
 };
 
 } // namespace rv

@@ -32,7 +32,6 @@ public:
 private:
   const Model& base_;
   int n_, m_, k_;
-  mutable Eigen::MatrixXd J_; // work space (one integrator thread per system)
 };
 
 } // namespace rv

@@ -7,7 +7,9 @@
 #include "dynamics/integrators/Rk4.h"
 #include "dynamics/jobs/JobTree.h"
 #include "dynamics/jobs/PoincareTask.h"
+#include "dynamics/tools/FixedPoint.h"
 #include "dynamics/tools/Lyapunov.h"
+#include "dynamics/tools/MapGrid.h"
 #include "dynamics/tools/PoincareMap.h"
 
 #include <Eigen/QR>
@@ -29,6 +31,69 @@ std::unique_ptr<Model> make(const std::string& id,
     p.set(k, v);
   return e.create(p);
 }
+
+// a fixed point to |Map(x) - x| <= 1e-10 from a guess ~0.3 away: finite differences against variational
+// derivatives; counters give the map evaluations (a variational evaluation integrates 2-3 tangent vectors
+// too)
+void FixedPointSearch(benchmark::State& state, const char* which, DerivativeMethod method) {
+  const bool ball = std::string(which) == "chaplygin_ball";
+  const auto m = ball ? make("chaplygin_ball", {{"K1", 0.2}, {"K2", 0.1}, {"K3", 0.3}})
+                      : make("ellipsoid_on_plane", {{"I1", 1.0},
+                                                    {"I2", 1.4},
+                                                    {"I3", 1.9},
+                                                    {"g", 0.0},
+                                                    {"b1", 1.0},
+                                                    {"b2", 1.0},
+                                                    {"b3", 1.0},
+                                                    {"a3", 0.0},
+                                                    {"psi", 0.0},
+                                                    {"energy", 0.5}});
+  const ReturnMap map(
+      *m, [] { return std::make_unique<Everhart>(0.02, 15, 12); }, SectionSettings{});
+  FixedPointSettings s;
+  s.accuracy = 1e-10;
+  s.derivatives.method = method;
+  s.section2D = !ball; // the balanced ball's 3D map has a line of fixed points (H/G is conserved)
+  const Eigen::VectorXd guess =
+      ball ? Eigen::VectorXd(Eigen::Vector2d(4.2, 0.2)) : Eigen::VectorXd(Eigen::Vector3d(4.5, 0.0, 0.215));
+  long evaluations = 0, searches = 0;
+  for (auto _ : state) {
+    const auto r = findFixedPoint(map, guess, s);
+    evaluations += r.evaluations, ++searches;
+  }
+  state.counters["map_evaluations"] = static_cast<double>(evaluations) / static_cast<double>(searches);
+}
+BENCHMARK_CAPTURE(FixedPointSearch, chaplygin_ball_differences, "chaplygin_ball",
+                  DerivativeMethod::FiniteDifferences)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(FixedPointSearch, chaplygin_ball_variational, "chaplygin_ball",
+                  DerivativeMethod::Variational)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(FixedPointSearch, ellipsoid_on_plane_differences, "ellipsoid_on_plane",
+                  DerivativeMethod::FiniteDifferences)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(FixedPointSearch, ellipsoid_on_plane_variational, "ellipsoid_on_plane",
+                  DerivativeMethod::Variational)
+    ->Unit(benchmark::kMillisecond);
+
+// the |Map(x) - x| surface of Henon-Heiles (61 x 61 Poincare returns) on 1 and 2 threads
+void SurfaceGrid(benchmark::State& state) {
+  const auto m = make("henon_heiles", {{"energy", 0.125}});
+  const ReturnMap map(
+      *m, [] { return std::make_unique<Everhart>(0.05, 15, 12); }, SectionSettings{});
+  GridSettings g;
+  g.axes[0] = {-0.3, 0.3, 0.01};
+  g.axes[1] = {-0.3, 0.3, 0.01};
+  g.threads = static_cast<int>(state.range(0));
+  for (auto _ : state) {
+    MapGrid grid(map, MapGrid::Kind::Surface, g);
+    grid.run();
+    benchmark::DoNotOptimize(grid.result().values.data());
+  }
+  state.counters["points_per_second"] =
+      benchmark::Counter(61.0 * 61.0, benchmark::Counter::kIsIterationInvariantRate);
+}
+BENCHMARK(SurfaceGrid)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // chaplygin_ball over t = 200 (Everhart 15, h = 0.1): plain, and with every crossing of g = 0 located
 void PoincareCost(benchmark::State& state, bool withSection) {

@@ -38,6 +38,26 @@ TEST_P(EveryModel, JacobianMatchesFiniteDifferencesAndObservablesEvaluate) {
       EXPECT_NEAR(J[i * n + j], (fp[i] - fm[i]) / (2 * h), 1e-6 * std::max(1.0, std::abs(J[i * n + j])))
           << GetParam() << " d" << i << "/d" << j;
   }
+  // the directional derivatives of the variational equations: f and J_core V in one pass
+  const int c = m->info().coreDimension;
+  std::vector<double> Jc(c * c), f(n);
+  m->coreJacobian(x.data(), Jc.data());
+  m->rhs(x.data(), f.data());
+  for (int k : {1, 2, c}) {
+    std::vector<double> V(k * c), dx(n), dV(k * c);
+    for (int i = 0; i < k * c; ++i)
+      V[i] = std::sin(1.3 * i + 0.4);
+    m->tangentRhs(x.data(), V.data(), k, dx.data(), dV.data());
+    for (int i = 0; i < n; ++i)
+      EXPECT_NEAR(dx[i], f[i], 1e-14 * std::max(1.0, std::abs(f[i]))) << GetParam();
+    for (int col = 0; col < k; ++col)
+      for (int i = 0; i < c; ++i) {
+        double jv = 0;
+        for (int l = 0; l < c; ++l)
+          jv += Jc[i * c + l] * V[col * c + l];
+        EXPECT_NEAR(dV[col * c + i], jv, 1e-12 * std::max(1.0, std::abs(jv))) << GetParam() << " k = " << k;
+      }
+  }
   for (const auto& o : m->observables())
     EXPECT_TRUE(std::isfinite(o.value(0.0, x.data()))) << GetParam() << " " << o.id;
   if (m->hasInvariantMeasure()) {
