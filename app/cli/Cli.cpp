@@ -23,15 +23,6 @@ void addSceneArgs(CLI::App* cmd, SceneArgs& args) {
       ->allow_extra_args(false);
 }
 
-std::unique_ptr<PoincareMap> scenePoincareMap(const Scene& scene, long points) {
-  SectionSettings s = scene.poincare;
-  if (points > 0) s.maxPoints = points;
-  if (s.maxPoints <= 0) s.maxPoints = 2000;
-  auto integ = scene.runSpec().makeIntegrator(*scene.model);
-  integ->start(*scene.model, 0, scene.initialState, s.backward ? -1 : +1);
-  return std::make_unique<PoincareMap>(*scene.model, std::move(integ), s);
-}
-
 std::pair<int, int> parseSize(const std::string& text) {
   int w = 0, h = 0;
   char x = 0, extra = 0;

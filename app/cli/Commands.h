@@ -1,6 +1,7 @@
 // Commands.h -- each subcommand registers its options on the CLI11 app and runs from there.
 #pragma once
 #include "scenes/SceneLoader.h"
+#include "scenes/SceneTools.h"
 
 #include <CLI/CLI.hpp>
 #include <complex>
@@ -21,13 +22,6 @@ struct SceneArgs {
 
 /// Adds the SCENE positional and --set to a subcommand.
 void addSceneArgs(CLI::App* cmd, SceneArgs& args);
-
-/// The scene's Poincare map from its initial state; `points` > 0 overrides poincare.points (default 2000).
-std::unique_ptr<PoincareMap> scenePoincareMap(const Scene& scene, long points);
-
-/// The multipliers of the scene's fixed point (fixedpoint.guess or the initial map point) along its
-/// continuation (the scene's continuation section), or of the point alone when the scene continues nothing.
-std::vector<std::vector<std::complex<double>>> sceneMultiplierPath(Scene scene, const ToolControl& control);
 
 /// Parses "WxH"; InputError naming --size otherwise.
 std::pair<int, int> parseSize(const std::string& text);

@@ -7,6 +7,7 @@
 #include "app/cli/Progress.h"
 #include "dynamics/core/Errors.h"
 #include "dynamics/tools/ToolSettings.h"
+#include "scenes/SceneTools.h"
 
 #include <cmath>
 #include <fmt/core.h>
@@ -59,47 +60,11 @@ void addMapArgs(CLI::App* cmd, MapArgs& a, bool withGuess = true) {
 }
 
 // the scene with the flags folded into its tool settings
-struct Setup {
-  Scene scene;
-  RunSpec spec;
-  FixedPointSettings search;
-  SectionSettings section;
-  Eigen::VectorXd guess;
-  IntegratorFactory integrators() const {
-    return [this] { return spec.makeIntegrator(*scene.model); };
-  }
-  ReturnMap map() const { return ReturnMap(*scene.model, integrators(), section); }
-};
-
-std::unique_ptr<Setup> setUp(Scene scene, const MapArgs& a, bool needGuess = true) {
-  RunSpec spec = scene.runSpec();
-  auto s = std::make_unique<Setup>(Setup{std::move(scene), std::move(spec)});
-  ParameterValues fp = s->scene.tool("fixedpoint");
-  if (a.order < 0) throw InputError("--order: must be at least 1");
-  if (a.order > 0) fp.set("order", a.order, "--order");
-  if (!a.method.empty()) fp.setChoice("method", a.method, "--method");
-  s->search = fixedPointSettings(fp);
-  s->section = s->scene.poincare;
-  s->section.order = static_cast<int>(fp["order"]);
-  const ReturnMap probe = s->map(); // validates the map (coordinates, section)
-  std::vector<double> g;
-  if (!a.guess.empty())
-    g = parseNumbers(a.guess, "--guess");
-  else if (!s->scene.guess.empty())
-    g = s->scene.guess;
-  else if (s->scene.document.contains("initial") && s->scene.document["initial"].contains("map"))
-    g = s->scene.document["initial"]["map"].get<std::vector<double>>();
-  if (needGuess && g.empty()) throw InputError("--guess: give the starting point x,y[,z]");
-  if (needGuess && static_cast<int>(g.size()) != probe.dimension())
-    throw InputError(fmt::format("--guess: the map of {} has {} coordinates ({}), the guess has {}",
-                                 s->scene.model->info().id, probe.dimension(),
-                                 header(probe.coordinateNames()), g.size()));
-  s->guess = Eigen::Map<const Eigen::VectorXd>(g.data(), static_cast<Eigen::Index>(g.size()));
-  return s;
-}
-
-std::unique_ptr<Setup> setUp(const MapArgs& a, bool needGuess = true) {
-  return setUp(a.scene.load(), a, needGuess);
+std::unique_ptr<SceneMap> setUp(const MapArgs& a, bool needGuess = true, const MapToolOverrides& extra = {}) {
+  MapToolOverrides o = extra;
+  o.order = a.order, o.method = a.method;
+  if (!a.guess.empty()) o.guess = parseNumbers(a.guess, "--guess");
+  return std::make_unique<SceneMap>(a.scene.load(), o, needGuess);
 }
 
 nlohmann::json multipliersJson(const std::vector<std::complex<double>>& m) {
@@ -119,15 +84,6 @@ void printRow(FILE* f, const std::vector<double>& values, const std::string& tai
   std::fprintf(f, "%s\n", tail.c_str());
 }
 
-// the continuation's family: model at a value of the parameter, checked against the parameter's range
-Continuation::ModelAt modelAt(const RunSpec& spec, const std::string& id) {
-  return [spec, id](double value) {
-    ParameterValues p = spec.modelParameters;
-    p.set(id, value, "--to");
-    return spec.model->create(p);
-  };
-}
-
 struct ContinueArgs {
   MapArgs map;
   std::string param, output;
@@ -144,21 +100,12 @@ void addContinueArgs(CLI::App* cmd, ContinueArgs& a) {
   cmd->add_flag("--json", a.json, "print a JSON summary on standard output");
 }
 
-ContinuationSettings continuationOf(const ContinueArgs& a, const Setup& s) {
-  ParameterValues cv = s.scene.tool("continuation");
-  if (!std::isnan(a.step)) cv.set("step", a.step, "--step");
-  ContinuationSettings c = continuationSettings(cv, s.search);
-  c.parameter = a.param.empty() ? s.scene.continuationParameter : a.param;
-  if (c.parameter.empty()) throw InputError("--param: give the parameter to continue in");
-  if (s.scene.model->info().parameters.find(c.parameter) < 0)
-    throw InputError("--param " + c.parameter + ": not a parameter of " + s.scene.model->info().id);
-  if (!std::isnan(a.to))
-    c.to = a.to;
-  else if (s.scene.continuationTo)
-    c.to = *s.scene.continuationTo;
-  else
-    throw InputError("--to: give the finite value of " + c.parameter);
-  return c;
+MapToolOverrides continuationOverrides(const ContinueArgs& a) {
+  MapToolOverrides o;
+  o.parameter = a.param;
+  if (!std::isnan(a.to)) o.to = a.to;
+  if (!std::isnan(a.step)) o.step = a.step;
+  return o;
 }
 
 std::string continuationHeader(const std::string& param, const ReturnMap& map, std::size_t multipliers) {
@@ -216,7 +163,7 @@ void addGridArgs(CLI::App* cmd, GridArgs& a, bool ram) {
 
 int runGrid(const GridArgs& a, MapGrid::Kind kind) {
   const auto s = setUp(a.map, false);
-  ParameterValues gv = s->scene.tool("grid");
+  ParameterValues gv = s->scene().tool("grid");
   if (a.threads < 0) throw InputError("--threads: must be at least 1");
   if (a.threads > 0) gv.set("threads", a.threads, "--threads");
   if (a.step < 0 || std::isnan(a.step)) throw InputError("--step: must be positive");
@@ -282,7 +229,7 @@ Command addFixedPointCommand(CLI::App& app) {
             Progress progress("fixedpoint");
             FixedPointResult r;
             try {
-              r = findFixedPoint(map, s->guess, s->search, interruptibleControl(progress));
+              r = findFixedPoint(map, s->guess(), s->search(), interruptibleControl(progress));
             } catch (const Stopped&) {
               fmt::print(stderr, "rollviz: fixedpoint: stopped\n");
               return 130;
@@ -327,10 +274,10 @@ Command addContinueCommand(CLI::App& app) {
   addContinueArgs(cmd, *a);
   return {
       cmd, [a] {
-        const auto s = setUp(a->map);
-        const ContinuationSettings c = continuationOf(*a, *s);
-        const double start = s->spec.modelParameters[c.parameter];
-        Continuation cont(modelAt(s->spec, c.parameter), s->integrators(), s->section, start, s->guess, c);
+        const auto s = setUp(a->map, true, continuationOverrides(*a));
+        const ContinuationSettings c = s->continuation();
+        const auto run = s->continuationRun();
+        Continuation& cont = *run;
         Output out(a->output);
         FILE* changes = a->output.empty() ? stderr : stdout;
         bool headed = false;
@@ -384,10 +331,10 @@ Command addBifurcationTreeCommand(CLI::App& app) {
   addContinueArgs(cmd, *a);
   return {
       cmd, [a] {
-        const auto s = setUp(a->map);
-        const ContinuationSettings c = continuationOf(*a, *s);
-        const BifurcationTreeSettings t = bifurcationTreeSettings(s->scene.tool("bifurcation_tree"), c);
-        const double start = s->spec.modelParameters[c.parameter];
+        const auto s = setUp(a->map, true, continuationOverrides(*a));
+        const ContinuationSettings c = s->continuation();
+        const BifurcationTreeSettings t = bifurcationTreeSettings(s->scene().tool("bifurcation_tree"), c);
+        const double start = s->spec().modelParameters[c.parameter];
         Output out(a->output);
         const ReturnMap map = s->map();
         std::vector<std::string> names{"level", "order", c.parameter};
@@ -400,7 +347,7 @@ Command addBifurcationTreeCommand(CLI::App& app) {
         bool stopped = false;
         try {
           bifurcationTree(
-              modelAt(s->spec, c.parameter), s->integrators(), s->section, start, s->guess, t,
+              s->spec().modelAt(c.parameter), s->integrators(), s->section(), start, s->guess(), t,
               interruptibleControl(progress),
               [&](const TreeBranch& b, const ContinuationPoint& p) {
                 std::vector<double> row{static_cast<double>(b.level), static_cast<double>(b.order),
@@ -448,7 +395,7 @@ Command addSeparatrixCommand(CLI::App& app) {
             const auto s = setUp(*a);
             const ReturnMap map = s->map();
             if (map.dimension() != 2) throw InputError("separatrix: separatrices are drawn for 2D maps only");
-            const ParameterValues& sv = s->scene.tool("separatrix");
+            const ParameterValues& sv = s->scene().tool("separatrix");
             std::vector<int> list;
             if (*branches == "all")
               list = {1, 2, 3, 4};
@@ -464,14 +411,14 @@ Command addSeparatrixCommand(CLI::App& app) {
             const ToolControl control = interruptibleControl(progress);
             FixedPointResult fp;
             try {
-              fp = findFixedPoint(map, s->guess, s->search, control);
+              fp = findFixedPoint(map, s->guess(), s->search(), control);
             } catch (const Stopped&) {
               return 130;
             }
             Output out(*output);
             std::fprintf(out.get(), "branch,%s,parameter\n", header(map.coordinateNames()).c_str());
             for (int b : list) {
-              SeparatrixSettings ss = separatrixSettings(sv, s->search);
+              SeparatrixSettings ss = separatrixSettings(sv, s->search());
               ss.branch = b;
               const SeparatrixResult r = growSeparatrix(map, fp, ss, control);
               for (std::size_t i = 0; i < r.points.size(); ++i) {
@@ -583,27 +530,6 @@ Command addDiagramCommand(CLI::App& app) {
             out.commit();
             return 0;
           }};
-}
-
-std::vector<std::vector<std::complex<double>>> sceneMultiplierPath(Scene scene, const ToolControl& control) {
-  const auto s = setUp(std::move(scene), MapArgs{});
-  std::vector<std::vector<std::complex<double>>> steps;
-  if (s->scene.continuationParameter.empty() || !s->scene.continuationTo) {
-    steps.push_back(findFixedPoint(s->map(), s->guess, s->search, control).multipliers);
-    return steps;
-  }
-  ContinueArgs a;
-  const ContinuationSettings c = continuationOf(a, *s);
-  Continuation cont(modelAt(s->spec, c.parameter), s->integrators(), s->section,
-                    s->spec.modelParameters[c.parameter], s->guess, c);
-  try {
-    cont.run(control);
-  } catch (const ComputationError&) {
-    if (cont.points().empty()) throw; // else draw the family as far as it goes
-  }
-  for (const auto& p : cont.points())
-    steps.push_back(p.fixedPoint.multipliers);
-  return steps;
 }
 
 } // namespace rv

@@ -7,9 +7,9 @@
 #include "render/Snapshot.h"
 #include "render/VisualScene.h"
 #include "render/charts/PoincareChart.h"
-#include "render/charts/ToolCharts.h"
 #include "render/context/HeadlessContext.h"
 #include "render/video/VideoExport.h"
+#include "scenes/SceneCharts.h"
 
 #include <cmath>
 #include <fmt/core.h>
@@ -67,44 +67,18 @@ Command addChartCommand(CLI::App& app) {
   auto* cmd = app.add_subcommand("chart", "draw a view of a scene's tool output as a chart into a PNG");
   auto o = std::make_shared<ChartOptions>();
   addSceneArgs(cmd, o->scene);
-  cmd->add_option("--view", o->view,
-                  "poincare | multipliers (of the scene's fixed point along its continuation) | bifurcation "
-                  "(the problem's first diagram with the scene's point)")
+  cmd->add_option("--view", o->view, "what to draw: " + CLI::detail::join(chartViews(), " | "))
       ->capture_default_str()
-      ->check(CLI::IsMember({"poincare", "multipliers", "bifurcation"}));
+      ->check(CLI::IsMember(chartViews()));
   cmd->add_option("-o,--output", o->output, "PNG file")->required();
   cmd->add_option("--size", o->size, "picture size WIDTHxHEIGHT")->capture_default_str();
   cmd->add_option("--points", o->points, "Poincare points to compute (default: the scene's poincare.points)");
   return {cmd, [o] {
             const auto [w, h] = parseSize(o->size);
-            Scene scene = o->scene.load();
+            const Scene scene = o->scene.load();
             checkWritable(o->output, "-o");
             Progress progress(o->view);
-            const ToolControl control = interruptibleControl(progress);
-            std::unique_ptr<PoincareChart> chart;
-            if (o->view == "poincare") {
-              const auto map = scenePoincareMap(scene, o->points);
-              std::vector<double> x, y;
-              while (auto p = map->next(control)) {
-                x.push_back(p->coordinates.at(0));
-                y.push_back(p->coordinates.size() > 1 ? p->coordinates[1] : p->time);
-              }
-              const auto& names = map->coordinateNames();
-              chart = std::make_unique<PoincareChart>(names.at(0), names.size() > 1 ? names[1] : "t");
-              chart->addSeries(x, y, seriesColor(0));
-              chart->select(0);
-            } else if (o->view == "multipliers") {
-              chart = std::make_unique<PoincareChart>("Re", "Im");
-              drawMultipliers(*chart, sceneMultiplierPath(std::move(scene), control));
-            } else {
-              const auto diagrams = scene.model->diagrams();
-              if (diagrams.empty())
-                throw InputError("--view bifurcation: " + scene.model->info().id +
-                                 " has no bifurcation diagrams");
-              const Diagram& d = diagrams.front();
-              chart = std::make_unique<PoincareChart>(d.axes[0], d.axes[1]);
-              drawDiagram(*chart, d, {d.place(scene.initialState.data())});
-            }
+            const auto chart = sceneChart(scene, o->view, interruptibleControl(progress), o->points);
             auto ctx = createHeadlessContext(w, h);
             chart->attach(ctx->window());
             writePng(ctx->window(), o->output, "-o");

@@ -18,14 +18,6 @@ MapHolder::MapHolder(const MapTaskSpec& spec) : model_(spec.run.makeModel()) {
 }
 
 namespace {
-// the model at a value of a parameter, for continuation
-Continuation::ModelAt modelAt(const RunSpec& spec, const std::string& id) {
-  return [spec, id](double v) {
-    ParameterValues p = spec.modelParameters;
-    p.set(id, v, "continuation");
-    return spec.model->create(p);
-  };
-}
 IntegratorFactory integrators(const RunSpec& spec) {
   // makeIntegrator only asks the model whether it is a map: any model of the kind will do
   auto probe = std::shared_ptr<Model>(spec.makeModel());
@@ -78,7 +70,7 @@ void ContinuationTask::reset() {
   points_.clear();
   changes_.clear();
   continuation_ = std::make_unique<Continuation>(
-      modelAt(spec_.run, settings_.parameter), integrators(spec_.run), spec_.section,
+      spec_.run.modelAt(settings_.parameter), integrators(spec_.run), spec_.section,
       spec_.run.modelParameters[settings_.parameter], spec_.guess, settings_);
 }
 
@@ -119,7 +111,7 @@ bool BifurcationTreeTask::run(const ToolControl& control) {
   const std::string& id = settings_.continuation.parameter;
   try {
     bifurcationTree(
-        modelAt(spec_.run, id), integrators(spec_.run), spec_.section, spec_.run.modelParameters[id],
+        spec_.run.modelAt(id), integrators(spec_.run), spec_.section, spec_.run.modelParameters[id],
         spec_.guess, settings_, control,
         [this](const TreeBranch& b, const ContinuationPoint& p) {
           points_.push({b.level, b.order, p});

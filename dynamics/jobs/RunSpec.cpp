@@ -11,6 +11,14 @@ std::unique_ptr<Integrator> RunSpec::makeIntegrator(const Model& m) const {
   return integrator->create(integratorParameters);
 }
 
+std::function<std::unique_ptr<Model>(double)> RunSpec::modelAt(const std::string& id) const {
+  return [entry = model, values = modelParameters, id](double v) {
+    ParameterValues p = values;
+    p.set(id, v, "continuation of " + id);
+    return entry->create(p);
+  };
+}
+
 std::string RunSpec::describe() const {
   std::ostringstream os;
   const auto list = [&](const ParameterValues& p) {

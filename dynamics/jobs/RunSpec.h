@@ -5,6 +5,7 @@
 #include "dynamics/core/ModelRegistry.h"
 #include "dynamics/integrators/Integrator.h"
 
+#include <functional>
 #include <memory>
 
 namespace rv {
@@ -20,6 +21,8 @@ struct RunSpec {
   Eigen::VectorXd initialState;
 
   std::unique_ptr<Model> makeModel() const { return model->create(modelParameters); }
+  /// The model at values of one parameter (for continuation); InputError outside the parameter's range.
+  std::function<std::unique_ptr<Model>(double)> modelAt(const std::string& parameter) const;
   /// A fresh integrator of the method (MapIteration for explicit maps), not started.
   std::unique_ptr<Integrator> makeIntegrator(const Model& m) const;
   /// "method(step=..., ...) problem(energy=..., ...)".

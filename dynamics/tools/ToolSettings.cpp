@@ -239,6 +239,22 @@ const ParameterTable& gridTable() {
        .label = "Z of the 2D section",
        .defaultValue = 0,
        .description = "third coordinate of the plane of a 2D grid of a 3D map"},
+      {.id = "x_min",
+       .label = "X min",
+       .defaultValue = -1,
+       .description = "grid range of a chart (first coordinate)"},
+      {.id = "x_max",
+       .label = "X max",
+       .defaultValue = 1,
+       .description = "grid range of a chart (first coordinate)"},
+      {.id = "y_min",
+       .label = "Y min",
+       .defaultValue = -1,
+       .description = "grid range of a chart (second coordinate)"},
+      {.id = "y_max",
+       .label = "Y max",
+       .defaultValue = 1,
+       .description = "grid range of a chart (second coordinate)"},
   };
   return t;
 }

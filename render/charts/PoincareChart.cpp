@@ -1,13 +1,19 @@
 #include "render/charts/PoincareChart.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vtkAxis.h>
 #include <vtkChartXY.h>
+#include <vtkColorTransferFunction.h>
 #include <vtkContextScene.h>
 #include <vtkContextView.h>
 #include <vtkDoubleArray.h>
+#include <vtkImageData.h>
 #include <vtkPlot.h>
+#include <vtkPlotHistogram2D.h>
 #include <vtkPlotPoints.h>
+#include <vtkPointData.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkTable.h>
@@ -95,6 +101,33 @@ int PoincareChart::addCurve(const std::vector<double>& x, const std::vector<doub
   }
   flush();
   return first;
+}
+
+void PoincareChart::addImage(int nx, int ny, double x0, double dx, double y0, double dy,
+                             const std::vector<double>& values, const Rgb& low, const Rgb& high) {
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(nx, ny, 1);
+  image->SetOrigin(x0, y0, 0);
+  image->SetSpacing(dx, dy, 1);
+  vtkNew<vtkDoubleArray> scalars;
+  scalars->SetNumberOfValues(static_cast<vtkIdType>(nx) * ny);
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (std::size_t i = 0; i < values.size() && i < scalars->GetNumberOfValues(); ++i) {
+    scalars->SetValue(static_cast<vtkIdType>(i), values[i]);
+    if (std::isfinite(values[i])) lo = std::min(lo, values[i]), hi = std::max(hi, values[i]);
+  }
+  image->GetPointData()->SetScalars(scalars);
+  if (!(hi > lo)) hi = lo + 1;
+  vtkNew<vtkColorTransferFunction> colors;
+  colors->AddRGBPoint(lo, low[0], low[1], low[2]);
+  colors->AddRGBPoint(hi, high[0], high[1], high[2]);
+  colors->SetNanColor(1, 1, 1);
+  colors->SetNanOpacity(0);
+  vtkNew<vtkPlotHistogram2D> plot;
+  plot->SetInputData(image);
+  plot->SetTransferFunction(colors);
+  chart_->AddPlot(plot);
+  chart_->RecalculateBounds();
 }
 
 void PoincareChart::setRanges(double x0, double x1, double y0, double y1) {

@@ -76,4 +76,38 @@ void drawDiagram(PoincareChart& chart, const Diagram& d, const std::vector<Diagr
   }
 }
 
+void drawCurves(PoincareChart& chart, const std::vector<double>& x,
+                const std::vector<std::vector<double>>& ys, const std::vector<std::array<double, 2>>& marks) {
+  for (std::size_t k = 0; k < ys.size(); ++k)
+    chart.addCurve(x, ys[k], seriesColor(static_cast<int>(k)));
+  if (!marks.empty()) {
+    std::vector<double> mx, my;
+    for (const auto& m : marks)
+      mx.push_back(m[0]), my.push_back(m[1]);
+    const int i = chart.addSeries(mx, my, {0.85, 0.1, 0.1});
+    if (auto* p = vtkPlotPoints::SafeDownCast(chart.chart()->GetPlot(i))) p->SetMarkerSize(8);
+  }
+}
+
+Rgb typeColor(const std::string& type) {
+  if (type == "elliptic") return {0.12, 0.38, 0.85};
+  if (type == "hyperbolic") return {0.85, 0.2, 0.15};
+  if (type == "hyperbolic with reflection") return {0.95, 0.55, 0.1};
+  return {0.45, 0.45, 0.45};
+}
+
+void drawFamily(PoincareChart& chart, const std::vector<double>& parameter,
+                const std::vector<double>& coordinate, const std::vector<std::string>& types) {
+  std::vector<std::string> seen;
+  for (const auto& t : types)
+    if (std::find(seen.begin(), seen.end(), t) == seen.end()) seen.push_back(t);
+  for (const auto& t : seen) {
+    std::vector<double> x, y;
+    for (std::size_t i = 0; i < types.size(); ++i)
+      if (types[i] == t) x.push_back(parameter[i]), y.push_back(coordinate[i]);
+    const int k = chart.addSeries(x, y, typeColor(t));
+    if (auto* p = vtkPlotPoints::SafeDownCast(chart.chart()->GetPlot(k))) p->SetMarkerSize(5);
+  }
+}
+
 } // namespace rv

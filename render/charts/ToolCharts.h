@@ -6,7 +6,9 @@
 #include "dynamics/core/Diagram.h"
 #include "render/charts/PoincareChart.h"
 
+#include <array>
 #include <complex>
+#include <string>
 #include <vector>
 
 namespace rv {
@@ -18,5 +20,19 @@ void drawMultipliers(PoincareChart& chart, const std::vector<std::vector<std::co
 /// Every branch of `diagram` sampled over its default range, one colour per branch, and `states` (points of
 /// trajectories) as large black points.
 void drawDiagram(PoincareChart& chart, const Diagram& diagram, const std::vector<DiagramPoint>& states);
+
+/// One curve per series against a common abscissa (Lyapunov exponents against time, the spectrum), with
+/// optional marked points (peaks).
+void drawCurves(PoincareChart& chart, const std::vector<double>& x,
+                const std::vector<std::vector<double>>& ys,
+                const std::vector<std::array<double, 2>>& marks = {});
+
+/// A family of fixed points: parameter against a coordinate, one colour per type (elliptic blue, hyperbolic
+/// red, with reflection orange, others grey).
+void drawFamily(PoincareChart& chart, const std::vector<double>& parameter,
+                const std::vector<double>& coordinate, const std::vector<std::string>& types);
+
+/// The colour of a fixed point's type.
+Rgb typeColor(const std::string& type);
 
 } // namespace rv

@@ -6,6 +6,7 @@
 #include "render/context/HeadlessContext.h"
 #include "render/objects/ContactTraceObject.h"
 #include "render/video/VideoExport.h"
+#include "scenes/SceneCharts.h"
 #include "scenes/SceneLoader.h"
 #include "tests/render/ImageCompare.h"
 
@@ -107,6 +108,55 @@ TEST(Render, TraceGrowsAlongTheMotion) {
   EXPECT_GT(trace->points(), 100);
   visual.clear();
   EXPECT_EQ(trace->points(), 0);
+}
+
+// every chart view, on a scene where it is quick and meaningful, against its baseline
+struct ChartCase {
+  std::string view, scene;
+  std::vector<std::string> sets;
+};
+
+class ChartView : public ::testing::TestWithParam<ChartCase> {};
+
+TEST_P(ChartView, MatchesItsBaseline) {
+  const ChartCase& c = GetParam();
+  std::vector<SceneOverride> overrides;
+  for (const auto& s : c.sets)
+    overrides.push_back(parseOverride(s));
+  const Scene scene = loadScene(defaultScenePath(c.scene), overrides);
+  const auto chart = sceneChart(scene, c.view, {});
+  auto ctx = createHeadlessContext(480, 480);
+  chart->attach(ctx->window());
+  ctx->window()->Render();
+  const Image img = capture(ctx->window());
+  ASSERT_TRUE(test::isVaried(img)) << c.view;
+  EXPECT_EQ(test::matchesBaseline(img, "chart_" + c.view), "");
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Views, ChartView,
+    ::testing::Values(ChartCase{"poincare", "standard_map", {"poincare.points=3000"}},
+                      ChartCase{"multipliers", "chaplygin_ball", {}},
+                      ChartCase{"bifurcation", "chaplygin_ball", {}},
+                      ChartCase{"continuation",
+                                "henon_map",
+                                {"b=-1", "a=2", "fixedpoint.guess=[0.4,-0.4]", "continuation.parameter=a",
+                                 "continuation.to=4", "continuation.step=0.05"}},
+                      ChartCase{"spectrum",
+                                "henon_heiles",
+                                {"spectrum.function=x", "integrator.method=rk4", "integrator.step=0.01"}},
+                      ChartCase{"lyapunov", "lorenz", {"lyapunov.time=100", "lyapunov.output_period=2"}},
+                      ChartCase{"surface",
+                                "henon_map",
+                                {"grid.x_min=-1.5", "grid.x_max=1.5", "grid.y_min=-0.5", "grid.y_max=0.5"}},
+                      ChartCase{"ram",
+                                "henon_heiles",
+                                {"grid.x_min=-0.5", "grid.x_max=0.7", "grid.y_min=-0.5", "grid.y_max=0.5",
+                                 "grid.step_x=0.01", "grid.step_y=0.01"}}),
+    [](const auto& info) { return info.param.view; });
+
+TEST(Render, ChartViewsListIsComplete) {
+  EXPECT_EQ(chartViews().size(), 8u); // each has a baseline case above
 }
 
 } // namespace

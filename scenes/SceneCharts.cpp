@@ -1,0 +1,153 @@
+#include "scenes/SceneCharts.h"
+
+#include "dynamics/core/Errors.h"
+#include "dynamics/tools/FourierSpectrum.h"
+#include "dynamics/tools/Lyapunov.h"
+#include "render/charts/ToolCharts.h"
+#include "scenes/SceneLoader.h"
+#include "scenes/SceneTools.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rv {
+
+const std::vector<std::string>& chartViews() {
+  static const std::vector<std::string> v{"poincare", "multipliers", "bifurcation", "continuation",
+                                          "spectrum", "lyapunov",    "surface",     "ram"};
+  return v;
+}
+
+namespace {
+
+// a scene is copied by reloading its document (a Scene owns its model)
+Scene copyOf(const Scene& s) {
+  return sceneFromJson(s.document, s.source);
+}
+
+std::unique_ptr<PoincareChart> gridChart(const Scene& scene, MapGrid::Kind kind, const ToolControl& control) {
+  const SceneMap sm(copyOf(scene), {}, false);
+  const ParameterValues& gv = scene.tool("grid");
+  GridSettings g = gridSettings(gv);
+  g.threeD = false; // a chart is a plane (the 2D section of a 3D map)
+  g.axes[0].min = gv["x_min"], g.axes[0].max = gv["x_max"];
+  g.axes[1].min = gv["y_min"], g.axes[1].max = gv["y_max"];
+  const ReturnMap map = sm.map();
+  MapGrid grid(map, kind, g);
+  grid.run(control);
+  const auto& names = map.coordinateNames();
+  auto chart = std::make_unique<PoincareChart>(names[0], names[1]);
+  const GridValues& r = grid.result();
+  if (kind == MapGrid::Kind::Surface) {
+    // log10 of the distance: the zeros (fixed points) show as the darkest spots
+    std::vector<double> z(r.values.size());
+    for (std::size_t i = 0; i < z.size(); ++i)
+      z[i] = std::log10(std::max(r.values[i], 1e-16));
+    chart->addImage(r.size[0], r.size[1], g.axes[0].min, g.axes[0].step, g.axes[1].min, g.axes[1].step, z,
+                    {0.05, 0.05, 0.35}, {1.0, 0.95, 0.6});
+  } else {
+    chart->addImage(r.size[0], r.size[1], g.axes[0].min, g.axes[0].step, g.axes[1].min, g.axes[1].step,
+                    r.values, {0.85, 0.85, 0.85}, {0.2, 0.55, 0.3});
+  }
+  chart->setRanges(g.axes[0].min, g.axes[0].max, g.axes[1].min, g.axes[1].max);
+  return chart;
+}
+
+} // namespace
+
+std::unique_ptr<PoincareChart> sceneChart(const Scene& scene, const std::string& view,
+                                          const ToolControl& control, long points) {
+  std::unique_ptr<PoincareChart> chart;
+  if (view == "poincare") {
+    const auto map = scenePoincareMap(scene, points);
+    std::vector<double> x, y;
+    while (auto p = map->next(control)) {
+      x.push_back(p->coordinates.at(0));
+      y.push_back(p->coordinates.size() > 1 ? p->coordinates[1] : p->time);
+    }
+    const auto& names = map->coordinateNames();
+    chart = std::make_unique<PoincareChart>(names.at(0), names.size() > 1 ? names[1] : "t");
+    chart->addSeries(x, y, seriesColor(0));
+    chart->select(0);
+  } else if (view == "multipliers") {
+    chart = std::make_unique<PoincareChart>("Re", "Im");
+    drawMultipliers(*chart, multiplierPath(SceneMap(copyOf(scene)), control));
+  } else if (view == "bifurcation") {
+    const auto diagrams = scene.model->diagrams();
+    if (diagrams.empty())
+      throw InputError("--view bifurcation: " + scene.model->info().id + " has no bifurcation diagrams");
+    const Diagram& d = diagrams.front();
+    chart = std::make_unique<PoincareChart>(d.axes[0], d.axes[1]);
+    drawDiagram(*chart, d, {d.place(scene.initialState.data())});
+  } else if (view == "continuation") {
+    const SceneMap sm(copyOf(scene));
+    const auto cont = sm.continuationRun();
+    try {
+      cont->run(control);
+    } catch (const ComputationError&) {
+      if (cont->points().empty()) throw;
+    }
+    // against the coordinate that moves most along the family
+    const auto& pts = cont->points();
+    int best = 0;
+    double spread = -1;
+    for (int k = 0; k < static_cast<int>(pts.front().fixedPoint.point.size()); ++k) {
+      double lo = 1e300, hi = -1e300;
+      for (const auto& c : pts)
+        lo = std::min(lo, c.fixedPoint.point[k]), hi = std::max(hi, c.fixedPoint.point[k]);
+      if (hi - lo > spread) spread = hi - lo, best = k;
+    }
+    std::vector<double> p, x;
+    std::vector<std::string> types;
+    for (const auto& c : pts)
+      p.push_back(c.parameter), x.push_back(c.fixedPoint.point[best]), types.push_back(c.fixedPoint.type);
+    chart = std::make_unique<PoincareChart>(cont->settings().parameter, sm.map().coordinateNames()[best]);
+    drawFamily(*chart, p, x, types);
+  } else if (view == "spectrum") {
+    if (scene.spectrum.function.empty())
+      throw InputError("--view spectrum: the scene has no spectrum.function");
+    auto integ = scene.startIntegrator();
+    const SpectrumResult r =
+        fourierSpectrum(*scene.model, *integ, scene.model->isMap() || scene.integratorEntry->fixedStep,
+                        scene.spectrum, control);
+    std::vector<std::array<double, 2>> peaks;
+    for (const auto& pk : r.peaks)
+      peaks.push_back({pk.frequency, pk.amplitude});
+    chart = std::make_unique<PoincareChart>("frequency", "amplitude of " + scene.spectrum.function);
+    drawCurves(*chart, r.frequency, {r.amplitude}, peaks);
+    // up to a little past the highest peak: the rest of a smooth signal's spectrum is flat
+    double top = 0, amax = 0;
+    for (const auto& pk : r.peaks)
+      top = std::max(top, pk.frequency), amax = std::max(amax, pk.amplitude);
+    if (top > 0 && !r.frequency.empty() && 2 * top < r.frequency.back())
+      chart->setRanges(0, 2 * top, 0, 1.05 * amax);
+  } else if (view == "lyapunov") {
+    const RunSpec spec = scene.runSpec();
+    const Model& model = *scene.model;
+    std::vector<double> t;
+    std::vector<std::vector<double>> ex;
+    lyapunovExponents(
+        model, [&] { return spec.makeIntegrator(model); }, scene.initialState, scene.lyapunov,
+        [&](const LyapunovEstimate& e) {
+          t.push_back(e.time);
+          ex.resize(e.exponents.size());
+          for (std::size_t i = 0; i < e.exponents.size(); ++i)
+            ex[i].push_back(e.exponents[i]);
+        },
+        control);
+    chart = std::make_unique<PoincareChart>("t", "Lyapunov exponents");
+    drawCurves(*chart, t, ex);
+  } else if (view == "surface") {
+    chart = gridChart(scene, MapGrid::Kind::Surface, control);
+  } else if (view == "ram") {
+    chart = gridChart(scene, MapGrid::Kind::AllowedRegion, control);
+  } else {
+    std::string known;
+    for (const auto& v : chartViews())
+      known += " " + v;
+    throw InputError("--view " + view + ": unknown (views:" + known + ")");
+  }
+  return chart;
+}
+
+} // namespace rv

@@ -1,0 +1,24 @@
+// SceneCharts.h -- every chart view of a scene (manual §2.4.1-§2.4.4), computed and drawn: the Poincare map,
+// the multipliers of the continued fixed point, the bifurcation diagram, the continuation family, the
+// Fourier spectrum, the Lyapunov exponents against time, the |Map(x) - x| surface and the region of allowed
+// motion. One definition for `rollviz chart`, the image tests and the GUI.
+#pragma once
+#include "render/charts/PoincareChart.h"
+#include "scenes/Scene.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace rv {
+
+/// The view names, in menu order.
+const std::vector<std::string>& chartViews();
+
+/// Computes what `view` shows for the scene and draws it. `points` > 0 overrides poincare.points. Throws
+/// InputError for an unknown view or one the problem does not have; Stopped results are drawn as far as they
+/// got.
+std::unique_ptr<PoincareChart> sceneChart(const Scene& scene, const std::string& view,
+                                          const ToolControl& control, long points = 0);
+
+} // namespace rv
