@@ -1,6 +1,7 @@
 #include "scenes/SceneCharts.h"
 
 #include "dynamics/core/Errors.h"
+#include "dynamics/tools/FixedPoint.h"
 #include "dynamics/tools/FourierSpectrum.h"
 #include "dynamics/tools/Lyapunov.h"
 #include "render/charts/ToolCharts.h"
@@ -48,6 +49,19 @@ std::unique_ptr<PoincareChart> gridChart(const Scene& scene, MapGrid::Kind kind,
   } else {
     chart->addImage(r.size[0], r.size[1], g.axes[0].min, g.axes[0].step, g.axes[1].min, g.axes[1].step,
                     r.values, {0.85, 0.85, 0.85}, {0.2, 0.55, 0.3});
+  }
+  // the search path of the scene's fixed point on the surface (the manual's "show point on the surface")
+  if (kind == MapGrid::Kind::Surface && !scene.guess.empty()) {
+    std::vector<double> px, py;
+    try {
+      findFixedPoint(map, sm.guess(), sm.search(), control,
+                     [&](const SearchPoint& p) { px.push_back(p.point[0]), py.push_back(p.point[1]); });
+    } catch (const ComputationError&) { // a failed search is still worth seeing
+    } catch (const Stopped&) {
+    }
+    chart->addCurve(px, py, {0.9, 0.1, 0.1}, 1.5);
+    const int k = chart->addSeries(px, py, {0.9, 0.1, 0.1});
+    chart->select(k);
   }
   chart->setRanges(g.axes[0].min, g.axes[0].max, g.axes[1].min, g.axes[1].max);
   return chart;
