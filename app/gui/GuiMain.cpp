@@ -53,8 +53,10 @@ int runGui(int argc, char** argv, const GuiOptions& options) {
           !window.grab().save(QString::fromStdString(options.screenshot), "PNG"))
         std::fprintf(stderr, "rollviz: cannot write %s\n", options.screenshot.c_str());
       // a summary for scripted runs and tests
-      std::printf("shown t = %.6g, map trajectories = %d, map points = %ld\n", window.shownTime(),
-                  window.mapPanel()->trajectories(), window.mapPanel()->points());
+      std::printf(
+          "shown t = %.6g, map trajectories = %d, map points = %ld, fixed point searches = %d, found = %d\n",
+          window.shownTime(), window.mapPanel()->trajectories(), window.mapPanel()->points(),
+          window.mapPanel()->searches(), window.mapPanel()->fixedPointsFound());
       std::fflush(stdout);
       app.quit();
     });

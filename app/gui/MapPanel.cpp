@@ -3,6 +3,8 @@
 #include "app/gui/QtVtkWidget.h"
 #include "dynamics/core/Errors.h"
 #include "dynamics/jobs/PoincareTask.h"
+#include "scenes/SceneLoader.h"
+#include "scenes/SceneTools.h"
 
 #include <QMouseEvent>
 #include <QVBoxLayout>
@@ -15,7 +17,8 @@ MapPanel::MapPanel(QWidget* parent) : QWidget(parent) {
   layout->setContentsMargins(0, 0, 0, 0);
   layout->addWidget(view_);
   view_->installEventFilter(this);
-  view_->setToolTip("Ctrl+click: start a trajectory at this point of the map");
+  view_->setToolTip("Ctrl+click: start a trajectory at this point of the map\n"
+                    "Shift+click: search a fixed point of the map from this point");
   setMinimumSize(320, 320);
 }
 
@@ -26,6 +29,7 @@ MapPanel::~MapPanel() {
 void MapPanel::setScene(const Scene& scene) {
   jobs_.removeAll();
   series_.clear();
+  searches_.clear();
   scene_ = &scene;
   const auto names = PoincareMap(*scene.model, scene.startIntegrator(), scene.poincare).coordinateNames();
   chart_ = std::make_unique<PoincareChart>(names.at(0), names.size() > 1 ? names[1] : "t");
@@ -45,19 +49,23 @@ void MapPanel::start(const Eigen::VectorXd& state) {
   job.start();
 }
 
+std::vector<double> MapPanel::mapPoint(double x, double y) const {
+  std::vector<double> point{x, y};
+  if (scene_->model->info().mapCoordinates.size() == 3) { // a 3D map: Z from the scene's initial point
+    const auto& doc = scene_->document;
+    const bool hasZ =
+        doc.contains("initial") && doc["initial"].contains("map") && doc["initial"]["map"].size() == 3;
+    point.push_back(hasZ ? doc["initial"]["map"][2].get<double>() : 0.0);
+  }
+  return point;
+}
+
 bool MapPanel::startAt(double x, double y) {
   if (!scene_) return false;
   try {
     const MapPointSpec spec{.sectionValue = scene_->poincare.value,
                             .root = std::max(1, scene_->poincare.root)};
-    std::vector<double> point{x, y};
-    if (scene_->model->info().mapCoordinates.size() == 3) { // a 3D map: Z from the scene's initial point
-      const auto& doc = scene_->document;
-      const bool hasZ =
-          doc.contains("initial") && doc["initial"].contains("map") && doc["initial"]["map"].size() == 3;
-      point.push_back(hasZ ? doc["initial"]["map"][2].get<double>() : 0.0);
-    }
-    start(scene_->model->stateFromMap(point, spec, "map point"));
+    start(scene_->model->stateFromMap(mapPoint(x, y), spec, "map point"));
     emit message(QString("trajectory %1 started at (%2, %3)").arg(series_.size()).arg(x).arg(y));
     return true;
   } catch (const InputError& e) {
@@ -66,8 +74,62 @@ bool MapPanel::startAt(double x, double y) {
   }
 }
 
+void MapPanel::searchFixedPointAt(double x, double y) {
+  if (!scene_ || scene_->model->info().mapCoordinates.empty()) return;
+  try {
+    MapToolOverrides o;
+    o.guess = mapPoint(x, y);
+    const SceneMap sm(sceneFromJson(scene_->document, scene_->source), o);
+    auto task = std::make_unique<FixedPointTask>(sm.taskSpec());
+    FixedPointTask* raw = task.get();
+    Job& job = jobs_.add(std::move(task));
+    const Rgb red{0.9, 0.1, 0.1};
+    const int path = chart_->addCurve({x, x}, {y, y}, red, 1.5);
+    const int point = chart_->addSeries({}, {}, red);
+    searches_.push_back({&job, raw, {}, {}, path, point});
+    job.start();
+    emit message(
+        QString("searching a fixed point of order %1 from (%2, %3)").arg(sm.section().order).arg(x).arg(y));
+  } catch (const InputError& e) {
+    emit message(QString::fromStdString(e.what()));
+  }
+}
+
+int MapPanel::fixedPointsFound() const {
+  int n = 0;
+  for (const auto& s : searches_)
+    n += s.task->result().has_value();
+  return n;
+}
+
 void MapPanel::drain() {
   bool changed = false;
+  std::vector<SearchPoint> steps;
+  for (auto& s : searches_) {
+    if (s.task->path().take(steps) > 0) {
+      for (const auto& p : steps)
+        s.x.push_back(p.point[0]), s.y.push_back(p.point[1]);
+      if (s.path >= 0 && s.x.size() >= 2) chart_->setSeries(s.path, s.x, s.y); // a line needs two points
+      chart_->setSeries(s.point, s.x, s.y);
+      changed = true;
+    }
+    if (s.reported || s.job->running()) continue;
+    s.reported = true;
+    if (const auto r = s.task->result()) {
+      QString m = QString("fixed point (");
+      for (Eigen::Index i = 0; i < r->point.size(); ++i)
+        m += QString(i ? ", %1" : "%1").arg(r->point[i], 0, 'g', 12);
+      m += QString("): %1; multipliers").arg(QString::fromStdString(r->type));
+      for (auto z : r->multipliers)
+        m += QString(" %1%2%3i")
+                 .arg(z.real(), 0, 'g', 6)
+                 .arg(z.imag() < 0 ? "" : "+")
+                 .arg(z.imag(), 0, 'g', 6);
+      emit message(m);
+    } else if (s.job->status() == Job::Status::Failed) {
+      emit message(QString::fromStdString("fixed point: " + s.job->error()));
+    }
+  }
   std::vector<MapPoint> batch;
   for (auto& s : series_) {
     if (s.task->points().take(batch) == 0) continue;
@@ -95,11 +157,16 @@ long MapPanel::points() const {
 bool MapPanel::eventFilter(QObject* watched, QEvent* event) {
   if (watched == view_ && event->type() == QEvent::MouseButtonPress && chart_) {
     auto* e = static_cast<QMouseEvent*>(event);
-    if (e->button() == Qt::LeftButton && (e->modifiers() & Qt::ControlModifier)) {
+    const bool ctrl = e->modifiers() & Qt::ControlModifier, shift = e->modifiers() & Qt::ShiftModifier;
+    if (e->button() == Qt::LeftButton && (ctrl || shift)) {
       const double dpr = view_->devicePixelRatioF();
       double x, y;
-      if (chart_->toChart(e->position().x() * dpr, (view_->height() - e->position().y()) * dpr, x, y))
-        startAt(x, y);
+      if (chart_->toChart(e->position().x() * dpr, (view_->height() - e->position().y()) * dpr, x, y)) {
+        if (ctrl)
+          startAt(x, y);
+        else
+          searchFixedPointAt(x, y);
+      }
       return true; // not a pan or zoom of the chart
     }
   }

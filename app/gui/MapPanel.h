@@ -1,6 +1,8 @@
 // MapPanel.h -- the map window (manual §2.1, Fig. 3): the Poincare map of the scene as a chart, fed by one
 // Poincare job per trajectory. Ctrl+click on the map starts a new trajectory there (the point is completed
-// through the scene's energy and other integrals). The jobs run on their own threads; this panel only draws.
+// through the scene's energy and other integrals); Shift+click searches a fixed point of the map from there
+// (manual §2.3.4: the search path is drawn, the point, its multipliers and type reported). The jobs run on
+// their own threads; this panel only draws.
 #pragma once
 #include "dynamics/jobs/JobTree.h"
 #include "render/charts/PoincareChart.h"
@@ -14,6 +16,7 @@ namespace rv {
 
 class QtVtkWidget;
 class PoincareTask;
+class FixedPointTask;
 
 class MapPanel : public QWidget {
   Q_OBJECT
@@ -25,11 +28,16 @@ public:
   void setScene(const Scene& scene);
   /// Starts a trajectory at map coordinates (x, y); false (with a message) when there is no state there.
   bool startAt(double x, double y);
+  /// Starts a fixed-point search (the scene's fixedpoint settings) from map coordinates (x, y).
+  void searchFixedPointAt(double x, double y);
   /// Takes the points computed since the last call and redraws; called by the window's frame timer.
   void drain();
   void stopAll();
   long points() const;
   int trajectories() const { return static_cast<int>(series_.size()); }
+  /// Fixed-point searches started, and how many found a point.
+  int searches() const { return static_cast<int>(searches_.size()); }
+  int fixedPointsFound() const;
   QtVtkWidget* view() const { return view_; }
 
 signals:
@@ -45,7 +53,16 @@ private:
     std::vector<double> x, y;
     int plot;
   };
+  struct Search {
+    Job* job;
+    FixedPointTask* task;
+    std::vector<double> x, y;
+    int path, point;
+    bool reported = false;
+  };
   void start(const Eigen::VectorXd& state);
+  std::vector<double> mapPoint(double x, double y) const;
+  std::vector<Search> searches_;
   QtVtkWidget* view_;
   std::unique_ptr<PoincareChart> chart_;
   const Scene* scene_ = nullptr;

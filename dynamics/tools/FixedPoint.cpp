@@ -107,7 +107,8 @@ FixedPointResult findFixedPoint(const ReturnMap& map, const Eigen::VectorXd& gue
         x = y, residual = ry;
         record(x, residual);
       }
-      r.point = map.canonical(x);
+      // angles in the range the map itself gives them (l in (-pi, pi], theta in [0, 2 pi), ...)
+      r.point = map.alignTo(x, lin.image);
       r.residual = residual;
       r.iterations = it;
       r.jacobian = lin.jacobian;

@@ -79,6 +79,13 @@ Eigen::VectorXd ReturnMap::canonical(const Eigen::VectorXd& x) const {
   return c;
 }
 
+Eigen::VectorXd ReturnMap::alignTo(const Eigen::VectorXd& x, const Eigen::VectorXd& reference) const {
+  Eigen::VectorXd a = x;
+  for (int i = 0; i < dimension(); ++i)
+    if (periodic_[i]) a[i] -= twoPi * std::round((x[i] - reference[i]) / twoPi);
+  return a;
+}
+
 Eigen::VectorXd ReturnMap::stateOf(const Eigen::VectorXd& x) const {
   if (!x.allFinite()) throw ComputationError("the map point " + pointText(x) + " is not finite");
   const std::vector<double> p(x.data(), x.data() + x.size());

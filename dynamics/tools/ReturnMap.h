@@ -65,6 +65,8 @@ public:
   Eigen::VectorXd difference(const Eigen::VectorXd& a, const Eigen::VectorXd& b) const;
   /// x with angular components reduced to [0, 2 pi) (or to the model's own range for maps).
   Eigen::VectorXd canonical(const Eigen::VectorXd& x) const;
+  /// x with each angular component moved by a multiple of 2 pi to lie nearest to `reference`'s.
+  Eigen::VectorXd alignTo(const Eigen::VectorXd& x, const Eigen::VectorXd& reference) const;
   /// Whether x has a state (lies in the region of allowed motion).
   bool allowed(const Eigen::VectorXd& x) const;
   /// The full state a point is completed into (the point itself for explicit maps); ComputationError if none.

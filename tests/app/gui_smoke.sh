@@ -1,6 +1,7 @@
 #!/bin/bash
 # GUI smoke test under Xvfb: the window opens on the default scene and simulates; a real X Ctrl+click (xdotool) on
-# the Poincare map starts a second trajectory whose points arrive; a screenshot of the window is a real picture.
+# the Poincare map starts a second trajectory whose points arrive, a Shift+click a fixed-point search; a screenshot
+# of the window is a real picture.
 # Usage: gui_smoke.sh ROLLVIZ SRC ARTIFACT_DIR
 set -euo pipefail
 RV=$1 SRC=$2 OUT=$3
@@ -15,12 +16,16 @@ pid=\$!
 sleep 2.5
 # the window sits at the top left with no window manager; the map dock fills its right part
 xdotool mousemove 1200 300 keydown ctrl click 1 keyup ctrl
+sleep 0.3
+# Shift+click: a fixed-point search from that point of the map (a job; it may find a point or fail: both end)
+xdotool mousemove 1250 400 keydown shift click 1 keyup shift
 wait \$pid
 SH
 xvfb-run -a -s '-screen 0 1600x1000x24' bash "$OUT/gui_smoke_session.sh"
 [ -f "$shot" ] || { echo "no screenshot written"; exit 1; }
 cat "$summary"
 grep -q "map trajectories = 2" "$summary" || { echo "the click on the map did not start a trajectory"; exit 1; }
+grep -q "fixed point searches = 1" "$summary" || { echo "the Shift+click did not start a fixed-point search"; exit 1; }
 /usr/bin/python3 - "$shot" <<'PY'
 import sys
 from PIL import Image

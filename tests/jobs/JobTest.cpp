@@ -79,11 +79,11 @@ TEST(Job, EditTheEnergyAndContinueGivesPointsAtTheNewEnergy) {
   const auto model = poincare->spec().makeModel();
   const Eigen::VectorXd x = poincare->lastState();
   EXPECT_NEAR(model->integrals(x.data())[0], 0.15, 1e-10) << "the trajectory goes on at the new energy";
-  // an energy at which the last point has no state: the edit is refused and nothing changes
+  // an energy at which the last point has no state (E = 0: only the origin): the edit is refused, nothing changes
   EXPECT_THROW(job.edit([](Task& t) {
     auto& p = static_cast<PoincareTask&>(t);
     RunSpec s = p.spec();
-    s.modelParameters.set("energy", 1e-4);
+    s.modelParameters.set("energy", 0.0);
     p.edit(s, p.settings());
   }),
                InputError);
