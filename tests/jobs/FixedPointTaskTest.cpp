@@ -4,6 +4,7 @@
 #include "dynamics/jobs/FixedPointTasks.h"
 #include "dynamics/jobs/JobTree.h"
 
+#include "tests/jobs/WaitFor.h"
 #include <chrono>
 #include <cmath>
 #include <gtest/gtest.h>
@@ -14,14 +15,7 @@ namespace {
 
 using namespace std::chrono_literals;
 
-template <class F> bool waitFor(F done, std::chrono::milliseconds limit = 30000ms) {
-  const auto end = std::chrono::steady_clock::now() + limit;
-  while (!done()) {
-    if (std::chrono::steady_clock::now() > end) return false;
-    std::this_thread::sleep_for(1ms);
-  }
-  return true;
-}
+using test::waitFor;
 
 MapTaskSpec spec(const char* model, std::initializer_list<std::pair<const char*, double>> params,
                  Eigen::VectorXd guess) {

@@ -7,6 +7,7 @@
 #include "dynamics/jobs/PoincareTask.h"
 #include "dynamics/jobs/SpectrumTask.h"
 
+#include "tests/jobs/WaitFor.h"
 #include <chrono>
 #include <gtest/gtest.h>
 #include <random>
@@ -25,14 +26,7 @@ RunSpec henonHeiles(double energy = 0.125) {
   return s;
 }
 
-template <class F> bool waitFor(F done, std::chrono::milliseconds limit = 20000ms) {
-  const auto end = std::chrono::steady_clock::now() + limit;
-  while (!done()) {
-    if (std::chrono::steady_clock::now() > end) return false;
-    std::this_thread::sleep_for(1ms);
-  }
-  return true;
-}
+using test::waitFor;
 
 TEST(Job, RunsStopsPromptlyAndContinuesWhereItStopped) {
   JobTree tree;
@@ -79,7 +73,8 @@ TEST(Job, EditTheEnergyAndContinueGivesPointsAtTheNewEnergy) {
   const auto model = poincare->spec().makeModel();
   const Eigen::VectorXd x = poincare->lastState();
   EXPECT_NEAR(model->integrals(x.data())[0], 0.15, 1e-10) << "the trajectory goes on at the new energy";
-  // an energy at which the last point has no state (E = 0: only the origin): the edit is refused, nothing changes
+  // an energy at which the last point has no state (E = 0: only the origin): the edit is refused, nothing
+  // changes
   EXPECT_THROW(job.edit([](Task& t) {
     auto& p = static_cast<PoincareTask&>(t);
     RunSpec s = p.spec();
