@@ -1,5 +1,6 @@
 #include "app/gui/MainWindow.h"
 
+#include "app/gui/ControlPanel.h"
 #include "app/gui/MapPanel.h"
 #include "app/gui/QtVtkWidget.h"
 #include "dynamics/core/Errors.h"
@@ -27,6 +28,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   dock->setObjectName("map");
   dock->setWidget(map_);
   addDockWidget(Qt::RightDockWidgetArea, dock);
+  control_ = new ControlPanel(this);
+  auto* controlDock = new QDockWidget("Control panel", this);
+  controlDock->setObjectName("control");
+  controlDock->setWidget(control_);
+  addDockWidget(Qt::LeftDockWidgetArea, controlDock);
+  connect(control_, &ControlPanel::apply, this, [this](const nlohmann::json& doc) { runDocument(doc); });
   resize(1400, 800);
 
   auto* bar = addToolBar("Playback");
@@ -75,6 +82,24 @@ bool MainWindow::openScene(const QString& path) {
     QMessageBox::warning(this, "rollviz", QString("Cannot open the scene:\n%1").arg(e.what()));
     return false;
   }
+  QSettings().setValue("lastScene", QFileInfo(path).absoluteFilePath());
+  useScene(std::move(scene), path);
+  return true;
+}
+
+bool MainWindow::runDocument(const nlohmann::json& document) {
+  std::unique_ptr<Scene> scene;
+  try {
+    scene = std::make_unique<Scene>(sceneFromJson(document, scene_ ? scene_->source : "edited scene"));
+  } catch (const std::exception& e) {
+    QMessageBox::warning(this, "rollviz", QString("Cannot run these values:\n%1").arg(e.what()));
+    return false;
+  }
+  useScene(std::move(scene), scenePath_);
+  return true;
+}
+
+void MainWindow::useScene(std::unique_ptr<Scene> scene, const QString& path) {
   stream_.reset();
   map_->stopAll(); // its jobs hold the old scene's model until setScene replaces them
   if (visual_) view_->renderWindow()->RemoveRenderer(visual_->renderer());
@@ -82,12 +107,11 @@ bool MainWindow::openScene(const QString& path) {
   scene_ = std::move(scene);
   scenePath_ = path;
   speedBox_->setValue(scene_->view.speed);
-  QSettings().setValue("lastScene", QFileInfo(path).absoluteFilePath());
   setWindowTitle(QString("rollviz — %1 (%2)")
                      .arg(QFileInfo(path).fileName(), QString::fromStdString(scene_->model->info().id)));
   map_->setScene(*scene_);
+  control_->setScene(*scene_);
   restart();
-  return true;
 }
 
 void MainWindow::restart() {

@@ -5,6 +5,8 @@
 #include "render/VisualScene.h"
 #include "scenes/Scene.h"
 
+#include <nlohmann/json.hpp>
+
 #include <QElapsedTimer>
 #include <QMainWindow>
 #include <QTimer>
@@ -18,6 +20,7 @@ namespace rv {
 
 class QtVtkWidget;
 class MapPanel;
+class ControlPanel;
 
 class MainWindow : public QMainWindow {
   Q_OBJECT
@@ -26,10 +29,14 @@ public:
   ~MainWindow() override;
   /// Loads a scene file and starts it; on failure shows why and keeps the current scene.
   bool openScene(const QString& path);
+  /// Runs a scene document (the control panel's edits); on failure shows why and keeps the current scene.
+  bool runDocument(const nlohmann::json& document);
   /// Simulation time shown in the last frame.
   double shownTime() const { return shownTime_; }
   QtVtkWidget* view() const { return view_; }
   MapPanel* mapPanel() const { return map_; }
+  ControlPanel* controlPanel() const { return control_; }
+  const Scene* scene() const { return scene_.get(); }
 
 public slots:
   void togglePlay();
@@ -40,8 +47,11 @@ public slots:
 private:
   void tick();
   void showStatus();
+  /// Replaces the running scene (from `source`, a file or "edited").
+  void useScene(std::unique_ptr<Scene> scene, const QString& source);
   QtVtkWidget* view_;
   MapPanel* map_;
+  ControlPanel* control_;
   QAction* playAction_;
   QDoubleSpinBox* speedBox_;
   QLabel* status_;

@@ -1,0 +1,37 @@
+// ParameterForm.h -- a form generated from a parameter table (design.md: parameters declared once generate
+// GUI, CLI and scene keys): a spin box per number (its range, a whole-number box for integers), a combo box
+// per choice, the manual's label and the description as tooltip.
+#pragma once
+#include "dynamics/core/ParameterTable.h"
+
+#include <QWidget>
+#include <vector>
+
+namespace rv {
+
+class ParameterForm : public QWidget {
+  Q_OBJECT
+public:
+  ParameterForm(const ParameterTable& table, QWidget* parent = nullptr);
+  /// Shows these values (of the same table).
+  void setValues(const ParameterValues& values);
+  /// The values as edited.
+  ParameterValues values() const;
+  const ParameterTable& table() const { return table_; }
+  /// The ids of the parameters the user changed since setValues.
+  std::vector<std::string> touched() const;
+  /// The editor of parameter `id` (for tests), or nullptr.
+  QWidget* editor(const std::string& id) const;
+
+signals:
+  void edited();
+
+private:
+  void touch(std::size_t i);
+  const ParameterTable& table_;
+  bool blocked_ = false;
+  std::vector<QWidget*> editors_;
+  std::vector<bool> touched_;
+};
+
+} // namespace rv
