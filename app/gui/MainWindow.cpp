@@ -3,6 +3,7 @@
 #include "app/gui/ControlPanel.h"
 #include "app/gui/MapPanel.h"
 #include "app/gui/QtVtkWidget.h"
+#include "app/gui/ToolManager.h"
 #include "dynamics/core/Errors.h"
 #include "scenes/SceneLoader.h"
 
@@ -33,6 +34,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   controlDock->setObjectName("control");
   controlDock->setWidget(control_);
   addDockWidget(Qt::LeftDockWidgetArea, controlDock);
+  tools_ = new ToolManager(
+      map_->jobs(), [this](Job& j) { map_->removeJob(j); }, this);
+  auto* toolsDock = new QDockWidget("Tool manager", this);
+  toolsDock->setObjectName("tools");
+  toolsDock->setWidget(tools_);
+  addDockWidget(Qt::BottomDockWidgetArea, toolsDock);
+  resizeDocks({toolsDock}, {150}, Qt::Vertical); // the 3D view keeps most of the height
   connect(control_, &ControlPanel::apply, this, [this](const nlohmann::json& doc) { runDocument(doc); });
   resize(1400, 800);
 

@@ -21,6 +21,7 @@ namespace rv {
 class QtVtkWidget;
 class MapPanel;
 class ControlPanel;
+class ToolManager;
 
 class MainWindow : public QMainWindow {
   Q_OBJECT
@@ -36,6 +37,7 @@ public:
   QtVtkWidget* view() const { return view_; }
   MapPanel* mapPanel() const { return map_; }
   ControlPanel* controlPanel() const { return control_; }
+  ToolManager* toolManager() const { return tools_; }
   const Scene* scene() const { return scene_.get(); }
 
 public slots:
@@ -52,6 +54,7 @@ private:
   QtVtkWidget* view_;
   MapPanel* map_;
   ControlPanel* control_;
+  ToolManager* tools_;
   QAction* playAction_;
   QDoubleSpinBox* speedBox_;
   QLabel* status_;

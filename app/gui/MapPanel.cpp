@@ -8,6 +8,7 @@
 
 #include <QMouseEvent>
 #include <QVBoxLayout>
+#include <algorithm>
 
 namespace rv {
 
@@ -141,6 +142,31 @@ void MapPanel::drain() {
     changed = true;
   }
   if (changed) view_->update();
+}
+
+void MapPanel::removeJob(Job& job) {
+  std::vector<const Job*> gone{&job};
+  for (std::size_t i = 0; i < gone.size(); ++i)
+    for (const Job* c : jobs_.children(*gone[i]))
+      gone.push_back(c);
+  const auto isGone = [&](const Job* j) { return std::find(gone.begin(), gone.end(), j) != gone.end(); };
+  for (auto it = series_.begin(); it != series_.end();)
+    if (isGone(it->job)) {
+      chart_->setSeries(it->plot, {}, {});
+      it = series_.erase(it);
+    } else {
+      ++it;
+    }
+  for (auto it = searches_.begin(); it != searches_.end();)
+    if (isGone(it->job)) {
+      chart_->setSeries(it->point, {}, {});
+      if (it->path >= 0) chart_->setSeries(it->path, {}, {});
+      it = searches_.erase(it);
+    } else {
+      ++it;
+    }
+  jobs_.remove(job);
+  view_->update();
 }
 
 void MapPanel::stopAll() {

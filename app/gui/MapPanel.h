@@ -33,6 +33,10 @@ public:
   /// Takes the points computed since the last call and redraws; called by the window's frame timer.
   void drain();
   void stopAll();
+  /// The jobs of the map window (trajectories and the tools started from it), for the tool manager.
+  JobTree& jobs() { return jobs_; }
+  /// Deletes a job and those under it, with what the panel draws of them.
+  void removeJob(Job& job);
   long points() const;
   int trajectories() const { return static_cast<int>(series_.size()); }
   /// Fixed-point searches started, and how many found a point.

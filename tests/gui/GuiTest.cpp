@@ -1,8 +1,14 @@
-// Qt Test of the control panel: forms generated from the parameter tables (every parameter of the problem,
-// the method and the tools has an editor), edits written into the scene document (only the touched fields,
-// choices by name), and Apply emitting the document. Runs on the offscreen platform.
+// Qt Tests of the widgets (offscreen platform). The control panel: forms generated from the parameter tables
+// (every parameter of the problem, the method and the tools has an editor), edits written into the scene
+// document (only the touched fields, choices by name), and Apply emitting the document. The tool manager: the
+// jobs as a tree, stop / continue / restart / delete on the selected one.
 #include "app/gui/ControlPanel.h"
 #include "app/gui/ParameterForm.h"
+#include "app/gui/ToolManager.h"
+#include "dynamics/core/ModelRegistry.h"
+#include "dynamics/jobs/JobTree.h"
+#include "dynamics/jobs/LyapunovTask.h"
+#include "dynamics/jobs/PoincareTask.h"
 #include "dynamics/tools/ToolSettings.h"
 #include "scenes/SceneLoader.h"
 
@@ -10,6 +16,7 @@
 #include <QDoubleSpinBox>
 #include <QPushButton>
 #include <QSignalSpy>
+#include <QTreeWidget>
 #include <QtTest>
 
 namespace rv {
@@ -51,7 +58,7 @@ private slots:
     const auto doc = applied.at(0).at(0).value<nlohmann::json>();
     QCOMPARE(doc["parameters"]["energy"].get<double>(), 0.75);
     QCOMPARE(doc["fixedpoint"]["method"].get<std::string>(), std::string("gradient"));
-    QVERIFY(!doc["parameters"].contains("root_accuracy")); // untouched: not written
+    QVERIFY(!doc["parameters"].contains("root_accuracy"));                   // untouched: not written
     QCOMPARE(doc["parameters"].size(), scene.document["parameters"].size()); // energy was there already
     // the document runs: the new scene has the new energy
     const Scene edited = sceneFromJson(doc, "edited");
@@ -61,7 +68,58 @@ private slots:
   }
 };
 
+class ToolManagerTest : public QObject {
+  Q_OBJECT
+private slots:
+  void actsOnTheSelectedJob() {
+    RunSpec spec(ModelRegistry::builtin().get("henon_heiles"), IntegratorRegistry::builtin().get("everhart"));
+    spec.initialState = spec.makeModel()->stateFromMap({0.1, 0.1}, {}, "test");
+    JobTree jobs;
+    Job& trajectory = jobs.add(std::make_unique<PoincareTask>(spec, SectionSettings{}));
+    LyapunovSettings ls;
+    ls.maxTime = 1e9;
+    Job& lyapunov = jobs.add(std::make_unique<LyapunovTask>(spec, ls), &trajectory);
+    std::vector<int> removed;
+    ToolManager manager(jobs, [&](Job& j) {
+      removed.push_back(j.id());
+      jobs.remove(j);
+    });
+    manager.refresh();
+    QCOMPARE(manager.tree()->topLevelItemCount(), 1);
+    QCOMPARE(manager.tree()->topLevelItem(0)->childCount(), 1); // the Lyapunov job under its trajectory
+    QCOMPARE(manager.tree()->topLevelItem(0)->text(1), QString("Poincare map"));
+
+    manager.select(lyapunov.id());
+    manager.continueSelected();
+    QVERIFY(lyapunov.running());
+    QVERIFY(!trajectory.running());
+    manager.stopSelected();
+    QCOMPARE(lyapunov.status(), Job::Status::Stopped);
+    QCOMPARE(manager.tree()->topLevelItem(0)->child(0)->text(2), QString("stopped"));
+    manager.restartSelected();
+    QVERIFY(lyapunov.running());
+
+    manager.select(trajectory.id());
+    manager.deleteSelected(); // and the Lyapunov job with it
+    QCOMPARE(removed, std::vector<int>{1});
+    QVERIFY(jobs.jobs().empty());
+    QCOMPARE(manager.tree()->topLevelItemCount(), 0);
+  }
+};
+
 } // namespace rv
 
-QTEST_MAIN(rv::ControlPanelTest)
-#include "ControlPanelTest.moc"
+int main(int argc, char** argv) {
+  QApplication app(argc, argv);
+  int failed = 0;
+  {
+    rv::ControlPanelTest t;
+    failed += QTest::qExec(&t, argc, argv);
+  }
+  {
+    rv::ToolManagerTest t;
+    failed += QTest::qExec(&t, argc, argv);
+  }
+  return failed ? 1 : 0;
+}
+#include "GuiTest.moc"

@@ -1,0 +1,112 @@
+#include "app/gui/ToolManager.h"
+
+#include "dynamics/jobs/JobTree.h"
+
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QPushButton>
+#include <QTimer>
+#include <QTreeWidget>
+#include <QVBoxLayout>
+#include <map>
+
+namespace rv {
+
+ToolManager::ToolManager(JobTree& jobs, std::function<void(Job&)> remove, QWidget* parent)
+    : QWidget(parent), jobs_(jobs), remove_(std::move(remove)) {
+  auto* layout = new QVBoxLayout(this);
+  tree_ = new QTreeWidget(this);
+  tree_->setHeaderLabels({"#", "tool", "status", "progress", "method and problem"});
+  tree_->header()->setStretchLastSection(true);
+  layout->addWidget(tree_, 1);
+  auto* buttons = new QHBoxLayout;
+  const auto button = [&](const char* text, const char* tip, void (ToolManager::*slot)()) {
+    auto* b = new QPushButton(text, this);
+    b->setToolTip(tip);
+    b->setObjectName(QString(text).toLower());
+    connect(b, &QPushButton::clicked, this, slot);
+    buttons->addWidget(b);
+  };
+  button("Stop", "stop the selected tool (it can continue later)", &ToolManager::stopSelected);
+  button("Continue", "continue the selected tool from where it stopped", &ToolManager::continueSelected);
+  button("Restart", "start the selected tool again from the beginning", &ToolManager::restartSelected);
+  button("Delete", "stop and delete the selected tool and the tools under it", &ToolManager::deleteSelected);
+  layout->addLayout(buttons);
+  timer_ = new QTimer(this);
+  connect(timer_, &QTimer::timeout, this, &ToolManager::refresh);
+  timer_->start(250);
+}
+
+void ToolManager::refresh() {
+  const int keep = selected() ? selected()->id() : -1;
+  // the tree's items follow the jobs: rebuilt when the set changes, texts updated otherwise
+  std::map<int, QTreeWidgetItem*> items;
+  for (int i = 0; i < tree_->topLevelItemCount(); ++i) {
+    std::vector<QTreeWidgetItem*> stack{tree_->topLevelItem(i)};
+    while (!stack.empty()) {
+      QTreeWidgetItem* it = stack.back();
+      stack.pop_back();
+      items[it->data(0, Qt::UserRole).toInt()] = it;
+      for (int c = 0; c < it->childCount(); ++c)
+        stack.push_back(it->child(c));
+    }
+  }
+  const std::vector<Job*> jobs = jobs_.jobs();
+  bool same = items.size() == jobs.size();
+  for (Job* j : jobs)
+    same = same && items.count(j->id());
+  if (!same) {
+    tree_->clear();
+    items.clear();
+    for (Job* j : jobs) { // parents come before their children
+      auto* it = j->parent() && items.count(j->parent()->id()) ? new QTreeWidgetItem(items[j->parent()->id()])
+                                                               : new QTreeWidgetItem(tree_);
+      it->setData(0, Qt::UserRole, j->id());
+      items[j->id()] = it;
+    }
+    tree_->expandAll();
+  }
+  for (Job* j : jobs) {
+    QTreeWidgetItem* it = items[j->id()];
+    it->setText(0, QString::number(j->id()));
+    it->setText(1, QString::fromStdString(j->task().name()));
+    QString status = toString(j->status());
+    if (j->status() == Job::Status::Failed) status += ": " + QString::fromStdString(j->error());
+    it->setText(2, status);
+    it->setText(3, QString("%1%").arg(static_cast<int>(100 * j->progress())));
+    it->setText(4, QString::fromStdString(j->task().describe())); // the tasks describe their fixed settings
+  }
+  if (keep >= 0) select(keep);
+}
+
+Job* ToolManager::selected() const {
+  const QTreeWidgetItem* it = tree_->currentItem();
+  return it ? jobs_.find(it->data(0, Qt::UserRole).toInt()) : nullptr;
+}
+
+void ToolManager::select(int id) {
+  for (QTreeWidgetItemIterator it(tree_); *it; ++it)
+    if ((*it)->data(0, Qt::UserRole).toInt() == id) tree_->setCurrentItem(*it);
+}
+
+void ToolManager::stopSelected() {
+  if (Job* j = selected()) j->stop();
+  refresh();
+}
+
+void ToolManager::continueSelected() {
+  if (Job* j = selected()) j->start();
+  refresh();
+}
+
+void ToolManager::restartSelected() {
+  if (Job* j = selected()) j->restart();
+  refresh();
+}
+
+void ToolManager::deleteSelected() {
+  if (Job* j = selected()) remove_(*j);
+  refresh();
+}
+
+} // namespace rv

@@ -1,0 +1,41 @@
+// ToolManager.h -- the tool manager (manual §2.1): every running tool instance as a tree (tools under the
+// trajectory they study), with its status, progress and technical description; stop, continue, restart and
+// delete act on the selected instance. It only reads the jobs' atomic state: the GUI thread never waits on
+// one except to stop it.
+#pragma once
+#include <QWidget>
+#include <functional>
+
+class QTreeWidget;
+class QTimer;
+
+namespace rv {
+
+class JobTree;
+class Job;
+
+class ToolManager : public QWidget {
+  Q_OBJECT
+public:
+  /// `remove` deletes a job for its owner (which drops what it draws of it first).
+  ToolManager(JobTree& jobs, std::function<void(Job&)> remove, QWidget* parent = nullptr);
+  /// Rebuilds the tree from the jobs (called by a timer; public for tests).
+  void refresh();
+  /// The selected job, or nullptr.
+  Job* selected() const;
+  /// Selects the job with this id (for tests).
+  void select(int id);
+  void stopSelected();
+  void continueSelected();
+  void restartSelected();
+  void deleteSelected();
+  QTreeWidget* tree() const { return tree_; }
+
+private:
+  JobTree& jobs_;
+  std::function<void(Job&)> remove_;
+  QTreeWidget* tree_;
+  QTimer* timer_;
+};
+
+} // namespace rv
