@@ -54,9 +54,11 @@ int runGui(int argc, char** argv, const GuiOptions& options) {
         std::fprintf(stderr, "rollviz: cannot write %s\n", options.screenshot.c_str());
       // a summary for scripted runs and tests
       std::printf(
-          "shown t = %.6g, map trajectories = %d, map points = %ld, fixed point searches = %d, found = %d\n",
+          "shown t = %.6g, map trajectories = %d, map points = %ld, fixed point searches = %d, found = %d, "
+          "tool jobs = %d, jobs in the tool manager = %d\n",
           window.shownTime(), window.mapPanel()->trajectories(), window.mapPanel()->points(),
-          window.mapPanel()->searches(), window.mapPanel()->fixedPointsFound());
+          window.mapPanel()->searches(), window.mapPanel()->fixedPointsFound(), window.mapPanel()->toolJobs(),
+          static_cast<int>(window.mapPanel()->jobs().jobs().size()));
       std::fflush(stdout);
       app.quit();
     });

@@ -13,6 +13,7 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QLabel>
+#include <QMenuBar>
 #include <QMessageBox>
 #include <QSettings>
 #include <QStatusBar>
@@ -34,6 +35,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   controlDock->setObjectName("control");
   controlDock->setWidget(control_);
   addDockWidget(Qt::LeftDockWidgetArea, controlDock);
+  control_->setMinimumWidth(300); // labels and values readable side by side
   tools_ = new ToolManager(
       map_->jobs(), [this](Job& j) { map_->removeJob(j); }, this);
   auto* toolsDock = new QDockWidget("Tool manager", this);
@@ -66,6 +68,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   auto* snap = bar->addAction("Snapshot", this, &MainWindow::snapshot);
   snap->setShortcut(QKeySequence::Save);
   snap->setToolTip("Save the 3D view as a PNG (Ctrl+S)");
+  auto* tools = menuBar()->addMenu("&Tools");
+  tools->addAction("Separatrices of the fixed point", map_, &MapPanel::startSeparatrices)
+      ->setToolTip("the four branches at the fixed point found from fixedpoint.guess (control panel)");
+  tools->addAction("Continue the fixed point", map_, &MapPanel::startContinuation)
+      ->setToolTip("the family in continuation.parameter up to continuation.to (control panel)");
   status_ = new QLabel(this);
   statusBar()->addWidget(status_, 1);
   connect(map_, &MapPanel::message, this, [this](const QString& m) { statusBar()->showMessage(m, 5000); });

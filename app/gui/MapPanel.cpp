@@ -31,6 +31,7 @@ void MapPanel::setScene(const Scene& scene) {
   jobs_.removeAll();
   series_.clear();
   searches_.clear();
+  tools_.clear();
   scene_ = &scene;
   const auto names = PoincareMap(*scene.model, scene.startIntegrator(), scene.poincare).coordinateNames();
   chart_ = std::make_unique<PoincareChart>(names.at(0), names.size() > 1 ? names[1] : "t");
@@ -96,6 +97,74 @@ void MapPanel::searchFixedPointAt(double x, double y) {
   }
 }
 
+std::unique_ptr<SceneMap> MapPanel::sceneMap() {
+  if (!scene_ || scene_->model->info().mapCoordinates.empty()) {
+    emit message("this problem has no map coordinates");
+    return nullptr;
+  }
+  try {
+    return std::make_unique<SceneMap>(sceneFromJson(scene_->document, scene_->source));
+  } catch (const InputError& e) {
+    emit message(QString::fromStdString(e.what()));
+    return nullptr;
+  }
+}
+
+void MapPanel::startSeparatrices() {
+  const auto sm = sceneMap();
+  if (!sm) return;
+  const SeparatrixSettings base = separatrixSettings(scene_->tool("separatrix"), sm->search());
+  const Rgb colours[] = {{0.55, 0.1, 0.6}, {0.55, 0.1, 0.6}, {0.1, 0.5, 0.2}, {0.1, 0.5, 0.2}};
+  for (int b = 1; b <= 4; ++b) {
+    SeparatrixSettings s = base;
+    s.branch = b;
+    auto task = std::make_unique<SeparatrixTask>(sm->taskSpec(), s);
+    SeparatrixTask* raw = task.get();
+    Job& job = jobs_.add(std::move(task));
+    const int plot = chart_->addSeries({}, {}, colours[b - 1]);
+    tools_.push_back({&job, plot, {}, {}, [raw](std::vector<double>& x, std::vector<double>& y) {
+                        std::vector<std::vector<Eigen::VectorXd>> batches;
+                        raw->points().take(batches);
+                        for (const auto& batch : batches)
+                          for (const auto& p : batch)
+                            x.push_back(p[0]), y.push_back(p[1]);
+                        return !batches.empty();
+                      }});
+    job.start();
+  }
+  emit message("growing the separatrices of the fixed point near the scene's guess");
+}
+
+void MapPanel::startContinuation() {
+  const auto sm = sceneMap();
+  if (!sm) return;
+  try {
+    auto task = std::make_unique<ContinuationTask>(sm->taskSpec(), sm->continuation());
+    ContinuationTask* raw = task.get();
+    Job& job = jobs_.add(std::move(task));
+    const int plot = chart_->addSeries({}, {}, {0.95, 0.55, 0.1});
+    tools_.push_back({&job, plot, {}, {}, [this, raw](std::vector<double>& x, std::vector<double>& y) {
+                        std::vector<ContinuationPoint> points;
+                        std::vector<TypeChange> changes;
+                        raw->points().take(points);
+                        raw->changes().take(changes);
+                        for (const auto& p : points)
+                          x.push_back(p.fixedPoint.point[0]), y.push_back(p.fixedPoint.point[1]);
+                        for (const auto& c : changes)
+                          emit message(QString("type change at %1 = %2: %3 -> %4 (%5)")
+                                           .arg(QString::fromStdString(raw->describe()))
+                                           .arg(c.parameter, 0, 'g', 12)
+                                           .arg(QString::fromStdString(c.from), QString::fromStdString(c.to),
+                                                QString::fromStdString(c.kind)));
+                        return !points.empty();
+                      }});
+    job.start();
+    emit message("continuing the scene's fixed point");
+  } catch (const InputError& e) {
+    emit message(QString::fromStdString(e.what()));
+  }
+}
+
 int MapPanel::fixedPointsFound() const {
   int n = 0;
   for (const auto& s : searches_)
@@ -105,6 +174,11 @@ int MapPanel::fixedPointsFound() const {
 
 void MapPanel::drain() {
   bool changed = false;
+  for (auto& t : tools_)
+    if (t.pull(t.x, t.y)) {
+      chart_->setSeries(t.plot, t.x, t.y);
+      changed = true;
+    }
   std::vector<SearchPoint> steps;
   for (auto& s : searches_) {
     if (s.task->path().take(steps) > 0) {
@@ -154,6 +228,13 @@ void MapPanel::removeJob(Job& job) {
     if (isGone(it->job)) {
       chart_->setSeries(it->plot, {}, {});
       it = series_.erase(it);
+    } else {
+      ++it;
+    }
+  for (auto it = tools_.begin(); it != tools_.end();)
+    if (isGone(it->job)) {
+      chart_->setSeries(it->plot, {}, {});
+      it = tools_.erase(it);
     } else {
       ++it;
     }

@@ -9,6 +9,7 @@
 #include "scenes/Scene.h"
 
 #include <QWidget>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -30,6 +31,12 @@ public:
   bool startAt(double x, double y);
   /// Starts a fixed-point search (the scene's fixedpoint settings) from map coordinates (x, y).
   void searchFixedPointAt(double x, double y);
+  /// Grows the four separatrices of the fixed point found from the scene's fixedpoint settings (one job per
+  /// branch, drawn as they grow).
+  void startSeparatrices();
+  /// Continues the scene's fixed point (its continuation settings); the family is drawn on the map and each
+  /// change of type reported.
+  void startContinuation();
   /// Takes the points computed since the last call and redraws; called by the window's frame timer.
   void drain();
   void stopAll();
@@ -42,6 +49,8 @@ public:
   /// Fixed-point searches started, and how many found a point.
   int searches() const { return static_cast<int>(searches_.size()); }
   int fixedPointsFound() const;
+  /// Jobs of other tools drawn on the map (separatrix branches, continuations).
+  int toolJobs() const { return static_cast<int>(tools_.size()); }
   QtVtkWidget* view() const { return view_; }
 
 signals:
@@ -67,6 +76,16 @@ private:
   void start(const Eigen::VectorXd& state);
   std::vector<double> mapPoint(double x, double y) const;
   std::vector<Search> searches_;
+  // the output of other tools drawn on the map: `pull` appends what arrived and says whether anything did
+  struct ToolSeries {
+    Job* job;
+    int plot;
+    std::vector<double> x, y;
+    std::function<bool(std::vector<double>& x, std::vector<double>& y)> pull;
+  };
+  std::vector<ToolSeries> tools_;
+  /// The scene's tool setup; nothing (with a message) when the scene cannot give one.
+  std::unique_ptr<class SceneMap> sceneMap();
   QtVtkWidget* view_;
   std::unique_ptr<PoincareChart> chart_;
   const Scene* scene_ = nullptr;
