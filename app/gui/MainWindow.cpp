@@ -69,10 +69,14 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   snap->setShortcut(QKeySequence::Save);
   snap->setToolTip("Save the 3D view as a PNG (Ctrl+S)");
   auto* tools = menuBar()->addMenu("&Tools");
-  tools->addAction("Separatrices of the fixed point", map_, &MapPanel::startSeparatrices)
-      ->setToolTip("the four branches at the fixed point found from fixedpoint.guess (control panel)");
-  tools->addAction("Continue the fixed point", map_, &MapPanel::startContinuation)
-      ->setToolTip("the family in continuation.parameter up to continuation.to (control panel)");
+  auto* separatrices =
+      tools->addAction("Separatrices of the fixed point", map_, &MapPanel::startSeparatrices);
+  separatrices->setToolTip(
+      "the four branches at the fixed point found from fixedpoint.guess (control panel)");
+  separatrices->setShortcut(QKeySequence("Ctrl+Shift+E"));
+  auto* continuation = tools->addAction("Continue the fixed point", map_, &MapPanel::startContinuation);
+  continuation->setToolTip("the family in continuation.parameter up to continuation.to (control panel)");
+  continuation->setShortcut(QKeySequence("Ctrl+Shift+C"));
   status_ = new QLabel(this);
   statusBar()->addWidget(status_, 1);
   connect(map_, &MapPanel::message, this, [this](const QString& m) { statusBar()->showMessage(m, 5000); });
