@@ -20,11 +20,22 @@ std::string pointText(const Eigen::VectorXd& x) {
   return s + ")";
 }
 
-// a ToolControl that throws Stopped instead of returning a truncated result
-void throwIfStopped(const ToolControl& control) {
-  if (control.stopRequested()) throw Stopped{};
-}
 } // namespace
+
+ReturnMap::Return ReturnMap::firstReturn(const Model& system, const Eigen::VectorXd& start,
+                                         const Eigen::VectorXd& x, const ToolControl& control) const {
+  auto integ = make_();
+  integ->start(system, 0.0, start, backward_ ? -1 : +1);
+  SectionSettings s = s_;
+  s.maxPoints = 1, s.maxTime = maxReturnTime_;
+  PoincareMap map(system, std::move(integ), s);
+  const auto p = map.next(control);
+  if (control.stopRequested()) throw Stopped{}; // not a truncated result
+  if (!p)
+    throw ComputationError(format("the trajectory from %s does not return to the section within t = %g",
+                                  pointText(x).c_str(), maxReturnTime_));
+  return {Eigen::Map<const Eigen::VectorXd>(p->coordinates.data(), dimension()), map.lastState()};
+}
 
 ReturnMap::ReturnMap(const Model& model, IntegratorFactory makeIntegrator, SectionSettings section,
                      double maxReturnTime)
@@ -151,17 +162,7 @@ Eigen::VectorXd ReturnMap::invertMapOnce(const Eigen::VectorXd& y) const {
 Eigen::VectorXd ReturnMap::operator()(const Eigen::VectorXd& x, const ToolControl& control) const {
   ++evaluations_;
   if (model_.isMap()) return iterateMap(x, nullptr);
-  auto integ = make_();
-  integ->start(model_, 0.0, stateOf(x), backward_ ? -1 : +1);
-  SectionSettings s = s_;
-  s.maxPoints = 1, s.maxTime = maxReturnTime_;
-  PoincareMap map(model_, std::move(integ), s);
-  const auto p = map.next(control);
-  throwIfStopped(control);
-  if (!p)
-    throw ComputationError(format("the trajectory from %s does not return to the section within t = %g",
-                                  pointText(x).c_str(), maxReturnTime_));
-  return Eigen::Map<const Eigen::VectorXd>(p->coordinates.data(), dimension());
+  return firstReturn(model_, stateOf(x), x, control).coordinates;
 }
 
 Linearization ReturnMap::linearize(const Eigen::VectorXd& x, const DerivativeSettings& s,
@@ -260,18 +261,9 @@ Linearization ReturnMap::variational(const Eigen::VectorXd& x, const ToolControl
   start.head(n) = s0;
   for (int j = 0; j < d; ++j)
     start.segment(n + j * m, m) = DC.col(j);
-  auto integ = make_();
-  integ->start(tangent, 0.0, start, backward_ ? -1 : +1);
-  SectionSettings s = s_;
-  s.maxPoints = 1, s.maxTime = maxReturnTime_;
-  PoincareMap map(tangent, std::move(integ), s);
   ++evaluations_;
-  const auto p = map.next(control);
-  throwIfStopped(control);
-  if (!p)
-    throw ComputationError(format("the trajectory from %s does not return to the section within t = %g",
-                                  pointText(x).c_str(), maxReturnTime_));
-  const Eigen::VectorXd& S = map.lastState();
+  const Return r = firstReturn(tangent, start, x, control);
+  const Eigen::VectorXd& S = r.state;
   const Eigen::VectorXd base = S.head(n);
   Eigen::MatrixXd V(m, d);
   for (int j = 0; j < d; ++j)
@@ -284,8 +276,7 @@ Linearization ReturnMap::variational(const Eigen::VectorXd& x, const ToolControl
   if (std::abs(rate) < 1e-14)
     throw ComputationError("the orbit from " + pointText(x) + " touches the section tangentially");
   V -= f.head(m) * (ds * V) / rate;
-  Linearization lin{.image = Eigen::Map<const Eigen::VectorXd>(p->coordinates.data(), d),
-                    .jacobian = Eigen::MatrixXd(d, d)};
+  Linearization lin{.image = r.coordinates, .jacobian = Eigen::MatrixXd(d, d)};
   for (int i = 0; i < d; ++i)
     lin.jacobian.row(i) = observableGradient(*coords_[i], base) * V;
   return lin;

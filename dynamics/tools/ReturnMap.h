@@ -79,6 +79,13 @@ public:
   ReturnMap(const ReturnMap& other);
 
 private:
+  struct Return {
+    Eigen::VectorXd coordinates; ///< of the n-th return
+    Eigen::VectorXd state;       ///< the whole state of `system` there
+  };
+  /// The n-th return of `system` (the model or its tangent system) from `start`, the state of map point x.
+  Return firstReturn(const Model& system, const Eigen::VectorXd& start, const Eigen::VectorXd& x,
+                     const ToolControl& control) const;
   Linearization finiteDifferences(const Eigen::VectorXd& x, const DerivativeSettings& s,
                                   const ToolControl& control) const;
   Linearization variational(const Eigen::VectorXd& x, const ToolControl& control) const;
