@@ -4,6 +4,7 @@
 #include "render/Snapshot.h"
 #include "render/VisualScene.h"
 #include "render/context/HeadlessContext.h"
+#include "render/objects/BodyTraceObject.h"
 #include "render/objects/ContactTraceObject.h"
 #include "render/video/VideoExport.h"
 #include "scenes/SceneCharts.h"
@@ -108,6 +109,23 @@ TEST(Render, TraceGrowsAlongTheMotion) {
   EXPECT_GT(trace->points(), 100);
   visual.clear();
   EXPECT_EQ(trace->points(), 0);
+}
+
+// the trace on the body: for a ball the contact point in the body's frame is -R gamma (manual (29)), with
+// gamma the state's vertical -- an independent reading of where the object puts it
+TEST(Render, BodyTraceFollowsTheContactOnTheBall) {
+  const Scene scene = loadScene(defaultScenePath("chaplygin_ball"));
+  auto integrator = scene.startIntegrator();
+  VisualScene visual(*scene.model, scene.view, scene.initialState);
+  Eigen::VectorXd x;
+  playTo(visual, *integrator, 2.0, x);
+  const auto* trace = dynamic_cast<const BodyTraceObject*>(visual.find("body_trace"));
+  ASSERT_NE(trace, nullptr);
+  EXPECT_GT(trace->points(), 50);
+  const Eigen::Vector3d gamma = x.segment<3>(3);
+  const Eigen::Vector3d p = trace->lastPoint();
+  EXPECT_NEAR(p.normalized().dot(-gamma.normalized()), 1.0, 1e-12);
+  EXPECT_NEAR(p.norm(), 1.0 + 4e-3 * 1.0, 1e-3); // R = 1, just outside the surface
 }
 
 // every chart view, on a scene where it is quick and meaningful, against its baseline
