@@ -13,12 +13,12 @@ RV, RVO, SRC = sys.argv[1], sys.argv[2], sys.argv[3]
 SCENE = os.path.join(SRC, "scenes", "chaplygin_ball.json")
 
 
-def run(*args, exe=None, env=None):
+def run(*args, exe=None, env=None, timeout=300):
     e = dict(os.environ)
     e.pop("DISPLAY", None)
     if env:
         e.update(env)
-    return subprocess.run([exe or RV, *args], capture_output=True, text=True, env=e, timeout=300)
+    return subprocess.run([exe or RV, *args], capture_output=True, text=True, env=e, timeout=timeout)
 
 
 def pixels(path):
@@ -320,6 +320,15 @@ class Cli(unittest.TestCase):
         self.assertEqual(j["axes"], ["n", "h"])
         self.assertBadInput(run("diagram", os.path.join(SRC, "scenes", "lorenz.json")), "no bifurcation diagrams")
         self.assertBadInput(run("diagram", SCENE, "--diagram", "xy"), "--diagram", "nh")
+
+    def test_every_scene_has_a_poincare_map(self):
+        # a section the motion never crosses would make `poincare` run forever: every shipped scene must return
+        for name in sorted(os.listdir(os.path.join(SRC, "scenes"))):
+            if not name.endswith(".json"):
+                continue
+            r = run("poincare", os.path.join(SRC, "scenes", name), "--points", "3", timeout=60)
+            self.assertEqual(r.returncode, 0, name + ": " + r.stderr)
+            self.assertEqual(len(r.stdout.strip().splitlines()), 4, name)
 
     def test_list_tools(self):
         r = run("list", "tools")
