@@ -1,6 +1,7 @@
 #include "render/VisualScene.h"
 
 #include "render/BodyMeshes.h"
+#include "render/objects/BodyAxesObject.h"
 #include "render/objects/BodyObject.h"
 #include "render/objects/BodyTraceObject.h"
 #include "render/objects/ContactTraceObject.h"
@@ -54,6 +55,7 @@ VisualScene::VisualScene(const Model& model, const ViewOptions& options, const E
     add(std::make_unique<ContactTraceObject>("trace", scale_, cap));
     add(std::make_unique<BodyObject>(geometry->shape == BodyShape::Ball ? "ball" : "body", *geometry));
     add(std::make_unique<BodyTraceObject>("body_trace", scale_, cap));
+    add(std::make_unique<BodyAxesObject>("axes", *geometry, scale_));
   } else {
     scale_ = std::max(1.0, x0.head(std::min<Eigen::Index>(3, x0.size())).norm());
     add(std::make_unique<PhaseCurveObject>(model.isMap() ? "points" : "curve", scale_, cap, model.isMap()));
@@ -73,7 +75,9 @@ VisualObject& VisualScene::add(std::unique_ptr<VisualObject> object) {
     if (o->name() == object->name()) o.reset();
   std::erase(objects_, nullptr);
   object->attach(renderer_);
-  object->apply(options_.object(object->name()));
+  ObjectOptions options = options_.object(object->name());
+  if (!options_.objects.count(object->name())) options.enabled = object->shownByDefault();
+  object->apply(options);
   objects_.push_back(std::move(object));
   return *objects_.back();
 }

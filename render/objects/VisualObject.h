@@ -23,6 +23,8 @@ public:
   explicit VisualObject(std::string name) : name_(std::move(name)) {}
   virtual ~VisualObject() = default;
   const std::string& name() const { return name_; }
+  /// Whether the object shows when the scene says nothing of it.
+  virtual bool shownByDefault() const { return true; }
   /// Adds the object's props to the renderer (once).
   virtual void attach(vtkRenderer* renderer) = 0;
   /// Applies appearance options; called at creation and whenever the user edits them.

@@ -4,6 +4,7 @@
 #include "render/Snapshot.h"
 #include "render/VisualScene.h"
 #include "render/context/HeadlessContext.h"
+#include "render/objects/BodyAxesObject.h"
 #include "render/objects/BodyTraceObject.h"
 #include "render/objects/ContactTraceObject.h"
 #include "render/video/VideoExport.h"
@@ -126,6 +127,40 @@ TEST(Render, BodyTraceFollowsTheContactOnTheBall) {
   const Eigen::Vector3d p = trace->lastPoint();
   EXPECT_NEAR(p.normalized().dot(-gamma.normalized()), 1.0, 1e-12);
   EXPECT_NEAR(p.norm(), 1.0 + 4e-3 * 1.0, 1e-3); // R = 1, just outside the surface
+}
+
+// the body's axes (hidden unless asked for): the tip of e_i is as high above the centre as gamma_i of the
+// state says (gamma is the vertical in the body's frame, the pose's rotation comes from the integrated
+// orientation)
+TEST(Render, BodyAxesFollowTheOrientation) {
+  const Scene plain = loadScene(defaultScenePath("chaplygin_ball"));
+  VisualScene hidden(*plain.model, plain.view, plain.initialState);
+  const auto* axes = dynamic_cast<const BodyAxesObject*>(hidden.find("axes"));
+  ASSERT_NE(axes, nullptr);
+  const Scene scene =
+      loadScene(defaultScenePath("chaplygin_ball"), {parseOverride("view.objects.axes.enabled=true")});
+  auto integrator = scene.startIntegrator();
+  VisualScene visual(*scene.model, scene.view, scene.initialState);
+  Eigen::VectorXd x;
+  playTo(visual, *integrator, 3.0, x);
+  const auto* shown = dynamic_cast<const BodyAxesObject*>(visual.find("axes"));
+  const Eigen::Vector3d centre = scene.model->pose(x.data())->center;
+  for (int i = 0; i < 3; ++i)
+    EXPECT_NEAR((shown->tip(i) - centre).normalized()[2], x[3 + i] / x.segment<3>(3).norm(), 1e-9)
+        << "axis " << i;
+  // drawn: the picture changes where the axes are when they are hidden again
+  auto ctx = createHeadlessContext(320, 180);
+  ctx->window()->AddRenderer(visual.renderer());
+  const Image with = capture(ctx->window());
+  ObjectOptions off;
+  off.enabled = false;
+  visual.setOptions("axes", off);
+  const Image without = capture(ctx->window());
+  ctx->window()->RemoveRenderer(visual.renderer());
+  long changed = 0;
+  for (std::size_t i = 0; i < with.rgb.size(); ++i)
+    changed += std::abs(int(with.rgb[i]) - int(without.rgb[i])) > 40;
+  EXPECT_GT(changed, 60);
 }
 
 // every chart view, on a scene where it is quick and meaningful, against its baseline
