@@ -3,7 +3,6 @@
 #include "render/BodyMeshes.h"
 #include "render/objects/BodyAxesObject.h"
 #include "render/objects/BodyObject.h"
-#include "render/objects/BodyTraceObject.h"
 #include "render/objects/ContactTraceObject.h"
 #include "render/objects/PhaseCurveObject.h"
 #include "render/objects/PlaneObject.h"
@@ -52,9 +51,9 @@ VisualScene::VisualScene(const Model& model, const ViewOptions& options, const E
       add(std::make_unique<SurfaceObject>("surface", *support));
     else
       add(std::make_unique<PlaneObject>("plane", scale_, 40 * scale_));
-    add(std::make_unique<ContactTraceObject>("trace", scale_, cap));
+    add(std::make_unique<ContactTraceObject>("trace", ContactTraceObject::On::Support, scale_, cap));
     add(std::make_unique<BodyObject>(geometry->shape == BodyShape::Ball ? "ball" : "body", *geometry));
-    add(std::make_unique<BodyTraceObject>("body_trace", scale_, cap));
+    add(std::make_unique<ContactTraceObject>("body_trace", ContactTraceObject::On::Body, scale_, cap));
     add(std::make_unique<BodyAxesObject>("axes", *geometry, scale_));
   } else {
     scale_ = std::max(1.0, x0.head(std::min<Eigen::Index>(3, x0.size())).norm());

@@ -1,5 +1,6 @@
-// ContactTraceObject.h -- the path of the contact point on the fixed surface (the plane, an ellipsoid, a
-// bowl), drawn just off the surface along its normal.
+// ContactTraceObject.h -- the path of the contact point, either on the fixed surface (the plane, an
+// ellipsoid, a bowl: drawn just off it along its normal) or on the body itself (kept in the body's frame,
+// drawn just outside it, turning with it: manual §2.4.6, the trace on the body).
 #pragma once
 #include "render/GrowingPolyline.h"
 #include "render/objects/VisualObject.h"
@@ -8,16 +9,22 @@ namespace rv {
 
 class ContactTraceObject final : public VisualObject {
 public:
-  ContactTraceObject(std::string name, double scale, long maxPoints);
+  enum class On { Support, Body };
+  ContactTraceObject(std::string name, On on, double scale, long maxPoints);
   void attach(vtkRenderer* renderer) override { line_.attach(renderer); }
   void apply(const ObjectOptions& options) override;
   void advance(const FrameState& s) override;
+  void show(const FrameState& s) override;
   void clear() override { line_.clear(); }
   long points() const { return line_.size(); }
+  /// The newest point, in the frame it is kept in (the world's, or the body's).
+  const Eigen::Vector3d& lastPoint() const { return last_; }
 
 private:
+  On on_;
   double lift_;
   GrowingPolyline line_;
+  Eigen::Vector3d last_ = Eigen::Vector3d::Zero();
 };
 
 } // namespace rv

@@ -5,7 +5,6 @@
 #include "render/VisualScene.h"
 #include "render/context/HeadlessContext.h"
 #include "render/objects/BodyAxesObject.h"
-#include "render/objects/BodyTraceObject.h"
 #include "render/objects/ContactTraceObject.h"
 #include "render/video/VideoExport.h"
 #include "scenes/SceneCharts.h"
@@ -120,7 +119,7 @@ TEST(Render, BodyTraceFollowsTheContactOnTheBall) {
   VisualScene visual(*scene.model, scene.view, scene.initialState);
   Eigen::VectorXd x;
   playTo(visual, *integrator, 2.0, x);
-  const auto* trace = dynamic_cast<const BodyTraceObject*>(visual.find("body_trace"));
+  const auto* trace = dynamic_cast<const ContactTraceObject*>(visual.find("body_trace"));
   ASSERT_NE(trace, nullptr);
   EXPECT_GT(trace->points(), 50);
   const Eigen::Vector3d gamma = x.segment<3>(3);
