@@ -19,16 +19,30 @@
 namespace rv {
 namespace {
 
-Image renderScene(const std::string& id, double t, int w = 640, int h = 360) {
-  const Scene scene = loadScene(defaultScenePath(id));
-  auto integrator = scene.startIntegrator();
-  VisualScene visual(*scene.model, scene.view, scene.initialState);
+// a default scene (with --set overrides) played to time t: the visual scene and the state it shows
+struct Played {
+  Scene scene;
+  std::unique_ptr<VisualScene> visual;
   Eigen::VectorXd x;
-  playTo(visual, *integrator, t, x);
+};
+
+std::unique_ptr<Played> play(const std::string& id, double t, const std::vector<std::string>& sets = {}) {
+  std::vector<SceneOverride> overrides;
+  for (const auto& s : sets)
+    overrides.push_back(parseOverride(s));
+  auto p = std::make_unique<Played>(Played{loadScene(defaultScenePath(id), overrides)});
+  p->visual = std::make_unique<VisualScene>(*p->scene.model, p->scene.view, p->scene.initialState);
+  auto integrator = p->scene.startIntegrator();
+  playTo(*p->visual, *integrator, t, p->x);
+  return p;
+}
+
+Image renderScene(const std::string& id, double t, int w = 640, int h = 360) {
+  const auto p = play(id, t);
   auto ctx = createHeadlessContext(w, h);
-  ctx->window()->AddRenderer(visual.renderer());
+  ctx->window()->AddRenderer(p->visual->renderer());
   Image img = capture(ctx->window());
-  ctx->window()->RemoveRenderer(visual.renderer());
+  ctx->window()->RemoveRenderer(p->visual->renderer());
   return img;
 }
 
@@ -63,11 +77,10 @@ TEST(Render, LorenzSceneMatchesItsBaseline) {
 
 TEST(Render, TheBallIsDrawnWhereTheModelPutsIt) {
   // render with and without the ball: the pixels that change are where the camera projects the ball's centre
-  const Scene scene = loadScene(defaultScenePath("chaplygin_ball"));
-  auto integrator = scene.startIntegrator();
-  VisualScene visual(*scene.model, scene.view, scene.initialState);
-  Eigen::VectorXd x;
-  playTo(visual, *integrator, 3.0, x);
+  const auto played = play("chaplygin_ball", 3.0);
+  const Scene& scene = played->scene;
+  VisualScene& visual = *played->visual;
+  const Eigen::VectorXd& x = played->x;
   auto ctx = createHeadlessContext(640, 360);
   ctx->window()->AddRenderer(visual.renderer());
   const Image with = capture(ctx->window());
@@ -99,11 +112,8 @@ TEST(Render, TheBallIsDrawnWhereTheModelPutsIt) {
 }
 
 TEST(Render, TraceGrowsAlongTheMotion) {
-  const Scene scene = loadScene(defaultScenePath("chaplygin_ball"));
-  auto integrator = scene.startIntegrator();
-  VisualScene visual(*scene.model, scene.view, scene.initialState);
-  Eigen::VectorXd x;
-  playTo(visual, *integrator, 2.0, x);
+  const auto played = play("chaplygin_ball", 2.0);
+  VisualScene& visual = *played->visual;
   const auto* trace = dynamic_cast<const ContactTraceObject*>(visual.find("trace"));
   ASSERT_NE(trace, nullptr);
   EXPECT_GT(trace->points(), 100);
@@ -114,12 +124,9 @@ TEST(Render, TraceGrowsAlongTheMotion) {
 // the trace on the body: for a ball the contact point in the body's frame is -R gamma (manual (29)), with
 // gamma the state's vertical -- an independent reading of where the object puts it
 TEST(Render, BodyTraceFollowsTheContactOnTheBall) {
-  const Scene scene = loadScene(defaultScenePath("chaplygin_ball"));
-  auto integrator = scene.startIntegrator();
-  VisualScene visual(*scene.model, scene.view, scene.initialState);
-  Eigen::VectorXd x;
-  playTo(visual, *integrator, 2.0, x);
-  const auto* trace = dynamic_cast<const ContactTraceObject*>(visual.find("body_trace"));
+  const auto played = play("chaplygin_ball", 2.0);
+  const Eigen::VectorXd& x = played->x;
+  const auto* trace = dynamic_cast<const ContactTraceObject*>(played->visual->find("body_trace"));
   ASSERT_NE(trace, nullptr);
   EXPECT_GT(trace->points(), 50);
   const Eigen::Vector3d gamma = x.segment<3>(3);
@@ -132,17 +139,12 @@ TEST(Render, BodyTraceFollowsTheContactOnTheBall) {
 // state says (gamma is the vertical in the body's frame, the pose's rotation comes from the integrated
 // orientation)
 TEST(Render, BodyAxesFollowTheOrientation) {
-  const Scene plain = loadScene(defaultScenePath("chaplygin_ball"));
-  VisualScene hidden(*plain.model, plain.view, plain.initialState);
-  const auto* axes = dynamic_cast<const BodyAxesObject*>(hidden.find("axes"));
-  ASSERT_NE(axes, nullptr);
-  const Scene scene =
-      loadScene(defaultScenePath("chaplygin_ball"), {parseOverride("view.objects.axes.enabled=true")});
-  auto integrator = scene.startIntegrator();
-  VisualScene visual(*scene.model, scene.view, scene.initialState);
-  Eigen::VectorXd x;
-  playTo(visual, *integrator, 3.0, x);
+  const auto played = play("chaplygin_ball", 3.0, {"view.objects.axes.enabled=true"});
+  const Scene& scene = played->scene;
+  VisualScene& visual = *played->visual;
+  const Eigen::VectorXd& x = played->x;
   const auto* shown = dynamic_cast<const BodyAxesObject*>(visual.find("axes"));
+  ASSERT_NE(shown, nullptr);
   const Eigen::Vector3d centre = scene.model->pose(x.data())->center;
   for (int i = 0; i < 3; ++i)
     EXPECT_NEAR((shown->tip(i) - centre).normalized()[2], x[3 + i] / x.segment<3>(3).norm(), 1e-9)
