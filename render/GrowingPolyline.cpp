@@ -1,5 +1,6 @@
 #include "render/GrowingPolyline.h"
 
+#include <algorithm>
 #include <vtkActor.h>
 #include <vtkCellArray.h>
 #include <vtkPoints.h>
@@ -10,15 +11,15 @@
 
 namespace rv {
 
-GrowingPolyline::GrowingPolyline(double minSpacing, long maxPoints, bool asPoints)
-    : minSpacing2_(minSpacing * minSpacing), maxPoints_(maxPoints), asPoints_(asPoints) {
+GrowingPolyline::GrowingPolyline(double tolerance, long maxPoints, bool asPoints)
+    : tolerance_(tolerance), maxPoints_(maxPoints), asPoints_(asPoints) {
   data_ = vtkSmartPointer<vtkPolyData>::New();
   clear();
   vtkNew<vtkPolyDataMapper> mapper;
   mapper->SetInputData(data_);
   actor_ = vtkSmartPointer<vtkActor>::New();
   actor_->SetMapper(mapper);
-  actor_->GetProperty()->SetRenderLinesAsTubes(true); // honours the line width on core-profile GL
+  // flat wide lines: VTK draws them instanced; lit tubes cost 4x more on software GL (tests/bench)
   actor_->GetProperty()->SetRenderPointsAsSpheres(true);
   actor_->GetProperty()->SetAmbient(0.6);
   actor_->GetProperty()->SetDiffuse(0.5);
@@ -41,7 +42,7 @@ void GrowingPolyline::clear() {
   data_->SetPoints(vtkSmartPointer<vtkPoints>::New());
   data_->SetLines(vtkSmartPointer<vtkCellArray>::New());
   data_->SetVerts(vtkSmartPointer<vtkCellArray>::New());
-  lastIsProvisional_ = false;
+  samples_.clear();
   data_->Modified();
 }
 
@@ -49,45 +50,59 @@ long GrowingPolyline::size() const {
   return data_->GetNumberOfPoints();
 }
 
+Eigen::Vector3d GrowingPolyline::vertex(long i) const {
+  Eigen::Vector3d v;
+  data_->GetPoints()->GetPoint(i, v.data());
+  return v;
+}
+
 vtkActor* GrowingPolyline::actor() const {
   return actor_;
 }
 
+bool GrowingPolyline::chordPassesNearDropped(const Eigen::Vector3d& end) const {
+  const Eigen::Vector3d d = end - anchor_;
+  const double len2 = d.squaredNorm(), tol2 = 0.25 * tolerance_ * tolerance_;
+  const auto near = [&](const Eigen::Vector3d& q) {
+    const double s = len2 > 0 ? std::clamp((q - anchor_).dot(d) / len2, 0.0, 1.0) : 0.0;
+    return (anchor_ + s * d - q).squaredNorm() <= tol2;
+  };
+  return near(provisional_) && std::all_of(samples_.begin(), samples_.end(), near);
+}
+
 void GrowingPolyline::append(double x, double y, double z) {
   vtkPoints* pts = data_->GetPoints();
+  const vtkIdType n = pts->GetNumberOfPoints();
   if (asPoints_) {
-    if (pts->GetNumberOfPoints() >= maxPoints_) return;
+    if (n >= maxPoints_) return;
     const vtkIdType id = pts->InsertNextPoint(x, y, z);
     data_->GetVerts()->InsertNextCell(1, &id);
-    pts->Modified();
     data_->GetVerts()->Modified();
-    data_->Modified();
-    return;
-  }
-  const vtkIdType n = pts->GetNumberOfPoints();
-  if (n >= 2) {
-    // the newest point is provisional until it is far enough from the one before it: move it
-    double prev[3];
-    pts->GetPoint(n - (lastIsProvisional_ ? 2 : 1), prev);
-    const double d2 =
-        (x - prev[0]) * (x - prev[0]) + (y - prev[1]) * (y - prev[1]) + (z - prev[2]) * (z - prev[2]);
-    if (lastIsProvisional_) {
-      pts->SetPoint(n - 1, x, y, z);
-      lastIsProvisional_ = d2 < minSpacing2_;
-      pts->Modified();
-      data_->Modified();
-      return;
+  } else {
+    const Eigen::Vector3d p(x, y, z);
+    // Dropped points are sampled every tolerance/2 and checked against tolerance/2: a point not sampled is
+    // within tolerance/2 of one that is, so within tolerance of the line. The samples are capped to bound
+    // the work per point (a long straight stretch then keeps a vertex every kMaxSamples * tolerance / 2).
+    constexpr std::size_t kMaxSamples = 256;
+    if (n >= 2 && samples_.size() < kMaxSamples && chordPassesNearDropped(p)) {
+      if (samples_.empty() || (provisional_ - samples_.back()).norm() >= 0.5 * tolerance_)
+        samples_.push_back(provisional_);
+      provisional_ = p;
+      pts->SetPoint(n - 1, x, y, z); // the provisional vertex moves on
+    } else {
+      if (n >= maxPoints_) return;         // the cap: the trace stops growing, it is never rebuilt
+      anchor_ = n == 0 ? p : provisional_; // the provisional vertex stays
+      samples_.clear();
+      provisional_ = p;
+      const vtkIdType id = pts->InsertNextPoint(x, y, z);
+      if (id > 0) {
+        const vtkIdType seg[2] = {id - 1, id};
+        data_->GetLines()->InsertNextCell(2, seg);
+        data_->GetLines()->Modified();
+      }
     }
-    if (d2 < minSpacing2_) lastIsProvisional_ = true;
-  }
-  if (n >= maxPoints_) return; // the cap: the trace stops growing, it is never rebuilt
-  const vtkIdType id = pts->InsertNextPoint(x, y, z);
-  if (id > 0) {
-    const vtkIdType seg[2] = {id - 1, id};
-    data_->GetLines()->InsertNextCell(2, seg);
   }
   pts->Modified();
-  data_->GetLines()->Modified();
   data_->Modified();
 }
 

@@ -5,11 +5,15 @@
 
 #include <cstring>
 #include <filesystem>
+#include <vector>
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPNGReader.h>
 #include <vtkPNGWriter.h>
+#include <vtkRenderLargeImage.h>
 #include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkRendererCollection.h>
 #include <vtkWindowToImageFilter.h>
 
 namespace rv {
@@ -37,23 +41,60 @@ Image capture(vtkRenderWindow* window) {
   window->Render();
   vtkNew<vtkWindowToImageFilter> grab;
   grab->SetInput(window);
+  grab->ShouldRerenderOff(); // rendered just above: a second render would double the cost of a frame
   grab->ReadFrontBufferOff();
   grab->SetInputBufferTypeToRGB();
   grab->Update();
   return fromVtk(grab->GetOutput());
 }
 
-void writePng(vtkRenderWindow* window, const std::string& path, const std::string& what) {
+void writePng(vtkRenderWindow* window, const std::string& path, const std::string& what,
+              const SnapshotOptions& options) {
+  if (options.scale < 1 || options.scale > 16) throw InputError("--scale: must lie in [1, 16]");
+  if (options.transparent && options.scale > 1)
+    throw InputError("--transparent: only at scale 1 (the tiled large picture has no alpha)");
   AtomicFile file(path, what);
-  window->Render();
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(window);
-  grab->ReadFrontBufferOff();
-  grab->SetInputBufferTypeToRGB();
+  // a transparent picture: every renderer's background drawn with alpha 0, for this picture only
+  struct Saved {
+    vtkRenderer* renderer;
+    bool gradient;
+    double alpha;
+  };
+  std::vector<Saved> saved;
+  if (options.transparent) {
+    auto* renderers = window->GetRenderers();
+    renderers->InitTraversal();
+    while (vtkRenderer* r = renderers->GetNextItem()) {
+      saved.push_back({r, static_cast<bool>(r->GetGradientBackground()), r->GetBackgroundAlpha()});
+      r->GradientBackgroundOff();
+      r->SetBackgroundAlpha(0.0);
+    }
+    window->SetAlphaBitPlanes(1);
+  }
   vtkNew<vtkPNGWriter> png;
-  png->SetInputConnection(grab->GetOutputPort());
+  vtkNew<vtkWindowToImageFilter> grab;
+  vtkNew<vtkRenderLargeImage> large;
+  if (options.scale > 1) {
+    large->SetInput(window->GetRenderers()->GetFirstRenderer());
+    large->SetMagnification(options.scale);
+    png->SetInputConnection(large->GetOutputPort());
+  } else {
+    window->Render();
+    grab->SetInput(window);
+    grab->ShouldRerenderOff();
+    grab->ReadFrontBufferOff();
+    if (options.transparent)
+      grab->SetInputBufferTypeToRGBA();
+    else
+      grab->SetInputBufferTypeToRGB();
+    png->SetInputConnection(grab->GetOutputPort());
+  }
   png->SetFileName(file.tempPath().c_str());
   png->Write();
+  for (const auto& s : saved) {
+    s.renderer->SetGradientBackground(s.gradient);
+    s.renderer->SetBackgroundAlpha(s.alpha);
+  }
   if (png->GetErrorCode() != 0 || !std::filesystem::exists(file.tempPath()))
     throw ComputationError("cannot write the PNG " + path);
   file.commit();

@@ -16,9 +16,17 @@ struct Image {
 /// Renders the window and reads its pixels back.
 Image capture(vtkRenderWindow* window);
 
+/// How a snapshot differs from the window it is taken of.
+struct SnapshotOptions {
+  int scale = 1; ///< the picture is scale x the window's size, rendered in tiles (vtkRenderLargeImage)
+  bool transparent = false; ///< RGBA with the background transparent (scale 1 only)
+};
+
 /// Renders the window and writes a PNG to `path` through a temporary name (AtomicFile).
-/// Throws InputError when the path cannot be written (naming `what`), ComputationError when writing fails.
-void writePng(vtkRenderWindow* window, const std::string& path, const std::string& what = "-o");
+/// Throws InputError when the path cannot be written (naming `what`) or the options conflict,
+/// ComputationError when writing fails.
+void writePng(vtkRenderWindow* window, const std::string& path, const std::string& what = "-o",
+              const SnapshotOptions& options = {});
 
 /// Writes an Image as PNG (used for test artifacts and difference images).
 void writePng(const Image& image, const std::string& path);

@@ -1,10 +1,14 @@
 #include "render/Textures.h"
 
+#include "dynamics/core/Errors.h"
 #include <algorithm>
 #include <cmath>
+
 #include <vtkImageData.h>
 #include <vtkNew.h>
+#include <vtkPNGReader.h>
 #include <vtkTexture.h>
+#include <vtkTransform.h>
 #include <vtkUnsignedCharArray.h>
 
 namespace rv {
@@ -24,7 +28,9 @@ vtkSmartPointer<vtkTexture> textureFrom(int w, int h, const auto& pixel, bool re
   auto tex = vtkSmartPointer<vtkTexture>::New();
   tex->SetInputData(img);
   tex->InterpolateOn();
-  tex->MipmapOn();
+  // no mipmaps: trilinear filtering costs ~40 ms a 720p frame on llvmpipe (tests/bench), for a little moire
+  // far off
+  tex->MipmapOff();
   tex->SetRepeat(repeat);
   return tex;
 }
@@ -50,6 +56,30 @@ vtkSmartPointer<vtkTexture> makeBallTexture(const Rgb& color) {
         return mix(c, dark, 0.8 * line);
       },
       true);
+}
+
+vtkSmartPointer<vtkTexture> textureFor(const ObjectOptions& o,
+                                       const std::function<vtkSmartPointer<vtkTexture>()>& own) {
+  if (o.texture == "none") return nullptr;
+  vtkSmartPointer<vtkTexture> tex;
+  if (o.texture.empty()) {
+    tex = own();
+  } else {
+    vtkNew<vtkPNGReader> png;
+    png->SetFileName(o.texture.c_str());
+    png->Update();
+    if (png->GetErrorCode() != 0) throw ComputationError("cannot read the texture " + o.texture);
+    tex = vtkSmartPointer<vtkTexture>::New();
+    tex->SetInputData(png->GetOutput());
+    tex->InterpolateOn();
+    tex->SetRepeat(true);
+  }
+  if (o.gridDensity != 1) {
+    vtkNew<vtkTransform> scale;
+    scale->Scale(o.gridDensity, o.gridDensity, 1);
+    tex->SetTransform(scale);
+  }
+  return tex;
 }
 
 vtkSmartPointer<vtkTexture> makeCheckerTexture(const Rgb& light, const Rgb& dark, const Rgb& line) {

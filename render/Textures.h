@@ -3,6 +3,7 @@
 #pragma once
 #include "render/ViewOptions.h"
 
+#include <functional>
 #include <vtkSmartPointer.h>
 
 class vtkTexture;
@@ -15,5 +16,11 @@ vtkSmartPointer<vtkTexture> makeBallTexture(const Rgb& color);
 
 /// One checkerboard cell pair (2 x 2 cells) with grid lines on the cell edges; repeats.
 vtkSmartPointer<vtkTexture> makeCheckerTexture(const Rgb& light, const Rgb& dark, const Rgb& line);
+
+/// The texture an object's options ask for: its own (`texture` empty: `own()`), none ("none": nullptr), or a
+/// PNG file, repeated `gridDensity` times as often as the object's own. Throws ComputationError when the PNG
+/// cannot be read.
+vtkSmartPointer<vtkTexture> textureFor(const ObjectOptions& options,
+                                       const std::function<vtkSmartPointer<vtkTexture>()>& own);
 
 } // namespace rv

@@ -1,11 +1,14 @@
 #include "render/VisualScene.h"
 
 #include "render/BodyMeshes.h"
+#include "render/objects/ApexObject.h"
 #include "render/objects/BodyAxesObject.h"
 #include "render/objects/BodyObject.h"
 #include "render/objects/ContactTraceObject.h"
+#include "render/objects/FrameObjects.h"
 #include "render/objects/PhaseCurveObject.h"
 #include "render/objects/PlaneObject.h"
+#include "render/objects/SceneAxesObject.h"
 #include "render/objects/SurfaceObject.h"
 
 #include <algorithm>
@@ -14,6 +17,7 @@
 #include <numbers>
 #include <vtkCamera.h>
 #include <vtkLightKit.h>
+#include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
@@ -45,7 +49,21 @@ VisualScene::VisualScene(const Model& model, const ViewOptions& options, const E
   const auto pose = model.pose(x0.data());
   const long cap = options.maxTracePoints;
   const auto geometry = model.geometry();
-  if (geometry && pose) {
+  std::array<double, 3> lo{}, hi{}; // where the scene axes go unless the scene gives their range
+  if (geometry && pose && options.kind == ViewKind::Apex) {
+    scale_ = 1; // the unit sphere
+    const LookingIn frame = options.lookingIn;
+    add(std::make_unique<UnitSphereObject>("sphere"));
+    for (int i = 0; i < 3; ++i)
+      add(std::make_unique<ApexObject>(std::string("apex_") + "xyz"[i], i, frame, cap));
+    const Eigen::Vector3d half = geometry->shape == BodyShape::Paraboloid
+                                     ? Eigen::Vector3d(0.5, 0.5, 0.3)
+                                     : Eigen::Vector3d(geometry->semiAxes);
+    const Eigen::Vector3d box = 0.7 * half / half.maxCoeff();
+    add(std::make_unique<BodyBoxObject>("box", frame, std::array<double, 3>{box[0], box[1], box[2]}));
+    add(std::make_unique<VectorObject>("vector", frame));
+    lo = {-1, -1, -1}, hi = {1, 1, 1};
+  } else if (geometry && pose) {
     scale_ = bodySize(*geometry);
     if (const auto support = model.support())
       add(std::make_unique<SurfaceObject>("surface", *support));
@@ -55,10 +73,15 @@ VisualScene::VisualScene(const Model& model, const ViewOptions& options, const E
     add(std::make_unique<BodyObject>(geometry->shape == BodyShape::Ball ? "ball" : "body", *geometry));
     add(std::make_unique<ContactTraceObject>("body_trace", ContactTraceObject::On::Body, scale_, cap));
     add(std::make_unique<BodyAxesObject>("axes", *geometry, scale_));
+    const Eigen::Vector3d c = pose->contact;
+    lo = {c[0] - 4 * scale_, c[1] - 4 * scale_, 0.0},
+    hi = {c[0] + 4 * scale_, c[1] + 4 * scale_, 2.5 * scale_};
   } else {
     scale_ = std::max(1.0, x0.head(std::min<Eigen::Index>(3, x0.size())).norm());
     add(std::make_unique<PhaseCurveObject>(model.isMap() ? "points" : "curve", scale_, cap, model.isMap()));
+    lo = {-scale_, -scale_, -scale_}, hi = {scale_, scale_, scale_};
   }
+  add(std::make_unique<SceneAxesObject>("scene_axes", options.axes, lo, hi));
   show(0.0, x0);
   resetCamera();
 }
@@ -67,6 +90,11 @@ VisualScene::~VisualScene() = default;
 
 vtkRenderer* VisualScene::renderer() const {
   return renderer_;
+}
+
+void VisualScene::addTo(vtkRenderWindow* window) const {
+  window->SetMultiSamples(options_.multisamples);
+  window->AddRenderer(renderer_);
 }
 
 VisualObject& VisualScene::add(std::unique_ptr<VisualObject> object) {
@@ -92,6 +120,11 @@ void VisualScene::setOptions(const std::string& name, const ObjectOptions& optio
   if (auto* o = find(name)) o->apply(options);
 }
 
+void VisualScene::setAxes(const AxesOptions& axes) {
+  options_.axes = axes;
+  if (auto* a = dynamic_cast<SceneAxesObject*>(find("scene_axes"))) a->setAxes(axes);
+}
+
 void VisualScene::advance(double t, const Eigen::VectorXd& x) {
   const auto pose = model_.pose(x.data());
   const FrameState s{t, x.data(), model_, pose};
@@ -105,7 +138,7 @@ void VisualScene::show(double t, const Eigen::VectorXd& x) {
   for (auto& o : objects_)
     o->show(s);
   const Eigen::Vector3d focus = pose ? pose->center : Eigen::Vector3d::Zero();
-  if (options_.camera.follow && pose) {
+  if (options_.camera.follow && pose && options_.kind == ViewKind::Motion) {
     // carry the camera along with the body, keeping whatever view the user has turned to
     vtkCamera* cam = renderer_->GetActiveCamera();
     const Eigen::Vector3d d = focus - focus_;
@@ -150,6 +183,15 @@ void VisualScene::placeCamera() {
     cam->SetViewUp(0, 1, 0); // looking straight down (2D maps): y up on the screen
   else
     cam->SetViewUp(0, 0, 1);
+  if (options_.kind == ViewKind::Apex && model_.geometry()) {
+    // the unit sphere at the origin, the camera fixed
+    const double dist = options_.camera.distance > 0 ? options_.camera.distance : 6.5;
+    cam->SetFocalPoint(0, 0, 0);
+    cam->SetPosition(dist * dir[0], dist * dir[1], dist * dir[2]);
+    cam->SetViewAngle(30);
+    renderer_->ResetCameraClippingRange();
+    return;
+  }
   if (!model_.geometry()) {
     // frame whatever has been drawn so far, from the requested direction
     cam->SetFocalPoint(0, 0, 0);

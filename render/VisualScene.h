@@ -11,6 +11,7 @@
 #include <vtkSmartPointer.h>
 
 class vtkRenderer;
+class vtkRenderWindow;
 class vtkTextActor;
 
 namespace rv {
@@ -22,6 +23,8 @@ public:
   ~VisualScene();
 
   vtkRenderer* renderer() const;
+  /// Shows the scene in a window (adds the renderer, applies the window's options such as multisampling).
+  void addTo(vtkRenderWindow* window) const;
   /// Registers an object under its name (replacing one of the same name) and applies saved options.
   VisualObject& add(std::unique_ptr<VisualObject> object);
   VisualObject* find(const std::string& name) const;
@@ -29,6 +32,8 @@ public:
   /// Changes an object's appearance; the options are kept for re-runs.
   void setOptions(const std::string& name, const ObjectOptions& options);
   const ViewOptions& options() const { return options_; }
+  /// Changes the scene axes' style, range and ticks; kept for re-runs like object options.
+  void setAxes(const AxesOptions& axes);
 
   /// A state between frames (traces record it).
   void advance(double t, const Eigen::VectorXd& x);

@@ -87,9 +87,33 @@ void readParameters(const json& j, const Where& w, ParameterValues& values,
   }
 }
 
+// three numbers [x, y, z]
+std::array<double, 3> triple(const json& j, const Where& w, bool positive) {
+  if (!j.is_array() || j.size() != 3) w.fail("expected three numbers [x, y, z]");
+  std::array<double, 3> v{};
+  for (int i = 0; i < 3; ++i) {
+    v[i] = number(j[i], w / std::to_string(i));
+    if (positive && !(v[i] > 0)) (w / std::to_string(i)).fail("must be positive");
+  }
+  return v;
+}
+
+// "none", or a PNG: a path relative to the scene file, or the name of one in assets/textures
+std::string texturePath(const std::string& name, const Where& w) {
+  namespace fs = std::filesystem;
+  if (name == "none") return name;
+  const fs::path own = fs::path(w.file).parent_path() / name;
+  if (fs::is_regular_file(own)) return fs::absolute(own).string();
+  const fs::path asset = fs::path(scenesDirectory()).parent_path() / "assets" / "textures" / (name + ".png");
+  if (fs::is_regular_file(asset)) return asset.string();
+  w.fail("no texture \"" + name + "\" (a PNG next to the scene, a name in assets/textures, or none)");
+}
+
 ObjectOptions readObject(const json& j, const Where& w) {
   requireObject(j, w);
-  onlyKeys(j, w, {"enabled", "color", "opacity", "style", "trace_color", "line_width"});
+  onlyKeys(j, w,
+           {"enabled", "color", "opacity", "style", "trace_color", "line_width", "trace", "grid_density",
+            "texture", "size", "vector"});
   ObjectOptions o;
   const auto color = [&](const char* key) {
     const std::string s = text(j[key], w / key);
@@ -102,12 +126,20 @@ ObjectOptions readObject(const json& j, const Where& w) {
   if (j.contains("trace_color")) o.traceColor = color("trace_color");
   if (j.contains("opacity")) {
     o.opacity = number(j["opacity"], w / "opacity");
-    if (o.opacity < 0 || o.opacity > 1) (w / "opacity").fail("must lie in [0, 1]");
+    if (*o.opacity < 0 || *o.opacity > 1) (w / "opacity").fail("must lie in [0, 1]");
   }
   if (j.contains("line_width")) {
     o.lineWidth = number(j["line_width"], w / "line_width");
     if (!(o.lineWidth > 0 && o.lineWidth <= 50)) (w / "line_width").fail("must lie in (0, 50]");
   }
+  if (j.contains("trace")) o.trace = boolean(j["trace"], w / "trace");
+  if (j.contains("grid_density")) {
+    o.gridDensity = number(j["grid_density"], w / "grid_density");
+    if (!(o.gridDensity >= 0.05 && o.gridDensity <= 20)) (w / "grid_density").fail("must lie in [0.05, 20]");
+  }
+  if (j.contains("texture")) o.texture = texturePath(text(j["texture"], w / "texture"), w / "texture");
+  if (j.contains("size")) o.size = triple(j["size"], w / "size", true);
+  if (j.contains("vector")) o.vector = triple(j["vector"], w / "vector", false);
   if (j.contains("style")) {
     const std::string s = text(j["style"], w / "style");
     if (s == "fill")
@@ -124,7 +156,9 @@ ObjectOptions readObject(const json& j, const Where& w) {
 
 ViewOptions readView(const json& j, const Where& w) {
   requireObject(j, w);
-  onlyKeys(j, w, {"objects", "camera", "overlay", "speed", "max_trace_points"});
+  onlyKeys(j, w,
+           {"objects", "camera", "overlay", "speed", "max_trace_points", "multisamples", "kind", "looking_in",
+            "axes"});
   ViewOptions v;
   if (j.contains("objects")) {
     requireObject(j["objects"], w / "objects");
@@ -145,6 +179,51 @@ ViewOptions readView(const json& j, const Where& w) {
   if (j.contains("speed")) {
     v.speed = number(j["speed"], w / "speed");
     if (!(v.speed > 0)) (w / "speed").fail("must be positive");
+  }
+  if (j.contains("multisamples")) {
+    v.multisamples = static_cast<int>(number(j["multisamples"], w / "multisamples"));
+    if (v.multisamples < 0 || v.multisamples > 16) (w / "multisamples").fail("must lie in [0, 16]");
+  }
+  if (j.contains("kind")) {
+    const std::string s = text(j["kind"], w / "kind");
+    if (s != "motion" && s != "apex") (w / "kind").fail("expected motion or apex, got \"" + s + "\"");
+    v.kind = s == "apex" ? ViewKind::Apex : ViewKind::Motion;
+  }
+  if (j.contains("looking_in")) {
+    const std::string s = text(j["looking_in"], w / "looking_in");
+    if (s != "absolute" && s != "body")
+      (w / "looking_in").fail("expected absolute or body, got \"" + s + "\"");
+    v.lookingIn = s == "body" ? LookingIn::Body : LookingIn::Absolute;
+  }
+  if (j.contains("axes")) {
+    const Where wa = w / "axes";
+    const json& a = requireObject(j["axes"], wa);
+    onlyKeys(a, wa, {"style", "ticks", "min", "max", "tickmarks", "subticks"});
+    if (a.contains("style")) {
+      const std::string s = text(a["style"], wa / "style");
+      if (s == "none")
+        v.axes.style = AxesOptions::Style::None;
+      else if (s == "normal")
+        v.axes.style = AxesOptions::Style::Normal;
+      else if (s == "box")
+        v.axes.style = AxesOptions::Style::Box;
+      else
+        (wa / "style").fail("expected none, normal or box, got \"" + s + "\"");
+    }
+    if (a.contains("ticks")) v.axes.ticks = boolean(a["ticks"], wa / "ticks");
+    if (a.contains("min")) v.axes.min = triple(a["min"], wa / "min", false);
+    if (a.contains("max")) v.axes.max = triple(a["max"], wa / "max", false);
+    if (v.axes.min && v.axes.max)
+      for (int i = 0; i < 3; ++i)
+        if (!((*v.axes.max)[i] > (*v.axes.min)[i])) (wa / "max").fail("must exceed min on every axis");
+    const auto count = [&](const char* key, int lo, int hi) {
+      const double n = number(a[key], wa / key);
+      if (n != std::floor(n) || n < lo || n > hi)
+        (wa / key).fail("must be a whole number in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+      return static_cast<int>(n);
+    };
+    if (a.contains("tickmarks")) v.axes.tickmarks = count("tickmarks", 1, 50);
+    if (a.contains("subticks")) v.axes.subticks = count("subticks", 0, 20);
   }
   if (j.contains("max_trace_points")) {
     v.maxTracePoints = static_cast<long>(number(j["max_trace_points"], w / "max_trace_points"));

@@ -23,6 +23,7 @@ struct RenderOptions {
   SceneArgs scene;
   std::string output, size = "1280x720";
   double time = 10;
+  SnapshotOptions snapshot;
 };
 struct ChartOptions {
   SceneArgs scene;
@@ -45,6 +46,9 @@ Command addRenderCommand(CLI::App& app) {
   cmd->add_option("--size", o->size, "picture size WIDTHxHEIGHT")->capture_default_str();
   cmd->add_option("--time", o->time, "simulation time to show (the trace covers [0, time])")
       ->capture_default_str();
+  cmd->add_option("--scale", o->snapshot.scale, "picture = scale x size, rendered in tiles (1..16)")
+      ->capture_default_str();
+  cmd->add_flag("--transparent", o->snapshot.transparent, "transparent background (RGBA PNG)");
   return {cmd, [o] {
             const auto [w, h] = parseSize(o->size);
             if (!(std::isfinite(o->time) && o->time >= 0))
@@ -56,8 +60,8 @@ Command addRenderCommand(CLI::App& app) {
             Eigen::VectorXd x;
             playTo(visual, *integrator, o->time, x);
             auto ctx = createHeadlessContext(w, h);
-            ctx->window()->AddRenderer(visual.renderer());
-            writePng(ctx->window(), o->output, "-o");
+            visual.addTo(ctx->window());
+            writePng(ctx->window(), o->output, "-o", o->snapshot);
             ctx->window()->RemoveRenderer(visual.renderer());
             return 0;
           }};
@@ -109,7 +113,7 @@ Command addVideoCommand(CLI::App& app) {
             auto integrator = scene.startIntegrator();
             VisualScene visual(*scene.model, scene.view, scene.initialState);
             auto ctx = createHeadlessContext(w, h);
-            ctx->window()->AddRenderer(visual.renderer());
+            visual.addTo(ctx->window());
             VideoSpec spec{.path = o->output,
                            .width = w,
                            .height = h,

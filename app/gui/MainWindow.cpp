@@ -138,7 +138,7 @@ void MainWindow::restart() {
   stream_.reset(); // joins the worker before anything it uses changes
   if (!visual_) {
     visual_ = std::make_unique<VisualScene>(*scene_->model, scene_->view, scene_->initialState);
-    view_->renderWindow()->AddRenderer(visual_->renderer());
+    visual_->addTo(view_->renderWindow());
   } else {
     visual_->clear();
     visual_->show(0.0, scene_->initialState);

@@ -51,7 +51,7 @@ void BodyAxesObject::attach(vtkRenderer* renderer) {
 
 void BodyAxesObject::apply(const ObjectOptions& o) {
   actor_->SetVisibility(o.enabled);
-  actor_->GetProperty()->SetOpacity(o.opacity);
+  actor_->GetProperty()->SetOpacity(o.opacity.value_or(1.0));
   actor_->GetProperty()->SetLineWidth(static_cast<float>(o.lineWidth));
 }
 

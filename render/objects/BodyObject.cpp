@@ -45,11 +45,13 @@ void BodyObject::attach(vtkRenderer* renderer) {
 
 void BodyObject::apply(const ObjectOptions& o) {
   const Rgb color = o.color.value_or(Rgb{0.19, 0.44, 1.0});
-  body_->SetTexture(makeBallTexture(color));
+  body_->SetTexture(textureFor(o, [&] { return makeBallTexture(color); }));
+  const Rgb base = body_->GetTexture() ? Rgb{1, 1, 1} : color; // a texture carries the colour itself
+  body_->GetProperty()->SetColor(base[0], base[1], base[2]);
   body_->SetVisibility(o.enabled);
   shadow_->SetVisibility(o.enabled);
   auto* p = body_->GetProperty();
-  p->SetOpacity(o.opacity);
+  p->SetOpacity(o.opacity.value_or(1.0));
   p->SetRepresentation(o.style == SurfaceStyle::Grid ? VTK_WIREFRAME : VTK_SURFACE);
   p->SetEdgeVisibility(o.style == SurfaceStyle::Both);
   p->SetEdgeColor(0.1, 0.1, 0.1);

@@ -12,7 +12,8 @@ ContactTraceObject::ContactTraceObject(std::string name, On on, double scale, lo
 
 void ContactTraceObject::apply(const ObjectOptions& o) {
   const Rgb fallback = on_ == On::Support ? Rgb{0.82, 0.13, 0.1} : Rgb{0.95, 0.75, 0.1};
-  line_.setAppearance(o.traceColor.value_or(o.color.value_or(fallback)), o.lineWidth, o.opacity, o.enabled);
+  line_.setAppearance(o.traceColor.value_or(o.color.value_or(fallback)), o.lineWidth, o.opacity.value_or(1.0),
+                      o.enabled);
 }
 
 void ContactTraceObject::advance(const FrameState& s) {

@@ -39,8 +39,9 @@ PlaneObject::PlaneObject(std::string name, double cell, double halfSize)
   mapper->SetInputData(quad_);
   actor_ = vtkSmartPointer<vtkActor>::New();
   actor_->SetMapper(mapper);
-  actor_->GetProperty()->SetAmbient(0.25);
-  actor_->GetProperty()->SetDiffuse(0.8);
+  // unlit: a flat plane under directional lights is one shade anyway, and lighting it costs a third of the
+  // frame on software GL (tests/bench)
+  actor_->GetProperty()->LightingOff();
   place(0, 0);
 }
 
@@ -49,11 +50,14 @@ void PlaneObject::attach(vtkRenderer* renderer) {
 }
 
 void PlaneObject::apply(const ObjectOptions& o) {
-  const Rgb light = o.color.value_or(Rgb{0.93, 0.93, 0.91});
+  const Rgb light = o.color.value_or(Rgb{0.92, 0.92, 0.89});
   const Rgb dark = {light[0] * 0.9, light[1] * 0.9, light[2] * 0.9};
-  actor_->SetTexture(makeCheckerTexture(light, dark, {0.55, 0.55, 0.6}));
+  actor_->SetTexture(textureFor(o, [&] { return makeCheckerTexture(light, dark, {0.55, 0.55, 0.6}); }));
+  const Rgb base = actor_->GetTexture() ? Rgb{1, 1, 1} : light; // a texture carries the colour itself
+  actor_->GetProperty()->SetColor(base[0], base[1], base[2]);
   actor_->SetVisibility(o.enabled);
-  actor_->GetProperty()->SetOpacity(o.opacity);
+  actor_->GetProperty()->SetOpacity(o.opacity.value_or(1.0));
+
   actor_->GetProperty()->SetRepresentation(o.style == SurfaceStyle::Grid ? VTK_WIREFRAME : VTK_SURFACE);
 }
 

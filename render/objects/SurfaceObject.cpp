@@ -29,9 +29,11 @@ void SurfaceObject::attach(vtkRenderer* renderer) {
 void SurfaceObject::apply(const ObjectOptions& o) {
   const Rgb light = o.color.value_or(Rgb{0.93, 0.9, 0.84});
   const Rgb dark = {light[0] * 0.88, light[1] * 0.88, light[2] * 0.88};
-  actor_->SetTexture(makeCheckerTexture(light, dark, {0.55, 0.55, 0.6}));
+  actor_->SetTexture(textureFor(o, [&] { return makeCheckerTexture(light, dark, {0.55, 0.55, 0.6}); }));
+  const Rgb base = actor_->GetTexture() ? Rgb{1, 1, 1} : light; // a texture carries the colour itself
+  actor_->GetProperty()->SetColor(base[0], base[1], base[2]);
   actor_->SetVisibility(o.enabled);
-  actor_->GetProperty()->SetOpacity(o.opacity);
+  actor_->GetProperty()->SetOpacity(o.opacity.value_or(1.0));
   actor_->GetProperty()->SetRepresentation(o.style == SurfaceStyle::Grid ? VTK_WIREFRAME : VTK_SURFACE);
   actor_->GetProperty()->SetEdgeVisibility(o.style == SurfaceStyle::Both);
 }

@@ -10,6 +10,7 @@
 #include "scenes/SceneCharts.h"
 #include "scenes/SceneLoader.h"
 #include "tests/render/ImageCompare.h"
+#include "tests/render/Play.h"
 
 #include <gtest/gtest.h>
 #include <vtkCamera.h>
@@ -19,32 +20,8 @@
 namespace rv {
 namespace {
 
-// a default scene (with --set overrides) played to time t: the visual scene and the state it shows
-struct Played {
-  Scene scene;
-  std::unique_ptr<VisualScene> visual;
-  Eigen::VectorXd x;
-};
-
-std::unique_ptr<Played> play(const std::string& id, double t, const std::vector<std::string>& sets = {}) {
-  std::vector<SceneOverride> overrides;
-  for (const auto& s : sets)
-    overrides.push_back(parseOverride(s));
-  auto p = std::make_unique<Played>(Played{loadScene(defaultScenePath(id), overrides)});
-  p->visual = std::make_unique<VisualScene>(*p->scene.model, p->scene.view, p->scene.initialState);
-  auto integrator = p->scene.startIntegrator();
-  playTo(*p->visual, *integrator, t, p->x);
-  return p;
-}
-
-Image renderScene(const std::string& id, double t, int w = 640, int h = 360) {
-  const auto p = play(id, t);
-  auto ctx = createHeadlessContext(w, h);
-  ctx->window()->AddRenderer(p->visual->renderer());
-  Image img = capture(ctx->window());
-  ctx->window()->RemoveRenderer(p->visual->renderer());
-  return img;
-}
+using test::play;
+using test::renderScene;
 
 TEST(Render, FlatPicturesAreRejected) {
   const Image flat{.width = 64, .height = 64, .rgb = std::vector<unsigned char>(64 * 64 * 3, 128)};
@@ -82,7 +59,7 @@ TEST(Render, TheBallIsDrawnWhereTheModelPutsIt) {
   VisualScene& visual = *played->visual;
   const Eigen::VectorXd& x = played->x;
   auto ctx = createHeadlessContext(640, 360);
-  ctx->window()->AddRenderer(visual.renderer());
+  visual.addTo(ctx->window());
   const Image with = capture(ctx->window());
   ObjectOptions hidden;
   hidden.enabled = false;
@@ -116,7 +93,7 @@ TEST(Render, TraceGrowsAlongTheMotion) {
   VisualScene& visual = *played->visual;
   const auto* trace = dynamic_cast<const ContactTraceObject*>(visual.find("trace"));
   ASSERT_NE(trace, nullptr);
-  EXPECT_GT(trace->points(), 100);
+  EXPECT_GT(trace->points(), 3); // simplified: a vertex where the path bends by the tolerance
   visual.clear();
   EXPECT_EQ(trace->points(), 0);
 }
@@ -128,7 +105,7 @@ TEST(Render, BodyTraceFollowsTheContactOnTheBall) {
   const Eigen::VectorXd& x = played->x;
   const auto* trace = dynamic_cast<const ContactTraceObject*>(played->visual->find("body_trace"));
   ASSERT_NE(trace, nullptr);
-  EXPECT_GT(trace->points(), 50);
+  EXPECT_GT(trace->points(), 10);
   const Eigen::Vector3d gamma = x.segment<3>(3);
   const Eigen::Vector3d p = trace->lastPoint();
   EXPECT_NEAR(p.normalized().dot(-gamma.normalized()), 1.0, 1e-12);
@@ -151,17 +128,14 @@ TEST(Render, BodyAxesFollowTheOrientation) {
         << "axis " << i;
   // drawn: the picture changes where the axes are when they are hidden again
   auto ctx = createHeadlessContext(320, 180);
-  ctx->window()->AddRenderer(visual.renderer());
+  visual.addTo(ctx->window());
   const Image with = capture(ctx->window());
   ObjectOptions off;
   off.enabled = false;
   visual.setOptions("axes", off);
   const Image without = capture(ctx->window());
   ctx->window()->RemoveRenderer(visual.renderer());
-  long changed = 0;
-  for (std::size_t i = 0; i < with.rgb.size(); ++i)
-    changed += std::abs(int(with.rgb[i]) - int(without.rgb[i])) > 40;
-  EXPECT_GT(changed, 60);
+  EXPECT_GT(test::pixelsChanged(with, without), 60);
 }
 
 // every chart view, on a scene where it is quick and meaningful, against its baseline

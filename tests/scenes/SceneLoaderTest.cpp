@@ -64,6 +64,38 @@ TEST(SceneLoader, ErrorsNameFileAndJsonPath) {
   EXPECT_NE(errorOf(j).find("s.json:colour: unknown key"), std::string::npos) << errorOf(j);
 }
 
+TEST(SceneLoader, ViewOptionsAreCheckedAndKept) {
+  json j = ball();
+  j["view"] = {
+      {"kind", "apex"},
+      {"looking_in", "body"},
+      {"multisamples", 4},
+      {"axes", {{"style", "box"}, {"min", {0, 0, 0}}, {"max", {1, 2, 3}}, {"tickmarks", 4}}},
+      {"objects", {{"ball", {{"texture", "stripes"}, {"grid_density", 2}}}, {"box", {{"size", {1, 2, 3}}}}}}};
+  const Scene s = sceneFromJson(j, "s.json", {});
+  EXPECT_EQ(s.view.kind, ViewKind::Apex);
+  EXPECT_EQ(s.view.lookingIn, LookingIn::Body);
+  EXPECT_EQ(s.view.multisamples, 4);
+  EXPECT_EQ(s.view.axes.style, AxesOptions::Style::Box);
+  EXPECT_EQ(s.view.axes.tickmarks, 4);
+  EXPECT_TRUE(s.view.objects.at("ball").texture.ends_with("assets/textures/stripes.png"));
+  EXPECT_EQ(s.view.objects.at("ball").gridDensity, 2);
+  EXPECT_EQ(s.view.objects.at("box").size, (std::array<double, 3>{1, 2, 3}));
+  const auto fails = [&](const json& view, const std::string& what) {
+    json k = ball();
+    k["view"] = view;
+    EXPECT_NE(errorOf(k).find(what), std::string::npos) << errorOf(k);
+  };
+  fails({{"kind", "sideways"}}, "s.json:view.kind: expected motion or apex");
+  fails({{"axes", {{"style", "fancy"}}}}, "s.json:view.axes.style: expected none, normal or box");
+  fails({{"axes", {{"min", {0, 0, 0}}, {"max", {1, 0, 1}}}}}, "s.json:view.axes.max: must exceed min");
+  fails({{"axes", {{"tickmarks", 2.5}}}}, "s.json:view.axes.tickmarks: must be a whole number");
+  fails({{"objects", {{"ball", {{"texture", "no_such_picture"}}}}}},
+        "s.json:view.objects.ball.texture: no texture");
+  fails({{"objects", {{"box", {{"size", {1, -2, 3}}}}}}}, "s.json:view.objects.box.size.1: must be positive");
+  fails({{"multisamples", 64}}, "s.json:view.multisamples: must lie in [0, 16]");
+}
+
 TEST(SceneLoader, OverridesSetParametersAndFields) {
   const Scene s =
       sceneFromJson(ball(), "s.json", {parseOverride("energy=0.4"), parseOverride("integrator.step=0.002")});

@@ -1,0 +1,119 @@
+#include "render/objects/SceneAxesObject.h"
+
+#include "dynamics/core/Format.h"
+
+#include <algorithm>
+#include <vtkActor.h>
+#include <vtkAxisActor.h>
+#include <vtkOutlineSource.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderer.h>
+#include <vtkStringArray.h>
+#include <vtkTextProperty.h>
+
+namespace rv {
+
+SceneAxesObject::SceneAxesObject(std::string name, const AxesOptions& axes,
+                                 const std::array<double, 3>& fallbackMin,
+                                 const std::array<double, 3>& fallbackMax)
+    : VisualObject(std::move(name)), axes_(axes), fallbackLo_(fallbackMin), fallbackHi_(fallbackMax) {
+  const char* titles[3] = {"x", "y", "z"};
+  for (int i = 0; i < 3; ++i) {
+    auto a = vtkSmartPointer<vtkAxisActor>::New();
+    a->SetAxisType(i); // VTK_AXIS_TYPE_X, _Y, _Z
+    a->SetTitle(titles[i]);
+    a->SetTickLocationToOutside();
+    a->SetCalculateTitleOffset(false);
+    a->SetCalculateLabelOffset(false);
+    for (auto* p : {a->GetTitleTextProperty(), a->GetLabelTextProperty()}) {
+      p->SetColor(0.1, 0.1, 0.15);
+      p->SetFontFamilyToArial();
+    }
+    a->GetAxisLinesProperty()->SetColor(0.15, 0.15, 0.2);
+    a->GetAxisMajorTicksProperty()->SetColor(0.15, 0.15, 0.2);
+    a->GetAxisMinorTicksProperty()->SetColor(0.15, 0.15, 0.2);
+    axis_[i] = a;
+  }
+  outline_ = vtkSmartPointer<vtkOutlineSource>::New();
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(outline_->GetOutputPort());
+  box_ = vtkSmartPointer<vtkActor>::New();
+  box_->SetMapper(mapper);
+  box_->GetProperty()->SetColor(0.3, 0.3, 0.36);
+  box_->GetProperty()->SetLighting(false);
+}
+
+void SceneAxesObject::attach(vtkRenderer* renderer) {
+  renderer_ = renderer;
+  for (auto& a : axis_) {
+    a->SetCamera(renderer->GetActiveCamera());
+    renderer->AddActor(a);
+  }
+  renderer->AddActor(box_);
+  rebuild();
+}
+
+void SceneAxesObject::apply(const ObjectOptions& o) {
+  enabled_ = o.enabled;
+  rebuild();
+}
+
+void SceneAxesObject::setAxes(const AxesOptions& axes) {
+  axes_ = axes;
+  rebuild();
+}
+
+std::vector<double> SceneAxesObject::majorTicks(int i) const {
+  std::vector<double> ticks;
+  for (int k = 0; k <= axes_.tickmarks; ++k)
+    ticks.push_back(lo_[i] + (hi_[i] - lo_[i]) * k / axes_.tickmarks);
+  return ticks;
+}
+
+void SceneAxesObject::rebuild() {
+  lo_ = axes_.min.value_or(fallbackLo_);
+  hi_ = axes_.max.value_or(fallbackHi_);
+  const bool shown = enabled_ && axes_.style != AxesOptions::Style::None;
+  const double bounds[6] = {lo_[0], hi_[0], lo_[1], hi_[1], lo_[2], hi_[2]};
+  const double extent = std::max({hi_[0] - lo_[0], hi_[1] - lo_[1], hi_[2] - lo_[2]});
+  for (int i = 0; i < 3; ++i) {
+    auto& a = axis_[i];
+    double p1[3] = {lo_[0], lo_[1], lo_[2]}, p2[3] = {lo_[0], lo_[1], lo_[2]};
+    p2[i] = hi_[i];
+    a->SetPoint1(p1);
+    a->SetPoint2(p2);
+    a->SetBounds(bounds);
+    a->SetRange(lo_[i], hi_[i]);
+    const double major = (hi_[i] - lo_[i]) / axes_.tickmarks;
+    const double minor = major / (axes_.subticks + 1);
+    // vtkAxisActor places ticks in world coordinates (…Start/Delta…) and numbers them in range units
+    a->SetMajorStart(i, lo_[i]);
+    a->SetDeltaMajor(i, major);
+    a->SetMinorStart(lo_[i]);
+    a->SetDeltaMinor(minor);
+    a->SetMajorRangeStart(lo_[i]);
+    a->SetDeltaRangeMajor(major);
+    a->SetMinorRangeStart(lo_[i]);
+    a->SetDeltaRangeMinor(minor);
+    vtkNew<vtkStringArray> labels;
+    for (double v : majorTicks(i))
+      labels->InsertNextValue(format("%g", std::abs(v) < 1e-12 * extent ? 0.0 : v));
+    a->SetLabels(labels);
+    a->SetMajorTickSize(0.02 * extent);
+    a->SetMinorTickSize(0.01 * extent);
+    a->SetLabelOffset(0.04 * extent);
+    a->SetTitleOffset(0.09 * extent);
+    a->SetLabelScale(0.018 * extent);
+    a->SetTitleScale(0.026 * extent);
+    a->SetTickVisibility(axes_.ticks);
+    a->SetMinorTicksVisible(axes_.ticks && axes_.subticks > 0);
+    a->SetLabelVisibility(axes_.ticks);
+    a->SetTitleVisibility(true);
+    a->SetVisibility(shown);
+  }
+  outline_->SetBounds(bounds);
+  box_->SetVisibility(shown && axes_.style == AxesOptions::Style::Box);
+}
+
+} // namespace rv

@@ -1,0 +1,40 @@
+// SceneAxesObject.h -- the scene's coordinate axes (manual §2.4.6: axes style none / normal / box; the axis
+// tab: ticks and subticks, range min/max, numbers of tickmarks and subticks). Three vtkAxisActor with the
+// ticks placed exactly where asked (vtkCubeAxesActor picks its own "nice" ticks), plus the box's edges.
+#pragma once
+#include "render/objects/VisualObject.h"
+
+#include <array>
+#include <vector>
+#include <vtkSmartPointer.h>
+
+class vtkActor;
+class vtkAxisActor;
+class vtkOutlineSource;
+
+namespace rv {
+
+class SceneAxesObject final : public VisualObject {
+public:
+  /// `fallbackMin/Max`: the range when the options give none (the region the scene is drawn in).
+  SceneAxesObject(std::string name, const AxesOptions& axes, const std::array<double, 3>& fallbackMin,
+                  const std::array<double, 3>& fallbackMax);
+  void attach(vtkRenderer* renderer) override;
+  void apply(const ObjectOptions& options) override;
+  /// Changes the style, range and ticks (the scene's view.axes).
+  void setAxes(const AxesOptions& axes);
+  /// The numbers written at the major ticks of axis i (0, 1, 2), lowest first.
+  std::vector<double> majorTicks(int axis) const;
+
+private:
+  void rebuild();
+  AxesOptions axes_;
+  std::array<double, 3> lo_, hi_, fallbackLo_, fallbackHi_;
+  bool enabled_ = true;
+  std::array<vtkSmartPointer<vtkAxisActor>, 3> axis_;
+  vtkSmartPointer<vtkOutlineSource> outline_;
+  vtkSmartPointer<vtkActor> box_;
+  vtkRenderer* renderer_ = nullptr;
+};
+
+} // namespace rv

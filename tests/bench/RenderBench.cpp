@@ -1,0 +1,91 @@
+// Headless frame time and video export throughput at 1280x720 on the EGL backend (software GL here).
+// Figures, not tests; see README.md. The frame cases render a default scene played to t = 2, with
+// multisampling off and on, and with a trace of 10^6 points (against the bare scene).
+#include "render/Snapshot.h"
+#include "render/VisualScene.h"
+#include "render/context/HeadlessContext.h"
+#include "render/objects/ContactTraceObject.h"
+#include "render/video/VideoExport.h"
+#include "scenes/SceneLoader.h"
+
+#include <benchmark/benchmark.h>
+#include <filesystem>
+#include <vtkRenderWindow.h>
+
+namespace rv {
+namespace {
+
+const char* const kScenes[] = {"paraboloid_on_plane", "ellipsoid_on_plane", "ball_on_ellipsoid",
+                               "ball_on_paraboloid", "chaplygin_ball"};
+
+struct Setup {
+  Scene scene;
+  std::unique_ptr<VisualScene> visual;
+  std::unique_ptr<Integrator> integrator;
+  std::unique_ptr<HeadlessContext> context;
+};
+
+// a default scene played to t = 2 (or through `tracePoints` integrator steps), attached to a 1280x720 window
+std::unique_ptr<Setup> setUp(const std::string& id, int samples, long tracePoints = 0) {
+  auto s = std::make_unique<Setup>(Setup{loadScene(defaultScenePath(id), {})});
+  s->scene.view.multisamples = samples;
+  s->visual = std::make_unique<VisualScene>(*s->scene.model, s->scene.view, s->scene.initialState);
+  s->integrator = s->scene.startIntegrator();
+  Eigen::VectorXd x;
+  if (tracePoints > 0) {
+    for (long k = 0; k < tracePoints; ++k) {
+      s->integrator->step();
+      s->visual->advance(s->integrator->time(), s->integrator->state());
+    }
+    x = s->integrator->state();
+    s->visual->show(s->integrator->time(), x);
+  } else {
+    playTo(*s->visual, *s->integrator, 2.0, x);
+  }
+  s->context = createHeadlessContext(1280, 720);
+  s->visual->addTo(s->context->window());
+  capture(s->context->window()); // first frame: shader compilation, buffer uploads
+  return s;
+}
+
+void frame(benchmark::State& state, const std::string& id, int samples, long tracePoints) {
+  const auto s = setUp(id, samples, tracePoints);
+  for (auto _ : state)
+    benchmark::DoNotOptimize(capture(s->context->window()));
+  for (const char* name : {"trace", "body_trace"})
+    if (const auto* t = dynamic_cast<const ContactTraceObject*>(s->visual->find(name)))
+      state.counters[name] = static_cast<double>(t->points());
+}
+
+void videoExport(benchmark::State& state) {
+  const auto path = std::filesystem::temp_directory_path() / "rollviz_bench.mp4";
+  long frames = 0;
+  for (auto _ : state) {
+    const auto s = setUp("ellipsoid_on_plane", 0);
+    VideoSpec spec{.path = path.string(), .width = 1280, .height = 720, .fps = 25, .duration = 4};
+    frames += exportVideo(*s->visual, s->context->window(), *s->integrator, spec);
+  }
+  std::filesystem::remove(path);
+  state.counters["frames"] = static_cast<double>(frames);
+}
+
+const bool registered = [] {
+  for (const char* id : kScenes)
+    for (int samples : {0, 8})
+      benchmark::RegisterBenchmark(
+          ("Frame720p/" + std::string(id) + "/msaa" + std::to_string(samples)).c_str(), frame, id, samples, 0)
+          ->Unit(benchmark::kMillisecond);
+  // a long trace: the rattleback's dense scribble around one spot (worst case), the ball's path across the
+  // plane
+  for (const char* id : {"ellipsoid_on_plane", "chaplygin_ball"})
+    benchmark::RegisterBenchmark(("Frame720p/" + std::string(id) + "/msaa0/trace1e6").c_str(), frame, id, 0,
+                                 1000000)
+        ->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("VideoExport720p/ellipsoid_on_plane/4s", videoExport)
+      ->Unit(benchmark::kMillisecond)
+      ->Iterations(1);
+  return true;
+}();
+
+} // namespace
+} // namespace rv

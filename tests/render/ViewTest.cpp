@@ -1,0 +1,217 @@
+// The apex view, the scene axes, textures, snapshots (large, transparent), long traces and a cancelled video:
+// built with RenderTest.cpp, so it runs on EGL and on OSMesa.
+#include "render/GrowingPolyline.h"
+
+#include "render/objects/ApexObject.h"
+#include "render/objects/FrameObjects.h"
+#include "render/objects/SceneAxesObject.h"
+#include "render/video/Mp4Writer.h"
+#include "tests/render/ImageCompare.h"
+#include "tests/render/Play.h"
+#include <Eigen/LU>
+
+#include <cstdio>
+#include <filesystem>
+#include <gtest/gtest.h>
+#include <numbers>
+#include <vtkImageData.h>
+#include <vtkPNGReader.h>
+
+namespace rv {
+namespace {
+
+using test::play;
+
+Image renderPlayed(VisualScene& visual, int w = 480, int h = 360) {
+  auto ctx = createHeadlessContext(w, h);
+  visual.addTo(ctx->window());
+  Image img = capture(ctx->window());
+  ctx->window()->RemoveRenderer(visual.renderer());
+  return img;
+}
+
+// looking in the body's frame, the apex of the fixed z axis is R^T e_z = gamma, which the state carries
+// itself (chaplygin_ball: M then gamma): the rotation the apexes use is the integrated orientation, an
+// independent reading
+TEST(ApexView, TheFixedVerticalSeenFromTheBodyIsGamma) {
+  const auto p = play("chaplygin_ball", 4.0, {"view.kind=apex", "view.looking_in=body"});
+  const auto* z = dynamic_cast<const ApexObject*>(p->visual->find("apex_z"));
+  ASSERT_NE(z, nullptr);
+  const Eigen::Vector3d gamma = p->x.segment<3>(3);
+  EXPECT_NEAR((z->tip() - gamma.normalized()).norm(), 0, 1e-9);
+  EXPECT_GT(z->tracePoints(), 10);
+}
+
+// looking in the absolute frame the apexes are the body's axes: orthonormal and right-handed, and the height
+// of each is gamma_i (the vertical in the body's frame)
+TEST(ApexView, TheBodysAxesSeenFromSpaceAreOrthonormalWithHeightsGamma) {
+  const auto p = play("chaplygin_ball", 4.0, {"view.kind=apex"});
+  Eigen::Matrix3d r;
+  for (int i = 0; i < 3; ++i) {
+    const auto* a = dynamic_cast<const ApexObject*>(p->visual->find(std::string("apex_") + "xyz"[i]));
+    ASSERT_NE(a, nullptr);
+    r.col(i) = a->tip();
+  }
+  EXPECT_NEAR((r.transpose() * r - Eigen::Matrix3d::Identity()).norm(), 0, 1e-12);
+  EXPECT_NEAR(r.determinant(), 1, 1e-12);
+  const Eigen::Vector3d gamma = p->x.segment<3>(3).normalized();
+  for (int i = 0; i < 3; ++i)
+    EXPECT_NEAR(r(2, i), gamma[i], 1e-9) << "axis " << i;
+}
+
+// an arbitrary vector fixed in the body: given as the body's first axis at t = 0, it stays the first axis
+TEST(ApexView, AnArbitraryVectorTurnsWithTheBody) {
+  const auto p0 = play("chaplygin_ball", 0.0, {"view.kind=apex"});
+  const Eigen::Vector3d e1 = dynamic_cast<const ApexObject*>(p0->visual->find("apex_x"))->tip();
+  const std::string v = "view.objects.vector.vector=[" + std::to_string(2 * e1[0]) + "," +
+                        std::to_string(2 * e1[1]) + "," + std::to_string(2 * e1[2]) + "]";
+  const auto p = play("chaplygin_ball", 3.0, {"view.kind=apex", "view.objects.vector.enabled=true", v});
+  const auto* vector = dynamic_cast<const VectorObject*>(p->visual->find("vector"));
+  const auto* x = dynamic_cast<const ApexObject*>(p->visual->find("apex_x"));
+  ASSERT_NE(vector, nullptr);
+  EXPECT_NEAR((vector->value() - 2 * x->tip()).norm(), 0, 1e-5); // to_string keeps 6 decimals
+  EXPECT_GT((x->tip() - e1).norm(), 0.1) << "the body has turned";
+}
+
+TEST(ApexView, MatchesItsBaseline) {
+  const auto p = play("ellipsoid_on_plane", 30.0,
+                      {"view.kind=apex", "view.axes.style=box", "view.objects.vector.enabled=true"});
+  const Image img = renderPlayed(*p->visual);
+  ASSERT_TRUE(test::isVaried(img));
+  EXPECT_EQ(test::matchesBaseline(img, "apex_ellipsoid_on_plane_t30"), "");
+}
+
+TEST(SceneAxes, TicksAreWhereTheRangeAndCountsPutThem) {
+  const auto p = play(
+      "chaplygin_ball", 1.0,
+      {"view.axes.style=box", "view.axes.min=[0,-2,0]", "view.axes.max=[10,2,1]", "view.axes.tickmarks=5"});
+  const auto* axes = dynamic_cast<const SceneAxesObject*>(p->visual->find("scene_axes"));
+  ASSERT_NE(axes, nullptr);
+  const std::vector<double> x = axes->majorTicks(0), y = axes->majorTicks(1);
+  ASSERT_EQ(x.size(), 6u);
+  ASSERT_EQ(y.size(), 6u);
+  for (int k = 0; k <= 5; ++k) {
+    EXPECT_NEAR(x[k], 2.0 * k, 1e-12);
+    EXPECT_NEAR(y[k], -2 + 0.8 * k, 1e-12);
+  }
+  // drawn: switching them off changes the picture
+  const Image with = renderPlayed(*p->visual);
+  AxesOptions none;
+  p->visual->setAxes(none);
+  EXPECT_GT(test::pixelsChanged(with, renderPlayed(*p->visual)), 300);
+}
+
+TEST(Objects, TextureNoneAndAPngChangeTheBall) {
+  const auto own = play("chaplygin_ball", 1.0);
+  const auto plain = play("chaplygin_ball", 1.0, {"view.objects.ball.texture=none"});
+  const auto png = play("chaplygin_ball", 1.0, {"view.objects.ball.texture=stripes"});
+  const Image a = renderPlayed(*own->visual), b = renderPlayed(*plain->visual),
+              c = renderPlayed(*png->visual);
+  EXPECT_GT(test::pixelsChanged(a, b), 500);
+  EXPECT_GT(test::pixelsChanged(a, c), 500);
+  EXPECT_GT(test::pixelsChanged(b, c), 500);
+}
+
+TEST(Snapshot, TransparentBackgroundAndLargePictures) {
+  const auto p = play("chaplygin_ball", 1.0, {"view.kind=apex"});
+  auto ctx = createHeadlessContext(200, 150);
+  p->visual->addTo(ctx->window());
+  const auto dir = std::filesystem::temp_directory_path();
+  const std::string clear = (dir / "rv_clear.png").string(), large = (dir / "rv_large.png").string();
+  writePng(ctx->window(), clear, "-o", {.transparent = true});
+  writePng(ctx->window(), large, "-o", {.scale = 3});
+  const Image normal = capture(ctx->window());
+  ctx->window()->RemoveRenderer(p->visual->renderer());
+
+  vtkNew<vtkPNGReader> png;
+  png->SetFileName(clear.c_str());
+  png->Update();
+  ASSERT_EQ(png->GetOutput()->GetNumberOfScalarComponents(), 4);
+  const auto* rgba = static_cast<const unsigned char*>(png->GetOutput()->GetScalarPointer(0, 0, 0));
+  EXPECT_EQ(rgba[3], 0) << "a corner is background";
+  const auto* centre = static_cast<const unsigned char*>(png->GetOutput()->GetScalarPointer(100, 75, 0));
+  EXPECT_GT(centre[3], 100) << "the sphere is not background";
+
+  // three times the size, and the same picture: every 3x3 block averages to the window's pixel
+  const Image big = readPng(large);
+  ASSERT_EQ(big.width, 600);
+  ASSERT_EQ(big.height, 450);
+  Image shrunk{.width = 200, .height = 150, .rgb = std::vector<unsigned char>(200 * 150 * 3)};
+  for (int y = 0; y < 150; ++y)
+    for (int x = 0; x < 200; ++x)
+      for (int c = 0; c < 3; ++c) {
+        int sum = 0;
+        for (int dy = 0; dy < 3; ++dy)
+          for (int dx = 0; dx < 3; ++dx)
+            sum += big.rgb[(std::size_t(3 * y + dy) * 600 + 3 * x + dx) * 3 + c];
+        shrunk.rgb[(std::size_t(y) * 200 + x) * 3 + c] = static_cast<unsigned char>(sum / 9);
+      }
+  EXPECT_LT(test::compareImages(normal, shrunk).meanAbs, 6.0);
+  std::filesystem::remove(clear);
+  std::filesystem::remove(large);
+}
+
+// the streaming simplification keeps the drawn line within its tolerance of every point appended, with far
+// fewer vertices: a circle of radius 1 sampled 100 000 times, tolerance 1e-3 (checked at half of it), needs
+// about 2 pi / sqrt(8 * 5e-4) = 100 vertices
+TEST(Trace, LongTracesAreSimplifiedWithinTheirTolerance) {
+  GrowingPolyline line(1e-3, 1000000);
+  std::vector<Eigen::Vector3d> points;
+  const int n = 100000;
+  for (int k = 0; k <= n; ++k) {
+    const double a = 2 * std::numbers::pi * k / n;
+    points.emplace_back(std::cos(a), std::sin(a), 0.01 * std::sin(7 * a));
+    line.append(points.back()[0], points.back()[1], points.back()[2]);
+  }
+  EXPECT_GT(line.size(), 50);
+  EXPECT_LT(line.size(), 200);
+  std::vector<Eigen::Vector3d> vertices;
+  for (long i = 0; i < line.size(); ++i)
+    vertices.push_back(line.vertex(i));
+  // (VTK keeps points in single precision)
+  EXPECT_NEAR((vertices.front() - points.front()).norm(), 0, 1e-6);
+  EXPECT_NEAR((vertices.back() - points.back()).norm(), 0, 1e-6);
+  double worst = 0;
+  for (const auto& q : points) {
+    double best = 1e9;
+    for (std::size_t i = 0; i + 1 < vertices.size(); ++i) {
+      const Eigen::Vector3d d = vertices[i + 1] - vertices[i];
+      const double s = std::clamp((q - vertices[i]).dot(d) / d.squaredNorm(), 0.0, 1.0);
+      best = std::min(best, (vertices[i] + s * d - q).norm());
+    }
+    worst = std::max(worst, best);
+  }
+  EXPECT_LE(worst, 1e-3 + 1e-6);
+}
+
+int countFrames(const std::string& path) {
+  const std::string cmd =
+      "ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames "
+      "-of csv=p=0 '" +
+      path + "'";
+  FILE* f = popen(cmd.c_str(), "r");
+  if (!f) return -1;
+  int frames = -1;
+  if (std::fscanf(f, "%d", &frames) != 1) frames = -1;
+  pclose(f);
+  return frames;
+}
+
+// a cancelled export leaves a valid, shorter video: the frames rendered so far, finished properly
+TEST(Video, ACancelledExportIsAValidShorterVideo) {
+  const auto p = play("chaplygin_ball", 0.0);
+  auto integrator = p->scene.startIntegrator();
+  auto ctx = createHeadlessContext(320, 240);
+  p->visual->addTo(ctx->window());
+  const std::string path = (std::filesystem::temp_directory_path() / "rv_cancelled.mp4").string();
+  VideoSpec spec{.path = path, .width = 320, .height = 240, .fps = 10, .duration = 5};
+  const long written =
+      exportVideo(*p->visual, ctx->window(), *integrator, spec, [](long done, long) { return done < 7; });
+  ctx->window()->RemoveRenderer(p->visual->renderer());
+  EXPECT_EQ(written, 7);
+  EXPECT_EQ(countFrames(path), 7);
+  std::filesystem::remove(path);
+}
+
+} // namespace
+} // namespace rv
