@@ -5,9 +5,11 @@
 #include "dynamics/jobs/RunSpec.h"
 #include "dynamics/tools/FourierSpectrum.h"
 #include "dynamics/tools/Lyapunov.h"
+#include "dynamics/tools/PlotFilter.h"
 #include "dynamics/tools/PoincareMap.h"
 #include "render/ViewOptions.h"
 
+#include <array>
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -15,6 +17,15 @@
 #include <string>
 
 namespace rv {
+
+/// The 2D / 3D plot filter of a scene ("plot" section): what to sample and how to draw it.
+struct PlotView {
+  PlotSettings settings;
+  std::array<std::optional<double>, 6>
+      range;                    ///< x_min, x_max, y_min, y_max, z_min, z_max; nothing: the data's
+  bool holdProportions = false; ///< equal scales on the axes
+  float pointSize = 4;          ///< small 2, middle 4, big 7 pixels
+};
 
 /// A validated scene: everything needed to integrate and to draw.
 struct Scene {
@@ -28,6 +39,7 @@ struct Scene {
   SectionSettings poincare;  ///< "poincare": section, value, direction, points (maxPoints), ...
   LyapunovSettings lyapunov; ///< "lyapunov"
   SpectrumSettings spectrum; ///< "spectrum"
+  PlotView plot;             ///< "plot"
   ViewOptions view;
   /// The fixed-point family's settings by section key ("fixedpoint", "continuation", ...; see
   /// ToolSettings.h).

@@ -14,8 +14,9 @@
 namespace rv {
 
 const std::vector<std::string>& chartViews() {
-  static const std::vector<std::string> v{"poincare", "multipliers", "bifurcation", "continuation",
-                                          "spectrum", "lyapunov",    "surface",     "ram"};
+  static const std::vector<std::string> v{"poincare",    "map3d",        "plot",     "multipliers",
+                                          "bifurcation", "continuation", "spectrum", "lyapunov",
+                                          "surface",     "ram"};
   return v;
 }
 
@@ -69,9 +70,54 @@ std::unique_ptr<PoincareChart> gridChart(const Scene& scene, MapGrid::Kind kind,
 
 } // namespace
 
-std::unique_ptr<PoincareChart> sceneChart(const Scene& scene, const std::string& view,
-                                          const ToolControl& control, long points) {
+std::unique_ptr<Chart> sceneChart(const Scene& scene, const std::string& view, const ToolControl& control,
+                                  long points) {
   std::unique_ptr<PoincareChart> chart;
+  if (view == "map3d") {
+    // a 3D map's three coordinates; a 2D map's points on the energy level, in the first three state variables
+    const auto map = scenePoincareMap(scene, points);
+    const bool threeD = map->coordinateNames().size() >= 3;
+    const auto& state = scene.model->info().stateNames;
+    if (!threeD && state.size() < 3)
+      throw InputError("--view map3d: " + scene.model->info().id + " has no 3D map");
+    std::array<std::vector<double>, 3> c;
+    while (auto p = map->next(control))
+      for (int i = 0; i < 3; ++i)
+        c[i].push_back(threeD ? p->coordinates[i] : map->lastState()[i]);
+    const auto& n = threeD ? map->coordinateNames() : state;
+    auto chart3 = std::make_unique<Chart3D>(std::array<std::string, 3>{n[0], n[1], n[2]});
+    chart3->addSeries(c[0], c[1], c[2], seriesColor(0), 3);
+    return chart3;
+  }
+  if (view == "plot") {
+    const PlotView& pv = scene.plot;
+    auto integ = scene.startIntegrator();
+    const auto pts = samplePlot(*scene.model, *integ, pv.settings, control, "plot");
+    std::array<std::vector<double>, 3> c;
+    for (const auto& p : pts)
+      for (std::size_t i = 0; i < p.size(); ++i)
+        c[i].push_back(p[i]);
+    const auto& axes = pv.settings.axes;
+    if (axes.size() == 3) {
+      auto chart3 = std::make_unique<Chart3D>(std::array<std::string, 3>{axes[0], axes[1], axes[2]});
+      chart3->addSeries(c[0], c[1], c[2], seriesColor(0), pv.pointSize);
+      chart3->setRanges(pv.range);
+      chart3->setEqualScales(pv.holdProportions);
+      return chart3;
+    }
+    chart = std::make_unique<PoincareChart>(axes[0], axes[1]);
+    chart->addSeries(c[0], c[1], seriesColor(0));
+    chart->setMarkerSize(pv.pointSize);
+    const auto& r = pv.range;
+    if (r[0] || r[1] || r[2] || r[3]) {
+      const auto [x0, x1] = std::minmax_element(c[0].begin(), c[0].end());
+      const auto [y0, y1] = std::minmax_element(c[1].begin(), c[1].end());
+      if (!c[0].empty())
+        chart->setRanges(r[0].value_or(*x0), r[1].value_or(*x1), r[2].value_or(*y0), r[3].value_or(*y1));
+    }
+    chart->setEqualAspect(pv.holdProportions);
+    return chart;
+  }
   if (view == "poincare") {
     const auto map = scenePoincareMap(scene, points);
     std::vector<double> x, y;

@@ -1,8 +1,11 @@
 // SceneCharts.h -- every chart view of a scene (manual §2.4.1-§2.4.4), computed and drawn: the Poincare map,
 // the multipliers of the continued fixed point, the bifurcation diagram, the continuation family, the
 // Fourier spectrum, the Lyapunov exponents against time, the |Map(x) - x| surface and the region of allowed
-// motion. One definition for `rollviz chart`, the image tests and the GUI.
+// motion, Map3D (the 3D map, or a 2D map's points on its energy level in the first three state variables) and
+// the 2D / 3D plot filter (scene section "plot"). One definition for `rollviz chart`, the image tests and the
+// GUI.
 #pragma once
+#include "render/charts/Chart3D.h"
 #include "render/charts/PoincareChart.h"
 #include "scenes/Scene.h"
 
@@ -18,7 +21,7 @@ const std::vector<std::string>& chartViews();
 /// Computes what `view` shows for the scene and draws it. `points` > 0 overrides poincare.points. Throws
 /// InputError for an unknown view or one the problem does not have; Stopped results are drawn as far as they
 /// got.
-std::unique_ptr<PoincareChart> sceneChart(const Scene& scene, const std::string& view,
-                                          const ToolControl& control, long points = 0);
+std::unique_ptr<Chart> sceneChart(const Scene& scene, const std::string& view, const ToolControl& control,
+                                  long points = 0);
 
 } // namespace rv

@@ -322,6 +322,41 @@ SpectrumSettings readSpectrum(const json& j, const Where& w) {
   return s;
 }
 
+PlotView readPlot(const json& j, const Where& w) {
+  requireObject(j, w);
+  onlyKeys(j, w,
+           {"x", "y", "z", "condition", "period", "max_points", "time_limit", "x_min", "x_max", "y_min",
+            "y_max", "z_min", "z_max", "hold_proportions", "point_type"});
+  PlotView p;
+  if (j.contains("x")) p.settings.axes[0] = text(j["x"], w / "x");
+  if (j.contains("y")) p.settings.axes[1] = text(j["y"], w / "y");
+  if (j.contains("z")) p.settings.axes.push_back(text(j["z"], w / "z"));
+  if (j.contains("condition")) p.settings.condition = text(j["condition"], w / "condition");
+  if (j.contains("period")) p.settings.period = positive(j["period"], w / "period");
+  if (j.contains("max_points")) p.settings.maxPoints = count(j["max_points"], w / "max_points", 1);
+  if (j.contains("time_limit")) p.settings.timeLimit = positive(j["time_limit"], w / "time_limit");
+  const char* keys[6] = {"x_min", "x_max", "y_min", "y_max", "z_min", "z_max"};
+  for (int i = 0; i < 6; ++i)
+    if (j.contains(keys[i])) p.range[i] = number(j[keys[i]], w / keys[i]);
+  for (int i = 0; i < 3; ++i)
+    if (p.range[2 * i] && p.range[2 * i + 1] && !(*p.range[2 * i + 1] > *p.range[2 * i]))
+      (w / keys[2 * i + 1]).fail(std::string("must exceed ") + keys[2 * i]);
+  if (j.contains("hold_proportions"))
+    p.holdProportions = boolean(j["hold_proportions"], w / "hold_proportions");
+  if (j.contains("point_type")) {
+    const std::string s = text(j["point_type"], w / "point_type");
+    if (s == "small")
+      p.pointSize = 2;
+    else if (s == "middle")
+      p.pointSize = 4;
+    else if (s == "big")
+      p.pointSize = 7;
+    else
+      (w / "point_type").fail("expected small, middle or big, got \"" + s + "\"");
+  }
+  return p;
+}
+
 Eigen::VectorXd readInitial(const json& j, const Where& w, const Model& model,
                             const SectionSettings& poincare) {
   requireObject(j, w);
@@ -402,8 +437,8 @@ void applyOverrides(json& doc, const std::vector<SceneOverride>& overrides) {
       doc["parameters"][o.key] = value;
       continue;
     }
-    static const std::set<std::string> sections{"integrator", "initial", "poincare",  "lyapunov",
-                                                "spectrum",   "view",    "parameters"};
+    static const std::set<std::string> sections{"integrator", "initial", "poincare",   "lyapunov",
+                                                "spectrum",   "plot",    "parameters", "view"};
     const std::string head = o.key.substr(0, o.key.find('.'));
     if (!sections.count(head) && !findToolSection(head))
       throw InputError(flag + ": unknown scene field '" + head + "'");
@@ -447,9 +482,9 @@ Scene sceneFromJson(json doc, const std::string& source, const std::vector<Scene
   requireObject(doc, root);
   applyOverrides(doc, overrides);
   for (const auto& [key, value] : doc.items()) {
-    static const std::set<std::string> known{"problem",  "parameters", "integrator", "initial",
-                                             "poincare", "lyapunov",   "spectrum",   "view",
-                                             "title",    "description"};
+    static const std::set<std::string> known{"problem", "parameters", "integrator", "initial",
+                                             "plot",    "poincare",   "lyapunov",   "spectrum",
+                                             "view",    "title",      "description"};
     if (!known.count(key) && !findToolSection(key)) {
       std::string list;
       for (const auto& k : known)
@@ -499,6 +534,7 @@ Scene sceneFromJson(json doc, const std::string& source, const std::vector<Scene
   if (doc.contains("poincare")) scene.poincare = readPoincare(doc["poincare"], root / "poincare");
   if (doc.contains("lyapunov")) scene.lyapunov = readLyapunov(doc["lyapunov"], root / "lyapunov");
   if (doc.contains("spectrum")) scene.spectrum = readSpectrum(doc["spectrum"], root / "spectrum");
+  if (doc.contains("plot")) scene.plot = readPlot(doc["plot"], root / "plot");
   if (!scene.poincare.observable.empty() && !scene.model->isMap() &&
       scene.model->findObservable(scene.poincare.observable) < 0)
     (root / "poincare" / "section")

@@ -4,8 +4,10 @@
 #include <cmath>
 #include <limits>
 #include <vtkAxis.h>
+#include <vtkCallbackCommand.h>
 #include <vtkChartXY.h>
 #include <vtkColorTransferFunction.h>
+#include <vtkCommand.h>
 #include <vtkContextScene.h>
 #include <vtkContextView.h>
 #include <vtkDoubleArray.h>
@@ -32,6 +34,13 @@ PoincareChart::PoincareChart(std::string xTitle, std::string yTitle) {
   view_->GetRenderer()->SetBackground(1, 1, 1);
   chart_ = vtkSmartPointer<vtkChartXY>::New();
   view_->GetScene()->AddItem(chart_);
+  // before every frame: thin the large series for the ranges about to be drawn
+  vtkNew<vtkCallbackCommand> beforeRender;
+  beforeRender->SetClientData(this);
+  beforeRender->SetCallback([](vtkObject*, unsigned long, void* self, void*) {
+    static_cast<PoincareChart*>(self)->thinLargeSeries();
+  });
+  view_->GetRenderer()->AddObserver(vtkCommand::StartEvent, beforeRender);
   chart_->GetAxis(vtkAxis::BOTTOM)->SetTitle(xTitle);
   chart_->GetAxis(vtkAxis::LEFT)->SetTitle(yTitle);
   for (int a : {vtkAxis::BOTTOM, vtkAxis::LEFT}) {
@@ -67,7 +76,12 @@ vtkSmartPointer<vtkTable> tableOf(const std::vector<double>& x, const std::vecto
 
 int PoincareChart::addSeries(const std::vector<double>& x, const std::vector<double>& y, const Rgb& c) {
   vtkPlot* plot = chart_->AddPlot(vtkChart::POINTS);
-  plot->SetInputData(tableOf(x, y, chart_->GetNumberOfPlots()), 0, 1);
+  const int index = static_cast<int>(chart_->GetNumberOfPlots()) - 1;
+  plot->SetInputData(tableOf(x, y, index), 0, 1);
+  if (x.size() > kThinAbove) {
+    large_.push_back({plot, index, x, y});
+    thinnedFor_ = {};
+  }
   plot->SetColor(static_cast<unsigned char>(255 * c[0]), static_cast<unsigned char>(255 * c[1]),
                  static_cast<unsigned char>(255 * c[2]), 255);
   if (auto* points = vtkPlotPoints::SafeDownCast(plot)) {
@@ -139,6 +153,8 @@ void PoincareChart::setRanges(double x0, double x1, double y0, double y1) {
 
 void PoincareChart::setSeries(int index, const std::vector<double>& x, const std::vector<double>& y) {
   if (vtkPlot* plot = chart_->GetPlot(index)) {
+    std::erase_if(large_, [&](const LargeSeries& s) { return s.index == index; });
+    if (x.size() > kThinAbove) large_.push_back({plot, index, x, y}), thinnedFor_ = {};
     plot->SetInputData(tableOf(x, y, index), 0, 1);
     chart_->RecalculateBounds();
   }
@@ -146,7 +162,48 @@ void PoincareChart::setSeries(int index, const std::vector<double>& x, const std
 
 void PoincareChart::clear() {
   chart_->ClearPlots();
+  large_.clear();
   selected_ = -1;
+}
+
+void PoincareChart::thinLargeSeries() {
+  if (large_.empty()) return;
+  vtkAxis* ax = chart_->GetAxis(vtkAxis::BOTTOM);
+  vtkAxis* ay = chart_->GetAxis(vtkAxis::LEFT);
+  const int* p1 = chart_->GetPoint1();
+  const int* p2 = chart_->GetPoint2();
+  int w = p2[0] - p1[0], h = p2[1] - p1[1];
+  if (w <= 0 || h <= 0) { // not laid out yet: the window's size
+    const int* size = view_->GetRenderWindow()->GetSize();
+    w = size[0], h = size[1];
+  }
+  const std::array<double, 6> key = {ax->GetMinimum(), ax->GetMaximum(), ay->GetMinimum(),
+                                     ay->GetMaximum(), double(w),        double(h)};
+  if (key == thinnedFor_) return;
+  thinnedFor_ = key;
+  const double cell = std::max(1.0f, markerSize_ / 2); // pixels per cell: half a marker keeps the coverage
+  const int nx = std::max(1, static_cast<int>(w / cell)), ny = std::max(1, static_cast<int>(h / cell));
+  const double x0 = key[0], sx = nx / (key[1] - key[0]), y0 = key[2], sy = ny / (key[3] - key[2]);
+  std::vector<unsigned char> taken(std::size_t(nx) * ny);
+  for (auto& s : large_) {
+    std::fill(taken.begin(), taken.end(), 0);
+    std::vector<double> kx, ky;
+    // the extremes stay, so that the data's bounds (and automatic ranges) do not change with the view
+    std::size_t lo[2] = {0, 0}, hi[2] = {0, 0};
+    for (std::size_t k = 0; k < s.x.size(); ++k) {
+      if (s.x[k] < s.x[lo[0]]) lo[0] = k;
+      if (s.x[k] > s.x[hi[0]]) hi[0] = k;
+      if (s.y[k] < s.y[lo[1]]) lo[1] = k;
+      if (s.y[k] > s.y[hi[1]]) hi[1] = k;
+      const double i = (s.x[k] - x0) * sx, j = (s.y[k] - y0) * sy;
+      if (!(i >= 0 && i < nx && j >= 0 && j < ny)) continue;
+      auto& t = taken[std::size_t(j) * nx + std::size_t(i)];
+      if (!t) t = 1, kx.push_back(s.x[k]), ky.push_back(s.y[k]);
+    }
+    for (std::size_t k : {lo[0], hi[0], lo[1], hi[1]})
+      kx.push_back(s.x[k]), ky.push_back(s.y[k]);
+    s.plot->SetInputData(tableOf(kx, ky, s.index), 0, 1);
+  }
 }
 
 bool PoincareChart::toChart(double px, double py, double& x, double& y) const {
@@ -164,12 +221,36 @@ bool PoincareChart::toChart(double px, double py, double& x, double& y) const {
 void PoincareChart::select(int index) {
   for (vtkIdType i = 0; i < chart_->GetNumberOfPlots(); ++i)
     if (auto* points = vtkPlotPoints::SafeDownCast(chart_->GetPlot(i)))
-      points->SetMarkerSize(i == index ? 6 : 3);
+      points->SetMarkerSize(i == index ? 2 * markerSize_ : markerSize_);
   selected_ = index;
+}
+
+void PoincareChart::setMarkerSize(float size) {
+  markerSize_ = size;
+  thinnedFor_ = {};
+  select(selected_);
 }
 
 void PoincareChart::attach(vtkRenderWindow* window) {
   view_->SetRenderWindow(window);
+  if (!equalAspect_) return;
+  // equal units per pixel: widen the range that is short for its side of the window (the margins are
+  // about the same on both axes, so the window's aspect stands for the plot area's)
+  chart_->RecalculateBounds();
+  vtkAxis* ax = chart_->GetAxis(vtkAxis::BOTTOM);
+  vtkAxis* ay = chart_->GetAxis(vtkAxis::LEFT);
+  const int* size = window->GetSize();
+  const double w = std::max(1, size[0] - 90), h = std::max(1, size[1] - 70);
+  double x0 = ax->GetMinimum(), x1 = ax->GetMaximum(), y0 = ay->GetMinimum(), y1 = ay->GetMaximum();
+  const double perX = (x1 - x0) / w, perY = (y1 - y0) / h;
+  if (perX > perY) {
+    const double c = (y0 + y1) / 2, half = perX * h / 2;
+    y0 = c - half, y1 = c + half;
+  } else {
+    const double c = (x0 + x1) / 2, half = perY * w / 2;
+    x0 = c - half, x1 = c + half;
+  }
+  setRanges(x0, x1, y0, y1);
 }
 
 } // namespace rv

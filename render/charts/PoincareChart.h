@@ -4,21 +4,26 @@
 // window (on screen through QtVtkWidget, headless through a HeadlessContext).
 #pragma once
 #include "render/ViewOptions.h"
+#include "render/charts/Chart.h"
 
+#include <array>
 #include <string>
 #include <vector>
 #include <vtkSmartPointer.h>
 
 class vtkChartXY;
+class vtkPlot;
 class vtkContextView;
 class vtkRenderWindow;
 
 namespace rv {
 
-class PoincareChart {
+class PoincareChart final : public Chart {
 public:
   PoincareChart(std::string xTitle, std::string yTitle);
-  ~PoincareChart();
+  ~PoincareChart() override;
+  /// Series with more points than this are thinned to what the screen can show (see LargeSeries).
+  static constexpr std::size_t kThinAbove = 100000;
   /// Adds a trajectory's points (x[i], y[i]); returns its index.
   int addSeries(const std::vector<double>& x, const std::vector<double>& y, const Rgb& color);
   /// Adds a curve through (x[i], y[i]), broken where a value is NaN; returns the index of its first piece.
@@ -38,13 +43,29 @@ public:
   /// Draws series `index` emphasised (-1: none).
   void select(int index);
   /// Draws into `window` (the chart's view takes it over).
-  void attach(vtkRenderWindow* window);
+  void attach(vtkRenderWindow* window) override;
+  /// The size of points (pixels; the selected series twice as big).
+  void setMarkerSize(float size);
+  /// Equal units per pixel on both axes (the manual's "hold proportions"): the shorter range is widened.
+  void setEqualAspect(bool equal) { equalAspect_ = equal; }
   vtkChartXY* chart() const;
 
 private:
   vtkSmartPointer<vtkContextView> view_;
   vtkSmartPointer<vtkChartXY> chart_;
+  /// Series too big to draw point by point on software GL: redrawn as one point per occupied cell of the
+  /// screen (cells of about a marker), recomputed whenever the ranges or the plot's size change.
+  struct LargeSeries {
+    vtkPlot* plot;
+    int index;
+    std::vector<double> x, y;
+  };
+  void thinLargeSeries();
+  std::vector<LargeSeries> large_;
+  std::array<double, 6> thinnedFor_{};
   int selected_ = -1;
+  float markerSize_ = 3;
+  bool equalAspect_ = false;
 };
 
 /// Distinct colours for successive trajectories.

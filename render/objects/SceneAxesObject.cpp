@@ -18,11 +18,9 @@ SceneAxesObject::SceneAxesObject(std::string name, const AxesOptions& axes,
                                  const std::array<double, 3>& fallbackMin,
                                  const std::array<double, 3>& fallbackMax)
     : VisualObject(std::move(name)), axes_(axes), fallbackLo_(fallbackMin), fallbackHi_(fallbackMax) {
-  const char* titles[3] = {"x", "y", "z"};
   for (int i = 0; i < 3; ++i) {
     auto a = vtkSmartPointer<vtkAxisActor>::New();
     a->SetAxisType(i); // VTK_AXIS_TYPE_X, _Y, _Z
-    a->SetTitle(titles[i]);
     a->SetTickLocationToOutside();
     a->SetCalculateTitleOffset(false);
     a->SetCalculateLabelOffset(false);
@@ -64,10 +62,17 @@ void SceneAxesObject::setAxes(const AxesOptions& axes) {
   rebuild();
 }
 
+void SceneAxesObject::setLabelling(const std::array<double, 3>& lo, const std::array<double, 3>& hi,
+                                   const std::array<std::string, 3>& titles) {
+  labelLo_ = lo, labelHi_ = hi, titles_ = titles;
+  rebuild();
+}
+
 std::vector<double> SceneAxesObject::majorTicks(int i) const {
+  const double a = labelLo_ ? (*labelLo_)[i] : lo_[i], b = labelHi_ ? (*labelHi_)[i] : hi_[i];
   std::vector<double> ticks;
   for (int k = 0; k <= axes_.tickmarks; ++k)
-    ticks.push_back(lo_[i] + (hi_[i] - lo_[i]) * k / axes_.tickmarks);
+    ticks.push_back(a + (b - a) * k / axes_.tickmarks);
   return ticks;
 }
 
@@ -96,9 +101,12 @@ void SceneAxesObject::rebuild() {
     a->SetDeltaRangeMajor(major);
     a->SetMinorRangeStart(lo_[i]);
     a->SetDeltaRangeMinor(minor);
+    a->SetTitle(titles_[i].c_str());
     vtkNew<vtkStringArray> labels;
-    for (double v : majorTicks(i))
-      labels->InsertNextValue(format("%g", std::abs(v) < 1e-12 * extent ? 0.0 : v));
+    const auto ticks = majorTicks(i);
+    const double span = std::abs(ticks.back() - ticks.front());
+    for (double v : ticks)
+      labels->InsertNextValue(format("%.4g", std::abs(v) < 1e-12 * span ? 0.0 : v));
     a->SetLabels(labels);
     a->SetMajorTickSize(0.02 * extent);
     a->SetMinorTickSize(0.01 * extent);

@@ -5,6 +5,8 @@
 #include "render/objects/VisualObject.h"
 
 #include <array>
+#include <optional>
+#include <string>
 #include <vector>
 #include <vtkSmartPointer.h>
 
@@ -23,6 +25,10 @@ public:
   void apply(const ObjectOptions& options) override;
   /// Changes the style, range and ticks (the scene's view.axes).
   void setAxes(const AxesOptions& axes);
+  /// Writes numbers from [lo, hi] (and these titles) along axes that span another world range (a chart
+  /// drawn scaled into a box).
+  void setLabelling(const std::array<double, 3>& lo, const std::array<double, 3>& hi,
+                    const std::array<std::string, 3>& titles);
   /// The numbers written at the major ticks of axis i (0, 1, 2), lowest first.
   std::vector<double> majorTicks(int axis) const;
 
@@ -31,6 +37,8 @@ private:
   AxesOptions axes_;
   std::array<double, 3> lo_, hi_, fallbackLo_, fallbackHi_;
   bool enabled_ = true;
+  std::optional<std::array<double, 3>> labelLo_, labelHi_;
+  std::array<std::string, 3> titles_ = {"x", "y", "z"};
   std::array<vtkSmartPointer<vtkAxisActor>, 3> axis_;
   vtkSmartPointer<vtkOutlineSource> outline_;
   vtkSmartPointer<vtkActor> box_;

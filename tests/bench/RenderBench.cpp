@@ -3,12 +3,14 @@
 // multisampling off and on, and with a trace of 10^6 points (against the bare scene).
 #include "render/Snapshot.h"
 #include "render/VisualScene.h"
+#include "render/charts/PoincareChart.h"
 #include "render/context/HeadlessContext.h"
 #include "render/objects/ContactTraceObject.h"
 #include "render/video/VideoExport.h"
 #include "scenes/SceneLoader.h"
 
 #include <benchmark/benchmark.h>
+#include <cmath>
 #include <filesystem>
 #include <vtkRenderWindow.h>
 
@@ -72,6 +74,28 @@ void videoExport(benchmark::State& state) {
   state.counters["video_fps"] = benchmark::Counter(static_cast<double>(frames), benchmark::Counter::kIsRate);
 }
 
+// a map of 10^6 points (the standard map's chaotic sea): the time to redraw it, which a pan or zoom costs
+void chartMillion(benchmark::State& state) {
+  std::vector<double> x, y;
+  double th = 0.1, p = 0.2;
+  for (int k = 0; k < 1000000; ++k) {
+    p += 1.3 * std::sin(th);
+    th += p;
+    x.push_back(std::remainder(th, 2 * M_PI)), y.push_back(std::remainder(p, 2 * M_PI));
+  }
+  PoincareChart chart("theta", "p");
+  chart.addSeries(x, y, seriesColor(0));
+  auto ctx = createHeadlessContext(800, 800);
+  chart.attach(ctx->window());
+  capture(ctx->window());
+  double shift = 0;
+  for (auto _ : state) {
+    shift += 1e-3; // a pan: new ranges every frame
+    chart.setRanges(-3 + shift, 3 + shift, -3, 3);
+    benchmark::DoNotOptimize(capture(ctx->window()));
+  }
+}
+
 const bool registered = [] {
   for (const char* id : kScenes)
     for (int samples : {0, 8})
@@ -84,6 +108,8 @@ const bool registered = [] {
     benchmark::RegisterBenchmark(("Frame720p/" + std::string(id) + "/msaa0/trace1e6").c_str(), frame, id, 0,
                                  1000000)
         ->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("Chart800/poincare/1e6points/pan", chartMillion)
+      ->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("VideoExport720p/ellipsoid_on_plane/4s", videoExport)
       ->Unit(benchmark::kMillisecond)
       ->UseRealTime()

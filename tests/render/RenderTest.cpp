@@ -163,29 +163,31 @@ TEST_P(ChartView, MatchesItsBaseline) {
 
 INSTANTIATE_TEST_SUITE_P(
     Views, ChartView,
-    ::testing::Values(ChartCase{"poincare", "standard_map", {"poincare.points=3000"}},
-                      ChartCase{"multipliers", "chaplygin_ball", {}},
-                      ChartCase{"bifurcation", "chaplygin_ball", {}},
-                      ChartCase{"continuation",
-                                "henon_map",
-                                {"b=-1", "a=2", "fixedpoint.guess=[0.4,-0.4]", "continuation.parameter=a",
-                                 "continuation.to=4", "continuation.step=0.05"}},
-                      ChartCase{"spectrum",
-                                "henon_heiles",
-                                {"spectrum.function=x", "integrator.method=rk4", "integrator.step=0.01"}},
-                      ChartCase{"lyapunov", "lorenz", {"lyapunov.time=100", "lyapunov.output_period=2"}},
-                      ChartCase{"surface",
-                                "henon_map",
-                                {"grid.x_min=-1.5", "grid.x_max=1.5", "grid.y_min=-0.5", "grid.y_max=0.5",
-                                 "fixedpoint.guess=[0.2,-0.3]", "fixedpoint.max_distance=0.15"}},
-                      ChartCase{"ram",
-                                "henon_heiles",
-                                {"grid.x_min=-0.5", "grid.x_max=0.7", "grid.y_min=-0.5", "grid.y_max=0.5",
-                                 "grid.step_x=0.01", "grid.step_y=0.01"}}),
+    ::testing::Values(
+        ChartCase{"poincare", "standard_map", {"poincare.points=3000"}},
+        ChartCase{"map3d", "chaplygin_ball", {"poincare.points=600"}},
+        ChartCase{"plot", "lorenz", {"plot.x=x", "plot.y=z", "plot.period=0.02", "plot.time_limit=30"}},
+        ChartCase{"multipliers", "chaplygin_ball", {}}, ChartCase{"bifurcation", "chaplygin_ball", {}},
+        ChartCase{"continuation",
+                  "henon_map",
+                  {"b=-1", "a=2", "fixedpoint.guess=[0.4,-0.4]", "continuation.parameter=a",
+                   "continuation.to=4", "continuation.step=0.05"}},
+        ChartCase{"spectrum",
+                  "henon_heiles",
+                  {"spectrum.function=x", "integrator.method=rk4", "integrator.step=0.01"}},
+        ChartCase{"lyapunov", "lorenz", {"lyapunov.time=100", "lyapunov.output_period=2"}},
+        ChartCase{"surface",
+                  "henon_map",
+                  {"grid.x_min=-1.5", "grid.x_max=1.5", "grid.y_min=-0.5", "grid.y_max=0.5",
+                   "fixedpoint.guess=[0.2,-0.3]", "fixedpoint.max_distance=0.15"}},
+        ChartCase{"ram",
+                  "henon_heiles",
+                  {"grid.x_min=-0.5", "grid.x_max=0.7", "grid.y_min=-0.5", "grid.y_max=0.5",
+                   "grid.step_x=0.01", "grid.step_y=0.01"}}),
     [](const auto& info) { return info.param.view; });
 
 TEST(Render, ChartViewsListIsComplete) {
-  EXPECT_EQ(chartViews().size(), 8u); // each has a baseline case above
+  EXPECT_EQ(chartViews().size(), 10u); // each has a baseline case above
 }
 
 } // namespace

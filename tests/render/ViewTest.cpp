@@ -1,6 +1,7 @@
 // The apex view, the scene axes, textures, snapshots (large, transparent), long traces and a cancelled video:
 // built with RenderTest.cpp, so it runs on EGL and on OSMesa.
 #include "render/GrowingPolyline.h"
+#include "render/charts/PoincareChart.h"
 
 #include "render/objects/ApexObject.h"
 #include "render/objects/FrameObjects.h"
@@ -211,6 +212,51 @@ TEST(Video, ACancelledExportIsAValidShorterVideo) {
   EXPECT_EQ(written, 7);
   EXPECT_EQ(countFrames(path), 7);
   std::filesystem::remove(path);
+}
+
+} // namespace
+} // namespace rv
+
+namespace rv {
+namespace {
+
+// a series of 150 000 points is thinned to one point per screen cell; the picture stays that of all points
+// (the same points drawn as two series of 75 000, which are not thinned)
+TEST(Chart, ALargeSeriesIsThinnedWithoutChangingThePicture) {
+  std::vector<double> x, y;
+  double th = 0.1, p = 0.2;
+  for (int k = 0; k < 150000; ++k) {
+    p += 1.3 * std::sin(th), th += p;
+    x.push_back(std::remainder(th, 2 * std::numbers::pi)),
+        y.push_back(std::remainder(p, 2 * std::numbers::pi));
+  }
+  static_assert(PoincareChart::kThinAbove < 150000 && PoincareChart::kThinAbove >= 75000);
+  const auto draw = [&](bool split) {
+    PoincareChart chart("theta", "p");
+    if (split) {
+      const auto half = x.begin() + 75000, halfY = y.begin() + 75000;
+      chart.addSeries({x.begin(), half}, {y.begin(), halfY}, seriesColor(0));
+      chart.addSeries({half, x.end()}, {halfY, y.end()}, seriesColor(0));
+    } else {
+      chart.addSeries(x, y, seriesColor(0));
+    }
+    chart.setRanges(-1, 1, -1.5, 0.5); // zoomed in: the thinning follows the ranges
+    auto ctx = createHeadlessContext(400, 400);
+    chart.attach(ctx->window());
+    return capture(ctx->window());
+  };
+  const Image whole = draw(false), parts = draw(true);
+  ASSERT_TRUE(test::isVaried(whole));
+  EXPECT_LT(test::compareImages(whole, parts).meanAbs, 3.0);
+  // the share of the plot the points cover (dark pixels) stays within 2.5 % of the whole picture's
+  const auto covered = [](const Image& img) {
+    long n = 0;
+    for (std::size_t p = 0; p + 2 < img.rgb.size(); p += 3)
+      n += img.rgb[p] + img.rgb[p + 1] + img.rgb[p + 2] < 600;
+    return static_cast<double>(n) / (img.width * img.height);
+  };
+  EXPECT_NEAR(covered(whole), covered(parts), 0.025);
+  EXPECT_GT(covered(whole), 0.3);
 }
 
 } // namespace

@@ -1,0 +1,93 @@
+#include "render/charts/Chart3D.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkCellArray.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+
+namespace rv {
+
+Chart3D::Chart3D(std::array<std::string, 3> titles) : titles_(std::move(titles)) {
+  renderer_ = vtkSmartPointer<vtkRenderer>::New();
+  renderer_->SetBackground(1, 1, 1);
+}
+
+Chart3D::~Chart3D() = default;
+
+int Chart3D::addSeries(const std::vector<double>& x, const std::vector<double>& y,
+                       const std::vector<double>& z, const Rgb& color, float pointSize) {
+  series_.push_back({x, y, z, color, pointSize});
+  return static_cast<int>(series_.size()) - 1;
+}
+
+void Chart3D::setRanges(const std::array<std::optional<double>, 6>& range) {
+  range_ = range;
+}
+
+void Chart3D::attach(vtkRenderWindow* window) {
+  // the box: the data's bounds where no range is given
+  std::array<double, 6> b = {1e300, -1e300, 1e300, -1e300, 1e300, -1e300};
+  for (const auto& s : series_)
+    for (int i = 0; i < 3; ++i) {
+      const auto& v = i == 0 ? s.x : i == 1 ? s.y : s.z;
+      for (double c : v)
+        if (std::isfinite(c)) b[2 * i] = std::min(b[2 * i], c), b[2 * i + 1] = std::max(b[2 * i + 1], c);
+    }
+  for (int i = 0; i < 6; ++i) {
+    if (range_[i]) b[i] = *range_[i];
+    if (std::abs(b[i]) > 1e299) b[i] = i % 2 ? 1 : -1; // no data
+  }
+  for (int i = 0; i < 3; ++i)
+    if (!(b[2 * i + 1] > b[2 * i])) b[2 * i] -= 0.5, b[2 * i + 1] += 0.5;
+  bounds_ = b;
+  // drawn in a unit-ish box: each axis scaled to length 1 unless the scales are equal
+  double scale[3];
+  const double longest = std::max({b[1] - b[0], b[3] - b[2], b[5] - b[4]});
+  for (int i = 0; i < 3; ++i)
+    scale[i] = 1.0 / (equal_ ? longest : b[2 * i + 1] - b[2 * i]);
+  renderer_->RemoveAllViewProps();
+  for (const auto& s : series_) {
+    vtkNew<vtkPoints> pts;
+    vtkNew<vtkCellArray> verts;
+    for (std::size_t k = 0; k < s.x.size(); ++k) {
+      const vtkIdType id = pts->InsertNextPoint((s.x[k] - b[0]) * scale[0], (s.y[k] - b[2]) * scale[1],
+                                                (s.z[k] - b[4]) * scale[2]);
+      verts->InsertNextCell(1, &id);
+    }
+    vtkNew<vtkPolyData> data;
+    data->SetPoints(pts);
+    data->SetVerts(verts);
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputData(data);
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(mapper);
+    actor->GetProperty()->SetColor(s.color[0], s.color[1], s.color[2]);
+    actor->GetProperty()->SetPointSize(s.size);
+    actor->GetProperty()->LightingOff();
+    renderer_->AddActor(actor);
+  }
+  // the axes carry data units over the scaled box
+  AxesOptions a;
+  a.style = AxesOptions::Style::Box;
+  a.min = std::array<double, 3>{0, 0, 0};
+  a.max = std::array<double, 3>{(b[1] - b[0]) * scale[0], (b[3] - b[2]) * scale[1], (b[5] - b[4]) * scale[2]};
+  axes_ = std::make_unique<SceneAxesObject>("axes", a, *a.min, *a.max);
+  axes_->setLabelling({b[0], b[2], b[4]}, {b[1], b[3], b[5]}, titles_);
+  axes_->attach(renderer_);
+  vtkCamera* cam = renderer_->GetActiveCamera();
+  cam->SetFocalPoint(0.5 * a.max->at(0), 0.5 * a.max->at(1), 0.5 * a.max->at(2));
+  cam->SetPosition(0.5 * a.max->at(0) + 2.2, 0.5 * a.max->at(1) - 2.6, 0.5 * a.max->at(2) + 1.6);
+  cam->SetViewUp(0, 0, 1);
+  renderer_->ResetCamera();
+  cam->Zoom(0.9); // room for the labels
+  window->AddRenderer(renderer_);
+}
+
+} // namespace rv
