@@ -138,7 +138,8 @@ void VisualScene::show(double t, const Eigen::VectorXd& x) {
   for (auto& o : objects_)
     o->show(s);
   const Eigen::Vector3d focus = pose ? pose->center : Eigen::Vector3d::Zero();
-  if (options_.camera.follow && pose && options_.kind == ViewKind::Motion) {
+  if (options_.camera.follow && pose && options_.kind == ViewKind::Motion &&
+      options_.lookingIn == LookingIn::Absolute) {
     // carry the camera along with the body, keeping whatever view the user has turned to
     vtkCamera* cam = renderer_->GetActiveCamera();
     const Eigen::Vector3d d = focus - focus_;
@@ -147,6 +148,21 @@ void VisualScene::show(double t, const Eigen::VectorXd& x) {
     cam->GetPosition(p);
     cam->SetFocalPoint(f[0] + d[0], f[1] + d[1], f[2] + d[2]);
     cam->SetPosition(p[0] + d[0], p[1] + d[1], p[2] + d[2]);
+    renderer_->ResetCameraClippingRange();
+  }
+  if (pose && options_.kind == ViewKind::Motion && options_.lookingIn == LookingIn::Body) {
+    // looking in the body's frame: the camera is carried by the body, so the body stands still on screen and
+    // the plane turns and slides under it
+    vtkCamera* cam = renderer_->GetActiveCamera();
+    const double el = options_.camera.elevation * std::numbers::pi / 180;
+    const double az = options_.camera.azimuth * std::numbers::pi / 180;
+    const Eigen::Vector3d dir(std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el));
+    const double dist = options_.camera.distance > 0 ? options_.camera.distance : 5 * scale_;
+    const Eigen::Vector3d eye = pose->center + pose->rotation * (dist * dir);
+    const Eigen::Vector3d up = pose->rotation * Eigen::Vector3d::UnitZ();
+    cam->SetFocalPoint(pose->center[0], pose->center[1], pose->center[2]);
+    cam->SetPosition(eye[0], eye[1], eye[2]);
+    cam->SetViewUp(up[0], up[1], up[2]);
     renderer_->ResetCameraClippingRange();
   }
   focus_ = focus;

@@ -147,6 +147,22 @@ class Cli(unittest.TestCase):
         mean = sum(abs(x - y) for p, q in zip(pa, pb) for x, y in zip(p, q)) / (3 * len(pa))
         self.assertLess(mean, 2.0)
 
+    def test_every_apex_scene_renders_and_snapshots_scale_and_go_transparent(self):
+        apex = os.path.join(SRC, "scenes", "apex")
+        for name in sorted(os.listdir(apex)):
+            out = self.path(name + ".png")
+            r = run("render", os.path.join(apex, name), "-o", out, "--size", "320x240", "--time", "2")
+            self.assertEqual(r.returncode, 0, name + ": " + r.stderr)
+            size, px = pixels(out)
+            self.assertEqual(size, (320, 240))
+            self.assertTrue(varied(px), name)
+        big = self.path("big.png")
+        r = run("render", SCENE, "-o", big, "--size", "160x90", "--time", "1", "--scale", "4")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertEqual(pixels(big)[0], (640, 360))
+        self.assertBadInput(run("render", SCENE, "-o", big, "--scale", "2", "--transparent"), "--transparent")
+        self.assertBadInput(run("render", SCENE, "-o", big, "--set", "view.axes.style=cube"), "view.axes.style")
+
     def test_video_has_codec_size_and_exact_frame_count(self):
         out = self.path("v.mp4")
         r = run("video", SCENE, "-o", out, "--duration", "2", "--fps", "10", "--size", "320x240")

@@ -261,3 +261,28 @@ TEST(Chart, ALargeSeriesIsThinnedWithoutChangingThePicture) {
 
 } // namespace
 } // namespace rv
+
+namespace rv {
+namespace {
+
+// looking in the body's frame the camera turns with the body: the ball's middle looks the same at any time,
+// while in the absolute frame it turns (the control)
+TEST(BodyFrameView, TheBodyStandsStillOnScreen) {
+  const auto patch = [](const Image& img) {
+    Image p{.width = 40, .height = 40, .rgb = {}};
+    for (int y = img.height / 2 - 20; y < img.height / 2 + 20; ++y)
+      for (int x = img.width / 2 - 20; x < img.width / 2 + 20; ++x)
+        for (int c = 0; c < 3; ++c)
+          p.rgb.push_back(img.rgb[(std::size_t(y) * img.width + x) * 3 + c]);
+    return p;
+  };
+  const auto at = [&](double t, const std::string& frame) {
+    const auto p = play("chaplygin_ball", t, {"view.looking_in=" + frame});
+    return patch(renderPlayed(*p->visual));
+  };
+  EXPECT_LT(test::compareImages(at(2, "body"), at(4, "body")).meanAbs, 3.0);
+  EXPECT_GT(test::compareImages(at(2, "absolute"), at(4, "absolute")).meanAbs, 15.0);
+}
+
+} // namespace
+} // namespace rv
