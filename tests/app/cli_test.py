@@ -163,6 +163,25 @@ class Cli(unittest.TestCase):
         self.assertBadInput(run("render", SCENE, "-o", big, "--scale", "2", "--transparent"), "--transparent")
         self.assertBadInput(run("render", SCENE, "-o", big, "--set", "view.axes.style=cube"), "view.axes.style")
 
+    def test_a_video_frame_shows_the_state_at_its_time(self):
+        # frame k of a video is the state at t = k * speed / fps: frame 15 at 10 fps matches a still at t = 1.5
+        # (H.264 noise aside) and not one at t = 1.2
+        out = self.path("t.mp4")
+        r = run("video", SCENE, "-o", out, "--duration", "2", "--fps", "10", "--size", "320x240")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        frame = self.path("frame15.png")
+        subprocess.run(["ffmpeg", "-v", "error", "-i", out, "-vf", "select=eq(n\\,15)", "-vframes", "1", frame],
+                       check=True)
+        stills = {}
+        for t in ("1.5", "1.2"):
+            stills[t] = self.path("still" + t + ".png")
+            r = run("render", SCENE, "-o", stills[t], "--size", "320x240", "--time", t)
+            self.assertEqual(r.returncode, 0, r.stderr)
+        (_, f), (_, a), (_, b) = pixels(frame), pixels(stills["1.5"]), pixels(stills["1.2"])
+        diff = lambda p, q: sum(abs(x - y) for u, v in zip(p, q) for x, y in zip(u, v)) / (3 * len(p))
+        self.assertLess(diff(f, a), 4.0)
+        self.assertGreater(diff(f, b), 2 * diff(f, a))
+
     def test_video_has_codec_size_and_exact_frame_count(self):
         out = self.path("v.mp4")
         r = run("video", SCENE, "-o", out, "--duration", "2", "--fps", "10", "--size", "320x240")
