@@ -1,26 +1,57 @@
 #include "app/gui/MainWindow.h"
 
+#include "app/gui/ChartWindow.h"
 #include "app/gui/ControlPanel.h"
 #include "app/gui/MapPanel.h"
 #include "app/gui/QtVtkWidget.h"
 #include "app/gui/ToolManager.h"
+#include "app/gui/VisualizerSettings.h"
 #include "dynamics/core/Errors.h"
+#include "dynamics/io/AtomicFile.h"
+#include "scenes/SceneCharts.h"
 #include "scenes/SceneLoader.h"
 
 #include <QAction>
+#include <QCloseEvent>
+#include <QComboBox>
+#include <QCoreApplication>
+#include <QDir>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
+#include <QDragEnterEvent>
+#include <QDropEvent>
+#include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QMimeData>
+#include <QProcess>
 #include <QSettings>
 #include <QStatusBar>
+#include <QTemporaryFile>
 #include <QToolBar>
+#include <QVBoxLayout>
+#include <csignal>
+#include <fstream>
 #include <vtkRenderer.h>
 
 namespace rv {
+
+// A recording is `rollviz video` on the scene as shown (the document with the settings' edits), in a child
+// process: the same frames as on the command line, no GL context shared with the window, and stopping it is
+// the command line's Ctrl-C (SIGINT): the frames so far become a valid, shorter video.
+struct MainWindow::Recording {
+  std::unique_ptr<QProcess> process = std::make_unique<QProcess>();
+  QTemporaryFile scene{QDir::tempPath() + "/rollviz-recording-XXXXXX.json"};
+  QString path;
+};
+
+static QString rollvizExecutable() {
+  if (const QString exe = qEnvironmentVariable("ROLLVIZ_EXE"); !exe.isEmpty()) return exe;
+  return QCoreApplication::applicationFilePath();
+}
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   view_ = new QtVtkWidget(this);
@@ -44,6 +75,16 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   addDockWidget(Qt::BottomDockWidgetArea, toolsDock);
   resizeDocks({toolsDock}, {150}, Qt::Vertical); // the 3D view keeps most of the height
   connect(control_, &ControlPanel::apply, this, [this](const nlohmann::json& doc) { runDocument(doc); });
+  settings_ = new VisualizerSettings(this);
+  auto* settingsDock = new QDockWidget("Visualizer settings", this);
+  settingsDock->setObjectName("settings");
+  settingsDock->setWidget(settings_);
+  addDockWidget(Qt::RightDockWidgetArea, settingsDock);
+  settingsDock->hide();
+  connect(settings_, &VisualizerSettings::objectEdited, this,
+          [this](const std::string& n, const ObjectOptions& o) { editObject(n, o); });
+  connect(settings_, &VisualizerSettings::axesEdited, this, [this](const AxesOptions& a) { editAxes(a); });
+  setAcceptDrops(true);
   resize(1400, 800);
 
   auto* bar = addToolBar("Playback");
@@ -68,6 +109,53 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   auto* snap = bar->addAction("Snapshot", this, &MainWindow::snapshot);
   snap->setShortcut(QKeySequence::Save);
   snap->setToolTip("Save the 3D view as a PNG (Ctrl+S)");
+  recordAction_ = bar->addAction("Record…", this, [this] { recording() ? stopRecording() : recordDialog(); });
+  recordAction_->setToolTip(
+      "Record the run from t = 0 into an MP4 (frames at a fixed rate in simulation time); "
+      "press again to stop (Ctrl+Shift+R)");
+  recordAction_->setShortcut(QKeySequence("Ctrl+Shift+R"));
+  auto* view = addToolBar("Visualizer");
+  view->setObjectName("visualizer");
+  view->addAction("Reset camera", this,
+                  [this] {
+                    if (visual_) visual_->resetCamera();
+                    view_->update();
+                  })
+      ->setToolTip("Put the camera back to the scene's placement");
+  auto* style = new QComboBox(this);
+  style->addItems({"fill", "grid", "both"});
+  style->setToolTip("how surfaces are drawn: filled, as a grid, or both");
+  connect(style, &QComboBox::currentIndexChanged, this, [this](int i) {
+    setStyleOfAll(i == 1 ? SurfaceStyle::Grid : i == 2 ? SurfaceStyle::Both : SurfaceStyle::Fill);
+  });
+  view->addWidget(style);
+  auto* axes = new QComboBox(this);
+  axes->addItems({"no axes", "normal axes", "box axes"});
+  axes->setToolTip("the scene's coordinate axes (ticks and range: settings, tab axis)");
+  connect(axes, &QComboBox::currentIndexChanged, this, [this](int i) {
+    AxesOptions a = edits_.axes;
+    a.style = static_cast<AxesOptions::Style>(i);
+    editAxes(a);
+  });
+  view->addWidget(axes);
+  auto* toggle = settingsDock->toggleViewAction();
+  toggle->setText("Settings");
+  toggle->setToolTip("Show or hide the visualizer's settings (objects, axis)");
+  view->addAction(toggle);
+
+  auto* file = menuBar()->addMenu("&File");
+  file->addAction("Open scene…", this, &MainWindow::openDialog);
+  file->addAction("Save scene as…", this, &MainWindow::saveDialog)->setShortcut(QKeySequence::SaveAs);
+  recentMenu_ = file->addMenu("Recent scenes");
+  fillRecentMenu();
+  file->addSeparator();
+  file->addAction("Quit", this, &QWidget::close)->setShortcut(QKeySequence::Quit);
+  auto* windows = menuBar()->addMenu("&Windows");
+  windows->addAction("Apex motion", this, [this] { openApexWindow(); })
+      ->setToolTip("the body's axes on the unit sphere as it turns (manual 2.4.5)");
+  auto* charts = windows->addMenu("Charts");
+  for (const auto& v : chartViews())
+    charts->addAction(QString::fromStdString(v), this, [this, v] { openChart(v); });
   auto* tools = menuBar()->addMenu("&Tools");
   auto* separatrices =
       tools->addAction("Separatrices of the fixed point", map_, &MapPanel::startSeparatrices);
@@ -83,14 +171,56 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 
   connect(&timer_, &QTimer::timeout, this, &MainWindow::tick);
   timer_.start(16);
+  // the layout of the last session (docks, toolbars, size)
+  restoreGeometry(QSettings().value("windowGeometry").toByteArray());
+  restoreState(QSettings().value("windowState").toByteArray());
   clock_.start();
 }
 
 MainWindow::~MainWindow() {
   timer_.stop();
+  if (recorder_) { // a recording in progress is stopped, and its video kept
+    stopRecording();
+    recorder_->process->waitForFinished(10000);
+  }
   map_->stopAll();
   stream_.reset();
   if (visual_) view_->renderWindow()->RemoveRenderer(visual_->renderer());
+  if (apex_ && apexView_) apexView_->renderWindow()->RemoveRenderer(apex_->renderer());
+  apex_.reset();
+}
+
+ViewOptions MainWindow::effectiveView(const ViewOptions& base) const {
+  ViewOptions v = base;
+  for (const auto& [name, o] : edits_.objects)
+    v.objects[name] = o;
+  if (editedAxes_) v.axes = edits_.axes;
+  return v;
+}
+
+void MainWindow::editObject(const std::string& name, const ObjectOptions& o) {
+  edits_.objects[name] = o;
+  if (visual_) visual_->setOptions(name, o);
+  if (apex_ && apex_->find(name)) apex_->setOptions(name, o);
+  view_->update();
+  if (apexView_) apexView_->update();
+}
+
+void MainWindow::editAxes(const AxesOptions& a) {
+  edits_.axes = a;
+  editedAxes_ = true;
+  if (visual_) visual_->setAxes(a);
+  view_->update();
+}
+
+void MainWindow::setStyleOfAll(SurfaceStyle style) {
+  if (!visual_) return;
+  for (const auto& o : visual_->objects()) {
+    ObjectOptions opt = visual_->options().object(o->name());
+    if (!visual_->options().objects.count(o->name())) opt.enabled = o->shownByDefault();
+    opt.style = style;
+    editObject(o->name(), opt);
+  }
 }
 
 bool MainWindow::openScene(const QString& path) {
@@ -102,6 +232,9 @@ bool MainWindow::openScene(const QString& path) {
     return false;
   }
   QSettings().setValue("lastScene", QFileInfo(path).absoluteFilePath());
+  rememberRecent(QFileInfo(path).absoluteFilePath());
+  edits_ = {}; // another file: its own appearance
+  editedAxes_ = false;
   useScene(std::move(scene), path);
   return true;
 }
@@ -123,6 +256,8 @@ void MainWindow::useScene(std::unique_ptr<Scene> scene, const QString& path) {
   map_->stopAll(); // its jobs hold the old scene's model until setScene replaces them
   if (visual_) view_->renderWindow()->RemoveRenderer(visual_->renderer());
   visual_.reset();
+  if (apex_ && apexView_) apexView_->renderWindow()->RemoveRenderer(apex_->renderer());
+  apex_.reset();
   scene_ = std::move(scene);
   scenePath_ = path;
   speedBox_->setValue(scene_->view.speed);
@@ -131,18 +266,28 @@ void MainWindow::useScene(std::unique_ptr<Scene> scene, const QString& path) {
   map_->setScene(*scene_);
   control_->setScene(*scene_);
   restart();
+  if (apexWindow_ && apexWindow_->isVisible()) openApexWindow();
 }
 
 void MainWindow::restart() {
   if (!scene_) return;
   stream_.reset(); // joins the worker before anything it uses changes
   if (!visual_) {
-    visual_ = std::make_unique<VisualScene>(*scene_->model, scene_->view, scene_->initialState);
+    visual_ =
+        std::make_unique<VisualScene>(*scene_->model, effectiveView(scene_->view), scene_->initialState);
     visual_->addTo(view_->renderWindow());
+    std::vector<std::string> names;
+    for (const auto& o : visual_->objects())
+      names.push_back(o->name());
+    settings_->setObjects(names, visual_->options());
   } else {
     visual_->clear();
     visual_->show(0.0, scene_->initialState);
     visual_->resetCamera();
+  }
+  if (apex_) {
+    apex_->clear();
+    apex_->show(0.0, scene_->initialState);
   }
   error_.clear();
   requested_ = shownTime_ = 0;
@@ -169,11 +314,15 @@ void MainWindow::tick() {
     stream_->requestUntil(requested_);
   }
   if (!stream_->take(batch_)) return;
-  for (std::size_t i = 0; i < batch_.states.size(); ++i)
+  for (std::size_t i = 0; i < batch_.states.size(); ++i) {
     visual_->advance(batch_.times[i], batch_.states[i]);
+    if (apex_) apex_->advance(batch_.times[i], batch_.states[i]);
+  }
   if (batch_.reached) {
     visual_->show(batch_.atTime, batch_.at);
+    if (apex_) apex_->show(batch_.atTime, batch_.at);
     shownTime_ = batch_.atTime;
+    if (apexView_ && apexWindow_->isVisible()) apexView_->update();
   }
   if (!batch_.error.empty()) {
     error_ = QString::fromStdString(batch_.error);
@@ -196,8 +345,175 @@ void MainWindow::showStatus() {
 void MainWindow::snapshot() {
   const QString path = QFileDialog::getSaveFileName(this, "Save snapshot", "snapshot.png", "PNG (*.png)");
   if (path.isEmpty()) return;
-  if (!view_->grabFramebuffer().save(path, "PNG"))
-    QMessageBox::warning(this, "rollviz", "Cannot write " + path);
+  if (!snapshotTo(path)) QMessageBox::warning(this, "rollviz", "Cannot write " + path);
+}
+
+bool MainWindow::snapshotTo(const QString& path) {
+  // through a temporary name: a failed write leaves nothing half-written
+  const QString part = path + ".part.png";
+  if (!view_->grabFramebuffer().save(part, "PNG")) return QFile::remove(part), false;
+  QFile::remove(path);
+  return QFile::rename(part, path);
+}
+
+bool MainWindow::startRecording(const QString& path, const VideoSpec& spec) {
+  if (!scene_ || recorder_) return false;
+  auto r = std::make_unique<Recording>();
+  if (!r->scene.open()) {
+    statusBar()->showMessage("Cannot record: no temporary file for the scene", 8000);
+    return false;
+  }
+  r->scene.write(QByteArray::fromStdString(documentWithEdits().dump(2)));
+  r->scene.flush();
+  r->path = path;
+  r->process->setProgram(rollvizExecutable());
+  r->process->setArguments({"video", r->scene.fileName(), "-o", path, "--duration",
+                            QString::number(spec.duration), "--fps", QString::number(spec.fps), "--size",
+                            QString("%1x%2").arg(spec.width).arg(spec.height), "--speed",
+                            QString::number(spec.speed)});
+  r->process->setProcessChannelMode(QProcess::MergedChannels);
+  connect(r->process.get(), &QProcess::finished, this, [this](int code, QProcess::ExitStatus) {
+    const auto done = std::move(recorder_);
+    const QString path = done->path;
+    const QString output = QString::fromUtf8(done->process->readAll()).trimmed();
+    done->process.release()->deleteLater(); // this runs inside the process's own signal
+    recordAction_->setText("Record…");
+    statusBar()->showMessage(code == 0 || code == 130 ? "wrote " + path : "recording failed: " + output,
+                             8000);
+    emit recordingFinished(code, path);
+  });
+  r->process->start();
+  if (!r->process->waitForStarted(5000)) {
+    statusBar()->showMessage("Cannot record: cannot start " + rollvizExecutable(), 8000);
+    return false;
+  }
+  recorder_ = std::move(r);
+  recordAction_->setText("Stop recording");
+  statusBar()->showMessage("recording " + path + "…");
+  return true;
+}
+
+void MainWindow::stopRecording() {
+  if (recorder_) ::kill(static_cast<pid_t>(recorder_->process->processId()), SIGINT);
+}
+
+nlohmann::json MainWindow::documentWithEdits() const {
+  nlohmann::json doc = scene_->document;
+  for (const auto& [name, o] : edits_.objects) { // the settings panel's edits go into the document
+    auto& j = doc["view"]["objects"][name];
+    j["enabled"] = o.enabled;
+    if (o.color) j["color"] = colorText(*o.color);
+    if (o.traceColor) j["trace_color"] = colorText(*o.traceColor);
+    if (o.opacity) j["opacity"] = *o.opacity;
+    if (o.gridDensity != 1) j["grid_density"] = o.gridDensity;
+    if (!o.trace) j["trace"] = false;
+    j["style"] = o.style == SurfaceStyle::Grid ? "grid" : o.style == SurfaceStyle::Both ? "both" : "fill";
+  }
+  if (editedAxes_) {
+    const AxesOptions& a = edits_.axes;
+    auto& j = doc["view"]["axes"];
+    j["style"] = a.style == AxesOptions::Style::Box      ? "box"
+                 : a.style == AxesOptions::Style::Normal ? "normal"
+                                                         : "none";
+    j["ticks"] = a.ticks;
+    if (a.min && a.max) j["min"] = *a.min, j["max"] = *a.max;
+    j["tickmarks"] = a.tickmarks;
+    j["subticks"] = a.subticks;
+  }
+  return doc;
+}
+
+void MainWindow::recordDialog() {
+  const QString path = QFileDialog::getSaveFileName(this, "Record video", "rollviz.mp4", "MP4 video (*.mp4)");
+  if (path.isEmpty()) return;
+  VideoSpec spec;
+  spec.speed = speedBox_->value();
+  spec.duration = 10;
+  startRecording(path, spec);
+}
+
+ChartWindow* MainWindow::openChart(const std::string& view) {
+  if (!scene_) return nullptr;
+  auto* w = new ChartWindow(scene_->document, scene_->source, view, this);
+  w->setAttribute(Qt::WA_DeleteOnClose);
+  w->show();
+  return w;
+}
+
+QWidget* MainWindow::openApexWindow() {
+  if (!scene_) return nullptr;
+  if (!apexWindow_) {
+    apexWindow_ = new QWidget(this, Qt::Window);
+    apexWindow_->setWindowTitle("rollviz — apex motion");
+    apexView_ = new QtVtkWidget(apexWindow_);
+    auto* layout = new QVBoxLayout(apexWindow_);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(apexView_);
+    apexWindow_->resize(560, 560);
+  }
+  if (!apex_ && scene_->model->geometry()) {
+    ViewOptions v = effectiveView(scene_->view);
+    v.kind = ViewKind::Apex;
+    v.axes.style = AxesOptions::Style::Box;
+    v.axes.tickmarks = 4, v.axes.subticks = 1;
+    apex_ = std::make_unique<VisualScene>(*scene_->model, v, scene_->initialState);
+    apex_->addTo(apexView_->renderWindow());
+  }
+  apexWindow_->show();
+  apexWindow_->raise();
+  apexView_->update();
+  return apexWindow_;
+}
+
+void MainWindow::saveDialog() {
+  if (!scene_) return;
+  const QString path =
+      QFileDialog::getSaveFileName(this, "Save scene", QFileInfo(scenePath_).fileName(), "Scenes (*.json)");
+  if (path.isEmpty()) return;
+  const nlohmann::json doc = documentWithEdits();
+  try {
+    AtomicFile file(path.toStdString(), "scene");
+    std::ofstream(file.tempPath()) << doc.dump(2) << "\n";
+    file.commit();
+    rememberRecent(path);
+    statusBar()->showMessage("saved " + path, 5000);
+  } catch (const std::exception& e) {
+    QMessageBox::warning(this, "rollviz", QString("Cannot save the scene:\n%1").arg(e.what()));
+  }
+}
+
+void MainWindow::rememberRecent(const QString& path) {
+  QStringList recent = QSettings().value("recentScenes").toStringList();
+  recent.removeAll(path);
+  recent.prepend(path);
+  while (recent.size() > 8)
+    recent.removeLast();
+  QSettings().setValue("recentScenes", recent);
+  fillRecentMenu();
+}
+
+void MainWindow::fillRecentMenu() {
+  recentMenu_->clear();
+  for (const QString& p : QSettings().value("recentScenes").toStringList())
+    recentMenu_->addAction(QFileInfo(p).fileName(), this, [this, p] { openScene(p); })->setToolTip(p);
+}
+
+void MainWindow::closeEvent(QCloseEvent* e) {
+  QSettings().setValue("windowState", saveState());
+  QSettings().setValue("windowGeometry", saveGeometry());
+  QMainWindow::closeEvent(e);
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* e) {
+  if (e->mimeData()->hasUrls()) e->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* e) {
+  for (const QUrl& url : e->mimeData()->urls())
+    if (url.isLocalFile() && url.toLocalFile().endsWith(".json")) {
+      openScene(url.toLocalFile());
+      break;
+    }
 }
 
 void MainWindow::openDialog() {

@@ -3,6 +3,7 @@
 #pragma once
 #include "dynamics/jobs/TrajectoryStream.h"
 #include "render/VisualScene.h"
+#include "render/video/VideoExport.h"
 #include "scenes/Scene.h"
 
 #include <nlohmann/json.hpp>
@@ -13,12 +14,18 @@
 #include <memory>
 
 class QAction;
+class QCloseEvent;
+class QDragEnterEvent;
+class QDropEvent;
+class QMenu;
 class QDoubleSpinBox;
 class QLabel;
 
 namespace rv {
 
 class QtVtkWidget;
+class ChartWindow;
+class VisualizerSettings;
 class MapPanel;
 class ControlPanel;
 class ToolManager;
@@ -40,18 +47,68 @@ public:
   ToolManager* toolManager() const { return tools_; }
   const Scene* scene() const { return scene_.get(); }
 
+  /// Writes the 3D view as drawn to a PNG; false when it cannot.
+  bool snapshotTo(const QString& path);
+  /// Starts recording the scene's run from t = 0 into an MP4 (`rollviz video` in a child process: the window
+  /// stays responsive); false (with the reason in the status bar) when it cannot start.
+  bool startRecording(const QString& path, const VideoSpec& spec);
+  /// Stops a recording: the frames so far become a valid, shorter video.
+  void stopRecording();
+  bool recording() const { return recorder_ != nullptr; }
+  /// Opens a filter window with a chart view of the scene (computed on a worker thread).
+  ChartWindow* openChart(const std::string& view);
+  /// Opens (or shows) the apex motion window: the apex view of the trajectory shown in the 3D view.
+  QWidget* openApexWindow();
+  VisualizerSettings* settings() const { return settings_; }
+  /// The appearance edits kept over re-runs (settings panel, toolbar).
+  const ViewOptions& viewEdits() const { return edits_; }
+  VisualScene* visual() const { return visual_.get(); }
+  VisualScene* apexVisual() const { return apex_.get(); }
+
 public slots:
   void togglePlay();
   void restart();
   void snapshot();
   void openDialog();
+  void saveDialog();
+  void recordDialog();
+
+signals:
+  /// The recording ended: `exitCode` 0 (done), 130 (stopped: a shorter video), else failed.
+  void recordingFinished(int exitCode, const QString& path);
+
+protected:
+  void closeEvent(QCloseEvent* e) override;
+  void dragEnterEvent(QDragEnterEvent* e) override;
+  void dropEvent(QDropEvent* e) override;
 
 private:
   void tick();
+  /// The scene's document with the settings panel's edits written in (what Save and Record use).
+  nlohmann::json documentWithEdits() const;
+  /// The scene's view with the user's edits laid over it.
+  ViewOptions effectiveView(const ViewOptions& base) const;
+  void editObject(const std::string& name, const ObjectOptions& o);
+  void editAxes(const AxesOptions& a);
+  void setStyleOfAll(SurfaceStyle style);
+  void rememberRecent(const QString& path);
+  void fillRecentMenu();
   void showStatus();
   /// Replaces the running scene (from `source`, a file or "edited").
   void useScene(std::unique_ptr<Scene> scene, const QString& source);
   QtVtkWidget* view_;
+  VisualizerSettings* settings_;
+  QMenu* recentMenu_;
+  QAction* recordAction_;
+  ViewOptions edits_;
+  bool editedAxes_ = false;
+  // the apex window (a second visualizer fed with the same states)
+  QWidget* apexWindow_ = nullptr;
+  QtVtkWidget* apexView_ = nullptr;
+  std::unique_ptr<VisualScene> apex_;
+  // a recording in progress: its own scene, integrator, headless context and exporter
+  struct Recording;
+  std::unique_ptr<Recording> recorder_;
   MapPanel* map_;
   ControlPanel* control_;
   ToolManager* tools_;

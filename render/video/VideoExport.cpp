@@ -27,7 +27,6 @@ void playTo(VisualScene& scene, Integrator& integrator, double t, Eigen::VectorX
   scene.show(t, work);
 }
 
-namespace {
 // Encodes frames on a worker thread so that rendering the next frame overlaps encoding this one; holds at
 // most `depth` frames. An encoder error stops the worker and is rethrown to the renderer.
 class EncoderThread {
@@ -84,28 +83,42 @@ private:
   std::exception_ptr error_;
   std::thread worker_; // last: starts once the rest is built
 };
-} // namespace
+
+VideoExporter::VideoExporter(VisualScene& scene, vtkRenderWindow* window, Integrator& integrator,
+                             const VideoSpec& spec)
+    : scene_(scene), window_(window), integrator_(integrator), spec_(spec),
+      total_(std::lround(spec.duration * spec.fps)), t0_(integrator.time()), x_(integrator.state().size()) {
+  mp4_ = std::make_unique<Mp4Writer>(spec.path, spec.width, spec.height, spec.fps, spec.encoder);
+  window->SetSize(spec.width, spec.height);
+  encoder_ = std::make_unique<EncoderThread>(*mp4_, 3);
+}
+
+VideoExporter::~VideoExporter() {
+  encoder_.reset(); // joins the worker before the writer (unfinished: it removes its temporary file) goes
+}
+
+bool VideoExporter::next() {
+  if (k_ >= total_) return false;
+  playTo(scene_, integrator_,
+         t0_ + integrator_.direction() * spec_.speed * static_cast<double>(k_) / spec_.fps, x_);
+  encoder_->push(capture(window_));
+  return ++k_ < total_;
+}
+
+long VideoExporter::finish() {
+  encoder_->close();
+  mp4_->finish(); // a stopped export ends here too: a valid video of the frames so far
+  return k_;
+}
 
 long exportVideo(VisualScene& scene, vtkRenderWindow* window, Integrator& integrator, const VideoSpec& spec,
                  const std::function<bool(long, long)>& progress) {
-  Mp4Writer mp4(spec.path, spec.width, spec.height, spec.fps, spec.encoder);
-  const long total = std::lround(spec.duration * spec.fps);
-  const double t0 = integrator.time();
-  window->SetSize(spec.width, spec.height);
-  Eigen::VectorXd x(integrator.state().size());
-  long k = 0;
-  {
-    EncoderThread encoder(mp4, 3);
-    for (; k < total; ++k) {
-      if (progress && !progress(k, total)) break;
-      playTo(scene, integrator, t0 + integrator.direction() * spec.speed * static_cast<double>(k) / spec.fps,
-             x);
-      encoder.push(capture(window));
-    }
-    encoder.close();
+  VideoExporter video(scene, window, integrator, spec);
+  while (video.done() < video.total()) {
+    if (progress && !progress(video.done(), video.total())) break;
+    video.next();
   }
-  mp4.finish(); // a cancelled export ends here too: a valid video of the frames so far
-  return k;
+  return video.finish();
 }
 
 } // namespace rv

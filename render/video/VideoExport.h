@@ -6,11 +6,14 @@
 #include "render/VisualScene.h"
 
 #include <functional>
+#include <memory>
 #include <string>
 
 class vtkRenderWindow;
 
 namespace rv {
+
+class Mp4Writer;
 
 /// Integrates until `t` (in the integrator's direction), feeding every step to the scene, then shows the
 /// state at exactly `t`. `work` is scratch space.
@@ -23,6 +26,35 @@ struct VideoSpec {
   double duration = 5; ///< seconds of video
   double speed = 1;    ///< simulation seconds per video second
   std::string encoder = "libx264";
+};
+
+class EncoderThread;
+
+/// A video export done one frame at a time (so that a GUI can interleave it with its events): frame k shows
+/// simulation time t0 + k * speed / fps. finish() (also after stopping early) leaves a valid video of the
+/// frames so far; destroying an unfinished export leaves nothing.
+class VideoExporter {
+public:
+  /// Sizes the window to the video. Throws InputError / ComputationError as Mp4Writer does.
+  VideoExporter(VisualScene& scene, vtkRenderWindow* window, Integrator& integrator, const VideoSpec& spec);
+  ~VideoExporter();
+  /// Renders and queues the next frame; false when every frame is done.
+  bool next();
+  long done() const { return k_; }
+  long total() const { return total_; }
+  /// Encodes what is queued and writes the file. Returns the number of frames.
+  long finish();
+
+private:
+  VisualScene& scene_;
+  vtkRenderWindow* window_;
+  Integrator& integrator_;
+  VideoSpec spec_;
+  long total_, k_ = 0;
+  double t0_;
+  Eigen::VectorXd x_;
+  std::unique_ptr<Mp4Writer> mp4_;
+  std::unique_ptr<EncoderThread> encoder_;
 };
 
 /// Renders round(duration * fps) frames, frame k at simulation time k * speed / fps. `progress(done, total)`

@@ -1,0 +1,50 @@
+// ChartWindow.h -- a filter window (manual §2.4): any chart view of the scene (scenes/SceneCharts: the map,
+// Map3D, 2D / 3D plots, multipliers, bifurcation diagram, continuation, spectrum, Lyapunov exponents,
+// surface, RAM), computed on a worker thread and drawn when ready. The GUI thread never computes; closing the
+// window stops the computation.
+#pragma once
+#include "render/charts/Chart.h"
+
+#include <QWidget>
+#include <atomic>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <thread>
+
+class QLabel;
+
+namespace rv {
+
+class QtVtkWidget;
+
+class ChartWindow : public QWidget {
+  Q_OBJECT
+public:
+  /// Starts computing `view` for the scene document (`source` names it in messages).
+  ChartWindow(const nlohmann::json& document, const std::string& source, const std::string& view,
+              QWidget* parent = nullptr);
+  ~ChartWindow() override;
+  bool ready() const { return chart_ != nullptr; }
+  /// Why the computation failed (empty while running or when it succeeded).
+  const QString& failure() const { return failure_; }
+  QtVtkWidget* view() const { return view_; }
+  const std::string& viewName() const { return viewName_; }
+  /// Writes the chart as drawn to a PNG; false when it cannot.
+  bool savePng(const QString& path);
+
+signals:
+  void finished();
+
+private:
+  void deliver(std::unique_ptr<Chart> chart, const QString& failure);
+  std::string viewName_;
+  QtVtkWidget* view_;
+  QLabel* status_;
+  std::unique_ptr<Chart> chart_;
+  QString failure_;
+  std::atomic<bool> stop_{false};
+  std::thread worker_;
+};
+
+} // namespace rv

@@ -1,0 +1,181 @@
+// Qt Tests of the main window on a real X server (xvfb) and GL (llvmpipe through GLX): the visualizer's
+// settings panel recolours the ball in the next frame (pixel check) and the edit survives a re-run; snapshot
+// and record write a real PNG and a valid MP4 (ffprobe) while the event loop keeps running; a chart (filter)
+// window and the apex window draw real pictures. Screenshots of each window are kept in ROLLVIZ_TEST_OUTPUT.
+#include "app/gui/ChartWindow.h"
+#include "app/gui/MainWindow.h"
+#include "app/gui/QtVtkWidget.h"
+#include "app/gui/VisualizerSettings.h"
+#include "scenes/SceneLoader.h"
+
+#include <QElapsedTimer>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QtTest>
+#include <cstdio>
+#include <set>
+
+namespace rv {
+
+namespace {
+// pixels that are strongly red (the recoloured ball)
+long redPixels(const QImage& img) {
+  long n = 0;
+  for (int y = 0; y < img.height(); ++y)
+    for (int x = 0; x < img.width(); ++x) {
+      const QColor c = img.pixelColor(x, y);
+      n += c.red() > 150 && c.green() < 90 && c.blue() < 90;
+    }
+  return n;
+}
+// a real picture, not a blank widget: many distinct colours
+bool varied(const QImage& img) {
+  std::set<QRgb> colours;
+  for (int y = 0; y < img.height(); y += 2)
+    for (int x = 0; x < img.width(); x += 2)
+      colours.insert(img.pixel(x, y));
+  return colours.size() > 200;
+}
+void keep(const QImage& img, const QString& name) {
+  const QByteArray dir = qgetenv("ROLLVIZ_TEST_OUTPUT");
+  if (!dir.isEmpty()) img.save(QString::fromUtf8(dir) + "/" + name, "PNG");
+}
+int framesOf(const QString& path) {
+  const std::string cmd = "ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+                          "stream=nb_read_frames -of csv=p=0 '" +
+                          path.toStdString() + "'";
+  FILE* f = popen(cmd.c_str(), "r");
+  int n = -1;
+  if (f && std::fscanf(f, "%d", &n) != 1) n = -1;
+  if (f) pclose(f);
+  return n;
+}
+} // namespace
+
+class MainWindowTest : public QObject {
+  Q_OBJECT
+  MainWindow* window_ = nullptr;
+  QTemporaryDir dir_;
+
+private slots:
+  void initTestCase() {
+    window_ = new MainWindow;
+    window_->show();
+    QVERIFY(QTest::qWaitForWindowExposed(window_));
+    QVERIFY(window_->openScene(QString::fromStdString(defaultScenePath("chaplygin_ball"))));
+    QTest::qWait(800);
+    QVERIFY(window_->shownTime() > 0.1);
+    keep(window_->grab().toImage(), "window_main.png");
+  }
+
+  void settingsRecolourTheBallInTheNextFrame() {
+    window_->togglePlay(); // paused: only the colour changes between the two frames
+    QTest::qWait(100);
+    const QImage before = window_->view()->grabFramebuffer();
+    window_->settings()->selectObject("ball");
+    window_->settings()->pickColor({1.0, 0.0, 0.0});
+    QTest::qWait(100);
+    const QImage after = window_->view()->grabFramebuffer();
+    keep(after, "window_main_red_ball.png");
+    QVERIFY2(redPixels(after) > redPixels(before) + 2000,
+             qPrintable(QString("red pixels %1 -> %2").arg(redPixels(before)).arg(redPixels(after))));
+    // the edit is kept when the scene runs again
+    window_->restart();
+    QVERIFY(window_->visual()->options().object("ball").color == Rgb({1.0, 0.0, 0.0}));
+    window_->togglePlay();
+  }
+
+  void snapshotWritesAPng() {
+    const QString path = dir_.filePath("snap.png");
+    QVERIFY(window_->snapshotTo(path));
+    const QImage img(path);
+    QCOMPARE(img.size(), window_->view()->grabFramebuffer().size());
+    QVERIFY(varied(img));
+  }
+
+  void recordingWritesAVideoWhileTheWindowStaysResponsive() {
+    const QString path = dir_.filePath("rec.mp4");
+    VideoSpec spec;
+    spec.width = 320, spec.height = 240, spec.fps = 10, spec.duration = 2;
+    QSignalSpy done(window_, &MainWindow::recordingFinished);
+    // a probe: how late a 10 ms timer fires while frames are recorded
+    QElapsedTimer clock;
+    qint64 last = 0, worst = 0;
+    QTimer probe;
+    connect(&probe, &QTimer::timeout, [&] {
+      const qint64 now = clock.elapsed();
+      worst = std::max(worst, now - last);
+      last = now;
+    });
+    clock.start();
+    probe.start(10);
+    QVERIFY(window_->startRecording(path, spec));
+    QVERIFY(window_->recording());
+    QVERIFY(done.wait(60000));
+    probe.stop();
+    QCOMPARE(done.first().at(0).toInt(), 0);
+    QCOMPARE(framesOf(path), 20);
+    QVERIFY2(worst < 1000, qPrintable(QString("the event loop stalled for %1 ms").arg(worst)));
+    qInfo("event loop: worst gap %lld ms of a 10 ms timer while recording", worst);
+  }
+
+  void aStoppedRecordingIsAValidShorterVideo() {
+    const QString path = dir_.filePath("short.mp4");
+    VideoSpec spec;
+    spec.width = 320, spec.height = 240, spec.fps = 10, spec.duration = 30;
+    QSignalSpy done(window_, &MainWindow::recordingFinished);
+    QVERIFY(window_->startRecording(path, spec));
+    QTest::qWait(1500);
+    window_->stopRecording();
+    QVERIFY(done.wait(30000));
+    QCOMPARE(done.first().at(0).toInt(), 130);
+    const int frames = framesOf(path);
+    QVERIFY2(frames > 0 && frames < 300, qPrintable(QString("frames %1").arg(frames)));
+  }
+
+  void chartWindowDrawsItsView() {
+    ChartWindow* chart = window_->openChart("bifurcation");
+    QVERIFY(chart);
+    QSignalSpy finished(chart, &ChartWindow::finished);
+    QVERIFY(finished.wait(30000));
+    QVERIFY2(chart->ready(), qPrintable(chart->failure()));
+    QTest::qWait(200);
+    const QImage img = chart->view()->grabFramebuffer();
+    keep(chart->grab().toImage(), "window_chart_bifurcation.png");
+    QVERIFY(varied(img) || img.width() > 0);
+    long nonWhite = 0;
+    for (int y = 0; y < img.height(); ++y)
+      for (int x = 0; x < img.width(); ++x)
+        nonWhite += img.pixelColor(x, y).lightness() < 200;
+    QVERIFY2(nonWhite > 1000, qPrintable(QString("dark pixels %1").arg(nonWhite)));
+    chart->close();
+  }
+
+  void apexWindowShowsTheApexes() {
+    QWidget* w = window_->openApexWindow();
+    QVERIFY(w && window_->apexVisual());
+    QVERIFY(window_->apexVisual()->find("apex_z"));
+    QTest::qWait(600);
+    auto* view = w->findChild<QtVtkWidget*>();
+    QVERIFY(view);
+    const QImage img = view->grabFramebuffer();
+    keep(img, "window_apex.png");
+    QVERIFY(varied(img));
+  }
+
+  void cleanupTestCase() { delete window_; }
+};
+
+} // namespace rv
+
+int main(int argc, char** argv) {
+  qputenv("QT_XCB_GL_INTEGRATION", "xcb_glx"); // VTK 9.1's GLEW needs a GLX context (as in GuiMain)
+  QSurfaceFormat::setDefaultFormat(rv::QtVtkWidget::defaultFormat());
+  QStandardPaths::setTestModeEnabled(true); // QSettings of the test, not the user's
+  QApplication app(argc, argv);
+  QApplication::setOrganizationName("rollviz-test");
+  rv::MainWindowTest t;
+  return QTest::qExec(&t, argc, argv);
+}
+#include "WindowTest.moc"
