@@ -8,6 +8,7 @@
 #include "app/gui/VisualizerSettings.h"
 #include "dynamics/core/Errors.h"
 #include "dynamics/io/AtomicFile.h"
+#include "dynamics/jobs/PoincareTask.h"
 #include "scenes/SceneCharts.h"
 #include "scenes/SceneLoader.h"
 
@@ -69,6 +70,15 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   control_->setMinimumWidth(300); // labels and values readable side by side
   tools_ = new ToolManager(
       map_->jobs(), [this](Job& j) { map_->removeJob(j); }, this);
+  tools_->setEditor([this](Job& job) {
+    auto* poincare = dynamic_cast<PoincareTask*>(&job.task());
+    if (!poincare) throw InputError("only Poincare maps take new values (the other tools restart with them)");
+    const Scene edited = sceneFromJson(control_->editedDocument(), scene_ ? scene_->source : "edited scene");
+    const RunSpec spec = edited.runSpec();
+    job.edit([&](Task& t) { static_cast<PoincareTask&>(t).edit(spec, edited.poincare); });
+  });
+  connect(tools_, &ToolManager::message, this,
+          [this](const QString& m) { statusBar()->showMessage(m, 8000); });
   auto* toolsDock = new QDockWidget("Tool manager", this);
   toolsDock->setObjectName("tools");
   toolsDock->setWidget(tools_);

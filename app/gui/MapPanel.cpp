@@ -34,8 +34,15 @@ void MapPanel::setScene(const Scene& scene) {
   tools_.clear();
   scene_ = &scene;
   const auto names = PoincareMap(*scene.model, scene.startIntegrator(), scene.poincare).coordinateNames();
-  chart_ = std::make_unique<PoincareChart>(names.at(0), names.size() > 1 ? names[1] : "t");
-  chart_->attach(view_->renderWindow());
+  // one chart for the panel's life: replacing it would leave the window's interactor (and its timers)
+  // driving a destroyed chart scene
+  if (!chart_) {
+    chart_ = std::make_unique<PoincareChart>(names.at(0), names.size() > 1 ? names[1] : "t");
+    chart_->attach(view_->renderWindow());
+  } else {
+    chart_->clear();
+    chart_->setTitles(names.at(0), names.size() > 1 ? names[1] : "t");
+  }
   start(scene.initialState);
 }
 

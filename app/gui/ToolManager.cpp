@@ -30,6 +30,10 @@ ToolManager::ToolManager(JobTree& jobs, std::function<void(Job&)> remove, QWidge
   button("Stop", "stop the selected tool (it can continue later)", &ToolManager::stopSelected);
   button("Continue", "continue the selected tool from where it stopped", &ToolManager::continueSelected);
   button("Restart", "start the selected tool again from the beginning", &ToolManager::restartSelected);
+  button("Edit",
+         "give the selected (stopped) tool the control panel's problem and method values; Continue then "
+         "goes on from the stop point with them",
+         &ToolManager::editSelected);
   button("Delete", "stop and delete the selected tool and the tools under it", &ToolManager::deleteSelected);
   layout->addLayout(buttons);
   timer_ = new QTimer(this);
@@ -106,6 +110,22 @@ void ToolManager::restartSelected() {
 
 void ToolManager::deleteSelected() {
   if (Job* j = selected()) remove_(*j);
+  refresh();
+}
+
+void ToolManager::editSelected() {
+  Job* job = selected();
+  if (!job || !editor_) return;
+  if (job->running()) {
+    emit message("stop the tool before editing it");
+    return;
+  }
+  try {
+    editor_(*job);
+    emit message(QString("tool %1 edited: Continue goes on with the new values").arg(job->id()));
+  } catch (const std::exception& e) {
+    emit message(QString("cannot edit tool %1: %2").arg(job->id()).arg(e.what()));
+  }
   refresh();
 }
 

@@ -29,11 +29,22 @@ public:
   void continueSelected();
   void restartSelected();
   void deleteSelected();
+  /// Edit properties (manual §2.1): gives the selected job, which must be stopped, the control panel's
+  /// values through `editor` (set by the owner); it then continues from its stop point with them.
+  void editSelected();
+  void setEditor(std::function<void(Job&)> editor) { editor_ = std::move(editor); }
+
+signals:
+  /// Why an action could not be done, for the status bar.
+  void message(const QString& text);
+
+public:
   QTreeWidget* tree() const { return tree_; }
 
 private:
   JobTree& jobs_;
   std::function<void(Job&)> remove_;
+  std::function<void(Job&)> editor_;
   QTreeWidget* tree_;
   QTimer* timer_;
 };

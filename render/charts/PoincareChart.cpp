@@ -49,7 +49,15 @@ PoincareChart::PoincareChart(std::string xTitle, std::string yTitle) {
   }
 }
 
-PoincareChart::~PoincareChart() = default;
+PoincareChart::~PoincareChart() {
+  // its renderer out of the window it was drawn in (a window outliving the chart draws nothing of it)
+  if (vtkRenderWindow* window = view_->GetRenderWindow()) window->RemoveRenderer(view_->GetRenderer());
+}
+
+void PoincareChart::setTitles(const std::string& x, const std::string& y) {
+  chart_->GetAxis(vtkAxis::BOTTOM)->SetTitle(x);
+  chart_->GetAxis(vtkAxis::LEFT)->SetTitle(y);
+}
 
 vtkChartXY* PoincareChart::chart() const {
   return chart_;
@@ -163,6 +171,8 @@ void PoincareChart::setSeries(int index, const std::vector<double>& x, const std
 void PoincareChart::clear() {
   chart_->ClearPlots();
   large_.clear();
+  for (int a : {vtkAxis::BOTTOM, vtkAxis::LEFT}) // ranges follow the next data again
+    chart_->GetAxis(a)->SetBehavior(vtkAxis::AUTO);
   selected_ = -1;
 }
 

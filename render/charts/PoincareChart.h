@@ -36,6 +36,8 @@ public:
   void setRanges(double x0, double x1, double y0, double y1);
   /// Replaces the points of series `index`.
   void setSeries(int index, const std::vector<double>& x, const std::vector<double>& y);
+  /// Names the axes.
+  void setTitles(const std::string& x, const std::string& y);
   /// Removes every series.
   void clear();
   /// Map coordinates of a point of the scene (pixels from the bottom left); false outside the plot area.

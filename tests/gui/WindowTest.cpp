@@ -3,11 +3,18 @@
 // and record write a real PNG and a valid MP4 (ffprobe) while the event loop keeps running; a chart (filter)
 // window and the apex window draw real pictures. Screenshots of each window are kept in ROLLVIZ_TEST_OUTPUT.
 #include "app/gui/ChartWindow.h"
+#include "app/gui/ControlPanel.h"
 #include "app/gui/MainWindow.h"
+#include "app/gui/MapPanel.h"
+#include "app/gui/ParameterForm.h"
 #include "app/gui/QtVtkWidget.h"
+#include "app/gui/ToolManager.h"
 #include "app/gui/VisualizerSettings.h"
+#include "dynamics/jobs/JobTree.h"
+#include "dynamics/jobs/PoincareTask.h"
 #include "scenes/SceneLoader.h"
 
+#include <QDoubleSpinBox>
 #include <QElapsedTimer>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -162,6 +169,47 @@ private slots:
     const QImage img = view->grabFramebuffer();
     keep(img, "window_apex.png");
     QVERIFY(varied(img));
+  }
+
+  // the manual's workflow: a problem, a click on the map starts a trajectory whose points arrive; stop it,
+  // edit the energy in the control panel, Edit + Continue: it goes on from its stop point at the new energy;
+  // delete it
+  void mapWorkflowStopEditContinueDelete() {
+    QVERIFY(window_->openScene(QString::fromStdString(defaultScenePath("henon_heiles"))));
+    QTest::qWait(300);
+    MapPanel* map = window_->mapPanel();
+    auto* mapView = map->findChild<QtVtkWidget*>();
+    QVERIFY(mapView);
+    const int before = map->trajectories();
+    // Ctrl+click in the middle of the map: (y, py) near (0, 0), inside the energy's region at E = 1/12
+    QTest::mouseClick(mapView, Qt::LeftButton, Qt::ControlModifier, mapView->rect().center());
+    QTRY_COMPARE_WITH_TIMEOUT(map->trajectories(), before + 1, 5000);
+    Job* job = map->jobs().jobs().back();
+    QTRY_VERIFY_WITH_TIMEOUT(map->points() > 20, 10000);
+    ToolManager* tools = window_->toolManager();
+    tools->refresh();
+    tools->select(job->id());
+    QCOMPARE(tools->selected(), job);
+    tools->stopSelected();
+    QCOMPARE(job->status(), Job::Status::Stopped);
+    const double oldEnergy = dynamic_cast<PoincareTask&>(job->task()).spec().modelParameters["energy"];
+    const double newEnergy = oldEnergy * 1.2;
+    auto* energy = qobject_cast<QDoubleSpinBox*>(window_->controlPanel()->form("problem")->editor("energy"));
+    QVERIFY(energy);
+    energy->setValue(newEnergy);
+    tools->editSelected();
+    auto& task = dynamic_cast<PoincareTask&>(job->task());
+    QCOMPARE(task.spec().modelParameters["energy"], newEnergy);
+    const long pointsBefore = map->points();
+    tools->continueSelected();
+    QTRY_VERIFY_WITH_TIMEOUT(map->points() > pointsBefore + 10, 10000);
+    tools->stopSelected();
+    // the trajectory's state is now on the new energy level
+    const auto model = task.spec().makeModel();
+    QVERIFY(std::abs(model->integrals(task.lastState().data())[0] - newEnergy) < 1e-9);
+    keep(window_->grab().toImage(), "window_main_henon_heiles.png");
+    tools->deleteSelected();
+    QCOMPARE(map->trajectories(), before);
   }
 
   void cleanupTestCase() { delete window_; }
