@@ -19,9 +19,7 @@ Chart3D::Chart3D(std::array<std::string, 3> titles) : titles_(std::move(titles))
   renderer_->SetBackground(1, 1, 1);
 }
 
-Chart3D::~Chart3D() {
-  if (window_) window_->RemoveRenderer(renderer_);
-}
+Chart3D::~Chart3D() = default; // (no GL work here: the window's context may be gone already)
 
 int Chart3D::addSeries(const std::vector<double>& x, const std::vector<double>& y,
                        const std::vector<double>& z, const Rgb& color, float pointSize) {
@@ -90,7 +88,6 @@ void Chart3D::attach(vtkRenderWindow* window) {
   renderer_->ResetCamera();
   cam->Zoom(0.9); // room for the labels
   window->AddRenderer(renderer_);
-  window_ = window;
 }
 
 } // namespace rv

@@ -41,7 +41,6 @@ private:
   std::array<double, 6> bounds_{};
   bool equal_ = false;
   vtkSmartPointer<vtkRenderer> renderer_;
-  vtkRenderWindow* window_ = nullptr;
   std::unique_ptr<SceneAxesObject> axes_;
 };
 

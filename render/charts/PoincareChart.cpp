@@ -49,10 +49,7 @@ PoincareChart::PoincareChart(std::string xTitle, std::string yTitle) {
   }
 }
 
-PoincareChart::~PoincareChart() {
-  // its renderer out of the window it was drawn in (a window outliving the chart draws nothing of it)
-  if (vtkRenderWindow* window = view_->GetRenderWindow()) window->RemoveRenderer(view_->GetRenderer());
-}
+PoincareChart::~PoincareChart() = default; // (no GL work here: the window's context may be gone already)
 
 void PoincareChart::setTitles(const std::string& x, const std::string& y) {
   chart_->GetAxis(vtkAxis::BOTTOM)->SetTitle(x);
