@@ -200,9 +200,10 @@ private slots:
     tools->editSelected();
     auto& task = dynamic_cast<PoincareTask&>(job->task());
     QCOMPARE(task.spec().modelParameters["energy"], newEnergy);
-    const long pointsBefore = map->points();
+    const long pointsBefore = task.points().total();
     tools->continueSelected();
-    QTRY_VERIFY_WITH_TIMEOUT(map->points() > pointsBefore + 10, 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(task.points().total() > pointsBefore + 10,
+                             10000); // this trajectory's own points
     tools->stopSelected();
     // the trajectory's state is now on the new energy level
     const auto model = task.spec().makeModel();
