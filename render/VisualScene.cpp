@@ -172,6 +172,7 @@ void VisualScene::show(double t, const Eigen::VectorXd& x) {
     const double e = model_.integrals(x.data())[energyIndex_];
     if (!haveEnergy0_) energy0_ = e, haveEnergy0_ = true;
     const double rel = (e - energy0_) / (energy0_ != 0 ? std::abs(energy0_) : 1.0);
+    energyError_ = rel;
     std::snprintf(text, sizeof text, "t = %9.3f    dE/E = %+.2e", t, rel);
   } else {
     std::snprintf(text, sizeof text, "t = %9.3f", t);

@@ -39,6 +39,8 @@ public:
   void advance(double t, const Eigen::VectorXd& x);
   /// The state to draw in the next frame: places the bodies, the camera and the overlay.
   void show(double t, const Eigen::VectorXd& x);
+  /// The relative energy error of the last state shown (nothing for models without an energy).
+  std::optional<double> energyError() const { return energyError_; }
   /// Forgets traces and the energy reference (a new run).
   void clear();
   /// Puts the camera back to its default placement around the current state.
@@ -52,6 +54,7 @@ private:
   int energyIndex_ = -1; ///< index of "E" among the integrals
   double energy0_ = 0;   ///< energy at the start of the run
   bool haveEnergy0_ = false;
+  std::optional<double> energyError_;
   Eigen::Vector3d focus_ = Eigen::Vector3d::Zero();
   vtkSmartPointer<vtkRenderer> renderer_;
   vtkSmartPointer<vtkTextActor> overlay_;

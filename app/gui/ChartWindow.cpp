@@ -2,6 +2,7 @@
 
 #include "app/gui/QtVtkWidget.h"
 #include "dynamics/core/Errors.h"
+#include "dynamics/io/AtomicFile.h"
 #include "dynamics/tools/ReturnMap.h"
 #include "scenes/SceneCharts.h"
 #include "scenes/SceneLoader.h"
@@ -11,6 +12,7 @@
 #include <QPointer>
 #include <QPushButton>
 #include <QVBoxLayout>
+#include <fstream>
 
 namespace rv {
 
@@ -26,11 +28,18 @@ ChartWindow::ChartWindow(const nlohmann::json& document, const std::string& sour
         this, "Save chart", QString::fromStdString(viewName_) + ".png", "PNG (*.png)");
     if (!path.isEmpty() && !savePng(path)) status_->setText("cannot write " + path);
   });
+  auto* csv = new QPushButton("Save CSV…", this);
+  connect(csv, &QPushButton::clicked, this, [this] {
+    const QString path = QFileDialog::getSaveFileName(
+        this, "Save chart data", QString::fromStdString(viewName_) + ".csv", "CSV (*.csv)");
+    if (!path.isEmpty() && !saveCsv(path)) status_->setText("cannot write " + path);
+  });
   auto* layout = new QVBoxLayout(this);
   layout->addWidget(view_, 1);
   auto* bottom = new QHBoxLayout;
   bottom->addWidget(status_, 1);
   bottom->addWidget(save);
+  bottom->addWidget(csv);
   layout->addLayout(bottom);
   resize(640, 640);
 
@@ -72,6 +81,21 @@ void ChartWindow::deliver(std::unique_ptr<Chart> chart, const QString& failure) 
     status_->setText("failed: " + failure);
   }
   emit finished();
+}
+
+bool ChartWindow::saveCsv(const QString& path) {
+  if (!chart_) return false;
+  try {
+    AtomicFile file(path.toStdString(), "csv");
+    std::ofstream out(file.tempPath());
+    chart_->writeCsv(out);
+    out.close();
+    if (!out) return false;
+    file.commit();
+    return true;
+  } catch (const std::exception&) {
+    return false;
+  }
 }
 
 bool ChartWindow::savePng(const QString& path) {

@@ -32,6 +32,8 @@ public:
   const std::string& viewName() const { return viewName_; }
   /// Writes the chart as drawn to a PNG; false when it cannot.
   bool savePng(const QString& path);
+  /// Writes the chart's data as CSV (through a temporary name); false when it cannot or nothing is drawn yet.
+  bool saveCsv(const QString& path);
 
 signals:
   void finished();

@@ -79,6 +79,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   });
   connect(tools_, &ToolManager::message, this,
           [this](const QString& m) { statusBar()->showMessage(m, 8000); });
+  connect(tools_, &ToolManager::selectedJob, map_, &MapPanel::highlightJob);
   auto* toolsDock = new QDockWidget("Tool manager", this);
   toolsDock->setObjectName("tools");
   toolsDock->setWidget(tools_);
@@ -104,6 +105,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   playAction_ = bar->addAction("Pause", this, &MainWindow::togglePlay);
   playAction_->setShortcut(Qt::Key_Space);
   playAction_->setToolTip("Play / pause (Space)");
+  auto* step = bar->addAction("Step", this, &MainWindow::stepFrame);
+  step->setShortcut(Qt::Key_Period);
+  step->setToolTip("Pause and go one frame (1/25 s of the real-time factor) further (.)");
   auto* reset = bar->addAction("Reset", this, &MainWindow::restart);
   reset->setShortcut(Qt::Key_R);
   reset->setToolTip("Start the motion again from the scene's initial state (R)");
@@ -307,8 +311,14 @@ void MainWindow::restart() {
   view_->update();
 }
 
+void MainWindow::stepFrame() {
+  if (playing_) togglePlay();
+  requested_ = std::max(requested_, shownTime_) + speedBox_->value() / 25.0; // one video frame of simulation
+}
+
 void MainWindow::togglePlay() {
   playing_ = !playing_;
+  if (!playing_) requested_ = shownTime_; // pause where the picture is
   playAction_->setText(playing_ ? "Pause" : "Play");
   clock_.restart();
   showStatus();
@@ -321,8 +331,8 @@ void MainWindow::tick() {
   if (playing_ && error_.isEmpty()) {
     // never run further ahead of what is shown than a fraction of a second of work
     if (requested_ - shownTime_ < 0.5 * speedBox_->value()) requested_ += wall * speedBox_->value();
-    stream_->requestUntil(requested_);
   }
+  if (error_.isEmpty()) stream_->requestUntil(requested_); // paused, a single step still goes
   if (!stream_->take(batch_)) return;
   for (std::size_t i = 0; i < batch_.states.size(); ++i) {
     visual_->advance(batch_.times[i], batch_.states[i]);
@@ -348,6 +358,8 @@ void MainWindow::showStatus() {
                   .arg(QFileInfo(scenePath_).fileName())
                   .arg(shownTime_, 0, 'f', 3)
                   .arg(playing_ ? "playing" : "paused");
+  if (visual_ && visual_->energyError()) s += QString("   dE/E = %1").arg(*visual_->energyError(), 0, 'e', 2);
+  if (scene_) s += "   " + QString::fromStdString(scene_->runSpec().describe()).section(' ', 0, 0);
   if (!error_.isEmpty()) s += "   stopped: " + error_;
   status_->setText(s);
 }

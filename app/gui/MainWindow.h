@@ -67,6 +67,8 @@ public:
 
 public slots:
   void togglePlay();
+  /// Pauses and goes one frame (1/25 s times the real-time factor) further.
+  void stepFrame();
   void restart();
   void snapshot();
   void openDialog();

@@ -287,4 +287,13 @@ bool MapPanel::eventFilter(QObject* watched, QEvent* event) {
   return QWidget::eventFilter(watched, event);
 }
 
+void MapPanel::highlightJob(int id) {
+  if (!chart_) return;
+  int plot = -1;
+  for (const auto& s : series_)
+    if (s.job->id() == id) plot = s.plot;
+  chart_->select(plot);
+  view_->update();
+}
+
 } // namespace rv

@@ -44,6 +44,8 @@ public:
   JobTree& jobs() { return jobs_; }
   /// Deletes a job and those under it, with what the panel draws of them.
   void removeJob(Job& job);
+  /// Draws the trajectory of job `id` emphasised (-1, or a job that is not a trajectory: none).
+  void highlightJob(int id);
   long points() const;
   int trajectories() const { return static_cast<int>(series_.size()); }
   /// Fixed-point searches started, and how many found a point.

@@ -35,7 +35,14 @@ ToolManager::ToolManager(JobTree& jobs, std::function<void(Job&)> remove, QWidge
          "goes on from the stop point with them",
          &ToolManager::editSelected);
   button("Delete", "stop and delete the selected tool and the tools under it", &ToolManager::deleteSelected);
+  button("Find parent", "select the tool the selected one studies", &ToolManager::selectParent);
+  button("Stop all", "stop every tool", &ToolManager::stopAll);
+  button("Delete all", "stop and delete every tool", &ToolManager::deleteAll);
   layout->addLayout(buttons);
+  connect(tree_, &QTreeWidget::currentItemChanged, this, [this] {
+    const Job* j = selected();
+    emit selectedJob(j ? j->id() : -1);
+  });
   timer_ = new QTimer(this);
   connect(timer_, &QTimer::timeout, this, &ToolManager::refresh);
   timer_->start(250);
@@ -127,6 +134,22 @@ void ToolManager::editSelected() {
     emit message(QString("cannot edit tool %1: %2").arg(job->id()).arg(e.what()));
   }
   refresh();
+}
+
+void ToolManager::stopAll() {
+  for (Job* j : jobs_.jobs())
+    j->stop();
+  refresh();
+}
+
+void ToolManager::deleteAll() {
+  for (Job* j : jobs_.jobs()) // parents first: deleting one takes its children with it
+    if (jobs_.find(j->id()) == j && !j->parent()) remove_(*j);
+  refresh();
+}
+
+void ToolManager::selectParent() {
+  if (Job* j = selected(); j && j->parent()) select(j->parent()->id());
 }
 
 } // namespace rv

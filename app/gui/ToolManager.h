@@ -32,11 +32,17 @@ public:
   /// Edit properties (manual §2.1): gives the selected job, which must be stopped, the control panel's
   /// values through `editor` (set by the owner); it then continues from its stop point with them.
   void editSelected();
+  void stopAll();
+  void deleteAll();
+  /// Selects the tool the selected one hangs under (manual: Find parent).
+  void selectParent();
   void setEditor(std::function<void(Job&)> editor) { editor_ = std::move(editor); }
 
 signals:
   /// Why an action could not be done, for the status bar.
   void message(const QString& text);
+  /// The selection changed: the job's id (-1: none), so that every window highlights its graphics.
+  void selectedJob(int id);
 
 public:
   QTreeWidget* tree() const { return tree_; }

@@ -1,6 +1,7 @@
 // Chart.h -- what every chart window shows through: a 2D chart (PoincareChart and the tool charts) or a 3D
 // one (Chart3D), drawn into a render window on screen or headless.
 #pragma once
+#include <ostream>
 
 class vtkRenderWindow;
 
@@ -11,6 +12,8 @@ public:
   virtual ~Chart() = default;
   /// Draws into `window` (the chart takes it over).
   virtual void attach(vtkRenderWindow* window) = 0;
+  /// The data drawn, as CSV with a header: series, then the coordinates (round-trip exact).
+  virtual void writeCsv(std::ostream& out) const = 0;
 };
 
 } // namespace rv

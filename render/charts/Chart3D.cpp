@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
@@ -88,6 +89,17 @@ void Chart3D::attach(vtkRenderWindow* window) {
   renderer_->ResetCamera();
   cam->Zoom(0.9); // room for the labels
   window->AddRenderer(renderer_);
+}
+
+void Chart3D::writeCsv(std::ostream& out) const {
+  out << "series," << titles_[0] << "," << titles_[1] << "," << titles_[2] << "\n";
+  char row[128];
+  for (std::size_t i = 0; i < series_.size(); ++i)
+    for (std::size_t k = 0; k < series_[i].x.size(); ++k) {
+      std::snprintf(row, sizeof row, "%zu,%.17g,%.17g,%.17g\n", i, series_[i].x[k], series_[i].y[k],
+                    series_[i].z[k]);
+      out << row;
+    }
 }
 
 } // namespace rv

@@ -25,6 +25,7 @@ public:
   /// Draws x, y and z at one scale (a cube of data is a cube) or each filling the box.
   void setEqualScales(bool equal) { equal_ = equal; }
   void attach(vtkRenderWindow* window) override;
+  void writeCsv(std::ostream& out) const override;
   vtkRenderer* renderer() const { return renderer_; }
   /// The box drawn, after attach: x_min, x_max, y_min, ... in data units.
   const std::array<double, 6>& bounds() const { return bounds_; }

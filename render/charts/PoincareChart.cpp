@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <vtkAxis.h>
 #include <vtkCallbackCommand.h>
@@ -258,6 +259,31 @@ void PoincareChart::attach(vtkRenderWindow* window) {
     x0 = c - half, x1 = c + half;
   }
   setRanges(x0, x1, y0, y1);
+}
+
+void PoincareChart::writeCsv(std::ostream& out) const {
+  out << "series," << chart_->GetAxis(vtkAxis::BOTTOM)->GetTitle() << ","
+      << chart_->GetAxis(vtkAxis::LEFT)->GetTitle() << "\n";
+  char row[96];
+  for (vtkIdType i = 0; i < chart_->GetNumberOfPlots(); ++i) {
+    const auto large =
+        std::find_if(large_.begin(), large_.end(), [&](const LargeSeries& s) { return s.index == i; });
+    if (large != large_.end()) { // every point, not the ones drawn
+      for (std::size_t k = 0; k < large->x.size(); ++k) {
+        std::snprintf(row, sizeof row, "%lld,%.17g,%.17g\n", static_cast<long long>(i), large->x[k],
+                      large->y[k]);
+        out << row;
+      }
+      continue;
+    }
+    vtkTable* t = chart_->GetPlot(i)->GetInput();
+    if (!t || t->GetNumberOfColumns() < 2) continue; // a heat map has no rows
+    for (vtkIdType r = 0; r < t->GetNumberOfRows(); ++r) {
+      std::snprintf(row, sizeof row, "%lld,%.17g,%.17g\n", static_cast<long long>(i),
+                    t->GetValue(r, 0).ToDouble(), t->GetValue(r, 1).ToDouble());
+      out << row;
+    }
+  }
 }
 
 } // namespace rv

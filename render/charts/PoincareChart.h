@@ -46,6 +46,7 @@ public:
   void select(int index);
   /// Draws into `window` (the chart's view takes it over).
   void attach(vtkRenderWindow* window) override;
+  void writeCsv(std::ostream& out) const override;
   /// The size of points (pixels; the selected series twice as big).
   void setMarkerSize(float size);
   /// Equal units per pixel on both axes (the manual's "hold proportions"): the shorter range is widened.

@@ -93,6 +93,17 @@ private slots:
     window_->togglePlay();
   }
 
+  void stepGoesOneFrameWhilePaused() {
+    window_->togglePlay(); // pause
+    QTest::qWait(200);
+    const double t0 = window_->shownTime();
+    window_->stepFrame();
+    QTRY_VERIFY_WITH_TIMEOUT(window_->shownTime() > t0, 3000);
+    QTest::qWait(200);
+    QVERIFY(std::abs(window_->shownTime() - t0 - 1.0 / 25) < 1e-9); // speed 1: 1/25 s of simulation
+    window_->togglePlay();
+  }
+
   void snapshotWritesAPng() {
     const QString path = dir_.filePath("snap.png");
     QVERIFY(window_->snapshotTo(path));
@@ -156,6 +167,14 @@ private slots:
       for (int x = 0; x < img.width(); ++x)
         nonWhite += img.pixelColor(x, y).lightness() < 200;
     QVERIFY2(nonWhite > 1000, qPrintable(QString("dark pixels %1").arg(nonWhite)));
+    // its data as CSV: a header and the branches' points
+    const QString csv = dir_.filePath("bifurcation.csv");
+    QVERIFY(chart->saveCsv(csv));
+    QFile f(csv);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    const QStringList lines = QString::fromUtf8(f.readAll()).split('\n', Qt::SkipEmptyParts);
+    QVERIFY(lines.first().startsWith("series,"));
+    QVERIFY2(lines.size() > 50, qPrintable(QString("%1 lines").arg(lines.size())));
     chart->close();
   }
 
@@ -207,7 +226,11 @@ private slots:
     tools->stopSelected();
     // the trajectory's state is now on the new energy level
     const auto model = task.spec().makeModel();
-    QVERIFY(std::abs(model->integrals(task.lastState().data())[0] - newEnergy) < 1e-9);
+    const double e = model->integrals(task.lastState().data())[0];
+    QVERIFY2(
+        std::abs(e - newEnergy) < 1e-9,
+        qPrintable(
+            QString("energy %1, expected %2 (was %3)").arg(e, 0, 'g', 17).arg(newEnergy).arg(oldEnergy)));
     keep(window_->grab().toImage(), "window_main_henon_heiles.png");
     tools->deleteSelected();
     QCOMPARE(map->trajectories(), before);
