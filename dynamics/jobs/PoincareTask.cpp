@@ -29,14 +29,17 @@ void PoincareTask::reset() {
 
 void PoincareTask::edit(RunSpec spec, SectionSettings settings) {
   const Eigen::VectorXd from = lastState();
-  const double t = last_ ? last_->time : map_->integrator().time();
+  const double t = last_ ? last_->time : 0.0;      // no point yet: it starts again from its first point
   std::unique_ptr<Model> model = spec.makeModel(); // may throw InputError: nothing changes then
   Eigen::VectorXd x0 = from;
-  if (last_ && !model->isMap() && !model->info().mapCoordinates.empty()) {
-    // the same point of the map on the new level of the integrals (InputError when it has no state there)
-    x0 = model->stateFromMap(last_->coordinates,
-                             {.sectionValue = settings.value, .root = std::max(1, last_->sheet)},
-                             "the last map point");
+  if (!model->isMap() && !model->info().mapCoordinates.empty()) {
+    // the same point of the map on the new level of the integrals (InputError when it has no state there);
+    // with no point yet, the trajectory's first point (a click on the map starts it on the section)
+    const std::vector<double> at = last_ ? last_->coordinates : map_->coordinatesOf(0, spec_.initialState);
+    const int root = last_ ? std::max(1, last_->sheet) : 1;
+    x0 = model->stateFromMap(at, {.sectionValue = settings.value, .root = root},
+                             last_ ? "the last map point" : "the first map point");
+    if (!last_) spec.initialState = x0;
   }
   spec_ = std::move(spec);
   settings_ = std::move(settings);

@@ -85,6 +85,26 @@ TEST(Job, EditTheEnergyAndContinueGivesPointsAtTheNewEnergy) {
   EXPECT_EQ(poincare->spec().modelParameters["energy"], 0.15);
 }
 
+// edited before its first map point (stopped at once): it starts again from its first point, on the new level
+TEST(Job, AnEditBeforeTheFirstPointStartsAgainAtTheNewEnergy) {
+  JobTree tree;
+  auto task = std::make_unique<PoincareTask>(henonHeiles(0.125), SectionSettings{});
+  auto* poincare = task.get();
+  Job& job = tree.add(std::move(task));
+  job.edit([](Task& t) {
+    auto& p = static_cast<PoincareTask&>(t);
+    RunSpec s = p.spec();
+    s.modelParameters.set("energy", 0.15);
+    p.edit(s, p.settings());
+  });
+  const auto model = poincare->spec().makeModel();
+  EXPECT_NEAR(model->integrals(poincare->spec().initialState.data())[0], 0.15, 1e-12);
+  job.start();
+  ASSERT_TRUE(waitFor([&] { return poincare->points().total() >= 3; }));
+  job.stop();
+  EXPECT_NEAR(model->integrals(poincare->lastState().data())[0], 0.15, 1e-10);
+}
+
 TEST(Job, RestartBeginsAgainAndFinishedJobsReportIt) {
   JobTree tree;
   SectionSettings s;
