@@ -13,6 +13,9 @@ class QTabWidget;
 namespace rv {
 
 class ParameterForm;
+}
+class QTreeWidget;
+namespace rv {
 
 class ControlPanel : public QWidget {
   Q_OBJECT
@@ -25,12 +28,22 @@ public:
   /// The form of a tab: "problem", "method" or a tool section key (for tests).
   ParameterForm* form(const std::string& key) const;
 
+  /// The manual's tool tree (Tools tab), ids as the `create` signal gives them: poincare > spectrum,
+  /// lyapunov, map3d; fixedpoint > continuation, separatrix, bifurcation_tree; surface; ram; diagram.
+  QTreeWidget* toolTree() const { return toolTree_; }
+  /// Selects a tool of the tree by id (tests).
+  void selectTool(const std::string& id);
+
 signals:
   /// Apply was pressed: the document to run.
   void apply(const nlohmann::json& document);
+  /// Create was pressed on a tool of the tree.
+  void create(const std::string& tool);
 
 private:
   QTabWidget* tabs_;
+  QTreeWidget* toolTree_;
+  QWidget* toolsTab_;
   const Scene* scene_ = nullptr;
   std::vector<std::pair<std::string, ParameterForm*>> forms_;
 };

@@ -86,6 +86,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   addDockWidget(Qt::BottomDockWidgetArea, toolsDock);
   resizeDocks({toolsDock}, {150}, Qt::Vertical); // the 3D view keeps most of the height
   connect(control_, &ControlPanel::apply, this, [this](const nlohmann::json& doc) { runDocument(doc); });
+  connect(control_, &ControlPanel::create, this, [this](const std::string& id) { createTool(id); });
   settings_ = new VisualizerSettings(this);
   auto* settingsDock = new QDockWidget("Visualizer settings", this);
   settingsDock->setObjectName("settings");
@@ -454,9 +455,26 @@ void MainWindow::recordDialog() {
   startRecording(path, spec);
 }
 
+void MainWindow::createTool(const std::string& id) {
+  if (!scene_) return;
+  if (id == "poincare")
+    map_->startFrom(scene_->initialState);
+  else if (id == "fixedpoint")
+    map_->searchFromGuess();
+  else if (id == "continuation")
+    map_->startContinuation();
+  else if (id == "separatrix")
+    map_->startSeparatrices();
+  else if (id == "bifurcation_tree")
+    map_->startBifurcationTree();
+  else // the tools whose output is a chart of its own: spectrum, lyapunov, map3d, plot, surface, ram, diagram
+    openChart(id == "diagram" ? "bifurcation" : id);
+}
+
 ChartWindow* MainWindow::openChart(const std::string& view) {
   if (!scene_) return nullptr;
-  auto* w = new ChartWindow(scene_->document, scene_->source, view, this);
+  // with the control panel's values as they stand (Apply not needed for a chart)
+  auto* w = new ChartWindow(control_->editedDocument(), scene_->source, view, this);
   w->setAttribute(Qt::WA_DeleteOnClose);
   w->show();
   return w;

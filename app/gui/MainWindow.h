@@ -57,6 +57,8 @@ public:
   bool recording() const { return recorder_ != nullptr; }
   /// Opens a filter window with a chart view of the scene (computed on a worker thread).
   ChartWindow* openChart(const std::string& view);
+  /// Create in the control panel's Tools tab: starts tool `id` on the map or opens its chart window.
+  void createTool(const std::string& id);
   /// Opens (or shows) the apex motion window: the apex view of the trajectory shown in the 3D view.
   QWidget* openApexWindow();
   VisualizerSettings* settings() const { return settings_; }

@@ -2,7 +2,9 @@
 
 #include "app/gui/QtVtkWidget.h"
 #include "dynamics/core/Errors.h"
+#include "dynamics/jobs/FixedPointTasks.h"
 #include "dynamics/jobs/PoincareTask.h"
+#include "dynamics/tools/ToolSettings.h"
 #include "scenes/SceneLoader.h"
 #include "scenes/SceneTools.h"
 
@@ -170,6 +172,44 @@ void MapPanel::startContinuation() {
   } catch (const InputError& e) {
     emit message(QString::fromStdString(e.what()));
   }
+}
+
+void MapPanel::startBifurcationTree() {
+  const auto sm = sceneMap();
+  if (!sm) return;
+  try {
+    const BifurcationTreeSettings settings =
+        bifurcationTreeSettings(sm->scene().tool("bifurcation_tree"), sm->continuation());
+    auto task = std::make_unique<BifurcationTreeTask>(sm->taskSpec(), settings);
+    BifurcationTreeTask* raw = task.get();
+    Job& job = jobs_.add(std::move(task));
+    const int plot = chart_->addSeries({}, {}, {0.6, 0.2, 0.5});
+    tools_.push_back({&job, plot, {}, {}, [this, raw](std::vector<double>& x, std::vector<double>& y) {
+                        std::vector<TreePoint> points;
+                        std::vector<PeriodDoubling> doublings;
+                        raw->points().take(points);
+                        raw->doublings().take(doublings);
+                        for (const auto& p : points)
+                          x.push_back(p.point.fixedPoint.point[0]), y.push_back(p.point.fixedPoint.point[1]);
+                        for (const auto& d : doublings)
+                          emit message(QString("period doubling of the order-%1 point at %2")
+                                           .arg(d.order)
+                                           .arg(d.parameter, 0, 'g', 12));
+                        return !points.empty();
+                      }});
+    job.start();
+    emit message("growing the bifurcation tree of the scene's fixed point");
+  } catch (const InputError& e) {
+    emit message(QString::fromStdString(e.what()));
+  }
+}
+
+void MapPanel::searchFromGuess() {
+  if (!scene_ || scene_->guess.size() < 2) {
+    emit message("the scene has no fixedpoint.guess (set it in the Fixed point tab, or Shift+click the map)");
+    return;
+  }
+  searchFixedPointAt(scene_->guess[0], scene_->guess[1]);
 }
 
 int MapPanel::fixedPointsFound() const {

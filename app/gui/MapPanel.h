@@ -37,6 +37,12 @@ public:
   /// Continues the scene's fixed point (its continuation settings); the family is drawn on the map and each
   /// change of type reported.
   void startContinuation();
+  /// A trajectory from a full state (the scene's initial one for the Tools tab's Create).
+  void startFrom(const Eigen::VectorXd& state) { start(state); }
+  /// The period-doubling tree of the scene's fixed point (bifurcation_tree section); its families drawn.
+  void startBifurcationTree();
+  /// A fixed-point search from the scene's fixedpoint.guess.
+  void searchFromGuess();
   /// Takes the points computed since the last call and redraws; called by the window's frame timer.
   void drain();
   void stopAll();

@@ -16,6 +16,7 @@
 
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
+#include <QPushButton>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTemporaryDir>
@@ -234,6 +235,30 @@ private slots:
     keep(window_->grab().toImage(), "window_main_henon_heiles.png");
     tools->deleteSelected();
     QCOMPARE(map->trajectories(), before);
+  }
+
+  // the control panel's Tools tab: Create on a map tool starts its job, on a chart tool opens its window
+  void toolsTabCreatesTools() {
+    QVERIFY(window_->openScene(QString::fromStdString(defaultScenePath("chaplygin_ball"))));
+    ControlPanel* panel = window_->controlPanel();
+    auto* create = panel->findChild<QPushButton*>("create");
+    QVERIFY(create);
+    const int searches = window_->mapPanel()->searches();
+    panel->selectTool("fixedpoint");
+    QTest::mouseClick(create, Qt::LeftButton);
+    QCOMPARE(window_->mapPanel()->searches(), searches + 1);
+    QTRY_COMPARE_WITH_TIMEOUT(window_->mapPanel()->fixedPointsFound(), 1, 20000);
+    const auto before = window_->findChildren<ChartWindow*>().size();
+    panel->selectTool("diagram");
+    QTest::mouseClick(create, Qt::LeftButton);
+    const auto charts = window_->findChildren<ChartWindow*>();
+    QCOMPARE(charts.size(), before + 1);
+    ChartWindow* chart = charts.back();
+    QCOMPARE(chart->viewName(), std::string("bifurcation"));
+    QSignalSpy finished(chart, &ChartWindow::finished);
+    QVERIFY(chart->ready() || finished.wait(30000));
+    QVERIFY(chart->ready());
+    chart->close();
   }
 
   void cleanupTestCase() { delete window_; }
