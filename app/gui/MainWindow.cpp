@@ -3,6 +3,7 @@
 #include "app/gui/ChartWindow.h"
 #include "app/gui/ControlPanel.h"
 #include "app/gui/MapPanel.h"
+#include "app/gui/PlotWindow.h"
 #include "app/gui/QtVtkWidget.h"
 #include "app/gui/ToolManager.h"
 #include "app/gui/VisualizerSettings.h"
@@ -166,6 +167,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   file->addSeparator();
   file->addAction("Quit", this, &QWidget::close)->setShortcut(QKeySequence::Quit);
   auto* windows = menuBar()->addMenu("&Windows");
+  windows->addAction("2D plot (live)", this, [this] { openPlotWindow(); })
+      ->setToolTip("the plot section's observables of the running trajectory (manual 2.4.1)");
   windows->addAction("Apex motion", this, [this] { openApexWindow(); })
       ->setToolTip("the body's axes on the unit sphere as it turns (manual 2.4.5)");
   auto* charts = windows->addMenu("Charts");
@@ -273,6 +276,9 @@ void MainWindow::useScene(std::unique_ptr<Scene> scene, const QString& path) {
   visual_.reset();
   if (apex_ && apexView_) apexView_->renderWindow()->RemoveRenderer(apex_->renderer());
   apex_.reset();
+  for (auto& p : plots_) // they read the old model's observables
+    delete p.data();
+  plots_.clear();
   scene_ = std::move(scene);
   scenePath_ = path;
   speedBox_->setValue(scene_->view.speed);
@@ -304,6 +310,8 @@ void MainWindow::restart() {
     apex_->clear();
     apex_->show(0.0, scene_->initialState);
   }
+  for (auto& p : plots_)
+    if (p) p->clear();
   error_.clear();
   requested_ = shownTime_ = 0;
   stream_ = std::make_unique<TrajectoryStream>(scene_->startIntegrator());
@@ -335,10 +343,15 @@ void MainWindow::tick() {
   }
   if (error_.isEmpty()) stream_->requestUntil(requested_); // paused, a single step still goes
   if (!stream_->take(batch_)) return;
+  std::erase_if(plots_, [](const QPointer<PlotWindow>& p) { return p.isNull(); });
   for (std::size_t i = 0; i < batch_.states.size(); ++i) {
     visual_->advance(batch_.times[i], batch_.states[i]);
     if (apex_) apex_->advance(batch_.times[i], batch_.states[i]);
+    for (auto& p : plots_)
+      p->offer(batch_.times[i], batch_.states[i].data());
   }
+  for (auto& p : plots_)
+    p->flush();
   if (batch_.reached) {
     visual_->show(batch_.atTime, batch_.at);
     if (apex_) apex_->show(batch_.atTime, batch_.at);
@@ -478,6 +491,20 @@ ChartWindow* MainWindow::openChart(const std::string& view) {
   w->setAttribute(Qt::WA_DeleteOnClose);
   w->show();
   return w;
+}
+
+PlotWindow* MainWindow::openPlotWindow() {
+  if (!scene_) return nullptr;
+  try {
+    auto* w = new PlotWindow(*scene_->model, scene_->plot.settings, this);
+    w->setAttribute(Qt::WA_DeleteOnClose);
+    w->show();
+    plots_.emplace_back(w);
+    return w;
+  } catch (const std::exception& e) {
+    statusBar()->showMessage(QString("Cannot plot: %1").arg(e.what()), 8000);
+    return nullptr;
+  }
 }
 
 QWidget* MainWindow::openApexWindow() {

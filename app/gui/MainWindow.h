@@ -10,6 +10,7 @@
 
 #include <QElapsedTimer>
 #include <QMainWindow>
+#include <QPointer>
 #include <QTimer>
 #include <memory>
 
@@ -25,6 +26,7 @@ namespace rv {
 
 class QtVtkWidget;
 class ChartWindow;
+class PlotWindow;
 class VisualizerSettings;
 class MapPanel;
 class ControlPanel;
@@ -59,6 +61,9 @@ public:
   ChartWindow* openChart(const std::string& view);
   /// Create in the control panel's Tools tab: starts tool `id` on the map or opens its chart window.
   void createTool(const std::string& id);
+  /// Opens a live 2D plot window (the scene's plot section) fed by the 3D view's run; nullptr (with the
+  /// reason in the status bar) when the section does not fit the problem.
+  PlotWindow* openPlotWindow();
   /// Opens (or shows) the apex motion window: the apex view of the trajectory shown in the 3D view.
   QWidget* openApexWindow();
   VisualizerSettings* settings() const { return settings_; }
@@ -110,6 +115,7 @@ private:
   QWidget* apexWindow_ = nullptr;
   QtVtkWidget* apexView_ = nullptr;
   std::unique_ptr<VisualScene> apex_;
+  std::vector<QPointer<PlotWindow>> plots_; ///< live plot windows (they belong to this window as children)
   // a recording in progress: its own scene, integrator, headless context and exporter
   struct Recording;
   std::unique_ptr<Recording> recorder_;

@@ -8,8 +8,8 @@
 
 namespace rv {
 
-std::vector<std::vector<double>> samplePlot(const Model& model, Integrator& integrator, const PlotSettings& s,
-                                            const ToolControl& control, const std::string& context) {
+PlotSampler::PlotSampler(const Model& model, const PlotSettings& s, const std::string& context)
+    : settings_(s) {
   if (s.axes.size() != 2 && s.axes.size() != 3) throw InputError(context + ".axes: give 2 or 3 observables");
   if (!(s.period > 0 && std::isfinite(s.period))) throw InputError(context + ".period: must be positive");
   if (s.maxPoints < 1) throw InputError(context + ".max_points: must be at least 1");
@@ -19,37 +19,52 @@ std::vector<std::vector<double>> samplePlot(const Model& model, Integrator& inte
       throw InputError(context + "." + field + ": unknown observable '" + id + "' of " + model.info().id);
     return model.observables()[k].value;
   };
-  std::vector<std::function<double(double, const double*)>> axes;
   const char* names[3] = {"x", "y", "z"};
   for (std::size_t i = 0; i < s.axes.size(); ++i)
-    axes.push_back(find(s.axes[i], names[i]));
+    axes_.push_back(find(s.axes[i], names[i]));
+  condition_ = find(s.condition, "condition");
+}
+
+std::vector<double> PlotSampler::valuesAt(double t, const double* x) const {
+  std::vector<double> v;
+  for (const auto& f : axes_)
+    v.push_back(f(t, x));
+  return v;
+}
+
+bool PlotSampler::offer(double t, const double* x) {
+  if (full()) return false;
+  const double c = condition_(t, x);
+  if (started_ && std::abs(c - last_) < settings_.period) return false;
+  started_ = true;
+  last_ = c;
+  values_ = valuesAt(t, x);
+  ++kept_;
+  return true;
+}
+
+std::vector<std::vector<double>> samplePlot(const Model& model, Integrator& integrator, const PlotSettings& s,
+                                            const ToolControl& control, const std::string& context) {
+  PlotSampler sampler(model, s, context);
   std::vector<std::vector<double>> points;
-  const auto emit = [&](double t, const double* x) {
-    std::vector<double> p;
-    for (const auto& f : axes)
-      p.push_back(f(t, x));
-    points.push_back(std::move(p));
-    control.progress(static_cast<double>(points.size()) / s.maxPoints);
-  };
+  const auto progress = [&] { control.progress(static_cast<double>(points.size()) / s.maxPoints); };
   if (s.condition == "t") {
+    // in time: exactly at the multiples of the period, from the dense output
     const long n = std::min(s.maxPoints, static_cast<long>(s.timeLimit / s.period) + 1);
     sampleUniform(integrator, s.period, n, [&](double t, const Eigen::VectorXd& x) {
-      emit(t, x.data());
+      points.push_back(sampler.valuesAt(t, x.data()));
+      progress();
       return !control.stopRequested();
     });
     return points;
   }
-  const auto cond = find(s.condition, "condition");
-  double last = cond(integrator.time(), integrator.state().data());
-  emit(integrator.time(), integrator.state().data());
   const double t0 = integrator.time();
-  while (static_cast<long>(points.size()) < s.maxPoints && !control.stopRequested() &&
-         std::abs(integrator.time() - t0) < s.timeLimit) {
+  if (sampler.offer(t0, integrator.state().data())) points.push_back(sampler.values());
+  while (!sampler.full() && !control.stopRequested() && std::abs(integrator.time() - t0) < s.timeLimit) {
     integrator.step();
-    const double c = cond(integrator.time(), integrator.state().data());
-    if (std::abs(c - last) >= s.period) {
-      emit(integrator.time(), integrator.state().data());
-      last = c;
+    if (sampler.offer(integrator.time(), integrator.state().data())) {
+      points.push_back(sampler.values());
+      progress();
     }
   }
   return points;

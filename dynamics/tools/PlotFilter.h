@@ -19,6 +19,32 @@ struct PlotSettings {
   double timeLimit = 1000; ///< integration time at most (a condition that stops changing ends the plot)
 };
 
+/// The filter's rule applied to states as they come (a running trajectory feeding an open plot window):
+/// a state is kept when the condition has moved by the period since the last kept one, up to maxPoints.
+class PlotSampler {
+public:
+  /// Throws InputError naming `context` for an unknown observable or a bad setting.
+  PlotSampler(const Model& model, const PlotSettings& settings, const std::string& context = "plot");
+  /// Offers the state x at time t; true when it is kept (then values() holds the axes' values).
+  bool offer(double t, const double* x);
+  const std::vector<double>& values() const { return values_; }
+  long kept() const { return kept_; }
+  bool full() const { return kept_ >= settings_.maxPoints; }
+  /// The axes' values at a state (kept or not).
+  std::vector<double> valuesAt(double t, const double* x) const;
+  /// Forgets the last kept state (a new run).
+  void clear() { kept_ = 0, started_ = false; }
+
+private:
+  PlotSettings settings_;
+  std::vector<std::function<double(double, const double*)>> axes_;
+  std::function<double(double, const double*)> condition_;
+  std::vector<double> values_;
+  double last_ = 0;
+  long kept_ = 0;
+  bool started_ = false;
+};
+
 /// points[k] = the axes' values at the k-th output. Throws InputError naming `context` for an unknown
 /// observable or a bad period; stops (returning what it has) when the control asks.
 std::vector<std::vector<double>> samplePlot(const Model& model, Integrator& integrator, const PlotSettings& s,

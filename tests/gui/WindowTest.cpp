@@ -7,6 +7,7 @@
 #include "app/gui/MainWindow.h"
 #include "app/gui/MapPanel.h"
 #include "app/gui/ParameterForm.h"
+#include "app/gui/PlotWindow.h"
 #include "app/gui/QtVtkWidget.h"
 #include "app/gui/ToolManager.h"
 #include "app/gui/VisualizerSettings.h"
@@ -259,6 +260,27 @@ private slots:
     QVERIFY(chart->ready() || finished.wait(30000));
     QVERIFY(chart->ready());
     chart->close();
+  }
+
+  // the live 2D plot: the running trajectory's states become points whenever the condition (the time here)
+  // has moved by the period
+  void livePlotIsFedByTheRun() {
+    nlohmann::json doc = loadScene(defaultScenePath("chaplygin_ball")).document;
+    doc["plot"] = {{"x", "t"}, {"y", "M1"}, {"period", 0.05}};
+    QVERIFY(window_->runDocument(doc));
+    PlotWindow* plot = window_->openPlotWindow();
+    QVERIFY(plot);
+    QTRY_VERIFY_WITH_TIMEOUT(plot->points() > 10, 10000);
+    const auto& t = plot->xs();
+    for (std::size_t k = 1; k < t.size(); ++k)
+      QVERIFY(t[k] - t[k - 1] >= 0.05 - 1e-12); // the period, in time
+    QTest::qWait(200);
+    keep(plot->grab().toImage(), "window_plot.png");
+    const QImage img = plot->view()->grabFramebuffer();
+    QVERIFY(img.width() > 0);
+    window_->restart(); // a new run: the plot starts again
+    QVERIFY(plot->points() <= 1);
+    plot->close();
   }
 
   void cleanupTestCase() { delete window_; }
