@@ -119,6 +119,13 @@ std::unique_ptr<SceneMap> MapPanel::sceneMap() {
   }
 }
 
+void MapPanel::startTool(std::unique_ptr<Task> task, const Rgb& colour,
+                         std::function<bool(std::vector<double>& x, std::vector<double>& y)> pull) {
+  Job& job = jobs_.add(std::move(task));
+  tools_.push_back({&job, chart_->addSeries({}, {}, colour), {}, {}, std::move(pull)});
+  job.start();
+}
+
 void MapPanel::startSeparatrices() {
   const auto sm = sceneMap();
   if (!sm) return;
@@ -129,17 +136,14 @@ void MapPanel::startSeparatrices() {
     s.branch = b;
     auto task = std::make_unique<SeparatrixTask>(sm->taskSpec(), s);
     SeparatrixTask* raw = task.get();
-    Job& job = jobs_.add(std::move(task));
-    const int plot = chart_->addSeries({}, {}, colours[b - 1]);
-    tools_.push_back({&job, plot, {}, {}, [raw](std::vector<double>& x, std::vector<double>& y) {
-                        std::vector<std::vector<Eigen::VectorXd>> batches;
-                        raw->points().take(batches);
-                        for (const auto& batch : batches)
-                          for (const auto& p : batch)
-                            x.push_back(p[0]), y.push_back(p[1]);
-                        return !batches.empty();
-                      }});
-    job.start();
+    startTool(std::move(task), colours[b - 1], [raw](std::vector<double>& x, std::vector<double>& y) {
+      std::vector<std::vector<Eigen::VectorXd>> batches;
+      raw->points().take(batches);
+      for (const auto& batch : batches)
+        for (const auto& p : batch)
+          x.push_back(p[0]), y.push_back(p[1]);
+      return !batches.empty();
+    });
   }
   emit message("growing the separatrices of the fixed point near the scene's guess");
 }
@@ -150,24 +154,22 @@ void MapPanel::startContinuation() {
   try {
     auto task = std::make_unique<ContinuationTask>(sm->taskSpec(), sm->continuation());
     ContinuationTask* raw = task.get();
-    Job& job = jobs_.add(std::move(task));
-    const int plot = chart_->addSeries({}, {}, {0.95, 0.55, 0.1});
-    tools_.push_back({&job, plot, {}, {}, [this, raw](std::vector<double>& x, std::vector<double>& y) {
-                        std::vector<ContinuationPoint> points;
-                        std::vector<TypeChange> changes;
-                        raw->points().take(points);
-                        raw->changes().take(changes);
-                        for (const auto& p : points)
-                          x.push_back(p.fixedPoint.point[0]), y.push_back(p.fixedPoint.point[1]);
-                        for (const auto& c : changes)
-                          emit message(QString("type change at %1 = %2: %3 -> %4 (%5)")
-                                           .arg(QString::fromStdString(raw->describe()))
-                                           .arg(c.parameter, 0, 'g', 12)
-                                           .arg(QString::fromStdString(c.from), QString::fromStdString(c.to),
-                                                QString::fromStdString(c.kind)));
-                        return !points.empty();
-                      }});
-    job.start();
+    startTool(std::move(task), {0.95, 0.55, 0.1},
+              [this, raw](std::vector<double>& x, std::vector<double>& y) {
+                std::vector<ContinuationPoint> points;
+                std::vector<TypeChange> changes;
+                raw->points().take(points);
+                raw->changes().take(changes);
+                for (const auto& p : points)
+                  x.push_back(p.fixedPoint.point[0]), y.push_back(p.fixedPoint.point[1]);
+                for (const auto& c : changes)
+                  emit message(QString("type change at %1 = %2: %3 -> %4 (%5)")
+                                   .arg(QString::fromStdString(raw->describe()))
+                                   .arg(c.parameter, 0, 'g', 12)
+                                   .arg(QString::fromStdString(c.from), QString::fromStdString(c.to),
+                                        QString::fromStdString(c.kind)));
+                return !points.empty();
+              });
     emit message("continuing the scene's fixed point");
   } catch (const InputError& e) {
     emit message(QString::fromStdString(e.what()));
@@ -182,22 +184,18 @@ void MapPanel::startBifurcationTree() {
         bifurcationTreeSettings(sm->scene().tool("bifurcation_tree"), sm->continuation());
     auto task = std::make_unique<BifurcationTreeTask>(sm->taskSpec(), settings);
     BifurcationTreeTask* raw = task.get();
-    Job& job = jobs_.add(std::move(task));
-    const int plot = chart_->addSeries({}, {}, {0.6, 0.2, 0.5});
-    tools_.push_back({&job, plot, {}, {}, [this, raw](std::vector<double>& x, std::vector<double>& y) {
-                        std::vector<TreePoint> points;
-                        std::vector<PeriodDoubling> doublings;
-                        raw->points().take(points);
-                        raw->doublings().take(doublings);
-                        for (const auto& p : points)
-                          x.push_back(p.point.fixedPoint.point[0]), y.push_back(p.point.fixedPoint.point[1]);
-                        for (const auto& d : doublings)
-                          emit message(QString("period doubling of the order-%1 point at %2")
-                                           .arg(d.order)
-                                           .arg(d.parameter, 0, 'g', 12));
-                        return !points.empty();
-                      }});
-    job.start();
+    startTool(std::move(task), {0.6, 0.2, 0.5}, [this, raw](std::vector<double>& x, std::vector<double>& y) {
+      std::vector<TreePoint> points;
+      std::vector<PeriodDoubling> doublings;
+      raw->points().take(points);
+      raw->doublings().take(doublings);
+      for (const auto& p : points)
+        x.push_back(p.point.fixedPoint.point[0]), y.push_back(p.point.fixedPoint.point[1]);
+      for (const auto& d : doublings)
+        emit message(
+            QString("period doubling of the order-%1 point at %2").arg(d.order).arg(d.parameter, 0, 'g', 12));
+      return !points.empty();
+    });
     emit message("growing the bifurcation tree of the scene's fixed point");
   } catch (const InputError& e) {
     emit message(QString::fromStdString(e.what()));

@@ -92,6 +92,9 @@ private:
     std::function<bool(std::vector<double>& x, std::vector<double>& y)> pull;
   };
   std::vector<ToolSeries> tools_;
+  /// Adds a tool's job, a series on the map for its output (`pull` fetches it), and starts it.
+  void startTool(std::unique_ptr<Task> task, const Rgb& colour,
+                 std::function<bool(std::vector<double>& x, std::vector<double>& y)> pull);
   /// The scene's tool setup; nothing (with a message) when the scene cannot give one.
   std::unique_ptr<class SceneMap> sceneMap();
   QtVtkWidget* view_;

@@ -1,5 +1,7 @@
 #include "render/objects/ApexObject.h"
 
+#include "render/objects/Actors.h"
+
 #include <vtkActor.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
@@ -15,14 +17,7 @@ Rgb axisColor(int axis) {
 
 ApexObject::ApexObject(std::string name, int axis, LookingIn frame, long maxPoints)
     : VisualObject(std::move(name)), axis_(axis), frame_(frame), trace_(1e-3, maxPoints) {
-  vtkNew<vtkSphereSource> ball;
-  ball->SetRadius(0.035);
-  ball->SetThetaResolution(20);
-  ball->SetPhiResolution(12);
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(ball->GetOutputPort());
-  dot_ = vtkSmartPointer<vtkActor>::New();
-  dot_->SetMapper(mapper);
+  dot_ = sphereActor(0.035, 20, 12);
 }
 
 void ApexObject::attach(vtkRenderer* renderer) {

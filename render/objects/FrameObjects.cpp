@@ -1,5 +1,6 @@
 #include "render/objects/FrameObjects.h"
 
+#include "render/objects/Actors.h"
 #include "render/objects/ApexObject.h"
 
 #include <cmath>
@@ -28,14 +29,7 @@ void place(vtkActor* actor, const Eigen::Matrix3d& r) {
 } // namespace
 
 UnitSphereObject::UnitSphereObject(std::string name) : VisualObject(std::move(name)) {
-  vtkNew<vtkSphereSource> s;
-  s->SetRadius(1.0);
-  s->SetThetaResolution(72);
-  s->SetPhiResolution(36);
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(s->GetOutputPort());
-  sphere_ = vtkSmartPointer<vtkActor>::New();
-  sphere_->SetMapper(mapper);
+  sphere_ = sphereActor(1.0, 72, 36);
   sphere_->GetProperty()->SetSpecular(0.2);
 }
 
@@ -101,10 +95,7 @@ VectorObject::VectorObject(std::string name, LookingIn frame) : VisualObject(std
   vtkNew<vtkArrowSource> arrow; // along +x, unit length
   arrow->SetTipResolution(24);
   arrow->SetShaftResolution(16);
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(arrow->GetOutputPort());
-  actor_ = vtkSmartPointer<vtkActor>::New();
-  actor_->SetMapper(mapper);
+  actor_ = actorOf(arrow);
 }
 
 void VectorObject::attach(vtkRenderer* renderer) {

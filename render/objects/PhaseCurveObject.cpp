@@ -1,5 +1,7 @@
 #include "render/objects/PhaseCurveObject.h"
 
+#include "render/objects/Actors.h"
+
 #include <algorithm>
 #include <vtkActor.h>
 #include <vtkPolyDataMapper.h>
@@ -17,14 +19,7 @@ double component(const FrameState& s, int i) {
 
 PhaseCurveObject::PhaseCurveObject(std::string name, double scale, long maxPoints, bool asPoints)
     : VisualObject(std::move(name)), scale_(scale), line_(1e-3 * scale, maxPoints, asPoints) {
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetRadius(0.012 * scale);
-  sphere->SetThetaResolution(24);
-  sphere->SetPhiResolution(12);
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(sphere->GetOutputPort());
-  marker_ = vtkSmartPointer<vtkActor>::New();
-  marker_->SetMapper(mapper);
+  marker_ = sphereActor(0.012 * scale, 24, 12);
 }
 
 void PhaseCurveObject::attach(vtkRenderer* renderer) {
