@@ -9,7 +9,6 @@
 
 #include <QFileDialog>
 #include <QLabel>
-#include <QPointer>
 #include <QPushButton>
 #include <QVBoxLayout>
 #include <fstream>
@@ -43,7 +42,6 @@ ChartWindow::ChartWindow(const nlohmann::json& document, const std::string& sour
   layout->addLayout(bottom);
   resize(640, 640);
 
-  QPointer<ChartWindow> self(this);
   worker_ = std::thread([this, document, source, view] {
     std::unique_ptr<Chart> chart;
     QString failure;
@@ -58,8 +56,9 @@ ChartWindow::ChartWindow(const nlohmann::json& document, const std::string& sour
       failure = e.what();
     }
     if (stop_) return; // the window is going away: it joins this thread
+    // shared: if the window goes before the call is delivered, the discarded call frees the chart
     QMetaObject::invokeMethod(
-        this, [this, c = chart.release(), failure] { deliver(std::unique_ptr<Chart>(c), failure); },
+        this, [this, c = std::shared_ptr<Chart>(std::move(chart)), failure] { deliver(c, failure); },
         Qt::QueuedConnection);
   });
 }
@@ -69,7 +68,7 @@ ChartWindow::~ChartWindow() {
   if (worker_.joinable()) worker_.join();
 }
 
-void ChartWindow::deliver(std::unique_ptr<Chart> chart, const QString& failure) {
+void ChartWindow::deliver(std::shared_ptr<Chart> chart, const QString& failure) {
   if (worker_.joinable()) worker_.join();
   failure_ = failure;
   if (chart) {

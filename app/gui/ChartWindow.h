@@ -39,11 +39,11 @@ signals:
   void finished();
 
 private:
-  void deliver(std::unique_ptr<Chart> chart, const QString& failure);
+  void deliver(std::shared_ptr<Chart> chart, const QString& failure);
   std::string viewName_;
   QtVtkWidget* view_;
   QLabel* status_;
-  std::unique_ptr<Chart> chart_;
+  std::shared_ptr<Chart> chart_;
   QString failure_;
   std::atomic<bool> stop_{false};
   std::thread worker_;

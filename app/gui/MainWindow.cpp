@@ -281,6 +281,7 @@ void MainWindow::useScene(std::unique_ptr<Scene> scene, const QString& path) {
   plots_.clear();
   scene_ = std::move(scene);
   scenePath_ = path;
+  method_ = QString::fromStdString(scene_->runSpec().describe()).section(' ', 0, 0); // e.g. rk4(step=0.001)
   speedBox_->setValue(scene_->view.speed);
   setWindowTitle(QString("rollviz — %1 (%2)")
                      .arg(QFileInfo(path).fileName(), QString::fromStdString(scene_->model->info().id)));
@@ -373,7 +374,7 @@ void MainWindow::showStatus() {
                   .arg(shownTime_, 0, 'f', 3)
                   .arg(playing_ ? "playing" : "paused");
   if (visual_ && visual_->energyError()) s += QString("   dE/E = %1").arg(*visual_->energyError(), 0, 'e', 2);
-  if (scene_) s += "   " + QString::fromStdString(scene_->runSpec().describe()).section(' ', 0, 0);
+  if (!method_.isEmpty()) s += "   " + method_;
   if (!error_.isEmpty()) s += "   stopped: " + error_;
   status_->setText(s);
 }

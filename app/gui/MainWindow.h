@@ -128,6 +128,7 @@ private:
   QTimer timer_;
   QElapsedTimer clock_;
   QString scenePath_;
+  QString method_; ///< the integrator and its settings, for the status bar
   // destroyed in reverse order: the stream's thread stops before the scene it integrates goes away
   std::unique_ptr<Scene> scene_;
   std::unique_ptr<VisualScene> visual_;
