@@ -81,6 +81,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   connect(tools_, &ToolManager::message, this,
           [this](const QString& m) { statusBar()->showMessage(m, 8000); });
   connect(tools_, &ToolManager::selectedJob, map_, &MapPanel::highlightJob);
+  tools_->setOutputActions([this](int id, const Rgb& c) { return map_->setJobColor(id, c); },
+                           [this](int id, long a, long b) { return map_->setJobRange(id, a, b); });
   auto* toolsDock = new QDockWidget("Tool manager", this);
   toolsDock->setObjectName("tools");
   toolsDock->setWidget(tools_);

@@ -257,7 +257,7 @@ void MapPanel::drain() {
       s.x.push_back(p.coordinates.at(0));
       s.y.push_back(p.coordinates.size() > 1 ? p.coordinates[1] : p.time);
     }
-    chart_->setSeries(s.plot, s.x, s.y);
+    drawSeries(s);
     changed = true;
   }
   if (changed) view_->update();
@@ -332,6 +332,44 @@ void MapPanel::highlightJob(int id) {
     if (s.job->id() == id) plot = s.plot;
   chart_->select(plot);
   view_->update();
+}
+
+void MapPanel::drawSeries(const Series& s) {
+  if (s.first <= 1 && s.last <= 0) return chart_->setSeries(s.plot, s.x, s.y);
+  const long n = static_cast<long>(s.x.size());
+  const long a = std::clamp(s.first - 1, 0L, n), b = s.last > 0 ? std::clamp(s.last, a, n) : n;
+  chart_->setSeries(s.plot, {s.x.begin() + a, s.x.begin() + b}, {s.y.begin() + a, s.y.begin() + b});
+}
+
+bool MapPanel::setJobColor(int id, const Rgb& color) {
+  for (const auto& s : series_)
+    if (s.job->id() == id) {
+      chart_->setColor(s.plot, color);
+      view_->update();
+      return true;
+    }
+  return false;
+}
+
+bool MapPanel::setJobRange(int id, long first, long last) {
+  for (auto& s : series_)
+    if (s.job->id() == id) {
+      s.first = std::max(1L, first), s.last = last;
+      drawSeries(s);
+      view_->update();
+      return true;
+    }
+  return false;
+}
+
+long MapPanel::shownPoints(int id) const {
+  for (const auto& s : series_)
+    if (s.job->id() == id) {
+      const long n = static_cast<long>(s.x.size());
+      const long a = std::clamp(s.first - 1, 0L, n), b = s.last > 0 ? std::clamp(s.last, a, n) : n;
+      return b - a;
+    }
+  return 0;
 }
 
 } // namespace rv

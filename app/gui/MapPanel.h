@@ -52,6 +52,14 @@ public:
   void removeJob(Job& job);
   /// Draws the trajectory of job `id` emphasised (-1, or a job that is not a trajectory: none).
   void highlightJob(int id);
+  /// The colour of a trajectory's points (manual §2.1: colour of output); false when `id` is not a
+  /// trajectory.
+  bool setJobColor(int id, const Rgb& color);
+  /// Which of a trajectory's points show (manual §2.1: Set range): the `first`-th to the `last`-th (1-based,
+  /// inclusive; last <= 0: to the end). False when `id` is not a trajectory.
+  bool setJobRange(int id, long first, long last);
+  /// The points of trajectory `id` shown now (tests).
+  long shownPoints(int id) const;
   long points() const;
   int trajectories() const { return static_cast<int>(series_.size()); }
   /// Fixed-point searches started, and how many found a point.
@@ -73,7 +81,10 @@ private:
     PoincareTask* task;
     std::vector<double> x, y;
     int plot;
+    long first = 1, last = 0; ///< the range shown (Set range)
   };
+  /// Draws the part of a trajectory its range shows.
+  void drawSeries(const Series& s);
   struct Search {
     Job* job;
     FixedPointTask* task;

@@ -2,8 +2,11 @@
 
 #include "dynamics/jobs/JobTree.h"
 
+#include <QColorDialog>
 #include <QHBoxLayout>
 #include <QHeaderView>
+#include <QInputDialog>
+#include <QLineEdit>
 #include <QPushButton>
 #include <QTimer>
 #include <QTreeWidget>
@@ -36,6 +39,14 @@ ToolManager::ToolManager(JobTree& jobs, std::function<void(Job&)> remove, QWidge
          &ToolManager::editSelected);
   button("Delete", "stop and delete the selected tool and the tools under it", &ToolManager::deleteSelected);
   button("Find parent", "select the tool the selected one studies", &ToolManager::selectParent);
+  auto* colour = new QPushButton("Colour…", this);
+  colour->setToolTip("the colour of the selected trajectory's points");
+  connect(colour, &QPushButton::clicked, this, [this] { colourSelected(); });
+  buttons->addWidget(colour);
+  auto* range = new QPushButton("Set range…", this);
+  range->setToolTip("which of the selected trajectory's points show (from the first-th to the last-th)");
+  connect(range, &QPushButton::clicked, this, [this] { rangeSelected(); });
+  buttons->addWidget(range);
   button("Stop all", "stop every tool", &ToolManager::stopAll);
   button("Delete all", "stop and delete every tool", &ToolManager::deleteAll);
   layout->addLayout(buttons);
@@ -150,6 +161,37 @@ void ToolManager::deleteAll() {
 
 void ToolManager::selectParent() {
   if (Job* j = selected(); j && j->parent()) select(j->parent()->id());
+}
+
+void ToolManager::colourSelected(std::optional<Rgb> color) {
+  Job* j = selected();
+  if (!j || !colour_) return;
+  if (!color) {
+    const QColor c = QColorDialog::getColor(Qt::blue, this, "Colour of output");
+    if (!c.isValid()) return;
+    color = Rgb{c.redF(), c.greenF(), c.blueF()};
+  }
+  if (!colour_(j->id(), *color)) emit message("only trajectories of the map can be recoloured");
+}
+
+void ToolManager::rangeSelected(std::optional<long> first, long last) {
+  Job* j = selected();
+  if (!j || !range_) return;
+  if (!first) {
+    bool ok = false;
+    const QString text =
+        QInputDialog::getText(this, "Set range", "points to show, FIRST-LAST (LAST empty: to the end)",
+                              QLineEdit::Normal, "1-", &ok);
+    if (!ok) return;
+    const QStringList parts = text.split('-');
+    first = parts.value(0).trimmed().toLong();
+    last = parts.value(1).trimmed().toLong();
+    if (*first < 1 || (last > 0 && last < *first)) {
+      emit message("Set range: give FIRST-LAST with 1 <= FIRST <= LAST, e.g. 100-500 or 100-");
+      return;
+    }
+  }
+  if (!range_(j->id(), *first, last)) emit message("only trajectories of the map have a range of points");
 }
 
 } // namespace rv

@@ -3,8 +3,11 @@
 // delete act on the selected instance. It only reads the jobs' atomic state: the GUI thread never waits on
 // one except to stop it.
 #pragma once
+#include "render/ViewOptions.h"
 #include <QWidget>
+
 #include <functional>
+#include <optional>
 
 class QTreeWidget;
 class QTimer;
@@ -37,6 +40,16 @@ public:
   /// Selects the tool the selected one hangs under (manual: Find parent).
   void selectParent();
   void setEditor(std::function<void(Job&)> editor) { editor_ = std::move(editor); }
+  /// Colour of output and Set range act on the selected job through these (set by the owner; they return
+  /// false when the job has no such output).
+  void setOutputActions(std::function<bool(int, const Rgb&)> colour,
+                        std::function<bool(int, long, long)> range) {
+    colour_ = std::move(colour), range_ = std::move(range);
+  }
+  /// Colour of output for the selected job (a colour dialog unless `color` is given).
+  void colourSelected(std::optional<Rgb> color = std::nullopt);
+  /// Set range for the selected job (a dialog unless `first` is given; last <= 0: to the end).
+  void rangeSelected(std::optional<long> first = std::nullopt, long last = 0);
 
 signals:
   /// Why an action could not be done, for the status bar.
@@ -51,6 +64,8 @@ private:
   JobTree& jobs_;
   std::function<void(Job&)> remove_;
   std::function<void(Job&)> editor_;
+  std::function<bool(int, const Rgb&)> colour_;
+  std::function<bool(int, long, long)> range_;
   QTreeWidget* tree_;
   QTimer* timer_;
 };

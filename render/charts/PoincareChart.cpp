@@ -166,6 +166,12 @@ void PoincareChart::setSeries(int index, const std::vector<double>& x, const std
   }
 }
 
+void PoincareChart::setColor(int index, const Rgb& c) {
+  if (vtkPlot* plot = chart_->GetPlot(index))
+    plot->SetColor(static_cast<unsigned char>(255 * c[0]), static_cast<unsigned char>(255 * c[1]),
+                   static_cast<unsigned char>(255 * c[2]), 255);
+}
+
 void PoincareChart::clear() {
   chart_->ClearPlots();
   large_.clear();

@@ -34,6 +34,8 @@ public:
                 const Rgb& low, const Rgb& high);
   /// Fixes the axes' ranges (otherwise they follow the data).
   void setRanges(double x0, double x1, double y0, double y1);
+  /// Recolours series `index`.
+  void setColor(int index, const Rgb& color);
   /// Replaces the points of series `index`.
   void setSeries(int index, const std::vector<double>& x, const std::vector<double>& y);
   /// Names the axes.

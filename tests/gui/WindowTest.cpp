@@ -234,6 +234,24 @@ private slots:
         qPrintable(
             QString("energy %1, expected %2 (was %3)").arg(e, 0, 'g', 17).arg(newEnergy).arg(oldEnergy)));
     keep(window_->grab().toImage(), "window_main_henon_heiles.png");
+    // colour of output and Set range act on what the map draws of this trajectory
+    const auto green = [](const QImage& img) { // pure green: no series has it by default
+      long n = 0;
+      for (int y = 0; y < img.height(); ++y)
+        for (int x = 0; x < img.width(); ++x) {
+          const QColor c = img.pixelColor(x, y);
+          n += c.green() > 200 && c.red() < 60 && c.blue() < 60;
+        }
+      return n;
+    };
+    QCOMPARE(green(mapView->grabFramebuffer()), 0L);
+    tools->colourSelected(Rgb{0.0, 1.0, 0.0});
+    QTest::qWait(100);
+    QVERIFY(green(mapView->grabFramebuffer()) > 20);
+    tools->rangeSelected(5, 10);
+    QCOMPARE(map->shownPoints(job->id()), 6L);
+    tools->rangeSelected(3, 0);
+    QVERIFY(map->shownPoints(job->id()) > 6);
     tools->deleteSelected();
     QCOMPARE(map->trajectories(), before);
   }
