@@ -171,6 +171,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   auto* windows = menuBar()->addMenu("&Windows");
   windows->addAction("2D plot (live)", this, [this] { openPlotWindow(); })
       ->setToolTip("the plot section's observables of the running trajectory (manual 2.4.1)");
+  windows->addAction("Map3D (live)", map_, [this] { map_->openMap3D(); })
+      ->setToolTip("a 3D map in three dimensions, beside its projection in the map window");
   windows->addAction("Apex motion", this, [this] { openApexWindow(); })
       ->setToolTip("the body's axes on the unit sphere as it turns (manual 2.4.5)");
   auto* charts = windows->addMenu("Charts");

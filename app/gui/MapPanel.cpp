@@ -5,6 +5,7 @@
 #include "dynamics/jobs/FixedPointTasks.h"
 #include "dynamics/jobs/PoincareTask.h"
 #include "dynamics/tools/ToolSettings.h"
+#include "render/charts/Chart3D.h"
 #include "scenes/SceneLoader.h"
 #include "scenes/SceneTools.h"
 
@@ -35,6 +36,7 @@ void MapPanel::setScene(const Scene& scene) {
   searches_.clear();
   tools_.clear();
   scene_ = &scene;
+  resetMap3D(false);
   const auto names = PoincareMap(*scene.model, scene.startIntegrator(), scene.poincare).coordinateNames();
   // one chart for the panel's life: replacing it would leave the window's interactor (and its timers)
   // driving a destroyed chart scene
@@ -55,7 +57,7 @@ void MapPanel::start(const Eigen::VectorXd& state) {
   PoincareTask* raw = task.get();
   Job& job = jobs_.add(std::move(task));
   const int plot = chart_->addSeries({}, {}, seriesColor(static_cast<int>(series_.size())));
-  series_.push_back({&job, raw, {}, {}, plot});
+  series_.push_back({&job, raw, {}, {}, {}, plot});
   chart_->select(plot);
   job.start();
 }
@@ -256,11 +258,15 @@ void MapPanel::drain() {
     for (const auto& p : batch) {
       s.x.push_back(p.coordinates.at(0));
       s.y.push_back(p.coordinates.size() > 1 ? p.coordinates[1] : p.time);
+      if (p.coordinates.size() > 2) s.z.push_back(p.coordinates[2]);
     }
     drawSeries(s);
     changed = true;
   }
-  if (changed) view_->update();
+  if (changed) {
+    view_->update();
+    feedMap3D();
+  }
 }
 
 void MapPanel::removeJob(Job& job) {
@@ -293,6 +299,7 @@ void MapPanel::removeJob(Job& job) {
     }
   jobs_.remove(job);
   view_->update();
+  resetMap3D(true); // its series follow the trajectories' order
 }
 
 void MapPanel::stopAll() {
@@ -370,6 +377,63 @@ long MapPanel::shownPoints(int id) const {
       return b - a;
     }
   return 0;
+}
+
+void MapPanel::resetMap3D(bool reopen) {
+  if (!map3D_) return;
+  map3DView_->renderWindow()->RemoveRenderer(map3D_->renderer()); // the window's context is alive here
+  map3D_.reset();
+  if (reopen && map3DWindow_->isVisible())
+    openMap3D();
+  else
+    map3DWindow_->hide();
+}
+
+QWidget* MapPanel::openMap3D() {
+  if (!scene_) return nullptr;
+  const auto names =
+      PoincareMap(*scene_->model, scene_->startIntegrator(), scene_->poincare).coordinateNames();
+  if (names.size() < 3) {
+    emit message(
+        "Map3D: this map is two-dimensional (Windows > Charts > map3d shows it on its energy level)");
+    return nullptr;
+  }
+  if (!map3DWindow_) {
+    map3DWindow_ = new QWidget(this, Qt::Window);
+    map3DWindow_->setWindowTitle("rollviz — Map3D");
+    map3DView_ = new QtVtkWidget(map3DWindow_);
+    auto* layout = new QVBoxLayout(map3DWindow_);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(map3DView_);
+    map3DWindow_->resize(560, 560);
+  }
+  if (!map3D_) {
+    map3D_ = std::make_unique<Chart3D>(std::array<std::string, 3>{names[0], names[1], names[2]});
+    map3DSeries_ = 0;
+    feedMap3D();
+    map3D_->attach(map3DView_->renderWindow());
+  }
+  map3DWindow_->show();
+  map3DWindow_->raise();
+  return map3DWindow_;
+}
+
+void MapPanel::feedMap3D() {
+  if (!map3D_) return;
+  for (; map3DSeries_ < series_.size(); ++map3DSeries_)
+    map3D_->addSeries({}, {}, {}, seriesColor(static_cast<int>(map3DSeries_)), 3);
+  for (std::size_t k = 0; k < series_.size(); ++k)
+    if (series_[k].z.size() == series_[k].x.size())
+      map3D_->setSeries(static_cast<int>(k), series_[k].x, series_[k].y, series_[k].z);
+  if (map3DWindow_ && map3DWindow_->isVisible()) map3DView_->update();
+}
+
+long MapPanel::map3DPoints() const {
+  if (!map3D_) return 0;
+  long n = 0;
+  for (const auto& s : series_)
+    n += static_cast<long>(s.z.size());
+  return n;
 }
 
 } // namespace rv

@@ -60,6 +60,11 @@ public:
   bool setJobRange(int id, long first, long last);
   /// The points of trajectory `id` shown now (tests).
   long shownPoints(int id) const;
+  /// Opens (or shows) the Map3D window of a 3D map (manual §2.1: the full map beside its projection), fed
+  /// with the trajectories' points as they come; nullptr (with a message) for a 2D map.
+  QWidget* openMap3D();
+  /// Points drawn in the Map3D window (tests).
+  long map3DPoints() const;
   long points() const;
   int trajectories() const { return static_cast<int>(series_.size()); }
   /// Fixed-point searches started, and how many found a point.
@@ -79,7 +84,7 @@ private:
   struct Series {
     Job* job;
     PoincareTask* task;
-    std::vector<double> x, y;
+    std::vector<double> x, y, z; ///< z: the third coordinate of a 3D map
     int plot;
     long first = 1, last = 0; ///< the range shown (Set range)
   };
@@ -110,6 +115,13 @@ private:
   std::unique_ptr<class SceneMap> sceneMap();
   QtVtkWidget* view_;
   std::unique_ptr<PoincareChart> chart_;
+  void feedMap3D();
+  /// Drops the Map3D chart (its series follow the trajectories); draws it again if `reopen` and it shows.
+  void resetMap3D(bool reopen);
+  QWidget* map3DWindow_ = nullptr;
+  QtVtkWidget* map3DView_ = nullptr;
+  std::unique_ptr<class Chart3D> map3D_;
+  std::size_t map3DSeries_ = 0; ///< trajectories the Map3D chart has a series for
   const Scene* scene_ = nullptr;
   JobTree jobs_;
   std::vector<Series> series_;

@@ -32,7 +32,26 @@ void Chart3D::setRanges(const std::array<std::optional<double>, 6>& range) {
   range_ = range;
 }
 
+void Chart3D::setSeries(int index, const std::vector<double>& x, const std::vector<double>& y,
+                        const std::vector<double>& z) {
+  if (index < 0 || index >= static_cast<int>(series_.size())) return;
+  series_[index].x = x, series_[index].y = y, series_[index].z = z;
+  rebuild();
+}
+
 void Chart3D::attach(vtkRenderWindow* window) {
+  rebuild();
+  const auto& a = boxSize_;
+  vtkCamera* cam = renderer_->GetActiveCamera();
+  cam->SetFocalPoint(0.5 * a[0], 0.5 * a[1], 0.5 * a[2]);
+  cam->SetPosition(0.5 * a[0] + 2.2, 0.5 * a[1] - 2.6, 0.5 * a[2] + 1.6);
+  cam->SetViewUp(0, 0, 1);
+  renderer_->ResetCamera();
+  cam->Zoom(0.9); // room for the labels
+  window->AddRenderer(renderer_);
+}
+
+void Chart3D::rebuild() {
   // the box: the data's bounds where no range is given
   std::array<double, 6> b = {1e300, -1e300, 1e300, -1e300, 1e300, -1e300};
   for (const auto& s : series_)
@@ -82,13 +101,7 @@ void Chart3D::attach(vtkRenderWindow* window) {
   axes_ = std::make_unique<SceneAxesObject>("axes", a, *a.min, *a.max);
   axes_->setLabelling({b[0], b[2], b[4]}, {b[1], b[3], b[5]}, titles_);
   axes_->attach(renderer_);
-  vtkCamera* cam = renderer_->GetActiveCamera();
-  cam->SetFocalPoint(0.5 * a.max->at(0), 0.5 * a.max->at(1), 0.5 * a.max->at(2));
-  cam->SetPosition(0.5 * a.max->at(0) + 2.2, 0.5 * a.max->at(1) - 2.6, 0.5 * a.max->at(2) + 1.6);
-  cam->SetViewUp(0, 0, 1);
-  renderer_->ResetCamera();
-  cam->Zoom(0.9); // room for the labels
-  window->AddRenderer(renderer_);
+  boxSize_ = *a.max;
 }
 
 void Chart3D::writeCsv(std::ostream& out) const {

@@ -20,6 +20,9 @@ public:
   /// Adds points (x[i], y[i], z[i]) in one colour; returns its index.
   int addSeries(const std::vector<double>& x, const std::vector<double>& y, const std::vector<double>& z,
                 const Rgb& color, float pointSize = 3);
+  /// Replaces the points of series `index` (a live window: the box follows the data).
+  void setSeries(int index, const std::vector<double>& x, const std::vector<double>& y,
+                 const std::vector<double>& z);
   /// Fixes the box (otherwise it is the data's bounds); nothing in an entry keeps the data's value there.
   void setRanges(const std::array<std::optional<double>, 6>& range);
   /// Draws x, y and z at one scale (a cube of data is a cube) or each filling the box.
@@ -41,6 +44,8 @@ private:
   std::array<std::optional<double>, 6> range_;
   std::array<double, 6> bounds_{};
   bool equal_ = false;
+  std::array<double, 3> boxSize_{1, 1, 1};
+  void rebuild();
   vtkSmartPointer<vtkRenderer> renderer_;
   std::unique_ptr<SceneAxesObject> axes_;
 };

@@ -301,6 +301,27 @@ private slots:
     plot->close();
   }
 
+  // a 3D map shows Map (its projection, the map window) and Map3D (a window fed with the same points)
+  void map3DWindowFollowsTheTrajectories() {
+    QVERIFY(window_->openScene(QString::fromStdString(defaultScenePath("ellipsoid_on_plane"))));
+    QWidget* w = window_->mapPanel()->openMap3D();
+    QVERIFY(w);
+    QTRY_VERIFY_WITH_TIMEOUT(window_->mapPanel()->map3DPoints() > 10, 20000);
+    QTest::qWait(300);
+    auto* view = w->findChild<QtVtkWidget*>();
+    QVERIFY(view);
+    const QImage img = view->grabFramebuffer();
+    keep(img, "window_map3d.png");
+    long dark = 0;
+    for (int y = 0; y < img.height(); ++y)
+      for (int x = 0; x < img.width(); ++x)
+        dark += img.pixelColor(x, y).lightness() < 200;
+    QVERIFY2(dark > 300, qPrintable(QString("dark pixels %1").arg(dark)));
+    w->close();
+    QVERIFY(window_->openScene(QString::fromStdString(defaultScenePath("henon_heiles"))));
+    QVERIFY(!window_->mapPanel()->openMap3D()); // a 2D map has no Map3D window
+  }
+
   void cleanupTestCase() { delete window_; }
 };
 
