@@ -4,7 +4,9 @@
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QLabel>
+#include <QLineEdit>
 #include <QSpinBox>
+#include <QVBoxLayout>
 #include <QValidator>
 #include <algorithm>
 #include <cmath>
@@ -57,8 +59,38 @@ ParameterForm::ParameterForm(const ParameterTable& table, QWidget* parent) : QWi
     editor->setToolTip(tip);
     auto* label = new QLabel(QString::fromStdString(s.label), this);
     label->setToolTip(tip);
-    form->addRow(label, editor);
+    // the field and, under it, what is wrong with what is typed (shown only then)
+    auto* field = new QWidget(this);
+    auto* column = new QVBoxLayout(field);
+    column->setContentsMargins(0, 0, 0, 0);
+    column->setSpacing(1);
+    column->addWidget(editor);
+    auto* problem = new QLabel(field);
+    problem->setObjectName(QString::fromStdString(s.id) + "_problem");
+    problem->setStyleSheet("color: #b00020");
+    problem->hide();
+    column->addWidget(problem);
+    if (auto* box = qobject_cast<QAbstractSpinBox*>(editor)) {
+      const auto bound = [](double v) { // the tables write infinity as 1e300
+        return std::abs(v) >= 1e300 ? QString(v < 0 ? "-inf" : "inf") : QString::number(v, 'g', 6);
+      };
+      const QString range = QString("must lie in [%1, %2]").arg(bound(s.min), bound(s.max));
+      connect(box->findChild<QLineEdit*>(), &QLineEdit::textEdited, this,
+              [box, problem, range](const QString& t) {
+                QString text = t;
+                int pos = 0;
+                const bool ok = box->validate(text, pos) == QValidator::Acceptable;
+                bool number = false;
+                t.trimmed().toDouble(&number);
+                problem->setText(ok ? QString() : number ? range : "not a number");
+                problem->setVisible(!ok);
+              });
+      connect(box, &QAbstractSpinBox::editingFinished, problem,
+              &QLabel::hide); // Qt puts back the last valid value
+    }
+    form->addRow(label, field);
     editors_.push_back(editor);
+    problems_.push_back(problem);
   }
   touched_.assign(editors_.size(), false);
   setValues(ParameterValues(table));
@@ -111,6 +143,11 @@ ParameterValues ParameterForm::values() const {
 QWidget* ParameterForm::editor(const std::string& id) const {
   const int i = table_.find(id);
   return i < 0 ? nullptr : editors_[i];
+}
+
+QString ParameterForm::problem(const std::string& id) const {
+  const int i = table_.find(id);
+  return i >= 0 && !problems_[i]->isHidden() ? problems_[i]->text() : QString();
 }
 
 } // namespace rv

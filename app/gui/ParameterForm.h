@@ -5,6 +5,8 @@
 #include "dynamics/core/ParameterTable.h"
 
 #include <QWidget>
+
+class QLabel;
 #include <vector>
 
 namespace rv {
@@ -22,6 +24,8 @@ public:
   std::vector<std::string> touched() const;
   /// The editor of parameter `id` (for tests), or nullptr.
   QWidget* editor(const std::string& id) const;
+  /// What is wrong with the text typed into parameter `id`'s field (empty: nothing; shown next to the field).
+  QString problem(const std::string& id) const;
 
 signals:
   void edited();
@@ -31,6 +35,7 @@ private:
   const ParameterTable& table_;
   bool blocked_ = false;
   std::vector<QWidget*> editors_;
+  std::vector<QLabel*> problems_;
   std::vector<bool> touched_;
 };
 

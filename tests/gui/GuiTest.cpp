@@ -14,6 +14,7 @@
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QLineEdit>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QTreeWidget>
@@ -42,6 +43,27 @@ private slots:
     auto* accuracy = qobject_cast<QDoubleSpinBox*>(panel.form("problem")->editor("root_accuracy"));
     QCOMPARE(accuracy->value(), 1e-15);
     QCOMPARE(accuracy->text(), QString("1e-15"));
+  }
+
+  void typingOutsideTheRangeSaysSoNextToTheField() {
+    const Scene scene = loadScene(defaultScenePath("chaplygin_ball"));
+    ControlPanel panel;
+    panel.setScene(scene);
+    ParameterForm* form = panel.form("problem");
+    auto* box = qobject_cast<QDoubleSpinBox*>(form->editor("I1"));
+    QVERIFY(box);
+    QCOMPARE(form->problem("I1"), QString());
+    auto* line = box->findChild<QLineEdit*>();
+    QVERIFY(line);
+    line->selectAll();
+    QTest::keyClicks(line, "-5");
+    QVERIFY2(form->problem("I1").startsWith("must lie in [0, inf]"), qPrintable(form->problem("I1")));
+    line->selectAll();
+    QTest::keyClicks(line, "abc");
+    QCOMPARE(form->problem("I1"), QString("not a number"));
+    line->selectAll();
+    QTest::keyClicks(line, "2.5");
+    QCOMPARE(form->problem("I1"), QString());
   }
 
   void editsBecomeTheSceneDocument() {
