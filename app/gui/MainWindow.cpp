@@ -34,7 +34,6 @@
 #include <QStatusBar>
 #include <QTemporaryFile>
 #include <QToolBar>
-#include <QVBoxLayout>
 #include <csignal>
 #include <fstream>
 #include <vtkRenderer.h>
@@ -515,13 +514,8 @@ PlotWindow* MainWindow::openPlotWindow() {
 QWidget* MainWindow::openApexWindow() {
   if (!scene_) return nullptr;
   if (!apexWindow_) {
-    apexWindow_ = new QWidget(this, Qt::Window);
-    apexWindow_->setWindowTitle("rollviz — apex motion");
-    apexView_ = new QtVtkWidget(apexWindow_);
-    auto* layout = new QVBoxLayout(apexWindow_);
-    layout->setContentsMargins(0, 0, 0, 0);
-    layout->addWidget(apexView_);
-    apexWindow_->resize(560, 560);
+    apexView_ = QtVtkWidget::inOwnWindow(this, "rollviz — apex motion");
+    apexWindow_ = apexView_->window();
   }
   if (!apex_ && scene_->model->geometry()) {
     ViewOptions v = effectiveView(scene_->view);

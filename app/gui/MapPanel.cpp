@@ -341,10 +341,15 @@ void MapPanel::highlightJob(int id) {
   view_->update();
 }
 
-void MapPanel::drawSeries(const Series& s) {
-  if (s.first <= 1 && s.last <= 0) return chart_->setSeries(s.plot, s.x, s.y);
+std::pair<long, long> MapPanel::shownSpan(const Series& s) {
   const long n = static_cast<long>(s.x.size());
   const long a = std::clamp(s.first - 1, 0L, n), b = s.last > 0 ? std::clamp(s.last, a, n) : n;
+  return {a, b};
+}
+
+void MapPanel::drawSeries(const Series& s) {
+  if (s.first <= 1 && s.last <= 0) return chart_->setSeries(s.plot, s.x, s.y);
+  const auto [a, b] = shownSpan(s);
   chart_->setSeries(s.plot, {s.x.begin() + a, s.x.begin() + b}, {s.y.begin() + a, s.y.begin() + b});
 }
 
@@ -372,8 +377,7 @@ bool MapPanel::setJobRange(int id, long first, long last) {
 long MapPanel::shownPoints(int id) const {
   for (const auto& s : series_)
     if (s.job->id() == id) {
-      const long n = static_cast<long>(s.x.size());
-      const long a = std::clamp(s.first - 1, 0L, n), b = s.last > 0 ? std::clamp(s.last, a, n) : n;
+      const auto [a, b] = shownSpan(s);
       return b - a;
     }
   return 0;
@@ -399,13 +403,8 @@ QWidget* MapPanel::openMap3D() {
     return nullptr;
   }
   if (!map3DWindow_) {
-    map3DWindow_ = new QWidget(this, Qt::Window);
-    map3DWindow_->setWindowTitle("rollviz — Map3D");
-    map3DView_ = new QtVtkWidget(map3DWindow_);
-    auto* layout = new QVBoxLayout(map3DWindow_);
-    layout->setContentsMargins(0, 0, 0, 0);
-    layout->addWidget(map3DView_);
-    map3DWindow_->resize(560, 560);
+    map3DView_ = QtVtkWidget::inOwnWindow(this, "rollviz — Map3D");
+    map3DWindow_ = map3DView_->window();
   }
   if (!map3D_) {
     map3D_ = std::make_unique<Chart3D>(std::array<std::string, 3>{names[0], names[1], names[2]});

@@ -88,6 +88,8 @@ private:
     int plot;
     long first = 1, last = 0; ///< the range shown (Set range)
   };
+  /// The points of a trajectory its range shows: [first, second) of its indices.
+  static std::pair<long, long> shownSpan(const Series& s);
   /// Draws the part of a trajectory its range shows.
   void drawSeries(const Series& s);
   struct Search {

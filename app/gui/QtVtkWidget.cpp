@@ -10,6 +10,7 @@
 #include <QOpenGLContext>
 #include <QOpenGLExtraFunctions>
 #include <QTimer>
+#include <QVBoxLayout>
 #include <QWheelEvent>
 #include <vtkCallbackCommand.h>
 #include <vtkInteractorStyleTrackballCamera.h>
@@ -17,6 +18,17 @@
 #include <vtkOpenGLState.h>
 
 namespace rv {
+
+QtVtkWidget* QtVtkWidget::inOwnWindow(QWidget* parent, const QString& title, int width, int height) {
+  auto* window = new QWidget(parent, Qt::Window);
+  window->setWindowTitle(title);
+  auto* view = new QtVtkWidget(window);
+  auto* layout = new QVBoxLayout(window);
+  layout->setContentsMargins(0, 0, 0, 0);
+  layout->addWidget(view);
+  window->resize(width, height);
+  return view;
+}
 
 namespace {
 unsigned long pressEvent(Qt::MouseButton b) { // vtk *PressEvent; +1 is the matching *ReleaseEvent

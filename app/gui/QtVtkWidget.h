@@ -21,6 +21,9 @@ public:
   ~QtVtkWidget() override;
   vtkGenericOpenGLRenderWindow* renderWindow() const { return window_; }
   vtkGenericRenderWindowInteractor* interactor() const { return interactor_; }
+  /// A view alone in a top-level window of its own (a child of `parent`, closed with it); the window is
+  /// view->window().
+  static QtVtkWidget* inOwnWindow(QWidget* parent, const QString& title, int width = 560, int height = 560);
   /// OpenGL 3.2 core, no multisampling: what VTK 9.1 needs. Set as the default before QApplication.
   static QSurfaceFormat defaultFormat();
 
