@@ -17,6 +17,7 @@ void PoincareTask::build(const Eigen::VectorXd& x0, double t0) {
   SectionSettings s = settings_;
   if (s.maxPoints > 0) s.maxPoints = std::max<long>(0, s.maxPoints - produced_);
   map_ = std::make_unique<PoincareMap>(*model_, std::move(integ), s);
+  map_->setStepObserver([this](const Integrator& in) { taps_.offer(*model_, in); });
 }
 
 void PoincareTask::reset() {
@@ -24,6 +25,7 @@ void PoincareTask::reset() {
   last_.reset();
   produced_ = 0;
   points_.clear();
+  taps_.restart();
   build(spec_.initialState, 0);
 }
 

@@ -3,6 +3,7 @@
 // be.
 #pragma once
 #include "dynamics/jobs/Channel.h"
+#include "dynamics/jobs/PlotTap.h"
 #include "dynamics/jobs/RunSpec.h"
 #include "dynamics/jobs/Task.h"
 #include "dynamics/tools/PoincareMap.h"
@@ -24,6 +25,8 @@ public:
   const SectionSettings& settings() const { return settings_; }
   /// The points, streamed (thread-safe).
   Channel<MapPoint>& points() { return points_; }
+  /// The plot filters fed by this trajectory's steps (thread-safe to add to while it runs).
+  PlotTaps& taps() { return taps_; }
   /// The full state at the last point (the trajectory's "current" state for the tools hung under it); only
   /// while the job does not run.
   Eigen::VectorXd lastState() const;
@@ -38,6 +41,7 @@ private:
   std::optional<MapPoint> last_;
   long produced_ = 0;
   Channel<MapPoint> points_;
+  PlotTaps taps_;
 };
 
 } // namespace rv

@@ -43,6 +43,22 @@ bool PlotSampler::offer(double t, const double* x) {
   return true;
 }
 
+void PlotSampler::offerStep(const Integrator& in, const std::function<void(const std::vector<double>&)>& keep) {
+  if (settings_.condition != "t") {
+    if (offer(in.time(), in.state().data())) keep(values_);
+    return;
+  }
+  if (!started_) started_ = true, last_ = in.previousTime();
+  const int dir = in.direction();
+  for (double t = last_ + dir * kept_ * settings_.period; !full() && dir * (in.time() - t) >= 0;
+       t = last_ + dir * kept_ * settings_.period) {
+    in.interpolate(t, work_);
+    values_ = valuesAt(t, work_.data());
+    ++kept_;
+    keep(values_);
+  }
+}
+
 std::vector<std::vector<double>> samplePlot(const Model& model, Integrator& integrator, const PlotSettings& s,
                                             const ToolControl& control, const std::string& context) {
   PlotSampler sampler(model, s, context);

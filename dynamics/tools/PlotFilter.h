@@ -30,6 +30,10 @@ public:
   const std::vector<double>& values() const { return values_; }
   long kept() const { return kept_; }
   bool full() const { return kept_ >= settings_.maxPoints; }
+  /// Offers the integrator's last step, calling keep(values()) for each point kept in it: with the time as
+  /// the condition, the states at exact multiples of the period from the first time offered (dense output,
+  /// as samplePlot does); otherwise the step's end state by offer().
+  void offerStep(const Integrator& integrator, const std::function<void(const std::vector<double>&)>& keep);
   /// The axes' values at a state (kept or not).
   std::vector<double> valuesAt(double t, const double* x) const;
   /// Forgets the last kept state (a new run).
@@ -40,7 +44,8 @@ private:
   std::vector<std::function<double(double, const double*)>> axes_;
   std::function<double(double, const double*)> condition_;
   std::vector<double> values_;
-  double last_ = 0;
+  double last_ = 0;  ///< the condition's value at the last kept point; in time: the first time offered
+  Eigen::VectorXd work_;
   long kept_ = 0;
   bool started_ = false;
 };

@@ -56,6 +56,7 @@ std::optional<MapPoint> PoincareMap::next(const ToolControl& control) {
   while (s_.maxPoints <= 0 || points_ < s_.maxPoints) {
     if (control.stopRequested() || dir * integ_->time() >= s_.maxTime) return std::nullopt;
     integ_->step();
+    if (observer_) observer_(*integ_);
     double t = integ_->time();
     if (model_.isMap()) {
       work_ = integ_->state();

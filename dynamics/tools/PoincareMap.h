@@ -7,6 +7,7 @@
 #include "dynamics/integrators/Integrator.h"
 #include "dynamics/tools/ToolControl.h"
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -48,6 +49,9 @@ public:
   const Eigen::VectorXd& lastState() const { return last_; }
   long points() const { return points_; }
   const Integrator& integrator() const { return *integ_; }
+  /// Called after every step of the integrator (the filters fed by a running map, manual §2.4); the
+  /// observer runs on the caller's thread, inside next().
+  void setStepObserver(std::function<void(const Integrator&)> observer) { observer_ = std::move(observer); }
   /// The map coordinates of a state.
   std::vector<double> coordinatesOf(double t, const Eigen::VectorXd& x) const;
 
@@ -64,6 +68,7 @@ private:
   double sigma_ = 0;
   bool startOnSection_ = false; ///< a start on the section is not a crossing
   long crossings_ = 0, points_ = 0;
+  std::function<void(const Integrator&)> observer_;
 };
 
 } // namespace rv

@@ -105,6 +105,60 @@ TEST(Job, AnEditBeforeTheFirstPointStartsAgainAtTheNewEnergy) {
   EXPECT_NEAR(model->integrals(poincare->lastState().data())[0], 0.15, 1e-10);
 }
 
+// a plot filter opened on a running map (manual §2.4): the job samples its own steps for it
+TEST(PlotTaps, AMapTrajectoryFeedsAnOpenPlotWithTheFiltersPoints) {
+  const RunSpec spec = henonHeiles(0.125);
+  const PlotSettings settings{
+      .axes = {"t", "E", "x"}, .condition = "t", .period = 0.25, .maxPoints = 40, .timeLimit = 1e9};
+  // the same plot computed on its own: an independent integrator from the same state
+  const auto model = spec.makeModel();
+  auto integ = spec.makeIntegrator(*model);
+  integ->start(*model, 0, spec.initialState);
+  const auto expected = samplePlot(*model, *integ, settings, {});
+  ASSERT_EQ(expected.size(), 40u);
+
+  JobTree tree;
+  auto task = std::make_unique<PoincareTask>(spec, SectionSettings{});
+  auto* poincare = task.get();
+  auto tap = std::make_shared<PlotTap>(settings);
+  auto closed = std::make_shared<PlotTap>(settings);
+  closed->closed = true;
+  poincare->taps().add(tap);
+  poincare->taps().add(closed);
+  Job& job = tree.add(std::move(task));
+  job.start();
+  ASSERT_TRUE(waitFor([&] { return tap->points.total() >= 40 && poincare->points().total() >= 20; }));
+  job.stop();
+  std::vector<std::vector<double>> got;
+  tap->points.take(got);
+  ASSERT_EQ(got.size(), 40u) << "max points per trajectory";
+  for (std::size_t k = 0; k < got.size(); ++k)
+    for (int i = 0; i < 3; ++i)
+      EXPECT_NEAR(got[k][i], expected[k][i], 1e-12) << "point " << k << " axis " << i;
+  EXPECT_EQ(closed->points.total(), 0) << "a closed window gets nothing";
+
+  // a tap opened on the running job after an edit of the energy: its points are on the new level (the
+  // sampler reads the new model)
+  job.edit([](Task& t) {
+    auto& p = static_cast<PoincareTask&>(t);
+    RunSpec s = p.spec();
+    s.modelParameters.set("energy", 0.15);
+    p.edit(s, p.settings());
+  });
+  job.start();
+  auto later = std::make_shared<PlotTap>(PlotSettings{.axes = {"t", "E"}, .condition = "x", .period = 0.01});
+  poincare->taps().add(later);
+  ASSERT_TRUE(waitFor([&] { return later->points.total() >= 30; }));
+  job.stop();
+  later->points.take(got);
+  for (std::size_t k = 0; k < got.size(); ++k) {
+    EXPECT_NEAR(got[k][1], 0.15, 1e-9);
+    if (k > 0) {
+      EXPECT_GT(got[k][0], got[k - 1][0]);
+    }
+  }
+}
+
 TEST(Job, RestartBeginsAgainAndFinishedJobsReportIt) {
   JobTree tree;
   SectionSettings s;
