@@ -21,10 +21,7 @@ namespace rv {
 /// The 2D / 3D plot filter of a scene ("plot" section): what to sample and how to draw it.
 struct PlotView {
   PlotSettings settings;
-  std::array<std::optional<double>, 6>
-      range;                    ///< x_min, x_max, y_min, y_max, z_min, z_max; nothing: the data's
-  bool holdProportions = false; ///< equal scales on the axes
-  float pointSize = 4;          ///< small 2, middle 4, big 7 pixels
+  PlotChartOptions chart; ///< the window's ranges, proportions and point type
 };
 
 /// A validated scene: everything needed to integrate and to draw.

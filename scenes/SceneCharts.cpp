@@ -97,26 +97,9 @@ std::unique_ptr<Chart> sceneChart(const Scene& scene, const std::string& view, c
     for (const auto& p : pts)
       for (std::size_t i = 0; i < p.size(); ++i)
         c[i].push_back(p[i]);
-    const auto& axes = pv.settings.axes;
-    if (axes.size() == 3) {
-      auto chart3 = std::make_unique<Chart3D>(std::array<std::string, 3>{axes[0], axes[1], axes[2]});
-      chart3->addSeries(c[0], c[1], c[2], seriesColor(0), pv.pointSize);
-      chart3->setRanges(pv.range);
-      chart3->setEqualScales(pv.holdProportions);
-      return chart3;
-    }
-    chart = std::make_unique<PoincareChart>(axes[0], axes[1]);
-    chart->addSeries(c[0], c[1], seriesColor(0));
-    chart->setMarkerSize(pv.pointSize);
-    const auto& r = pv.range;
-    if (r[0] || r[1] || r[2] || r[3]) {
-      const auto [x0, x1] = std::minmax_element(c[0].begin(), c[0].end());
-      const auto [y0, y1] = std::minmax_element(c[1].begin(), c[1].end());
-      if (!c[0].empty())
-        chart->setRanges(r[0].value_or(*x0), r[1].value_or(*x1), r[2].value_or(*y0), r[3].value_or(*y1));
-    }
-    chart->setEqualAspect(pv.holdProportions);
-    return chart;
+    auto plot = std::make_unique<PlotChart>(pv.settings.axes, pv.chart);
+    plot->setSeries(plot->addSeries(seriesColor(0)), c);
+    return plot;
   }
   if (view == "poincare") {
     const auto map = scenePoincareMap(scene, points);

@@ -6,6 +6,7 @@
 // GUI.
 #pragma once
 #include "render/charts/Chart3D.h"
+#include "render/charts/PlotChart.h"
 #include "render/charts/PoincareChart.h"
 #include "scenes/Scene.h"
 

@@ -337,20 +337,20 @@ PlotView readPlot(const json& j, const Where& w) {
   if (j.contains("time_limit")) p.settings.timeLimit = positive(j["time_limit"], w / "time_limit");
   const char* keys[6] = {"x_min", "x_max", "y_min", "y_max", "z_min", "z_max"};
   for (int i = 0; i < 6; ++i)
-    if (j.contains(keys[i])) p.range[i] = number(j[keys[i]], w / keys[i]);
+    if (j.contains(keys[i])) p.chart.range[i] = number(j[keys[i]], w / keys[i]);
   for (int i = 0; i < 3; ++i)
-    if (p.range[2 * i] && p.range[2 * i + 1] && !(*p.range[2 * i + 1] > *p.range[2 * i]))
+    if (p.chart.range[2 * i] && p.chart.range[2 * i + 1] && !(*p.chart.range[2 * i + 1] > *p.chart.range[2 * i]))
       (w / keys[2 * i + 1]).fail(std::string("must exceed ") + keys[2 * i]);
   if (j.contains("hold_proportions"))
-    p.holdProportions = boolean(j["hold_proportions"], w / "hold_proportions");
+    p.chart.holdProportions = boolean(j["hold_proportions"], w / "hold_proportions");
   if (j.contains("point_type")) {
     const std::string s = text(j["point_type"], w / "point_type");
     if (s == "small")
-      p.pointSize = 2;
+      p.chart.pointSize = 2;
     else if (s == "middle")
-      p.pointSize = 4;
+      p.chart.pointSize = 4;
     else if (s == "big")
-      p.pointSize = 7;
+      p.chart.pointSize = 7;
     else
       (w / "point_type").fail("expected small, middle or big, got \"" + s + "\"");
   }

@@ -3,22 +3,17 @@
 // surface, RAM), computed on a worker thread and drawn when ready. The GUI thread never computes; closing the
 // window stops the computation.
 #pragma once
-#include "render/charts/Chart.h"
+#include "app/gui/FilterWindow.h"
 
-#include <QWidget>
 #include <atomic>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <thread>
 
-class QLabel;
-
 namespace rv {
 
-class QtVtkWidget;
-
-class ChartWindow : public QWidget {
+class ChartWindow : public FilterWindow {
   Q_OBJECT
 public:
   /// Starts computing `view` for the scene document (`source` names it in messages).
@@ -28,21 +23,17 @@ public:
   bool ready() const { return chart_ != nullptr; }
   /// Why the computation failed (empty while running or when it succeeded).
   const QString& failure() const { return failure_; }
-  QtVtkWidget* view() const { return view_; }
   const std::string& viewName() const { return viewName_; }
-  /// Writes the chart as drawn to a PNG; false when it cannot.
-  bool savePng(const QString& path);
-  /// Writes the chart's data as CSV (through a temporary name); false when it cannot or nothing is drawn yet.
-  bool saveCsv(const QString& path);
 
 signals:
   void finished();
 
+protected:
+  const Chart* chart() const override { return chart_.get(); }
+
 private:
   void deliver(std::shared_ptr<Chart> chart, const QString& failure);
   std::string viewName_;
-  QtVtkWidget* view_;
-  QLabel* status_;
   std::shared_ptr<Chart> chart_;
   QString failure_;
   std::atomic<bool> stop_{false};

@@ -3,6 +3,7 @@
 #include "app/gui/ChartWindow.h"
 #include "app/gui/ControlPanel.h"
 #include "app/gui/MapPanel.h"
+#include "app/gui/PlotFilterDialog.h"
 #include "app/gui/PlotWindow.h"
 #include "app/gui/QtVtkWidget.h"
 #include "app/gui/ToolManager.h"
@@ -168,8 +169,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   file->addSeparator();
   file->addAction("Quit", this, &QWidget::close)->setShortcut(QKeySequence::Quit);
   auto* windows = menuBar()->addMenu("&Windows");
-  windows->addAction("2D plot (live)", this, [this] { openPlotWindow(); })
-      ->setToolTip("the plot section's observables of the running trajectory (manual 2.4.1)");
+  windows->addAction("2D plot…", this, [this] { plotDialog(2); })
+      ->setToolTip("observables against each other along the 3D view's run and every trajectory of the map, "
+                   "a point whenever the out condition has changed by the period (manual 2.4.1)");
+  windows->addAction("3D plot…", this, [this] { plotDialog(3); })
+      ->setToolTip("three observables along the 3D view's run and every trajectory of the map (manual 2.4.2)");
   windows->addAction("Map3D (live)", map_, [this] { map_->openMap3D(); })
       ->setToolTip("a 3D map in three dimensions, beside its projection in the map window");
   windows->addAction("Apex motion", this, [this] { openApexWindow(); })
@@ -279,9 +283,8 @@ void MainWindow::useScene(std::unique_ptr<Scene> scene, const QString& path) {
   visual_.reset();
   if (apex_ && apexView_) apexView_->renderWindow()->RemoveRenderer(apex_->renderer());
   apex_.reset();
-  for (auto& p : plots_) // they read the old model's observables
-    delete p.data();
-  plots_.clear();
+  for (PlotWindow* p : map_->plotWindows()) // they read the old model's observables
+    delete p;
   scene_ = std::move(scene);
   scenePath_ = path;
   method_ = QString::fromStdString(scene_->runSpec().describe()).section(' ', 0, 0); // e.g. rk4(step=0.001)
@@ -314,8 +317,8 @@ void MainWindow::restart() {
     apex_->clear();
     apex_->show(0.0, scene_->initialState);
   }
-  for (auto& p : plots_)
-    if (p) p->clear();
+  for (PlotWindow* p : map_->plotWindows())
+    p->clear();
   error_.clear();
   requested_ = shownTime_ = 0;
   stream_ = std::make_unique<TrajectoryStream>(scene_->startIntegrator());
@@ -347,15 +350,13 @@ void MainWindow::tick() {
   }
   if (error_.isEmpty()) stream_->requestUntil(requested_); // paused, a single step still goes
   if (!stream_->take(batch_)) return;
-  std::erase_if(plots_, [](const QPointer<PlotWindow>& p) { return p.isNull(); });
+  const std::vector<PlotWindow*> plots = map_->plotWindows(); // drawn by the map's drain
   for (std::size_t i = 0; i < batch_.states.size(); ++i) {
     visual_->advance(batch_.times[i], batch_.states[i]);
     if (apex_) apex_->advance(batch_.times[i], batch_.states[i]);
-    for (auto& p : plots_)
+    for (PlotWindow* p : plots)
       p->offer(batch_.times[i], batch_.states[i].data());
   }
-  for (auto& p : plots_)
-    p->flush();
   if (batch_.reached) {
     visual_->show(batch_.atTime, batch_.at);
     if (apex_) apex_->show(batch_.atTime, batch_.at);
@@ -497,18 +498,24 @@ ChartWindow* MainWindow::openChart(const std::string& view) {
   return w;
 }
 
-PlotWindow* MainWindow::openPlotWindow() {
+PlotWindow* MainWindow::openPlotWindow(const PlotView& plot) {
   if (!scene_) return nullptr;
   try {
-    auto* w = new PlotWindow(*scene_->model, scene_->plot.settings, this);
+    auto* w = new PlotWindow(*scene_->model, plot, this);
     w->setAttribute(Qt::WA_DeleteOnClose);
     w->show();
-    plots_.emplace_back(w);
+    map_->addPlotWindow(w);
     return w;
   } catch (const std::exception& e) {
     statusBar()->showMessage(QString("Cannot plot: %1").arg(e.what()), 8000);
     return nullptr;
   }
+}
+
+void MainWindow::plotDialog(int dimensions) {
+  if (!scene_) return;
+  PlotFilterDialog dialog(*scene_->model, scene_->plot, dimensions, this);
+  if (dialog.exec() == QDialog::Accepted) openPlotWindow(dialog.plot());
 }
 
 QWidget* MainWindow::openApexWindow() {

@@ -61,9 +61,13 @@ public:
   ChartWindow* openChart(const std::string& view);
   /// Create in the control panel's Tools tab: starts tool `id` on the map or opens its chart window.
   void createTool(const std::string& id);
-  /// Opens a live 2D plot window (the scene's plot section) fed by the 3D view's run; nullptr (with the
-  /// reason in the status bar) when the section does not fit the problem.
-  PlotWindow* openPlotWindow();
+  /// Opens a live 2D or 3D plot filter (by the number of axes of `plot`) fed by the 3D view's run and by
+  /// every trajectory of the map window; nullptr (with the reason in the status bar) when the settings do not
+  /// fit the problem.
+  PlotWindow* openPlotWindow(const PlotView& plot);
+  /// Asks for the plot filter's settings (axes, output condition, period, points; the scene's plot section
+  /// proposed) and opens it; `dimensions` 2 or 3.
+  void plotDialog(int dimensions);
   /// Opens (or shows) the apex motion window: the apex view of the trajectory shown in the 3D view.
   QWidget* openApexWindow();
   VisualizerSettings* settings() const { return settings_; }
@@ -115,7 +119,6 @@ private:
   QWidget* apexWindow_ = nullptr;
   QtVtkWidget* apexView_ = nullptr;
   std::unique_ptr<VisualScene> apex_;
-  std::vector<QPointer<PlotWindow>> plots_; ///< live plot windows (they belong to this window as children)
   // a recording in progress: its own scene, integrator, headless context and exporter
   struct Recording;
   std::unique_ptr<Recording> recorder_;

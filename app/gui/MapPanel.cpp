@@ -1,5 +1,6 @@
 #include "app/gui/MapPanel.h"
 
+#include "app/gui/PlotWindow.h"
 #include "app/gui/QtVtkWidget.h"
 #include "dynamics/core/Errors.h"
 #include "dynamics/jobs/FixedPointTasks.h"
@@ -56,8 +57,10 @@ void MapPanel::start(const Eigen::VectorXd& state) {
   auto task = std::make_unique<PoincareTask>(spec, scene_->poincare);
   PoincareTask* raw = task.get();
   Job& job = jobs_.add(std::move(task));
-  const int plot = chart_->addSeries({}, {}, seriesColor(static_cast<int>(series_.size())));
-  series_.push_back({&job, raw, {}, {}, {}, plot});
+  const Rgb colour = seriesColor(static_cast<int>(series_.size()));
+  const int plot = chart_->addSeries({}, {}, colour);
+  series_.push_back({&job, raw, {}, {}, {}, plot, colour});
+  feedPlots(series_.back());
   chart_->select(plot);
   job.start();
 }
@@ -219,7 +222,29 @@ int MapPanel::fixedPointsFound() const {
   return n;
 }
 
+void MapPanel::feedPlots(const Series& s) {
+  std::erase_if(plots_, [](const QPointer<PlotWindow>& p) { return p.isNull(); });
+  for (auto& p : plots_)
+    s.task->taps().add(p->follow(s.job->id(), s.colour));
+}
+
+void MapPanel::addPlotWindow(PlotWindow* window) {
+  plots_.emplace_back(window);
+  for (const auto& s : series_)
+    s.task->taps().add(window->follow(s.job->id(), s.colour));
+}
+
+std::vector<PlotWindow*> MapPanel::plotWindows() {
+  std::erase_if(plots_, [](const QPointer<PlotWindow>& p) { return p.isNull(); });
+  std::vector<PlotWindow*> out;
+  for (auto& p : plots_)
+    out.push_back(p.data());
+  return out;
+}
+
 void MapPanel::drain() {
+  for (PlotWindow* p : plotWindows())
+    p->flush();
   bool changed = false;
   for (auto& t : tools_)
     if (t.pull(t.x, t.y)) {
@@ -278,6 +303,8 @@ void MapPanel::removeJob(Job& job) {
   for (auto it = series_.begin(); it != series_.end();)
     if (isGone(it->job)) {
       chart_->setSeries(it->plot, {}, {});
+      for (PlotWindow* p : plotWindows())
+        p->unfollow(it->job->id());
       it = series_.erase(it);
     } else {
       ++it;
@@ -354,9 +381,12 @@ void MapPanel::drawSeries(const Series& s) {
 }
 
 bool MapPanel::setJobColor(int id, const Rgb& color) {
-  for (const auto& s : series_)
+  for (auto& s : series_)
     if (s.job->id() == id) {
+      s.colour = color;
       chart_->setColor(s.plot, color);
+      for (PlotWindow* p : plotWindows())
+        p->setColor(id, color);
       view_->update();
       return true;
     }

@@ -8,6 +8,7 @@
 #include "render/charts/PoincareChart.h"
 #include "scenes/Scene.h"
 
+#include <QPointer>
 #include <QWidget>
 #include <functional>
 #include <memory>
@@ -16,6 +17,7 @@
 namespace rv {
 
 class QtVtkWidget;
+class PlotWindow;
 class PoincareTask;
 class FixedPointTask;
 
@@ -63,6 +65,11 @@ public:
   /// Opens (or shows) the Map3D window of a 3D map (manual §2.1: the full map beside its projection), fed
   /// with the trajectories' points as they come; nullptr (with a message) for a 2D map.
   QWidget* openMap3D();
+  /// Feeds an open 2D / 3D plot filter (manual §2.4) with every trajectory of the map, those running now and
+  /// those started later; the window is drawn on each drain() until it closes.
+  void addPlotWindow(PlotWindow* window);
+  /// The open plot filters (the 3D view's run offers them its states too).
+  std::vector<PlotWindow*> plotWindows();
   /// Points drawn in the Map3D window (tests).
   long map3DPoints() const;
   long points() const;
@@ -86,8 +93,12 @@ private:
     PoincareTask* task;
     std::vector<double> x, y, z; ///< z: the third coordinate of a 3D map
     int plot;
+    Rgb colour;
     long first = 1, last = 0; ///< the range shown (Set range)
   };
+  /// Gives the trajectory's job a tap of each open plot filter.
+  void feedPlots(const Series& s);
+  std::vector<QPointer<PlotWindow>> plots_;
   /// The points of a trajectory its range shows: [first, second) of its indices.
   static std::pair<long, long> shownSpan(const Series& s);
   /// Draws the part of a trajectory its range shows.

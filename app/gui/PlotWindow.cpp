@@ -1,48 +1,122 @@
 #include "app/gui/PlotWindow.h"
 
 #include "app/gui/QtVtkWidget.h"
-#include "render/charts/PoincareChart.h"
-
-#include <QVBoxLayout>
+#include "render/charts/PlotChart.h"
 
 namespace rv {
 
-PlotWindow::PlotWindow(const Model& model, const PlotSettings& settings, QWidget* parent)
-    : QWidget(parent, Qt::Window), sampler_(model, settings) {
-  setWindowTitle(
-      QString("rollviz — 2D plot: %1 against %2")
-          .arg(QString::fromStdString(settings.axes[1]), QString::fromStdString(settings.axes[0])));
-  view_ = new QtVtkWidget(this);
-  auto* layout = new QVBoxLayout(this);
-  layout->setContentsMargins(0, 0, 0, 0);
-  layout->addWidget(view_);
-  chart_ = std::make_unique<PoincareChart>(settings.axes[0], settings.axes[1]);
-  chart_->addSeries({}, {}, seriesColor(0));
-  chart_->attach(view_->renderWindow());
-  resize(560, 480);
+namespace {
+QString titleOf(const PlotSettings& s) {
+  QStringList axes;
+  for (const auto& a : s.axes)
+    axes << QString::fromStdString(a);
+  return QString("%1D plot: %2").arg(s.axes.size()).arg(axes.join(", "));
+}
+} // namespace
+
+PlotWindow::PlotWindow(const Model& model, const PlotView& plot, QWidget* parent)
+    : FilterWindow(titleOf(plot.settings), "plot", parent), plot_(plot), sampler_(model, plot.settings) {
+  chart_ = std::make_unique<PlotChart>(plot.settings.axes, plot.chart);
+  add(kViewRun, {0.1, 0.1, 0.1});
+  chart_->attach(view()->renderWindow());
+  setStatus(QString("a point each %1 of %2, at most %3 per trajectory")
+                .arg(plot.settings.period)
+                .arg(QString::fromStdString(plot.settings.condition))
+                .arg(plot.settings.maxPoints));
+  resize(560, 520);
 }
 
-PlotWindow::~PlotWindow() = default;
+PlotWindow::~PlotWindow() {
+  for (auto& [id, s] : sources_)
+    if (s.tap) s.tap->closed = true; // the jobs drop them
+}
+
+int PlotWindow::dimensions() const {
+  return chart_->dimensions();
+}
+
+const Chart* PlotWindow::chart() const {
+  return chart_.get();
+}
+
+PlotWindow::Source& PlotWindow::add(int id, const Rgb& colour) {
+  Source& s = sources_[id];
+  s.series = chart_->addSeries(colour);
+  return s;
+}
 
 void PlotWindow::offer(double t, const double* x) {
   if (!sampler_.offer(t, x)) return;
-  x_.push_back(sampler_.values()[0]);
-  y_.push_back(sampler_.values()[1]);
-  dirty_ = true;
-}
-
-void PlotWindow::flush() {
-  if (!dirty_) return;
-  dirty_ = false;
-  chart_->setSeries(0, x_, y_);
-  if (isVisible()) view_->update();
+  Source& s = sources_.at(kViewRun);
+  for (std::size_t i = 0; i < sampler_.values().size(); ++i)
+    s.values[i].push_back(sampler_.values()[i]);
+  s.dirty = true;
 }
 
 void PlotWindow::clear() {
   sampler_.clear();
-  x_.clear(), y_.clear();
-  dirty_ = true;
+  Source& s = sources_.at(kViewRun);
+  for (auto& v : s.values)
+    v.clear();
+  s.dirty = true;
   flush();
+}
+
+std::shared_ptr<PlotTap> PlotWindow::follow(int id, const Rgb& colour) {
+  if (auto it = sources_.find(id); it != sources_.end()) return it->second.tap;
+  Source& s = add(id, colour);
+  s.tap = std::make_shared<PlotTap>(plot_.settings);
+  return s.tap;
+}
+
+void PlotWindow::unfollow(int id) {
+  const auto it = sources_.find(id);
+  if (it == sources_.end() || id == kViewRun) return;
+  it->second.tap->closed = true;
+  chart_->setSeries(it->second.series, {}); // the chart keeps the (empty) series: indices stay
+  sources_.erase(it);
+  view()->update();
+}
+
+void PlotWindow::setColor(int id, const Rgb& colour) {
+  if (const auto it = sources_.find(id); it != sources_.end()) {
+    chart_->setColor(it->second.series, colour);
+    view()->update();
+  }
+}
+
+void PlotWindow::flush() {
+  bool changed = false;
+  std::vector<std::vector<double>> batch;
+  for (auto& [id, s] : sources_) {
+    if (s.tap && s.tap->points.take(batch) > 0) {
+      for (const auto& p : batch)
+        for (std::size_t i = 0; i < p.size(); ++i)
+          s.values[i].push_back(p[i]);
+      s.dirty = true;
+    }
+    if (!s.dirty) continue;
+    s.dirty = false;
+    chart_->setSeries(s.series, s.values);
+    changed = true;
+  }
+  if (changed && isVisible()) view()->update();
+}
+
+long PlotWindow::points(int id) const {
+  const auto it = sources_.find(id);
+  return it == sources_.end() ? 0 : static_cast<long>(it->second.values[0].size());
+}
+
+long PlotWindow::points() const {
+  long n = 0;
+  for (const auto& [id, s] : sources_)
+    n += static_cast<long>(s.values[0].size());
+  return n;
+}
+
+const std::vector<double>& PlotWindow::values(int id, int axis) const {
+  return sources_.at(id).values.at(axis);
 }
 
 } // namespace rv

@@ -1,41 +1,63 @@
-// PlotWindow.h -- the 2D plot filter as a live window (manual §2.4.1): the 3D view's running trajectory feeds
-// it state by state, and the scene's plot section decides which states become points (PlotSampler: the
-// condition moved by the period). The first two of its axes are drawn; Save CSV writes them.
+// PlotWindow.h -- the 2D and 3D plot filters as live windows (manual §2.4.1-§2.4.2): "creating a filter
+// starts no thread; the base tools output into it as well". The 3D view's running trajectory offers its
+// states here (sampled on the GUI thread: they arrive anyway), and every trajectory of the map window feeds
+// it through a PlotTap its job samples on its own thread. One series per trajectory, in the map's colour;
+// the scene's plot section gives the axes (2 or 3), the output condition, period, maximum points per
+// trajectory and the window options.
 #pragma once
-#include "dynamics/tools/PlotFilter.h"
+#include "app/gui/FilterWindow.h"
+#include "dynamics/jobs/PlotTap.h"
+#include "scenes/Scene.h"
 
-#include <QWidget>
+#include <map>
 #include <memory>
 #include <vector>
 
 namespace rv {
 
-class PoincareChart;
-class QtVtkWidget;
+class PlotChart;
 
-class PlotWindow : public QWidget {
+class PlotWindow : public FilterWindow {
   Q_OBJECT
 public:
+  /// The id of the 3D view's trajectory among the sources.
+  static constexpr int kViewRun = -1;
   /// Throws InputError for a plot section the model cannot give.
-  PlotWindow(const Model& model, const PlotSettings& settings, QWidget* parent = nullptr);
+  PlotWindow(const Model& model, const PlotView& plot, QWidget* parent = nullptr);
   ~PlotWindow() override;
-  /// A state of the running trajectory.
+  /// A state of the 3D view's running trajectory.
   void offer(double t, const double* x);
-  /// Draws what arrived since the last call.
-  void flush();
-  /// A new run: the points go.
+  /// The 3D view's run starts again: its points go.
   void clear();
-  long points() const { return static_cast<long>(x_.size()); }
-  const std::vector<double>& xs() const { return x_; }
-  const std::vector<double>& ys() const { return y_; }
-  QtVtkWidget* view() const { return view_; }
+  /// Follows map trajectory `id` drawn in `colour`: returns the tap to give its job.
+  std::shared_ptr<PlotTap> follow(int id, const Rgb& colour);
+  /// The trajectory was deleted: its points go.
+  void unfollow(int id);
+  void setColor(int id, const Rgb& colour);
+  /// Takes what the taps streamed, and draws what arrived since the last call.
+  void flush();
+  int dimensions() const;
+  /// Points of one source (kViewRun or a trajectory id), and of all.
+  long points(int id) const;
+  long points() const;
+  /// The values of a source along axis `axis` (tests).
+  const std::vector<double>& values(int id, int axis) const;
+
+protected:
+  const Chart* chart() const override;
 
 private:
-  PlotSampler sampler_;
-  std::unique_ptr<PoincareChart> chart_;
-  QtVtkWidget* view_;
-  std::vector<double> x_, y_;
-  bool dirty_ = false;
+  struct Source {
+    std::shared_ptr<PlotTap> tap; ///< none for the 3D view's run
+    int series;
+    std::array<std::vector<double>, 3> values;
+    bool dirty = false;
+  };
+  Source& add(int id, const Rgb& colour);
+  PlotView plot_;
+  PlotSampler sampler_; ///< the 3D view's run
+  std::unique_ptr<PlotChart> chart_;
+  std::map<int, Source> sources_;
 };
 
 } // namespace rv

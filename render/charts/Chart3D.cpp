@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 #include <vtkActor.h>
+#include <vtkCallbackCommand.h>
+#include <vtkCommand.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
 #include <vtkPoints.h>
@@ -18,6 +20,14 @@ namespace rv {
 Chart3D::Chart3D(std::array<std::string, 3> titles) : titles_(std::move(titles)) {
   renderer_ = vtkSmartPointer<vtkRenderer>::New();
   renderer_->SetBackground(1, 1, 1);
+  // a live window changes many series between two frames: the actors are rebuilt once, before the frame
+  vtkNew<vtkCallbackCommand> beforeRender;
+  beforeRender->SetClientData(this);
+  beforeRender->SetCallback([](vtkObject*, unsigned long, void* self, void*) {
+    auto* chart = static_cast<Chart3D*>(self);
+    if (chart->dirty_) chart->rebuild();
+  });
+  renderer_->AddObserver(vtkCommand::StartEvent, beforeRender);
 }
 
 Chart3D::~Chart3D() = default; // (no GL work here: the window's context may be gone already)
@@ -36,7 +46,13 @@ void Chart3D::setSeries(int index, const std::vector<double>& x, const std::vect
                         const std::vector<double>& z) {
   if (index < 0 || index >= static_cast<int>(series_.size())) return;
   series_[index].x = x, series_[index].y = y, series_[index].z = z;
-  rebuild();
+  dirty_ = true;
+}
+
+void Chart3D::setColor(int index, const Rgb& color) {
+  if (index < 0 || index >= static_cast<int>(series_.size())) return;
+  series_[index].color = color;
+  dirty_ = true;
 }
 
 void Chart3D::attach(vtkRenderWindow* window) {
@@ -52,6 +68,7 @@ void Chart3D::attach(vtkRenderWindow* window) {
 }
 
 void Chart3D::rebuild() {
+  dirty_ = false;
   // the box: the data's bounds where no range is given
   std::array<double, 6> b = {1e300, -1e300, 1e300, -1e300, 1e300, -1e300};
   for (const auto& s : series_)
@@ -64,8 +81,15 @@ void Chart3D::rebuild() {
     if (range_[i]) b[i] = *range_[i];
     if (std::abs(b[i]) > 1e299) b[i] = i % 2 ? 1 : -1; // no data
   }
-  for (int i = 0; i < 3; ++i)
-    if (!(b[2 * i + 1] > b[2 * i])) b[2 * i] -= 0.5, b[2 * i + 1] += 0.5;
+  for (int i = 0; i < 3; ++i) {
+    // a constant (an integral along its trajectories) would spread its rounding errors over the whole box
+    const double size = std::max(std::abs(b[2 * i]), std::abs(b[2 * i + 1]));
+    const bool given = range_[2 * i] && range_[2 * i + 1];
+    if (!(b[2 * i + 1] > b[2 * i]) || (!given && !(b[2 * i + 1] - b[2 * i] > 1e-9 * size))) {
+      const double mid = 0.5 * (b[2 * i] + b[2 * i + 1]), half = size > 0 ? 0.05 * size : 0.5;
+      b[2 * i] = mid - half, b[2 * i + 1] = mid + half;
+    }
+  }
   bounds_ = b;
   // drawn in a unit-ish box: each axis scaled to length 1 unless the scales are equal
   double scale[3];

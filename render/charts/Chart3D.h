@@ -20,9 +20,12 @@ public:
   /// Adds points (x[i], y[i], z[i]) in one colour; returns its index.
   int addSeries(const std::vector<double>& x, const std::vector<double>& y, const std::vector<double>& z,
                 const Rgb& color, float pointSize = 3);
-  /// Replaces the points of series `index` (a live window: the box follows the data).
+  /// Replaces the points of series `index` (a live window: the box follows the data; the actors are rebuilt
+  /// before the next frame).
   void setSeries(int index, const std::vector<double>& x, const std::vector<double>& y,
                  const std::vector<double>& z);
+  /// Recolours series `index`.
+  void setColor(int index, const Rgb& color);
   /// Fixes the box (otherwise it is the data's bounds); nothing in an entry keeps the data's value there.
   void setRanges(const std::array<std::optional<double>, 6>& range);
   /// Draws x, y and z at one scale (a cube of data is a cube) or each filling the box.
@@ -30,7 +33,7 @@ public:
   void attach(vtkRenderWindow* window) override;
   void writeCsv(std::ostream& out) const override;
   vtkRenderer* renderer() const { return renderer_; }
-  /// The box drawn, after attach: x_min, x_max, y_min, ... in data units.
+  /// The box drawn, after attach and as of the last frame: x_min, x_max, y_min, ... in data units.
   const std::array<double, 6>& bounds() const { return bounds_; }
 
 private:
@@ -44,6 +47,7 @@ private:
   std::array<std::optional<double>, 6> range_;
   std::array<double, 6> bounds_{};
   bool equal_ = false;
+  bool dirty_ = false; ///< series changed since the actors were built
   std::array<double, 3> boxSize_{1, 1, 1};
   void rebuild();
   vtkSmartPointer<vtkRenderer> renderer_;

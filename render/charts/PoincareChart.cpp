@@ -92,7 +92,7 @@ int PoincareChart::addSeries(const std::vector<double>& x, const std::vector<dou
                  static_cast<unsigned char>(255 * c[2]), 255);
   if (auto* points = vtkPlotPoints::SafeDownCast(plot)) {
     points->SetMarkerStyle(vtkPlotPoints::CIRCLE);
-    points->SetMarkerSize(3);
+    points->SetMarkerSize(markerSize_); // the chart's size, also for series added later
   }
   return static_cast<int>(chart_->GetNumberOfPlots()) - 1;
 }

@@ -280,16 +280,17 @@ private slots:
     chart->close();
   }
 
-  // the live 2D plot: the running trajectory's states become points whenever the condition (the time here)
-  // has moved by the period
+  // the live 2D plot: the 3D view's running trajectory's states become points whenever the condition (the
+  // time here) has moved by the period
   void livePlotIsFedByTheRun() {
     nlohmann::json doc = loadScene(defaultScenePath("chaplygin_ball")).document;
     doc["plot"] = {{"x", "t"}, {"y", "M1"}, {"period", 0.05}};
     QVERIFY(window_->runDocument(doc));
-    PlotWindow* plot = window_->openPlotWindow();
+    PlotWindow* plot = window_->openPlotWindow(window_->scene()->plot);
     QVERIFY(plot);
-    QTRY_VERIFY_WITH_TIMEOUT(plot->points() > 10, 10000);
-    const auto& t = plot->xs();
+    QCOMPARE(plot->dimensions(), 2);
+    QTRY_VERIFY_WITH_TIMEOUT(plot->points(PlotWindow::kViewRun) > 10, 10000);
+    const auto& t = plot->values(PlotWindow::kViewRun, 0);
     for (std::size_t k = 1; k < t.size(); ++k)
       QVERIFY(t[k] - t[k - 1] >= 0.05 - 1e-12); // the period, in time
     QTest::qWait(200);
@@ -297,8 +298,52 @@ private slots:
     const QImage img = plot->view()->grabFramebuffer();
     QVERIFY(img.width() > 0);
     window_->restart(); // a new run: the plot starts again
-    QVERIFY(plot->points() <= 1);
+    QVERIFY(plot->points(PlotWindow::kViewRun) <= 1);
     plot->close();
+  }
+
+  // manual §2.4: a filter adds a window the base tools output into — every trajectory of the map feeds an
+  // open 2D and 3D plot, each its own series, sampled on its own thread at exact multiples of the period
+  void plotFiltersAreFedByEveryMapTrajectory() {
+    QVERIFY(window_->openScene(QString::fromStdString(defaultScenePath("henon_heiles"))));
+    const double energy = window_->scene()->model->parameters()["energy"];
+    PlotView two = window_->scene()->plot;
+    two.settings = {.axes = {"t", "x"}, .condition = "t", .period = 0.1, .maxPoints = 300};
+    PlotView three = two;
+    three.settings.axes = {"x", "y", "E"};
+    PlotWindow* plot2 = window_->openPlotWindow(two);
+    PlotWindow* plot3 = window_->openPlotWindow(three);
+    QVERIFY(plot2 && plot3);
+    QCOMPARE(plot3->dimensions(), 3);
+    MapPanel* map = window_->mapPanel();
+    QVERIFY(map->startAt(0.05, 0.1)); // a second trajectory, started after the filters opened
+    QCOMPARE(map->trajectories(), 2);
+    std::vector<int> ids;
+    for (Job* j : map->jobs().jobs())
+      ids.push_back(j->id());
+    QCOMPARE(ids.size(), std::size_t(2));
+    for (int id : ids) {
+      QTRY_VERIFY_WITH_TIMEOUT(plot2->points(id) >= 300 && plot3->points(id) >= 300, 20000);
+      QCOMPARE(plot2->points(id), 300L); // max points per trajectory
+      const auto& t = plot2->values(id, 0);
+      for (std::size_t k = 1; k < t.size(); ++k)
+        QVERIFY(std::abs(t[k] - t[k - 1] - 0.1) < 1e-9); // exact multiples of the period
+      for (double e : plot3->values(id, 2))
+        QVERIFY(std::abs(e - energy) < 1e-9); // every point on its trajectory's energy level
+    }
+    QTest::qWait(300);
+    keep(plot3->grab().toImage(), "window_plot3d.png");
+    const QImage img = plot3->view()->grabFramebuffer();
+    int drawn = 0;
+    for (int y = 0; y < img.height(); y += 2)
+      for (int x = 0; x < img.width(); x += 2)
+        drawn += qGray(img.pixel(x, y)) < 200;
+    QVERIFY2(drawn > 100, "the 3D plot draws the points");
+    map->removeJob(*map->jobs().jobs().back()); // its series goes from the filters
+    QCOMPARE(plot2->points(ids.back()), 0L);
+    QCOMPARE(plot2->points(ids.front()), 300L);
+    plot2->close();
+    plot3->close();
   }
 
   // a 3D map shows Map (its projection, the map window) and Map3D (a window fed with the same points)

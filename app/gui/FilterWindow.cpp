@@ -1,0 +1,64 @@
+#include "app/gui/FilterWindow.h"
+
+#include "app/gui/QtVtkWidget.h"
+#include "dynamics/io/AtomicFile.h"
+
+#include <QFileDialog>
+#include <QLabel>
+#include <QPushButton>
+#include <QVBoxLayout>
+#include <fstream>
+
+namespace rv {
+
+FilterWindow::FilterWindow(const QString& title, const QString& fileName, QWidget* parent)
+    : QWidget(parent, Qt::Window), fileName_(fileName) {
+  setWindowTitle("rollviz — " + title);
+  view_ = new QtVtkWidget(this);
+  status_ = new QLabel(this);
+  auto* save = new QPushButton("Save PNG…", this);
+  connect(save, &QPushButton::clicked, this, [this] {
+    const QString path = QFileDialog::getSaveFileName(this, "Save chart", fileName_ + ".png", "PNG (*.png)");
+    if (!path.isEmpty() && !savePng(path)) setStatus("cannot write " + path);
+  });
+  auto* csv = new QPushButton("Save CSV…", this);
+  connect(csv, &QPushButton::clicked, this, [this] {
+    const QString path =
+        QFileDialog::getSaveFileName(this, "Save chart data", fileName_ + ".csv", "CSV (*.csv)");
+    if (!path.isEmpty() && !saveCsv(path)) setStatus("cannot write " + path);
+  });
+  auto* layout = new QVBoxLayout(this);
+  layout->addWidget(view_, 1);
+  bar_ = new QHBoxLayout;
+  bar_->addWidget(status_, 1);
+  bar_->addWidget(save);
+  bar_->addWidget(csv);
+  layout->addLayout(bar_);
+  resize(640, 640);
+}
+
+void FilterWindow::setStatus(const QString& text) {
+  status_->setText(text);
+}
+
+bool FilterWindow::saveCsv(const QString& path) {
+  const Chart* c = chart();
+  if (!c) return false;
+  try {
+    AtomicFile file(path.toStdString(), "csv");
+    std::ofstream out(file.tempPath());
+    c->writeCsv(out);
+    out.close();
+    if (!out) return false;
+    file.commit();
+    return true;
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+bool FilterWindow::savePng(const QString& path) {
+  return view_->grabFramebuffer().save(path, "PNG");
+}
+
+} // namespace rv

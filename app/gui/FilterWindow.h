@@ -1,0 +1,41 @@
+// FilterWindow.h -- what every filter window (manual §2.4) has: a chart view, a status line and Save PNG /
+// Save CSV of the chart as drawn. The windows differ in where their chart comes from: computed whole on a
+// worker thread (ChartWindow) or fed live by the running tools (PlotWindow, MultipliersWindow).
+#pragma once
+#include "render/charts/Chart.h"
+
+#include <QWidget>
+
+class QLabel;
+class QHBoxLayout;
+
+namespace rv {
+
+class QtVtkWidget;
+
+class FilterWindow : public QWidget {
+  Q_OBJECT
+public:
+  /// `fileName`: the suggested name of saved files, without extension.
+  FilterWindow(const QString& title, const QString& fileName, QWidget* parent);
+  QtVtkWidget* view() const { return view_; }
+  /// Writes the chart as drawn to a PNG; false when it cannot.
+  bool savePng(const QString& path);
+  /// Writes the chart's data as CSV (through a temporary name); false when it cannot or nothing is drawn yet.
+  bool saveCsv(const QString& path);
+
+protected:
+  /// The chart shown (nullptr while there is none yet).
+  virtual const Chart* chart() const = 0;
+  void setStatus(const QString& text);
+  /// The row under the chart, for a window's own controls (left of the save buttons).
+  QHBoxLayout* bar() const { return bar_; }
+
+private:
+  QtVtkWidget* view_;
+  QLabel* status_;
+  QHBoxLayout* bar_;
+  QString fileName_;
+};
+
+} // namespace rv

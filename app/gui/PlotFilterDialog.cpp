@@ -1,0 +1,75 @@
+#include "app/gui/PlotFilterDialog.h"
+
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QSpinBox>
+
+namespace rv {
+
+namespace {
+QComboBox* observableBox(const Model& model, const std::string& chosen, QWidget* parent) {
+  auto* box = new QComboBox(parent);
+  for (const auto& o : model.observables()) {
+    box->addItem(QString::fromStdString(o.id));
+    box->setItemData(box->count() - 1, QString::fromStdString(o.description), Qt::ToolTipRole);
+  }
+  box->setCurrentText(QString::fromStdString(chosen));
+  return box;
+}
+} // namespace
+
+PlotFilterDialog::PlotFilterDialog(const Model& model, const PlotView& proposed, int dimensions,
+                                   QWidget* parent)
+    : QDialog(parent), proposed_(proposed) {
+  setWindowTitle(QString("%1D plot filter").arg(dimensions));
+  auto* form = new QFormLayout(this);
+  const auto& axes = proposed.settings.axes;
+  const char* defaults[3] = {"t", "E", "t"};
+  const char* labels[3] = {"Axis X", "Axis Y", "Axis Z"};
+  for (int i = 0; i < dimensions; ++i) {
+    const std::string chosen = i < static_cast<int>(axes.size()) ? axes[i] : defaults[i];
+    axes_.push_back(observableBox(model, chosen, this));
+    axes_.back()->setObjectName(QString("axis%1").arg(i));
+    form->addRow(labels[i], axes_.back());
+  }
+  condition_ = observableBox(model, proposed.settings.condition, this);
+  condition_->setObjectName("condition");
+  condition_->setToolTip("a point is output whenever this has changed by the period since the last one");
+  form->addRow("Out condition", condition_);
+  period_ = new QDoubleSpinBox(this);
+  period_->setDecimals(6);
+  period_->setRange(1e-6, 1e6);
+  period_->setValue(proposed.settings.period);
+  period_->setToolTip("the change of the out condition between two points");
+  form->addRow("Out value (period)", period_);
+  maxPoints_ = new QSpinBox(this);
+  maxPoints_->setRange(1, 100000000);
+  maxPoints_->setValue(static_cast<int>(std::min<long>(proposed.settings.maxPoints, 100000000)));
+  maxPoints_->setToolTip("the most points drawn for one trajectory");
+  form->addRow("Max. number of points", maxPoints_);
+  pointType_ = new QComboBox(this);
+  pointType_->addItems({"small", "middle", "big"});
+  const float size = proposed.chart.pointSize;
+  pointType_->setCurrentIndex(size <= 2 ? 0 : size <= 4 ? 1 : 2);
+  form->addRow("Point type", pointType_);
+  auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
+  connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
+  connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+  form->addRow(buttons);
+}
+
+PlotView PlotFilterDialog::plot() const {
+  PlotView p = proposed_;
+  p.settings.axes.clear();
+  for (auto* a : axes_)
+    p.settings.axes.push_back(a->currentText().toStdString());
+  p.settings.condition = condition_->currentText().toStdString();
+  p.settings.period = period_->value();
+  p.settings.maxPoints = maxPoints_->value();
+  p.chart.pointSize = std::array<float, 3>{2, 4, 7}[pointType_->currentIndex()];
+  return p;
+}
+
+} // namespace rv
