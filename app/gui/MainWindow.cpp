@@ -3,6 +3,7 @@
 #include "app/gui/ChartWindow.h"
 #include "app/gui/ControlPanel.h"
 #include "app/gui/MapPanel.h"
+#include "app/gui/MultipliersWindow.h"
 #include "app/gui/PlotFilterDialog.h"
 #include "app/gui/PlotWindow.h"
 #include "app/gui/QtVtkWidget.h"
@@ -174,6 +175,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
                    "a point whenever the out condition has changed by the period (manual 2.4.1)");
   windows->addAction("3D plot…", this, [this] { plotDialog(3); })
       ->setToolTip("three observables along the 3D view's run and every trajectory of the map (manual 2.4.2)");
+  windows->addAction("Multipliers (live)", this, [this] { openMultipliersWindow(); })
+      ->setToolTip("the multipliers of running continuations and bifurcation trees on the complex plane "
+                   "(manual 2.4.3)");
   windows->addAction("Map3D (live)", map_, [this] { map_->openMap3D(); })
       ->setToolTip("a 3D map in three dimensions, beside its projection in the map window");
   windows->addAction("Apex motion", this, [this] { openApexWindow(); })
@@ -510,6 +514,14 @@ PlotWindow* MainWindow::openPlotWindow(const PlotView& plot) {
     statusBar()->showMessage(QString("Cannot plot: %1").arg(e.what()), 8000);
     return nullptr;
   }
+}
+
+MultipliersWindow* MainWindow::openMultipliersWindow() {
+  auto* w = new MultipliersWindow(this);
+  w->setAttribute(Qt::WA_DeleteOnClose);
+  w->show();
+  map_->addMultipliersWindow(w);
+  return w;
 }
 
 void MainWindow::plotDialog(int dimensions) {

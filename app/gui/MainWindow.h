@@ -27,6 +27,7 @@ namespace rv {
 class QtVtkWidget;
 class ChartWindow;
 class PlotWindow;
+class MultipliersWindow;
 class VisualizerSettings;
 class MapPanel;
 class ControlPanel;
@@ -65,6 +66,8 @@ public:
   /// every trajectory of the map window; nullptr (with the reason in the status bar) when the settings do not
   /// fit the problem.
   PlotWindow* openPlotWindow(const PlotView& plot);
+  /// Opens a live multipliers filter fed by the map window's continuations and bifurcation trees.
+  MultipliersWindow* openMultipliersWindow();
   /// Asks for the plot filter's settings (axes, output condition, period, points; the scene's plot section
   /// proposed) and opens it; `dimensions` 2 or 3.
   void plotDialog(int dimensions);

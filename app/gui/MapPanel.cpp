@@ -1,5 +1,6 @@
 #include "app/gui/MapPanel.h"
 
+#include "app/gui/MultipliersWindow.h"
 #include "app/gui/PlotWindow.h"
 #include "app/gui/QtVtkWidget.h"
 #include "dynamics/core/Errors.h"
@@ -36,6 +37,8 @@ void MapPanel::setScene(const Scene& scene) {
   series_.clear();
   searches_.clear();
   tools_.clear();
+  for (auto& w : multiplierWindows_) // the families of another problem
+    if (w) w->clear();
   scene_ = &scene;
   resetMap3D(false);
   const auto names = PoincareMap(*scene.model, scene.startIntegrator(), scene.poincare).coordinateNames();
@@ -124,11 +127,25 @@ std::unique_ptr<SceneMap> MapPanel::sceneMap() {
   }
 }
 
-void MapPanel::startTool(std::unique_ptr<Task> task, const Rgb& colour,
-                         std::function<bool(std::vector<double>& x, std::vector<double>& y)> pull) {
+void MapPanel::startTool(std::unique_ptr<Task> task, const Rgb& colour, std::function<bool(ToolSeries&)> pull) {
   Job& job = jobs_.add(std::move(task));
   tools_.push_back({&job, chart_->addSeries({}, {}, colour), {}, {}, std::move(pull)});
   job.start();
+}
+
+void MapPanel::offerMultipliers(ToolSeries& t, double parameter, const std::vector<std::complex<double>>& m) {
+  t.multipliers.emplace_back(parameter, m);
+  std::erase_if(multiplierWindows_, [](const QPointer<MultipliersWindow>& w) { return w.isNull(); });
+  for (auto& w : multiplierWindows_)
+    w->offer(t.job->id(), parameter, m, t.everyStep);
+}
+
+void MapPanel::addMultipliersWindow(MultipliersWindow* window) {
+  multiplierWindows_.emplace_back(window);
+  for (const auto& t : tools_)
+    for (const auto& [parameter, m] : t.multipliers)
+      window->offer(t.job->id(), parameter, m, t.everyStep);
+  window->flush();
 }
 
 void MapPanel::startSeparatrices() {
@@ -141,12 +158,12 @@ void MapPanel::startSeparatrices() {
     s.branch = b;
     auto task = std::make_unique<SeparatrixTask>(sm->taskSpec(), s);
     SeparatrixTask* raw = task.get();
-    startTool(std::move(task), colours[b - 1], [raw](std::vector<double>& x, std::vector<double>& y) {
+    startTool(std::move(task), colours[b - 1], [raw](ToolSeries& t) {
       std::vector<std::vector<Eigen::VectorXd>> batches;
       raw->points().take(batches);
       for (const auto& batch : batches)
         for (const auto& p : batch)
-          x.push_back(p[0]), y.push_back(p[1]);
+          t.x.push_back(p[0]), t.y.push_back(p[1]);
       return !batches.empty();
     });
   }
@@ -160,13 +177,15 @@ void MapPanel::startContinuation() {
     auto task = std::make_unique<ContinuationTask>(sm->taskSpec(), sm->continuation());
     ContinuationTask* raw = task.get();
     startTool(std::move(task), {0.95, 0.55, 0.1},
-              [this, raw](std::vector<double>& x, std::vector<double>& y) {
+              [this, raw](ToolSeries& t) {
                 std::vector<ContinuationPoint> points;
                 std::vector<TypeChange> changes;
                 raw->points().take(points);
                 raw->changes().take(changes);
-                for (const auto& p : points)
-                  x.push_back(p.fixedPoint.point[0]), y.push_back(p.fixedPoint.point[1]);
+                for (const auto& p : points) {
+                  t.x.push_back(p.fixedPoint.point[0]), t.y.push_back(p.fixedPoint.point[1]);
+                  offerMultipliers(t, p.parameter, p.fixedPoint.multipliers);
+                }
                 for (const auto& c : changes)
                   emit message(QString("type change at %1 = %2: %3 -> %4 (%5)")
                                    .arg(QString::fromStdString(raw->describe()))
@@ -189,13 +208,17 @@ void MapPanel::startBifurcationTree() {
         bifurcationTreeSettings(sm->scene().tool("bifurcation_tree"), sm->continuation());
     auto task = std::make_unique<BifurcationTreeTask>(sm->taskSpec(), settings);
     BifurcationTreeTask* raw = task.get();
-    startTool(std::move(task), {0.6, 0.2, 0.5}, [this, raw](std::vector<double>& x, std::vector<double>& y) {
+    startTool(std::move(task), {0.6, 0.2, 0.5}, [this, raw](ToolSeries& t) {
+      t.everyStep = true;
       std::vector<TreePoint> points;
       std::vector<PeriodDoubling> doublings;
       raw->points().take(points);
       raw->doublings().take(doublings);
-      for (const auto& p : points)
-        x.push_back(p.point.fixedPoint.point[0]), y.push_back(p.point.fixedPoint.point[1]);
+      for (const auto& p : points) {
+        t.x.push_back(p.point.fixedPoint.point[0]), t.y.push_back(p.point.fixedPoint.point[1]);
+        if (p.point.fixedPoint.type == "elliptic") // manual §2.4.3: only the tree's elliptic branches
+          offerMultipliers(t, p.point.parameter, p.point.fixedPoint.multipliers);
+      }
       for (const auto& d : doublings)
         emit message(
             QString("period doubling of the order-%1 point at %2").arg(d.order).arg(d.parameter, 0, 'g', 12));
@@ -247,7 +270,7 @@ void MapPanel::drain() {
     p->flush();
   bool changed = false;
   for (auto& t : tools_)
-    if (t.pull(t.x, t.y)) {
+    if (t.pull(t)) {
       chart_->setSeries(t.plot, t.x, t.y);
       changed = true;
     }
@@ -288,6 +311,8 @@ void MapPanel::drain() {
     drawSeries(s);
     changed = true;
   }
+  for (auto& w : multiplierWindows_)
+    if (w) w->flush();
   if (changed) {
     view_->update();
     feedMap3D();
@@ -312,6 +337,8 @@ void MapPanel::removeJob(Job& job) {
   for (auto it = tools_.begin(); it != tools_.end();)
     if (isGone(it->job)) {
       chart_->setSeries(it->plot, {}, {});
+      for (auto& w : multiplierWindows_)
+        if (w) w->forget(it->job->id()), w->flush();
       it = tools_.erase(it);
     } else {
       ++it;

@@ -10,6 +10,7 @@
 
 #include <QPointer>
 #include <QWidget>
+#include <complex>
 #include <functional>
 #include <memory>
 #include <vector>
@@ -17,6 +18,7 @@
 namespace rv {
 
 class QtVtkWidget;
+class MultipliersWindow;
 class PlotWindow;
 class PoincareTask;
 class FixedPointTask;
@@ -68,6 +70,9 @@ public:
   /// Feeds an open 2D / 3D plot filter (manual §2.4) with every trajectory of the map, those running now and
   /// those started later; the window is drawn on each drain() until it closes.
   void addPlotWindow(PlotWindow* window);
+  /// Feeds an open multipliers filter (manual §2.4.3) with the fixed points of every continuation and
+  /// bifurcation tree of the map window, those computed so far and those to come.
+  void addMultipliersWindow(MultipliersWindow* window);
   /// The open plot filters (the 3D view's run offers them its states too).
   std::vector<PlotWindow*> plotWindows();
   /// Points drawn in the Map3D window (tests).
@@ -113,17 +118,23 @@ private:
   void start(const Eigen::VectorXd& state);
   std::vector<double> mapPoint(double x, double y) const;
   std::vector<Search> searches_;
-  // the output of other tools drawn on the map: `pull` appends what arrived and says whether anything did
+  // the output of other tools drawn on the map: `pull` appends what arrived to x, y and says whether
+  // anything did
   struct ToolSeries {
     Job* job;
     int plot;
     std::vector<double> x, y;
-    std::function<bool(std::vector<double>& x, std::vector<double>& y)> pull;
+    std::function<bool(ToolSeries&)> pull;
+    /// the multipliers of a family's points (continuation, tree), kept for filters opened later
+    std::vector<std::pair<double, std::vector<std::complex<double>>>> multipliers;
+    bool everyStep = false; ///< a tree: each step is output (not by the filter's period)
   };
   std::vector<ToolSeries> tools_;
   /// Adds a tool's job, a series on the map for its output (`pull` fetches it), and starts it.
-  void startTool(std::unique_ptr<Task> task, const Rgb& colour,
-                 std::function<bool(std::vector<double>& x, std::vector<double>& y)> pull);
+  void startTool(std::unique_ptr<Task> task, const Rgb& colour, std::function<bool(ToolSeries&)> pull);
+  /// A fixed point of a family: kept, and offered to the open multipliers filters.
+  void offerMultipliers(ToolSeries& t, double parameter, const std::vector<std::complex<double>>& m);
+  std::vector<QPointer<MultipliersWindow>> multiplierWindows_;
   /// The scene's tool setup; nothing (with a message) when the scene cannot give one.
   std::unique_ptr<class SceneMap> sceneMap();
   QtVtkWidget* view_;

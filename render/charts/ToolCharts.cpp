@@ -10,14 +10,18 @@
 
 namespace rv {
 
-void drawMultipliers(PoincareChart& chart, const std::vector<std::vector<std::complex<double>>>& steps) {
+double drawUnitCircle(PoincareChart& chart) {
   std::vector<double> cx, cy;
   for (int i = 0; i <= 360; ++i) {
     const double a = 2 * std::numbers::pi * i / 360;
     cx.push_back(std::cos(a)), cy.push_back(std::sin(a));
   }
   chart.addCurve(cx, cy, {0.55, 0.55, 0.55}, 1.5);
-  double r = 1.2;
+  return 1.2;
+}
+
+void drawMultipliers(PoincareChart& chart, const std::vector<std::vector<std::complex<double>>>& steps) {
+  double r = drawUnitCircle(chart);
   std::size_t count = 0;
   for (const auto& s : steps)
     count = std::max(count, s.size());

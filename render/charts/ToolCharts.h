@@ -13,6 +13,9 @@
 
 namespace rv {
 
+/// The unit circle (grey), the plane of multipliers; returns the half-width of the square to show (1.2).
+double drawUnitCircle(PoincareChart& chart);
+
 /// The unit circle and the multipliers of each step of a family (one colour per multiplier index, so a
 /// multiplier's path can be followed); the plane is square around the circle and the points.
 void drawMultipliers(PoincareChart& chart, const std::vector<std::vector<std::complex<double>>>& steps);

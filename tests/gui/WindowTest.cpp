@@ -7,6 +7,7 @@
 #include "app/gui/MainWindow.h"
 #include "app/gui/MapPanel.h"
 #include "app/gui/ParameterForm.h"
+#include "app/gui/MultipliersWindow.h"
 #include "app/gui/PlotWindow.h"
 #include "app/gui/QtVtkWidget.h"
 #include "app/gui/ToolManager.h"
@@ -344,6 +345,45 @@ private slots:
     QCOMPARE(plot2->points(ids.front()), 300L);
     plot2->close();
     plot3->close();
+  }
+
+  // manual §2.4.3: a running continuation feeds the multipliers filter, a point whenever its parameter moved
+  // by the period. The standard map's point (pi, 0) has the trace 2 - K: multipliers on the unit circle with
+  // real part (2 - K) / 2 while K < 4.
+  void multipliersFilterFollowsAContinuation() {
+    nlohmann::json doc = loadScene(defaultScenePath("standard_map")).document;
+    doc["parameters"]["K"] = 1.5;
+    doc["fixedpoint"] = {{"guess", {3.1, 0.05}}};
+    doc["continuation"] = {{"parameter", "K"}, {"to", 3.5}, {"step", 0.05}};
+    QVERIFY(window_->runDocument(doc));
+    MultipliersWindow* w = window_->openMultipliersWindow();
+    w->setPeriod(0.2);
+    MapPanel* map = window_->mapPanel();
+    map->startContinuation();
+    Job* job = map->jobs().jobs().back();
+    QTRY_VERIFY_WITH_TIMEOUT(!job->running(), 20000);
+    map->drain();
+    const auto& outputs = w->outputs(job->id());
+    const auto& parameters = w->parameters(job->id());
+    QCOMPARE(outputs.size(), std::size_t(11)); // K = 1.5, 1.7, ..., 3.5
+    for (std::size_t k = 0; k < outputs.size(); ++k) {
+      QCOMPARE(outputs[k].size(), std::size_t(2));
+      const double K = parameters[k];
+      QVERIFY(std::abs(K - (1.5 + 0.2 * static_cast<double>(k))) < 1e-9); // steps of 0.05, every fourth
+      for (const auto& m : outputs[k]) {
+        QVERIFY(std::abs(std::abs(m) - 1) < 1e-8);
+        QVERIFY(std::abs(m.real() - (2 - K) / 2) < 1e-7);
+      }
+    }
+    // a window opened later gets the family computed so far
+    MultipliersWindow* later = window_->openMultipliersWindow();
+    QCOMPARE(later->points(), 2L * 41); // period 0: every point, K = 1.5, 1.55, ..., 3.5
+    QTest::qWait(200);
+    keep(w->grab().toImage(), "window_multipliers.png");
+    map->removeJob(*job);
+    QCOMPARE(w->points(), 0L);
+    w->close();
+    later->close();
   }
 
   // a 3D map shows Map (its projection, the map window) and Map3D (a window fed with the same points)
