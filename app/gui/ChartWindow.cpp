@@ -6,6 +6,9 @@
 #include "scenes/SceneCharts.h"
 #include "scenes/SceneLoader.h"
 
+#include <vtkChartXY.h>
+#include <vtkPlotPoints.h>
+
 namespace rv {
 
 ChartWindow::ChartWindow(const nlohmann::json& document, const std::string& source, const std::string& view,
@@ -44,12 +47,36 @@ void ChartWindow::deliver(std::shared_ptr<Chart> chart, const QString& failure) 
   if (chart) {
     chart_ = std::move(chart);
     chart_->attach(view()->renderWindow());
+    drawMarks();
     setStatus(QString::fromStdString(viewName_));
     view()->update();
   } else {
     setStatus("failed: " + failure);
   }
   emit finished();
+}
+
+void ChartWindow::setMarks(const std::vector<Mark>& marks) {
+  marks_ = marks;
+  drawMarks();
+}
+
+void ChartWindow::drawMarks() {
+  auto* plane = dynamic_cast<PoincareChart*>(chart_.get());
+  if (!plane) return;
+  while (markSeries_.size() < marks_.size()) {
+    markSeries_.push_back(plane->addSeries({}, {}, {0, 0, 0}));
+    if (auto* p = vtkPlotPoints::SafeDownCast(plane->chart()->GetPlot(markSeries_.back()))) p->SetMarkerSize(9);
+  }
+  for (std::size_t i = 0; i < markSeries_.size(); ++i) {
+    if (i < marks_.size()) {
+      plane->setSeries(markSeries_[i], {marks_[i].x}, {marks_[i].y});
+      plane->setColor(markSeries_[i], marks_[i].colour);
+    } else {
+      plane->setSeries(markSeries_[i], {}, {});
+    }
+  }
+  view()->update();
 }
 
 } // namespace rv

@@ -4,12 +4,14 @@
 // window stops the computation.
 #pragma once
 #include "app/gui/FilterWindow.h"
+#include "render/ViewOptions.h"
 
 #include <atomic>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <thread>
+#include <vector>
 
 namespace rv {
 
@@ -24,6 +26,15 @@ public:
   /// Why the computation failed (empty while running or when it succeeded).
   const QString& failure() const { return failure_; }
   const std::string& viewName() const { return viewName_; }
+  /// A marked point over the chart: manual §2.4.4, each trajectory of the map is a point on the plane of the
+  /// bifurcation diagram.
+  struct Mark {
+    double x, y;
+    Rgb colour;
+  };
+  /// Draws these marks (replacing the last ones; kept until the chart is ready).
+  void setMarks(const std::vector<Mark>& marks);
+  const std::vector<Mark>& marks() const { return marks_; }
 
 signals:
   void finished();
@@ -33,7 +44,10 @@ protected:
 
 private:
   void deliver(std::shared_ptr<Chart> chart, const QString& failure);
+  void drawMarks();
   std::string viewName_;
+  std::vector<Mark> marks_;
+  std::vector<int> markSeries_;
   std::shared_ptr<Chart> chart_;
   QString failure_;
   std::atomic<bool> stop_{false};

@@ -499,6 +499,7 @@ ChartWindow* MainWindow::openChart(const std::string& view) {
   auto* w = new ChartWindow(control_->editedDocument(), scene_->source, view, this);
   w->setAttribute(Qt::WA_DeleteOnClose);
   w->show();
+  if (view == "bifurcation") map_->addDiagramWindow(w); // the map's trajectories are points on it
   return w;
 }
 

@@ -1,5 +1,6 @@
 #include "app/gui/MapPanel.h"
 
+#include "app/gui/ChartWindow.h"
 #include "app/gui/MultipliersWindow.h"
 #include "app/gui/PlotWindow.h"
 #include "app/gui/QtVtkWidget.h"
@@ -257,6 +258,30 @@ void MapPanel::addPlotWindow(PlotWindow* window) {
     s.task->taps().add(window->follow(s.job->id(), s.colour));
 }
 
+void MapPanel::addDiagramWindow(ChartWindow* window) {
+  diagramWindows_.emplace_back(window);
+  markDiagrams(true);
+}
+
+void MapPanel::markDiagrams(bool force) {
+  std::erase_if(diagramWindows_, [](const QPointer<ChartWindow>& w) { return w.isNull(); });
+  if (diagramWindows_.empty() || !scene_) return;
+  const auto diagrams = scene_->model->diagrams();
+  if (diagrams.empty()) return;
+  std::vector<std::array<double, 5>> marks;
+  for (const auto& s : series_) {
+    const DiagramPoint p = diagrams.front().place(s.task->levelState().data());
+    marks.push_back({p[0], p[1], s.colour[0], s.colour[1], s.colour[2]});
+  }
+  if (!force && marks == marked_) return;
+  marked_ = marks;
+  std::vector<ChartWindow::Mark> m;
+  for (const auto& a : marks)
+    m.push_back({a[0], a[1], {a[2], a[3], a[4]}});
+  for (auto& w : diagramWindows_)
+    w->setMarks(m);
+}
+
 std::vector<PlotWindow*> MapPanel::plotWindows() {
   std::erase_if(plots_, [](const QPointer<PlotWindow>& p) { return p.isNull(); });
   std::vector<PlotWindow*> out;
@@ -313,6 +338,7 @@ void MapPanel::drain() {
   }
   for (auto& w : multiplierWindows_)
     if (w) w->flush();
+  markDiagrams(false);
   if (changed) {
     view_->update();
     feedMap3D();

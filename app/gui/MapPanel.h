@@ -18,6 +18,7 @@
 namespace rv {
 
 class QtVtkWidget;
+class ChartWindow;
 class MultipliersWindow;
 class PlotWindow;
 class PoincareTask;
@@ -73,6 +74,10 @@ public:
   /// Feeds an open multipliers filter (manual §2.4.3) with the fixed points of every continuation and
   /// bifurcation tree of the map window, those computed so far and those to come.
   void addMultipliersWindow(MultipliersWindow* window);
+  /// Marks every trajectory of the map (in its colour) on an open bifurcation diagram window (manual §2.4.4:
+  /// a trajectory is a point on the plane of first integrals), kept up to date as trajectories come, go and
+  /// are edited.
+  void addDiagramWindow(ChartWindow* window);
   /// The open plot filters (the 3D view's run offers them its states too).
   std::vector<PlotWindow*> plotWindows();
   /// Points drawn in the Map3D window (tests).
@@ -135,6 +140,10 @@ private:
   /// A fixed point of a family: kept, and offered to the open multipliers filters.
   void offerMultipliers(ToolSeries& t, double parameter, const std::vector<std::complex<double>>& m);
   std::vector<QPointer<MultipliersWindow>> multiplierWindows_;
+  /// Where each trajectory lies on the scene's first bifurcation diagram; marks the diagram windows with it.
+  void markDiagrams(bool force);
+  std::vector<QPointer<ChartWindow>> diagramWindows_;
+  std::vector<std::array<double, 5>> marked_; ///< x, y, colour of the marks drawn
   /// The scene's tool setup; nothing (with a message) when the scene cannot give one.
   std::unique_ptr<class SceneMap> sceneMap();
   QtVtkWidget* view_;

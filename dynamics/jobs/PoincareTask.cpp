@@ -12,6 +12,7 @@ PoincareTask::PoincareTask(RunSpec spec, SectionSettings settings)
 }
 
 void PoincareTask::build(const Eigen::VectorXd& x0, double t0) {
+  levelState_ = x0;
   auto integ = spec_.makeIntegrator(*model_);
   integ->start(*model_, t0, x0, settings_.backward ? -1 : +1);
   SectionSettings s = settings_;

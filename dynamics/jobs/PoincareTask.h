@@ -27,6 +27,9 @@ public:
   Channel<MapPoint>& points() { return points_; }
   /// The plot filters fed by this trajectory's steps (thread-safe to add to while it runs).
   PlotTaps& taps() { return taps_; }
+  /// A state on the trajectory's current level of the integrals: where it began or where it went on after
+  /// its last edit. Readable while it runs (only reset and edit change it, and the job is stopped for them).
+  const Eigen::VectorXd& levelState() const { return levelState_; }
   /// The full state at the last point (the trajectory's "current" state for the tools hung under it); only
   /// while the job does not run.
   Eigen::VectorXd lastState() const;
@@ -39,6 +42,7 @@ private:
   std::unique_ptr<Model> model_;
   std::unique_ptr<PoincareMap> map_;
   std::optional<MapPoint> last_;
+  Eigen::VectorXd levelState_;
   long produced_ = 0;
   Channel<MapPoint> points_;
   PlotTaps taps_;

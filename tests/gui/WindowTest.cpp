@@ -386,6 +386,39 @@ private slots:
     later->close();
   }
 
+  // manual §2.4.4: on the bifurcation diagram each trajectory of the map is a point of the plane of first
+  // integrals ((n, h) for the Chaplygin ball), following an edit of its energy
+  void diagramWindowMarksTheTrajectories() {
+    QVERIFY(window_->openScene(QString::fromStdString(defaultScenePath("chaplygin_ball"))));
+    ChartWindow* chart = window_->openChart("bifurcation");
+    QTRY_VERIFY_WITH_TIMEOUT(chart->ready(), 20000);
+    MapPanel* map = window_->mapPanel();
+    QVERIFY(map->startAt(0.3, 0.2));
+    map->drain();
+    QCOMPARE(chart->marks().size(), std::size_t(2));
+    const Model& model = *window_->scene()->model;
+    const auto integrals = model.integrals(window_->scene()->initialState.data()); // E, H, geometric, n
+    QVERIFY(std::abs(chart->marks()[0].x - integrals[3]) < 1e-12);
+    QVERIFY(std::abs(chart->marks()[0].y - integrals[0]) < 1e-12);
+    QVERIFY(std::abs(chart->marks()[1].y - integrals[0]) < 1e-9); // the same energy, another n
+    // the second trajectory edited to another energy: its mark moves to it
+    Job* second = map->jobs().jobs().back();
+    second->edit([&](Task& t) {
+      auto& p = static_cast<PoincareTask&>(t);
+      RunSpec s = p.spec();
+      s.modelParameters.set("energy", 0.6);
+      p.edit(s, p.settings());
+    });
+    map->drain();
+    QVERIFY(std::abs(chart->marks()[1].y - 0.6) < 1e-9);
+    QTest::qWait(200);
+    keep(chart->grab().toImage(), "window_diagram_marks.png");
+    map->removeJob(*second);
+    map->drain();
+    QCOMPARE(chart->marks().size(), std::size_t(1));
+    chart->close();
+  }
+
   // a 3D map shows Map (its projection, the map window) and Map3D (a window fed with the same points)
   void map3DWindowFollowsTheTrajectories() {
     QVERIFY(window_->openScene(QString::fromStdString(defaultScenePath("ellipsoid_on_plane"))));

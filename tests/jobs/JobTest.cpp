@@ -73,6 +73,7 @@ TEST(Job, EditTheEnergyAndContinueGivesPointsAtTheNewEnergy) {
   const auto model = poincare->spec().makeModel();
   const Eigen::VectorXd x = poincare->lastState();
   EXPECT_NEAR(model->integrals(x.data())[0], 0.15, 1e-10) << "the trajectory goes on at the new energy";
+  EXPECT_NEAR(model->integrals(poincare->levelState().data())[0], 0.15, 1e-12) << "its level's state";
   // an energy at which the last point has no state (E = 0: only the origin): the edit is refused, nothing
   // changes
   EXPECT_THROW(job.edit([](Task& t) {
