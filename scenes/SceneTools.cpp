@@ -1,6 +1,8 @@
 #include "scenes/SceneTools.h"
 
 #include "dynamics/core/Errors.h"
+#include "dynamics/jobs/PoincareTask.h"
+#include "scenes/SceneLoader.h"
 
 #include <cmath>
 
@@ -90,6 +92,31 @@ std::vector<std::vector<std::complex<double>>> multiplierPath(const SceneMap& s,
   for (const auto& p : cont->points())
     steps.push_back(p.fixedPoint.multipliers);
   return steps;
+}
+
+bool editTask(Task& task, const Scene& edited) {
+  if (auto* map = dynamic_cast<PoincareTask*>(&task)) {
+    map->edit(edited.runSpec(), edited.poincare);
+    return true;
+  }
+  const SceneMap sm(sceneFromJson(edited.document, edited.source), {}, false);
+  if (auto* search = dynamic_cast<FixedPointTask*>(&task)) {
+    search->edit(sm.taskSpec());
+    return true;
+  }
+  if (auto* family = dynamic_cast<ContinuationTask*>(&task)) {
+    family->edit(sm.taskSpec(), sm.continuation());
+    return false;
+  }
+  if (auto* branch = dynamic_cast<SeparatrixTask*>(&task)) {
+    branch->edit(sm.taskSpec(), separatrixSettings(edited.tool("separatrix"), sm.search()));
+    return false;
+  }
+  if (auto* tree = dynamic_cast<BifurcationTreeTask*>(&task)) {
+    tree->edit(sm.taskSpec(), bifurcationTreeSettings(edited.tool("bifurcation_tree"), sm.continuation()));
+    return false;
+  }
+  throw InputError(task.name() + " takes no new values: restart it");
 }
 
 } // namespace rv

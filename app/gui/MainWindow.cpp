@@ -73,12 +73,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   tools_ = new ToolManager(
       map_->jobs(), [this](Job& j) { map_->removeJob(j); }, this);
   tools_->setEditor([this](Job& job) {
-    auto* poincare = dynamic_cast<PoincareTask*>(&job.task());
-    if (!poincare) throw InputError("only Poincare maps take new values (the other tools restart with them)");
     const Scene edited = sceneFromJson(control_->editedDocument(), scene_ ? scene_->source : "edited scene");
-    const RunSpec spec = edited.runSpec();
-    job.edit([&](Task& t) { static_cast<PoincareTask&>(t).edit(spec, edited.poincare); });
+    map_->editJob(job, edited);
   });
+  connect(tools_, &ToolManager::restarted, map_, &MapPanel::clearOutput);
   connect(tools_, &ToolManager::message, this,
           [this](const QString& m) { statusBar()->showMessage(m, 8000); });
   connect(tools_, &ToolManager::selectedJob, map_, &MapPanel::highlightJob);

@@ -382,6 +382,37 @@ void MapPanel::removeJob(Job& job) {
   resetMap3D(true); // its series follow the trajectories' order
 }
 
+void MapPanel::editJob(Job& job, const Scene& edited) {
+  bool goesOn = true;
+  job.edit([&](Task& t) { goesOn = editTask(t, edited); });
+  if (!goesOn) clearOutput(job.id());
+}
+
+void MapPanel::clearOutput(int id) {
+  for (auto& s : series_)
+    if (s.job->id() == id) {
+      s.x.clear(), s.y.clear(), s.z.clear();
+      drawSeries(s);
+      for (PlotWindow* p : plotWindows())
+        p->clear(id);
+    }
+  for (auto& t : tools_)
+    if (t.job->id() == id) {
+      t.x.clear(), t.y.clear(), t.multipliers.clear();
+      chart_->setSeries(t.plot, {}, {});
+      for (auto& w : multiplierWindows_)
+        if (w) w->forget(id), w->flush();
+    }
+  for (auto& s : searches_)
+    if (s.job->id() == id) {
+      s.x.clear(), s.y.clear(), s.reported = false;
+      chart_->setSeries(s.point, {}, {});
+      if (s.path >= 0) chart_->setSeries(s.path, {}, {});
+    }
+  view_->update();
+  resetMap3D(true);
+}
+
 void MapPanel::stopAll() {
   jobs_.stopAll();
 }

@@ -55,6 +55,12 @@ public:
   JobTree& jobs() { return jobs_; }
   /// Deletes a job and those under it, with what the panel draws of them.
   void removeJob(Job& job);
+  /// Edit properties (manual §2.1): gives the job (stopped first) the edited scene's values (scenes/
+  /// SceneTools editTask); a tool that starts again with them loses what it drew. Throws InputError when it
+  /// cannot take them.
+  void editJob(Job& job, const Scene& edited);
+  /// Forgets what the job drew (on the map and in the filters): it starts again (Restart).
+  void clearOutput(int id);
   /// Draws the trajectory of job `id` emphasised (-1, or a job that is not a trajectory: none).
   void highlightJob(int id);
   /// The colour of a trajectory's points (manual §2.1: colour of output); false when `id` is not a

@@ -53,9 +53,11 @@ void PlotWindow::offer(double t, const double* x) {
   s.dirty = true;
 }
 
-void PlotWindow::clear() {
-  sampler_.clear();
-  Source& s = sources_.at(kViewRun);
+void PlotWindow::clear(int id) {
+  const auto it = sources_.find(id);
+  if (it == sources_.end()) return;
+  if (id == kViewRun) sampler_.clear(); // a trajectory's job restarts its own sampling
+  Source& s = it->second; // (a restarted job has emptied its tap of the old run's points)
   for (auto& v : s.values)
     v.clear();
   s.dirty = true;

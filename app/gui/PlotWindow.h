@@ -27,8 +27,8 @@ public:
   ~PlotWindow() override;
   /// A state of the 3D view's running trajectory.
   void offer(double t, const double* x);
-  /// The 3D view's run starts again: its points go.
-  void clear();
+  /// A source starts again (the 3D view's run by default): its points go.
+  void clear(int id = kViewRun);
   /// Follows map trajectory `id` drawn in `colour`: returns the tap to give its job.
   std::shared_ptr<PlotTap> follow(int id, const Rgb& colour);
   /// The trajectory was deleted: its points go.

@@ -56,6 +56,8 @@ signals:
   void message(const QString& text);
   /// The selection changed: the job's id (-1: none), so that every window highlights its graphics.
   void selectedJob(int id);
+  /// A job was restarted: what it drew goes.
+  void restarted(int id);
 
 public:
   QTreeWidget* tree() const { return tree_; }

@@ -51,6 +51,13 @@ bool FixedPointTask::run(const ToolControl& control) {
   }
 }
 
+void FixedPointTask::edit(MapTaskSpec spec) {
+  spec.guess = spec_.guess;
+  spec_ = std::move(spec);
+  std::lock_guard lock(mutex_);
+  result_.reset(); // the point of the old settings
+}
+
 std::optional<FixedPointResult> FixedPointTask::result() const {
   std::lock_guard lock(mutex_);
   return result_;
@@ -74,6 +81,14 @@ void ContinuationTask::reset() {
       spec_.run.modelParameters[settings_.parameter], spec_.guess, settings_);
 }
 
+void ContinuationTask::edit(MapTaskSpec spec, ContinuationSettings settings) {
+  spec.guess = spec_.guess;
+  spec_ = std::move(spec);
+  settings_ = std::move(settings);
+  settings_.search = spec_.search;
+  reset();
+}
+
 bool ContinuationTask::run(const ToolControl& control) {
   return continuation_->run(
       control, [this](const ContinuationPoint& p) { points_.push(p); },
@@ -82,6 +97,14 @@ bool ContinuationTask::run(const ToolControl& control) {
 
 SeparatrixTask::SeparatrixTask(MapTaskSpec spec, SeparatrixSettings settings)
     : spec_(std::move(spec)), settings_(settings) {}
+
+void SeparatrixTask::edit(MapTaskSpec spec, SeparatrixSettings settings) {
+  spec.guess = spec_.guess;
+  settings.branch = settings_.branch;
+  spec_ = std::move(spec);
+  settings_ = settings;
+  reset();
+}
 
 bool SeparatrixTask::run(const ToolControl& control) {
   points_.clear();
@@ -99,6 +122,14 @@ bool SeparatrixTask::run(const ToolControl& control) {
 BifurcationTreeTask::BifurcationTreeTask(MapTaskSpec spec, BifurcationTreeSettings settings)
     : spec_(std::move(spec)), settings_(std::move(settings)) {
   settings_.continuation.search = spec_.search;
+}
+
+void BifurcationTreeTask::edit(MapTaskSpec spec, BifurcationTreeSettings settings) {
+  spec.guess = spec_.guess;
+  spec_ = std::move(spec);
+  settings_ = std::move(settings);
+  settings_.continuation.search = spec_.search;
+  reset();
 }
 
 void BifurcationTreeTask::reset() {

@@ -44,6 +44,10 @@ public:
   std::string describe() const override { return spec_.describe(); }
   bool run(const ToolControl& control) override;
   void reset() override;
+  /// New problem, method, map and search settings (while the job does not run): the search goes on from the
+  /// point where it stopped (its guess is kept).
+  void edit(MapTaskSpec spec);
+  const MapTaskSpec& spec() const { return spec_; }
   /// The search path, streamed.
   Channel<SearchPoint>& path() { return path_; }
   /// The result once finished (thread-safe).
@@ -64,6 +68,8 @@ public:
   std::string describe() const override;
   bool run(const ToolControl& control) override;
   void reset() override;
+  /// New values (while the job does not run): the family is continued again from the task's own guess.
+  void edit(MapTaskSpec spec, ContinuationSettings settings);
   Channel<ContinuationPoint>& points() { return points_; }
   Channel<TypeChange>& changes() { return changes_; }
 
@@ -82,6 +88,9 @@ public:
   std::string describe() const override { return spec_.describe(); }
   bool run(const ToolControl& control) override;
   void reset() override { points_.clear(); }
+  /// New values (while the job does not run): the branch (kept) grows again from the task's own guess.
+  void edit(MapTaskSpec spec, SeparatrixSettings settings);
+  const SeparatrixSettings& settings() const { return settings_; }
   /// Batches of new points along the branch.
   Channel<std::vector<Eigen::VectorXd>>& points() { return points_; }
 
@@ -104,6 +113,8 @@ public:
   std::string describe() const override { return spec_.describe(); }
   bool run(const ToolControl& control) override;
   void reset() override;
+  /// New values (while the job does not run): the tree grows again from the task's own guess.
+  void edit(MapTaskSpec spec, BifurcationTreeSettings settings);
   Channel<TreePoint>& points() { return points_; }
   Channel<PeriodDoubling>& doublings() { return doublings_; }
 

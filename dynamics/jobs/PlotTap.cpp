@@ -44,8 +44,10 @@ void PlotTaps::offer(const Model& model, const Integrator& integrator) {
 }
 
 void PlotTaps::restart() {
-  for (auto& s : sampling_)
+  for (auto& s : sampling_) {
     s.sampler.clear();
+    s.tap->points.clear(); // the old run's points not yet taken
+  }
 }
 
 } // namespace rv

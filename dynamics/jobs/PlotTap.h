@@ -30,7 +30,7 @@ public:
   /// Samples the integrator's last step for every open tap (samplers built on `model`; built again when the
   /// job's model is another one, after an edit).
   void offer(const Model& model, const Integrator& integrator);
-  /// A new run: the samplers start again (the points already streamed stay with the windows).
+  /// A new run: the samplers start again and the taps drop the old run's points not yet taken.
   void restart();
 
 private:

@@ -380,6 +380,21 @@ private slots:
     QCOMPARE(later->points(), 2L * 41); // period 0: every point, K = 1.5, 1.55, ..., 3.5
     QTest::qWait(200);
     keep(w->grab().toImage(), "window_multipliers.png");
+    // Edit properties of the stopped continuation (tool manager): a larger step from the control panel; it
+    // starts again with it, its old output gone from the filter
+    auto* step = qobject_cast<QDoubleSpinBox*>(window_->controlPanel()->form("continuation")->editor("step"));
+    QVERIFY(step);
+    step->setValue(0.25);
+    ToolManager* tools = window_->toolManager();
+    tools->refresh();
+    tools->select(job->id());
+    tools->editSelected();
+    QCOMPARE(w->outputs(job->id()).size(), std::size_t(0));
+    tools->continueSelected();
+    QTRY_VERIFY_WITH_TIMEOUT(!job->running(), 20000);
+    map->drain();
+    QCOMPARE(w->outputs(job->id()).size(), std::size_t(9)); // K = 1.5, 1.75, ..., 3.5
+    QVERIFY(std::abs(w->parameters(job->id()).back() - 3.5) < 1e-12);
     map->removeJob(*job);
     QCOMPARE(w->points(), 0L);
     w->close();
