@@ -55,10 +55,10 @@ int runGui(int argc, char** argv, const GuiOptions& options) {
       // a summary for scripted runs and tests
       std::printf(
           "shown t = %.6g, map trajectories = %d, map points = %ld, fixed point searches = %d, found = %d, "
-          "tool jobs = %d, jobs in the tool manager = %d\n",
+          "tool jobs = %d, jobs in the tool manager = %d, playing = %s\n",
           window.shownTime(), window.mapPanel()->trajectories(), window.mapPanel()->points(),
           window.mapPanel()->searches(), window.mapPanel()->fixedPointsFound(), window.mapPanel()->toolJobs(),
-          static_cast<int>(window.mapPanel()->jobs().jobs().size()));
+          static_cast<int>(window.mapPanel()->jobs().jobs().size()), window.playing() ? "yes" : "no");
       std::fflush(stdout);
       app.quit();
     });

@@ -42,6 +42,8 @@ public:
   bool openScene(const QString& path);
   /// Runs a scene document (the control panel's edits); on failure shows why and keeps the current scene.
   bool runDocument(const nlohmann::json& document);
+  /// Whether the 3D view's run plays (Space toggles it).
+  bool playing() const { return playing_; }
   /// Simulation time shown in the last frame.
   double shownTime() const { return shownTime_; }
   QtVtkWidget* view() const { return view_; }

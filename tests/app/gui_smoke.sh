@@ -1,7 +1,7 @@
 #!/bin/bash
 # GUI smoke test under Xvfb: the window opens on the default scene and simulates; a real X Ctrl+click (xdotool) on
-# the Poincare map starts a second trajectory whose points arrive, a Shift+click a fixed-point search; a screenshot
-# of the window is a real picture.
+# the Poincare map starts a second trajectory whose points arrive, a Shift+click a fixed-point search; real keys:
+# Ctrl+Shift+C continues the fixed point, Space pauses; a screenshot of the window is a real picture.
 # Usage: gui_smoke.sh ROLLVIZ SRC ARTIFACT_DIR
 set -euo pipefail
 RV=$1 SRC=$2 OUT=$3
@@ -19,6 +19,11 @@ xdotool mousemove 1200 300 keydown ctrl click 1 keyup ctrl
 sleep 0.3
 # Shift+click: a fixed-point search from that point of the map (a job; it may find a point or fail: both end)
 xdotool mousemove 1250 400 keydown shift click 1 keyup shift
+sleep 0.3
+# keyboard shortcuts, with the pointer (and so the focus) over the 3D view
+xdotool mousemove 300 400 key ctrl+shift+c
+sleep 0.2
+xdotool key space
 wait \$pid
 SH
 xvfb-run -a -s '-screen 0 1600x1000x24' bash "$OUT/gui_smoke_session.sh"
@@ -26,6 +31,8 @@ xvfb-run -a -s '-screen 0 1600x1000x24' bash "$OUT/gui_smoke_session.sh"
 cat "$summary"
 grep -q "map trajectories = 2" "$summary" || { echo "the click on the map did not start a trajectory"; exit 1; }
 grep -q "fixed point searches = 1" "$summary" || { echo "the Shift+click did not start a fixed-point search"; exit 1; }
+grep -q "tool jobs = 1," "$summary" || { echo "Ctrl+Shift+C did not start the continuation"; exit 1; }
+grep -q "playing = no" "$summary" || { echo "Space did not pause the run"; exit 1; }
 /usr/bin/python3 - "$shot" <<'PY'
 import sys
 from PIL import Image
