@@ -6,6 +6,10 @@
 #include "scenes/SceneCharts.h"
 #include "scenes/SceneLoader.h"
 
+#include <QHBoxLayout>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QTimer>
 #include <vtkChartXY.h>
 #include <vtkPlotPoints.h>
 
@@ -15,6 +19,20 @@ ChartWindow::ChartWindow(const nlohmann::json& document, const std::string& sour
                          QWidget* parent)
     : FilterWindow(QString::fromStdString(view), QString::fromStdString(view), parent), viewName_(view) {
   setStatus("computing…");
+  progressBar_ = new QProgressBar(this);
+  progressBar_->setRange(0, 1000);
+  progressBar_->setTextVisible(false);
+  cancel_ = new QPushButton("Cancel", this);
+  cancel_->setToolTip("stop the computation");
+  connect(cancel_, &QPushButton::clicked, this, &ChartWindow::cancel);
+  bar()->insertWidget(1, progressBar_);
+  bar()->insertWidget(2, cancel_);
+  auto* poll = new QTimer(this); // the worker only stores its progress; the window shows it
+  connect(poll, &QTimer::timeout, this, [this, poll] {
+    if (chart_ || !failure_.isEmpty()) return poll->stop();
+    progressBar_->setValue(static_cast<int>(1000 * progress_.load()));
+  });
+  poll->start(100);
   worker_ = std::thread([this, document, source, view] {
     std::unique_ptr<Chart> chart;
     QString failure;
@@ -22,13 +40,14 @@ ChartWindow::ChartWindow(const nlohmann::json& document, const std::string& sour
       const Scene scene = sceneFromJson(document, source);
       ToolControl control;
       control.stopRequested = [this] { return stop_.load(); };
+      control.progress = [this](double f) { progress_.store(f); };
       chart = sceneChart(scene, view, control);
     } catch (const Stopped&) {
       failure = "stopped";
     } catch (const std::exception& e) {
       failure = e.what();
     }
-    if (stop_) return; // the window is going away: it joins this thread
+    if (closing_) return; // the window is going away: it joins this thread
     // shared: if the window goes before the call is delivered, the discarded call frees the chart
     QMetaObject::invokeMethod(
         this, [this, c = std::shared_ptr<Chart>(std::move(chart)), failure] { deliver(c, failure); },
@@ -36,7 +55,14 @@ ChartWindow::ChartWindow(const nlohmann::json& document, const std::string& sour
   });
 }
 
+void ChartWindow::cancel() {
+  stop_ = true;
+  cancel_->setEnabled(false);
+  setStatus("stopping…");
+}
+
 ChartWindow::~ChartWindow() {
+  closing_ = true;
   stop_ = true;
   if (worker_.joinable()) worker_.join();
 }
@@ -44,6 +70,8 @@ ChartWindow::~ChartWindow() {
 void ChartWindow::deliver(std::shared_ptr<Chart> chart, const QString& failure) {
   if (worker_.joinable()) worker_.join();
   failure_ = failure;
+  progressBar_->hide();
+  cancel_->hide();
   if (chart) {
     chart_ = std::move(chart);
     chart_->attach(view()->renderWindow());

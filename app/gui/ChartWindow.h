@@ -13,6 +13,9 @@
 #include <thread>
 #include <vector>
 
+class QProgressBar;
+class QPushButton;
+
 namespace rv {
 
 class ChartWindow : public FilterWindow {
@@ -23,6 +26,9 @@ public:
               QWidget* parent = nullptr);
   ~ChartWindow() override;
   bool ready() const { return chart_ != nullptr; }
+  /// Stops the computation (Cancel): what was computed so far is drawn where the view can (a family, a
+  /// plot), else the window says it stopped.
+  void cancel();
   /// Why the computation failed (empty while running or when it succeeded).
   const QString& failure() const { return failure_; }
   const std::string& viewName() const { return viewName_; }
@@ -50,7 +56,10 @@ private:
   std::vector<int> markSeries_;
   std::shared_ptr<Chart> chart_;
   QString failure_;
-  std::atomic<bool> stop_{false};
+  std::atomic<bool> stop_{false}, closing_{false};
+  std::atomic<double> progress_{0};
+  QProgressBar* progressBar_;
+  QPushButton* cancel_;
   std::thread worker_;
 };
 

@@ -323,6 +323,7 @@ void MainWindow::restart() {
     p->clear();
   error_.clear();
   requested_ = shownTime_ = 0;
+  lastStepEnd_.reset(), lastStep_ = 0;
   stream_ = std::make_unique<TrajectoryStream>(scene_->startIntegrator());
   clock_.restart();
   showStatus();
@@ -354,6 +355,8 @@ void MainWindow::tick() {
   if (!stream_->take(batch_)) return;
   const std::vector<PlotWindow*> plots = map_->plotWindows(); // drawn by the map's drain
   for (std::size_t i = 0; i < batch_.states.size(); ++i) {
+    if (lastStepEnd_ && batch_.times[i] != *lastStepEnd_) lastStep_ = batch_.times[i] - *lastStepEnd_;
+    lastStepEnd_ = batch_.times[i];
     visual_->advance(batch_.times[i], batch_.states[i]);
     if (apex_) apex_->advance(batch_.times[i], batch_.states[i]);
     for (PlotWindow* p : plots)
@@ -381,6 +384,7 @@ void MainWindow::showStatus() {
                   .arg(playing_ ? "playing" : "paused");
   if (visual_ && visual_->energyError()) s += QString("   dE/E = %1").arg(*visual_->energyError(), 0, 'e', 2);
   if (!method_.isEmpty()) s += "   " + method_;
+  if (lastStep_ > 0) s += QString("   h = %1").arg(lastStep_, 0, 'g', 4); // the step taken (adaptive methods)
   if (!error_.isEmpty()) s += "   stopped: " + error_;
   status_->setText(s);
 }

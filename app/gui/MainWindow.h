@@ -13,6 +13,7 @@
 #include <QPointer>
 #include <QTimer>
 #include <memory>
+#include <optional>
 
 class QAction;
 class QCloseEvent;
@@ -143,6 +144,8 @@ private:
   std::unique_ptr<TrajectoryStream> stream_;
   TrajectoryStream::Batch batch_;
   double requested_ = 0, shownTime_ = 0;
+  std::optional<double> lastStepEnd_; ///< the time at the end of the last step taken
+  double lastStep_ = 0;
   bool playing_ = true;
   QString error_;
 };

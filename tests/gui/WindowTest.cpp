@@ -181,6 +181,26 @@ private slots:
     chart->close();
   }
 
+  // long work shows progress and can be cancelled: a Lyapunov run of 10^7 time units stops at once and
+  // draws what it has
+  void chartWindowCancels() {
+    nlohmann::json doc = loadScene(defaultScenePath("henon_heiles")).document;
+    doc["lyapunov"] = {{"time", 1e7}};
+    QVERIFY(window_->runDocument(doc));
+    ChartWindow* chart = window_->openChart("lyapunov");
+    QSignalSpy finished(chart, &ChartWindow::finished);
+    QTest::qWait(800);
+    QVERIFY(!chart->ready());
+    QElapsedTimer clock;
+    clock.start();
+    chart->cancel();
+    QVERIFY(finished.wait(5000));
+    QVERIFY2(clock.elapsed() < 2000, "stops promptly");
+    QVERIFY2(chart->ready() || chart->failure() == "stopped", qPrintable(chart->failure()));
+    chart->close();
+    QVERIFY(window_->openScene(QString::fromStdString(defaultScenePath("chaplygin_ball")))); // for the next
+  }
+
   void apexWindowShowsTheApexes() {
     QWidget* w = window_->openApexWindow();
     QVERIFY(w && window_->apexVisual());
