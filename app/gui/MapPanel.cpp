@@ -445,11 +445,18 @@ bool MapPanel::eventFilter(QObject* watched, QEvent* event) {
 
 void MapPanel::highlightJob(int id) {
   if (!chart_) return;
-  int plot = -1;
-  for (const auto& s : series_)
-    if (s.job->id() == id) plot = s.plot;
+  int plot = -1, index = -1;
+  for (std::size_t k = 0; k < series_.size(); ++k)
+    if (series_[k].job->id() == id) plot = series_[k].plot, index = static_cast<int>(k);
   chart_->select(plot);
   view_->update();
+  // every window that draws it (manual §2.1)
+  for (PlotWindow* p : plotWindows())
+    p->highlight(id);
+  if (map3D_) {
+    map3D_->select(index); // its series follow the trajectories' order
+    if (map3DWindow_->isVisible()) map3DView_->update();
+  }
 }
 
 std::pair<long, long> MapPanel::shownSpan(const Series& s) {

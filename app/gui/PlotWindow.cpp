@@ -87,6 +87,12 @@ void PlotWindow::setColor(int id, const Rgb& colour) {
   }
 }
 
+void PlotWindow::highlight(int id) {
+  const auto it = sources_.find(id);
+  chart_->select(it == sources_.end() ? -1 : it->second.series);
+  view()->update();
+}
+
 void PlotWindow::flush() {
   bool changed = false;
   std::vector<std::vector<double>> batch;

@@ -98,6 +98,9 @@ void ToolManager::refresh() {
     it->setText(2, status);
     it->setText(3, QString("%1%").arg(static_cast<int>(100 * j->progress())));
     it->setText(4, QString::fromStdString(j->task().describe())); // the tasks describe their fixed settings
+    const QBrush ink = j->running() ? QBrush(QColor(200, 20, 20)) : QBrush(); // manual §2.1: running in red
+    for (int c = 0; c < tree_->columnCount(); ++c)
+      it->setForeground(c, ink);
   }
   if (keep >= 0) select(keep);
 }

@@ -55,6 +55,11 @@ void Chart3D::setColor(int index, const Rgb& color) {
   dirty_ = true;
 }
 
+void Chart3D::select(int index) {
+  selected_ = index;
+  dirty_ = true;
+}
+
 void Chart3D::attach(vtkRenderWindow* window) {
   rebuild();
   const auto& a = boxSize_;
@@ -97,7 +102,8 @@ void Chart3D::rebuild() {
   for (int i = 0; i < 3; ++i)
     scale[i] = 1.0 / (equal_ ? longest : b[2 * i + 1] - b[2 * i]);
   renderer_->RemoveAllViewProps();
-  for (const auto& s : series_) {
+  for (std::size_t i = 0; i < series_.size(); ++i) {
+    const Series& s = series_[i];
     vtkNew<vtkPoints> pts;
     vtkNew<vtkCellArray> verts;
     for (std::size_t k = 0; k < s.x.size(); ++k) {
@@ -113,7 +119,7 @@ void Chart3D::rebuild() {
     vtkNew<vtkActor> actor;
     actor->SetMapper(mapper);
     actor->GetProperty()->SetColor(s.color[0], s.color[1], s.color[2]);
-    actor->GetProperty()->SetPointSize(s.size);
+    actor->GetProperty()->SetPointSize(static_cast<int>(i) == selected_ ? 2 * s.size : s.size);
     actor->GetProperty()->LightingOff();
     renderer_->AddActor(actor);
   }

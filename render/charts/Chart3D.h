@@ -24,6 +24,8 @@ public:
   /// before the next frame).
   void setSeries(int index, const std::vector<double>& x, const std::vector<double>& y,
                  const std::vector<double>& z);
+  /// Draws series `index` emphasised, its points twice as big (-1: none).
+  void select(int index);
   /// Recolours series `index`.
   void setColor(int index, const Rgb& color);
   /// Fixes the box (otherwise it is the data's bounds); nothing in an entry keeps the data's value there.
@@ -47,7 +49,8 @@ private:
   std::array<std::optional<double>, 6> range_;
   std::array<double, 6> bounds_{};
   bool equal_ = false;
-  bool dirty_ = false; ///< series changed since the actors were built
+  bool dirty_ = false;
+  int selected_ = -1; ///< series changed since the actors were built
   std::array<double, 3> boxSize_{1, 1, 1};
   void rebuild();
   vtkSmartPointer<vtkRenderer> renderer_;

@@ -55,6 +55,13 @@ void PlotChart::setColor(int index, const Rgb& color) {
     plane_->setColor(index, color);
 }
 
+void PlotChart::select(int index) {
+  if (space_)
+    space_->select(index);
+  else
+    plane_->select(index);
+}
+
 void PlotChart::attach(vtkRenderWindow* window) {
   if (space_)
     space_->attach(window);

@@ -25,6 +25,8 @@ public:
   /// Replaces the points of series `index`: values[i] along axis i (the third ignored in 2D).
   void setSeries(int index, const std::array<std::vector<double>, 3>& values);
   void setColor(int index, const Rgb& color);
+  /// Draws series `index` emphasised (-1: none).
+  void select(int index);
   void attach(vtkRenderWindow* window) override;
   void writeCsv(std::ostream& out) const override;
 

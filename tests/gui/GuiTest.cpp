@@ -118,8 +118,11 @@ private slots:
     manager.stopSelected();
     QCOMPARE(lyapunov.status(), Job::Status::Stopped);
     QCOMPARE(manager.tree()->topLevelItem(0)->child(0)->text(2), QString("stopped"));
+    QCOMPARE(manager.tree()->topLevelItem(0)->child(0)->foreground(1).style(), Qt::NoBrush); // default ink
     manager.restartSelected();
     QVERIFY(lyapunov.running());
+    manager.refresh();
+    QCOMPARE(manager.tree()->topLevelItem(0)->child(0)->foreground(1).color(), QColor(200, 20, 20)); // in red
 
     manager.select(trajectory.id());
     manager.deleteSelected(); // and the Lyapunov job with it

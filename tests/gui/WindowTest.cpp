@@ -216,14 +216,33 @@ private slots:
   // the manual's workflow: a problem, a click on the map starts a trajectory whose points arrive; stop it,
   // edit the energy in the control panel, Edit + Continue: it goes on from its stop point at the new energy;
   // delete it
+  void mapWorkflowStopEditContinueDelete_data() {
+    QTest::addColumn<QString>("problem");
+    QTest::newRow("ellipsoid_on_plane") << "ellipsoid_on_plane"; // the case: a 3D map
+    QTest::newRow("henon_heiles") << "henon_heiles";
+  }
+
   void mapWorkflowStopEditContinueDelete() {
-    QVERIFY(window_->openScene(QString::fromStdString(defaultScenePath("henon_heiles"))));
-    QTest::qWait(300);
+    QFETCH(QString, problem);
+    nlohmann::json doc = loadScene(defaultScenePath(problem.toStdString())).document;
+    if (problem == "ellipsoid_on_plane") {
+      // map points completed at E = 5, where all of (l, L/G) at H/G = 0.2 is allowed (a click anywhere works)
+      doc["parameters"]["energy"] = 5.0;
+      doc["initial"] = {{"map", {0.5, 0.3, 0.2}}};
+    }
+    QVERIFY(window_->runDocument(doc));
     MapPanel* map = window_->mapPanel();
+    // Tools tab: Create a Poincare map (a trajectory from the scene's initial point)
+    const int created = map->trajectories();
+    window_->controlPanel()->selectTool("poincare");
+    QTest::mouseClick(window_->controlPanel()->findChild<QPushButton*>("create"), Qt::LeftButton);
+    QCOMPARE(map->trajectories(), created + 1);
+    QTRY_VERIFY_WITH_TIMEOUT(map->points() > 20, 20000); // the chart's ranges follow the points
+    QTest::qWait(300);
     auto* mapView = map->findChild<QtVtkWidget*>();
     QVERIFY(mapView);
     const int before = map->trajectories();
-    // Ctrl+click in the middle of the map: (y, py) near (0, 0), inside the energy's region at E = 1/12
+    // Ctrl+click in the middle of the map (Henon-Heiles: (y, py) near (0, 0), inside the region at E = 1/12)
     QTest::mouseClick(mapView, Qt::LeftButton, Qt::ControlModifier, mapView->rect().center());
     QTRY_COMPARE_WITH_TIMEOUT(map->trajectories(), before + 1, 5000);
     Job* job = map->jobs().jobs().back();
@@ -254,7 +273,7 @@ private slots:
         std::abs(e - newEnergy) < 1e-9,
         qPrintable(
             QString("energy %1, expected %2 (was %3)").arg(e, 0, 'g', 17).arg(newEnergy).arg(oldEnergy)));
-    keep(window_->grab().toImage(), "window_main_henon_heiles.png");
+    keep(window_->grab().toImage(), "window_main_" + problem + ".png");
     // colour of output and Set range act on what the map draws of this trajectory
     const auto green = [](const QImage& img) { // pure green: no series has it by default
       long n = 0;
@@ -360,6 +379,20 @@ private slots:
       for (int x = 0; x < img.width(); x += 2)
         drawn += qGray(img.pixel(x, y)) < 200;
     QVERIFY2(drawn > 100, "the 3D plot draws the points");
+    // selecting a trajectory in the tool manager emphasises it in the filters too (its points twice as big)
+    const auto ink = [](const QImage& im) {
+      long n = 0;
+      for (int y = 0; y < im.height(); ++y)
+        for (int x = 0; x < im.width(); ++x)
+          n += qGray(im.pixel(x, y)) < 200;
+      return n;
+    };
+    const long plain = ink(plot2->view()->grabFramebuffer());
+    window_->toolManager()->refresh();
+    window_->toolManager()->select(ids.front());
+    QTest::qWait(100);
+    const long emphasised = ink(plot2->view()->grabFramebuffer());
+    QVERIFY2(emphasised > plain * 1.2, qPrintable(QString("%1 -> %2 dark pixels").arg(plain).arg(emphasised)));
     map->removeJob(*map->jobs().jobs().back()); // its series goes from the filters
     QCOMPARE(plot2->points(ids.back()), 0L);
     QCOMPARE(plot2->points(ids.front()), 300L);
