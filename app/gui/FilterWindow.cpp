@@ -41,13 +41,11 @@ void FilterWindow::setStatus(const QString& text) {
   status_->setText(text);
 }
 
-bool FilterWindow::saveCsv(const QString& path) {
-  const Chart* c = chart();
-  if (!c) return false;
+bool saveChartCsv(const Chart& chart, const QString& path) {
   try {
     AtomicFile file(path.toStdString(), "csv");
     std::ofstream out(file.tempPath());
-    c->writeCsv(out);
+    chart.writeCsv(out);
     out.close();
     if (!out) return false;
     file.commit();
@@ -55,6 +53,21 @@ bool FilterWindow::saveCsv(const QString& path) {
   } catch (const std::exception&) {
     return false;
   }
+}
+
+void exportChartDialog(QWidget* parent, QtVtkWidget* view, const Chart& chart, const QString& name,
+                       const std::function<void(const QString&)>& failed) {
+  const QString path = QFileDialog::getSaveFileName(parent, "Export chart", name + ".png",
+                                                    "PNG picture (*.png);;CSV data (*.csv)");
+  if (path.isEmpty()) return;
+  const bool ok = path.endsWith(".csv", Qt::CaseInsensitive) ? saveChartCsv(chart, path)
+                                                               : view->grabFramebuffer().save(path, "PNG");
+  if (!ok) failed("cannot write " + path);
+}
+
+bool FilterWindow::saveCsv(const QString& path) {
+  const Chart* c = chart();
+  return c && saveChartCsv(*c, path);
 }
 
 bool FilterWindow::savePng(const QString& path) {

@@ -5,6 +5,7 @@
 #include "render/charts/Chart.h"
 
 #include <QWidget>
+#include <functional>
 
 class QLabel;
 class QHBoxLayout;
@@ -12,6 +13,13 @@ class QHBoxLayout;
 namespace rv {
 
 class QtVtkWidget;
+
+/// Writes a chart's data as CSV through a temporary name; false when it cannot.
+bool saveChartCsv(const Chart& chart, const QString& path);
+/// Asks for a file name and saves the view as PNG or the chart as CSV (by the name's extension); says why it
+/// could not in `failed`.
+void exportChartDialog(QWidget* parent, QtVtkWidget* view, const Chart& chart, const QString& name,
+                       const std::function<void(const QString&)>& failed);
 
 class FilterWindow : public QWidget {
   Q_OBJECT

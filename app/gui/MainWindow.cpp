@@ -3,6 +3,7 @@
 #include "app/gui/ChartWindow.h"
 #include "app/gui/ControlPanel.h"
 #include "app/gui/MapPanel.h"
+#include "app/gui/FilterWindow.h"
 #include "app/gui/MultipliersWindow.h"
 #include "app/gui/PlotFilterDialog.h"
 #include "app/gui/PlotWindow.h"
@@ -163,6 +164,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   auto* file = menuBar()->addMenu("&File");
   file->addAction("Open scene…", this, &MainWindow::openDialog);
   file->addAction("Save scene as…", this, &MainWindow::saveDialog)->setShortcut(QKeySequence::SaveAs);
+  file->addAction("Export map…", this, [this] {
+    if (scene_)
+      exportChartDialog(this, map_->view(), map_->chart(), "map",
+                        [this](const QString& m) { statusBar()->showMessage(m, 8000); });
+  })->setToolTip("the Poincaré map window as a PNG picture or its points as CSV");
   recentMenu_ = file->addMenu("Recent scenes");
   fillRecentMenu();
   file->addSeparator();

@@ -96,6 +96,8 @@ public:
   /// Jobs of other tools drawn on the map (separatrix branches, continuations).
   int toolJobs() const { return static_cast<int>(tools_.size()); }
   QtVtkWidget* view() const { return view_; }
+  /// The map chart (to export it).
+  const PoincareChart& chart() const { return *chart_; }
 
 signals:
   void message(const QString& text);

@@ -7,6 +7,7 @@
 #include "app/gui/MainWindow.h"
 #include "app/gui/MapPanel.h"
 #include "app/gui/ParameterForm.h"
+#include "app/gui/FilterWindow.h"
 #include "app/gui/MultipliersWindow.h"
 #include "app/gui/PlotWindow.h"
 #include "app/gui/QtVtkWidget.h"
@@ -292,6 +293,14 @@ private slots:
     QCOMPARE(map->shownPoints(job->id()), 6L);
     tools->rangeSelected(3, 0);
     QVERIFY(map->shownPoints(job->id()) > 6);
+    // File > Export map: its points as CSV (a header, a row per point shown)
+    const QString csv = dir_.filePath("map_" + problem + ".csv");
+    QVERIFY(saveChartCsv(map->chart(), csv));
+    QFile f(csv);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    const QStringList rows = QString::fromUtf8(f.readAll()).split('\n', Qt::SkipEmptyParts);
+    QVERIFY(rows.first().startsWith("series,"));
+    QVERIFY2(rows.size() > 20, qPrintable(QString("%1 rows").arg(rows.size())));
     tools->deleteSelected();
     QCOMPARE(map->trajectories(), before);
   }
