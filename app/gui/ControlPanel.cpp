@@ -1,8 +1,10 @@
 #include "app/gui/ControlPanel.h"
 
 #include "app/gui/ParameterForm.h"
+#include "dynamics/core/ModelRegistry.h"
 #include "dynamics/tools/ToolSettings.h"
 
+#include <QComboBox>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QTabWidget>
@@ -93,25 +95,80 @@ void ControlPanel::setScene(const Scene& scene) {
     if (w != toolsTab_) w->deleteLater();
   }
   forms_.clear();
+  // a tab: an optional chooser above the form of a parameter table
   const auto add = [&](const std::string& key, const QString& title, const ParameterTable& table,
-                       const ParameterValues& values) {
+                       const ParameterValues& values, QComboBox* chooser = nullptr) {
     auto* form = new ParameterForm(table);
     form->setValues(values);
     auto* scroll = new QScrollArea;
     scroll->setWidget(form);
     scroll->setWidgetResizable(true);
-    tabs_->addTab(scroll, title);
+    QWidget* tab = scroll;
+    if (chooser) {
+      tab = new QWidget;
+      auto* l = new QVBoxLayout(tab);
+      l->setContentsMargins(0, 4, 0, 0);
+      l->addWidget(chooser);
+      l->addWidget(scroll, 1);
+    }
+    tabs_->addTab(tab, title);
     forms_.emplace_back(key, form);
+    return scroll;
   };
-  add("problem", "Problem", scene.model->info().parameters, scene.model->parameters());
-  add("method", "Method", *scene.integratorEntry->parameters, *scene.integratorParameters);
+  auto* problems = new QComboBox;
+  problems->setObjectName("problem_choice");
+  for (const auto& e : ModelRegistry::builtin().entries()) {
+    problems->addItem(QString::fromStdString(e.info->id));
+    problems->setItemData(problems->count() - 1, QString::fromStdString(e.info->title), Qt::ToolTipRole);
+  }
+  problems->setCurrentText(QString::fromStdString(scene.model->info().id));
+  problems->setToolTip("the problem: choosing another opens its default scene");
+  connect(problems, &QComboBox::activated, this, [this, problems](int i) {
+    const std::string id = problems->itemText(i).toStdString();
+    if (scene_ && id != scene_->model->info().id) emit problemChosen(id);
+  });
+  add("problem", "Problem", scene.model->info().parameters, scene.model->parameters(), problems);
+  methodBox_ = new QComboBox;
+  methodBox_->setObjectName("method_choice");
+  for (const auto& e : IntegratorRegistry::builtin().entries()) {
+    methodBox_->addItem(QString::fromStdString(e.id));
+    methodBox_->setItemData(methodBox_->count() - 1, QString::fromStdString(e.title + " (" + e.reference + ")"),
+                            Qt::ToolTipRole);
+  }
+  method_ = scene.integratorEntry->id;
+  methodBox_->setCurrentText(QString::fromStdString(method_));
+  methodBox_->setToolTip("the integration method (manual §2.2); Apply runs the scene with it");
+  connect(methodBox_, &QComboBox::activated, this,
+          [this](int i) { chooseMethod(methodBox_->itemText(i).toStdString()); });
+  methodScroll_ =
+      add("method", "Method", *scene.integratorEntry->parameters, *scene.integratorParameters, methodBox_);
   tabs_->addTab(toolsTab_, "Tools");
   for (const auto& t : toolSections())
     add(t.key, QString::fromStdString(t.title), *t.table, scene.tool(t.key));
 }
 
+bool ControlPanel::chooseMethod(const std::string& id) {
+  const IntegratorEntry* entry = nullptr;
+  for (const auto& e : IntegratorRegistry::builtin().entries())
+    if (e.id == id) entry = &e;
+  if (!entry || !scene_) return false;
+  if (id == method_) return true;
+  method_ = id;
+  methodBox_->setCurrentText(QString::fromStdString(id));
+  // the scene's own values for its method, the table's defaults for another
+  auto* form = new ParameterForm(*entry->parameters);
+  form->setValues(id == scene_->integratorEntry->id ? *scene_->integratorParameters
+                                                    : ParameterValues(*entry->parameters));
+  methodScroll_->setWidget(form); // deletes the old form
+  for (auto& [key, f] : forms_)
+    if (key == "method") f = form;
+  return true;
+}
+
 nlohmann::json ControlPanel::editedDocument() const {
   nlohmann::json doc = scene_->document;
+  if (method_ != scene_->integratorEntry->id) // another method: the old one's settings do not apply
+    doc["integrator"] = {{"method", method_}};
   for (const auto& [key, form] : forms_) {
     const ParameterValues v = form->values();
     const std::string section = key == "problem" ? "parameters" : key == "method" ? "integrator" : key;

@@ -1,6 +1,7 @@
-// ControlPanel.h -- the control panel (manual §2.1): tabs generated from the parameter tables of the problem,
-// the integration method and the fixed-point family of tools; Apply re-runs the scene with the edited values
-// (only the fields the user touched are written into the scene document).
+// ControlPanel.h -- the control panel (manual §2.1): tabs generated from the parameter tables of the problem
+// (with the choice of problem), the integration method (with the choice of method) and the fixed-point family
+// of tools; Apply re-runs the scene with the edited values (only the fields the user touched are written into
+// the scene document; a newly chosen method replaces the scene's integrator section).
 #pragma once
 #include "scenes/Scene.h"
 
@@ -8,6 +9,8 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
+class QComboBox;
+class QScrollArea;
 class QTabWidget;
 
 namespace rv {
@@ -33,18 +36,28 @@ public:
   QTreeWidget* toolTree() const { return toolTree_; }
   /// Selects a tool of the tree by id (tests).
   void selectTool(const std::string& id);
+  /// Chooses the integration method: the Method tab shows its parameters (their defaults) and Apply runs
+  /// the scene with it. False for an unknown id.
+  bool chooseMethod(const std::string& id);
+  /// The method Apply uses.
+  const std::string& method() const { return method_; }
 
 signals:
   /// Apply was pressed: the document to run.
   void apply(const nlohmann::json& document);
   /// Create was pressed on a tool of the tree.
   void create(const std::string& tool);
+  /// Another problem was chosen in the Problem tab (its default scene should open).
+  void problemChosen(const std::string& problem);
 
 private:
   QTabWidget* tabs_;
   QTreeWidget* toolTree_;
   QWidget* toolsTab_;
   const Scene* scene_ = nullptr;
+  std::string method_;
+  QComboBox* methodBox_ = nullptr;
+  QScrollArea* methodScroll_ = nullptr;
   std::vector<std::pair<std::string, ParameterForm*>> forms_;
 };
 

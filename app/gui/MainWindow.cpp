@@ -90,6 +90,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   resizeDocks({toolsDock}, {150}, Qt::Vertical); // the 3D view keeps most of the height
   connect(control_, &ControlPanel::apply, this, [this](const nlohmann::json& doc) { runDocument(doc); });
   connect(control_, &ControlPanel::create, this, [this](const std::string& id) { createTool(id); });
+  connect(control_, &ControlPanel::problemChosen, this, [this](const std::string& id) {
+    openScene(QString::fromStdString(defaultScenePath(id)));
+  });
   settings_ = new VisualizerSettings(this);
   auto* settingsDock = new QDockWidget("Visualizer settings", this);
   settingsDock->setObjectName("settings");

@@ -88,6 +88,36 @@ private slots:
     QCOMPARE(edited.model->integrals(edited.initialState.data())[0], 0.75);
     QCOMPARE(edited.tool("fixedpoint").choice("method"), std::string("gradient"));
   }
+
+  // manual §2.2 / §2.1: the Method tab chooses the integrator (its own parameters shown), the Problem tab the
+  // problem (its default scene opens)
+  void methodAndProblemAreChosenInTheirTabs() {
+    const Scene scene = loadScene(defaultScenePath("chaplygin_ball")); // rk4
+    ControlPanel panel;
+    panel.setScene(scene);
+    auto* methods = panel.findChild<QComboBox*>("method_choice");
+    QVERIFY(methods && methods->count() >= 3);
+    QCOMPARE(methods->currentText(), QString("rk4"));
+    QVERIFY(panel.chooseMethod("everhart"));
+    QVERIFY(panel.form("method")->editor("order")); // Everhart's own parameters
+    qobject_cast<QDoubleSpinBox*>(panel.form("method")->editor("step"))->setValue(0.02);
+    const auto doc = panel.editedDocument();
+    QCOMPARE(doc["integrator"]["method"].get<std::string>(), std::string("everhart"));
+    QCOMPARE(doc["integrator"]["step"].get<double>(), 0.02);
+    const Scene edited = sceneFromJson(doc, "edited");
+    QCOMPARE(edited.integratorEntry->id, std::string("everhart"));
+    QCOMPARE((*edited.integratorParameters)["step"], 0.02);
+    QVERIFY(!panel.chooseMethod("no_such_method"));
+    auto* problems = panel.findChild<QComboBox*>("problem_choice");
+    QVERIFY(problems);
+    QSignalSpy chosen(&panel, &ControlPanel::problemChosen);
+    const int lorenz = problems->findText("lorenz");
+    QVERIFY(lorenz >= 0);
+    problems->setCurrentIndex(lorenz);
+    emit problems->activated(lorenz); // as a user's pick does
+    QCOMPARE(chosen.count(), 1);
+    QCOMPARE(chosen.at(0).at(0).value<std::string>(), std::string("lorenz"));
+  }
 };
 
 class ToolManagerTest : public QObject {
