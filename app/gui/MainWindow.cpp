@@ -298,7 +298,8 @@ void MainWindow::useScene(std::unique_ptr<Scene> scene, const QString& path) {
     delete p;
   scene_ = std::move(scene);
   scenePath_ = path;
-  method_ = QString::fromStdString(scene_->runSpec().describe()).section(' ', 0, 0); // e.g. rk4(step=0.001)
+  const QString run = QString::fromStdString(scene_->runSpec().describe()); // "rk4(step=0.001) problem(...)"
+  method_ = run.left(run.indexOf(')') + 1);                                  // the method and its settings
   speedBox_->setValue(scene_->view.speed);
   setWindowTitle(QString("rollviz — %1 (%2)")
                      .arg(QFileInfo(path).fileName(), QString::fromStdString(scene_->model->info().id)));
