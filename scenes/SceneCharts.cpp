@@ -71,7 +71,7 @@ std::unique_ptr<PoincareChart> gridChart(const Scene& scene, MapGrid::Kind kind,
 } // namespace
 
 std::unique_ptr<Chart> sceneChart(const Scene& scene, const std::string& view, const ToolControl& control,
-                                  long points) {
+                                  long points, const std::string& diagram) {
   std::unique_ptr<PoincareChart> chart;
   if (view == "map3d") {
     // a 3D map's three coordinates; a 2D map's points on the energy level, in the first three state variables
@@ -117,9 +117,8 @@ std::unique_ptr<Chart> sceneChart(const Scene& scene, const std::string& view, c
     drawMultipliers(*chart, multiplierPath(SceneMap(copyOf(scene)), control));
   } else if (view == "bifurcation") {
     const auto diagrams = scene.model->diagrams();
-    if (diagrams.empty())
-      throw InputError("--view bifurcation: " + scene.model->info().id + " has no bifurcation diagrams");
-    const Diagram& d = diagrams.front();
+    const Diagram& d = findDiagram(diagrams, diagram, diagram.empty() ? "--view bifurcation" : "--diagram",
+                                   scene.model->info().id);
     chart = std::make_unique<PoincareChart>(d.axes[0], d.axes[1]);
     drawDiagram(*chart, d, {d.place(scene.initialState.data())});
   } else if (view == "continuation") {

@@ -473,17 +473,7 @@ Command addDiagramCommand(CLI::App& app) {
   return {cmd, [scene, id, branch, output, range, json] {
             const Scene sc = scene->load();
             const std::vector<Diagram> diagrams = sc.model->diagrams();
-            if (diagrams.empty()) throw InputError(sc.model->info().id + " has no bifurcation diagrams");
-            const Diagram* d = &diagrams.front();
-            if (!id->empty()) {
-              d = nullptr;
-              std::string known;
-              for (const auto& x : diagrams) {
-                if (x.id == *id) d = &x;
-                known += " " + x.id;
-              }
-              if (!d) throw InputError("--diagram " + *id + ": unknown (known:" + known + ")");
-            }
+            const Diagram* d = &findDiagram(diagrams, *id, "--diagram", sc.model->info().id);
             const DiagramPoint state = d->place(sc.initialState.data());
             if (*json) {
               nlohmann::json b = nlohmann::json::array();

@@ -16,8 +16,10 @@
 namespace rv {
 
 ChartWindow::ChartWindow(const nlohmann::json& document, const std::string& source, const std::string& view,
-                         QWidget* parent)
-    : FilterWindow(QString::fromStdString(view), QString::fromStdString(view), parent), viewName_(view) {
+                         QWidget* parent, const std::string& diagram)
+    : FilterWindow(QString::fromStdString(diagram.empty() ? view : view + " " + diagram),
+                   QString::fromStdString(view), parent),
+      viewName_(view), diagram_(diagram) {
   setStatus("computing…");
   progressBar_ = new QProgressBar(this);
   progressBar_->setRange(0, 1000);
@@ -33,7 +35,7 @@ ChartWindow::ChartWindow(const nlohmann::json& document, const std::string& sour
     progressBar_->setValue(static_cast<int>(1000 * progress_.load()));
   });
   poll->start(100);
-  worker_ = std::thread([this, document, source, view] {
+  worker_ = std::thread([this, document, source, view, diagram] {
     std::unique_ptr<Chart> chart;
     QString failure;
     try {
@@ -41,7 +43,7 @@ ChartWindow::ChartWindow(const nlohmann::json& document, const std::string& sour
       ToolControl control;
       control.stopRequested = [this] { return stop_.load(); };
       control.progress = [this](double f) { progress_.store(f); };
-      chart = sceneChart(scene, view, control);
+      chart = sceneChart(scene, view, control, 0, diagram);
     } catch (const Stopped&) {
       failure = "stopped";
     } catch (const std::exception& e) {

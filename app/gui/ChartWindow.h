@@ -21,9 +21,10 @@ namespace rv {
 class ChartWindow : public FilterWindow {
   Q_OBJECT
 public:
-  /// Starts computing `view` for the scene document (`source` names it in messages).
+  /// Starts computing `view` for the scene document (`source` names it in messages); `diagram` picks the
+  /// bifurcation view's diagram (empty: the problem's first).
   ChartWindow(const nlohmann::json& document, const std::string& source, const std::string& view,
-              QWidget* parent = nullptr);
+              QWidget* parent = nullptr, const std::string& diagram = "");
   ~ChartWindow() override;
   bool ready() const { return chart_ != nullptr; }
   /// Stops the computation (Cancel): what was computed so far is drawn where the view can (a family, a
@@ -32,11 +33,14 @@ public:
   /// Why the computation failed (empty while running or when it succeeded).
   const QString& failure() const { return failure_; }
   const std::string& viewName() const { return viewName_; }
+  /// The bifurcation view's diagram id (empty: the problem's first).
+  const std::string& diagram() const { return diagram_; }
   /// A marked point over the chart: manual §2.4.4, each trajectory of the map is a point on the plane of the
   /// bifurcation diagram.
   struct Mark {
     double x, y;
     Rgb colour;
+    bool operator==(const Mark&) const = default;
   };
   /// Draws these marks (replacing the last ones; kept until the chart is ready).
   void setMarks(const std::vector<Mark>& marks);
@@ -51,7 +55,7 @@ protected:
 private:
   void deliver(std::shared_ptr<Chart> chart, const QString& failure);
   void drawMarks();
-  std::string viewName_;
+  std::string viewName_, diagram_;
   std::vector<Mark> marks_;
   std::vector<int> markSeries_;
   std::shared_ptr<Chart> chart_;

@@ -27,6 +27,7 @@
 #include <QDropEvent>
 #include <QFile>
 #include <QFileDialog>
+#include <QInputDialog>
 #include <QFileInfo>
 #include <QLabel>
 #include <QMenuBar>
@@ -185,6 +186,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   windows->addAction("Multipliers (live)", this, [this] { openMultipliersWindow(); })
       ->setToolTip("the multipliers of running continuations and bifurcation trees on the complex plane "
                    "(manual 2.4.3)");
+  windows->addAction("Bifurcation diagram…", this, [this] { diagramDialog(); })
+      ->setToolTip("a bifurcation diagram of the problem on the plane of first integrals, with every trajectory "
+                   "of the map as a point (manual 2.4.4)");
   windows->addAction("Map3D (live)", map_, [this] { map_->openMap3D(); })
       ->setToolTip("a 3D map in three dimensions, beside its projection in the map window");
   windows->addAction("Apex motion", this, [this] { openApexWindow(); })
@@ -505,10 +509,28 @@ void MainWindow::createTool(const std::string& id) {
     openChart(id == "diagram" ? "bifurcation" : id);
 }
 
-ChartWindow* MainWindow::openChart(const std::string& view) {
+void MainWindow::diagramDialog() {
+  if (!scene_) return;
+  const auto diagrams = scene_->model->diagrams();
+  if (diagrams.empty()) {
+    statusBar()->showMessage(QString::fromStdString(scene_->model->info().id + " has no bifurcation diagrams"),
+                             8000);
+    return;
+  }
+  QStringList items;
+  for (const auto& d : diagrams)
+    items << QString::fromStdString(d.id + ": " + d.title);
+  bool ok = true;
+  const QString chosen = diagrams.size() == 1 ? items.front()
+                                              : QInputDialog::getItem(this, "Bifurcation diagram",
+                                                                      "Diagram name", items, 0, false, &ok);
+  if (ok) openChart("bifurcation", chosen.section(':', 0, 0).toStdString());
+}
+
+ChartWindow* MainWindow::openChart(const std::string& view, const std::string& diagram) {
   if (!scene_) return nullptr;
   // with the control panel's values as they stand (Apply not needed for a chart)
-  auto* w = new ChartWindow(control_->editedDocument(), scene_->source, view, this);
+  auto* w = new ChartWindow(control_->editedDocument(), scene_->source, view, this, diagram);
   w->setAttribute(Qt::WA_DeleteOnClose);
   w->show();
   if (view == "bifurcation") map_->addDiagramWindow(w); // the map's trajectories are points on it

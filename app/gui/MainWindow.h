@@ -61,8 +61,11 @@ public:
   /// Stops a recording: the frames so far become a valid, shorter video.
   void stopRecording();
   bool recording() const { return recorder_ != nullptr; }
-  /// Opens a filter window with a chart view of the scene (computed on a worker thread).
-  ChartWindow* openChart(const std::string& view);
+  /// Opens a filter window with a chart view of the scene (computed on a worker thread); `diagram` picks the
+  /// bifurcation view's diagram (empty: the problem's first).
+  ChartWindow* openChart(const std::string& view, const std::string& diagram = "");
+  /// Asks which of the problem's bifurcation diagrams to open (manual §2.4.4: Diagram name) and opens it.
+  void diagramDialog();
   /// Create in the control panel's Tools tab: starts tool `id` on the map or opens its chart window.
   void createTool(const std::string& id);
   /// Opens a live 2D or 3D plot filter (by the number of axes of `plot`) fed by the 3D view's run and by

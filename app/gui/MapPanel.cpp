@@ -267,19 +267,20 @@ void MapPanel::markDiagrams(bool force) {
   std::erase_if(diagramWindows_, [](const QPointer<ChartWindow>& w) { return w.isNull(); });
   if (diagramWindows_.empty() || !scene_) return;
   const auto diagrams = scene_->model->diagrams();
-  if (diagrams.empty()) return;
-  std::vector<std::array<double, 5>> marks;
-  for (const auto& s : series_) {
-    const DiagramPoint p = diagrams.front().place(s.task->levelState().data());
-    marks.push_back({p[0], p[1], s.colour[0], s.colour[1], s.colour[2]});
+  std::vector<std::vector<ChartWindow::Mark>> marks; // per window: its diagram's plane
+  for (auto& w : diagramWindows_) {
+    auto& m = marks.emplace_back();
+    for (const auto& d : diagrams)
+      if (d.id == w->diagram() || (w->diagram().empty() && &d == &diagrams.front()))
+        for (const auto& s : series_) {
+          const DiagramPoint p = d.place(s.task->levelState().data());
+          m.push_back({p[0], p[1], s.colour});
+        }
   }
   if (!force && marks == marked_) return;
   marked_ = marks;
-  std::vector<ChartWindow::Mark> m;
-  for (const auto& a : marks)
-    m.push_back({a[0], a[1], {a[2], a[3], a[4]}});
-  for (auto& w : diagramWindows_)
-    w->setMarks(m);
+  for (std::size_t i = 0; i < diagramWindows_.size(); ++i)
+    diagramWindows_[i]->setMarks(marks[i]);
 }
 
 std::vector<PlotWindow*> MapPanel::plotWindows() {

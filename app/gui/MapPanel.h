@@ -4,6 +4,7 @@
 // (manual §2.3.4: the search path is drawn, the point, its multipliers and type reported). The jobs run on
 // their own threads; this panel only draws.
 #pragma once
+#include "app/gui/ChartWindow.h"
 #include "dynamics/jobs/JobTree.h"
 #include "render/charts/PoincareChart.h"
 #include "scenes/Scene.h"
@@ -18,7 +19,6 @@
 namespace rv {
 
 class QtVtkWidget;
-class ChartWindow;
 class MultipliersWindow;
 class PlotWindow;
 class PoincareTask;
@@ -151,7 +151,7 @@ private:
   /// Where each trajectory lies on the scene's first bifurcation diagram; marks the diagram windows with it.
   void markDiagrams(bool force);
   std::vector<QPointer<ChartWindow>> diagramWindows_;
-  std::vector<std::array<double, 5>> marked_; ///< x, y, colour of the marks drawn
+  std::vector<std::vector<ChartWindow::Mark>> marked_; ///< the marks drawn, per window
   /// The scene's tool setup; nothing (with a message) when the scene cannot give one.
   std::unique_ptr<class SceneMap> sceneMap();
   QtVtkWidget* view_;

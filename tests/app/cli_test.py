@@ -355,6 +355,13 @@ class Cli(unittest.TestCase):
         self.assertEqual(j["axes"], ["n", "h"])
         self.assertBadInput(run("diagram", os.path.join(SRC, "scenes", "lorenz.json")), "no bifurcation diagrams")
         self.assertBadInput(run("diagram", SCENE, "--diagram", "xy"), "--diagram", "nh")
+        # the chart of another of the problem's diagrams; an unknown one names the flag and the known ones
+        png = self.path("ch.png")
+        r = run("chart", SCENE, "--view", "bifurcation", "--diagram", "ch", "-o", png, "--size", "300x300")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertTrue(os.path.getsize(png) > 1000)
+        self.assertBadInput(run("chart", SCENE, "--view", "bifurcation", "--diagram", "xy", "-o", png),
+                            "--diagram", "ch")
 
     def test_every_scene_has_a_poincare_map(self):
         # a section the motion never crosses would make `poincare` run forever: every shipped scene must return

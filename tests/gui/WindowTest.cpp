@@ -490,6 +490,14 @@ private slots:
     QVERIFY(std::abs(chart->marks()[1].y - 0.6) < 1e-9);
     QTest::qWait(200);
     keep(chart->grab().toImage(), "window_diagram_marks.png");
+    // the other diagram of the problem (Diagram name): the plane (c, h), the area constant c = 0.3 of the
+    // scene for both trajectories
+    ChartWindow* ch = window_->openChart("bifurcation", "ch");
+    QTRY_VERIFY_WITH_TIMEOUT(ch->ready(), 20000);
+    QCOMPARE(ch->marks().size(), std::size_t(2));
+    QVERIFY(std::abs(ch->marks()[0].x - 0.3) < 1e-9 && std::abs(ch->marks()[1].x - 0.3) < 1e-9);
+    QVERIFY(std::abs(ch->marks()[1].y - 0.6) < 1e-9);
+    ch->close();
     map->removeJob(*second);
     map->drain();
     QCOMPARE(chart->marks().size(), std::size_t(1));
