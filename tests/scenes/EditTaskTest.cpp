@@ -46,11 +46,12 @@ TEST(EditTask, AFixedPointSearchGoesOnWithTheNewProblem) {
   EXPECT_FALSE(search->result()) << "the old point is not the answer for the new values";
   EXPECT_EQ(search->spec().guess, sm.taskSpec().guess) << "the guess is the tool's own";
   runToEnd(job);
-  ASSERT_TRUE(search->result());
-  const auto& m = search->result()->multipliers;
+  const auto found = search->result(); // (a copy: the result is read under the task's lock)
+  ASSERT_TRUE(found);
+  const auto& m = found->multipliers;
   ASSERT_EQ(m.size(), 2u);
   EXPECT_NEAR((m[0] + m[1]).real(), 2 - 2.0, 1e-9) << "trace 2 - K at the new K";
-  EXPECT_EQ(search->result()->type, "elliptic");
+  EXPECT_EQ(found->type, "elliptic");
 }
 
 TEST(EditTask, AContinuationStartsAgainWithTheNewSettings) {
