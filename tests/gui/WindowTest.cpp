@@ -48,9 +48,26 @@ bool varied(const QImage& img) {
       colours.insert(img.pixel(x, y));
   return colours.size() > 200;
 }
-void keep(const QImage& img, const QString& name) {
+// pixels drawn darker than the charts' white background and light grid
+long inked(const QImage& img) {
+  long n = 0;
+  for (int y = 0; y < img.height(); ++y)
+    for (int x = 0; x < img.width(); ++x)
+      n += qGray(img.pixel(x, y)) < 200;
+  return n;
+}
+
+// a window's screenshot kept as a test artifact; true when it is a real picture (not one flat colour: the
+// widgets' text and the views' drawings give dozens of colours at least)
+bool keep(const QImage& img, const QString& name) {
   const QByteArray dir = qgetenv("ROLLVIZ_TEST_OUTPUT");
   if (!dir.isEmpty()) img.save(QString::fromUtf8(dir) + "/" + name, "PNG");
+  std::set<QRgb> colours;
+  for (int y = 0; y < img.height(); ++y)
+    for (int x = 0; x < img.width(); ++x)
+      colours.insert(img.pixel(x, y));
+  if (colours.size() < 40) qWarning("%s: %zu colours", qPrintable(name), colours.size());
+  return colours.size() >= 40;
 }
 int framesOf(const QString& path) {
   const std::string cmd = "ffprobe -v error -count_frames -select_streams v:0 -show_entries "
@@ -77,7 +94,7 @@ private slots:
     QVERIFY(window_->openScene(QString::fromStdString(defaultScenePath("chaplygin_ball"))));
     QTest::qWait(800);
     QVERIFY(window_->shownTime() > 0.1);
-    keep(window_->grab().toImage(), "window_main.png");
+    QVERIFY(keep(window_->grab().toImage(), "window_main.png"));
   }
 
   void settingsRecolourTheBallInTheNextFrame() {
@@ -88,7 +105,7 @@ private slots:
     window_->settings()->pickColor({1.0, 0.0, 0.0});
     QTest::qWait(100);
     const QImage after = window_->view()->grabFramebuffer();
-    keep(after, "window_main_red_ball.png");
+    QVERIFY(keep(after, "window_main_red_ball.png"));
     QVERIFY2(redPixels(after) > redPixels(before) + 2000,
              qPrintable(QString("red pixels %1 -> %2").arg(redPixels(before)).arg(redPixels(after))));
     // the edit is kept when the scene runs again
@@ -164,7 +181,7 @@ private slots:
     QVERIFY2(chart->ready(), qPrintable(chart->failure()));
     QTest::qWait(200);
     const QImage img = chart->view()->grabFramebuffer();
-    keep(chart->grab().toImage(), "window_chart_bifurcation.png");
+    QVERIFY(keep(chart->grab().toImage(), "window_chart_bifurcation.png"));
     QVERIFY(varied(img) || img.width() > 0);
     long nonWhite = 0;
     for (int y = 0; y < img.height(); ++y)
@@ -210,7 +227,7 @@ private slots:
     auto* view = w->findChild<QtVtkWidget*>();
     QVERIFY(view);
     const QImage img = view->grabFramebuffer();
-    keep(img, "window_apex.png");
+    QVERIFY(keep(img, "window_apex.png"));
     QVERIFY(varied(img));
   }
 
@@ -274,7 +291,7 @@ private slots:
         std::abs(e - newEnergy) < 1e-9,
         qPrintable(
             QString("energy %1, expected %2 (was %3)").arg(e, 0, 'g', 17).arg(newEnergy).arg(oldEnergy)));
-    keep(window_->grab().toImage(), "window_main_" + problem + ".png");
+    QVERIFY(keep(window_->grab().toImage(), "window_main_" + problem + ".png"));
     // colour of output and Set range act on what the map draws of this trajectory
     const auto green = [](const QImage& img) { // pure green: no series has it by default
       long n = 0;
@@ -343,7 +360,7 @@ private slots:
     for (std::size_t k = 1; k < t.size(); ++k)
       QVERIFY(t[k] - t[k - 1] >= 0.05 - 1e-12); // the period, in time
     QTest::qWait(200);
-    keep(plot->grab().toImage(), "window_plot.png");
+    QVERIFY(keep(plot->grab().toImage(), "window_plot.png"));
     const QImage img = plot->view()->grabFramebuffer();
     QVERIFY(img.width() > 0);
     window_->restart(); // a new run: the plot starts again
@@ -381,7 +398,7 @@ private slots:
         QVERIFY(std::abs(e - energy) < 1e-9); // every point on its trajectory's energy level
     }
     QTest::qWait(300);
-    keep(plot3->grab().toImage(), "window_plot3d.png");
+    QVERIFY(keep(plot3->grab().toImage(), "window_plot3d.png"));
     const QImage img = plot3->view()->grabFramebuffer();
     int drawn = 0;
     for (int y = 0; y < img.height(); y += 2)
@@ -389,18 +406,11 @@ private slots:
         drawn += qGray(img.pixel(x, y)) < 200;
     QVERIFY2(drawn > 100, "the 3D plot draws the points");
     // selecting a trajectory in the tool manager emphasises it in the filters too (its points twice as big)
-    const auto ink = [](const QImage& im) {
-      long n = 0;
-      for (int y = 0; y < im.height(); ++y)
-        for (int x = 0; x < im.width(); ++x)
-          n += qGray(im.pixel(x, y)) < 200;
-      return n;
-    };
-    const long plain = ink(plot2->view()->grabFramebuffer());
+    const long plain = inked(plot2->view()->grabFramebuffer());
     window_->toolManager()->refresh();
     window_->toolManager()->select(ids.front());
     QTest::qWait(100);
-    const long emphasised = ink(plot2->view()->grabFramebuffer());
+    const long emphasised = inked(plot2->view()->grabFramebuffer());
     QVERIFY2(emphasised > plain * 1.2, qPrintable(QString("%1 -> %2 dark pixels").arg(plain).arg(emphasised)));
     map->removeJob(*map->jobs().jobs().back()); // its series goes from the filters
     QCOMPARE(plot2->points(ids.back()), 0L);
@@ -441,7 +451,8 @@ private slots:
     MultipliersWindow* later = window_->openMultipliersWindow();
     QCOMPARE(later->points(), 2L * 41); // period 0: every point, K = 1.5, 1.55, ..., 3.5
     QTest::qWait(200);
-    keep(w->grab().toImage(), "window_multipliers.png");
+    QVERIFY(keep(w->grab().toImage(), "window_multipliers.png"));
+    QVERIFY(inked(w->view()->grabFramebuffer()) > 2000); // the axes, the unit circle and the points
     // Edit properties of the stopped continuation (tool manager): a larger step from the control panel; it
     // starts again with it, its old output gone from the filter
     auto* step = qobject_cast<QDoubleSpinBox*>(window_->controlPanel()->form("continuation")->editor("step"));
@@ -489,7 +500,8 @@ private slots:
     map->drain();
     QVERIFY(std::abs(chart->marks()[1].y - 0.6) < 1e-9);
     QTest::qWait(200);
-    keep(chart->grab().toImage(), "window_diagram_marks.png");
+    QVERIFY(keep(chart->grab().toImage(), "window_diagram_marks.png"));
+    QVERIFY(inked(chart->view()->grabFramebuffer()) > 2000); // the branches and the marks
     // the other diagram of the problem (Diagram name): the plane (c, h), the area constant c = 0.3 of the
     // scene for both trajectories
     ChartWindow* ch = window_->openChart("bifurcation", "ch");
@@ -514,7 +526,7 @@ private slots:
     auto* view = w->findChild<QtVtkWidget*>();
     QVERIFY(view);
     const QImage img = view->grabFramebuffer();
-    keep(img, "window_map3d.png");
+    QVERIFY(keep(img, "window_map3d.png"));
     long dark = 0;
     for (int y = 0; y < img.height(); ++y)
       for (int x = 0; x < img.width(); ++x)
