@@ -12,6 +12,7 @@
 #include "scenes/SceneLoader.h"
 #include "scenes/SceneTools.h"
 
+#include <QComboBox>
 #include <QMouseEvent>
 #include <QVBoxLayout>
 #include <algorithm>
@@ -22,11 +23,21 @@ MapPanel::MapPanel(QWidget* parent) : QWidget(parent) {
   view_ = new QtVtkWidget(this);
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
-  layout->addWidget(view_);
+  modeBox_ = new QComboBox(this);
+  modeBox_->setObjectName("click_mode");
+  modeBox_->addItems({"Click: start a trajectory", "Click: search a fixed point", "Click: pan / zoom"});
+  modeBox_->setToolTip("what a click on the map does (Ctrl+click always starts a trajectory, Shift+click always "
+                       "searches a fixed point; the wheel zooms)");
+  connect(modeBox_, &QComboBox::currentIndexChanged, this,
+          [this](int i) { clickMode_ = static_cast<ClickMode>(i); });
+  layout->addWidget(modeBox_);
+  layout->addWidget(view_, 1);
   view_->installEventFilter(this);
-  view_->setToolTip("Ctrl+click: start a trajectory at this point of the map\n"
-                    "Shift+click: search a fixed point of the map from this point");
   setMinimumSize(320, 320);
+}
+
+void MapPanel::setClickMode(ClickMode mode) {
+  modeBox_->setCurrentIndex(static_cast<int>(mode));
 }
 
 MapPanel::~MapPanel() {
@@ -429,11 +440,12 @@ bool MapPanel::eventFilter(QObject* watched, QEvent* event) {
   if (watched == view_ && event->type() == QEvent::MouseButtonPress && chart_) {
     auto* e = static_cast<QMouseEvent*>(event);
     const bool ctrl = e->modifiers() & Qt::ControlModifier, shift = e->modifiers() & Qt::ShiftModifier;
-    if (e->button() == Qt::LeftButton && (ctrl || shift)) {
+    const bool plain = !ctrl && !shift && clickMode_ != ClickMode::Navigate;
+    if (e->button() == Qt::LeftButton && (ctrl || shift || plain)) {
       const double dpr = view_->devicePixelRatioF();
       double x, y;
       if (chart_->toChart(e->position().x() * dpr, (view_->height() - e->position().y()) * dpr, x, y)) {
-        if (ctrl)
+        if (ctrl || (plain && clickMode_ == ClickMode::Trajectory))
           startAt(x, y);
         else
           searchFixedPointAt(x, y);

@@ -1,8 +1,9 @@
 // MapPanel.h -- the map window (manual §2.1, Fig. 3): the Poincare map of the scene as a chart, fed by one
-// Poincare job per trajectory. Ctrl+click on the map starts a new trajectory there (the point is completed
-// through the scene's energy and other integrals); Shift+click searches a fixed point of the map from there
-// (manual §2.3.4: the search path is drawn, the point, its multipliers and type reported). The jobs run on
-// their own threads; this panel only draws.
+// Poincare job per trajectory. A click on the map (in the "trajectories" mode, or Ctrl+click in any) starts a
+// new trajectory there (the point is completed through the scene's energy and other integrals); in the "fixed
+// points" mode (or Shift+click) it searches a fixed point of the map from there (manual §2.3.4: the search path
+// is drawn, the point, its multipliers and type reported); in the "pan / zoom" mode a drag moves the chart.
+// The jobs run on their own threads; this panel only draws.
 #pragma once
 #include "app/gui/ChartWindow.h"
 #include "dynamics/jobs/JobTree.h"
@@ -16,6 +17,8 @@
 #include <memory>
 #include <vector>
 
+class QComboBox;
+
 namespace rv {
 
 class QtVtkWidget;
@@ -27,7 +30,11 @@ class FixedPointTask;
 class MapPanel : public QWidget {
   Q_OBJECT
 public:
+  /// What a plain click on the map does.
+  enum class ClickMode { Trajectory, FixedPoint, Navigate };
   explicit MapPanel(QWidget* parent = nullptr);
+  void setClickMode(ClickMode mode);
+  ClickMode clickMode() const { return clickMode_; }
   ~MapPanel() override;
   /// Drops every trajectory and starts one at the scene's initial state (the scene must outlive the panel's
   /// use).
@@ -155,6 +162,8 @@ private:
   /// The scene's tool setup; nothing (with a message) when the scene cannot give one.
   std::unique_ptr<class SceneMap> sceneMap();
   QtVtkWidget* view_;
+  ClickMode clickMode_ = ClickMode::Trajectory;
+  QComboBox* modeBox_;
   std::unique_ptr<PoincareChart> chart_;
   void feedMap3D();
   /// Drops the Map3D chart (its series follow the trajectories); draws it again if `reopen` and it shows.

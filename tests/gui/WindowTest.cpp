@@ -261,7 +261,9 @@ private slots:
     QVERIFY(mapView);
     const int before = map->trajectories();
     // Ctrl+click in the middle of the map (Henon-Heiles: (y, py) near (0, 0), inside the region at E = 1/12)
-    QTest::mouseClick(mapView, Qt::LeftButton, Qt::ControlModifier, mapView->rect().center());
+    // (a plain click in the default mode; Ctrl+click in any mode)
+    QTest::mouseClick(mapView, Qt::LeftButton,
+                      problem == "henon_heiles" ? Qt::ControlModifier : Qt::NoModifier, mapView->rect().center());
     QTRY_COMPARE_WITH_TIMEOUT(map->trajectories(), before + 1, 5000);
     Job* job = map->jobs().jobs().back();
     QTRY_VERIFY_WITH_TIMEOUT(dynamic_cast<PoincareTask&>(job->task()).points().total() > 5, 10000);
@@ -320,6 +322,16 @@ private slots:
     QVERIFY2(rows.size() > 20, qPrintable(QString("%1 rows").arg(rows.size())));
     tools->deleteSelected();
     QCOMPARE(map->trajectories(), before);
+    // the click modes: pan / zoom starts nothing, fixed points searches from the point
+    map->setClickMode(MapPanel::ClickMode::Navigate);
+    QTest::mouseClick(mapView, Qt::LeftButton, Qt::NoModifier, mapView->rect().center());
+    QCOMPARE(map->trajectories(), before);
+    const int searches = map->searches();
+    map->setClickMode(MapPanel::ClickMode::FixedPoint);
+    QTest::mouseClick(mapView, Qt::LeftButton, Qt::NoModifier, mapView->rect().center());
+    QCOMPARE(map->searches(), searches + 1);
+    QCOMPARE(map->trajectories(), before);
+    map->setClickMode(MapPanel::ClickMode::Trajectory);
   }
 
   // the control panel's Tools tab: Create on a map tool starts its job, on a chart tool opens its window
