@@ -71,9 +71,10 @@ struct ViewOptions {
 
 /// The window options of a 2D / 3D plot filter (manual §2.4.1-§2.4.2).
 struct PlotChartOptions {
-  std::array<std::optional<double>, 6> range; ///< x_min, x_max, y_min, y_max, z_min, z_max; nothing: the data's
-  bool holdProportions = false;                ///< equal scales on the axes
-  float pointSize = 4;                         ///< small 2, middle 4, big 7 pixels
+  std::array<std::optional<double>, 6>
+      range;                    ///< x_min, x_max, y_min, y_max, z_min, z_max; nothing: the data's
+  bool holdProportions = false; ///< equal scales on the axes
+  float pointSize = 4;          ///< small 2, middle 4, big 7 pixels
 };
 
 } // namespace rv

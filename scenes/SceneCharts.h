@@ -20,8 +20,8 @@ namespace rv {
 const std::vector<std::string>& chartViews();
 
 /// Computes what `view` shows for the scene and draws it. `points` > 0 overrides poincare.points; `diagram`
-/// picks the bifurcation view's diagram (empty: the problem's first). Throws InputError for an unknown view or
-/// one the problem does not have; Stopped results are drawn as far as they got.
+/// picks the bifurcation view's diagram (empty: the problem's first). Throws InputError for an unknown view
+/// or one the problem does not have; Stopped results are drawn as far as they got.
 std::unique_ptr<Chart> sceneChart(const Scene& scene, const std::string& view, const ToolControl& control,
                                   long points = 0, const std::string& diagram = "");
 

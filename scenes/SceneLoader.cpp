@@ -339,7 +339,8 @@ PlotView readPlot(const json& j, const Where& w) {
   for (int i = 0; i < 6; ++i)
     if (j.contains(keys[i])) p.chart.range[i] = number(j[keys[i]], w / keys[i]);
   for (int i = 0; i < 3; ++i)
-    if (p.chart.range[2 * i] && p.chart.range[2 * i + 1] && !(*p.chart.range[2 * i + 1] > *p.chart.range[2 * i]))
+    if (p.chart.range[2 * i] && p.chart.range[2 * i + 1] &&
+        !(*p.chart.range[2 * i + 1] > *p.chart.range[2 * i]))
       (w / keys[2 * i + 1]).fail(std::string("must exceed ") + keys[2 * i]);
   if (j.contains("hold_proportions"))
     p.chart.holdProportions = boolean(j["hold_proportions"], w / "hold_proportions");

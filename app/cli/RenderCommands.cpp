@@ -77,15 +77,17 @@ Command addChartCommand(CLI::App& app) {
   cmd->add_option("-o,--output", o->output, "PNG file")->required();
   cmd->add_option("--size", o->size, "picture size WIDTHxHEIGHT")->capture_default_str();
   cmd->add_option("--points", o->points, "Poincare points to compute (default: the scene's poincare.points)");
-  cmd->add_option("--diagram", o->diagram,
-                  "--view bifurcation: which diagram (default: the problem's first; `rollviz diagram --json` lists "
-                  "them)");
+  cmd->add_option(
+      "--diagram", o->diagram,
+      "--view bifurcation: which diagram (default: the problem's first; `rollviz diagram --json` lists "
+      "them)");
   return {cmd, [o] {
             const auto [w, h] = parseSize(o->size);
             const Scene scene = o->scene.load();
             checkWritable(o->output, "-o");
             Progress progress(o->view);
-            const auto chart = sceneChart(scene, o->view, interruptibleControl(progress), o->points, o->diagram);
+            const auto chart =
+                sceneChart(scene, o->view, interruptibleControl(progress), o->points, o->diagram);
             auto ctx = createHeadlessContext(w, h);
             chart->attach(ctx->window());
             writePng(ctx->window(), o->output, "-o");

@@ -96,7 +96,8 @@ void ChartWindow::drawMarks() {
   if (!plane) return;
   while (markSeries_.size() < marks_.size()) {
     markSeries_.push_back(plane->addSeries({}, {}, {0, 0, 0}));
-    if (auto* p = vtkPlotPoints::SafeDownCast(plane->chart()->GetPlot(markSeries_.back()))) p->SetMarkerSize(9);
+    if (auto* p = vtkPlotPoints::SafeDownCast(plane->chart()->GetPlot(markSeries_.back())))
+      p->SetMarkerSize(9);
   }
   for (std::size_t i = 0; i < markSeries_.size(); ++i) {
     if (i < marks_.size()) {

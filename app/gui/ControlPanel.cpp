@@ -132,8 +132,8 @@ void ControlPanel::setScene(const Scene& scene) {
   methodBox_->setObjectName("method_choice");
   for (const auto& e : IntegratorRegistry::builtin().entries()) {
     methodBox_->addItem(QString::fromStdString(e.id));
-    methodBox_->setItemData(methodBox_->count() - 1, QString::fromStdString(e.title + " (" + e.reference + ")"),
-                            Qt::ToolTipRole);
+    methodBox_->setItemData(methodBox_->count() - 1,
+                            QString::fromStdString(e.title + " (" + e.reference + ")"), Qt::ToolTipRole);
   }
   method_ = scene.integratorEntry->id;
   methodBox_->setCurrentText(QString::fromStdString(method_));

@@ -61,7 +61,7 @@ void exportChartDialog(QWidget* parent, QtVtkWidget* view, const Chart& chart, c
                                                     "PNG picture (*.png);;CSV data (*.csv)");
   if (path.isEmpty()) return;
   const bool ok = path.endsWith(".csv", Qt::CaseInsensitive) ? saveChartCsv(chart, path)
-                                                               : view->grabFramebuffer().save(path, "PNG");
+                                                             : view->grabFramebuffer().save(path, "PNG");
   if (!ok) failed("cannot write " + path);
 }
 

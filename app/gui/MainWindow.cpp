@@ -2,8 +2,8 @@
 
 #include "app/gui/ChartWindow.h"
 #include "app/gui/ControlPanel.h"
-#include "app/gui/MapPanel.h"
 #include "app/gui/FilterWindow.h"
+#include "app/gui/MapPanel.h"
 #include "app/gui/MultipliersWindow.h"
 #include "app/gui/PlotFilterDialog.h"
 #include "app/gui/PlotWindow.h"
@@ -27,8 +27,8 @@
 #include <QDropEvent>
 #include <QFile>
 #include <QFileDialog>
-#include <QInputDialog>
 #include <QFileInfo>
+#include <QInputDialog>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -91,9 +91,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   resizeDocks({toolsDock}, {150}, Qt::Vertical); // the 3D view keeps most of the height
   connect(control_, &ControlPanel::apply, this, [this](const nlohmann::json& doc) { runDocument(doc); });
   connect(control_, &ControlPanel::create, this, [this](const std::string& id) { createTool(id); });
-  connect(control_, &ControlPanel::problemChosen, this, [this](const std::string& id) {
-    openScene(QString::fromStdString(defaultScenePath(id)));
-  });
+  connect(control_, &ControlPanel::problemChosen, this,
+          [this](const std::string& id) { openScene(QString::fromStdString(defaultScenePath(id))); });
   settings_ = new VisualizerSettings(this);
   auto* settingsDock = new QDockWidget("Visualizer settings", this);
   settingsDock->setObjectName("settings");
@@ -168,11 +167,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   auto* file = menuBar()->addMenu("&File");
   file->addAction("Open scene…", this, &MainWindow::openDialog);
   file->addAction("Save scene as…", this, &MainWindow::saveDialog)->setShortcut(QKeySequence::SaveAs);
-  file->addAction("Export map…", this, [this] {
-    if (scene_)
-      exportChartDialog(this, map_->view(), map_->chart(), "map",
-                        [this](const QString& m) { statusBar()->showMessage(m, 8000); });
-  })->setToolTip("the Poincaré map window as a PNG picture or its points as CSV");
+  file->addAction("Export map…", this,
+                  [this] {
+                    if (scene_)
+                      exportChartDialog(this, map_->view(), map_->chart(), "map",
+                                        [this](const QString& m) { statusBar()->showMessage(m, 8000); });
+                  })
+      ->setToolTip("the Poincaré map window as a PNG picture or its points as CSV");
   recentMenu_ = file->addMenu("Recent scenes");
   fillRecentMenu();
   file->addSeparator();
@@ -182,13 +183,15 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
       ->setToolTip("observables against each other along the 3D view's run and every trajectory of the map, "
                    "a point whenever the out condition has changed by the period (manual 2.4.1)");
   windows->addAction("3D plot…", this, [this] { plotDialog(3); })
-      ->setToolTip("three observables along the 3D view's run and every trajectory of the map (manual 2.4.2)");
+      ->setToolTip(
+          "three observables along the 3D view's run and every trajectory of the map (manual 2.4.2)");
   windows->addAction("Multipliers (live)", this, [this] { openMultipliersWindow(); })
       ->setToolTip("the multipliers of running continuations and bifurcation trees on the complex plane "
                    "(manual 2.4.3)");
   windows->addAction("Bifurcation diagram…", this, [this] { diagramDialog(); })
-      ->setToolTip("a bifurcation diagram of the problem on the plane of first integrals, with every trajectory "
-                   "of the map as a point (manual 2.4.4)");
+      ->setToolTip(
+          "a bifurcation diagram of the problem on the plane of first integrals, with every trajectory "
+          "of the map as a point (manual 2.4.4)");
   windows->addAction("Map3D (live)", map_, [this] { map_->openMap3D(); })
       ->setToolTip("a 3D map in three dimensions, beside its projection in the map window");
   windows->addAction("Apex motion", this, [this] { openApexWindow(); })
@@ -303,7 +306,7 @@ void MainWindow::useScene(std::unique_ptr<Scene> scene, const QString& path) {
   scene_ = std::move(scene);
   scenePath_ = path;
   const QString run = QString::fromStdString(scene_->runSpec().describe()); // "rk4(step=0.001) problem(...)"
-  method_ = run.left(run.indexOf(')') + 1);                                  // the method and its settings
+  method_ = run.left(run.indexOf(')') + 1);                                 // the method and its settings
   speedBox_->setValue(scene_->view.speed);
   setWindowTitle(QString("rollviz — %1 (%2)")
                      .arg(QFileInfo(path).fileName(), QString::fromStdString(scene_->model->info().id)));
@@ -513,8 +516,8 @@ void MainWindow::diagramDialog() {
   if (!scene_) return;
   const auto diagrams = scene_->model->diagrams();
   if (diagrams.empty()) {
-    statusBar()->showMessage(QString::fromStdString(scene_->model->info().id + " has no bifurcation diagrams"),
-                             8000);
+    statusBar()->showMessage(
+        QString::fromStdString(scene_->model->info().id + " has no bifurcation diagrams"), 8000);
     return;
   }
   QStringList items;

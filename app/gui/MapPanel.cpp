@@ -26,8 +26,9 @@ MapPanel::MapPanel(QWidget* parent) : QWidget(parent) {
   modeBox_ = new QComboBox(this);
   modeBox_->setObjectName("click_mode");
   modeBox_->addItems({"Click: start a trajectory", "Click: search a fixed point", "Click: pan / zoom"});
-  modeBox_->setToolTip("what a click on the map does (Ctrl+click always starts a trajectory, Shift+click always "
-                       "searches a fixed point; the wheel zooms)");
+  modeBox_->setToolTip(
+      "what a click on the map does (Ctrl+click always starts a trajectory, Shift+click always "
+      "searches a fixed point; the wheel zooms)");
   connect(modeBox_, &QComboBox::currentIndexChanged, this,
           [this](int i) { clickMode_ = static_cast<ClickMode>(i); });
   layout->addWidget(modeBox_);
@@ -139,7 +140,8 @@ std::unique_ptr<SceneMap> MapPanel::sceneMap() {
   }
 }
 
-void MapPanel::startTool(std::unique_ptr<Task> task, const Rgb& colour, std::function<bool(ToolSeries&)> pull) {
+void MapPanel::startTool(std::unique_ptr<Task> task, const Rgb& colour,
+                         std::function<bool(ToolSeries&)> pull) {
   Job& job = jobs_.add(std::move(task));
   tools_.push_back({&job, chart_->addSeries({}, {}, colour), {}, {}, std::move(pull)});
   job.start();
@@ -188,24 +190,23 @@ void MapPanel::startContinuation() {
   try {
     auto task = std::make_unique<ContinuationTask>(sm->taskSpec(), sm->continuation());
     ContinuationTask* raw = task.get();
-    startTool(std::move(task), {0.95, 0.55, 0.1},
-              [this, raw](ToolSeries& t) {
-                std::vector<ContinuationPoint> points;
-                std::vector<TypeChange> changes;
-                raw->points().take(points);
-                raw->changes().take(changes);
-                for (const auto& p : points) {
-                  t.x.push_back(p.fixedPoint.point[0]), t.y.push_back(p.fixedPoint.point[1]);
-                  offerMultipliers(t, p.parameter, p.fixedPoint.multipliers);
-                }
-                for (const auto& c : changes)
-                  emit message(QString("type change at %1 = %2: %3 -> %4 (%5)")
-                                   .arg(QString::fromStdString(raw->describe()))
-                                   .arg(c.parameter, 0, 'g', 12)
-                                   .arg(QString::fromStdString(c.from), QString::fromStdString(c.to),
-                                        QString::fromStdString(c.kind)));
-                return !points.empty();
-              });
+    startTool(std::move(task), {0.95, 0.55, 0.1}, [this, raw](ToolSeries& t) {
+      std::vector<ContinuationPoint> points;
+      std::vector<TypeChange> changes;
+      raw->points().take(points);
+      raw->changes().take(changes);
+      for (const auto& p : points) {
+        t.x.push_back(p.fixedPoint.point[0]), t.y.push_back(p.fixedPoint.point[1]);
+        offerMultipliers(t, p.parameter, p.fixedPoint.multipliers);
+      }
+      for (const auto& c : changes)
+        emit message(QString("type change at %1 = %2: %3 -> %4 (%5)")
+                         .arg(QString::fromStdString(raw->describe()))
+                         .arg(c.parameter, 0, 'g', 12)
+                         .arg(QString::fromStdString(c.from), QString::fromStdString(c.to),
+                              QString::fromStdString(c.kind)));
+      return !points.empty();
+    });
     emit message("continuing the scene's fixed point");
   } catch (const InputError& e) {
     emit message(QString::fromStdString(e.what()));

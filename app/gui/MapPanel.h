@@ -1,9 +1,9 @@
 // MapPanel.h -- the map window (manual §2.1, Fig. 3): the Poincare map of the scene as a chart, fed by one
 // Poincare job per trajectory. A click on the map (in the "trajectories" mode, or Ctrl+click in any) starts a
 // new trajectory there (the point is completed through the scene's energy and other integrals); in the "fixed
-// points" mode (or Shift+click) it searches a fixed point of the map from there (manual §2.3.4: the search path
-// is drawn, the point, its multipliers and type reported); in the "pan / zoom" mode a drag moves the chart.
-// The jobs run on their own threads; this panel only draws.
+// points" mode (or Shift+click) it searches a fixed point of the map from there (manual §2.3.4: the search
+// path is drawn, the point, its multipliers and type reported); in the "pan / zoom" mode a drag moves the
+// chart. The jobs run on their own threads; this panel only draws.
 #pragma once
 #include "app/gui/ChartWindow.h"
 #include "dynamics/jobs/JobTree.h"

@@ -57,7 +57,7 @@ void PlotWindow::clear(int id) {
   const auto it = sources_.find(id);
   if (it == sources_.end()) return;
   if (id == kViewRun) sampler_.clear(); // a trajectory's job restarts its own sampling
-  Source& s = it->second; // (a restarted job has emptied its tap of the old run's points)
+  Source& s = it->second;               // (a restarted job has emptied its tap of the old run's points)
   for (auto& v : s.values)
     v.clear();
   s.dirty = true;

@@ -33,11 +33,12 @@ ToolManager::ToolManager(JobTree& jobs, std::function<void(Job&)> remove, QWidge
   button("Stop", "stop the selected tool (it can continue later)", &ToolManager::stopSelected);
   button("Continue", "continue the selected tool from where it stopped", &ToolManager::continueSelected);
   button("Restart", "start the selected tool again from the beginning", &ToolManager::restartSelected);
-  button("Edit",
-         "give the selected (stopped) tool the control panel's values (problem, method, its settings); Continue "
-         "then goes on with them: a map or fixed-point search from its stop point, a continuation, separatrix "
-         "or bifurcation tree from its beginning",
-         &ToolManager::editSelected);
+  button(
+      "Edit",
+      "give the selected (stopped) tool the control panel's values (problem, method, its settings); Continue "
+      "then goes on with them: a map or fixed-point search from its stop point, a continuation, separatrix "
+      "or bifurcation tree from its beginning",
+      &ToolManager::editSelected);
   button("Delete", "stop and delete the selected tool and the tools under it", &ToolManager::deleteSelected);
   button("Find parent", "select the tool the selected one studies", &ToolManager::selectParent);
   auto* colour = new QPushButton("Colour…", this);

@@ -4,8 +4,8 @@
 
 namespace rv {
 
-const Diagram& findDiagram(const std::vector<Diagram>& diagrams, const std::string& id, const std::string& flag,
-                           const std::string& problem) {
+const Diagram& findDiagram(const std::vector<Diagram>& diagrams, const std::string& id,
+                           const std::string& flag, const std::string& problem) {
   if (diagrams.empty()) throw InputError(flag + ": " + problem + " has no bifurcation diagrams");
   if (id.empty()) return diagrams.front();
   std::string known;

@@ -34,7 +34,7 @@ struct Diagram {
 
 /// The diagram `id` of a problem's list (empty id: the first). Throws InputError naming `flag` with the
 /// known ids when there is none such (or no diagram at all, naming `problem`).
-const Diagram& findDiagram(const std::vector<Diagram>& diagrams, const std::string& id, const std::string& flag,
-                           const std::string& problem);
+const Diagram& findDiagram(const std::vector<Diagram>& diagrams, const std::string& id,
+                           const std::string& flag, const std::string& problem);
 
 } // namespace rv

@@ -43,7 +43,8 @@ bool PlotSampler::offer(double t, const double* x) {
   return true;
 }
 
-void PlotSampler::offerStep(const Integrator& in, const std::function<void(const std::vector<double>&)>& keep) {
+void PlotSampler::offerStep(const Integrator& in,
+                            const std::function<void(const std::vector<double>&)>& keep) {
   if (settings_.condition != "t") {
     if (offer(in.time(), in.state().data())) keep(values_);
     return;

@@ -44,7 +44,7 @@ private:
   std::vector<std::function<double(double, const double*)>> axes_;
   std::function<double(double, const double*)> condition_;
   std::vector<double> values_;
-  double last_ = 0;  ///< the condition's value at the last kept point; in time: the first time offered
+  double last_ = 0; ///< the condition's value at the last kept point; in time: the first time offered
   Eigen::VectorXd work_;
   long kept_ = 0;
   bool started_ = false;

@@ -5,9 +5,9 @@
 #include <cstdio>
 #include <vtkActor.h>
 #include <vtkCallbackCommand.h>
-#include <vtkCommand.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
+#include <vtkCommand.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>

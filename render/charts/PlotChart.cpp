@@ -45,7 +45,8 @@ void PlotChart::fitRanges() {
     for (int i = 0; i < 4; ++i)
       all[i] = i % 2 ? std::max(all[i], b[i]) : std::min(all[i], b[i]);
   if (all[0] > all[1] || all[2] > all[3]) all = {-1, 1, -1, 1}; // no data yet
-  plane_->setRanges(r[0].value_or(all[0]), r[1].value_or(all[1]), r[2].value_or(all[2]), r[3].value_or(all[3]));
+  plane_->setRanges(r[0].value_or(all[0]), r[1].value_or(all[1]), r[2].value_or(all[2]),
+                    r[3].value_or(all[3]));
 }
 
 void PlotChart::setColor(int index, const Rgb& color) {

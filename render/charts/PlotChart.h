@@ -2,9 +2,9 @@
 // a Chart3D for three, set up by the filter's window options (ranges, hold proportions, point type), with one
 // point series per trajectory feeding it. `rollviz chart --view plot` and the live plot window both draw it.
 #pragma once
+#include "render/ViewOptions.h"
 #include "render/charts/Chart3D.h"
 #include "render/charts/PoincareChart.h"
-#include "render/ViewOptions.h"
 
 #include <array>
 #include <memory>

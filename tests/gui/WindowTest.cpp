@@ -4,11 +4,11 @@
 // window and the apex window draw real pictures. Screenshots of each window are kept in ROLLVIZ_TEST_OUTPUT.
 #include "app/gui/ChartWindow.h"
 #include "app/gui/ControlPanel.h"
+#include "app/gui/FilterWindow.h"
 #include "app/gui/MainWindow.h"
 #include "app/gui/MapPanel.h"
-#include "app/gui/ParameterForm.h"
-#include "app/gui/FilterWindow.h"
 #include "app/gui/MultipliersWindow.h"
+#include "app/gui/ParameterForm.h"
 #include "app/gui/PlotWindow.h"
 #include "app/gui/QtVtkWidget.h"
 #include "app/gui/ToolManager.h"
@@ -263,7 +263,8 @@ private slots:
     // Ctrl+click in the middle of the map (Henon-Heiles: (y, py) near (0, 0), inside the region at E = 1/12)
     // (a plain click in the default mode; Ctrl+click in any mode)
     QTest::mouseClick(mapView, Qt::LeftButton,
-                      problem == "henon_heiles" ? Qt::ControlModifier : Qt::NoModifier, mapView->rect().center());
+                      problem == "henon_heiles" ? Qt::ControlModifier : Qt::NoModifier,
+                      mapView->rect().center());
     QTRY_COMPARE_WITH_TIMEOUT(map->trajectories(), before + 1, 5000);
     Job* job = map->jobs().jobs().back();
     QTRY_VERIFY_WITH_TIMEOUT(dynamic_cast<PoincareTask&>(job->task()).points().total() > 5, 10000);
@@ -423,7 +424,8 @@ private slots:
     window_->toolManager()->select(ids.front());
     QTest::qWait(100);
     const long emphasised = inked(plot2->view()->grabFramebuffer());
-    QVERIFY2(emphasised > plain * 1.2, qPrintable(QString("%1 -> %2 dark pixels").arg(plain).arg(emphasised)));
+    QVERIFY2(emphasised > plain * 1.2,
+             qPrintable(QString("%1 -> %2 dark pixels").arg(plain).arg(emphasised)));
     map->removeJob(*map->jobs().jobs().back()); // its series goes from the filters
     QCOMPARE(plot2->points(ids.back()), 0L);
     QCOMPARE(plot2->points(ids.front()), 300L);
