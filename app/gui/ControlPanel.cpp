@@ -43,7 +43,11 @@ ControlPanel::ControlPanel(QWidget* parent) : QWidget(parent) {
        {{"spectrum", "Fourier spectrum", "of spectrum.function along the trajectory (a chart window)", {}},
         {"lyapunov", "Lyapunov exponents", "against time (a chart window)", {}},
         {"map3d", "Map3D", "the map in three dimensions (a chart window)", {}},
-        {"plot", "2D / 3D plot", "observables of the plot section against each other (a chart window)", {}}}},
+        {"plot",
+         "2D / 3D plot",
+         "the plot section's observables along the 3D view's run and every trajectory of the map (a live "
+         "filter window; Windows > 2D plot… asks for them)",
+         {}}}},
       {"fixedpoint",
        "Fixed points",
        "Newton (or gradient) search from fixedpoint.guess; the path on the map",

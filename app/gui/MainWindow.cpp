@@ -38,6 +38,7 @@
 #include <QStatusBar>
 #include <QTemporaryFile>
 #include <QToolBar>
+#include <cmath>
 #include <csignal>
 #include <fstream>
 #include <vtkRenderer.h>
@@ -82,6 +83,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   connect(tools_, &ToolManager::message, this,
           [this](const QString& m) { statusBar()->showMessage(m, 8000); });
   connect(tools_, &ToolManager::selectedJob, map_, &MapPanel::highlightJob);
+  connect(tools_, &ToolManager::selectedJob, this, [this](int id) {
+    if (apex_) followInApex(id);
+  });
+  connect(map_, &MapPanel::jobRemoved, this, [this](int id) {
+    if (apex_ && id == apexSource_) followInApex(-1);
+  });
   tools_->setOutputActions([this](int id, const Rgb& c) { return map_->setJobColor(id, c); },
                            [this](int id, long a, long b) { return map_->setJobRange(id, a, b); });
   auto* toolsDock = new QDockWidget("Tool manager", this);
@@ -301,6 +308,8 @@ void MainWindow::useScene(std::unique_ptr<Scene> scene, const QString& path) {
   visual_.reset();
   if (apex_ && apexView_) apexView_->renderWindow()->RemoveRenderer(apex_->renderer());
   apex_.reset();
+  if (apexTap_) apexTap_->closed = true;
+  apexTap_.reset(), apexSource_ = -1;
   for (PlotWindow* p : map_->plotWindows()) // they read the old model's observables
     delete p;
   scene_ = std::move(scene);
@@ -332,7 +341,7 @@ void MainWindow::restart() {
     visual_->show(0.0, scene_->initialState);
     visual_->resetCamera();
   }
-  if (apex_) {
+  if (apex_ && !apexTap_) { // (following a map trajectory, it goes on)
     apex_->clear();
     apex_->show(0.0, scene_->initialState);
   }
@@ -363,6 +372,7 @@ void MainWindow::togglePlay() {
 void MainWindow::tick() {
   const double wall = clock_.restart() / 1000.0;
   map_->drain();
+  feedApexFromMap();
   if (!stream_) return;
   if (playing_ && error_.isEmpty()) {
     // never run further ahead of what is shown than a fraction of a second of work
@@ -372,16 +382,16 @@ void MainWindow::tick() {
   if (!stream_->take(batch_)) return;
   const std::vector<PlotWindow*> plots = map_->plotWindows(); // drawn by the map's drain
   for (std::size_t i = 0; i < batch_.states.size(); ++i) {
-    if (lastStepEnd_ && batch_.times[i] != *lastStepEnd_) lastStep_ = batch_.times[i] - *lastStepEnd_;
+    if (lastStepEnd_ && batch_.times[i] != *lastStepEnd_) lastStep_ = std::abs(batch_.times[i] - *lastStepEnd_);
     lastStepEnd_ = batch_.times[i];
     visual_->advance(batch_.times[i], batch_.states[i]);
-    if (apex_) apex_->advance(batch_.times[i], batch_.states[i]);
+    if (apex_ && !apexTap_) apex_->advance(batch_.times[i], batch_.states[i]);
     for (PlotWindow* p : plots)
       p->offer(batch_.times[i], batch_.states[i].data());
   }
   if (batch_.reached) {
     visual_->show(batch_.atTime, batch_.at);
-    if (apex_) apex_->show(batch_.atTime, batch_.at);
+    if (apex_ && !apexTap_) apex_->show(batch_.atTime, batch_.at), apexTime_ = batch_.atTime;
     shownTime_ = batch_.atTime;
     if (apexView_ && apexWindow_->isVisible()) apexView_->update();
   }
@@ -508,7 +518,9 @@ void MainWindow::createTool(const std::string& id) {
     map_->startSeparatrices();
   else if (id == "bifurcation_tree")
     map_->startBifurcationTree();
-  else // the tools whose output is a chart of its own: spectrum, lyapunov, map3d, plot, surface, ram, diagram
+  else if (id == "plot") // a filter: fed live by the running trajectories
+    openPlotWindow(scene_->plot);
+  else // the tools whose output is a chart of its own: spectrum, lyapunov, map3d, surface, ram, diagram
     openChart(id == "diagram" ? "bifurcation" : id);
 }
 
@@ -586,6 +598,31 @@ QWidget* MainWindow::openApexWindow() {
   apexWindow_->raise();
   apexView_->update();
   return apexWindow_;
+}
+
+void MainWindow::followInApex(int id) {
+  if (apexTap_) apexTap_->closed = true;
+  apexTap_ = map_->tapTrajectory(id, PlotSettings{.condition = "t", .period = 0.04, .maxPoints = 1L << 40,
+                                                  .wholeState = true});
+  apexSource_ = apexTap_ ? id : -1;
+  apex_->clear(); // a new trajectory: its own traces
+  if (!apexTap_) apex_->show(shownTime_, scene_->initialState);
+  apexWindow_->setWindowTitle(apexTap_ ? QString("rollviz — apex motion: trajectory %1").arg(id)
+                                       : QString("rollviz — apex motion: the 3D view's run"));
+}
+
+void MainWindow::feedApexFromMap() {
+  if (!apexTap_ || !apex_) return;
+  std::vector<std::vector<double>> states;
+  if (apexTap_->points.take(states) == 0) return;
+  Eigen::VectorXd x(scene_->model->dimension());
+  for (const auto& v : states) { // (t, x...)
+    x = Eigen::Map<const Eigen::VectorXd>(v.data() + 1, x.size());
+    apex_->advance(v[0], x);
+  }
+  apex_->show(states.back()[0], x);
+  apexTime_ = states.back()[0];
+  if (apexWindow_->isVisible()) apexView_->update();
 }
 
 void MainWindow::saveDialog() {

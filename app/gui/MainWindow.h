@@ -1,6 +1,7 @@
 // MainWindow.h -- the main window of the skeleton GUI: the 3D view of a scene with play / pause, reset and
 // speed. The motion is integrated on a TrajectoryStream thread; the GUI thread only draws.
 #pragma once
+#include "dynamics/jobs/PlotTap.h"
 #include "dynamics/jobs/TrajectoryStream.h"
 #include "render/VisualScene.h"
 #include "render/video/VideoExport.h"
@@ -77,8 +78,14 @@ public:
   /// Asks for the plot filter's settings (axes, output condition, period, points; the scene's plot section
   /// proposed) and opens it; `dimensions` 2 or 3.
   void plotDialog(int dimensions);
-  /// Opens (or shows) the apex motion window: the apex view of the trajectory shown in the 3D view.
+  /// Opens (or shows) the apex motion window: the apex view of the trajectory shown in the 3D view, or of the
+  /// map trajectory selected in the tool manager (manual §2.4.5: the Poincaré map outputs into it as it
+  /// integrates, every 1/25 of a time unit).
   QWidget* openApexWindow();
+  /// The trajectory the apex window follows: a map trajectory's job id, or -1 for the 3D view's run.
+  int apexSource() const { return apexSource_; }
+  /// Time of the last state the apex window was given.
+  double apexTime() const { return apexTime_; }
   VisualizerSettings* settings() const { return settings_; }
   /// The appearance edits kept over re-runs (settings panel, toolbar).
   const ViewOptions& viewEdits() const { return edits_; }
@@ -128,6 +135,13 @@ private:
   QWidget* apexWindow_ = nullptr;
   QtVtkWidget* apexView_ = nullptr;
   std::unique_ptr<VisualScene> apex_;
+  int apexSource_ = -1;
+  std::shared_ptr<PlotTap> apexTap_; ///< the followed map trajectory's states
+  double apexTime_ = 0;
+  /// Follows map trajectory `id` in the apex window (-1 or a job that is not one: the 3D view's run).
+  void followInApex(int id);
+  /// Gives the apex window what the followed map trajectory computed since the last frame.
+  void feedApexFromMap();
   // a recording in progress: its own scene, integrator, headless context and exporter
   struct Recording;
   std::unique_ptr<Recording> recorder_;

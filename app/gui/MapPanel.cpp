@@ -52,6 +52,9 @@ void MapPanel::setScene(const Scene& scene) {
   tools_.clear();
   for (auto& w : multiplierWindows_) // the families of another problem
     if (w) w->clear();
+  for (auto& w : diagramWindows_) // drawn for the old scene: they keep their chart, no longer marked
+    if (w) w->setMarks({});
+  diagramWindows_.clear(), marked_.clear(), diagrams_.reset();
   scene_ = &scene;
   resetMap3D(false);
   const auto names = PoincareMap(*scene.model, scene.startIntegrator(), scene.poincare).coordinateNames();
@@ -278,7 +281,8 @@ void MapPanel::addDiagramWindow(ChartWindow* window) {
 void MapPanel::markDiagrams(bool force) {
   std::erase_if(diagramWindows_, [](const QPointer<ChartWindow>& w) { return w.isNull(); });
   if (diagramWindows_.empty() || !scene_) return;
-  const auto diagrams = scene_->model->diagrams();
+  if (!diagrams_) diagrams_ = scene_->model->diagrams(); // built once per scene, not on every drain
+  const std::vector<Diagram>& diagrams = *diagrams_;
   std::vector<std::vector<ChartWindow::Mark>> marks; // per window: its diagram's plane
   for (auto& w : diagramWindows_) {
     auto& m = marks.emplace_back();
@@ -293,6 +297,21 @@ void MapPanel::markDiagrams(bool force) {
   marked_ = marks;
   for (std::size_t i = 0; i < diagramWindows_.size(); ++i)
     diagramWindows_[i]->setMarks(marks[i]);
+}
+
+std::shared_ptr<PlotTap> MapPanel::tapTrajectory(int id, const PlotSettings& settings) {
+  for (const auto& s : series_)
+    if (s.job->id() == id) {
+      try {
+        PlotSampler check(*scene_->model, settings); // fail here, not on the job's thread
+      } catch (const InputError&) {
+        return nullptr;
+      }
+      auto tap = std::make_shared<PlotTap>(settings);
+      s.task->taps().add(tap);
+      return tap;
+    }
+  return nullptr;
 }
 
 std::vector<PlotWindow*> MapPanel::plotWindows() {
@@ -390,9 +409,14 @@ void MapPanel::removeJob(Job& job) {
     } else {
       ++it;
     }
+  std::vector<int> ids;
+  for (const Job* j : gone)
+    ids.push_back(j->id());
   jobs_.remove(job);
   view_->update();
   resetMap3D(true); // its series follow the trajectories' order
+  for (int id : ids)
+    emit jobRemoved(id);
 }
 
 void MapPanel::editJob(Job& job, const Scene& edited) {

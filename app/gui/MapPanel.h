@@ -7,6 +7,7 @@
 #pragma once
 #include "app/gui/ChartWindow.h"
 #include "dynamics/jobs/JobTree.h"
+#include "dynamics/jobs/PlotTap.h"
 #include "render/charts/PoincareChart.h"
 #include "scenes/Scene.h"
 
@@ -15,6 +16,7 @@
 #include <complex>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 class QComboBox;
@@ -91,6 +93,9 @@ public:
   /// a trajectory is a point on the plane of first integrals), kept up to date as trajectories come, go and
   /// are edited.
   void addDiagramWindow(ChartWindow* window);
+  /// A tap on trajectory `id` (its job samples its own steps for it from now on); nullptr when `id` is not a
+  /// trajectory or the settings do not fit the problem.
+  std::shared_ptr<PlotTap> tapTrajectory(int id, const PlotSettings& settings);
   /// The open plot filters (the 3D view's run offers them its states too).
   std::vector<PlotWindow*> plotWindows();
   /// Points drawn in the Map3D window (tests).
@@ -108,6 +113,8 @@ public:
 
 signals:
   void message(const QString& text);
+  /// A job was deleted (with what the panel drew of it).
+  void jobRemoved(int id);
 
 protected:
   bool eventFilter(QObject* watched, QEvent* event) override;
@@ -158,6 +165,7 @@ private:
   /// Where each trajectory lies on the scene's first bifurcation diagram; marks the diagram windows with it.
   void markDiagrams(bool force);
   std::vector<QPointer<ChartWindow>> diagramWindows_;
+  std::optional<std::vector<Diagram>> diagrams_; ///< the scene's, once a diagram window is open
   std::vector<std::vector<ChartWindow::Mark>> marked_; ///< the marks drawn, per window
   /// The scene's tool setup; nothing (with a message) when the scene cannot give one.
   std::unique_ptr<class SceneMap> sceneMap();

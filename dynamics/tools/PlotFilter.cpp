@@ -10,7 +10,8 @@ namespace rv {
 
 PlotSampler::PlotSampler(const Model& model, const PlotSettings& s, const std::string& context)
     : settings_(s) {
-  if (s.axes.size() != 2 && s.axes.size() != 3) throw InputError(context + ".axes: give 2 or 3 observables");
+  if (!s.wholeState && s.axes.size() != 2 && s.axes.size() != 3)
+    throw InputError(context + ".axes: give 2 or 3 observables");
   if (!(s.period > 0 && std::isfinite(s.period))) throw InputError(context + ".period: must be positive");
   if (s.maxPoints < 1) throw InputError(context + ".max_points: must be at least 1");
   const auto find = [&](const std::string& id, const std::string& field) {
@@ -20,12 +21,18 @@ PlotSampler::PlotSampler(const Model& model, const PlotSettings& s, const std::s
     return model.observables()[k].value;
   };
   const char* names[3] = {"x", "y", "z"};
-  for (std::size_t i = 0; i < s.axes.size(); ++i)
+  for (std::size_t i = 0; i < s.axes.size() && !s.wholeState; ++i)
     axes_.push_back(find(s.axes[i], names[i]));
+  dimension_ = model.dimension();
   condition_ = find(s.condition, "condition");
 }
 
 std::vector<double> PlotSampler::valuesAt(double t, const double* x) const {
+  if (settings_.wholeState) {
+    std::vector<double> v{t};
+    v.insert(v.end(), x, x + dimension_);
+    return v;
+  }
   std::vector<double> v;
   for (const auto& f : axes_)
     v.push_back(f(t, x));

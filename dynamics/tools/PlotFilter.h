@@ -17,6 +17,9 @@ struct PlotSettings {
   double period = 0.05;                       ///< its change between two points
   long maxPoints = 20000;
   double timeLimit = 1000; ///< integration time at most (a condition that stops changing ends the plot)
+  /// Keep the whole state, (t, x...), instead of the axes' values (a view of the motion fed by a trajectory:
+  /// the apex filter); the axes are then not used.
+  bool wholeState = false;
 };
 
 /// The filter's rule applied to states as they come (a running trajectory feeding an open plot window):
@@ -43,6 +46,7 @@ private:
   PlotSettings settings_;
   std::vector<std::function<double(double, const double*)>> axes_;
   std::function<double(double, const double*)> condition_;
+  int dimension_ = 0; ///< of the state (wholeState)
   std::vector<double> values_;
   double last_ = 0; ///< the condition's value at the last kept point; in time: the first time offered
   Eigen::VectorXd work_;
