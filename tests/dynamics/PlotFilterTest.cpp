@@ -1,6 +1,7 @@
 // The 2D / 3D plot filters' sampling (manual §2.4.1-2): output when the condition has changed by the period.
 #include "dynamics/tools/PlotFilter.h"
 #include "dynamics/core/Errors.h"
+#include "dynamics/core/TimeSampler.h"
 #include "dynamics/integrators/Everhart.h"
 #include "tests/dynamics/TestSupport.h"
 
@@ -30,6 +31,31 @@ TEST(PlotFilter, InTimeThePointsLandOnMultiplesOfThePeriod) {
   s.maxPoints = 10;
   HenonHeilesRun again;
   EXPECT_EQ(samplePlot(*again.model, again.integrator, s, {}).size(), 10u);
+}
+
+// the apex filter's feed: whole states at exact multiples of the period, step by step as a running map
+// offers them, the same as sampling the dense output directly
+TEST(PlotFilter, WholeStatesStepByStepAreTheDenseOutputAtTheMultiples) {
+  HenonHeilesRun r, again;
+  PlotSampler sampler(*r.model,
+                      PlotSettings{.condition = "t", .period = 0.3, .maxPoints = 50, .wholeState = true});
+  std::vector<std::vector<double>> got;
+  while (got.size() < 50) {
+    r.integrator.step();
+    sampler.offerStep(r.integrator, [&](const std::vector<double>& v) { got.push_back(v); });
+  }
+  std::vector<Eigen::VectorXd> expected;
+  sampleUniform(again.integrator, 0.3, 50, [&](double, const Eigen::VectorXd& x) {
+    expected.push_back(x);
+    return true;
+  });
+  ASSERT_EQ(got.size(), 50u);
+  for (std::size_t k = 0; k < got.size(); ++k) {
+    ASSERT_EQ(got[k].size(), std::size_t(r.model->dimension() + 1));
+    EXPECT_NEAR(got[k][0], 0.3 * k, 1e-12);
+    for (int i = 0; i < r.model->dimension(); ++i)
+      EXPECT_NEAR(got[k][i + 1], expected[k][i], 1e-13);
+  }
 }
 
 TEST(PlotFilter, ByAnObservableEachPointMovesItByThePeriod) {
