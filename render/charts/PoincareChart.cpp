@@ -80,14 +80,39 @@ vtkSmartPointer<vtkTable> tableOf(const std::vector<double>& x, const std::vecto
 }
 } // namespace
 
+namespace {
+// the indices of the smallest and largest x and y: kept by the thinning, so that the data's bounds (and the
+// automatic ranges) do not change with the view
+std::array<std::size_t, 4> extremes(const std::vector<double>& x, const std::vector<double>& y) {
+  std::array<std::size_t, 4> e{0, 0, 0, 0};
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    if (x[k] < x[e[0]]) e[0] = k;
+    if (x[k] > x[e[1]]) e[1] = k;
+    if (y[k] < y[e[2]]) e[2] = k;
+    if (y[k] > y[e[3]]) e[3] = k;
+  }
+  return e;
+}
+} // namespace
+
+void PoincareChart::setPoints(vtkPlot* plot, int index, const std::vector<double>& x,
+                              const std::vector<double>& y) {
+  std::erase_if(large_, [&](const LargeSeries& s) { return s.index == index; });
+  if (x.size() <= kThinAbove) return plot->SetInputData(tableOf(x, y, index), 0, 1);
+  // a large series: only its extremes until the thinning before the next frame (a table of every point
+  // would cost more than drawing the thinned ones)
+  large_.push_back({plot, index, x, y});
+  thinnedFor_ = {};
+  std::vector<double> ex, ey;
+  for (std::size_t k : extremes(x, y))
+    ex.push_back(x[k]), ey.push_back(y[k]);
+  plot->SetInputData(tableOf(ex, ey, index), 0, 1);
+}
+
 int PoincareChart::addSeries(const std::vector<double>& x, const std::vector<double>& y, const Rgb& c) {
   vtkPlot* plot = chart_->AddPlot(vtkChart::POINTS);
   const int index = static_cast<int>(chart_->GetNumberOfPlots()) - 1;
-  plot->SetInputData(tableOf(x, y, index), 0, 1);
-  if (x.size() > kThinAbove) {
-    large_.push_back({plot, index, x, y});
-    thinnedFor_ = {};
-  }
+  setPoints(plot, index, x, y);
   plot->SetColor(static_cast<unsigned char>(255 * c[0]), static_cast<unsigned char>(255 * c[1]),
                  static_cast<unsigned char>(255 * c[2]), 255);
   if (auto* points = vtkPlotPoints::SafeDownCast(plot)) {
@@ -159,9 +184,7 @@ void PoincareChart::setRanges(double x0, double x1, double y0, double y1) {
 
 void PoincareChart::setSeries(int index, const std::vector<double>& x, const std::vector<double>& y) {
   if (vtkPlot* plot = chart_->GetPlot(index)) {
-    std::erase_if(large_, [&](const LargeSeries& s) { return s.index == index; });
-    if (x.size() > kThinAbove) large_.push_back({plot, index, x, y}), thinnedFor_ = {};
-    plot->SetInputData(tableOf(x, y, index), 0, 1);
+    setPoints(plot, index, x, y);
     chart_->RecalculateBounds();
   }
 }
@@ -202,19 +225,13 @@ void PoincareChart::thinLargeSeries() {
   for (auto& s : large_) {
     std::fill(taken.begin(), taken.end(), 0);
     std::vector<double> kx, ky;
-    // the extremes stay, so that the data's bounds (and automatic ranges) do not change with the view
-    std::size_t lo[2] = {0, 0}, hi[2] = {0, 0};
     for (std::size_t k = 0; k < s.x.size(); ++k) {
-      if (s.x[k] < s.x[lo[0]]) lo[0] = k;
-      if (s.x[k] > s.x[hi[0]]) hi[0] = k;
-      if (s.y[k] < s.y[lo[1]]) lo[1] = k;
-      if (s.y[k] > s.y[hi[1]]) hi[1] = k;
       const double i = (s.x[k] - x0) * sx, j = (s.y[k] - y0) * sy;
       if (!(i >= 0 && i < nx && j >= 0 && j < ny)) continue;
       auto& t = taken[std::size_t(j) * nx + std::size_t(i)];
       if (!t) t = 1, kx.push_back(s.x[k]), ky.push_back(s.y[k]);
     }
-    for (std::size_t k : {lo[0], hi[0], lo[1], hi[1]})
+    for (std::size_t k : extremes(s.x, s.y)) // the data's bounds stay those of every point
       kx.push_back(s.x[k]), ky.push_back(s.y[k]);
     s.plot->SetInputData(tableOf(kx, ky, s.index), 0, 1);
   }

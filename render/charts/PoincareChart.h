@@ -22,8 +22,9 @@ class PoincareChart final : public Chart {
 public:
   PoincareChart(std::string xTitle, std::string yTitle);
   ~PoincareChart() override;
-  /// Series with more points than this are thinned to what the screen can show (see LargeSeries).
-  static constexpr std::size_t kThinAbove = 100000;
+  /// Series with more points than this are thinned to what the screen can show (see LargeSeries): drawing
+  /// 10^5 markers costs ~100 ms on software GL, thinning them a few.
+  static constexpr std::size_t kThinAbove = 20000;
   /// Adds a trajectory's points (x[i], y[i]); returns its index.
   int addSeries(const std::vector<double>& x, const std::vector<double>& y, const Rgb& color);
   /// Adds a curve through (x[i], y[i]), broken where a value is NaN; returns the index of its first piece.
@@ -66,6 +67,8 @@ private:
     std::vector<double> x, y;
   };
   void thinLargeSeries();
+  /// A series' points: all of them, or for a large one its extremes until thinLargeSeries runs.
+  void setPoints(vtkPlot* plot, int index, const std::vector<double>& x, const std::vector<double>& y);
   std::vector<LargeSeries> large_;
   std::array<double, 6> thinnedFor_{};
   int selected_ = -1;
