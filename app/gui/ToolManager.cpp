@@ -31,11 +31,12 @@ ToolManager::ToolManager(JobTree& jobs, std::function<void(Job&)> remove, QWidge
     buttons->addWidget(b);
   };
   button("Stop", "stop the selected tool (it can continue later)", &ToolManager::stopSelected);
-  button("Continue", "continue the selected tool from where it stopped", &ToolManager::continueSelected);
+  button("Start", "start the selected tool, or continue it from where it stopped",
+         &ToolManager::continueSelected);
   button("Restart", "start the selected tool again from the beginning", &ToolManager::restartSelected);
   button(
       "Edit",
-      "give the selected (stopped) tool the control panel's values (problem, method, its settings); Continue "
+      "give the selected (stopped) tool the control panel's values (problem, method, its settings); Start "
       "then goes on with them: a map or fixed-point search from its stop point, a continuation, separatrix "
       "or bifurcation tree from its beginning",
       &ToolManager::editSelected);
@@ -148,7 +149,7 @@ void ToolManager::editSelected() {
   }
   try {
     editor_(*job);
-    emit message(QString("tool %1 edited: Continue goes on with the new values").arg(job->id()));
+    emit message(QString("tool %1 edited: Start goes on with the new values").arg(job->id()));
   } catch (const std::exception& e) {
     emit message(QString("cannot edit tool %1: %2").arg(job->id()).arg(e.what()));
   }
