@@ -382,7 +382,8 @@ void MainWindow::tick() {
   if (!stream_->take(batch_)) return;
   const std::vector<PlotWindow*> plots = map_->plotWindows(); // drawn by the map's drain
   for (std::size_t i = 0; i < batch_.states.size(); ++i) {
-    if (lastStepEnd_ && batch_.times[i] != *lastStepEnd_) lastStep_ = std::abs(batch_.times[i] - *lastStepEnd_);
+    if (lastStepEnd_ && batch_.times[i] != *lastStepEnd_)
+      lastStep_ = std::abs(batch_.times[i] - *lastStepEnd_);
     lastStepEnd_ = batch_.times[i];
     visual_->advance(batch_.times[i], batch_.states[i]);
     if (apex_ && !apexTap_) apex_->advance(batch_.times[i], batch_.states[i]);
@@ -602,8 +603,8 @@ QWidget* MainWindow::openApexWindow() {
 
 void MainWindow::followInApex(int id) {
   if (apexTap_) apexTap_->closed = true;
-  apexTap_ = map_->tapTrajectory(id, PlotSettings{.condition = "t", .period = 0.04, .maxPoints = 1L << 40,
-                                                  .wholeState = true});
+  apexTap_ = map_->tapTrajectory(
+      id, PlotSettings{.condition = "t", .period = 0.04, .maxPoints = 1L << 40, .wholeState = true});
   apexSource_ = apexTap_ ? id : -1;
   apex_->clear(); // a new trajectory: its own traces
   if (!apexTap_) apex_->show(shownTime_, scene_->initialState);

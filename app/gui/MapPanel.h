@@ -165,7 +165,7 @@ private:
   /// Where each trajectory lies on the scene's first bifurcation diagram; marks the diagram windows with it.
   void markDiagrams(bool force);
   std::vector<QPointer<ChartWindow>> diagramWindows_;
-  std::optional<std::vector<Diagram>> diagrams_; ///< the scene's, once a diagram window is open
+  std::optional<std::vector<Diagram>> diagrams_;       ///< the scene's, once a diagram window is open
   std::vector<std::vector<ChartWindow::Mark>> marked_; ///< the marks drawn, per window
   /// The scene's tool setup; nothing (with a message) when the scene cannot give one.
   std::unique_ptr<class SceneMap> sceneMap();
