@@ -262,8 +262,7 @@ int MapPanel::fixedPointsFound() const {
 }
 
 void MapPanel::feedPlots(const Series& s) {
-  std::erase_if(plots_, [](const QPointer<PlotWindow>& p) { return p.isNull(); });
-  for (auto& p : plots_)
+  for (PlotWindow* p : plotWindows())
     s.task->taps().add(p->follow(s.job->id(), s.colour));
 }
 
@@ -286,12 +285,14 @@ void MapPanel::markDiagrams(bool force) {
   std::vector<std::vector<ChartWindow::Mark>> marks; // per window: its diagram's plane
   for (auto& w : diagramWindows_) {
     auto& m = marks.emplace_back();
-    for (const auto& d : diagrams)
-      if (d.id == w->diagram() || (w->diagram().empty() && &d == &diagrams.front()))
-        for (const auto& s : series_) {
-          const DiagramPoint p = d.place(s.task->levelState().data());
-          m.push_back({p[0], p[1], s.colour});
-        }
+    try {
+      const Diagram& d = findDiagram(diagrams, w->diagram(), "diagram", scene_->model->info().id);
+      for (const auto& s : series_) {
+        const DiagramPoint p = d.place(s.task->levelState().data());
+        m.push_back({p[0], p[1], s.colour});
+      }
+    } catch (const InputError&) { // none such: the window says why its chart failed
+    }
   }
   if (!force && marks == marked_) return;
   marked_ = marks;
