@@ -43,9 +43,8 @@ bool MultipliersWindow::offer(int job, double parameter, const std::vector<std::
   Family& f = families_[job];
   // "changed by the period": a family stepping by a divisor of it lands on it up to rounding
   const double period = period_->value();
-  if (!everyStep && f.started && std::abs(parameter - f.last) < period * (1 - 1e-9)) return false;
-  f.started = true;
-  f.last = parameter;
+  if (!everyStep && !f.parameters.empty() && std::abs(parameter - f.parameters.back()) < period * (1 - 1e-9))
+    return false;
   f.outputs.push_back(m);
   f.parameters.push_back(parameter);
   dirty_ = true;

@@ -44,9 +44,7 @@ protected:
   const Chart* chart() const override;
 
 private:
-  struct Family {
-    double last = 0;
-    bool started = false;
+  struct Family { ///< what was output, with the family's parameter at each output
     std::vector<std::vector<std::complex<double>>> outputs;
     std::vector<double> parameters;
   };
