@@ -407,12 +407,15 @@ private slots:
     QVERIFY(plot2 && plot3);
     QCOMPARE(plot3->dimensions(), 3);
     MapPanel* map = window_->mapPanel();
-    QVERIFY(map->startAt(0.05, 0.1)); // a second trajectory, started after the filters opened
-    QCOMPARE(map->trajectories(), 2);
+    // two trajectories started with the filters open (the scene's own may have finished before they opened:
+    // a filter gets what the tools compute while it is open)
+    QVERIFY(map->startAt(0.05, 0.1));
+    QVERIFY(map->startAt(-0.1, 0.05));
+    QCOMPARE(map->trajectories(), 3);
     std::vector<int> ids;
     for (Job* j : map->jobs().jobs())
       ids.push_back(j->id());
-    QCOMPARE(ids.size(), std::size_t(2));
+    ids.erase(ids.begin()); // the scene's own
     for (int id : ids) {
       QTRY_VERIFY_WITH_TIMEOUT(plot2->points(id) >= 300 && plot3->points(id) >= 300, 20000);
       QCOMPARE(plot2->points(id), 300L); // max points per trajectory
