@@ -25,20 +25,23 @@
 #include <QTemporaryDir>
 #include <QtTest>
 #include <cstdio>
+#include <functional>
 #include <set>
 
 namespace rv {
 
 namespace {
-// pixels that are strongly red (the recoloured ball)
-long redPixels(const QImage& img) {
+// how many pixels of a picture are of a kind
+long countPixels(const QImage& img, const std::function<bool(const QColor&)>& kind) {
   long n = 0;
   for (int y = 0; y < img.height(); ++y)
-    for (int x = 0; x < img.width(); ++x) {
-      const QColor c = img.pixelColor(x, y);
-      n += c.red() > 150 && c.green() < 90 && c.blue() < 90;
-    }
+    for (int x = 0; x < img.width(); ++x)
+      n += kind(img.pixelColor(x, y));
   return n;
+}
+// pixels that are strongly red (the recoloured ball)
+long redPixels(const QImage& img) {
+  return countPixels(img, [](const QColor& c) { return c.red() > 150 && c.green() < 90 && c.blue() < 90; });
 }
 // a real picture, not a blank widget: many distinct colours
 bool varied(const QImage& img) {
@@ -50,11 +53,7 @@ bool varied(const QImage& img) {
 }
 // pixels drawn darker than the charts' white background and light grid
 long inked(const QImage& img) {
-  long n = 0;
-  for (int y = 0; y < img.height(); ++y)
-    for (int x = 0; x < img.width(); ++x)
-      n += qGray(img.pixel(x, y)) < 200;
-  return n;
+  return countPixels(img, [](const QColor& c) { return qGray(c.rgb()) < 200; });
 }
 
 // a window's screenshot kept as a test artifact; true when it is a real picture (not one flat colour: the
@@ -309,13 +308,8 @@ private slots:
     QVERIFY(keep(window_->grab().toImage(), "window_main_" + problem + ".png"));
     // colour of output and Set range act on what the map draws of this trajectory
     const auto green = [](const QImage& img) { // pure green: no series has it by default
-      long n = 0;
-      for (int y = 0; y < img.height(); ++y)
-        for (int x = 0; x < img.width(); ++x) {
-          const QColor c = img.pixelColor(x, y);
-          n += c.green() > 200 && c.red() < 60 && c.blue() < 60;
-        }
-      return n;
+      return countPixels(img,
+                         [](const QColor& c) { return c.green() > 200 && c.red() < 60 && c.blue() < 60; });
     };
     QCOMPARE(green(mapView->grabFramebuffer()), 0L);
     tools->colourSelected(Rgb{0.0, 1.0, 0.0});
@@ -427,12 +421,7 @@ private slots:
     }
     QTest::qWait(300);
     QVERIFY(keep(plot3->grab().toImage(), "window_plot3d.png"));
-    const QImage img = plot3->view()->grabFramebuffer();
-    int drawn = 0;
-    for (int y = 0; y < img.height(); y += 2)
-      for (int x = 0; x < img.width(); x += 2)
-        drawn += qGray(img.pixel(x, y)) < 200;
-    QVERIFY2(drawn > 100, "the 3D plot draws the points");
+    QVERIFY2(inked(plot3->view()->grabFramebuffer()) > 400, "the 3D plot draws the points");
     // selecting a trajectory in the tool manager emphasises it in the filters too (its points twice as big)
     const long plain = inked(plot2->view()->grabFramebuffer());
     window_->toolManager()->refresh();
