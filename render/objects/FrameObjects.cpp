@@ -3,6 +3,7 @@
 #include "render/objects/Actors.h"
 #include "render/objects/ApexObject.h"
 
+#include <Eigen/Geometry>
 #include <cmath>
 #include <vtkActor.h>
 #include <vtkArrowSource.h>
