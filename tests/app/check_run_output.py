@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Checks what `./run` leaves with no display (CI calls this after it): out/chaplygin_ball.png is a real 1280x720
 picture and out/chaplygin_ball.mp4 an H.264 video of 125 frames at 1280x720 (5 s at 25 fps), its frames not blank.
 Usage: check_run_output.py OUT_DIR. Prints one line per check and a closing 'N passed, N failed' line."""
