@@ -3,6 +3,7 @@
 #pragma once
 #include "scenes/Scene.h"
 
+#include <istream>
 #include <string>
 #include <vector>
 
@@ -18,7 +19,11 @@ struct SceneOverride {
 /// Parses "KEY=VALUE"; throws InputError naming the flag when there is no '='.
 SceneOverride parseOverride(const std::string& text);
 
-/// Loads and validates a scene file.
+/// Parses a scene's JSON; InputError "source:path: ..." when it is malformed or writes a key twice in one
+/// object.
+nlohmann::json parseSceneJson(std::istream& in, const std::string& source);
+
+/// Loads and validates a scene file (a folder, an unreadable or empty file: InputError naming it).
 Scene loadScene(const std::string& path, const std::vector<SceneOverride>& overrides = {});
 
 /// Validates a scene document; `source` names it in messages.

@@ -123,5 +123,56 @@ TEST(SceneLoader, MalformedJsonIsAnInputErrorNamingTheFile) {
   }
 }
 
+std::string loadError(const std::string& path) {
+  try {
+    loadScene(path);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+std::string writeFile(const std::string& name, const std::string& text) {
+  const std::string path = ::testing::TempDir() + "/" + name;
+  FILE* f = std::fopen(path.c_str(), "w");
+  std::fputs(text.c_str(), f);
+  std::fclose(f);
+  return path;
+}
+
+TEST(SceneLoader, KeyWrittenTwiceIsNamedWithItsPath) {
+  // JSON leaves duplicate keys undefined; the parser would keep the last one silently
+  const std::string top = writeFile("dup1.json", R"({"problem": "lorenz", "problem": "lorenz"})");
+  EXPECT_NE(loadError(top).find(top + ":problem: key written twice"), std::string::npos) << loadError(top);
+  const std::string nested =
+      writeFile("dup2.json",
+                R"({"problem": "lorenz", "parameters": {"rho": 28, "sigma": 10, "rho": 20}, "initial": {}})");
+  EXPECT_NE(loadError(nested).find(nested + ":parameters.rho: key written twice"), std::string::npos)
+      << loadError(nested);
+  const std::string inArray =
+      writeFile("dup3.json", R"({"problem": "lorenz", "view": {"list": [1, {"a": 1}, {"a": 1, "a": 2}]}})");
+  EXPECT_NE(loadError(inArray).find(inArray + ":view.list.2.a: key written twice"), std::string::npos)
+      << loadError(inArray);
+  // the same key in two objects is fine
+  const std::string twoObjects = writeFile(
+      "nodup.json",
+      R"({"problem": "lorenz", "parameters": {"rho": 28}, "initial": {"state": {"x": 1, "y": 1, "z": 1}},
+                        "integrator": {"method": "rk4", "step": 0.01}})");
+  EXPECT_EQ(loadError(twoObjects), "(no error)");
+}
+
+TEST(SceneLoader, FolderEmptyAndMissingScenePathsArePlainInputErrors) {
+  const std::string dir = ::testing::TempDir();
+  EXPECT_NE(loadError(dir).find(dir + ": is a folder, not a scene file"), std::string::npos)
+      << loadError(dir);
+  const std::string empty = writeFile("empty.json", "");
+  EXPECT_NE(loadError(empty).find(empty + ": the scene file is empty"), std::string::npos)
+      << loadError(empty);
+  const std::string missing = dir + "/no_such_scene.json";
+  EXPECT_NE(loadError(missing).find(missing + ": cannot open the scene file (no such file)"),
+            std::string::npos)
+      << loadError(missing);
+}
+
 } // namespace
 } // namespace rv
