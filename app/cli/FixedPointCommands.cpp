@@ -2,6 +2,7 @@
 // `ram`, `diagram`: the fixed-point family of tools (dynamics/tools) on a scene's map, in the foreground,
 // with progress on a terminal and Ctrl-C keeping what was computed (exit 130). Settings come from the scene's
 // sections (rollviz list tools) and --set SECTION.ID=VALUE; the flags below are the everyday ones.
+#include "app/cli/Checkpoint.h"
 #include "app/cli/Commands.h"
 #include "app/cli/Output.h"
 #include "app/cli/Progress.h"
@@ -142,7 +143,7 @@ nlohmann::json changeJson(const TypeChange& t) {
 
 struct GridArgs {
   MapArgs map;
-  std::string x, y, z, output, level;
+  std::string x, y, z, output, level, checkpoint;
   double step = 0;
   int threads = 0;
 };
@@ -155,6 +156,7 @@ void addGridArgs(CLI::App* cmd, GridArgs& a, bool ram) {
   cmd->add_option("--step", a.step, "grid step along every axis (default: grid.step_x, step_y, step_z)");
   cmd->add_option("--threads", a.threads, "number of threads (default: grid.threads)");
   cmd->add_option("-o,--output", a.output, "CSV file (default: standard output)");
+  addCheckpointOption(cmd, a.checkpoint);
   if (ram)
     cmd->add_option("--level", a.level,
                     "2D maps: observable giving the energy level's height above the region (default: the "
@@ -185,9 +187,16 @@ int runGrid(const GridArgs& a, MapGrid::Kind kind) {
   }
   const ReturnMap map = s->map();
   MapGrid grid(map, kind, g, a.level);
+  // the result does not depend on the number of threads: a run may be resumed with another
+  Checkpoint checkpoint(a.checkpoint, kind == MapGrid::Kind::Surface ? "surface" : "ram",
+                        fmt::format("{} --x {} --y {} --z {} --step {} --level {} {}",
+                                    s->scene().document.dump(), a.x, a.y, a.z, a.step, a.level, a.map.order));
+  if (auto saved = checkpoint.load()) grid.restore(saved->state);
   Output out(a.output);
   Progress progress(kind == MapGrid::Kind::Surface ? "surface" : "ram");
-  const bool complete = grid.run(interruptibleControl(progress));
+  const bool complete =
+      checkpoint.run([&](const ToolControl& c) { return grid.run(c); },
+                     [&](Snapshot& state) { grid.save(state); }, interruptibleControl(progress));
   const int dims = g.threeD ? 3 : map.dimension() == 3 ? 3 : 2;
   std::vector<std::string> names(map.coordinateNames().begin(), map.coordinateNames().begin() + dims);
   if (kind == MapGrid::Kind::Surface) {
@@ -209,6 +218,7 @@ int runGrid(const GridArgs& a, MapGrid::Kind kind) {
         printRow(out.get(), row);
       }
   out.commit();
+  if (complete) checkpoint.finish();
   return complete ? 0 : 130;
 }
 

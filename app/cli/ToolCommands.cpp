@@ -1,5 +1,6 @@
 // ToolCommands.cpp -- `rollviz poincare`, `rollviz lyapunov`, `rollviz spectrum`: the tools of dynamics/tools
 // run in the foreground, with progress on a terminal and Ctrl-C keeping what was computed (exit 130).
+#include "app/cli/Checkpoint.h"
 #include "app/cli/Commands.h"
 #include "app/cli/Output.h"
 #include "app/cli/Progress.h"
@@ -29,13 +30,15 @@ void printPeaks(const std::string& function, const SpectrumResult& r) {
 struct PoincareOptions {
   SceneArgs scene;
   long points = 0;
-  std::string output;
+  std::string output, checkpoint;
 };
 struct LyapunovOptions {
   SceneArgs scene;
   double time = 0;
   bool json = false;
+  std::string checkpoint;
 };
+
 struct SpectrumOptions {
   SceneArgs scene;
   std::string function, output;
@@ -52,23 +55,49 @@ Command addPoincareCommand(CLI::App& app) {
   cmd->add_option("--points", o->points, "how many points (default: the scene's poincare.points)");
   cmd->add_option("-o,--output", o->output,
                   "CSV file: the map coordinates, t, sheet (default: standard output)");
+  addCheckpointOption(cmd, o->checkpoint);
   return {cmd, [o] {
             if (o->points < 0) throw InputError("--points: must be positive");
             const Scene scene = o->scene.load();
             const auto map = scenePoincareMap(scene, o->points);
+            Checkpoint checkpoint(o->checkpoint, "poincare",
+                                  scene.document.dump() + " --points " + std::to_string(o->points));
             Output out(o->output);
-            for (const auto& n : map->coordinateNames())
-              std::fprintf(out.get(), "%s,", n.c_str());
-            std::fprintf(out.get(), "t,sheet\n");
+            std::string text; // what is written, kept for the checkpoint
+            if (auto saved = checkpoint.load()) {
+              map->restore(saved->state);
+              text = std::move(saved->text);
+            } else {
+              for (const auto& n : map->coordinateNames())
+                text += n + ",";
+              text += "t,sheet\n";
+            }
+            std::fputs(text.c_str(), out.get());
             Progress progress("poincare");
-            const ToolControl control = interruptibleControl(progress);
-            while (auto p = map->next(control)) {
-              for (double c : p->coordinates)
-                std::fprintf(out.get(), "%.17g,", c);
-              std::fprintf(out.get(), "%.17g,%d\n", p->time, p->sheet);
+            const ToolControl control = checkpoint.stoppingWhenDue(interruptibleControl(progress));
+            for (;;) {
+              if (auto p = map->next(control)) {
+                const auto start = text.size();
+                for (double c : p->coordinates)
+                  text += fmt::format("{:.17g},", c);
+                text += fmt::format("{:.17g},{}\n", p->time, p->sheet);
+                std::fputs(text.c_str() + start, out.get());
+                if (!checkpoint.enabled()) text.clear();
+                continue;
+              }
+              // stopped between steps: a due save goes on, Ctrl-C saves and ends, the end of the map ends
+              if (interrupted() || checkpoint.due()) {
+                Snapshot state;
+                map->save(state);
+                checkpoint.save(state, text);
+                if (!interrupted()) continue;
+              }
+              break;
             }
             out.commit(); // a failed integration throws before this: no file is left behind
-            return interrupted() ? 130 : 0;
+            if (interrupted()) return 130;
+            checkpoint.finish();
+            return 0;
           }};
 }
 
@@ -78,6 +107,7 @@ Command addLyapunovCommand(CLI::App& app) {
   addSceneArgs(cmd, o->scene);
   cmd->add_option("--time", o->time, "integration time (default: the scene's lyapunov.time)");
   cmd->add_flag("--json", o->json, "print one JSON object: exponents, sum, time, converged");
+  addCheckpointOption(cmd, o->checkpoint);
   return {cmd, [o] {
             const Scene scene = o->scene.load();
             LyapunovSettings s = scene.lyapunov;
@@ -85,10 +115,16 @@ Command addLyapunovCommand(CLI::App& app) {
             if (o->time > 0) s.maxTime = o->time;
             const RunSpec spec = scene.runSpec();
             const Model& model = *scene.model;
+            Checkpoint checkpoint(o->checkpoint, "lyapunov",
+                                  scene.document.dump() + fmt::format(" --time {}", s.maxTime));
+            LyapunovRun run(
+                model, [&] { return spec.makeIntegrator(model); }, scene.initialState, s);
+            if (auto saved = checkpoint.load()) run.restore(saved->state);
             Progress progress("lyapunov");
-            const LyapunovResult r = lyapunovExponents(
-                model, [&] { return spec.makeIntegrator(model); }, scene.initialState, s, {},
-                interruptibleControl(progress));
+            checkpoint.run([&](const ToolControl& c) { return run.run({}, c); },
+                           [&](Snapshot& state) { run.save(state); }, interruptibleControl(progress));
+            const LyapunovResult r = run.result();
+            if (!r.stopped) checkpoint.finish();
             if (o->json) {
               nlohmann::json j{{"exponents", r.last.exponents},
                                {"sum", r.last.sum()},

@@ -259,4 +259,18 @@ void Everhart::interpolate(double t, Eigen::VectorXd& out) const {
   }
 }
 
+void Everhart::save(Snapshot& s) const {
+  Integrator::save(s);
+  s.put(havePrevious_ ? 1 : 0);
+  s.put(F_), s.put(predicted_), s.put(correction_), s.put(compensation_), s.put(f1_);
+}
+
+void Everhart::restore(Snapshot& s) {
+  Integrator::restore(s);
+  havePrevious_ = s.get() != 0;
+  s.get(F_), s.get(predicted_), s.get(correction_), s.get(compensation_), s.get(f1_);
+  if (F_.rows() != x_.size() || F_.cols() != n_)
+    throw InputError("checkpoint: saved for another Everhart order");
+}
+
 } // namespace rv

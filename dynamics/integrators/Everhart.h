@@ -26,6 +26,8 @@ public:
   /// One step; throws ComputationError when the state stops being finite.
   void step() override;
   void interpolate(double t, Eigen::VectorXd& out) const override;
+  void save(Snapshot& s) const override;
+  void restore(Snapshot& s) override;
 
   int order() const { return 2 * n_ - 1; }
   /// Spacings c_0 = 0 < c_1 < ... < c_{n-1} < 1 on the unit step.

@@ -21,6 +21,19 @@ void Integrator::start(const Model& model, double t0, const Eigen::VectorXd& x0,
   evaluations_ = 0;
 }
 
+void Integrator::save(Snapshot& s) const {
+  s.put(t_), s.put(tPrev_), s.put(direction_), s.put(static_cast<double>(evaluations_));
+  s.put(x_), s.put(xPrev_);
+}
+
+void Integrator::restore(Snapshot& s) {
+  const auto n = x_.size();
+  t_ = s.get(), tPrev_ = s.get(), direction_ = s.get() < 0 ? -1 : +1, evaluations_ = s.getLong();
+  s.get(x_), s.get(xPrev_);
+  if (x_.size() != n || xPrev_.size() != n)
+    throw InputError("checkpoint: the saved state has another dimension");
+}
+
 void Integrator::checkFinite() const {
   if (!x_.allFinite()) {
     std::ostringstream os;

@@ -3,6 +3,7 @@
 #pragma once
 #include "dynamics/core/Model.h"
 #include "dynamics/core/ParameterTable.h"
+#include "dynamics/core/Snapshot.h"
 
 #include <Eigen/Core>
 #include <functional>
@@ -22,6 +23,12 @@ public:
   virtual void step() = 0;
   /// State at t in the last step [previousTime(), time()] (either order), from the dense output.
   virtual void interpolate(double t, Eigen::VectorXd& out) const = 0;
+  /// Saves everything the next steps and the dense output depend on. restore() into an integrator of the same
+  /// method and settings, start()ed on the same model, makes its following steps bit-identical (resumable
+  /// runs).
+  virtual void save(Snapshot& s) const;
+  /// Reads what save() wrote; throws InputError when the snapshot does not fit this integrator.
+  virtual void restore(Snapshot& s);
 
   double time() const { return t_; }
   double previousTime() const { return tPrev_; }

@@ -107,4 +107,15 @@ void Merson::interpolate(double t, Eigen::VectorXd& out) const {
   hermite(t, fPrev_, k1_, out);
 }
 
+void Merson::save(Snapshot& s) const {
+  Integrator::save(s);
+  s.put(h_), s.put(static_cast<double>(rejected_)), s.put(fPrev_), s.put(k1_);
+}
+
+void Merson::restore(Snapshot& s) {
+  Integrator::restore(s);
+  h_ = s.get(), rejected_ = s.getLong();
+  s.get(fPrev_), s.get(k1_);
+}
+
 } // namespace rv

@@ -19,6 +19,8 @@ public:
   /// One accepted step; throws ComputationError when the step would have to fall below min step.
   void step() override;
   void interpolate(double t, Eigen::VectorXd& out) const override;
+  void save(Snapshot& s) const override;
+  void restore(Snapshot& s) override;
   double nextStep() const { return h_; }
   long rejected() const { return rejected_; }
 

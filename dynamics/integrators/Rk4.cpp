@@ -55,4 +55,14 @@ void Rk4::interpolate(double t, Eigen::VectorXd& out) const {
   hermite(t, fPrev_, k1_, out);
 }
 
+void Rk4::save(Snapshot& s) const {
+  Integrator::save(s);
+  s.put(fPrev_), s.put(k1_);
+}
+
+void Rk4::restore(Snapshot& s) {
+  Integrator::restore(s);
+  s.get(fPrev_), s.get(k1_);
+}
+
 } // namespace rv

@@ -15,6 +15,8 @@ public:
   void start(const Model& model, double t0, const Eigen::VectorXd& x0, int direction = +1) override;
   void step() override;
   void interpolate(double t, Eigen::VectorXd& out) const override;
+  void save(Snapshot& s) const override;
+  void restore(Snapshot& s) override;
   double stepSize() const { return h_; }
 
 private:

@@ -188,6 +188,34 @@ bool LyapunovRun::run(const std::function<void(const LyapunovEstimate&)>& onEsti
   return true;
 }
 
+void LyapunovRun::save(Snapshot& s) const {
+  s.put(t_), s.put(nextOutput_), s.put(successes_), s.put(logs_), s.put(x_), s.put(V_);
+  s.put(static_cast<double>(history_.size()));
+  for (const auto& h : history_)
+    s.put(h);
+  const Eigen::VectorXd last = Eigen::Map<const Eigen::VectorXd>(
+      result_.last.exponents.data(), static_cast<Eigen::Index>(result_.last.exponents.size()));
+  s.put(result_.last.time), s.put(last), s.put(result_.converged ? 1 : 0);
+}
+
+void LyapunovRun::restore(Snapshot& s) {
+  t_ = s.get(), nextOutput_ = s.get(), successes_ = static_cast<int>(s.get());
+  s.get(logs_), s.get(x_), s.get(V_);
+  if (logs_.size() != k_ || x_.size() != n_ || V_.rows() != m_ || V_.cols() != k_)
+    throw InputError("checkpoint: saved for another number of exponents or another model");
+  const long count = s.getLong();
+  if (count < 0 || count > s_.estimateEvery + 1) throw InputError("checkpoint: saved with other settings");
+  history_.resize(static_cast<std::size_t>(count));
+  for (auto& h : history_)
+    s.get(h);
+  Eigen::VectorXd last;
+  result_.last.time = s.get();
+  s.get(last);
+  result_.last.exponents.assign(last.data(), last.data() + last.size());
+  result_.converged = s.get() != 0;
+  startAll(t_);
+}
+
 LyapunovResult lyapunovExponents(const Model& model, const IntegratorFactory& makeIntegrator,
                                  const Eigen::VectorXd& x0, const LyapunovSettings& s,
                                  const std::function<void(const LyapunovEstimate&)>& onEstimate,

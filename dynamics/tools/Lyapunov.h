@@ -58,6 +58,10 @@ public:
   bool run(const std::function<void(const LyapunovEstimate&)>& onEstimate = {},
            const ToolControl& control = {});
   const LyapunovResult& result() const { return result_; }
+  /// Saves the run at its last finished interval (every interval restarts the integrators from there):
+  /// restore() into a run built from the same model, settings and start goes on bit-identically.
+  void save(Snapshot& s) const;
+  void restore(Snapshot& s);
 
 private:
   void startAll(double t0);

@@ -116,4 +116,27 @@ bool MapGrid::run(const ToolControl& control) {
   return finished.load() == rows;
 }
 
+void MapGrid::save(Snapshot& s) const {
+  const auto column = [](const std::vector<double>& v) {
+    return Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(v.size())).eval();
+  };
+  Eigen::VectorXd done(static_cast<Eigen::Index>(rowDone_.size()));
+  for (std::size_t r = 0; r < rowDone_.size(); ++r)
+    done[static_cast<Eigen::Index>(r)] = rowDone_[r];
+  s.put(done), s.put(column(grid_.values)), s.put(column(grid_.level));
+}
+
+void MapGrid::restore(Snapshot& s) {
+  Eigen::VectorXd done, values, level;
+  s.get(done), s.get(values), s.get(level);
+  if (static_cast<std::size_t>(done.size()) != rowDone_.size() ||
+      static_cast<std::size_t>(values.size()) != grid_.values.size() ||
+      static_cast<std::size_t>(level.size()) != grid_.level.size())
+    throw InputError("checkpoint: saved for another grid");
+  for (std::size_t r = 0; r < rowDone_.size(); ++r)
+    rowDone_[r] = done[static_cast<Eigen::Index>(r)] != 0;
+  grid_.values.assign(values.data(), values.data() + values.size());
+  grid_.level.assign(level.data(), level.data() + level.size());
+}
+
 } // namespace rv

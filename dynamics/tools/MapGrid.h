@@ -47,6 +47,10 @@ public:
   const GridValues& result() const { return grid_; }
   const GridSettings& settings() const { return s_; }
   const std::string& levelName() const { return levelName_; }
+  /// Saves the rows done and their values; restore() into a grid built from the same map and settings (the
+  /// number of threads aside) goes on with the rest. The result does not depend on when it was saved.
+  void save(Snapshot& s) const;
+  void restore(Snapshot& s);
   /// The map point of grid node (i, j, k).
   Eigen::VectorXd node(int i, int j, int k) const;
 

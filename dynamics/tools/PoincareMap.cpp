@@ -109,4 +109,16 @@ std::optional<MapPoint> PoincareMap::next(const ToolControl& control) {
   return std::nullopt;
 }
 
+void PoincareMap::save(Snapshot& s) const {
+  integ_->save(s);
+  s.put(sigma_), s.put(startOnSection_ ? 1 : 0), s.put(static_cast<double>(crossings_));
+  s.put(static_cast<double>(points_)), s.put(last_);
+}
+
+void PoincareMap::restore(Snapshot& s) {
+  integ_->restore(s);
+  sigma_ = s.get(), startOnSection_ = s.get() != 0, crossings_ = s.getLong(), points_ = s.getLong();
+  s.get(last_);
+}
+
 } // namespace rv

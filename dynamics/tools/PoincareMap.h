@@ -52,6 +52,10 @@ public:
   /// Called after every step of the integrator (the filters fed by a running map, manual §2.4); the
   /// observer runs on the caller's thread, inside next().
   void setStepObserver(std::function<void(const Integrator&)> observer) { observer_ = std::move(observer); }
+  /// Saves where the map stands (its integrator, the section's last value, the counts): restore() into a map
+  /// built from the same model and settings goes on with bit-identical points (resumable runs).
+  void save(Snapshot& s) const;
+  void restore(Snapshot& s);
   /// The map coordinates of a state.
   std::vector<double> coordinatesOf(double t, const Eigen::VectorXd& x) const;
 
