@@ -4,6 +4,8 @@ messages that name the culprit, and no file left behind on failure. Usage: cli_t
 import csv
 import json
 import os
+import signal
+import time
 import subprocess
 import sys
 import tempfile
@@ -377,6 +379,85 @@ class Cli(unittest.TestCase):
         self.assertEqual(r.returncode, 0, r.stderr)
         for key in ("fixedpoint", "continuation", "separatrix", "bifurcation_tree", "grid", "max_iterations"):
             self.assertIn(key, r.stdout)
+
+    def start_until_checkpoint(self, args, checkpoint):
+        """starts a long command, waits until it has saved its checkpoint once, then kills it with SIGKILL"""
+        e = dict(os.environ)
+        e.pop("DISPLAY", None)
+        p = subprocess.Popen([RV, *args], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, env=e)
+        deadline = time.time() + 60
+        while not os.path.exists(checkpoint) and p.poll() is None and time.time() < deadline:
+            time.sleep(0.05)
+        p.kill()
+        p.wait()
+        self.assertTrue(os.path.exists(checkpoint), "the run ended before it saved a checkpoint")
+
+    def test_killed_runs_resume_to_the_same_result(self):
+        hh = os.path.join(SRC, "scenes", "henon_heiles.json")
+        full, resumed, ck = self.path("full.csv"), self.path("res.csv"), self.path("map.ck")
+        args = ["poincare", hh, "--points", "40000"]
+        r = run(*args, "-o", full)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.start_until_checkpoint([*args, "-o", resumed, "--checkpoint", ck], ck)
+        self.assertFalse(os.path.exists(resumed))
+        r = run(*args, "-o", resumed, "--checkpoint", ck)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertEqual(open(full).read(), open(resumed).read())
+        self.assertFalse(os.path.exists(ck), "a completed run removes its checkpoint")
+
+        lorenz = os.path.join(SRC, "scenes", "lorenz.json")
+        ck2 = self.path("lyap.ck")
+        args = ["lyapunov", lorenz, "--time", "20000", "--json"]
+        whole = run(*args)
+        self.assertEqual(whole.returncode, 0, whole.stderr)
+        self.start_until_checkpoint([*args, "--checkpoint", ck2], ck2)
+        again = run(*args, "--checkpoint", ck2)
+        self.assertEqual(again.returncode, 0, again.stderr)
+        self.assertEqual(json.loads(whole.stdout)["exponents"], json.loads(again.stdout)["exponents"])
+
+        # another run's checkpoint is refused, naming the flag
+        self.start_until_checkpoint([*args, "--checkpoint", ck2], ck2)
+        self.assertBadInput(run("lyapunov", lorenz, "--time", "30000", "--checkpoint", ck2), "--checkpoint",
+                            "another run")
+
+    def test_interrupted_map_saves_and_resumes(self):
+        hh = os.path.join(SRC, "scenes", "henon_heiles.json")
+        full, resumed, ck = self.path("full.csv"), self.path("res.csv"), self.path("map.ck")
+        args = ["poincare", hh, "--points", "20000"]
+        self.assertEqual(run(*args, "-o", full).returncode, 0)
+        e = dict(os.environ)
+        e.pop("DISPLAY", None)
+        p = subprocess.Popen([RV, *args, "-o", resumed, "--checkpoint", ck], stderr=subprocess.PIPE, env=e)
+        time.sleep(0.3)
+        p.send_signal(signal.SIGINT)
+        self.assertEqual(p.wait(timeout=60), 130)
+        self.assertTrue(os.path.exists(ck))
+        r = run(*args, "-o", resumed, "--checkpoint", ck)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertEqual(open(full).read(), open(resumed).read())
+
+    def test_scene_path_problems_and_duplicate_keys_are_bad_input(self):
+        out = self.path("a.csv")
+        args = ["--time", "1", "--every", "1", "--columns", "t", "-o", out]
+        self.assertBadInput(run("integrate", os.path.join(SRC, "scenes"), *args), "is a folder")
+        empty = self.path("empty.json")
+        open(empty, "w").close()
+        self.assertBadInput(run("integrate", empty, *args), empty, "empty")
+        dup = self.path("dup.json")
+        with open(dup, "w") as f:
+            f.write('{"problem": "lorenz", "parameters": {"rho": 28, "rho": 20}, "initial": {}}')
+        self.assertBadInput(run("integrate", dup, *args), dup + ":parameters.rho", "twice")
+        self.assertFalse(os.path.exists(out))
+
+    def test_surface_is_the_same_with_one_and_two_threads(self):
+        hh = os.path.join(SRC, "scenes", "henon_heiles.json")
+        outs = []
+        for threads in ("1", "2"):
+            outs.append(self.path("s%s.csv" % threads))
+            r = run("surface", hh, "--x", "-0.3,0.3", "--y", "-0.3,0.3", "--step", "0.05", "--threads", threads,
+                    "-o", outs[-1])
+            self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertEqual(open(outs[0]).read(), open(outs[1]).read())
 
     def test_gui_without_a_display_says_so(self):
         r = run("gui", SCENE, env={"WAYLAND_DISPLAY": ""})
