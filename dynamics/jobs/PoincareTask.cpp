@@ -54,7 +54,7 @@ bool PoincareTask::run(const ToolControl& control) {
   while (auto p = map_->next(control)) {
     last_ = *p;
     ++produced_;
-    points_.push(std::move(*p));
+    points_.push(std::move(*p), control.stopRequested);
   }
   return !control.stopRequested();
 }

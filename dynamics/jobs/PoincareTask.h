@@ -24,7 +24,11 @@ public:
   const RunSpec& spec() const { return spec_; }
   const SectionSettings& settings() const { return settings_; }
   /// The points, streamed (thread-safe).
+  /// The points as they come. Bounded: a job whose points nobody takes pauses at kChannelCapacity of them
+  /// (about 20 MB) until they are taken, so a map streaming 10^7 points holds no more than that in memory
+  /// here.
   Channel<MapPoint>& points() { return points_; }
+  static constexpr std::size_t kChannelCapacity = 1 << 18;
   /// The plot filters fed by this trajectory's steps (thread-safe to add to while it runs).
   PlotTaps& taps() { return taps_; }
   /// A state on the trajectory's current level of the integrals: where it began or where it went on after
@@ -44,7 +48,7 @@ private:
   std::optional<MapPoint> last_;
   Eigen::VectorXd levelState_;
   long produced_ = 0;
-  Channel<MapPoint> points_;
+  Channel<MapPoint> points_{kChannelCapacity};
   PlotTaps taps_;
 };
 

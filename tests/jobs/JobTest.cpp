@@ -9,7 +9,10 @@
 
 #include "tests/jobs/WaitFor.h"
 #include <chrono>
+#include <cstdlib>
+#include <fstream>
 #include <gtest/gtest.h>
+#include <map>
 #include <random>
 #include <thread>
 
@@ -258,6 +261,168 @@ TEST(JobTree, StressManyJobsInRandomOrder) {
     EXPECT_NE(j->status(), Job::Status::Running);
   tree.removeAll();
   EXPECT_TRUE(tree.jobs().empty());
+}
+
+// how long the time-bounded stress runs: ROLLVIZ_STRESS_SECONDS (./test gives 60 under ThreadSanitizer)
+double stressSeconds(double fallback) {
+  const char* s = std::getenv("ROLLVIZ_STRESS_SECONDS");
+  return s ? std::atof(s) : fallback;
+}
+
+TEST(JobTree, StressFiftyJobsStartedEditedStoppedContinuedDeletedLoseNoResult) {
+  JobTree tree;
+  std::mt19937 rng(7);
+  std::map<Job*, long> taken; // points taken from each job since it last began again
+  std::vector<MapPoint> sink;
+  const auto add = [&] {
+    Job& j =
+        tree.add(std::make_unique<PoincareTask>(henonHeiles(0.1 + 0.01 * (rng() % 3)), SectionSettings{}));
+    taken[&j] = 0;
+  };
+  for (int i = 0; i < 50; ++i)
+    add();
+  const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(stressSeconds(3));
+  long ops = 0;
+  while (std::chrono::steady_clock::now() < end) {
+    ++ops;
+    auto jobs = tree.jobs();
+    Job& j = *jobs[rng() % jobs.size()];
+    auto& task = static_cast<PoincareTask&>(j.task());
+    switch (rng() % 8) {
+    case 0:
+    case 1:
+      j.start();
+      break;
+    case 2:
+      j.stop();
+      break;
+    case 3:
+      j.restart(); // begins again: its channel starts empty
+      taken[&j] = 0;
+      break;
+    case 4:
+      j.edit([&](Task& t) {
+        auto& p = static_cast<PoincareTask&>(t);
+        RunSpec spec = p.spec();
+        spec.modelParameters.set("energy", 0.1 + 0.01 * (rng() % 3));
+        try {
+          p.edit(spec, p.settings());
+        } catch (const InputError&) {
+          // the last point lies outside the new region: refused, nothing changes
+        }
+      });
+      break;
+    case 5:
+    case 6:
+      taken[&j] += static_cast<long>(task.points().take(sink));
+      break;
+    case 7:
+      if (rng() % 8 == 0) {
+        taken.erase(&j);
+        tree.remove(j);
+        add(); // fifty at all times
+      }
+      break;
+    }
+    std::this_thread::sleep_for(std::chrono::microseconds(rng() % 500));
+  }
+  tree.stopAll();
+  ASSERT_EQ(tree.jobs().size(), 50u);
+  long points = 0;
+  for (Job* j : tree.jobs()) {
+    EXPECT_NE(j->status(), Job::Status::Running);
+    auto& task = static_cast<PoincareTask&>(j->task());
+    taken[j] += static_cast<long>(task.points().take(sink));
+    EXPECT_EQ(taken[j], task.points().total()) << "job " << j->id() << ": every point produced was delivered";
+    points += taken[j];
+  }
+  std::printf("  %ld operations, %ld points delivered\n", ops, points);
+  EXPECT_GT(points, 0);
+  tree.removeAll();
+  EXPECT_TRUE(tree.jobs().empty());
+}
+
+TEST(Channel, ABoundedChannelMakesTheProducerWaitAndLosesNothing) {
+  Channel<long> channel(100);
+  const long n = 200000;
+  std::thread producer([&] {
+    for (long i = 0; i < n; ++i)
+      channel.push(i);
+  });
+  std::vector<long> batch;
+  long next = 0;
+  while (next < n) {
+    channel.take(batch);
+    for (long v : batch)
+      ASSERT_EQ(v, next++) << "in order, none lost";
+    std::this_thread::sleep_for(std::chrono::microseconds(50));
+  }
+  producer.join();
+  EXPECT_EQ(channel.total(), n);
+  EXPECT_LE(channel.highWater(), 100u);
+  // a full channel nobody takes from: the producer waits, and a stop ends the wait at once
+  Channel<int> full(2);
+  full.push(1), full.push(2);
+  std::atomic<bool> stop{false};
+  std::thread waiting([&] { full.push(3, [&] { return stop.load(); }); });
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  EXPECT_EQ(full.total(), 2);
+  const auto t0 = std::chrono::steady_clock::now();
+  stop = true;
+  waiting.join();
+  EXPECT_LT(std::chrono::steady_clock::now() - t0, 500ms);
+  EXPECT_EQ(full.total(), 3) << "the item pushed on the stop is kept";
+}
+
+long residentKiB() {
+  std::ifstream status("/proc/self/status");
+  for (std::string line; std::getline(status, line);)
+    if (line.rfind("VmRSS:", 0) == 0) return std::atol(line.c_str() + 6);
+  return 0;
+}
+
+TEST(PoincareTask, MemoryStaysBoundedWhileAMapStreamsTenMillionPoints) {
+#if defined(__SANITIZE_THREAD__) || defined(__SANITIZE_ADDRESS__)
+  const long n = 1000000; // the sanitizers are ten times slower: the bound is the same
+#else
+  const long n = 10000000;
+#endif
+  RunSpec spec(ModelRegistry::builtin().get("standard_map"), IntegratorRegistry::builtin().get("rk4"));
+  spec.modelParameters.set("K", 0.9);
+  spec.initialState = Eigen::Vector2d(3.0, 0.7);
+  SectionSettings settings;
+  settings.maxPoints = n;
+  JobTree tree;
+  auto owned = std::make_unique<PoincareTask>(spec, settings);
+  auto* task = owned.get();
+  Job& job = tree.add(std::move(owned));
+  const long before = residentKiB();
+  job.start();
+  // a slow consumer that keeps nothing: without the bound the channel would hold millions of points
+  std::vector<MapPoint> batch;
+  long received = 0;
+  double lastTime = -1;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(5);
+  while (received < n) {
+    ASSERT_LT(std::chrono::steady_clock::now(), deadline) << received << " points";
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    task->points().take(batch);
+    for (const auto& p : batch) {
+      ASSERT_GT(p.time, lastTime) << "in order";
+      lastTime = p.time;
+    }
+    received += static_cast<long>(batch.size());
+    ASSERT_NE(job.status(), Job::Status::Failed) << job.error();
+  }
+  ASSERT_TRUE(waitFor([&] { return job.status() == Job::Status::Finished; }));
+  const long grown = residentKiB() - before;
+  std::printf("  %ld points, at most %zu waiting at once, resident memory grew by %ld KiB\n", received,
+              task->points().highWater(), grown);
+  EXPECT_EQ(received, n);
+  EXPECT_LE(task->points().highWater(), PoincareTask::kChannelCapacity + 1);
+#if !defined(__SANITIZE_THREAD__) && !defined(__SANITIZE_ADDRESS__)
+  EXPECT_LT(grown, 200 * 1024) << "10^7 points held at once would take about 700 MB";
+#endif
 }
 
 } // namespace
