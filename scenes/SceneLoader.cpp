@@ -25,23 +25,28 @@ struct Where {
   [[noreturn]] void fail(const std::string& reason) const { throw InputError(str() + ": " + reason); }
 };
 
+// a value in a message: invalid UTF-8 replaced (dump() would throw on it)
+std::string shown(const json& j) {
+  return j.dump(-1, ' ', false, json::error_handler_t::replace);
+}
+
 const json& requireObject(const json& j, const Where& w) {
   if (!j.is_object()) w.fail("expected an object");
   return j;
 }
 
 double number(const json& j, const Where& w) {
-  if (!j.is_number()) w.fail("expected a number, got " + j.dump());
+  if (!j.is_number()) w.fail("expected a number, got " + shown(j));
   return j.get<double>();
 }
 
 std::string text(const json& j, const Where& w) {
-  if (!j.is_string()) w.fail("expected a string, got " + j.dump());
+  if (!j.is_string()) w.fail("expected a string, got " + shown(j));
   return j.get<std::string>();
 }
 
 bool boolean(const json& j, const Where& w) {
-  if (!j.is_boolean()) w.fail("expected true or false, got " + j.dump());
+  if (!j.is_boolean()) w.fail("expected true or false, got " + shown(j));
   return j.get<bool>();
 }
 
@@ -64,7 +69,7 @@ void onlyKeys(const json& j, const Where& w, std::initializer_list<const char*> 
 void readParameters(const json& j, const Where& w, ParameterValues& values,
                     std::initializer_list<const char*> skip = {}) {
   for (const auto& [k, v] : j.items()) {
-    if (std::any_of(skip.begin(), skip.end(), [&](const char* s) { return k == s; })) continue;
+    if (std::any_of(skip.begin(), skip.end(), [&key = k](const char* s) { return key == s; })) continue;
     if (values.table().find(k) < 0) {
       std::string known;
       for (const auto& s : values.table().specs())
@@ -420,7 +425,14 @@ void applyOverrides(json& doc, const std::vector<SceneOverride>& overrides) {
   for (const auto& o : overrides) {
     const std::string flag = "--set " + o.key;
     json value = json::parse(o.value, nullptr, false);
-    if (value.is_discarded()) value = o.value;
+    if (value.is_discarded()) {
+      value = o.value;
+      try {
+        (void)value.dump(); // the document is written out (saved scenes, checkpoints): text must be UTF-8
+      } catch (const json::type_error&) {
+        throw InputError(flag + ": the value is not valid UTF-8 text");
+      }
+    }
     if (o.key.find('.') == std::string::npos) {
       if (o.key == "problem") {
         doc["problem"] = value;
@@ -596,9 +608,10 @@ nlohmann::json parseSceneJson(std::istream& in, const std::string& source) {
   json doc;
   try {
     doc = json::parse(in, callback);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {
+    // parse errors, and numbers beyond a double (out_of_range 406, found by fuzzing)
     std::string reason = e.what();
-    if (const auto p = reason.find("parse error"); p != std::string::npos) reason = reason.substr(p);
+    if (const auto p = reason.find("] "); p != std::string::npos) reason = reason.substr(p + 2);
     throw InputError(source + ":$: malformed JSON: " + reason);
   } catch (const std::ios_base::failure& e) {
     throw InputError(source + ": cannot read: " + e.what());

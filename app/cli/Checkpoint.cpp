@@ -2,10 +2,9 @@
 
 #include "dynamics/core/Errors.h"
 #include "dynamics/io/AtomicFile.h"
+#include "scenes/SnapshotJson.h"
 
 #include <algorithm>
-#include <bit>
-#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -38,11 +37,7 @@ std::optional<Checkpoint::Saved> Checkpoint::load() const {
     throw InputError(where + "saved by another run (" + j.value("command", std::string("?")) +
                      " with another scene or options): delete it or choose another file");
   Saved saved;
-  saved.state.values.reserve(j["state"].size());
-  for (const auto& v : j["state"]) {
-    if (!v.is_number_unsigned()) throw InputError(where + "damaged state: delete it to start afresh");
-    saved.state.values.push_back(std::bit_cast<double>(v.get<std::uint64_t>()));
-  }
+  saved.state = snapshotFromJson(j["state"], where + "delete it to start afresh");
   saved.text = j["text"].get<std::string>();
   return saved;
 }
@@ -54,12 +49,11 @@ bool Checkpoint::due() const {
 void Checkpoint::save(const Snapshot& state, const std::string& text) {
   if (!enabled()) return;
   const auto begin = std::chrono::steady_clock::now();
-  // doubles as their bit patterns: exact for every value, NaN and infinities included
-  nlohmann::json bits = nlohmann::json::array();
-  for (double v : state.values)
-    bits.push_back(std::bit_cast<std::uint64_t>(v));
-  const nlohmann::json j{
-      {"format", kFormat}, {"command", command_}, {"run", run_}, {"state", bits}, {"text", text}};
+  const nlohmann::json j{{"format", kFormat},
+                         {"command", command_},
+                         {"run", run_},
+                         {"state", snapshotToJson(state)},
+                         {"text", text}};
   AtomicFile file(path_, "--checkpoint");
   {
     std::ofstream out(file.tempPath(), std::ios::binary);

@@ -46,6 +46,8 @@ int runGui(int argc, char** argv, const GuiOptions& options) {
                 : QString::fromStdString(defaultScenePath("chaplygin_ball"));
   }
   window.openScene(scene);
+  // trajectories saved when rollviz last closed: offered once the window shows (not in scripted runs)
+  if (options.quitAfter <= 0) QTimer::singleShot(0, &window, [&window] { window.offerSavedJobs(); });
 
   if (options.quitAfter > 0)
     QTimer::singleShot(static_cast<int>(options.quitAfter * 1000), &app, [&] {

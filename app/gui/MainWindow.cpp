@@ -34,7 +34,9 @@
 #include <QMessageBox>
 #include <QMimeData>
 #include <QProcess>
+#include <QSaveFile>
 #include <QSettings>
+#include <QStandardPaths>
 #include <QStatusBar>
 #include <QTemporaryFile>
 #include <QToolBar>
@@ -659,7 +661,69 @@ void MainWindow::fillRecentMenu() {
     recentMenu_->addAction(QFileInfo(p).fileName(), this, [this, p] { openScene(p); })->setToolTip(p);
 }
 
+QString MainWindow::savedJobsPath() {
+  return QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation) + "/running-jobs.json";
+}
+
+int MainWindow::saveRunningJobs() {
+  if (!scene_) return 0;
+  const nlohmann::json trajectories = map_->saveRunning();
+  if (trajectories.empty()) {
+    QFile::remove(savedJobsPath());
+    return 0;
+  }
+  const nlohmann::json saved{
+      {"scene", scenePath_.toStdString()}, {"document", scene_->document}, {"trajectories", trajectories}};
+  QDir().mkpath(QFileInfo(savedJobsPath()).absolutePath());
+  QSaveFile file(savedJobsPath()); // written whole, then renamed
+  const std::string text = saved.dump();
+  if (!file.open(QIODevice::WriteOnly) || file.write(text.data(), static_cast<qint64>(text.size())) < 0 ||
+      !file.commit())
+    return 0;
+  return static_cast<int>(trajectories.size());
+}
+
+int MainWindow::resumeSavedJobs() {
+  QFile file(savedJobsPath());
+  if (!file.open(QIODevice::ReadOnly)) return 0;
+  const QByteArray text = file.readAll();
+  file.close();
+  QFile::remove(savedJobsPath()); // offered once, whatever comes of it
+  try {
+    const nlohmann::json saved = nlohmann::json::parse(text.constData(), text.constData() + text.size());
+    const QString path = QString::fromStdString(saved.at("scene").get<std::string>());
+    useScene(std::make_unique<Scene>(sceneFromJson(saved.at("document"), path.toStdString())), path);
+    const int n = map_->resume(saved.at("trajectories"));
+    statusBar()->showMessage(QString("continued %1 trajectories from the last session").arg(n), 5000);
+    return n;
+  } catch (const std::exception& e) {
+    QMessageBox::warning(this, "rollviz",
+                         QString("Cannot continue the saved trajectories:\n%1").arg(e.what()));
+    return 0;
+  }
+}
+
+void MainWindow::offerSavedJobs() {
+  QFile file(savedJobsPath());
+  if (!file.open(QIODevice::ReadOnly)) return;
+  const auto saved = nlohmann::json::parse(file.readAll().toStdString(), nullptr, false);
+  file.close();
+  const std::size_t n =
+      saved.is_object() && saved.contains("trajectories") ? saved["trajectories"].size() : 0;
+  const QString scene = saved.is_object() ? QString::fromStdString(saved.value("scene", std::string())) : "";
+  if (n == 0 ||
+      QMessageBox::question(this, "rollviz",
+                            QString("%1 trajectories of %2 were running when rollviz closed.\nContinue them?")
+                                .arg(n)
+                                .arg(QFileInfo(scene).fileName())) != QMessageBox::Yes) {
+    QFile::remove(savedJobsPath());
+    return;
+  }
+  resumeSavedJobs();
+}
+
 void MainWindow::closeEvent(QCloseEvent* e) {
+  saveRunningJobs();
   QSettings().setValue("windowState", saveState());
   QSettings().setValue("windowGeometry", saveGeometry());
   QMainWindow::closeEvent(e);

@@ -44,6 +44,17 @@ public:
   bool openScene(const QString& path);
   /// Runs a scene document (the control panel's edits); on failure shows why and keeps the current scene.
   bool runDocument(const nlohmann::json& document);
+  /// Where the map window's running trajectories are saved when the window closes (the next start offers to
+  /// continue them): running-jobs.json in the application's data folder.
+  static QString savedJobsPath();
+  /// Saves the running trajectories with the scene they run under (written whole, then renamed); with none
+  /// running, removes an old file. Called by closeEvent. Returns how many were saved.
+  int saveRunningJobs();
+  /// Goes on with the trajectories saved when rollviz last closed, under their scene (opened first); returns
+  /// how many (0, with a message, when there are none or the file cannot be used). The file is removed.
+  int resumeSavedJobs();
+  /// At start: when trajectories were saved, asks whether to continue them (or to discard them).
+  void offerSavedJobs();
   /// Whether the 3D view's run plays (Space toggles it).
   bool playing() const { return playing_; }
   /// Simulation time shown in the last frame.

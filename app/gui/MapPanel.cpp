@@ -1,5 +1,7 @@
 #include "app/gui/MapPanel.h"
 
+#include "scenes/SnapshotJson.h"
+
 #include "app/gui/ChartWindow.h"
 #include "app/gui/MultipliersWindow.h"
 #include "app/gui/PlotWindow.h"
@@ -82,6 +84,80 @@ void MapPanel::start(const Eigen::VectorXd& state) {
   feedPlots(series_.back());
   chart_->select(plot);
   job.start();
+}
+
+namespace {
+nlohmann::json valuesJson(const ParameterValues& v) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& spec : v.table().specs())
+    j[spec.id] = v[spec.id];
+  return j;
+}
+void setValues(ParameterValues& v, const nlohmann::json& j, const std::string& what) {
+  if (!j.is_object()) throw InputError(what + ": damaged");
+  for (const auto& [id, value] : j.items()) {
+    if (!value.is_number()) throw InputError(what + "." + id + ": damaged");
+    v.set(id, value.get<double>(), what + "." + id);
+  }
+}
+} // namespace
+
+nlohmann::json MapPanel::saveRunning() {
+  nlohmann::json out = nlohmann::json::array();
+  std::vector<MapPoint> rest;
+  for (auto& s : series_) {
+    if (!s.job->running()) continue;
+    s.job->stop();
+    s.task->points().take(rest); // produced before the stop: part of what is saved
+    for (const auto& p : rest) {
+      s.x.push_back(p.coordinates.at(0));
+      s.y.push_back(p.coordinates.size() > 1 ? p.coordinates[1] : p.time);
+      if (p.coordinates.size() > 2) s.z.push_back(p.coordinates[2]);
+    }
+    Snapshot state;
+    s.task->save(state);
+    const RunSpec& spec = s.task->spec();
+    out.push_back({{"start", std::vector<double>(spec.initialState.data(),
+                                                 spec.initialState.data() + spec.initialState.size())},
+                   {"parameters", valuesJson(spec.modelParameters)},
+                   {"integrator", valuesJson(spec.integratorParameters)},
+                   {"colour", s.colour},
+                   {"x", s.x},
+                   {"y", s.y},
+                   {"z", s.z},
+                   {"state", snapshotToJson(state)}});
+  }
+  return out;
+}
+
+int MapPanel::resume(const nlohmann::json& saved) {
+  if (!scene_ || !saved.is_array()) return 0;
+  int n = 0;
+  for (const auto& t : saved) {
+    const std::string what = "saved trajectory " + std::to_string(n + 1);
+    RunSpec spec = scene_->runSpec();
+    const auto start = t.at("start").get<std::vector<double>>();
+    if (static_cast<Eigen::Index>(start.size()) != spec.initialState.size())
+      throw InputError(what + ": made for another problem");
+    spec.initialState =
+        Eigen::Map<const Eigen::VectorXd>(start.data(), static_cast<Eigen::Index>(start.size()));
+    setValues(spec.modelParameters, t.at("parameters"), what + ".parameters");
+    setValues(spec.integratorParameters, t.at("integrator"), what + ".integrator");
+    auto task = std::make_unique<PoincareTask>(spec, scene_->poincare);
+    Snapshot state = snapshotFromJson(t.at("state"), what);
+    task->restore(state);
+    PoincareTask* raw = task.get();
+    Job& job = jobs_.add(std::move(task));
+    const Rgb colour = t.at("colour").get<Rgb>();
+    const int plot = chart_->addSeries({}, {}, colour);
+    series_.push_back({&job, raw, t.at("x").get<std::vector<double>>(), t.at("y").get<std::vector<double>>(),
+                       t.at("z").get<std::vector<double>>(), plot, colour});
+    drawSeries(series_.back());
+    feedPlots(series_.back());
+    job.start();
+    ++n;
+  }
+  return n;
 }
 
 std::vector<double> MapPanel::mapPoint(double x, double y) const {

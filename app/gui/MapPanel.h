@@ -16,6 +16,7 @@
 #include <complex>
 #include <functional>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <vector>
 
@@ -57,6 +58,12 @@ public:
   void startBifurcationTree();
   /// A fixed-point search from the scene's fixedpoint.guess.
   void searchFromGuess();
+  /// The running trajectories, stopped and saved (their settings, whole state and points) to go on after a
+  /// restart (MainWindow saves them when it closes); an empty array when none runs.
+  nlohmann::json saveRunning();
+  /// Goes on with trajectories saveRunning() saved, under the current scene; returns how many. Throws
+  /// InputError when the saved data do not fit the scene.
+  int resume(const nlohmann::json& saved);
   /// Takes the points computed since the last call and redraws; called by the window's frame timer.
   void drain();
   void stopAll();

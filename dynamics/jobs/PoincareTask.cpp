@@ -16,6 +16,7 @@ void PoincareTask::build(const Eigen::VectorXd& x0, double t0) {
   auto integ = spec_.makeIntegrator(*model_);
   integ->start(*model_, t0, x0, settings_.backward ? -1 : +1);
   SectionSettings s = settings_;
+  builtAt_ = produced_;
   if (s.maxPoints > 0) s.maxPoints = std::max<long>(0, s.maxPoints - produced_);
   map_ = std::make_unique<PoincareMap>(*model_, std::move(integ), s);
   map_->setStepObserver([this](const Integrator& in) { taps_.offer(*model_, in); });
@@ -57,6 +58,39 @@ bool PoincareTask::run(const ToolControl& control) {
     points_.push(std::move(*p), control.stopRequested);
   }
   return !control.stopRequested();
+}
+
+void PoincareTask::save(Snapshot& s) const {
+  s.put(static_cast<double>(produced_)), s.put(static_cast<double>(builtAt_)), s.put(levelState_);
+  s.put(last_ ? 1 : 0);
+  if (last_) {
+    const Eigen::VectorXd c = Eigen::Map<const Eigen::VectorXd>(
+        last_->coordinates.data(), static_cast<Eigen::Index>(last_->coordinates.size()));
+    s.put(c), s.put(last_->time), s.put(last_->sheet);
+  }
+  map_->save(s);
+}
+
+void PoincareTask::restore(Snapshot& s) {
+  const long produced = s.getLong();
+  produced_ = s.getLong(); // the map is built as it was, then takes its saved state
+  Eigen::VectorXd level;
+  s.get(level);
+  if (level.size() != model_->dimension())
+    throw InputError("saved trajectory: the state has another dimension");
+  last_.reset();
+  if (s.get() != 0) {
+    Eigen::VectorXd c;
+    s.get(c);
+    MapPoint p;
+    p.coordinates.assign(c.data(), c.data() + c.size());
+    p.time = s.get();
+    p.sheet = static_cast<int>(s.get());
+    last_ = std::move(p);
+  }
+  build(level, 0);
+  map_->restore(s);
+  produced_ = produced;
 }
 
 Eigen::VectorXd PoincareTask::lastState() const {

@@ -23,10 +23,9 @@ public:
   void edit(RunSpec spec, SectionSettings settings);
   const RunSpec& spec() const { return spec_; }
   const SectionSettings& settings() const { return settings_; }
-  /// The points, streamed (thread-safe).
-  /// The points as they come. Bounded: a job whose points nobody takes pauses at kChannelCapacity of them
-  /// (about 20 MB) until they are taken, so a map streaming 10^7 points holds no more than that in memory
-  /// here.
+  /// The points as they come (thread-safe). Bounded: a job whose points nobody takes pauses at
+  /// kChannelCapacity of them (about 20 MB) until they are taken, so a map streaming 10^7 points holds no
+  /// more than that in memory here.
   Channel<MapPoint>& points() { return points_; }
   static constexpr std::size_t kChannelCapacity = 1 << 18;
   /// The plot filters fed by this trajectory's steps (thread-safe to add to while it runs).
@@ -38,6 +37,10 @@ public:
   /// while the job does not run.
   Eigen::VectorXd lastState() const;
   const std::vector<std::string>& coordinateNames() const { return map_->coordinateNames(); }
+  /// Saves where the trajectory stands (only while the job does not run): restore() into a task made with the
+  /// same spec and settings goes on with the same points, bit for bit (the GUI's jobs across a restart).
+  void save(Snapshot& s) const;
+  void restore(Snapshot& s);
 
 private:
   void build(const Eigen::VectorXd& x0, double t0);
@@ -48,6 +51,7 @@ private:
   std::optional<MapPoint> last_;
   Eigen::VectorXd levelState_;
   long produced_ = 0;
+  long builtAt_ = 0; ///< points produced when the map was last built (its point limit counts from there)
   Channel<MapPoint> points_{kChannelCapacity};
   PlotTaps taps_;
 };

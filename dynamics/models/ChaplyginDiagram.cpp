@@ -314,8 +314,9 @@ ChaplyginBifurcationSet::diagrams(double c, double N, double nScale,
                          .min = 0,
                          .max = 1,
                          .step = 0.01,
-                         .points = [c, tLo, tHi](double t) {
-                           return std::vector<DiagramPoint>{{c * c, tLo + t * (tHi - tLo)}};
+                         // init-captures: clang before 16 cannot capture structured bindings
+                         .points = [c, lo = tLo, hi = tHi](double t) {
+                           return std::vector<DiagramPoint>{{c * c, lo + t * (hi - lo)}};
                          }});
   nh.branches.push_back(
       pointBranch("T0", "T0, the point h = 0, n = (K, K) (M = 0); present when c^2 <= (K, K)",
@@ -362,8 +363,8 @@ ChaplyginBifurcationSet::diagrams(double c, double N, double nScale,
        .min = 0,
        .max = 1,
        .step = 0.01,
-       .points = [cMax, sLo, sHi](double t) {
-         const double h = sLo + t * (sHi - sLo);
+       .points = [cMax, lo = sLo, hi = sHi](double t) {
+         const double h = lo + t * (hi - lo);
          return std::vector<DiagramPoint>{{cMax, h}, {-cMax, h}};
        }});
   const double Kn = std::sqrt(K2);

@@ -157,7 +157,7 @@ void PoincareChart::addImage(int nx, int ny, double x0, double dx, double y0, do
   vtkNew<vtkDoubleArray> scalars;
   scalars->SetNumberOfValues(static_cast<vtkIdType>(nx) * ny);
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-  for (std::size_t i = 0; i < values.size() && i < scalars->GetNumberOfValues(); ++i) {
+  for (std::size_t i = 0; i < values.size() && i < static_cast<std::size_t>(scalars->GetNumberOfValues()); ++i) {
     scalars->SetValue(static_cast<vtkIdType>(i), values[i]);
     if (std::isfinite(values[i])) lo = std::min(lo, values[i]), hi = std::max(hi, values[i]);
   }

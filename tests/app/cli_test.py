@@ -428,7 +428,11 @@ class Cli(unittest.TestCase):
         e = dict(os.environ)
         e.pop("DISPLAY", None)
         p = subprocess.Popen([RV, *args, "-o", resumed, "--checkpoint", ck], stderr=subprocess.PIPE, env=e)
-        time.sleep(0.3)
+        # Ctrl-C once it computes (the temporary output exists): earlier, no handler is installed yet
+        deadline = time.time() + 30
+        while not any(n.startswith(".res.partial-") for n in os.listdir(self.dir)) and time.time() < deadline:
+            time.sleep(0.01)
+        time.sleep(0.1)
         p.send_signal(signal.SIGINT)
         self.assertEqual(p.wait(timeout=60), 130)
         self.assertTrue(os.path.exists(ck))

@@ -554,6 +554,39 @@ private slots:
     QVERIFY(!window_->mapPanel()->openMap3D()); // a 2D map has no Map3D window
   }
 
+  void runningTrajectoriesAreSavedOnCloseAndContinuedAtTheNextStart() {
+    nlohmann::json doc = loadScene(defaultScenePath("henon_heiles")).document;
+    doc["poincare"]["points"] = 1000000; // still running when the window closes
+    QVERIFY(window_->openScene(QString::fromStdString(defaultScenePath("henon_heiles"))));
+    QVERIFY(window_->runDocument(doc));
+    MapPanel* map = window_->mapPanel();
+    QVERIFY(map->startAt(0.05, 0.1));
+    QTRY_VERIFY_WITH_TIMEOUT(map->points() > 100, 20000);
+    QFile::remove(MainWindow::savedJobsPath());
+    window_->close(); // closeEvent saves what runs
+    QVERIFY(QFile::exists(MainWindow::savedJobsPath()));
+    map->drain();
+    const long shown = map->points();
+    for (Job* j : map->jobs().jobs())
+      QVERIFY(!j->running());
+    // the next start: another scene first, then the saved trajectories under their own
+    QVERIFY(window_->openScene(QString::fromStdString(defaultScenePath("chaplygin_ball"))));
+    window_->show();
+    QCOMPARE(window_->resumeSavedJobs(), 2);
+    QVERIFY(!QFile::exists(MainWindow::savedJobsPath())); // offered once
+    QCOMPARE(window_->scene()->model->info().id, std::string("henon_heiles"));
+    QCOMPARE(map->trajectories(), 3); // the scene's own and the two continued
+    map->drain();
+    QVERIFY2(map->points() >= shown, qPrintable(QString("%1 < %2").arg(map->points()).arg(shown)));
+    QTRY_VERIFY_WITH_TIMEOUT(map->points() > shown + 100, 20000); // they go on
+    int running = 0;
+    for (Job* j : map->jobs().jobs())
+      running += j->running();
+    QCOMPARE(running, 3);
+    QCOMPARE(window_->resumeSavedJobs(), 0); // nothing left
+    map->stopAll();
+  }
+
   void cleanupTestCase() { delete window_; }
 };
 

@@ -425,5 +425,43 @@ TEST(PoincareTask, MemoryStaysBoundedWhileAMapStreamsTenMillionPoints) {
 #endif
 }
 
+TEST(PoincareTask, SavedAndRestoredItGoesOnWithTheSamePointsBitForBit) {
+  SectionSettings settings;
+  settings.maxPoints = 600;
+  PoincareTask first(henonHeiles(0.125), settings);
+  long polls = 0, limit = 3000; // a stop, once asked, stays asked until the limit moves
+  ToolControl stop;
+  stop.stopRequested = [&] { return ++polls > limit; };
+  ASSERT_FALSE(first.run(stop));
+  std::vector<MapPoint> before;
+  first.points().take(before);
+  ASSERT_GT(before.size(), 3u);
+  // an edit rebuilds the map from the last point: the point limit then counts from there
+  first.edit(first.spec(), first.settings());
+  limit = polls + 3000;
+  ASSERT_FALSE(first.run(stop));
+  Snapshot saved;
+  first.save(saved);
+  std::vector<MapPoint> middle;
+  first.points().take(middle);
+  // the reference goes on; a fresh task restores the snapshot and goes on too
+  ASSERT_TRUE(first.run({}));
+  std::vector<MapPoint> expected;
+  first.points().take(expected);
+  PoincareTask second(henonHeiles(0.125), settings);
+  second.restore(saved);
+  ASSERT_TRUE(second.run({}));
+  std::vector<MapPoint> got;
+  second.points().take(got);
+  ASSERT_FALSE(expected.empty());
+  EXPECT_EQ(before.size() + middle.size() + got.size(), 600u) << "the limit counts the points made before";
+  ASSERT_EQ(got.size(), expected.size());
+  for (std::size_t i = 0; i < got.size(); ++i) {
+    EXPECT_EQ(got[i].time, expected[i].time) << i;
+    EXPECT_EQ(got[i].coordinates, expected[i].coordinates) << i;
+  }
+  EXPECT_TRUE(second.lastState() == first.lastState());
+}
+
 } // namespace
 } // namespace rv

@@ -161,6 +161,21 @@ TEST(SceneLoader, KeyWrittenTwiceIsNamedWithItsPath) {
   EXPECT_EQ(loadError(twoObjects), "(no error)");
 }
 
+TEST(SceneLoader, ANumberBeyondADoubleIsMalformedJson) {
+  // found by tests/fuzz: nlohmann's out_of_range escaped as another exception (exit 1, not 2)
+  const std::string big = writeFile("big.json", R"({"problem": "lorenz", "parameters": {"rho": 7e873177}})");
+  EXPECT_NE(loadError(big).find(big + ":$: malformed JSON: number overflow"), std::string::npos)
+      << loadError(big);
+}
+
+TEST(SceneLoader, ASetValueThatIsNotUtf8IsBadInput) {
+  // found by tests/fuzz: writing the message (or the document) threw nlohmann's type_error
+  EXPECT_NE(
+      errorOf(ball(), {parseOverride("energy=\x9a")}).find("--set energy: the value is not valid UTF-8"),
+      std::string::npos)
+      << errorOf(ball(), {parseOverride("energy=\x9a")});
+}
+
 TEST(SceneLoader, FolderEmptyAndMissingScenePathsArePlainInputErrors) {
   const std::string dir = ::testing::TempDir();
   EXPECT_NE(loadError(dir).find(dir + ": is a folder, not a scene file"), std::string::npos)
