@@ -9,7 +9,7 @@ BUILD_PKGS=(cmake g++ pkg-config ninja-build ccache
   nlohmann-json3-dev libcli11-dev libfmt-dev libfftw3-dev)
 TEST_PKGS=(libgtest-dev libgmock-dev libbenchmark-dev libboost-dev
   xvfb xauth xdotool x11-apps ffmpeg python3 python3-numpy python3-pil
-  clang-14 libfuzzer-14-dev)
+  clang-14 libfuzzer-14-dev clang-tidy)
 want=("${BUILD_PKGS[@]}")
 [ "${1:-build}" = test ] && want+=("${TEST_PKGS[@]}")
 missing=()
