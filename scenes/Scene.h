@@ -24,14 +24,15 @@ struct PlotView {
   PlotChartOptions chart; ///< the window's ranges, proportions and point type
 };
 
-/// A validated scene: everything needed to integrate and to draw.
+/// A validated scene: everything needed to integrate and to draw. Copies are cheap and share the immutable
+/// model and parameter values (no JSON is parsed again).
 struct Scene {
   std::string source;      ///< the file it came from (for messages)
   nlohmann::json document; ///< the document after --set overrides (what "save" writes)
   const ModelEntry* modelEntry = nullptr;
-  std::unique_ptr<Model> model;
+  std::shared_ptr<const Model> model;
   const IntegratorEntry* integratorEntry = nullptr;
-  std::unique_ptr<ParameterValues> integratorParameters;
+  std::shared_ptr<const ParameterValues> integratorParameters;
   Eigen::VectorXd initialState;
   SectionSettings poincare;  ///< "poincare": section, value, direction, points (maxPoints), ...
   LyapunovSettings lyapunov; ///< "lyapunov"
@@ -40,7 +41,7 @@ struct Scene {
   ViewOptions view;
   /// The fixed-point family's settings by section key ("fixedpoint", "continuation", ...; see
   /// ToolSettings.h).
-  std::map<std::string, std::unique_ptr<ParameterValues>> tools;
+  std::map<std::string, std::shared_ptr<const ParameterValues>> tools;
   std::vector<double> guess;         ///< "fixedpoint": {"guess": [...]} (empty: none)
   std::string continuationParameter; ///< "continuation": {"parameter": ...}
   std::optional<double> continuationTo;

@@ -4,6 +4,8 @@
 #include "dynamics/tools/FixedPoint.h"
 #include "dynamics/tools/FourierSpectrum.h"
 #include "dynamics/tools/Lyapunov.h"
+#include "dynamics/tools/Megno.h"
+#include "dynamics/tools/ToolRegistry.h"
 #include "render/charts/ToolCharts.h"
 #include "scenes/SceneLoader.h"
 #include "scenes/SceneTools.h"
@@ -16,19 +18,20 @@ namespace rv {
 const std::vector<std::string>& chartViews() {
   static const std::vector<std::string> v{"poincare",    "map3d",        "plot",     "multipliers",
                                           "bifurcation", "continuation", "spectrum", "lyapunov",
-                                          "surface",     "ram"};
+                                          "megno",       "surface",      "ram"};
   return v;
+}
+
+std::string chartTitle(const std::string& view) {
+  for (const auto& e : ToolRegistry::builtin().entries())
+    if (e.chartView == view) return e.title;
+  return view;
 }
 
 namespace {
 
-// a scene is copied by reloading its document (a Scene owns its model)
-Scene copyOf(const Scene& s) {
-  return sceneFromJson(s.document, s.source);
-}
-
 std::unique_ptr<PoincareChart> gridChart(const Scene& scene, MapGrid::Kind kind, const ToolControl& control) {
-  const SceneMap sm(copyOf(scene), {}, false);
+  const SceneMap sm(Scene(scene), {}, false);
   const ParameterValues& gv = scene.tool("grid");
   GridSettings g = gridSettings(gv);
   g.threeD = false; // a chart is a plane (the 2D section of a 3D map)
@@ -114,7 +117,7 @@ std::unique_ptr<Chart> sceneChart(const Scene& scene, const std::string& view, c
     chart->select(0);
   } else if (view == "multipliers") {
     chart = std::make_unique<PoincareChart>("Re", "Im");
-    drawMultipliers(*chart, multiplierPath(SceneMap(copyOf(scene)), control));
+    drawMultipliers(*chart, multiplierPath(SceneMap(Scene(scene)), control));
   } else if (view == "bifurcation") {
     const auto diagrams = scene.model->diagrams();
     const Diagram& d = findDiagram(diagrams, diagram, diagram.empty() ? "--view bifurcation" : "--diagram",
@@ -122,7 +125,7 @@ std::unique_ptr<Chart> sceneChart(const Scene& scene, const std::string& view, c
     chart = std::make_unique<PoincareChart>(d.axes[0], d.axes[1]);
     drawDiagram(*chart, d, {d.place(scene.initialState.data())});
   } else if (view == "continuation") {
-    const SceneMap sm(copyOf(scene));
+    const SceneMap sm{Scene(scene)};
     const auto cont = sm.continuationRun();
     try {
       cont->run(control);
@@ -140,7 +143,7 @@ std::unique_ptr<Chart> sceneChart(const Scene& scene, const std::string& view, c
       if (hi - lo > spread) spread = hi - lo, best = k;
     }
     std::vector<double> p, x;
-    std::vector<std::string> types;
+    std::vector<FixedPointType> types;
     for (const auto& c : pts)
       p.push_back(c.parameter), x.push_back(c.fixedPoint.point[best]), types.push_back(c.fixedPoint.type);
     chart = std::make_unique<PoincareChart>(cont->settings().parameter, sm.map().coordinateNames()[best]);
@@ -179,6 +182,16 @@ std::unique_ptr<Chart> sceneChart(const Scene& scene, const std::string& view, c
         control);
     chart = std::make_unique<PoincareChart>("t", "Lyapunov exponents");
     drawCurves(*chart, t, ex);
+  } else if (view == "megno") {
+    const RunSpec spec = scene.runSpec();
+    const Model& model = *scene.model;
+    std::vector<double> t, y;
+    megno(
+        model, [&] { return spec.makeIntegrator(model); }, scene.initialState,
+        megnoSettings(scene.tool("megno")),
+        [&](const MegnoEstimate& e) { t.push_back(e.time), y.push_back(e.megno); }, control);
+    chart = std::make_unique<PoincareChart>("t", "MEGNO <Y>");
+    drawCurves(*chart, t, {y});
   } else if (view == "surface") {
     chart = gridChart(scene, MapGrid::Kind::Surface, control);
   } else if (view == "ram") {

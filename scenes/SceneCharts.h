@@ -1,9 +1,9 @@
 // SceneCharts.h -- every chart view of a scene (manual §2.4.1-§2.4.4), computed and drawn: the Poincare map,
 // the multipliers of the continued fixed point, the bifurcation diagram, the continuation family, the
-// Fourier spectrum, the Lyapunov exponents against time, the |Map(x) - x| surface and the region of allowed
-// motion, Map3D (the 3D map, or a 2D map's points on its energy level in the first three state variables) and
-// the 2D / 3D plot filter (scene section "plot"). One definition for `rollviz chart`, the image tests and the
-// GUI.
+// Fourier spectrum, the Lyapunov exponents and MEGNO against time, the |Map(x) - x| surface and the region of
+// allowed motion, Map3D (the 3D map, or a 2D map's points on its energy level in the first three state
+// variables) and the 2D / 3D plot filter (scene section "plot"). One definition for `rollviz chart`, the
+// image tests and the GUI.
 #pragma once
 #include "render/charts/Chart3D.h"
 #include "render/charts/PlotChart.h"
@@ -18,6 +18,8 @@ namespace rv {
 
 /// The view names, in menu order.
 const std::vector<std::string>& chartViews();
+/// A view's title for menus: the title of the registered tool it draws (the view's name when none).
+std::string chartTitle(const std::string& view);
 
 /// Computes what `view` shows for the scene and draws it. `points` > 0 overrides poincare.points; `diagram`
 /// picks the bifurcation view's diagram (empty: the problem's first). Throws InputError for an unknown view

@@ -284,36 +284,6 @@ SectionSettings readPoincare(const json& j, const Where& w) {
   return p;
 }
 
-LyapunovSettings readLyapunov(const json& j, const Where& w) {
-  requireObject(j, w);
-  onlyKeys(j, w,
-           {"mode", "count", "interval", "perturbation", "max_perturbation", "estimate_every", "accuracy",
-            "successes", "output_period", "renormalize", "time"});
-  LyapunovSettings l;
-  if (j.contains("mode")) {
-    const std::string m = text(j["mode"], w / "mode");
-    if (m == "tangent")
-      l.mode = LyapunovSettings::Mode::Tangent;
-    else if (m == "perturbed")
-      l.mode = LyapunovSettings::Mode::Perturbed;
-    else
-      (w / "mode").fail("expected tangent or perturbed");
-  }
-  if (j.contains("count")) l.count = static_cast<int>(count(j["count"], w / "count"));
-  if (j.contains("interval")) l.interval = positive(j["interval"], w / "interval");
-  if (j.contains("perturbation")) l.perturbation = positive(j["perturbation"], w / "perturbation");
-  if (j.contains("max_perturbation"))
-    l.maxPerturbation = positive(j["max_perturbation"], w / "max_perturbation");
-  if (j.contains("estimate_every"))
-    l.estimateEvery = static_cast<int>(count(j["estimate_every"], w / "estimate_every"));
-  if (j.contains("accuracy")) l.accuracy = positive(j["accuracy"], w / "accuracy");
-  if (j.contains("successes")) l.successes = static_cast<int>(count(j["successes"], w / "successes", 0));
-  if (j.contains("output_period")) l.outputPeriod = positive(j["output_period"], w / "output_period");
-  if (j.contains("renormalize")) l.renormalizeIntegrals = boolean(j["renormalize"], w / "renormalize");
-  if (j.contains("time")) l.maxTime = positive(j["time"], w / "time");
-  return l;
-}
-
 SpectrumSettings readSpectrum(const json& j, const Where& w) {
   requireObject(j, w);
   onlyKeys(j, w, {"function", "samples", "max_frequency", "peaks", "min_peak_distance"});
@@ -393,7 +363,7 @@ Eigen::VectorXd readInitial(const json& j, const Where& w, const Model& model,
 // the fixed-point family's sections: numbers and choices from their tables, plus a few non-numeric keys
 void readToolSections(const json& doc, const Where& root, Scene& scene) {
   for (const auto& section : toolSections()) {
-    auto values = std::make_unique<ParameterValues>(*section.table);
+    auto values = std::make_shared<ParameterValues>(*section.table);
     if (doc.contains(section.key)) {
       const Where w = root / section.key;
       const json& j = requireObject(doc[section.key], w);
@@ -450,8 +420,8 @@ void applyOverrides(json& doc, const std::vector<SceneOverride>& overrides) {
       doc["parameters"][o.key] = value;
       continue;
     }
-    static const std::set<std::string> sections{"integrator", "initial", "poincare",   "lyapunov",
-                                                "spectrum",   "plot",    "parameters", "view"};
+    static const std::set<std::string> sections{"integrator", "initial",    "poincare", "spectrum",
+                                                "plot",       "parameters", "view"};
     const std::string head = o.key.substr(0, o.key.find('.'));
     if (!sections.count(head) && !findToolSection(head))
       throw InputError(flag + ": unknown scene field '" + head + "'");
@@ -496,8 +466,8 @@ Scene sceneFromJson(json doc, const std::string& source, const std::vector<Scene
   applyOverrides(doc, overrides);
   for (const auto& [key, value] : doc.items()) {
     static const std::set<std::string> known{"problem", "parameters", "integrator", "initial",
-                                             "plot",    "poincare",   "lyapunov",   "spectrum",
-                                             "view",    "title",      "description"};
+                                             "plot",    "poincare",   "spectrum",   "view",
+                                             "title",   "description"};
     if (!known.count(key) && !findToolSection(key)) {
       std::string list;
       for (const auto& k : known)
@@ -535,17 +505,17 @@ Scene sceneFromJson(json doc, const std::string& source, const std::vector<Scene
   } catch (const InputError& e) {
     (wi / "method").fail(e.what());
   }
-  scene.integratorParameters = std::make_unique<ParameterValues>(*scene.integratorEntry->parameters);
-  readParameters(integ, wi, *scene.integratorParameters, {"method"});
+  auto integratorParameters = std::make_shared<ParameterValues>(*scene.integratorEntry->parameters);
+  readParameters(integ, wi, *integratorParameters, {"method"});
+  scene.integratorParameters = integratorParameters;
   try {
-    scene.integratorEntry->create(*scene.integratorParameters); // validates combinations of values
+    scene.integratorEntry->create(*integratorParameters); // validates combinations of values
   } catch (const InputError& e) {
     wi.fail(e.what());
   }
 
   scene.poincare.maxPoints = 2000;
   if (doc.contains("poincare")) scene.poincare = readPoincare(doc["poincare"], root / "poincare");
-  if (doc.contains("lyapunov")) scene.lyapunov = readLyapunov(doc["lyapunov"], root / "lyapunov");
   if (doc.contains("spectrum")) scene.spectrum = readSpectrum(doc["spectrum"], root / "spectrum");
   if (doc.contains("plot")) scene.plot = readPlot(doc["plot"], root / "plot");
   if (!scene.poincare.observable.empty() && !scene.model->isMap() &&
@@ -553,6 +523,7 @@ Scene sceneFromJson(json doc, const std::string& source, const std::vector<Scene
     (root / "poincare" / "section")
         .fail("unknown observable '" + scene.poincare.observable + "' of " + problem);
   readToolSections(doc, root, scene);
+  scene.lyapunov = lyapunovSettings(scene.tool("lyapunov"));
   if (!doc.contains("initial")) root.fail("missing \"initial\" (a map point or a state)");
   scene.initialState = readInitial(doc["initial"], root / "initial", *scene.model, scene.poincare);
   if (doc.contains("view")) scene.view = readView(doc["view"], root / "view");

@@ -2,6 +2,7 @@
 
 #include "dynamics/core/Errors.h"
 #include "dynamics/jobs/PoincareTask.h"
+#include "scenes/ChartTask.h"
 #include "scenes/SceneLoader.h"
 
 #include <cmath>
@@ -99,7 +100,11 @@ bool editTask(Task& task, const Scene& edited) {
     map->edit(edited.runSpec(), edited.poincare);
     return true;
   }
-  const SceneMap sm(sceneFromJson(edited.document, edited.source), {}, false);
+  if (auto* chart = dynamic_cast<ChartTask*>(&task)) {
+    chart->edit(edited.document);
+    return false;
+  }
+  const SceneMap sm(Scene(edited), {}, false);
   if (auto* search = dynamic_cast<FixedPointTask*>(&task)) {
     search->edit(sm.taskSpec());
     return true;

@@ -52,8 +52,8 @@ private:
 /// Edit properties (manual §2.1): gives a stopped tool the values of an edited scene (problem, method,
 /// section and the tool's own settings). A Poincare map and a fixed-point search go on from where they
 /// stopped (returns true); a continuation, separatrix branch or bifurcation tree starts again with them from
-/// its own guess (returns false). Throws InputError when the tool cannot take them (a map's last point has no
-/// state on the new level; a tool with no such settings).
+/// its own guess, a chart (ChartTask) is computed again with them (returns false). Throws InputError when the
+/// tool cannot take them (a map's last point has no state on the new level; a tool with no such settings).
 bool editTask(Task& task, const Scene& edited);
 
 /// The scene's Poincare map from its initial state; `points` > 0 overrides poincare.points (default 2000).

@@ -35,14 +35,13 @@ std::pair<int, int> parseSize(const std::string& text) {
 int runCli(int argc, char** argv, const GuiLauncher& gui) {
   CLI::App app{"rollviz: bodies rolling without slipping, and the tools of nonlinear dynamics"};
   app.require_subcommand(0, 1);
-  const std::vector<Command> commands{addListCommand(app),       addDescribeCommand(app),
-                                      addIntegrateCommand(app),  addPoincareCommand(app),
-                                      addLyapunovCommand(app),   addSpectrumCommand(app),
-                                      addFixedPointCommand(app), addContinueCommand(app),
-                                      addSeparatrixCommand(app), addBifurcationTreeCommand(app),
-                                      addSurfaceCommand(app),    addRamCommand(app),
-                                      addDiagramCommand(app),    addRenderCommand(app),
-                                      addVideoCommand(app),      addChartCommand(app)};
+  const std::vector<Command> commands{
+      addListCommand(app),      addDescribeCommand(app),   addDescribeToolCommand(app),
+      addIntegrateCommand(app), addPoincareCommand(app),   addLyapunovCommand(app),
+      addMegnoCommand(app),     addSpectrumCommand(app),   addFixedPointCommand(app),
+      addContinueCommand(app),  addSeparatrixCommand(app), addBifurcationTreeCommand(app),
+      addSurfaceCommand(app),   addRamCommand(app),        addDiagramCommand(app),
+      addRenderCommand(app),    addVideoCommand(app),      addChartCommand(app)};
   GuiOptions guiOptions;
   if (gui) {
     auto* cmd = app.add_subcommand("gui", "open the GUI on a scene (the default with no arguments)");

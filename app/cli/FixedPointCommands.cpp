@@ -129,14 +129,14 @@ void printContinuationPoint(FILE* f, const ContinuationPoint& p) {
   for (auto z : p.fixedPoint.multipliers)
     row.push_back(z.real()), row.push_back(z.imag());
   row.push_back(p.fixedPoint.residual);
-  printRow(f, row, "," + p.fixedPoint.type);
+  printRow(f, row, std::string(",") + toString(p.fixedPoint.type));
 }
 
 nlohmann::json changeJson(const TypeChange& t) {
   return {{"parameter", t.parameter},
-          {"kind", t.kind},
-          {"from", t.from},
-          {"to", t.to},
+          {"kind", toString(t.kind)},
+          {"from", toString(t.from)},
+          {"to", toString(t.to)},
           {"point", toVector(t.at.fixedPoint.point)},
           {"multipliers", multipliersJson(t.at.fixedPoint.multipliers)}};
 }
@@ -248,7 +248,7 @@ Command addFixedPointCommand(CLI::App& app) {
               nlohmann::json j{{"point", toVector(r.point)},
                                {"coordinates", map.coordinateNames()},
                                {"multipliers", multipliersJson(r.multipliers)},
-                               {"type", r.type},
+                               {"type", toString(r.type)},
                                {"residual", r.residual},
                                {"iterations", r.iterations},
                                {"evaluations", r.evaluations},
@@ -270,7 +270,7 @@ Command addFixedPointCommand(CLI::App& app) {
             for (auto z : r.multipliers)
               fmt::print("multiplier: {:.15g} {:+.15g} i  (|m| = {:.15g})\n", z.real(), z.imag(),
                          std::abs(z));
-            fmt::print("type: {}\nresidual: {:.3g}\niterations: {}\nmap evaluations: {}\n", r.type,
+            fmt::print("type: {}\nresidual: {:.3g}\niterations: {}\nmap evaluations: {}\n", toString(r.type),
                        r.residual, r.iterations, r.evaluations);
             return 0;
           }};
@@ -306,9 +306,7 @@ Command addContinueCommand(CLI::App& app) {
                 printContinuationPoint(out.get(), p);
               },
               [&](const TypeChange& t) {
-                if (!a->json)
-                  fmt::print(changes, "type change at {} = {:.12g}: {} -> {} ({})\n", c.parameter,
-                             t.parameter, t.from, t.to, t.kind);
+                if (!a->json) fmt::print(changes, "{}\n", describe(t, c.parameter));
               });
         } catch (const ComputationError& e) {
           if (cont.points().empty()) throw;
@@ -364,7 +362,7 @@ Command addBifurcationTreeCommand(CLI::App& app) {
                                         p.parameter};
                 for (double x : toVector(p.fixedPoint.point))
                   row.push_back(x);
-                printRow(out.get(), row, "," + p.fixedPoint.type);
+                printRow(out.get(), row, std::string(",") + toString(p.fixedPoint.type));
               },
               [&](const PeriodDoubling& d) {
                 if (!a->json)

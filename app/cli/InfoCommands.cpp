@@ -1,4 +1,4 @@
-// InfoCommands.cpp -- `rollviz list ...` and `rollviz describe PROBLEM`.
+// InfoCommands.cpp -- `rollviz list ...`, `rollviz describe PROBLEM` and `rollviz describe-tool ID`.
 #include "app/cli/Commands.h"
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/ModelRegistry.h"
@@ -44,11 +44,20 @@ Command addListCommand(CLI::App& app) {
               for (const auto& e : IntegratorRegistry::builtin().entries())
                 fmt::print("{:<10} {}\n", e.id, e.title);
             else if (what == "tools") {
-              fmt::print("poincare, lyapunov, spectrum: the scene sections of the same names\n");
-              for (const auto& t : toolSections()) {
-                fmt::print("\n{} (scene section \"{}\", --set {}.ID=VALUE):\n", t.title, t.key, t.key);
-                printParameters(*t.table);
-              }
+              // the manual's tree: a child indented under its parent
+              const auto& tools = ToolRegistry::builtin().entries();
+              const auto depth = [&](const ToolEntry& e) {
+                int d = 0;
+                for (const ToolEntry* p = &e; !p->parent.empty(); p = &ToolRegistry::builtin().get(p->parent))
+                  ++d;
+                return d;
+              };
+              for (const auto& e : tools)
+                fmt::print("{:<{}}{:<{}} {}: {}\n", "", 2 * depth(e), e.id, 20 - 2 * depth(e), e.title,
+                           e.description);
+              fmt::print(
+                  "\nrollviz describe-tool ID: a tool's settings (scene section, --set SECTION.ID=VALUE) "
+                  "and outputs\n");
             } else {
               std::vector<std::string> files;
               for (const auto& f : std::filesystem::directory_iterator(scenesDirectory()))
@@ -59,6 +68,31 @@ Command addListCommand(CLI::App& app) {
             }
             return 0;
           }};
+}
+
+Command addDescribeToolCommand(CLI::App& app) {
+  auto* cmd = app.add_subcommand("describe-tool", "a tool's settings, outputs, command, chart and parent");
+  auto idPtr = std::make_shared<std::string>();
+  cmd->add_option("tool", *idPtr, "tool id (rollviz list tools)")->required();
+  return {
+      cmd, [idPtr] {
+        const ToolEntry& e = ToolRegistry::builtin().get(*idPtr);
+        fmt::print("{}\n  {}\n  {}\n  reference: {}\n", e.id, e.title, e.description, e.reference);
+        fmt::print("  in the tool tree under: {}\n", e.parent.empty() ? "(the top)" : e.parent);
+        fmt::print("  command: {}\n", e.command.empty() ? "(none: a chart view)" : "rollviz " + e.command);
+        fmt::print("  chart: {}\n", e.chartView.empty() ? "(none)" : "rollviz chart --view " + e.chartView);
+        if (const ToolSection* s = findToolSection(e.section)) {
+          fmt::print("\nsettings (scene section \"{}\", --set {}.ID=VALUE; id, default, range, meaning):\n",
+                     s->key, s->key);
+          printParameters(*s->table);
+        } else if (!e.section.empty()) {
+          fmt::print("\nsettings: the scene section \"{}\" (README: scene files)\n", e.section);
+        }
+        fmt::print("\noutputs:\n");
+        for (const auto& out : e.outputs)
+          fmt::print("  {:<22} {}\n", out.name, out.description);
+        return 0;
+      }};
 }
 
 Command addDescribeCommand(CLI::App& app) {

@@ -1,11 +1,13 @@
-// ToolCommands.cpp -- `rollviz poincare`, `rollviz lyapunov`, `rollviz spectrum`: the tools of dynamics/tools
-// run in the foreground, with progress on a terminal and Ctrl-C keeping what was computed (exit 130).
+// ToolCommands.cpp -- `rollviz poincare`, `rollviz lyapunov`, `rollviz megno`, `rollviz spectrum`: the tools
+// of dynamics/tools run in the foreground, with progress on a terminal and Ctrl-C keeping what was computed
+// (exit 130).
 #include "app/cli/Checkpoint.h"
 #include "app/cli/Commands.h"
 #include "app/cli/Output.h"
 #include "app/cli/Progress.h"
 #include "dynamics/core/Errors.h"
 #include "dynamics/io/AtomicFile.h"
+#include "dynamics/tools/Megno.h"
 
 #include <cmath>
 #include <cstdio>
@@ -33,6 +35,13 @@ struct PoincareOptions {
   std::string output, checkpoint;
 };
 struct LyapunovOptions {
+  SceneArgs scene;
+  double time = 0;
+  bool json = false;
+  std::string checkpoint;
+};
+
+struct MegnoOptions {
   SceneArgs scene;
   double time = 0;
   bool json = false;
@@ -138,6 +147,47 @@ Command addLyapunovCommand(CLI::App& app) {
               fmt::print("sum = {:.10g}\ntime = {:.10g}\nconverged = {}\n", r.last.sum(), r.last.time,
                          r.converged);
             }
+            return r.stopped ? 130 : 0;
+          }};
+}
+
+Command addMegnoCommand(CLI::App& app) {
+  auto* cmd = app.add_subcommand("megno", "the chaos indicators MEGNO and FLI along a scene's trajectory");
+  auto o = std::make_shared<MegnoOptions>();
+  addSceneArgs(cmd, o->scene);
+  cmd->add_option("--time", o->time, "integration time (default: the scene's megno.time)");
+  cmd->add_flag("--json", o->json, "print one JSON object: megno, megno_rate, y, fli, time");
+  addCheckpointOption(cmd, o->checkpoint);
+  return {cmd, [o] {
+            const Scene scene = o->scene.load();
+            MegnoSettings s = megnoSettings(scene.tool("megno"));
+            if (o->time < 0 || !std::isfinite(o->time)) throw InputError("--time: must be positive");
+            if (o->time > 0) s.maxTime = o->time;
+            const RunSpec spec = scene.runSpec();
+            const Model& model = *scene.model;
+            Checkpoint checkpoint(o->checkpoint, "megno",
+                                  scene.document.dump() + fmt::format(" --time {}", s.maxTime));
+            MegnoRun run(
+                model, [&] { return spec.makeIntegrator(model); }, scene.initialState, s);
+            if (auto saved = checkpoint.load()) run.restore(saved->state);
+            Progress progress("megno");
+            checkpoint.run([&](const ToolControl& c) { return run.run({}, c); },
+                           [&](Snapshot& state) { run.save(state); }, interruptibleControl(progress));
+            const MegnoResult& r = run.result();
+            if (!r.stopped) checkpoint.finish();
+            const MegnoEstimate& e = r.last;
+            if (o->json)
+              fmt::print("{}\n", nlohmann::json{{"megno", e.megno},
+                                                {"megno_rate", e.megnoRate},
+                                                {"y", e.y},
+                                                {"fli", e.fli},
+                                                {"time", e.time},
+                                                {"stopped", r.stopped}}
+                                     .dump());
+            else
+              fmt::print(
+                  "megno = {:.10g}\nmegno_rate = {:.10g}\ny = {:.10g}\nfli = {:.10g}\ntime = {:.10g}\n",
+                  e.megno, e.megnoRate, e.y, e.fli, e.time);
             return r.stopped ? 130 : 0;
           }};
 }

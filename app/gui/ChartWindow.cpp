@@ -3,6 +3,7 @@
 #include "app/gui/QtVtkWidget.h"
 #include "dynamics/core/Errors.h"
 #include "dynamics/tools/ReturnMap.h"
+#include "scenes/ChartTask.h"
 #include "scenes/SceneCharts.h"
 #include "scenes/SceneLoader.h"
 
@@ -15,73 +16,82 @@
 
 namespace rv {
 
-ChartWindow::ChartWindow(const nlohmann::json& document, const std::string& source, const std::string& view,
-                         QWidget* parent, const std::string& diagram)
-    : FilterWindow(QString::fromStdString(diagram.empty() ? view : view + " " + diagram),
+ChartWindow::ChartWindow(JobTree& jobs, const nlohmann::json& document, const std::string& source,
+                         const std::string& view, QWidget* parent, const std::string& diagram)
+    : FilterWindow(QString::fromStdString(chartTitle(view) + (diagram.empty() ? "" : " " + diagram)),
                    QString::fromStdString(view), parent),
-      viewName_(view), diagram_(diagram) {
+      viewName_(view), diagram_(diagram), jobs_(jobs) {
   setStatus("computing…");
   progressBar_ = new QProgressBar(this);
   progressBar_->setRange(0, 1000);
   progressBar_->setTextVisible(false);
   cancel_ = new QPushButton("Cancel", this);
-  cancel_->setToolTip("stop the computation");
+  cancel_->setToolTip("stop the computation (the tool manager continues it)");
   connect(cancel_, &QPushButton::clicked, this, &ChartWindow::cancel);
   bar()->insertWidget(1, progressBar_);
   bar()->insertWidget(2, cancel_);
-  auto* poll = new QTimer(this); // the worker only stores its progress; the window shows it
-  connect(poll, &QTimer::timeout, this, [this, poll] {
-    if (chart_ || !failure_.isEmpty()) return poll->stop();
-    progressBar_->setValue(static_cast<int>(1000 * progress_.load()));
-  });
-  poll->start(100);
-  worker_ = std::thread([this, document, source, view, diagram] {
-    std::unique_ptr<Chart> chart;
-    QString failure;
-    try {
-      const Scene scene = sceneFromJson(document, source);
-      ToolControl control;
-      control.stopRequested = [this] { return stop_.load(); };
-      control.progress = [this](double f) { progress_.store(f); };
-      chart = sceneChart(scene, view, control, 0, diagram);
-    } catch (const Stopped&) {
-      failure = "stopped";
-    } catch (const std::exception& e) {
-      failure = e.what();
-    }
-    if (closing_) return; // the window is going away: it joins this thread
-    // shared: if the window goes before the call is delivered, the discarded call frees the chart
-    QMetaObject::invokeMethod(
-        this, [this, c = std::shared_ptr<Chart>(std::move(chart)), failure] { deliver(c, failure); },
-        Qt::QueuedConnection);
-  });
+  Job& job = jobs_.add(std::make_unique<ChartTask>(document, source, view, diagram));
+  jobId_ = job.id();
+  job.start();
+  auto* timer = new QTimer(this); // the job only stores its state; the window follows it
+  connect(timer, &QTimer::timeout, this, &ChartWindow::poll);
+  timer->start(100);
+}
+
+Job* ChartWindow::job() const {
+  return jobs_.find(jobId_);
 }
 
 void ChartWindow::cancel() {
-  stop_ = true;
-  cancel_->setEnabled(false);
-  setStatus("stopping…");
+  if (Job* j = job()) j->stop(); // prompt: the computation polls between its steps; the timer shows the rest
 }
 
 ChartWindow::~ChartWindow() {
-  closing_ = true;
-  stop_ = true;
-  if (worker_.joinable()) worker_.join();
+  if (Job* j = job()) jobs_.remove(*j);
 }
 
-void ChartWindow::deliver(std::shared_ptr<Chart> chart, const QString& failure) {
-  if (worker_.joinable()) worker_.join();
-  failure_ = failure;
-  progressBar_->hide();
-  cancel_->hide();
-  if (chart) {
-    chart_ = std::move(chart);
+void ChartWindow::poll() {
+  Job* j = job();
+  const Job::Status status = j ? j->status() : Job::Status::Failed;
+  const bool running = status == Job::Status::Running;
+  progressBar_->setVisible(running);
+  cancel_->setVisible(running);
+  cancel_->setEnabled(running);
+  if (running) {
+    progressBar_->setValue(static_cast<int>(1000 * j->progress()));
+    if (seen_ != status) setStatus("computing…");
+    seen_ = status;
+    return;
+  }
+  if (status == seen_ && j) return;
+  seen_ = status;
+  if (!j) {
+    failure_ = "deleted in the tool manager";
+    setStatus(failure_);
+    emit finished();
+    return;
+  }
+  auto* task = dynamic_cast<ChartTask*>(&j->task());
+  const std::shared_ptr<Chart> chart = task ? task->chart() : nullptr;
+  if (status == Job::Status::Failed) {
+    failure_ = QString::fromStdString(j->error());
+    setStatus("failed: " + failure_);
+  } else {
+    failure_ = status == Job::Status::Stopped && !chart ? "stopped" : "";
+    setStatus(status == Job::Status::Finished ? QString::fromStdString(chartTitle(viewName_))
+              : chart                         ? "stopped: what was computed so far"
+                                              : "stopped");
+  }
+  if (chart && chart != chart_) {
+    if (chart_) { // a chart is never attached to a view that drew another
+      markSeries_.clear();
+      chart_.reset();
+      replaceView();
+    }
+    chart_ = chart;
     chart_->attach(view()->renderWindow());
     drawMarks();
-    setStatus(QString::fromStdString(viewName_));
     view()->update();
-  } else {
-    setStatus("failed: " + failure);
   }
   emit finished();
 }

@@ -1,16 +1,16 @@
 // ChartWindow.h -- a filter window (manual §2.4): any chart view of the scene (scenes/SceneCharts: the map,
-// Map3D, 2D / 3D plots, multipliers, bifurcation diagram, continuation, spectrum, Lyapunov exponents,
-// surface, RAM), computed on a worker thread and drawn when ready. The GUI thread never computes; closing the
-// window stops the computation.
+// Map3D, 2D / 3D plots, multipliers, bifurcation diagram, continuation, spectrum, Lyapunov exponents, MEGNO,
+// surface, RAM), computed as a Job of the job tree (scenes/ChartTask) -- listed in the tool manager, where it
+// is stopped, continued, edited and restarted like every tool -- and drawn when the job ends. The GUI thread
+// never computes; closing the window deletes the job.
 #pragma once
 #include "app/gui/FilterWindow.h"
+#include "dynamics/jobs/JobTree.h"
 #include "render/ViewOptions.h"
 
-#include <atomic>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
-#include <thread>
 #include <vector>
 
 class QProgressBar;
@@ -23,13 +23,15 @@ class ChartWindow : public FilterWindow {
 public:
   /// Starts computing `view` for the scene document (`source` names it in messages); `diagram` picks the
   /// bifurcation view's diagram (empty: the problem's first).
-  ChartWindow(const nlohmann::json& document, const std::string& source, const std::string& view,
-              QWidget* parent = nullptr, const std::string& diagram = "");
+  ChartWindow(JobTree& jobs, const nlohmann::json& document, const std::string& source,
+              const std::string& view, QWidget* parent = nullptr, const std::string& diagram = "");
   ~ChartWindow() override;
   bool ready() const { return chart_ != nullptr; }
   /// Stops the computation (Cancel): what was computed so far is drawn where the view can (a family, a
   /// plot), else the window says it stopped.
   void cancel();
+  /// The job computing the chart (nullptr once deleted from the tool manager).
+  Job* job() const;
   /// Why the computation failed (empty while running or when it succeeded).
   const QString& failure() const { return failure_; }
   const std::string& viewName() const { return viewName_; }
@@ -53,18 +55,19 @@ protected:
   const Chart* chart() const override { return chart_.get(); }
 
 private:
-  void deliver(std::shared_ptr<Chart> chart, const QString& failure);
+  /// Follows the job: its progress, and its chart or failure when it ends (polled by a timer).
+  void poll();
   void drawMarks();
   std::string viewName_, diagram_;
   std::vector<Mark> marks_;
   std::vector<int> markSeries_;
   std::shared_ptr<Chart> chart_;
   QString failure_;
-  std::atomic<bool> stop_{false}, closing_{false};
-  std::atomic<double> progress_{0};
+  JobTree& jobs_;
+  int jobId_;
+  Job::Status seen_ = Job::Status::Ready;
   QProgressBar* progressBar_;
   QPushButton* cancel_;
-  std::thread worker_;
 };
 
 } // namespace rv

@@ -11,6 +11,7 @@
 #include <QTreeWidget>
 #include <QVBoxLayout>
 #include <functional>
+#include <map>
 
 namespace rv {
 
@@ -32,43 +33,16 @@ ControlPanel::ControlPanel(QWidget* parent) : QWidget(parent) {
   auto* tl = new QVBoxLayout(tools);
   toolTree_ = new QTreeWidget;
   toolTree_->setHeaderLabels({"tool", "what it does"});
-  struct Node {
-    const char *id, *title, *tip;
-    std::vector<Node> children;
-  };
-  const std::vector<Node> tree = {
-      {"poincare",
-       "Poincaré map",
-       "a trajectory from the scene's initial point on the map window",
-       {{"spectrum", "Fourier spectrum", "of spectrum.function along the trajectory (a chart window)", {}},
-        {"lyapunov", "Lyapunov exponents", "against time (a chart window)", {}},
-        {"map3d", "Map3D", "the map in three dimensions (a chart window)", {}},
-        {"plot",
-         "2D / 3D plot",
-         "the plot section's observables along the 3D view's run and every trajectory of the map (a live "
-         "filter window; Windows > 2D plot… asks for them)",
-         {}}}},
-      {"fixedpoint",
-       "Fixed points",
-       "Newton (or gradient) search from fixedpoint.guess; the path on the map",
-       {{"continuation", "Continuation", "the family in continuation.parameter up to continuation.to", {}},
-        {"separatrix", "Separatrices", "the four branches at the fixed point", {}},
-        {"bifurcation_tree", "Bifurcation tree", "period doublings along the continuation", {}}}},
-      {"surface", "Surface |Map(x) - x|", "on the grid section's rectangle (a chart window)", {}},
-      {"ram", "Region of allowed motion", "on the grid section's rectangle (a chart window)", {}},
-      {"diagram", "Topological analysis", "the bifurcation diagram on the plane of first integrals", {}}};
-  const std::function<void(QTreeWidgetItem*, const Node&)> addNode = [&](QTreeWidgetItem* parent,
-                                                                         const Node& n) {
+  std::map<std::string, QTreeWidgetItem*> items; // a parent comes before its children in the registry
+  for (const auto& e : ToolRegistry::builtin().entries()) {
+    QTreeWidgetItem* parent = e.parent.empty() ? nullptr : items.at(e.parent);
     auto* it = parent ? new QTreeWidgetItem(parent) : new QTreeWidgetItem(toolTree_);
-    it->setText(0, n.title);
-    it->setText(1, n.tip);
-    it->setToolTip(0, n.tip);
-    it->setData(0, Qt::UserRole, QString(n.id));
-    for (const auto& c : n.children)
-      addNode(it, c);
-  };
-  for (const auto& n : tree)
-    addNode(nullptr, n);
+    it->setText(0, QString::fromStdString(e.title));
+    it->setText(1, QString::fromStdString(e.description));
+    it->setToolTip(0, QString::fromStdString(e.description + " (" + e.reference + ")"));
+    it->setData(0, Qt::UserRole, QString::fromStdString(e.id));
+    items[e.id] = it;
+  }
   toolTree_->expandAll();
   toolTree_->resizeColumnToContents(0);
   auto* createButton = new QPushButton("Create");

@@ -55,6 +55,13 @@ bool saveChartCsv(const Chart& chart, const QString& path) {
   }
 }
 
+void FilterWindow::replaceView() {
+  auto* fresh = new QtVtkWidget(this);
+  delete layout()->replaceWidget(view_, fresh);
+  delete view_;
+  view_ = fresh;
+}
+
 void exportChartDialog(QWidget* parent, QtVtkWidget* view, const Chart& chart, const QString& name,
                        const std::function<void(const QString&)>& failed) {
   const QString path = QFileDialog::getSaveFileName(parent, "Export chart", name + ".png",

@@ -36,6 +36,8 @@ protected:
   /// The chart shown (nullptr while there is none yet).
   virtual const Chart* chart() const = 0;
   void setStatus(const QString& text);
+  /// A fresh chart view in place of the old one (a new chart is never attached to a view that drew another).
+  void replaceView();
   /// The row under the chart, for a window's own controls (left of the save buttons).
   QHBoxLayout* bar() const { return bar_; }
 

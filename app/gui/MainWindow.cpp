@@ -13,6 +13,7 @@
 #include "dynamics/core/Errors.h"
 #include "dynamics/io/AtomicFile.h"
 #include "dynamics/jobs/PoincareTask.h"
+#include "dynamics/tools/ToolRegistry.h"
 #include "scenes/SceneCharts.h"
 #include "scenes/SceneLoader.h"
 
@@ -207,7 +208,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
       ->setToolTip("the body's axes on the unit sphere as it turns (manual 2.4.5)");
   auto* charts = windows->addMenu("Charts");
   for (const auto& v : chartViews())
-    charts->addAction(QString::fromStdString(v), this, [this, v] { openChart(v); });
+    charts->addAction(QString::fromStdString(chartTitle(v)), this, [this, v] { openChart(v); });
   auto* tools = menuBar()->addMenu("&Tools");
   auto* separatrices =
       tools->addAction("Separatrices of the fixed point", map_, &MapPanel::startSeparatrices);
@@ -231,7 +232,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 
 MainWindow::~MainWindow() {
   timer_.stop();
-  if (recorder_) { // a recording in progress is stopped, and its video kept
+  qDeleteAll(findChildren<ChartWindow*>()); // their jobs live in the map's job tree, which goes first
+  if (recorder_) {                          // a recording in progress is stopped, and its video kept
     stopRecording();
     recorder_->process->waitForFinished(10000);
   }
@@ -523,8 +525,9 @@ void MainWindow::createTool(const std::string& id) {
     map_->startBifurcationTree();
   else if (id == "plot") // a filter: fed live by the running trajectories
     openPlotWindow(scene_->plot);
-  else // the tools whose output is a chart of its own: spectrum, lyapunov, map3d, surface, ram, diagram
-    openChart(id == "diagram" ? "bifurcation" : id);
+  else // the tools whose output is a chart of its own: spectrum, lyapunov, megno, map3d, surface, ram,
+       // diagram
+    openChart(ToolRegistry::builtin().get(id).chartView);
 }
 
 void MainWindow::diagramDialog() {
@@ -548,7 +551,7 @@ void MainWindow::diagramDialog() {
 ChartWindow* MainWindow::openChart(const std::string& view, const std::string& diagram) {
   if (!scene_) return nullptr;
   // with the control panel's values as they stand (Apply not needed for a chart)
-  auto* w = new ChartWindow(control_->editedDocument(), scene_->source, view, this, diagram);
+  auto* w = new ChartWindow(map_->jobs(), control_->editedDocument(), scene_->source, view, this, diagram);
   w->setAttribute(Qt::WA_DeleteOnClose);
   w->show();
   if (view == "bifurcation") map_->addDiagramWindow(w); // the map's trajectories are points on it

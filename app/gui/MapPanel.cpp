@@ -11,6 +11,7 @@
 #include "dynamics/jobs/PoincareTask.h"
 #include "dynamics/tools/ToolSettings.h"
 #include "render/charts/Chart3D.h"
+#include "scenes/ChartTask.h"
 #include "scenes/SceneLoader.h"
 #include "scenes/SceneTools.h"
 
@@ -48,7 +49,13 @@ MapPanel::~MapPanel() {
 }
 
 void MapPanel::setScene(const Scene& scene) {
-  jobs_.removeAll();
+  // the map's tools belong to the old scene; a chart's job belongs to its window, which computes its own
+  // scene
+  std::vector<int> old;
+  for (const Job* j : jobs_.jobs())
+    if (!j->parent() && !dynamic_cast<const ChartTask*>(&j->task())) old.push_back(j->id());
+  for (int id : old) // by id: removing one removes the tools under it
+    if (Job* j = jobs_.find(id)) jobs_.remove(*j);
   series_.clear();
   searches_.clear();
   tools_.clear();
@@ -190,7 +197,7 @@ void MapPanel::searchFixedPointAt(double x, double y) {
   try {
     MapToolOverrides o;
     o.guess = mapPoint(x, y);
-    const SceneMap sm(sceneFromJson(scene_->document, scene_->source), o);
+    const SceneMap sm(Scene(*scene_), o);
     auto task = std::make_unique<FixedPointTask>(sm.taskSpec());
     FixedPointTask* raw = task.get();
     Job& job = jobs_.add(std::move(task));
@@ -212,7 +219,7 @@ std::unique_ptr<SceneMap> MapPanel::sceneMap() {
     return nullptr;
   }
   try {
-    return std::make_unique<SceneMap>(sceneFromJson(scene_->document, scene_->source));
+    return std::make_unique<SceneMap>(Scene(*scene_));
   } catch (const InputError& e) {
     emit message(QString::fromStdString(e.what()));
     return nullptr;
@@ -269,7 +276,8 @@ void MapPanel::startContinuation() {
   try {
     auto task = std::make_unique<ContinuationTask>(sm->taskSpec(), sm->continuation());
     ContinuationTask* raw = task.get();
-    startTool(std::move(task), {0.95, 0.55, 0.1}, [this, raw](ToolSeries& t) {
+    const std::string parameter = sm->continuation().parameter;
+    startTool(std::move(task), {0.95, 0.55, 0.1}, [this, raw, parameter](ToolSeries& t) {
       std::vector<ContinuationPoint> points;
       std::vector<TypeChange> changes;
       raw->points().take(points);
@@ -279,11 +287,7 @@ void MapPanel::startContinuation() {
         offerMultipliers(t, p.parameter, p.fixedPoint.multipliers);
       }
       for (const auto& c : changes)
-        emit message(QString("type change at %1 = %2: %3 -> %4 (%5)")
-                         .arg(QString::fromStdString(raw->describe()))
-                         .arg(c.parameter, 0, 'g', 12)
-                         .arg(QString::fromStdString(c.from), QString::fromStdString(c.to),
-                              QString::fromStdString(c.kind)));
+        emit message(QString::fromStdString(describe(c, parameter)));
       return !points.empty();
     });
     emit message("continuing the scene's fixed point");
@@ -308,7 +312,8 @@ void MapPanel::startBifurcationTree() {
       raw->doublings().take(doublings);
       for (const auto& p : points) {
         t.x.push_back(p.point.fixedPoint.point[0]), t.y.push_back(p.point.fixedPoint.point[1]);
-        if (p.point.fixedPoint.type == "elliptic") // manual §2.4.3: only the tree's elliptic branches
+        if (p.point.fixedPoint.type ==
+            FixedPointType::Elliptic) // manual §2.4.3: only the tree's elliptic branches
           offerMultipliers(t, p.point.parameter, p.point.fixedPoint.multipliers);
       }
       for (const auto& d : doublings)
@@ -423,7 +428,7 @@ void MapPanel::drain() {
       QString m = QString("fixed point (");
       for (Eigen::Index i = 0; i < r->point.size(); ++i)
         m += QString(i ? ", %1" : "%1").arg(r->point[i], 0, 'g', 12);
-      m += QString("): %1; multipliers").arg(QString::fromStdString(r->type));
+      m += QString("): %1; multipliers").arg(toString(r->type));
       for (auto z : r->multipliers)
         m += QString(" %1%2%3i")
                  .arg(z.real(), 0, 'g', 6)

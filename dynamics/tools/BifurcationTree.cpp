@@ -51,8 +51,9 @@ BifurcationTreeResult bifurcationTree(
     result.branches.push_back(TreeBranch{.level = level, .order = sec.order});
     const auto addPoint = [&](const ContinuationPoint& p) {
       TreeBranch& b = result.branches.back();
-      if (level == 0 && b.points.empty() && p.fixedPoint.type != "elliptic")
-        throw ComputationError("bifurcation tree: the initial point is " + p.fixedPoint.type +
+      if (level == 0 && b.points.empty() && p.fixedPoint.type != FixedPointType::Elliptic)
+        throw ComputationError(std::string("bifurcation tree: the initial point is ") +
+                               toString(p.fixedPoint.type) +
                                ", not elliptic; start the tree from an elliptic point");
       b.points.push_back(p);
       if (onPoint) onPoint(b, p);
@@ -60,7 +61,8 @@ BifurcationTreeResult bifurcationTree(
     if (!c.run(control, addPoint)) throw Stopped{};
     if (c.changes().empty()) break; // reached the finite value
     const TypeChange& t = c.changes().back();
-    if (t.kind != "multiplier -1") break; // the family ends otherwise (e.g. a saddle-node): nothing doubles
+    if (t.kind != TypeChange::Kind::MultiplierMinusOne)
+      break; // the family ends otherwise (e.g. a saddle-node): nothing doubles
     const PeriodDoubling d{level, sec.order, t.parameter, t.at.fixedPoint.point};
     result.doublings.push_back(d);
     if (onDoubling) onDoubling(d);

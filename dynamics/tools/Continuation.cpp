@@ -8,6 +8,23 @@
 
 namespace rv {
 
+const char* toString(TypeChange::Kind kind) {
+  switch (kind) {
+  case TypeChange::Kind::MultiplierMinusOne:
+    return "multiplier -1";
+  case TypeChange::Kind::MultiplierPlusOne:
+    return "multiplier +1";
+  case TypeChange::Kind::Type:
+    return "type";
+  }
+  return "type";
+}
+
+std::string describe(const TypeChange& change, const std::string& parameter) {
+  return format("type change at %s = %.12g: %s -> %s (%s)", parameter.c_str(), change.parameter,
+                toString(change.from), toString(change.to), toString(change.kind));
+}
+
 std::pair<double, double> bifurcationTests(const std::vector<std::complex<double>>& m, double tol) {
   std::size_t skip = m.size();
   if (m.size() == 3)
@@ -52,11 +69,11 @@ TypeChange Continuation::locate(const ContinuationPoint& a, const ContinuationPo
   TypeChange change{.from = a.fixedPoint.type, .to = b.fixedPoint.type};
   int which = 0; // 1: the -1 test, 2: the +1 test, 0: the type itself
   if ((ma < 0) != (mb < 0))
-    which = 1, change.kind = "multiplier -1";
+    which = 1, change.kind = TypeChange::Kind::MultiplierMinusOne;
   else if ((pa < 0) != (pb < 0))
-    which = 2, change.kind = "multiplier +1";
+    which = 2, change.kind = TypeChange::Kind::MultiplierPlusOne;
   else
-    change.kind = "type";
+    change.kind = TypeChange::Kind::Type;
   const auto value = [&](const ContinuationPoint& c) {
     const auto t = tests(c);
     return which == 1 ? t.first : t.second;
@@ -132,16 +149,17 @@ bool Continuation::run(const ToolControl& control,
       if (onPoint) onPoint(points_.back());
       // a step that lands on a parabolic point is between types: compare with the last definite one
       const ContinuationPoint& b = points_.back();
-      while (lastDefinite_ + 1 < points_.size() && points_[lastDefinite_].fixedPoint.type == "parabolic")
+      while (lastDefinite_ + 1 < points_.size() &&
+             points_[lastDefinite_].fixedPoint.type == FixedPointType::Parabolic)
         ++lastDefinite_;
       const ContinuationPoint& a = points_[lastDefinite_];
-      if (b.fixedPoint.type != "parabolic" && a.fixedPoint.type != b.fixedPoint.type &&
-          a.fixedPoint.type != "parabolic") {
+      if (b.fixedPoint.type != FixedPointType::Parabolic && a.fixedPoint.type != b.fixedPoint.type &&
+          a.fixedPoint.type != FixedPointType::Parabolic) {
         changes_.push_back(locate(a, b, control));
         if (onChange) onChange(changes_.back());
         if (s_.stopAtTypeChange) break;
       }
-      if (b.fixedPoint.type != "parabolic") lastDefinite_ = points_.size() - 1;
+      if (b.fixedPoint.type != FixedPointType::Parabolic) lastDefinite_ = points_.size() - 1;
       control.progress(std::min(1.0, (b.parameter - start_) / (s_.to - start_)));
     }
   } catch (const Stopped&) {

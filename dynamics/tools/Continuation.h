@@ -29,11 +29,18 @@ struct ContinuationPoint {
 
 /// A located change of type between two steps.
 struct TypeChange {
+  /// How it was located: a multiplier through -1 (period doubling), through +1, or the type alone.
+  enum class Kind { MultiplierMinusOne, MultiplierPlusOne, Type };
   double parameter = 0;
-  std::string from, to;
-  std::string kind;     ///< "multiplier -1" (period doubling), "multiplier +1", or "type"
+  FixedPointType from = FixedPointType::Elliptic, to = FixedPointType::Elliptic;
+  Kind kind = Kind::Type;
   ContinuationPoint at; ///< the fixed point at the located value
 };
+/// "multiplier -1", "multiplier +1", "type".
+const char* toString(TypeChange::Kind kind);
+/// "type change at K = 1.5: elliptic -> hyperbolic with reflection (multiplier -1)": what the CLI and the GUI
+/// report, `parameter` the continued parameter's id.
+std::string describe(const TypeChange& change, const std::string& parameter);
 
 /// The test functions prod(lambda_i + 1) and prod(lambda_i - 1) over the multipliers (a 3D map's unit
 /// multiplier, when it has one, is left out): they change sign where a multiplier passes -1 or +1.

@@ -19,28 +19,60 @@ std::vector<std::complex<double>> multipliersOf(const Eigen::MatrixXd& jacobian)
   return m;
 }
 
+const char* toString(FixedPointType type) {
+  switch (type) {
+  case FixedPointType::Elliptic:
+    return "elliptic";
+  case FixedPointType::Hyperbolic:
+    return "hyperbolic";
+  case FixedPointType::HyperbolicWithReflection:
+    return "hyperbolic with reflection";
+  case FixedPointType::Parabolic:
+    return "parabolic";
+  case FixedPointType::StableNode:
+    return "stable node";
+  case FixedPointType::UnstableNode:
+    return "unstable node";
+  case FixedPointType::StableFocus:
+    return "stable focus";
+  case FixedPointType::UnstableFocus:
+    return "unstable focus";
+  case FixedPointType::Stable:
+    return "stable";
+  case FixedPointType::Unstable:
+    return "unstable";
+  }
+  return "unknown";
+}
+
+bool isHyperbolic(FixedPointType type) {
+  return type == FixedPointType::Hyperbolic || type == FixedPointType::HyperbolicWithReflection;
+}
+
 namespace {
 
-std::string classifyPair(std::complex<double> a, std::complex<double> b, double tol) {
+using T = FixedPointType;
+
+T classifyPair(std::complex<double> a, std::complex<double> b, double tol) {
   const bool complexPair = std::abs(a.imag()) > tol;
   if (complexPair) {
     const double r = std::abs(a);
-    if (std::abs(r - 1) <= tol) return "elliptic";
-    return r < 1 ? "stable focus" : "unstable focus";
+    if (std::abs(r - 1) <= tol) return T::Elliptic;
+    return r < 1 ? T::StableFocus : T::UnstableFocus;
   }
   const double x = a.real(), y = b.real();
-  if (std::abs(std::abs(x) - 1) <= tol || std::abs(std::abs(y) - 1) <= tol) return "parabolic";
+  if (std::abs(std::abs(x) - 1) <= tol || std::abs(std::abs(y) - 1) <= tol) return T::Parabolic;
   const double big = std::abs(x) > std::abs(y) ? x : y, small = std::abs(x) > std::abs(y) ? y : x;
-  if (std::abs(big) > 1 && std::abs(small) < 1) return big < 0 ? "hyperbolic with reflection" : "hyperbolic";
-  return std::abs(big) < 1 ? "stable node" : "unstable node";
+  if (std::abs(big) > 1 && std::abs(small) < 1) return big < 0 ? T::HyperbolicWithReflection : T::Hyperbolic;
+  return std::abs(big) < 1 ? T::StableNode : T::UnstableNode;
 }
 
 } // namespace
 
-std::string classifyFixedPoint(const std::vector<std::complex<double>>& m, double tol) {
+FixedPointType classifyFixedPoint(const std::vector<std::complex<double>>& m, double tol) {
   if (m.size() == 1) {
     const double r = std::abs(m[0]);
-    return std::abs(r - 1) <= tol ? "parabolic" : r < 1 ? "stable" : "unstable";
+    return std::abs(r - 1) <= tol ? T::Parabolic : r < 1 ? T::Stable : T::Unstable;
   }
   if (m.size() == 2) return classifyPair(m[0], m[1], tol);
   if (m.size() == 3) {
@@ -59,10 +91,10 @@ std::string classifyFixedPoint(const std::vector<std::complex<double>>& m, doubl
     if (r < 1 - tol) ++inside;
     if (r > 1 + tol) ++outside;
   }
-  if (inside && outside) return "hyperbolic";
-  if (inside) return "stable";
-  if (outside) return "unstable";
-  return "elliptic";
+  if (inside && outside) return T::Hyperbolic;
+  if (inside) return T::Stable;
+  if (outside) return T::Unstable;
+  return T::Elliptic;
 }
 
 FixedPointResult findFixedPoint(const ReturnMap& map, const Eigen::VectorXd& guess,

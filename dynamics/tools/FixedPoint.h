@@ -35,23 +35,43 @@ struct SearchPoint {
   double residual = 0; ///< |Map^n(x) - x|
 };
 
+/// The type of a fixed point from its multipliers (Kuznetsov 2004, §1.5). A map that preserves area has
+/// elliptic, hyperbolic, hyperbolic with reflection (a multiplier < -1) or parabolic (a multiplier +-1)
+/// points; others also nodes and foci; a 3D map's unit multiplier (an integral) is set aside, and the general
+/// case is stable, unstable or hyperbolic (saddle).
+enum class FixedPointType {
+  Elliptic,
+  Hyperbolic,
+  HyperbolicWithReflection,
+  Parabolic,
+  StableNode,
+  UnstableNode,
+  StableFocus,
+  UnstableFocus,
+  Stable,
+  Unstable
+};
+/// "elliptic", "hyperbolic with reflection", ...: the one spelling the CLI, the GUI and the files use.
+const char* toString(FixedPointType type);
+/// Hyperbolic, with or without reflection: the points with separatrices.
+bool isHyperbolic(FixedPointType type);
+
 struct FixedPointResult {
   Eigen::VectorXd point;
-  std::vector<std::complex<double>> multipliers; ///< eigenvalues of D Map^n at the point
-  Eigen::MatrixXd jacobian;                      ///< D Map^n at the point
-  std::string type;                              ///< see classifyFixedPoint
+  std::vector<std::complex<double>> multipliers;  ///< eigenvalues of D Map^n at the point
+  Eigen::MatrixXd jacobian;                       ///< D Map^n at the point
+  FixedPointType type = FixedPointType::Elliptic; ///< see classifyFixedPoint
   double residual = 0;
   int iterations = 0;
   long evaluations = 0; ///< map evaluations spent
   std::vector<SearchPoint> path;
 };
 
-/// The type of a fixed point from its multipliers: 2D maps "elliptic", "hyperbolic", "hyperbolic with
-/// reflection", "parabolic" (a multiplier +-1), and for maps that do not preserve area "stable node",
-/// "unstable node", "stable focus", "unstable focus". 3D maps: a multiplier equal to 1 (an integral) is set
-/// aside and the other two classified as above; otherwise "elliptic" (all on the unit circle), "hyperbolic"
-/// (some inside, some outside), "stable" or "unstable".
-std::string classifyFixedPoint(const std::vector<std::complex<double>>& multipliers, double tolerance);
+/// The type of a fixed point from its multipliers: 2D maps elliptic, hyperbolic, hyperbolic with reflection,
+/// parabolic (a multiplier +-1), and for maps that do not preserve area stable / unstable node or focus. 3D
+/// maps: a multiplier equal to 1 (an integral) is set aside and the other two classified as above; otherwise
+/// elliptic (all on the unit circle), hyperbolic (some inside, some outside), stable or unstable.
+FixedPointType classifyFixedPoint(const std::vector<std::complex<double>>& multipliers, double tolerance);
 
 /// Eigenvalues of a square matrix, sorted by decreasing modulus (then by imaginary part).
 std::vector<std::complex<double>> multipliersOf(const Eigen::MatrixXd& jacobian);

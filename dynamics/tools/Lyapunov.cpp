@@ -9,6 +9,103 @@
 
 namespace rv {
 
+const ParameterTable& lyapunovTable() {
+  static const ParameterTable t{
+      {.id = "mode",
+       .label = "Method",
+       .defaultValue = 0,
+       .min = 0,
+       .max = 1,
+       .description = "tangent (variational equations, exact Jacobian) or perturbed (nearby trajectories)",
+       .integer = true,
+       .choices = {"tangent", "perturbed"}},
+      {.id = "count",
+       .label = "Number of exponents",
+       .defaultValue = 0,
+       .min = 0,
+       .max = 1e6,
+       .description = "how many of the largest exponents; 0: as many as the dimension",
+       .integer = true},
+      {.id = "interval",
+       .label = "Orthonormalisation interval",
+       .defaultValue = 1,
+       .min = 1e-300,
+       .max = 1e300,
+       .description = "time between re-orthonormalisations (maps: iterations)"},
+      {.id = "perturbation",
+       .label = "Initial perturbation",
+       .defaultValue = 1e-8,
+       .min = 1e-300,
+       .max = 1e300,
+       .description = "distance of the nearby trajectories (perturbed method)"},
+      {.id = "max_perturbation",
+       .label = "Max. perturbation",
+       .defaultValue = 1e-4,
+       .min = 1e-300,
+       .max = 1e300,
+       .description = "perturbed method: an interval is halved while a perturbation grows beyond this"},
+      {.id = "estimate_every",
+       .label = "Iterations between estimates",
+       .defaultValue = 10,
+       .min = 1,
+       .max = 1e9,
+       .description = "estimates this many intervals apart are compared for the stopping rule",
+       .integer = true},
+      {.id = "accuracy",
+       .label = "Accuracy",
+       .defaultValue = 1e-4,
+       .min = 1e-300,
+       .max = 1e300,
+       .description = "compared estimates this close count as a success"},
+      {.id = "successes",
+       .label = "Successful comparisons",
+       .defaultValue = 0,
+       .min = 0,
+       .max = 1e9,
+       .description = "stop after this many successes in a row (0: run to the time)",
+       .integer = true},
+      {.id = "output_period",
+       .label = "Output period",
+       .defaultValue = 10,
+       .min = 1e-300,
+       .max = 1e300,
+       .description = "time between the estimates streamed to charts"},
+      {.id = "renormalize",
+       .label = "Keep to the integrals' level",
+       .defaultValue = 0,
+       .min = 0,
+       .max = 1,
+       .description = "project the tangent vectors on the level set of the first integrals (the trivial "
+                      "exponents vanish)",
+       .integer = true,
+       .choices = {"no", "yes"}},
+      {.id = "time",
+       .label = "Time",
+       .defaultValue = 1000,
+       .min = 1e-300,
+       .max = 1e300,
+       .description = "integration time (maps: iterations)"},
+  };
+  return t;
+}
+
+LyapunovSettings lyapunovSettings(const ParameterValues& v) {
+  LyapunovSettings l;
+  l.mode =
+      v.choice("mode") == "tangent" ? LyapunovSettings::Mode::Tangent : LyapunovSettings::Mode::Perturbed;
+  l.count = static_cast<int>(v["count"]);
+  l.interval = v["interval"];
+  l.perturbation = v["perturbation"];
+  l.maxPerturbation = v["max_perturbation"];
+  l.estimateEvery = static_cast<int>(v["estimate_every"]);
+  l.accuracy = v["accuracy"];
+  l.successes = static_cast<int>(v["successes"]);
+  l.outputPeriod = v["output_period"];
+  l.renormalizeIntegrals = v.choice("renormalize") == "yes";
+  l.maxTime = v["time"];
+  return l;
+}
+
 double LyapunovEstimate::sum() const {
   double s = 0;
   for (double e : exponents)

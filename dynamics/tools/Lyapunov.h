@@ -4,6 +4,7 @@
 // Strelcyn, Meccanica 15 (1980) 9-30; the tangent mode integrates the variational equations with the model's
 // exact (AutoDiff) Jacobian.
 #pragma once
+#include "dynamics/core/ParameterTable.h"
 #include "dynamics/integrators/Integrator.h"
 #include "dynamics/tools/ToolControl.h"
 
@@ -28,6 +29,10 @@ struct LyapunovSettings {
       false;             ///< keep tangent vectors on the integrals' level set (trivial exponents vanish)
   double maxTime = 1000; ///< stop at this time at the latest
 };
+
+/// The scene section "lyapunov" (the one declaration of the settings' defaults and ranges).
+const ParameterTable& lyapunovTable();
+LyapunovSettings lyapunovSettings(const ParameterValues& v);
 
 struct LyapunovEstimate {
   double time = 0;

@@ -31,8 +31,9 @@ SeparatrixResult growSeparatrix(const ReturnMap& map, const FixedPointResult& fp
   if (!(s.linearRegion > 0) || !(s.linearAccuracy > 0) || !(s.maxDistance > 0) || !(s.maxAngle > 0) ||
       s.segmentPoints < 2 || s.maxIterations < 1)
     throw InputError("separatrix: the region, accuracy, distance, angle and counts must be positive");
-  if (fp.type.find("hyperbolic") == std::string::npos)
-    throw ComputationError("separatrix: the fixed point is " + fp.type + ", not hyperbolic");
+  if (!isHyperbolic(fp.type))
+    throw ComputationError(std::string("separatrix: the fixed point is ") + toString(fp.type) +
+                           ", not hyperbolic");
 
   SeparatrixResult r;
   Eigen::EigenSolver<Eigen::MatrixXd> es(fp.jacobian);

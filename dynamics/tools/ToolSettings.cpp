@@ -259,23 +259,6 @@ const ParameterTable& gridTable() {
   return t;
 }
 
-const std::vector<ToolSection>& toolSections() {
-  static const std::vector<ToolSection> s{
-      {"fixedpoint", "Fixed point finding", &fixedPointTable()},
-      {"continuation", "Fixed point continuation", &continuationTable()},
-      {"separatrix", "Separatrix", &separatrixTable()},
-      {"bifurcation_tree", "Bifurcating tree", &bifurcationTreeTable()},
-      {"grid", "Surface |Map(x) - x| and region of allowed motion", &gridTable()},
-  };
-  return s;
-}
-
-const ToolSection* findToolSection(const std::string& key) {
-  for (const auto& s : toolSections())
-    if (s.key == key) return &s;
-  return nullptr;
-}
-
 FixedPointSettings fixedPointSettings(const ParameterValues& v) {
   FixedPointSettings s;
   s.method = v.choice("method") == "newton" ? FixedPointMethod::Newton : FixedPointMethod::Gradient;

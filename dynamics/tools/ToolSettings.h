@@ -5,20 +5,9 @@
 #include "dynamics/tools/BifurcationTree.h"
 #include "dynamics/tools/MapGrid.h"
 #include "dynamics/tools/Separatrix.h"
+#include "dynamics/tools/ToolRegistry.h"
 
 namespace rv {
-
-/// A tool's settings section: its scene key and table.
-struct ToolSection {
-  std::string key;   ///< scene section, e.g. "fixedpoint"
-  std::string title; ///< as in the manual's menu
-  const ParameterTable* table;
-};
-
-/// Every section, in menu order.
-const std::vector<ToolSection>& toolSections();
-/// The section with this scene key, or nullptr.
-const ToolSection* findToolSection(const std::string& key);
 
 const ParameterTable& fixedPointTable();
 const ParameterTable& continuationTable();

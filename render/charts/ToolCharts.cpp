@@ -93,16 +93,22 @@ void drawCurves(PoincareChart& chart, const std::vector<double>& x,
   }
 }
 
-Rgb typeColor(const std::string& type) {
-  if (type == "elliptic") return {0.12, 0.38, 0.85};
-  if (type == "hyperbolic") return {0.85, 0.2, 0.15};
-  if (type == "hyperbolic with reflection") return {0.95, 0.55, 0.1};
-  return {0.45, 0.45, 0.45};
+Rgb typeColor(FixedPointType type) {
+  switch (type) {
+  case FixedPointType::Elliptic:
+    return {0.12, 0.38, 0.85};
+  case FixedPointType::Hyperbolic:
+    return {0.85, 0.2, 0.15};
+  case FixedPointType::HyperbolicWithReflection:
+    return {0.95, 0.55, 0.1};
+  default:
+    return {0.45, 0.45, 0.45};
+  }
 }
 
 void drawFamily(PoincareChart& chart, const std::vector<double>& parameter,
-                const std::vector<double>& coordinate, const std::vector<std::string>& types) {
-  std::vector<std::string> seen;
+                const std::vector<double>& coordinate, const std::vector<FixedPointType>& types) {
+  std::vector<FixedPointType> seen;
   for (const auto& t : types)
     if (std::find(seen.begin(), seen.end(), t) == seen.end()) seen.push_back(t);
   for (const auto& t : seen) {

@@ -4,6 +4,7 @@
 // plot).
 #pragma once
 #include "dynamics/core/Diagram.h"
+#include "dynamics/tools/FixedPoint.h"
 #include "render/charts/PoincareChart.h"
 
 #include <array>
@@ -33,9 +34,9 @@ void drawCurves(PoincareChart& chart, const std::vector<double>& x,
 /// A family of fixed points: parameter against a coordinate, one colour per type (elliptic blue, hyperbolic
 /// red, with reflection orange, others grey).
 void drawFamily(PoincareChart& chart, const std::vector<double>& parameter,
-                const std::vector<double>& coordinate, const std::vector<std::string>& types);
+                const std::vector<double>& coordinate, const std::vector<FixedPointType>& types);
 
 /// The colour of a fixed point's type.
-Rgb typeColor(const std::string& type);
+Rgb typeColor(FixedPointType type);
 
 } // namespace rv

@@ -374,11 +374,75 @@ class Cli(unittest.TestCase):
             self.assertEqual(r.returncode, 0, name + ": " + r.stderr)
             self.assertEqual(len(r.stdout.strip().splitlines()), 4, name)
 
-    def test_list_tools(self):
+    def test_every_registered_tool_is_described_runs_somewhere_and_takes_its_settings(self):
         r = run("list", "tools")
         self.assertEqual(r.returncode, 0, r.stderr)
-        for key in ("fixedpoint", "continuation", "separatrix", "bifurcation_tree", "grid", "max_iterations"):
-            self.assertIn(key, r.stdout)
+        ids = [line.split()[0] for line in r.stdout.splitlines() if line.strip() and ":" in line
+               and not line.startswith("rollviz")]
+        for tool in ("poincare", "lyapunov", "spectrum", "megno", "fixedpoint", "continuation", "separatrix",
+                     "bifurcation_tree", "surface", "ram", "diagram"):
+            self.assertIn(tool, ids)
+        views = run("chart", "--help").stdout
+        lorenz = os.path.join(SRC, "scenes", "lorenz.json")
+        for tool in ids:
+            d = run("describe-tool", tool)
+            self.assertEqual(d.returncode, 0, d.stderr)
+            self.assertIn("outputs:", d.stdout, tool)
+            lines = d.stdout.splitlines()
+            command = [l.split("rollviz ", 1)[1] for l in lines if l.strip().startswith("command: rollviz")]
+            view = [l.split("--view ", 1)[1] for l in lines if l.strip().startswith("chart: rollviz chart")]
+            self.assertTrue(command or view, tool + " runs nowhere")
+            for c in command:
+                self.assertEqual(run(c, "--help").returncode, 0, c)
+            for v in view:
+                self.assertIn(v, views, tool)
+            # every setting is a --set key of its section, at its default value
+            head = [l for l in lines if l.startswith("settings (scene section")]
+            if head:
+                section = head[0].split('"')[1]
+                start = lines.index(head[0]) + 1
+                sets = []
+                for l in lines[start:]:
+                    if not l.strip():
+                        break
+                    key, default = l.split()[:2]
+                    sets += ["--set", "%s.%s=%s" % (section, key, default if default[0].isdigit() or
+                                                     default[0] == "-" else json.dumps(default))]
+                i = run("integrate", lorenz, "--time", "0.01", "--every", "0.01", "--columns", "t", *sets)
+                self.assertEqual(i.returncode, 0, i.stderr)
+        self.assertBadInput(run("describe-tool", "no_such_tool"), "no_such_tool", "megno")
+
+    def test_the_tools_reference_is_up_to_date(self):
+        sys.path.insert(0, os.path.join(SRC, "scripts"))
+        import make_tools_reference
+        with open(os.path.join(SRC, "docs", "tools.md")) as f:
+            self.assertEqual(f.read(), make_tools_reference.reference(RV),
+                             "docs/tools.md is stale: run scripts/make_tools_reference.py build/dev/app/rollviz")
+
+    def test_megno_known_answers_and_chart(self):
+        hh = os.path.join(SRC, "scenes", "henon_heiles.json")
+        r = run("megno", hh, "--set", "energy=0.08333333333333333", "--time", "3000", "--json")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        regular = json.loads(r.stdout)
+        self.assertAlmostEqual(regular["megno"], 2, delta=0.2)
+        self.assertEqual(regular["time"], 3000)
+        chaotic = json.loads(run("megno", hh, "--set", "energy=0.16666666666666666", "--time", "20000",
+                                 "--json").stdout)
+        lyap = json.loads(run("lyapunov", hh, "--set", "energy=0.16666666666666666", "--time", "20000",
+                              "--json").stdout)
+        self.assertGreater(chaotic["megno"], 20)
+        self.assertAlmostEqual(chaotic["megno_rate"], lyap["exponents"][0], delta=0.15 * lyap["exponents"][0])
+        # the scene section and the text output
+        t = run("megno", hh, "--set", "megno.time=100")
+        self.assertEqual(t.returncode, 0, t.stderr)
+        self.assertIn("time = 100", t.stdout)
+        self.assertBadInput(run("megno", hh, "--set", "megno.interval=0"), "megno.interval")
+        png = self.path("megno.png")
+        c = run("chart", hh, "--view", "megno", "-o", png, "--size", "480x320", "--set", "megno.time=500")
+        self.assertEqual(c.returncode, 0, c.stderr)
+        size, px = pixels(png)
+        self.assertEqual(size, (480, 320))
+        self.assertTrue(varied(px))
 
     def start_until_checkpoint(self, args, checkpoint):
         """starts a long command, waits until it has saved its checkpoint once, then kills it with SIGKILL"""
@@ -414,6 +478,15 @@ class Cli(unittest.TestCase):
         again = run(*args, "--checkpoint", ck2)
         self.assertEqual(again.returncode, 0, again.stderr)
         self.assertEqual(json.loads(whole.stdout)["exponents"], json.loads(again.stdout)["exponents"])
+
+        ck3 = self.path("megno.ck")
+        args = ["megno", lorenz, "--time", "20000", "--json"]
+        whole = run(*args)
+        self.assertEqual(whole.returncode, 0, whole.stderr)
+        self.start_until_checkpoint([*args, "--checkpoint", ck3], ck3)
+        again = run(*args, "--checkpoint", ck3)
+        self.assertEqual(again.returncode, 0, again.stderr)
+        self.assertEqual(json.loads(whole.stdout), json.loads(again.stdout))
 
         # another run's checkpoint is refused, naming the flag
         self.start_until_checkpoint([*args, "--checkpoint", ck2], ck2)
@@ -453,15 +526,25 @@ class Cli(unittest.TestCase):
         self.assertBadInput(run("integrate", dup, *args), dup + ":parameters.rho", "twice")
         self.assertFalse(os.path.exists(out))
 
-    def test_surface_is_the_same_with_one_and_two_threads(self):
+    def test_grids_are_the_same_with_one_and_two_threads_and_when_resumed(self):
         hh = os.path.join(SRC, "scenes", "henon_heiles.json")
-        outs = []
-        for threads in ("1", "2"):
-            outs.append(self.path("s%s.csv" % threads))
-            r = run("surface", hh, "--x", "-0.3,0.3", "--y", "-0.3,0.3", "--step", "0.05", "--threads", threads,
-                    "-o", outs[-1])
-            self.assertEqual(r.returncode, 0, r.stderr)
-        self.assertEqual(open(outs[0]).read(), open(outs[1]).read())
+        for tool in ("surface", "ram"):
+            outs = []
+            for threads in ("1", "2"):
+                outs.append(self.path("%s%s.csv" % (tool, threads)))
+                r = run(tool, hh, "--x", "-0.3,0.3", "--y", "-0.3,0.3", "--step", "0.05", "--threads", threads,
+                        "-o", outs[-1])
+                self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertEqual(open(outs[0]).read(), open(outs[1]).read(), tool)
+        # a surface killed after its first save and resumed with another number of threads: the same file
+        ck, resumed = self.path("grid.ck"), self.path("resumed.csv")
+        args = ["surface", hh, "--x", "-0.4,0.4", "--y", "-0.4,0.4", "--step", "0.01"]
+        self.start_until_checkpoint([*args, "--threads", "1", "-o", resumed, "--checkpoint", ck], ck)
+        r = run(*args, "--threads", "2", "-o", resumed, "--checkpoint", ck)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        whole = self.path("whole.csv")
+        self.assertEqual(run(*args, "--threads", "2", "-o", whole).returncode, 0)
+        self.assertEqual(open(whole).read(), open(resumed).read())
 
     def test_gui_without_a_display_says_so(self):
         r = run("gui", SCENE, env={"WAYLAND_DISPLAY": ""})
@@ -472,4 +555,4 @@ class Cli(unittest.TestCase):
 
 
 if __name__ == "__main__":
-    unittest.main(argv=[sys.argv[0], "-v"])
+    unittest.main(argv=[sys.argv[0], "-v", *sys.argv[4:]])

@@ -39,7 +39,7 @@ TEST(FixedPoint, HenonMapBothPointsAreAnalyticAndHyperbolic) {
       const auto r = findFixedPoint(map, Eigen::Vector2d(x + 0.05, b * x - 0.03), s);
       EXPECT_NEAR(r.point[0], x, 1e-12);
       EXPECT_NEAR(r.point[1], b * x, 1e-12);
-      EXPECT_NE(r.type.find("hyperbolic"), std::string::npos) << r.type;
+      EXPECT_TRUE(isHyperbolic(r.type)) << toString(r.type);
       // det D = -b: the multipliers' product
       const auto prod = r.multipliers[0] * r.multipliers[1];
       EXPECT_NEAR(prod.real(), -b, 1e-8);
@@ -77,18 +77,18 @@ TEST(FixedPoint, StandardMapCentreIsEllipticWithTraceTwoMinusK) {
     const auto r = findFixedPoint(map, Eigen::Vector2d(3.1, 0.05), {});
     EXPECT_NEAR(r.point[0], pi, 1e-12);
     EXPECT_NEAR(std::remainder(r.point[1], 2 * pi), 0, 1e-12);
-    EXPECT_EQ(r.type, "elliptic") << "K = " << K;
+    EXPECT_EQ(r.type, FixedPointType::Elliptic) << "K = " << K;
     EXPECT_NEAR((r.multipliers[0] + r.multipliers[1]).real(), 2 - K, 1e-9);
     EXPECT_NEAR(std::abs(r.multipliers[0]), 1, 1e-9);
   }
   const auto m = test::makeModel("standard_map", {{"K", 4.5}});
   const auto r = findFixedPoint(ReturnMap(*m, everhart(), order(1)), Eigen::Vector2d(3.1, 0.05), {});
-  EXPECT_EQ(r.type, "hyperbolic with reflection");
+  EXPECT_EQ(r.type, FixedPointType::HyperbolicWithReflection);
   // the saddle at the origin, approached across the seam of the torus
   const auto m1 = test::makeModel("standard_map", {{"K", 1.5}});
   const auto o = findFixedPoint(ReturnMap(*m1, everhart(), order(1)), Eigen::Vector2d(6.2, 0.05), {});
   EXPECT_NEAR(std::remainder(o.point[0], 2 * pi), 0, 1e-12);
-  EXPECT_EQ(o.type, "hyperbolic");
+  EXPECT_EQ(o.type, FixedPointType::Hyperbolic);
   EXPECT_NEAR((o.multipliers[0] + o.multipliers[1]).real(), 2 + 1.5, 1e-9);
 }
 
@@ -103,7 +103,7 @@ TEST(FixedPoint, HenonHeilesStraightLineOrbitByNewton) {
     // the line at 30 degrees through the origin, crossed at speed sqrt(2E) = 1/2: py = 1/2 sin 30
     EXPECT_NEAR(r->point[0], 0, 1e-9);
     EXPECT_NEAR(r->point[1], 0.25, 1e-9);
-    EXPECT_EQ(r->type, "elliptic");
+    EXPECT_EQ(r->type, FixedPointType::Elliptic);
     for (auto l : r->multipliers)
       EXPECT_NEAR(std::abs(l), 1, 1e-6);
   }
@@ -171,9 +171,10 @@ TEST(Continuation, StandardMapPeriodDoublingAtKEqualsFour) {
     EXPECT_NEAR((p.fixedPoint.multipliers[0] + p.fixedPoint.multipliers[1]).real(), 2 - p.parameter, 1e-9);
   ASSERT_EQ(c.changes().size(), 1u);
   const TypeChange& t = c.changes()[0];
-  EXPECT_EQ(t.kind, "multiplier -1");
-  EXPECT_EQ(t.from, "elliptic");
-  EXPECT_EQ(t.to, "hyperbolic with reflection");
+  EXPECT_EQ(t.kind, TypeChange::Kind::MultiplierMinusOne);
+  EXPECT_EQ(describe(t, "K").substr(0, 17), "type change at K ");
+  EXPECT_EQ(t.from, FixedPointType::Elliptic);
+  EXPECT_EQ(t.to, FixedPointType::HyperbolicWithReflection);
   EXPECT_NEAR(t.parameter, 4.0, 1e-8);
   EXPECT_NEAR(c.points().back().parameter, 4.5, 1e-15);
 }
@@ -260,7 +261,7 @@ TEST(FixedPoint, SectionModeOnA3DMapMatchesTheChaplyginBallsFixedPoint) {
       test::makeModel("chaplygin_ball", {{"K1", 0}, {"K2", 0}, {"K3", 0}, {"c", 0.3}, {"energy", 0.5}});
   const ReturnMap map2(*ball, everhart(0.02), order(1));
   const auto a = findFixedPoint(map2, Eigen::Vector2d(4.5, 0.0), {});
-  ASSERT_EQ(a.type, "elliptic");
+  ASSERT_EQ(a.type, FixedPointType::Elliptic);
   const Eigen::VectorXd s = ball->stateFromMap({a.point[0], a.point[1]}, {}, "test");
   const Eigen::Vector3d M = s.head<3>(), g = s.segment<3>(3);
   const double HG = M.dot(g) / M.norm();
@@ -293,7 +294,7 @@ TEST(FixedPoint, SectionModeOnA3DMapMatchesTheChaplyginBallsFixedPoint) {
   for (auto m : b.multipliers)
     unit += std::abs(m - 1.0) < 1e-6;
   EXPECT_EQ(unit, 1) << "H/G is conserved: one multiplier is 1";
-  EXPECT_EQ(b.type, "elliptic");
+  EXPECT_EQ(b.type, FixedPointType::Elliptic);
   for (auto m : a.multipliers) { // the others are the Chaplygin map's
     double best = 1e9;
     for (auto n : b.multipliers)

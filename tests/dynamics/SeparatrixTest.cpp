@@ -34,7 +34,7 @@ TEST(Separatrix, StandardMapSaddleBranchesAreInvariantAndLeaveAlongEigenvectors)
   SectionSettings sec;
   const ReturnMap map(*m, noIntegrator(), sec);
   const auto fp = findFixedPoint(map, Eigen::Vector2d(0.01, 0.01), {});
-  ASSERT_EQ(fp.type, "hyperbolic");
+  ASSERT_EQ(fp.type, FixedPointType::Hyperbolic);
   // J = [[1 + K, 1], [K, 1]]: eigenvalues (2 + K +- sqrt((2 + K)^2 - 4)) / 2, eigenvectors (1, lambda - 1 -
   // K)
   const double disc = std::sqrt((2 + K) * (2 + K) - 4);

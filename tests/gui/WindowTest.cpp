@@ -219,6 +219,44 @@ private slots:
     QVERIFY(window_->openScene(QString::fromStdString(defaultScenePath("chaplygin_ball")))); // for the next
   }
 
+  // every chart is a job of the tool manager (issue: one path for every long computation): a surface
+  // computation is listed with its progress, stops, continues and ends with the chart of an uninterrupted run
+  void chartComputationsAreJobsOfTheToolManager() {
+    nlohmann::json doc = loadScene(defaultScenePath("henon_heiles")).document;
+    doc["grid"] = {{"x_min", -0.4}, {"x_max", 0.4},   {"y_min", -0.4},
+                   {"y_max", 0.4},  {"step_x", 0.01}, {"step_y", 0.01}};
+    QVERIFY(window_->runDocument(doc));
+    ChartWindow* whole = window_->openChart("surface");
+    QTRY_VERIFY_WITH_TIMEOUT(whole->ready() && whole->job()->status() == Job::Status::Finished, 120000);
+    const QString a = dir_.filePath("surface_whole.csv"), b = dir_.filePath("surface_continued.csv");
+    QVERIFY(whole->saveCsv(a));
+    whole->close();
+
+    ChartWindow* chart = window_->openChart("surface");
+    Job* job = chart->job();
+    QVERIFY(job);
+    ToolManager* tools = window_->toolManager();
+    tools->refresh();
+    tools->select(job->id());
+    QCOMPARE(tools->selected(), job);
+    QTRY_VERIFY_WITH_TIMEOUT(job->progress() > 0.02, 30000);
+    tools->stopSelected();
+    QCOMPARE(job->status(), Job::Status::Stopped);
+    const double stoppedAt = job->progress();
+    QVERIFY2(stoppedAt < 1, "stopped before its end");
+    tools->continueSelected();
+    QTRY_VERIFY_WITH_TIMEOUT(job->status() == Job::Status::Finished, 120000);
+    QTRY_VERIFY_WITH_TIMEOUT(chart->ready() && chart->failure().isEmpty(), 5000);
+    QVERIFY(chart->saveCsv(b));
+    QCOMPARE(csvRows(b), csvRows(a));
+    QVERIFY(keep(chart->grab().toImage(), "window_chart_surface_job.png"));
+    // closing the window deletes its job
+    const int id = job->id();
+    chart->close();
+    QTRY_VERIFY(!window_->mapPanel()->jobs().find(id));
+    QVERIFY(window_->openScene(QString::fromStdString(defaultScenePath("chaplygin_ball"))));
+  }
+
   void apexWindowShowsTheApexes() {
     QWidget* w = window_->openApexWindow();
     QVERIFY(w && window_->apexVisual());

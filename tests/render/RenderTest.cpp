@@ -176,6 +176,9 @@ INSTANTIATE_TEST_SUITE_P(
                   "henon_heiles",
                   {"spectrum.function=x", "integrator.method=rk4", "integrator.step=0.01"}},
         ChartCase{"lyapunov", "lorenz", {"lyapunov.time=100", "lyapunov.output_period=2"}},
+        ChartCase{"megno",
+                  "henon_heiles",
+                  {"energy=0.16666666666666666", "megno.time=400", "megno.output_period=2"}},
         ChartCase{"surface",
                   "henon_map",
                   {"grid.x_min=-1.5", "grid.x_max=1.5", "grid.y_min=-0.5", "grid.y_max=0.5",
@@ -187,7 +190,7 @@ INSTANTIATE_TEST_SUITE_P(
     [](const auto& info) { return info.param.view; });
 
 TEST(Render, ChartViewsListIsComplete) {
-  EXPECT_EQ(chartViews().size(), 10u); // each has a baseline case above
+  EXPECT_EQ(chartViews().size(), 11u); // each has a baseline case above
 }
 
 } // namespace

@@ -51,7 +51,7 @@ TEST(EditTask, AFixedPointSearchGoesOnWithTheNewProblem) {
   const auto& m = found->multipliers;
   ASSERT_EQ(m.size(), 2u);
   EXPECT_NEAR((m[0] + m[1]).real(), 2 - 2.0, 1e-9) << "trace 2 - K at the new K";
-  EXPECT_EQ(found->type, "elliptic");
+  EXPECT_EQ(found->type, FixedPointType::Elliptic);
 }
 
 TEST(EditTask, AContinuationStartsAgainWithTheNewSettings) {

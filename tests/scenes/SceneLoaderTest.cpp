@@ -1,7 +1,9 @@
 // Scene files: the shipped scenes load; every error names the file and the JSON path (or the flag).
 #include "scenes/SceneLoader.h"
 #include "dynamics/core/Errors.h"
+#include "dynamics/tools/ToolRegistry.h"
 
+#include <cmath>
 #include <gtest/gtest.h>
 
 namespace rv {
@@ -187,6 +189,54 @@ TEST(SceneLoader, FolderEmptyAndMissingScenePathsArePlainInputErrors) {
   EXPECT_NE(loadError(missing).find(missing + ": cannot open the scene file (no such file)"),
             std::string::npos)
       << loadError(missing);
+}
+
+} // namespace
+} // namespace rv
+
+namespace rv {
+namespace {
+
+// a value in the setting's range other than its default: the next choice, or a number inside the range
+std::string otherValue(const ParameterSpec& p) {
+  if (!p.choices.empty())
+    return "\"" + p.choices[(static_cast<std::size_t>(p.defaultValue) + 1) % p.choices.size()] + "\"";
+  double v = p.defaultValue + 1;
+  if (v > p.max) v = p.defaultValue > 0 ? p.defaultValue / 2 : p.defaultValue - 1;
+  if (p.integer) v = std::round(v);
+  return nlohmann::json(v).dump();
+}
+
+TEST(SceneLoader, EveryToolSettingRoundTripsThroughSetAndTheSavedScene) {
+  for (const auto& section : toolSections())
+    for (const auto& p : section.table->specs()) {
+      const std::string key = section.key + "." + p.id, value = otherValue(p);
+      SCOPED_TRACE(key + "=" + value);
+      const Scene set = sceneFromJson(ball(), "s.json", {parseOverride(key + "=" + value)});
+      const double expected = set.tool(section.key)[p.id];
+      EXPECT_NE(expected, p.defaultValue);
+      if (!p.choices.empty()) {
+        EXPECT_EQ("\"" + set.tool(section.key).choice(p.id) + "\"", value);
+      } else {
+        EXPECT_EQ(expected, nlohmann::json::parse(value).get<double>());
+      }
+      const Scene saved = sceneFromJson(nlohmann::json::parse(set.document.dump()), "saved.json");
+      EXPECT_EQ(saved.tool(section.key)[p.id], expected);
+    }
+}
+
+TEST(SceneLoader, LyapunovAndMegnoSettingsComeFromTheirTables) {
+  const Scene s = sceneFromJson(ball(), "s.json",
+                                {parseOverride("lyapunov.mode=perturbed"), parseOverride("lyapunov.time=77"),
+                                 parseOverride("lyapunov.renormalize=true"), parseOverride("megno.time=5")});
+  EXPECT_EQ(s.lyapunov.mode, LyapunovSettings::Mode::Perturbed);
+  EXPECT_EQ(s.lyapunov.maxTime, 77);
+  EXPECT_TRUE(s.lyapunov.renormalizeIntegrals);
+  EXPECT_EQ(s.tool("megno")["time"], 5);
+  EXPECT_NE(errorOf(ball(), {parseOverride("lyapunov.interval=-1")}).find("lyapunov.interval"),
+            std::string::npos)
+      << errorOf(ball(), {parseOverride("lyapunov.interval=-1")});
+  EXPECT_NE(errorOf(ball(), {parseOverride("megno.nonsense=1")}).find("megno.nonsense"), std::string::npos);
 }
 
 } // namespace

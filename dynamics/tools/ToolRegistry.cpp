@@ -1,0 +1,186 @@
+#include "dynamics/tools/ToolRegistry.h"
+
+#include "dynamics/core/Errors.h"
+#include "dynamics/tools/Megno.h"
+#include "dynamics/tools/ToolSettings.h"
+
+namespace rv {
+
+const std::vector<ToolSection>& toolSections() {
+  static const std::vector<ToolSection> s{
+      {"fixedpoint", "Fixed point finding", &fixedPointTable()},
+      {"continuation", "Fixed point continuation", &continuationTable()},
+      {"separatrix", "Separatrix", &separatrixTable()},
+      {"bifurcation_tree", "Bifurcating tree", &bifurcationTreeTable()},
+      {"grid", "Surface |Map(x) - x| and region of allowed motion", &gridTable()},
+      {"lyapunov", "Lyapunov exponents", &lyapunovTable()},
+      {"megno", "MEGNO and FLI", &megnoTable()},
+  };
+  return s;
+}
+
+const ToolSection* findToolSection(const std::string& key) {
+  for (const auto& s : toolSections())
+    if (s.key == key) return &s;
+  return nullptr;
+}
+
+const ToolRegistry& ToolRegistry::builtin() {
+  static const ToolRegistry r = [] {
+    ToolRegistry t;
+    const auto add = [&t](ToolEntry e) { t.entries_.push_back(std::move(e)); };
+    add({.id = "poincare",
+         .title = "Poincaré map",
+         .description = "a trajectory's crossings of the section (poincare.section = poincare.value), on the "
+                        "map window",
+         .section = "poincare",
+         .command = "poincare",
+         .chartView = "poincare",
+         .outputs = {{"<map coordinates>", "the point on the section"},
+                     {"t", "the time of the crossing"},
+                     {"sheet", "the root of the completion the point lies on"}},
+         .reference = "manual §2.3.1"});
+    add({.id = "spectrum",
+         .title = "Fourier spectrum",
+         .parent = "poincare",
+         .description = "of spectrum.function along the trajectory (a chart window)",
+         .section = "spectrum",
+         .command = "spectrum",
+         .chartView = "spectrum",
+         .outputs = {{"frequency", "CSV column"},
+                     {"amplitude", "CSV column"},
+                     {"peaks", "JSON: the largest peaks"}},
+         .reference = "manual §2.3.2; FFTW"});
+    add({.id = "lyapunov",
+         .title = "Lyapunov exponents",
+         .parent = "poincare",
+         .description = "the spectrum of exponents against time (a chart window)",
+         .section = "lyapunov",
+         .command = "lyapunov",
+         .chartView = "lyapunov",
+         .outputs = {{"exponents", "the estimates at the end, largest first"},
+                     {"sum", "their sum (0 for a measure-preserving flow)"},
+                     {"time", "the time reached"},
+                     {"converged", "whether the stopping rule held"}},
+         .reference = "Benettin, Galgani, Giorgilli, Strelcyn, Meccanica 15 (1980) 9-30"});
+    add({.id = "megno",
+         .title = "MEGNO and FLI",
+         .parent = "poincare",
+         .description =
+             "the chaos indicators against time: <Y> -> 2 on tori, -> 0 on stable periodic orbits of "
+             "maps, ~ lambda t / 2 on chaotic orbits (a chart window)",
+         .section = "megno",
+         .command = "megno",
+         .chartView = "megno",
+         .outputs = {{"megno", "<Y>, the time-averaged MEGNO at the end"},
+                     {"megno_rate", "<Y> / (t/2): tends to the largest Lyapunov exponent on chaotic orbits"},
+                     {"y", "Y, the instantaneous MEGNO at the end"},
+                     {"fli", "ln |w(t)|, the fast Lyapunov indicator"},
+                     {"time", "the time reached"}},
+         .reference = "Cincotta & Simo, A&AS 147 (2000) 205; Froeschle, Lega & Gonczi, CeMDA 67 (1997) 41"});
+    add({.id = "map3d",
+         .title = "Map3D",
+         .parent = "poincare",
+         .description = "the map in three dimensions (a chart window)",
+         .chartView = "map3d",
+         .outputs = {{"<three coordinates>", "the points in space"}},
+         .reference = "manual §2.3.1"});
+    add({.id = "plot",
+         .title = "2D / 3D plot",
+         .parent = "poincare",
+         .description =
+             "the plot section's observables along the 3D view's run and every trajectory of the map "
+             "(a live filter window)",
+         .section = "plot",
+         .chartView = "plot",
+         .outputs = {{"<plot.x, plot.y[, plot.z]>", "the observables at each output"}},
+         .reference = "manual §2.4.1-§2.4.2"});
+    add({.id = "fixedpoint",
+         .title = "Fixed points",
+         .description = "Newton (or gradient) search from fixedpoint.guess; its type and multipliers",
+         .section = "fixedpoint",
+         .command = "fixedpoint",
+         .outputs = {{"point", "the fixed point"},
+                     {"type", "elliptic, hyperbolic, ..."},
+                     {"multipliers", "the eigenvalues of D(Map^n)"},
+                     {"residual", "|Map^n(x) - x|"}},
+         .reference = "manual §2.3.4"});
+    add({.id = "continuation",
+         .title = "Continuation",
+         .parent = "fixedpoint",
+         .description = "the family of the fixed point in continuation.parameter up to continuation.to",
+         .section = "continuation",
+         .command = "continue",
+         .chartView = "continuation",
+         .outputs = {{"parameter", "the parameter's value"},
+                     {"<map coordinates>", "the fixed point"},
+                     {"type", "its type"},
+                     {"changes", "JSON: where the type changes"}},
+         .reference = "manual §2.3.5"});
+    add({.id = "multipliers",
+         .title = "Multipliers",
+         .parent = "continuation",
+         .description = "the multipliers of the continued fixed point on the complex plane",
+         .chartView = "multipliers",
+         .outputs = {{"Re, Im", "each multiplier"}},
+         .reference = "manual §2.4.3"});
+    add({.id = "separatrix",
+         .title = "Separatrices",
+         .parent = "fixedpoint",
+         .description = "the branches of the invariant manifolds of a hyperbolic point",
+         .section = "separatrix",
+         .command = "separatrix",
+         .outputs = {{"branch", "1..4"}, {"<map coordinates>", "the points of the branch"}},
+         .reference = "manual §2.3.6"});
+    add({.id = "bifurcation_tree",
+         .title = "Bifurcation tree",
+         .parent = "fixedpoint",
+         .description = "period doublings along the continuation",
+         .section = "bifurcation_tree",
+         .command = "bifurcation-tree",
+         .outputs = {{"level, order, parameter", "each doubling"}, {"ratios", "JSON: the Feigenbaum ratios"}},
+         .reference = "manual §2.3.7"});
+    add({.id = "surface",
+         .title = "Surface |Map(x) - x|",
+         .description = "on the grid section's rectangle (a chart window)",
+         .section = "grid",
+         .command = "surface",
+         .chartView = "surface",
+         .outputs = {{"<grid coordinates>", "the cell"}, {"value", "|Map(x) - x|"}},
+         .reference = "manual §2.3.8"});
+    add({.id = "ram",
+         .title = "Region of allowed motion",
+         .description = "on the grid section's rectangle (a chart window)",
+         .section = "grid",
+         .command = "ram",
+         .chartView = "ram",
+         .outputs = {{"<grid coordinates>", "the cell"}, {"value", "1 where motion is allowed"}},
+         .reference = "manual §2.3.9"});
+    add({.id = "diagram",
+         .title = "Topological analysis",
+         .description = "the bifurcation diagram on the plane of first integrals",
+         .command = "diagram",
+         .chartView = "bifurcation",
+         .outputs = {{"branch, parameter", "the curve and its parameter"},
+                     {"<the diagram's axes>", "the point"}},
+         .reference = "manual §2.3.10"});
+    return t;
+  }();
+  return r;
+}
+
+const ToolEntry* ToolRegistry::find(const std::string& id) const {
+  for (const auto& e : entries_)
+    if (e.id == id) return &e;
+  return nullptr;
+}
+
+const ToolEntry& ToolRegistry::get(const std::string& id) const {
+  if (const ToolEntry* e = find(id)) return *e;
+  std::string known;
+  for (const auto& e : entries_)
+    known += " " + e.id;
+  throw InputError("unknown tool '" + id + "' (known:" + known + ")");
+}
+
+} // namespace rv

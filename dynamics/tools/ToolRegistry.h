@@ -1,0 +1,60 @@
+// ToolRegistry.h -- every tool of nonlinear dynamics rollviz offers (manual §2.3-§2.4), registered by id as
+// the integrators are: its title and place in the manual's tool tree, the scene section whose parameter table
+// holds its settings (one declaration: default, range, description, scene key, `--set SECTION.ID=VALUE`, GUI
+// field and `rollviz describe-tool` line), the CLI command and chart view that run it, and what it outputs.
+// The CLI's `list tools` / `describe-tool`, the GUI's tool tree and settings tabs and the scene loader's
+// sections iterate it.
+#pragma once
+#include "dynamics/core/ParameterTable.h"
+
+#include <string>
+#include <vector>
+
+namespace rv {
+
+/// A settings section of a scene: its key, title and parameter table.
+struct ToolSection {
+  std::string key;   ///< scene section, e.g. "fixedpoint"
+  std::string title; ///< as in the manual's menu
+  const ParameterTable* table;
+};
+
+/// One field of a tool's output (a CSV column or a JSON field).
+struct ToolOutput {
+  std::string name;
+  std::string description;
+};
+
+/// A registered tool.
+struct ToolEntry {
+  std::string id;          ///< e.g. "megno"; the GUI's tree key
+  std::string title;       ///< as the manual names it
+  std::string parent;      ///< the tool it hangs under in the manual's tree ("" at the top)
+  std::string description; ///< one line: what it computes and where it shows
+  std::string section;     ///< the scene section of its settings ("" when it has none of its own)
+  std::string command;     ///< the `rollviz` subcommand that runs it headless ("" when none)
+  std::string chartView;   ///< the `rollviz chart --view` that draws it ("" when none)
+  std::vector<ToolOutput> outputs;
+  std::string reference; ///< the paper behind it
+};
+
+/// All tools, in the order of the manual's tree (a parent before its children).
+class ToolRegistry {
+public:
+  static const ToolRegistry& builtin();
+  const std::vector<ToolEntry>& entries() const { return entries_; }
+  /// The entry with this id, or nullptr.
+  const ToolEntry* find(const std::string& id) const;
+  /// The entry with this id; throws InputError listing the known ids when there is none.
+  const ToolEntry& get(const std::string& id) const;
+
+private:
+  std::vector<ToolEntry> entries_;
+};
+
+/// Every settings section with a parameter table, in the order of the GUI's tabs.
+const std::vector<ToolSection>& toolSections();
+/// The section with this scene key, or nullptr.
+const ToolSection* findToolSection(const std::string& key);
+
+} // namespace rv

@@ -1,0 +1,55 @@
+#include "scenes/ChartTask.h"
+
+#include "dynamics/core/Errors.h"
+#include "dynamics/tools/ReturnMap.h"
+#include "scenes/SceneCharts.h"
+#include "scenes/SceneLoader.h"
+
+namespace rv {
+
+ChartTask::ChartTask(nlohmann::json document, std::string source, std::string view, std::string diagram)
+    : source_(std::move(source)), view_(std::move(view)), diagram_(std::move(diagram)) {
+  edit(std::move(document));
+}
+
+std::string ChartTask::name() const {
+  return chartTitle(view_) + (diagram_.empty() ? "" : " " + diagram_);
+}
+
+void ChartTask::edit(nlohmann::json document) {
+  // validated now (bad input is reported to whoever edits), described as the map's tools are
+  describe_ = sceneFromJson(document, source_).runSpec().describe();
+  document_ = std::move(document);
+}
+
+bool ChartTask::run(const ToolControl& control) {
+  const Scene scene = sceneFromJson(document_, source_);
+  std::shared_ptr<Chart> chart;
+  try {
+    chart = sceneChart(scene, view_, control, 0, diagram_);
+  } catch (const Stopped&) {
+    return false;
+  }
+  const bool stopped = control.stopRequested();
+  std::lock_guard lock(mutex_);
+  chart_ = std::move(chart);
+  if (!stopped) ++completed_;
+  return !stopped;
+}
+
+void ChartTask::reset() {
+  std::lock_guard lock(mutex_);
+  chart_.reset();
+}
+
+std::shared_ptr<Chart> ChartTask::chart() const {
+  std::lock_guard lock(mutex_);
+  return chart_;
+}
+
+int ChartTask::completed() const {
+  std::lock_guard lock(mutex_);
+  return completed_;
+}
+
+} // namespace rv
