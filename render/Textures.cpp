@@ -23,7 +23,7 @@ vtkSmartPointer<vtkTexture> textureFrom(int w, int h, const auto& pixel, bool re
     for (int i = 0; i < w; ++i) {
       const Rgb c = pixel(i, j);
       for (int k = 0; k < 3; ++k)
-        *p++ = static_cast<unsigned char>(std::clamp(c[k], 0.0, 1.0) * 255 + 0.5);
+        *p++ = static_cast<unsigned char>(std::lround(std::clamp(c[k], 0.0, 1.0) * 255));
     }
   auto tex = vtkSmartPointer<vtkTexture>::New();
   tex->SetInputData(img);

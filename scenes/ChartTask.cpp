@@ -22,6 +22,11 @@ void ChartTask::edit(nlohmann::json document) {
   document_ = std::move(document);
 }
 
+bool ChartTask::edit(const TaskEdit& e) {
+  edit(nlohmann::json::parse(e.document()));
+  return false;
+}
+
 bool ChartTask::run(const ToolControl& control) {
   const Scene scene = sceneFromJson(document_, source_);
   std::shared_ptr<Chart> chart;

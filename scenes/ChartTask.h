@@ -27,6 +27,8 @@ public:
   void reset() override;
   /// Takes a new scene document (the control panel's values); the next run computes with it.
   void edit(nlohmann::json document);
+  /// Edit properties: the edited scene's document; the chart is computed again (returns false).
+  bool edit(const TaskEdit& e) override;
 
   const std::string& view() const { return view_; }
   const std::string& diagram() const { return diagram_; }

@@ -15,13 +15,6 @@
 
 namespace rv {
 
-const std::vector<std::string>& chartViews() {
-  static const std::vector<std::string> v{"poincare",    "map3d",        "plot",     "multipliers",
-                                          "bifurcation", "continuation", "spectrum", "lyapunov",
-                                          "megno",       "surface",      "ram"};
-  return v;
-}
-
 std::string chartTitle(const std::string& view) {
   for (const auto& e : ToolRegistry::builtin().entries())
     if (e.chartView == view) return e.title;
@@ -71,138 +64,197 @@ std::unique_ptr<PoincareChart> gridChart(const Scene& scene, MapGrid::Kind kind,
   return chart;
 }
 
+// One builder per view: what it computes and how it is drawn. The table below is the only place a view's name
+// is matched; the menu order is the table's.
+struct ChartRequest {
+  long points;
+  std::string diagram;
+};
+using ChartBuilder = std::unique_ptr<Chart> (*)(const Scene&, const ChartRequest&, const ToolControl&);
+
+// a 3D map's three coordinates; a 2D map's points on the energy level, in the first three state variables
+std::unique_ptr<Chart> map3dChart(const Scene& scene, const ChartRequest& r, const ToolControl& control) {
+  const auto map = scenePoincareMap(scene, r.points);
+  const bool threeD = map->coordinateNames().size() >= 3;
+  const auto& state = scene.model->info().stateNames;
+  if (!threeD && state.size() < 3)
+    throw InputError("--view map3d: " + scene.model->info().id + " has no 3D map");
+  std::array<std::vector<double>, 3> c;
+  while (auto p = map->next(control))
+    for (int i = 0; i < 3; ++i)
+      c[i].push_back(threeD ? p->coordinates[i] : map->lastState()[i]);
+  const auto& n = threeD ? map->coordinateNames() : state;
+  auto chart3 = std::make_unique<Chart3D>(std::array<std::string, 3>{n[0], n[1], n[2]});
+  chart3->addSeries(c[0], c[1], c[2], seriesColor(0), 3);
+  return chart3;
+}
+
+std::unique_ptr<Chart> plotChart(const Scene& scene, const ChartRequest&, const ToolControl& control) {
+  const PlotView& pv = scene.plot;
+  auto integ = scene.startIntegrator();
+  const auto pts = samplePlot(*scene.model, *integ, pv.settings, control, "plot");
+  std::array<std::vector<double>, 3> c;
+  for (const auto& p : pts)
+    for (std::size_t i = 0; i < p.size(); ++i)
+      c[i].push_back(p[i]);
+  auto plot = std::make_unique<PlotChart>(pv.settings.axes, pv.chart);
+  plot->setSeries(plot->addSeries(seriesColor(0)), c);
+  return plot;
+}
+
+std::unique_ptr<Chart> poincareChart(const Scene& scene, const ChartRequest& r, const ToolControl& control) {
+  const auto map = scenePoincareMap(scene, r.points);
+  std::vector<double> x, y;
+  while (auto p = map->next(control)) {
+    x.push_back(p->coordinates.at(0));
+    y.push_back(p->coordinates.size() > 1 ? p->coordinates[1] : p->time);
+  }
+  const auto& names = map->coordinateNames();
+  auto chart = std::make_unique<PoincareChart>(names.at(0), names.size() > 1 ? names[1] : "t");
+  chart->addSeries(x, y, seriesColor(0));
+  chart->select(0);
+  return chart;
+}
+
+std::unique_ptr<Chart> multipliersChart(const Scene& scene, const ChartRequest&, const ToolControl& control) {
+  auto chart = std::make_unique<PoincareChart>("Re", "Im");
+  drawMultipliers(*chart, multiplierPath(SceneMap(Scene(scene)), control));
+  return chart;
+}
+
+std::unique_ptr<Chart> bifurcationChart(const Scene& scene, const ChartRequest& r, const ToolControl&) {
+  const auto diagrams = scene.model->diagrams();
+  const Diagram& d = findDiagram(diagrams, r.diagram, r.diagram.empty() ? "--view bifurcation" : "--diagram",
+                                 scene.model->info().id);
+  auto chart = std::make_unique<PoincareChart>(d.axes[0], d.axes[1]);
+  drawDiagram(*chart, d, {d.place(scene.initialState.data())});
+  return chart;
+}
+
+std::unique_ptr<Chart> continuationChart(const Scene& scene, const ChartRequest&,
+                                         const ToolControl& control) {
+  const SceneMap sm{Scene(scene)};
+  const auto cont = sm.continuationRun();
+  try {
+    cont->run(control);
+  } catch (const ComputationError&) {
+    if (cont->points().empty()) throw;
+  }
+  // against the coordinate that moves most along the family
+  const auto& pts = cont->points();
+  int best = 0;
+  double spread = -1;
+  for (int k = 0; k < static_cast<int>(pts.front().fixedPoint.point.size()); ++k) {
+    double lo = 1e300, hi = -1e300;
+    for (const auto& c : pts)
+      lo = std::min(lo, c.fixedPoint.point[k]), hi = std::max(hi, c.fixedPoint.point[k]);
+    if (hi - lo > spread) spread = hi - lo, best = k;
+  }
+  std::vector<double> p, x;
+  std::vector<FixedPointType> types;
+  for (const auto& c : pts)
+    p.push_back(c.parameter), x.push_back(c.fixedPoint.point[best]), types.push_back(c.fixedPoint.type);
+  auto chart = std::make_unique<PoincareChart>(cont->settings().parameter, sm.map().coordinateNames()[best]);
+  drawFamily(*chart, p, x, types);
+  return chart;
+}
+
+std::unique_ptr<Chart> spectrumChart(const Scene& scene, const ChartRequest&, const ToolControl& control) {
+  if (scene.spectrum.function.empty())
+    throw InputError("--view spectrum: the scene has no spectrum.function");
+  auto integ = scene.startIntegrator();
+  const SpectrumResult r =
+      fourierSpectrum(*scene.model, *integ, scene.model->isMap() || scene.integratorEntry->fixedStep,
+                      scene.spectrum, control);
+  std::vector<std::array<double, 2>> peaks;
+  for (const auto& pk : r.peaks)
+    peaks.push_back({pk.frequency, pk.amplitude});
+  auto chart = std::make_unique<PoincareChart>("frequency", "amplitude of " + scene.spectrum.function);
+  drawCurves(*chart, r.frequency, {r.amplitude}, peaks);
+  // up to a little past the highest peak: the rest of a smooth signal's spectrum is flat
+  double top = 0, amax = 0;
+  for (const auto& pk : r.peaks)
+    top = std::max(top, pk.frequency), amax = std::max(amax, pk.amplitude);
+  if (top > 0 && !r.frequency.empty() && 2 * top < r.frequency.back())
+    chart->setRanges(0, 2 * top, 0, 1.05 * amax);
+  return chart;
+}
+
+std::unique_ptr<Chart> lyapunovChart(const Scene& scene, const ChartRequest&, const ToolControl& control) {
+  const RunSpec spec = scene.runSpec();
+  const Model& model = *scene.model;
+  std::vector<double> t;
+  std::vector<std::vector<double>> ex;
+  lyapunovExponents(
+      model, [&] { return spec.makeIntegrator(model); }, scene.initialState, scene.lyapunov,
+      [&](const LyapunovEstimate& e) {
+        t.push_back(e.time);
+        ex.resize(e.exponents.size());
+        for (std::size_t i = 0; i < e.exponents.size(); ++i)
+          ex[i].push_back(e.exponents[i]);
+      },
+      control);
+  auto chart = std::make_unique<PoincareChart>("t", "Lyapunov exponents");
+  drawCurves(*chart, t, ex);
+  return chart;
+}
+
+std::unique_ptr<Chart> megnoChart(const Scene& scene, const ChartRequest&, const ToolControl& control) {
+  const RunSpec spec = scene.runSpec();
+  const Model& model = *scene.model;
+  std::vector<double> t, y;
+  megno(
+      model, [&] { return spec.makeIntegrator(model); }, scene.initialState,
+      megnoSettings(scene.tool("megno")),
+      [&](const MegnoEstimate& e) { t.push_back(e.time), y.push_back(e.megno); }, control);
+  auto chart = std::make_unique<PoincareChart>("t", "MEGNO <Y>");
+  drawCurves(*chart, t, {y});
+  return chart;
+}
+
+std::unique_ptr<Chart> surfaceChart(const Scene& scene, const ChartRequest&, const ToolControl& control) {
+  return gridChart(scene, MapGrid::Kind::Surface, control);
+}
+
+std::unique_ptr<Chart> ramChart(const Scene& scene, const ChartRequest&, const ToolControl& control) {
+  return gridChart(scene, MapGrid::Kind::AllowedRegion, control);
+}
+
+const std::vector<std::pair<std::string, ChartBuilder>>& chartBuilders() {
+  static const std::vector<std::pair<std::string, ChartBuilder>> b{{"poincare", poincareChart},
+                                                                   {"map3d", map3dChart},
+                                                                   {"plot", plotChart},
+                                                                   {"multipliers", multipliersChart},
+                                                                   {"bifurcation", bifurcationChart},
+                                                                   {"continuation", continuationChart},
+                                                                   {"spectrum", spectrumChart},
+                                                                   {"lyapunov", lyapunovChart},
+                                                                   {"megno", megnoChart},
+                                                                   {"surface", surfaceChart},
+                                                                   {"ram", ramChart}};
+  return b;
+}
+
 } // namespace
+
+const std::vector<std::string>& chartViews() {
+  static const std::vector<std::string> v = [] {
+    std::vector<std::string> names;
+    for (const auto& [name, build] : chartBuilders())
+      names.push_back(name);
+    return names;
+  }();
+  return v;
+}
 
 std::unique_ptr<Chart> sceneChart(const Scene& scene, const std::string& view, const ToolControl& control,
                                   long points, const std::string& diagram) {
-  std::unique_ptr<PoincareChart> chart;
-  if (view == "map3d") {
-    // a 3D map's three coordinates; a 2D map's points on the energy level, in the first three state variables
-    const auto map = scenePoincareMap(scene, points);
-    const bool threeD = map->coordinateNames().size() >= 3;
-    const auto& state = scene.model->info().stateNames;
-    if (!threeD && state.size() < 3)
-      throw InputError("--view map3d: " + scene.model->info().id + " has no 3D map");
-    std::array<std::vector<double>, 3> c;
-    while (auto p = map->next(control))
-      for (int i = 0; i < 3; ++i)
-        c[i].push_back(threeD ? p->coordinates[i] : map->lastState()[i]);
-    const auto& n = threeD ? map->coordinateNames() : state;
-    auto chart3 = std::make_unique<Chart3D>(std::array<std::string, 3>{n[0], n[1], n[2]});
-    chart3->addSeries(c[0], c[1], c[2], seriesColor(0), 3);
-    return chart3;
-  }
-  if (view == "plot") {
-    const PlotView& pv = scene.plot;
-    auto integ = scene.startIntegrator();
-    const auto pts = samplePlot(*scene.model, *integ, pv.settings, control, "plot");
-    std::array<std::vector<double>, 3> c;
-    for (const auto& p : pts)
-      for (std::size_t i = 0; i < p.size(); ++i)
-        c[i].push_back(p[i]);
-    auto plot = std::make_unique<PlotChart>(pv.settings.axes, pv.chart);
-    plot->setSeries(plot->addSeries(seriesColor(0)), c);
-    return plot;
-  }
-  if (view == "poincare") {
-    const auto map = scenePoincareMap(scene, points);
-    std::vector<double> x, y;
-    while (auto p = map->next(control)) {
-      x.push_back(p->coordinates.at(0));
-      y.push_back(p->coordinates.size() > 1 ? p->coordinates[1] : p->time);
-    }
-    const auto& names = map->coordinateNames();
-    chart = std::make_unique<PoincareChart>(names.at(0), names.size() > 1 ? names[1] : "t");
-    chart->addSeries(x, y, seriesColor(0));
-    chart->select(0);
-  } else if (view == "multipliers") {
-    chart = std::make_unique<PoincareChart>("Re", "Im");
-    drawMultipliers(*chart, multiplierPath(SceneMap(Scene(scene)), control));
-  } else if (view == "bifurcation") {
-    const auto diagrams = scene.model->diagrams();
-    const Diagram& d = findDiagram(diagrams, diagram, diagram.empty() ? "--view bifurcation" : "--diagram",
-                                   scene.model->info().id);
-    chart = std::make_unique<PoincareChart>(d.axes[0], d.axes[1]);
-    drawDiagram(*chart, d, {d.place(scene.initialState.data())});
-  } else if (view == "continuation") {
-    const SceneMap sm{Scene(scene)};
-    const auto cont = sm.continuationRun();
-    try {
-      cont->run(control);
-    } catch (const ComputationError&) {
-      if (cont->points().empty()) throw;
-    }
-    // against the coordinate that moves most along the family
-    const auto& pts = cont->points();
-    int best = 0;
-    double spread = -1;
-    for (int k = 0; k < static_cast<int>(pts.front().fixedPoint.point.size()); ++k) {
-      double lo = 1e300, hi = -1e300;
-      for (const auto& c : pts)
-        lo = std::min(lo, c.fixedPoint.point[k]), hi = std::max(hi, c.fixedPoint.point[k]);
-      if (hi - lo > spread) spread = hi - lo, best = k;
-    }
-    std::vector<double> p, x;
-    std::vector<FixedPointType> types;
-    for (const auto& c : pts)
-      p.push_back(c.parameter), x.push_back(c.fixedPoint.point[best]), types.push_back(c.fixedPoint.type);
-    chart = std::make_unique<PoincareChart>(cont->settings().parameter, sm.map().coordinateNames()[best]);
-    drawFamily(*chart, p, x, types);
-  } else if (view == "spectrum") {
-    if (scene.spectrum.function.empty())
-      throw InputError("--view spectrum: the scene has no spectrum.function");
-    auto integ = scene.startIntegrator();
-    const SpectrumResult r =
-        fourierSpectrum(*scene.model, *integ, scene.model->isMap() || scene.integratorEntry->fixedStep,
-                        scene.spectrum, control);
-    std::vector<std::array<double, 2>> peaks;
-    for (const auto& pk : r.peaks)
-      peaks.push_back({pk.frequency, pk.amplitude});
-    chart = std::make_unique<PoincareChart>("frequency", "amplitude of " + scene.spectrum.function);
-    drawCurves(*chart, r.frequency, {r.amplitude}, peaks);
-    // up to a little past the highest peak: the rest of a smooth signal's spectrum is flat
-    double top = 0, amax = 0;
-    for (const auto& pk : r.peaks)
-      top = std::max(top, pk.frequency), amax = std::max(amax, pk.amplitude);
-    if (top > 0 && !r.frequency.empty() && 2 * top < r.frequency.back())
-      chart->setRanges(0, 2 * top, 0, 1.05 * amax);
-  } else if (view == "lyapunov") {
-    const RunSpec spec = scene.runSpec();
-    const Model& model = *scene.model;
-    std::vector<double> t;
-    std::vector<std::vector<double>> ex;
-    lyapunovExponents(
-        model, [&] { return spec.makeIntegrator(model); }, scene.initialState, scene.lyapunov,
-        [&](const LyapunovEstimate& e) {
-          t.push_back(e.time);
-          ex.resize(e.exponents.size());
-          for (std::size_t i = 0; i < e.exponents.size(); ++i)
-            ex[i].push_back(e.exponents[i]);
-        },
-        control);
-    chart = std::make_unique<PoincareChart>("t", "Lyapunov exponents");
-    drawCurves(*chart, t, ex);
-  } else if (view == "megno") {
-    const RunSpec spec = scene.runSpec();
-    const Model& model = *scene.model;
-    std::vector<double> t, y;
-    megno(
-        model, [&] { return spec.makeIntegrator(model); }, scene.initialState,
-        megnoSettings(scene.tool("megno")),
-        [&](const MegnoEstimate& e) { t.push_back(e.time), y.push_back(e.megno); }, control);
-    chart = std::make_unique<PoincareChart>("t", "MEGNO <Y>");
-    drawCurves(*chart, t, {y});
-  } else if (view == "surface") {
-    chart = gridChart(scene, MapGrid::Kind::Surface, control);
-  } else if (view == "ram") {
-    chart = gridChart(scene, MapGrid::Kind::AllowedRegion, control);
-  } else {
-    std::string known;
-    for (const auto& v : chartViews())
-      known += " " + v;
-    throw InputError("--view " + view + ": unknown (views:" + known + ")");
-  }
-  return chart;
+  for (const auto& [name, build] : chartBuilders())
+    if (name == view) return build(scene, {points, diagram}, control);
+  std::string known;
+  for (const auto& v : chartViews())
+    known += " " + v;
+  throw InputError("--view " + view + ": unknown (views:" + known + ")");
 }
 
 } // namespace rv

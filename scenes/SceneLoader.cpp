@@ -250,40 +250,6 @@ long count(const json& j, const Where& w, long least = 1) {
   return static_cast<long>(v);
 }
 
-SectionSettings readPoincare(const json& j, const Where& w) {
-  requireObject(j, w);
-  onlyKeys(j, w,
-           {"section", "value", "direction", "points", "accuracy", "integrate", "many_sheeted", "root",
-            "order", "max_time"});
-  SectionSettings p;
-  p.maxPoints = 2000;
-  if (j.contains("section")) p.observable = text(j["section"], w / "section");
-  if (j.contains("value")) p.value = number(j["value"], w / "value");
-  if (j.contains("direction")) {
-    const std::string d = text(j["direction"], w / "direction");
-    if (d == "positive")
-      p.direction = +1;
-    else if (d == "negative")
-      p.direction = -1;
-    else if (d == "both")
-      p.checkDirection = false;
-    else
-      (w / "direction").fail("expected positive, negative or both");
-  }
-  if (j.contains("points")) p.maxPoints = count(j["points"], w / "points");
-  if (j.contains("accuracy")) p.accuracy = positive(j["accuracy"], w / "accuracy");
-  if (j.contains("integrate")) {
-    const std::string d = text(j["integrate"], w / "integrate");
-    if (d != "forward" && d != "backward") (w / "integrate").fail("expected forward or backward");
-    p.backward = d == "backward";
-  }
-  if (j.contains("many_sheeted")) p.manySheeted = boolean(j["many_sheeted"], w / "many_sheeted");
-  if (j.contains("root")) p.root = static_cast<int>(count(j["root"], w / "root"));
-  if (j.contains("order")) p.order = static_cast<int>(count(j["order"], w / "order"));
-  if (j.contains("max_time")) p.maxTime = positive(j["max_time"], w / "max_time");
-  return p;
-}
-
 SpectrumSettings readSpectrum(const json& j, const Where& w) {
   requireObject(j, w);
   onlyKeys(j, w, {"function", "samples", "max_frequency", "peaks", "min_peak_distance"});
@@ -367,6 +333,12 @@ void readToolSections(const json& doc, const Where& root, Scene& scene) {
     if (doc.contains(section.key)) {
       const Where w = root / section.key;
       const json& j = requireObject(doc[section.key], w);
+      if (section.key == "poincare") { // its observable is a name
+        readParameters(j, w, *values, {"section"});
+        if (j.contains("section")) scene.poincare.observable = text(j["section"], w / "section");
+        scene.tools.emplace(section.key, std::move(values));
+        continue;
+      }
       readParameters(j, w, *values, {"guess", "parameter", "to"});
       if (section.key == "fixedpoint" && j.contains("guess")) {
         if (!j["guess"].is_array()) (w / "guess").fail("expected an array of numbers");
@@ -420,7 +392,7 @@ void applyOverrides(json& doc, const std::vector<SceneOverride>& overrides) {
       doc["parameters"][o.key] = value;
       continue;
     }
-    static const std::set<std::string> sections{"integrator", "initial",    "poincare", "spectrum",
+    static const std::set<std::string> sections{"integrator", "initial",    "spectrum",
                                                 "plot",       "parameters", "view"};
     const std::string head = o.key.substr(0, o.key.find('.'));
     if (!sections.count(head) && !findToolSection(head))
@@ -465,9 +437,8 @@ Scene sceneFromJson(json doc, const std::string& source, const std::vector<Scene
   requireObject(doc, root);
   applyOverrides(doc, overrides);
   for (const auto& [key, value] : doc.items()) {
-    static const std::set<std::string> known{"problem", "parameters", "integrator", "initial",
-                                             "plot",    "poincare",   "spectrum",   "view",
-                                             "title",   "description"};
+    static const std::set<std::string> known{"problem",  "parameters", "integrator", "initial",    "plot",
+                                             "spectrum", "view",       "title",      "description"};
     if (!known.count(key) && !findToolSection(key)) {
       std::string list;
       for (const auto& k : known)
@@ -514,16 +485,15 @@ Scene sceneFromJson(json doc, const std::string& source, const std::vector<Scene
     wi.fail(e.what());
   }
 
-  scene.poincare.maxPoints = 2000;
-  if (doc.contains("poincare")) scene.poincare = readPoincare(doc["poincare"], root / "poincare");
+  readToolSections(doc, root, scene);
+  scene.poincare = poincareSettings(scene.tool("poincare"), scene.poincare.observable);
+  scene.lyapunov = lyapunovSettings(scene.tool("lyapunov"));
   if (doc.contains("spectrum")) scene.spectrum = readSpectrum(doc["spectrum"], root / "spectrum");
   if (doc.contains("plot")) scene.plot = readPlot(doc["plot"], root / "plot");
   if (!scene.poincare.observable.empty() && !scene.model->isMap() &&
       scene.model->findObservable(scene.poincare.observable) < 0)
     (root / "poincare" / "section")
         .fail("unknown observable '" + scene.poincare.observable + "' of " + problem);
-  readToolSections(doc, root, scene);
-  scene.lyapunov = lyapunovSettings(scene.tool("lyapunov"));
   if (!doc.contains("initial")) root.fail("missing \"initial\" (a map point or a state)");
   scene.initialState = readInitial(doc["initial"], root / "initial", *scene.model, scene.poincare);
   if (doc.contains("view")) scene.view = readView(doc["view"], root / "view");

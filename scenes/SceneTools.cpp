@@ -2,7 +2,6 @@
 
 #include "dynamics/core/Errors.h"
 #include "dynamics/jobs/PoincareTask.h"
-#include "scenes/ChartTask.h"
 #include "scenes/SceneLoader.h"
 
 #include <cmath>
@@ -72,7 +71,6 @@ std::unique_ptr<Continuation> SceneMap::continuationRun() const {
 std::unique_ptr<PoincareMap> scenePoincareMap(const Scene& scene, long points) {
   SectionSettings s = scene.poincare;
   if (points > 0) s.maxPoints = points;
-  if (s.maxPoints <= 0) s.maxPoints = 2000;
   auto integ = scene.runSpec().makeIntegrator(*scene.model);
   integ->start(*scene.model, 0, scene.initialState, s.backward ? -1 : +1);
   return std::make_unique<PoincareMap>(*scene.model, std::move(integ), s);
@@ -95,33 +93,35 @@ std::vector<std::vector<std::complex<double>>> multiplierPath(const SceneMap& s,
   return steps;
 }
 
+namespace {
+// an edited scene as the tools read it; the map is built only for the fixed-point family
+class SceneEdit final : public TaskEdit {
+public:
+  explicit SceneEdit(const Scene& scene) : scene_(scene) {}
+  RunSpec run() const override { return scene_.runSpec(); }
+  SectionSettings section() const override { return scene_.poincare; }
+  MapTaskSpec mapTask() const override { return map().taskSpec(); }
+  ContinuationSettings continuation() const override { return map().continuation(); }
+  SeparatrixSettings separatrix() const override {
+    return separatrixSettings(scene_.tool("separatrix"), map().search());
+  }
+  BifurcationTreeSettings bifurcationTree() const override {
+    return bifurcationTreeSettings(scene_.tool("bifurcation_tree"), map().continuation());
+  }
+  std::string document() const override { return scene_.document.dump(); }
+
+private:
+  const SceneMap& map() const {
+    if (!map_) map_ = std::make_unique<SceneMap>(Scene(scene_), MapToolOverrides{}, false);
+    return *map_;
+  }
+  const Scene& scene_;
+  mutable std::unique_ptr<SceneMap> map_;
+};
+} // namespace
+
 bool editTask(Task& task, const Scene& edited) {
-  if (auto* map = dynamic_cast<PoincareTask*>(&task)) {
-    map->edit(edited.runSpec(), edited.poincare);
-    return true;
-  }
-  if (auto* chart = dynamic_cast<ChartTask*>(&task)) {
-    chart->edit(edited.document);
-    return false;
-  }
-  const SceneMap sm(Scene(edited), {}, false);
-  if (auto* search = dynamic_cast<FixedPointTask*>(&task)) {
-    search->edit(sm.taskSpec());
-    return true;
-  }
-  if (auto* family = dynamic_cast<ContinuationTask*>(&task)) {
-    family->edit(sm.taskSpec(), sm.continuation());
-    return false;
-  }
-  if (auto* branch = dynamic_cast<SeparatrixTask*>(&task)) {
-    branch->edit(sm.taskSpec(), separatrixSettings(edited.tool("separatrix"), sm.search()));
-    return false;
-  }
-  if (auto* tree = dynamic_cast<BifurcationTreeTask*>(&task)) {
-    tree->edit(sm.taskSpec(), bifurcationTreeSettings(edited.tool("bifurcation_tree"), sm.continuation()));
-    return false;
-  }
-  throw InputError(task.name() + " takes no new values: restart it");
+  return task.edit(SceneEdit(edited));
 }
 
 } // namespace rv

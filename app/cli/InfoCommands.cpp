@@ -79,6 +79,7 @@ Command addDescribeToolCommand(CLI::App& app) {
         const ToolEntry& e = ToolRegistry::builtin().get(*idPtr);
         fmt::print("{}\n  {}\n  {}\n  reference: {}\n", e.id, e.title, e.description, e.reference);
         fmt::print("  in the tool tree under: {}\n", e.parent.empty() ? "(the top)" : e.parent);
+        fmt::print("  computation: {}\n", e.computation);
         fmt::print("  command: {}\n", e.command.empty() ? "(none: a chart view)" : "rollviz " + e.command);
         fmt::print("  chart: {}\n", e.chartView.empty() ? "(none)" : "rollviz chart --view " + e.chartView);
         if (const ToolSection* s = findToolSection(e.section)) {

@@ -44,6 +44,8 @@
 #include <cmath>
 #include <csignal>
 #include <fstream>
+#include <functional>
+#include <map>
 #include <vtkRenderer.h>
 
 namespace rv {
@@ -58,7 +60,7 @@ struct MainWindow::Recording {
 };
 
 static QString rollvizExecutable() {
-  if (const QString exe = qEnvironmentVariable("ROLLVIZ_EXE"); !exe.isEmpty()) return exe;
+  if (QString exe = qEnvironmentVariable("ROLLVIZ_EXE"); !exe.isEmpty()) return exe;
   return QCoreApplication::applicationFilePath();
 }
 
@@ -513,20 +515,18 @@ void MainWindow::recordDialog() {
 
 void MainWindow::createTool(const std::string& id) {
   if (!scene_) return;
-  if (id == "poincare")
-    map_->startFrom(scene_->initialState);
-  else if (id == "fixedpoint")
-    map_->searchFromGuess();
-  else if (id == "continuation")
-    map_->startContinuation();
-  else if (id == "separatrix")
-    map_->startSeparatrices();
-  else if (id == "bifurcation_tree")
-    map_->startBifurcationTree();
-  else if (id == "plot") // a filter: fed live by the running trajectories
-    openPlotWindow(scene_->plot);
-  else // the tools whose output is a chart of its own: spectrum, lyapunov, megno, map3d, surface, ram,
-       // diagram
+  // the tools that draw on the map window start there, the plot filter opens its live window; every other
+  // registered tool computes its chart view in a chart window (a job of the tool manager)
+  const std::map<std::string, std::function<void()>> onTheMap{
+      {"poincare", [this] { map_->startFrom(scene_->initialState); }},
+      {"fixedpoint", [this] { map_->searchFromGuess(); }},
+      {"continuation", [this] { map_->startContinuation(); }},
+      {"separatrix", [this] { map_->startSeparatrices(); }},
+      {"bifurcation_tree", [this] { map_->startBifurcationTree(); }},
+      {"plot", [this] { openPlotWindow(scene_->plot); }}};
+  if (const auto it = onTheMap.find(id); it != onTheMap.end())
+    it->second();
+  else
     openChart(ToolRegistry::builtin().get(id).chartView);
 }
 

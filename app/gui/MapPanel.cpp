@@ -492,6 +492,7 @@ void MapPanel::removeJob(Job& job) {
       ++it;
     }
   std::vector<int> ids;
+  ids.reserve(gone.size());
   for (const Job* j : gone)
     ids.push_back(j->id());
   jobs_.remove(job);

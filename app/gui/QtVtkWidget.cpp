@@ -12,6 +12,7 @@
 #include <QTimer>
 #include <QVBoxLayout>
 #include <QWheelEvent>
+#include <cmath>
 #include <vtkCallbackCommand.h>
 #include <vtkInteractorStyleTrackballCamera.h>
 #include <vtkOpenGLFramebufferObject.h>
@@ -122,8 +123,8 @@ void QtVtkWidget::initializeGL() {
 }
 
 void QtVtkWidget::resizeGL(int, int) {
-  interactor_->UpdateSize(int(width() * devicePixelRatioF() + 0.5),
-                          int(height() * devicePixelRatioF() + 0.5));
+  interactor_->UpdateSize(static_cast<int>(std::lround(width() * devicePixelRatioF())),
+                          static_cast<int>(std::lround(height() * devicePixelRatioF())));
 }
 
 void QtVtkWidget::paintGL() {
@@ -139,7 +140,8 @@ void QtVtkWidget::paintGL() {
   f->glDrawBuffers(1, &buf);
   st->vtkglDisable(GL_SCISSOR_TEST);
   const int* sz = window_->GetRenderFramebuffer()->GetLastSize();
-  const int dw = int(width() * devicePixelRatioF() + 0.5), dh = int(height() * devicePixelRatioF() + 0.5);
+  const int dw = static_cast<int>(std::lround(width() * devicePixelRatioF())),
+            dh = static_cast<int>(std::lround(height() * devicePixelRatioF()));
   window_->BlitDisplayFramebuffer(0, 0, 0, sz[0], sz[1], 0, 0, dw, dh, GL_COLOR_BUFFER_BIT, GL_LINEAR);
   f->glViewport(0, 0, dw, dh); // alpha := 1, else Qt blends the widget with what is behind it
   f->glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_TRUE);
@@ -163,16 +165,17 @@ void QtVtkWidget::mouseMoveEvent(QMouseEvent* e) {
 void QtVtkWidget::mouse(QMouseEvent* e, unsigned long vtkEvent) {
   if (vtkEvent == vtkCommand::NoEvent) return;
   const double dpr = devicePixelRatioF();
-  interactor_->SetEventInformationFlipY(
-      int(e->position().x() * dpr + 0.5), int(e->position().y() * dpr + 0.5),
-      e->modifiers() & Qt::ControlModifier ? 1 : 0, e->modifiers() & Qt::ShiftModifier ? 1 : 0);
+  interactor_->SetEventInformationFlipY(static_cast<int>(std::lround(e->position().x() * dpr)),
+                                        static_cast<int>(std::lround(e->position().y() * dpr)),
+                                        e->modifiers() & Qt::ControlModifier ? 1 : 0,
+                                        e->modifiers() & Qt::ShiftModifier ? 1 : 0);
   interactor_->InvokeEvent(vtkEvent, e);
 }
 
 void QtVtkWidget::wheelEvent(QWheelEvent* e) {
   const double dpr = devicePixelRatioF();
-  interactor_->SetEventInformationFlipY(int(e->position().x() * dpr + 0.5),
-                                        int(e->position().y() * dpr + 0.5));
+  interactor_->SetEventInformationFlipY(static_cast<int>(std::lround(e->position().x() * dpr)),
+                                        static_cast<int>(std::lround(e->position().y() * dpr)));
   if (e->angleDelta().y() != 0)
     interactor_->InvokeEvent(e->angleDelta().y() > 0 ? vtkCommand::MouseWheelForwardEvent
                                                      : vtkCommand::MouseWheelBackwardEvent,

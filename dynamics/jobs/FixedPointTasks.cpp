@@ -51,6 +51,11 @@ bool FixedPointTask::run(const ToolControl& control) {
   }
 }
 
+bool FixedPointTask::edit(const TaskEdit& e) {
+  edit(e.mapTask());
+  return true; // goes on from where it stopped
+}
+
 void FixedPointTask::edit(MapTaskSpec spec) {
   spec.guess = spec_.guess;
   spec_ = std::move(spec);
@@ -81,6 +86,11 @@ void ContinuationTask::reset() {
       spec_.run.modelParameters[settings_.parameter], spec_.guess, settings_);
 }
 
+bool ContinuationTask::edit(const TaskEdit& e) {
+  edit(e.mapTask(), e.continuation());
+  return false;
+}
+
 void ContinuationTask::edit(MapTaskSpec spec, ContinuationSettings settings) {
   spec.guess = spec_.guess;
   spec_ = std::move(spec);
@@ -97,6 +107,11 @@ bool ContinuationTask::run(const ToolControl& control) {
 
 SeparatrixTask::SeparatrixTask(MapTaskSpec spec, SeparatrixSettings settings)
     : spec_(std::move(spec)), settings_(settings) {}
+
+bool SeparatrixTask::edit(const TaskEdit& e) {
+  edit(e.mapTask(), e.separatrix());
+  return false;
+}
 
 void SeparatrixTask::edit(MapTaskSpec spec, SeparatrixSettings settings) {
   spec.guess = spec_.guess;
@@ -122,6 +137,11 @@ bool SeparatrixTask::run(const ToolControl& control) {
 BifurcationTreeTask::BifurcationTreeTask(MapTaskSpec spec, BifurcationTreeSettings settings)
     : spec_(std::move(spec)), settings_(std::move(settings)) {
   settings_.continuation.search = spec_.search;
+}
+
+bool BifurcationTreeTask::edit(const TaskEdit& e) {
+  edit(e.mapTask(), e.bifurcationTree());
+  return false;
 }
 
 void BifurcationTreeTask::edit(MapTaskSpec spec, BifurcationTreeSettings settings) {

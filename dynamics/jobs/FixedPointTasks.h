@@ -47,6 +47,7 @@ public:
   /// New problem, method, map and search settings (while the job does not run): the search goes on from the
   /// point where it stopped (its guess is kept).
   void edit(MapTaskSpec spec);
+  bool edit(const TaskEdit& e) override;
   const MapTaskSpec& spec() const { return spec_; }
   /// The search path, streamed.
   Channel<SearchPoint>& path() { return path_; }
@@ -70,6 +71,7 @@ public:
   void reset() override;
   /// New values (while the job does not run): the family is continued again from the task's own guess.
   void edit(MapTaskSpec spec, ContinuationSettings settings);
+  bool edit(const TaskEdit& e) override;
   Channel<ContinuationPoint>& points() { return points_; }
   Channel<TypeChange>& changes() { return changes_; }
 
@@ -90,6 +92,7 @@ public:
   void reset() override { points_.clear(); }
   /// New values (while the job does not run): the branch (kept) grows again from the task's own guess.
   void edit(MapTaskSpec spec, SeparatrixSettings settings);
+  bool edit(const TaskEdit& e) override;
   const SeparatrixSettings& settings() const { return settings_; }
   /// Batches of new points along the branch.
   Channel<std::vector<Eigen::VectorXd>>& points() { return points_; }
@@ -115,6 +118,7 @@ public:
   void reset() override;
   /// New values (while the job does not run): the tree grows again from the task's own guess.
   void edit(MapTaskSpec spec, BifurcationTreeSettings settings);
+  bool edit(const TaskEdit& e) override;
   Channel<TreePoint>& points() { return points_; }
   Channel<PeriodDoubling>& doublings() { return doublings_; }
 

@@ -1,8 +1,14 @@
 #include "dynamics/jobs/Job.h"
 
+#include "dynamics/core/Errors.h"
+
 #include <exception>
 
 namespace rv {
+
+bool Task::edit(const TaskEdit&) {
+  throw InputError(name() + " takes no new values: restart it");
+}
 
 const char* toString(Job::Status s) {
   switch (s) {

@@ -31,6 +31,11 @@ void PoincareTask::reset() {
   build(spec_.initialState, 0);
 }
 
+bool PoincareTask::edit(const TaskEdit& e) {
+  edit(e.run(), e.section());
+  return true;
+}
+
 void PoincareTask::edit(RunSpec spec, SectionSettings settings) {
   const Eigen::VectorXd from = lastState();
   const double t = last_ ? last_->time : 0.0;      // no point yet: it starts again from its first point

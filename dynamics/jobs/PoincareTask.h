@@ -21,6 +21,8 @@ public:
   /// Only while the job does not run (Job::edit). Throws InputError, changing nothing, when the last point
   /// has no state under the new parameters (it lies outside the new region of allowed motion).
   void edit(RunSpec spec, SectionSettings settings);
+  /// Goes on from its last point, completed on the new level.
+  bool edit(const TaskEdit& e) override;
   const RunSpec& spec() const { return spec_; }
   const SectionSettings& settings() const { return settings_; }
   /// The points as they come (thread-safe). Bounded: a job whose points nobody takes pauses at

@@ -6,6 +6,30 @@
 
 namespace rv {
 
+struct RunSpec;
+struct SectionSettings;
+struct MapTaskSpec;
+struct ContinuationSettings;
+struct SeparatrixSettings;
+struct BifurcationTreeSettings;
+
+/// Edit properties (manual §2.1): the values of an edited scene as each kind of tool reads them (the scenes
+/// layer builds one from a scene; dynamics does not see scenes).
+class TaskEdit {
+public:
+  virtual ~TaskEdit() = default;
+  /// Problem and method.
+  virtual RunSpec run() const = 0;
+  virtual SectionSettings section() const = 0;
+  /// The fixed-point family's start: run, section of the map's order, search settings and guess.
+  virtual MapTaskSpec mapTask() const = 0;
+  virtual ContinuationSettings continuation() const = 0;
+  virtual SeparatrixSettings separatrix() const = 0;
+  virtual BifurcationTreeSettings bifurcationTree() const = 0;
+  /// The whole scene document as JSON text, for tasks that compute from a scene (charts).
+  virtual std::string document() const = 0;
+};
+
 class Task {
 public:
   virtual ~Task() = default;
@@ -18,6 +42,10 @@ public:
   virtual bool run(const ToolControl& control) = 0;
   /// Back to the beginning (for restart).
   virtual void reset() = 0;
+  /// Takes an edit's values while stopped: returns true when it goes on from its stop point with them, false
+  /// when it starts again. Throws InputError when the tool takes no new values (the default) or cannot take
+  /// these.
+  virtual bool edit(const TaskEdit& edit);
 };
 
 } // namespace rv

@@ -61,12 +61,11 @@ void TrajectoryStream::run() {
       pending_.states.push_back(integ.state());
     }
     if (dir * (integ.time() - target) >= 0) {
-      if (target == integ.time())
-        x = integ.state();
-      else if (dir * (target - integ.previousTime()) >= 0)
+      if (target != integ.time() && dir * (target - integ.previousTime()) >= 0)
         integ.interpolate(target, x);
-      else
-        x = integ.state(); // a target behind the last step (time went back): show where we are
+      else // the step ends at the target, or the target is behind the last step (time went back): show where
+           // we are
+        x = integ.state();
       std::lock_guard lock(mutex_);
       pending_.reached = true;
       pending_.atTime = target;

@@ -45,7 +45,7 @@ std::vector<ParameterSpec> fieldParameters() {
 }
 
 Eigen::Vector3d principalMoments(const ParameterValues& p) {
-  const Eigen::Vector3d I(p["I1"], p["I2"], p["I3"]);
+  Eigen::Vector3d I(p["I1"], p["I2"], p["I3"]);
   for (int i = 0; i < 3; ++i)
     if (!(I[i] > 0)) throw InputError("I" + std::to_string(i + 1) + ": a moment of inertia must be positive");
   for (int i = 0; i < 3; ++i)

@@ -41,7 +41,8 @@ Eigen::Matrix3d rotation(const double* x) {
   return Q;
 }
 
-std::vector<Observable> kinematicObservables(VectorOf omega, VectorOf momentum, VectorOf velocity) {
+std::vector<Observable> kinematicObservables(const VectorOf& omega, const VectorOf& momentum,
+                                             const VectorOf& velocity) {
   std::vector<Observable> obs;
   const auto add = [&](std::string id, std::string what, std::function<double(double, const double*)> f) {
     obs.push_back({std::move(id), std::move(what), std::move(f)});

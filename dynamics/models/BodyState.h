@@ -33,6 +33,7 @@ using VectorOf = std::function<Eigen::Vector3d(const double* x)>;
 /// omega1..3; Andoyer-Deprit G, L, l, g, L/G, H/G of `momentum` (M, or M + K with a gyrostat); Euler angles
 /// theta, phi, psi; RabsX, RabsY; Vx, Vy (from `velocity`, the centre's velocity in the body frame);
 /// Lplane, Lbody, Ldiff.
-std::vector<Observable> kinematicObservables(VectorOf omega, VectorOf momentum, VectorOf velocity);
+std::vector<Observable> kinematicObservables(const VectorOf& omega, const VectorOf& momentum,
+                                             const VectorOf& velocity);
 
 } // namespace rv::body_state

@@ -200,7 +200,7 @@ std::pair<double, double> ChaplyginBifurcationSet::tauRange(double c) const {
 std::vector<DiagramBranch>
 ChaplyginBifurcationSet::sigmaBranches(const std::vector<double>& poles, double nScale,
                                        const std::string& what,
-                                       std::function<std::vector<DiagramPoint>(double)> points) const {
+                                       const std::function<std::vector<DiagramPoint>(double)>& points) const {
   // lambda intervals between the poles; the outer ones run to +-L, where sigma is within a few per cent of
   // T0 (it tends to T0 as lambda -> +-inf)
   const double L = 20 * j().maxCoeff();
@@ -245,7 +245,7 @@ ChaplyginBifurcationSet::sigmaBranches(const std::vector<double>& poles, double 
 
 std::vector<Diagram>
 ChaplyginBifurcationSet::diagrams(double c, double N, double nScale,
-                                  std::function<Integrals(const double*)> integrals) const {
+                                  const std::function<Integrals(const double*)>& integrals) const {
   const double K2 = K_.squaredNorm();
   const ChaplyginBifurcationSet set = *this; // the branches outlive this object: they keep a copy
   const auto pointBranch = [](std::string id, std::string description, std::optional<DiagramPoint> p) {

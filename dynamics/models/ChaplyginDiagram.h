@@ -79,12 +79,12 @@ public:
   /// default ranges: sigma's lambda ranges stop near the poles, about n = 2 nScale, and rays run over nScale.
   /// The branches keep a copy of this object.
   std::vector<Diagram> diagrams(double c, double diagramN, double nScale,
-                                std::function<Integrals(const double* x)> integrals) const;
+                                const std::function<Integrals(const double* x)>& integrals) const;
 
 private:
-  std::vector<DiagramBranch> sigmaBranches(const std::vector<double>& poles, double nScale,
-                                           const std::string& what,
-                                           std::function<std::vector<DiagramPoint>(double)> points) const;
+  std::vector<DiagramBranch>
+  sigmaBranches(const std::vector<double>& poles, double nScale, const std::string& what,
+                const std::function<std::vector<DiagramPoint>(double)>& points) const;
   Eigen::Vector3d I_, K_;
   double D_;
 };

@@ -13,7 +13,8 @@ public:
   static const ModelInfo& staticInfo();
 
   template <class S> void field(const Vec<S>& s, Vec<S>& ds) const {
-    const S x = s[0], y = s[1];
+    const S& x = s[0];
+    const S& y = s[1];
     ds[0] = s[2];
     ds[1] = s[3];
     ds[2] = -x - 2.0 * x * y;

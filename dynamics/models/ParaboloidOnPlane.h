@@ -17,7 +17,8 @@ public:
                  -h_ + (p_ * g[0] * g[0] + q_ * g[1] * g[1]) / (2 * g[2] * g[2]));
   }
   template <class S> V3<S> contactRate(const V3<S>& g, const V3<S>& dg) const {
-    const S g3 = g[2], g32 = g3 * g3;
+    const S& g3 = g[2];
+    const S g32 = g3 * g3;
     return V3<S>(-p_ * (dg[0] * g3 - g[0] * dg[2]) / g32, -q_ * (dg[1] * g3 - g[1] * dg[2]) / g32,
                  (p_ * g[0] * dg[0] + q_ * g[1] * dg[1]) / g32 -
                      (p_ * g[0] * g[0] + q_ * g[1] * g[1]) * dg[2] / (g32 * g3));

@@ -164,7 +164,7 @@ void advanceTo(Integrator& integ, const Model& m, double t, Eigen::VectorXd& out
 
 LyapunovRun::LyapunovRun(const Model& model, IntegratorFactory makeIntegrator, const Eigen::VectorXd& x0,
                          LyapunovSettings settings)
-    : model_(model), make_(std::move(makeIntegrator)), s_(std::move(settings)) {
+    : model_(model), make_(std::move(makeIntegrator)), s_(settings) {
   m_ = model.info().coreDimension, n_ = model.dimension();
   k_ = s_.count > 0 ? s_.count : m_;
   if (k_ > m_)
@@ -199,9 +199,9 @@ void LyapunovRun::startAll(double t0) {
   };
   integs_.clear();
   if (tangent_) {
-    state_.resize(n_ + m_ * k_);
+    state_.resize(n_ + static_cast<Eigen::Index>(m_) * k_);
     state_.head(n_) = x_;
-    state_.tail(m_ * k_) = Eigen::Map<const Eigen::VectorXd>(V_.data(), m_ * k_);
+    state_.tail(static_cast<Eigen::Index>(m_) * k_) = Eigen::Map<const Eigen::VectorXd>(V_.data(), V_.size());
     integs_.push_back(fresh());
     integs_.back()->start(*tangent_, t0, state_);
   } else {

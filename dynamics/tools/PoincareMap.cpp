@@ -6,6 +6,86 @@
 
 namespace rv {
 
+const ParameterTable& poincareTable() {
+  static const ParameterTable t{
+      {.id = "value", .label = "Section value", .defaultValue = 0, .description = "the level of the section"},
+      {.id = "direction",
+       .label = "Direction",
+       .defaultValue = 0,
+       .min = 0,
+       .max = 2,
+       .description = "the crossings kept: the observable increasing, decreasing, or both",
+       .integer = true,
+       .choices = {"positive", "negative", "both"}},
+      {.id = "points",
+       .label = "Number of points",
+       .defaultValue = 2000,
+       .min = 1,
+       .max = 1e15,
+       .description = "how many points a headless map or a chart computes",
+       .integer = true},
+      {.id = "accuracy",
+       .label = "Accuracy",
+       .defaultValue = 1e-12,
+       .min = 1e-300,
+       .max = 1,
+       .description = "of the crossing time (Newton on the dense output)"},
+      {.id = "integrate",
+       .label = "Integrate",
+       .defaultValue = 0,
+       .min = 0,
+       .max = 1,
+       .description = "forward or backward in time",
+       .integer = true,
+       .choices = {"forward", "backward"}},
+      {.id = "many_sheeted",
+       .label = "Many-sheeted",
+       .defaultValue = 0,
+       .min = 0,
+       .max = 1,
+       .description = "keep only the points on the sheet `root` of the completion",
+       .integer = true,
+       .choices = {"no", "yes"}},
+      {.id = "root",
+       .label = "Root",
+       .defaultValue = 1,
+       .min = 1,
+       .max = 1e6,
+       .description = "the sheet kept in many-sheeted mode (1: the smallest root)",
+       .integer = true},
+      {.id = "order",
+       .label = "Order",
+       .defaultValue = 1,
+       .min = 1,
+       .max = 1e6,
+       .description = "keep every order-th crossing (the map to this power)",
+       .integer = true},
+      {.id = "max_time",
+       .label = "Max. time",
+       .defaultValue = 1e300,
+       .min = 1e-300,
+       .max = 1e300,
+       .description = "stop integrating at this time"},
+  };
+  return t;
+}
+
+SectionSettings poincareSettings(const ParameterValues& v, std::string observable) {
+  SectionSettings s;
+  s.observable = std::move(observable);
+  s.value = v["value"];
+  s.checkDirection = v.choice("direction") != "both";
+  s.direction = v.choice("direction") == "negative" ? -1 : +1;
+  s.maxPoints = static_cast<long>(v["points"]);
+  s.accuracy = v["accuracy"];
+  s.backward = v.choice("integrate") == "backward";
+  s.manySheeted = v.choice("many_sheeted") == "yes";
+  s.root = static_cast<int>(v["root"]);
+  s.order = static_cast<int>(v["order"]);
+  s.maxTime = v["max_time"];
+  return s;
+}
+
 PoincareMap::PoincareMap(const Model& model, std::unique_ptr<Integrator> integrator, SectionSettings settings)
     : model_(model), integ_(std::move(integrator)), s_(std::move(settings)) {
   if (s_.order < 1) throw InputError("poincare: the map order must be at least 1");

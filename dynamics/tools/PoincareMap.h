@@ -4,6 +4,7 @@
 // falsi (Dowell & Jarratt, BIT 11 (1971) 168) to the requested accuracy in time. For an explicit map every
 // iterate is a point.
 #pragma once
+#include "dynamics/core/ParameterTable.h"
 #include "dynamics/integrators/Integrator.h"
 #include "dynamics/tools/ToolControl.h"
 
@@ -28,6 +29,12 @@ struct SectionSettings {
   long maxPoints = 0;     ///< 0: no limit
   double maxTime = 1e300; ///< stop integrating at this time
 };
+
+/// The scene section "poincare": its numbers and choices (the one declaration of their defaults; the
+/// section's observable is the text key "section").
+const ParameterTable& poincareTable();
+/// The settings from the table's values and the section's observable (empty: the model's default).
+SectionSettings poincareSettings(const ParameterValues& v, std::string observable);
 
 struct MapPoint {
   std::vector<double> coordinates;

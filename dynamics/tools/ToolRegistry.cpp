@@ -2,12 +2,14 @@
 
 #include "dynamics/core/Errors.h"
 #include "dynamics/tools/Megno.h"
+#include "dynamics/tools/PoincareMap.h"
 #include "dynamics/tools/ToolSettings.h"
 
 namespace rv {
 
 const std::vector<ToolSection>& toolSections() {
   static const std::vector<ToolSection> s{
+      {"poincare", "Poincaré map", &poincareTable()},
       {"fixedpoint", "Fixed point finding", &fixedPointTable()},
       {"continuation", "Fixed point continuation", &continuationTable()},
       {"separatrix", "Separatrix", &separatrixTable()},
@@ -39,7 +41,8 @@ const ToolRegistry& ToolRegistry::builtin() {
          .outputs = {{"<map coordinates>", "the point on the section"},
                      {"t", "the time of the crossing"},
                      {"sheet", "the root of the completion the point lies on"}},
-         .reference = "manual §2.3.1"});
+         .reference = "manual §2.3.1",
+         .computation = "dynamics/tools/PoincareMap.h (PoincareMap); as a job dynamics/jobs/PoincareTask.h"});
     add({.id = "spectrum",
          .title = "Fourier spectrum",
          .parent = "poincare",
@@ -50,7 +53,8 @@ const ToolRegistry& ToolRegistry::builtin() {
          .outputs = {{"frequency", "CSV column"},
                      {"amplitude", "CSV column"},
                      {"peaks", "JSON: the largest peaks"}},
-         .reference = "manual §2.3.2; FFTW"});
+         .reference = "manual §2.3.2; FFTW",
+         .computation = "dynamics/tools/FourierSpectrum.h (fourierSpectrum)"});
     add({.id = "lyapunov",
          .title = "Lyapunov exponents",
          .parent = "poincare",
@@ -62,7 +66,8 @@ const ToolRegistry& ToolRegistry::builtin() {
                      {"sum", "their sum (0 for a measure-preserving flow)"},
                      {"time", "the time reached"},
                      {"converged", "whether the stopping rule held"}},
-         .reference = "Benettin, Galgani, Giorgilli, Strelcyn, Meccanica 15 (1980) 9-30"});
+         .reference = "Benettin, Galgani, Giorgilli, Strelcyn, Meccanica 15 (1980) 9-30",
+         .computation = "dynamics/tools/Lyapunov.h (LyapunovRun)"});
     add({.id = "megno",
          .title = "MEGNO and FLI",
          .parent = "poincare",
@@ -77,14 +82,16 @@ const ToolRegistry& ToolRegistry::builtin() {
                      {"y", "Y, the instantaneous MEGNO at the end"},
                      {"fli", "ln |w(t)|, the fast Lyapunov indicator"},
                      {"time", "the time reached"}},
-         .reference = "Cincotta & Simo, A&AS 147 (2000) 205; Froeschle, Lega & Gonczi, CeMDA 67 (1997) 41"});
+         .reference = "Cincotta & Simo, A&AS 147 (2000) 205; Froeschle, Lega & Gonczi, CeMDA 67 (1997) 41",
+         .computation = "dynamics/tools/Megno.h (MegnoRun)"});
     add({.id = "map3d",
          .title = "Map3D",
          .parent = "poincare",
          .description = "the map in three dimensions (a chart window)",
          .chartView = "map3d",
          .outputs = {{"<three coordinates>", "the points in space"}},
-         .reference = "manual §2.3.1"});
+         .reference = "manual §2.3.1",
+         .computation = "dynamics/tools/PoincareMap.h (PoincareMap)"});
     add({.id = "plot",
          .title = "2D / 3D plot",
          .parent = "poincare",
@@ -94,7 +101,8 @@ const ToolRegistry& ToolRegistry::builtin() {
          .section = "plot",
          .chartView = "plot",
          .outputs = {{"<plot.x, plot.y[, plot.z]>", "the observables at each output"}},
-         .reference = "manual §2.4.1-§2.4.2"});
+         .reference = "manual §2.4.1-§2.4.2",
+         .computation = "dynamics/tools/PlotFilter.h (PlotSampler); live: dynamics/jobs/PlotTap.h"});
     add({.id = "fixedpoint",
          .title = "Fixed points",
          .description = "Newton (or gradient) search from fixedpoint.guess; its type and multipliers",
@@ -104,7 +112,9 @@ const ToolRegistry& ToolRegistry::builtin() {
                      {"type", "elliptic, hyperbolic, ..."},
                      {"multipliers", "the eigenvalues of D(Map^n)"},
                      {"residual", "|Map^n(x) - x|"}},
-         .reference = "manual §2.3.4"});
+         .reference = "manual §2.3.4",
+         .computation =
+             "dynamics/tools/FixedPoint.h (findFixedPoint); as a job dynamics/jobs/FixedPointTasks.h"});
     add({.id = "continuation",
          .title = "Continuation",
          .parent = "fixedpoint",
@@ -116,14 +126,17 @@ const ToolRegistry& ToolRegistry::builtin() {
                      {"<map coordinates>", "the fixed point"},
                      {"type", "its type"},
                      {"changes", "JSON: where the type changes"}},
-         .reference = "manual §2.3.5"});
+         .reference = "manual §2.3.5",
+         .computation =
+             "dynamics/tools/Continuation.h (Continuation); as a job dynamics/jobs/FixedPointTasks.h"});
     add({.id = "multipliers",
          .title = "Multipliers",
          .parent = "continuation",
          .description = "the multipliers of the continued fixed point on the complex plane",
          .chartView = "multipliers",
          .outputs = {{"Re, Im", "each multiplier"}},
-         .reference = "manual §2.4.3"});
+         .reference = "manual §2.4.3",
+         .computation = "dynamics/tools/Continuation.h (Continuation)"});
     add({.id = "separatrix",
          .title = "Separatrices",
          .parent = "fixedpoint",
@@ -131,7 +144,9 @@ const ToolRegistry& ToolRegistry::builtin() {
          .section = "separatrix",
          .command = "separatrix",
          .outputs = {{"branch", "1..4"}, {"<map coordinates>", "the points of the branch"}},
-         .reference = "manual §2.3.6"});
+         .reference = "manual §2.3.6",
+         .computation =
+             "dynamics/tools/Separatrix.h (growSeparatrix); as a job dynamics/jobs/FixedPointTasks.h"});
     add({.id = "bifurcation_tree",
          .title = "Bifurcation tree",
          .parent = "fixedpoint",
@@ -139,7 +154,9 @@ const ToolRegistry& ToolRegistry::builtin() {
          .section = "bifurcation_tree",
          .command = "bifurcation-tree",
          .outputs = {{"level, order, parameter", "each doubling"}, {"ratios", "JSON: the Feigenbaum ratios"}},
-         .reference = "manual §2.3.7"});
+         .reference = "manual §2.3.7",
+         .computation =
+             "dynamics/tools/BifurcationTree.h (bifurcationTree); as a job dynamics/jobs/FixedPointTasks.h"});
     add({.id = "surface",
          .title = "Surface |Map(x) - x|",
          .description = "on the grid section's rectangle (a chart window)",
@@ -147,7 +164,8 @@ const ToolRegistry& ToolRegistry::builtin() {
          .command = "surface",
          .chartView = "surface",
          .outputs = {{"<grid coordinates>", "the cell"}, {"value", "|Map(x) - x|"}},
-         .reference = "manual §2.3.8"});
+         .reference = "manual §2.3.8",
+         .computation = "dynamics/tools/MapGrid.h (MapGrid)"});
     add({.id = "ram",
          .title = "Region of allowed motion",
          .description = "on the grid section's rectangle (a chart window)",
@@ -155,7 +173,8 @@ const ToolRegistry& ToolRegistry::builtin() {
          .command = "ram",
          .chartView = "ram",
          .outputs = {{"<grid coordinates>", "the cell"}, {"value", "1 where motion is allowed"}},
-         .reference = "manual §2.3.9"});
+         .reference = "manual §2.3.9",
+         .computation = "dynamics/tools/MapGrid.h (MapGrid)"});
     add({.id = "diagram",
          .title = "Topological analysis",
          .description = "the bifurcation diagram on the plane of first integrals",
@@ -163,7 +182,9 @@ const ToolRegistry& ToolRegistry::builtin() {
          .chartView = "bifurcation",
          .outputs = {{"branch, parameter", "the curve and its parameter"},
                      {"<the diagram's axes>", "the point"}},
-         .reference = "manual §2.3.10"});
+         .reference = "manual §2.3.10",
+         .computation =
+             "dynamics/core/Diagram.h (each model's diagrams(), e.g. dynamics/models/ChaplyginDiagram.h)"});
     return t;
   }();
   return r;

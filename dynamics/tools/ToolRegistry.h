@@ -35,7 +35,8 @@ struct ToolEntry {
   std::string command;     ///< the `rollviz` subcommand that runs it headless ("" when none)
   std::string chartView;   ///< the `rollviz chart --view` that draws it ("" when none)
   std::vector<ToolOutput> outputs;
-  std::string reference; ///< the paper behind it
+  std::string reference;   ///< the paper behind it
+  std::string computation; ///< where the computation is defined: "dynamics/tools/Megno.h (MegnoRun)"
 };
 
 /// All tools, in the order of the manual's tree (a parent before its children).

@@ -30,7 +30,7 @@ Rgb seriesColor(int i) {
   return palette[i % 8];
 }
 
-PoincareChart::PoincareChart(std::string xTitle, std::string yTitle) {
+PoincareChart::PoincareChart(const std::string& xTitle, const std::string& yTitle) {
   view_ = vtkSmartPointer<vtkContextView>::New();
   view_->GetRenderer()->SetBackground(1, 1, 1);
   chart_ = vtkSmartPointer<vtkChartXY>::New();
@@ -157,7 +157,8 @@ void PoincareChart::addImage(int nx, int ny, double x0, double dx, double y0, do
   vtkNew<vtkDoubleArray> scalars;
   scalars->SetNumberOfValues(static_cast<vtkIdType>(nx) * ny);
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-  for (std::size_t i = 0; i < values.size() && i < static_cast<std::size_t>(scalars->GetNumberOfValues()); ++i) {
+  for (std::size_t i = 0; i < values.size() && i < static_cast<std::size_t>(scalars->GetNumberOfValues());
+       ++i) {
     scalars->SetValue(static_cast<vtkIdType>(i), values[i]);
     if (std::isfinite(values[i])) lo = std::min(lo, values[i]), hi = std::max(hi, values[i]);
   }

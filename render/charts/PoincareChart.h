@@ -20,7 +20,7 @@ namespace rv {
 
 class PoincareChart final : public Chart {
 public:
-  PoincareChart(std::string xTitle, std::string yTitle);
+  PoincareChart(const std::string& xTitle, const std::string& yTitle);
   ~PoincareChart() override;
   /// Series with more points than this are thinned to what the screen can show (see LargeSeries): drawing
   /// 10^5 markers costs ~100 ms on software GL, thinning them a few.

@@ -392,6 +392,9 @@ class Cli(unittest.TestCase):
             command = [l.split("rollviz ", 1)[1] for l in lines if l.strip().startswith("command: rollviz")]
             view = [l.split("--view ", 1)[1] for l in lines if l.strip().startswith("chart: rollviz chart")]
             self.assertTrue(command or view, tool + " runs nowhere")
+            where = [l.split(": ", 1)[1] for l in lines if l.strip().startswith("computation:")]
+            self.assertEqual(len(where), 1, tool)
+            self.assertTrue(os.path.exists(os.path.join(SRC, where[0].split()[0])), where[0])
             for c in command:
                 self.assertEqual(run(c, "--help").returncode, 0, c)
             for v in view:

@@ -17,6 +17,7 @@ TEST(ToolRegistry, EveryEntryIsCompleteAndItsParentComesFirst) {
     EXPECT_FALSE(e.description.empty());
     EXPECT_FALSE(e.reference.empty());
     EXPECT_FALSE(e.outputs.empty());
+    EXPECT_EQ(e.computation.rfind("dynamics/", 0), 0u) << e.computation;
     EXPECT_FALSE(e.command.empty() && e.chartView.empty()) << "runs nowhere";
     if (!e.parent.empty()) {
       EXPECT_TRUE(seen.count(e.parent)) << "parent " << e.parent << " not before it";
