@@ -7,19 +7,20 @@
 
 namespace rv {
 
-ChartTask::ChartTask(nlohmann::json document, std::string source, std::string view, std::string diagram)
+ChartTask::ChartTask(const nlohmann::json& document, std::string source, std::string view,
+                     std::string diagram)
     : source_(std::move(source)), view_(std::move(view)), diagram_(std::move(diagram)) {
-  edit(std::move(document));
+  edit(document);
 }
 
 std::string ChartTask::name() const {
   return chartTitle(view_) + (diagram_.empty() ? "" : " " + diagram_);
 }
 
-void ChartTask::edit(nlohmann::json document) {
-  // validated now (bad input is reported to whoever edits), described as the map's tools are
-  describe_ = sceneFromJson(document, source_).runSpec().describe();
-  document_ = std::move(document);
+void ChartTask::edit(const nlohmann::json& document) {
+  // parsed and validated once, now (bad input is reported to whoever edits); every run computes from it
+  scene_ = sceneFromJson(document, source_);
+  describe_ = scene_.runSpec().describe();
 }
 
 bool ChartTask::edit(const TaskEdit& e) {
@@ -28,10 +29,9 @@ bool ChartTask::edit(const TaskEdit& e) {
 }
 
 bool ChartTask::run(const ToolControl& control) {
-  const Scene scene = sceneFromJson(document_, source_);
   std::shared_ptr<Chart> chart;
   try {
-    chart = sceneChart(scene, view_, control, 0, diagram_);
+    chart = sceneChart(scene_, view_, control, 0, diagram_);
   } catch (const Stopped&) {
     return false;
   }

@@ -6,6 +6,7 @@
 #pragma once
 #include "dynamics/jobs/Task.h"
 #include "render/charts/Chart.h"
+#include "scenes/Scene.h"
 
 #include <memory>
 #include <mutex>
@@ -18,7 +19,7 @@ class ChartTask final : public Task {
 public:
   /// `document` is the scene after its edits; `source` names it in messages; `diagram` picks the bifurcation
   /// view's diagram (empty: the problem's first).
-  ChartTask(nlohmann::json document, std::string source, std::string view, std::string diagram = "");
+  ChartTask(const nlohmann::json& document, std::string source, std::string view, std::string diagram = "");
   std::string name() const override;
   std::string describe() const override { return describe_; }
   /// Computes the chart; false when stopped on request (a partial chart may be kept). Throws InputError or
@@ -26,7 +27,7 @@ public:
   bool run(const ToolControl& control) override;
   void reset() override;
   /// Takes a new scene document (the control panel's values); the next run computes with it.
-  void edit(nlohmann::json document);
+  void edit(const nlohmann::json& document);
   /// Edit properties: the edited scene's document; the chart is computed again (returns false).
   bool edit(const TaskEdit& e) override;
 
@@ -39,8 +40,9 @@ public:
   int completed() const;
 
 private:
-  nlohmann::json document_;
   std::string source_, view_, diagram_, describe_;
+  Scene
+      scene_; ///< parsed once per edit; read by run() only while the job runs, changed only while it does not
   mutable std::mutex mutex_;
   std::shared_ptr<Chart> chart_;
   int completed_ = 0;

@@ -67,9 +67,9 @@ void onlyKeys(const json& j, const Where& w, std::initializer_list<const char*> 
 // fills a parameter table's values from a JSON object, skipping the keys in `skip`; a choice takes its name
 // (or true/false for no/yes)
 void readParameters(const json& j, const Where& w, ParameterValues& values,
-                    std::initializer_list<const char*> skip = {}) {
+                    const std::vector<std::string>& skip = {}) {
   for (const auto& [k, v] : j.items()) {
-    if (std::any_of(skip.begin(), skip.end(), [&key = k](const char* s) { return key == s; })) continue;
+    if (std::find(skip.begin(), skip.end(), k) != skip.end()) continue;
     if (values.table().find(k) < 0) {
       std::string known;
       for (const auto& s : values.table().specs())
@@ -326,36 +326,53 @@ Eigen::VectorXd readInitial(const json& j, const Where& w, const Model& model,
   return model.stateFromMap(point, spec, wm.str());
 }
 
-// the fixed-point family's sections: numbers and choices from their tables, plus a few non-numeric keys
+// The keys of the tool sections that are no numbers of their tables: the section each belongs to, what a
+// misplaced one is told, and how it is read.
+struct TextKey {
+  const char* key;
+  const char* section;
+  const char* misplaced;
+  void (*read)(const json& j, const Where& w, Scene& scene);
+};
+const TextKey textKeys[] = {
+    {"section", "poincare", "",
+     [](const json& j, const Where& w, Scene& scene) { scene.poincare.observable = text(j, w); }},
+    {"guess", "fixedpoint", "the guess belongs to the \"fixedpoint\" section",
+     [](const json& j, const Where& w, Scene& scene) {
+       if (!j.is_array()) w.fail("expected an array of numbers");
+       for (std::size_t i = 0; i < j.size(); ++i)
+         scene.guess.push_back(number(j[i], w / std::to_string(i)));
+     }},
+    {"parameter", "continuation", "belongs to the \"continuation\" section",
+     [](const json& j, const Where& w, Scene& scene) {
+       scene.continuationParameter = text(j, w);
+       if (scene.model->info().parameters.find(scene.continuationParameter) < 0)
+         w.fail("not a parameter of " + scene.model->info().id);
+     }},
+    {"to", "continuation", "belongs to the \"continuation\" section",
+     [](const json& j, const Where& w, Scene& scene) { scene.continuationTo = number(j, w); }},
+};
+
+// the tool sections: numbers and choices from their tables, plus the text keys above
 void readToolSections(const json& doc, const Where& root, Scene& scene) {
   for (const auto& section : toolSections()) {
     auto values = std::make_shared<ParameterValues>(*section.table);
     if (doc.contains(section.key)) {
       const Where w = root / section.key;
       const json& j = requireObject(doc[section.key], w);
-      if (section.key == "poincare") { // its observable is a name
-        readParameters(j, w, *values, {"section"});
-        if (j.contains("section")) scene.poincare.observable = text(j["section"], w / "section");
-        scene.tools.emplace(section.key, std::move(values));
-        continue;
-      }
-      readParameters(j, w, *values, {"guess", "parameter", "to"});
-      if (section.key == "fixedpoint" && j.contains("guess")) {
-        if (!j["guess"].is_array()) (w / "guess").fail("expected an array of numbers");
-        for (std::size_t i = 0; i < j["guess"].size(); ++i)
-          scene.guess.push_back(number(j["guess"][i], w / "guess" / std::to_string(i)));
-      } else if (j.contains("guess")) {
-        (w / "guess").fail("the guess belongs to the \"fixedpoint\" section");
-      }
-      if (section.key == "continuation") {
-        if (j.contains("parameter")) {
-          scene.continuationParameter = text(j["parameter"], w / "parameter");
-          if (scene.model->info().parameters.find(scene.continuationParameter) < 0)
-            (w / "parameter").fail("not a parameter of " + scene.model->info().id);
-        }
-        if (j.contains("to")) scene.continuationTo = number(j["to"], w / "to");
-      } else if (j.contains("parameter") || j.contains("to")) {
-        (w / (j.contains("to") ? "to" : "parameter")).fail("belongs to the \"continuation\" section");
+      // a table's own number of the same name wins (fixedpoint.section); a text key elsewhere is told where
+      // it belongs, or is unknown there
+      const auto applies = [&](const TextKey& t) {
+        return section.table->find(t.key) < 0 && (section.key == t.section || *t.misplaced);
+      };
+      std::vector<std::string> text;
+      for (const auto& t : textKeys)
+        if (applies(t)) text.emplace_back(t.key);
+      readParameters(j, w, *values, text);
+      for (const auto& t : textKeys) {
+        if (!j.contains(t.key) || !applies(t)) continue;
+        if (section.key != t.section) (w / t.key).fail(t.misplaced);
+        t.read(j[t.key], w / t.key, scene);
       }
     }
     scene.tools.emplace(section.key, std::move(values));

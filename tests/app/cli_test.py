@@ -473,23 +473,22 @@ class Cli(unittest.TestCase):
         self.assertFalse(os.path.exists(ck), "a completed run removes its checkpoint")
 
         lorenz = os.path.join(SRC, "scenes", "lorenz.json")
+
+        def killed_and_resumed(args, checkpoint):
+            """the JSON of a whole run and of one killed after its first save and resumed"""
+            whole = run(*args)
+            self.assertEqual(whole.returncode, 0, whole.stderr)
+            self.start_until_checkpoint([*args, "--checkpoint", checkpoint], checkpoint)
+            again = run(*args, "--checkpoint", checkpoint)
+            self.assertEqual(again.returncode, 0, again.stderr)
+            return json.loads(whole.stdout), json.loads(again.stdout)
+
+        whole, again = killed_and_resumed(["megno", lorenz, "--time", "20000", "--json"], self.path("megno.ck"))
+        self.assertEqual(whole, again)
         ck2 = self.path("lyap.ck")
         args = ["lyapunov", lorenz, "--time", "20000", "--json"]
-        whole = run(*args)
-        self.assertEqual(whole.returncode, 0, whole.stderr)
-        self.start_until_checkpoint([*args, "--checkpoint", ck2], ck2)
-        again = run(*args, "--checkpoint", ck2)
-        self.assertEqual(again.returncode, 0, again.stderr)
-        self.assertEqual(json.loads(whole.stdout)["exponents"], json.loads(again.stdout)["exponents"])
-
-        ck3 = self.path("megno.ck")
-        args = ["megno", lorenz, "--time", "20000", "--json"]
-        whole = run(*args)
-        self.assertEqual(whole.returncode, 0, whole.stderr)
-        self.start_until_checkpoint([*args, "--checkpoint", ck3], ck3)
-        again = run(*args, "--checkpoint", ck3)
-        self.assertEqual(again.returncode, 0, again.stderr)
-        self.assertEqual(json.loads(whole.stdout), json.loads(again.stdout))
+        whole, again = killed_and_resumed(args, ck2)
+        self.assertEqual(whole["exponents"], again["exponents"])
 
         # another run's checkpoint is refused, naming the flag
         self.start_until_checkpoint([*args, "--checkpoint", ck2], ck2)
