@@ -6,7 +6,8 @@ BUILD_PKGS=(cmake g++ pkg-config ninja-build ccache
   libvtk9-dev qt6-base-dev libqt6opengl6-dev libeigen3-dev
   libavcodec-dev libavformat-dev libswscale-dev libavutil-dev
   libegl-dev libgl1-mesa-dri libosmesa6-dev
-  nlohmann-json3-dev libcli11-dev libfmt-dev libfftw3-dev)
+  nlohmann-json3-dev libcli11-dev libfmt-dev libfftw3-dev
+  libopenmpi-dev openmpi-bin)
 TEST_PKGS=(libgtest-dev libgmock-dev libbenchmark-dev libboost-dev
   xvfb xauth xdotool x11-apps ffmpeg python3 python3-numpy python3-pil
   clang-14 libfuzzer-14-dev clang-tidy)

@@ -41,7 +41,8 @@ int runCli(int argc, char** argv, const GuiLauncher& gui) {
       addMegnoCommand(app),     addSpectrumCommand(app),   addFixedPointCommand(app),
       addContinueCommand(app),  addSeparatrixCommand(app), addBifurcationTreeCommand(app),
       addSurfaceCommand(app),   addRamCommand(app),        addDiagramCommand(app),
-      addRenderCommand(app),    addVideoCommand(app),      addChartCommand(app)};
+      addRenderCommand(app),    addVideoCommand(app),      addChartCommand(app),
+      addSweepCommand(app)};
   GuiOptions guiOptions;
   if (gui) {
     auto* cmd = app.add_subcommand("gui", "open the GUI on a scene (the default with no arguments)");

@@ -49,5 +49,6 @@ Command addBifurcationTreeCommand(CLI::App& app);
 Command addSurfaceCommand(CLI::App& app);
 Command addRamCommand(CLI::App& app);
 Command addDiagramCommand(CLI::App& app);
+Command addSweepCommand(CLI::App& app);
 
 } // namespace rv

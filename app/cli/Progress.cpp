@@ -32,12 +32,17 @@ Progress::~Progress() {
 }
 
 void Progress::update(double fraction) {
+  update(fraction, {});
+}
+
+void Progress::update(double fraction, const std::string& detail) {
   if (!tty_) return;
   const int pct = static_cast<int>(fraction * 100);
   const auto now = std::chrono::steady_clock::now();
-  if (pct == last_ || now - shown_ < std::chrono::milliseconds(200)) return;
+  if ((pct == last_ && detail.empty()) || now - shown_ < std::chrono::milliseconds(200)) return;
   last_ = pct, shown_ = now;
-  std::fprintf(stderr, "\r%s: %3d%%", label_.c_str(), pct);
+  std::fprintf(stderr, "\r\033[K%s: %3d%%%s%s", label_.c_str(), pct, detail.empty() ? "" : "  ",
+               detail.c_str());
   std::fflush(stderr);
 }
 

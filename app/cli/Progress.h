@@ -17,6 +17,8 @@ public:
   explicit Progress(std::string label);
   ~Progress();
   void update(double fraction);
+  /// The same with a note after the percentage (e.g. "1200/3000 points, ETA 1m20s").
+  void update(double fraction, const std::string& detail);
 
 private:
   std::string label_;

@@ -50,6 +50,10 @@ std::vector<Observable> kinematicObservables(const VectorOf& omega, const Vector
   for (int i = 0; i < 3; ++i)
     add("omega" + std::to_string(i + 1), "angular velocity, body axis " + std::to_string(i + 1),
         [omega, i](double, const double* x) { return omega(x)[i]; });
+  add("omega_vertical", "spin about the vertical, omega . gamma (a rattleback's reversal changes its sign)",
+      [omega](double, const double* x) {
+        return omega(x).dot(Eigen::Vector3d(x[kGamma], x[kGamma + 1], x[kGamma + 2]));
+      });
   const auto ad = [momentum](const double* x) {
     return toAndoyerDeprit(momentum(x), Eigen::Vector3d(x[kGamma], x[kGamma + 1], x[kGamma + 2]));
   };

@@ -208,6 +208,20 @@ void PoincareChart::thinLargeSeries() {
   if (large_.empty()) return;
   vtkAxis* ax = chart_->GetAxis(vtkAxis::BOTTOM);
   vtkAxis* ay = chart_->GetAxis(vtkAxis::LEFT);
+  // the ranges this frame draws: fixed ones are the axes'; automatic ones follow the data, and the axes are
+  // only rescaled later in the frame (the first frame, all a headless picture has, would see the ranges of
+  // before the data and drop every point outside them)
+  std::array<double, 4> range{ax->GetMinimum(), ax->GetMaximum(), ay->GetMinimum(), ay->GetMaximum()};
+  const auto follow = [&](int axis, bool fixed) {
+    if (fixed) return;
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (const auto& s : large_)
+      for (double v : axis == 0 ? s.x : s.y)
+        if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
+    if (hi > lo) range[2 * axis] = lo, range[2 * axis + 1] = hi;
+  };
+  follow(0, ax->GetBehavior() == vtkAxis::FIXED);
+  follow(1, ay->GetBehavior() == vtkAxis::FIXED);
   const int* p1 = chart_->GetPoint1();
   const int* p2 = chart_->GetPoint2();
   int w = p2[0] - p1[0], h = p2[1] - p1[1];
@@ -215,8 +229,7 @@ void PoincareChart::thinLargeSeries() {
     const int* size = view_->GetRenderWindow()->GetSize();
     w = size[0], h = size[1];
   }
-  const std::array<double, 6> key = {ax->GetMinimum(), ax->GetMaximum(), ay->GetMinimum(),
-                                     ay->GetMaximum(), double(w),        double(h)};
+  const std::array<double, 6> key = {range[0], range[1], range[2], range[3], double(w), double(h)};
   if (key == thinnedFor_) return;
   thinnedFor_ = key;
   const double cell = std::max(1.0f, markerSize_ / 2); // pixels per cell: half a marker keeps the coverage

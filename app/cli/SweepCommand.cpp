@@ -1,0 +1,229 @@
+// SweepCommand.cpp -- `rollviz sweep SWEEP.json -o chart.csv [--png chart.png] [--threads N] [--checkpoint
+// FILE]`: a chart of regimes on threads, or under `mpirun -n N` on ranks (SweepMpi.h). Records go to a store
+// on disk as they finish (dynamics/jobs/SweepStore.h); the CSV is written from it in grid order when every
+// point is done, under a temporary name and renamed. With --checkpoint the store is kept when the run is
+// killed or stopped, and the next run with the same file computes only the points it lacks.
+#include "app/cli/Commands.h"
+#include "app/cli/Progress.h"
+#include "app/cli/SweepMpi.h"
+#include "dynamics/core/Errors.h"
+#include "dynamics/io/AtomicFile.h"
+#include "render/Snapshot.h"
+#include "render/charts/SweepChart.h"
+#include "render/context/HeadlessContext.h"
+#include "scenes/Sweep.h"
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fmt/core.h>
+#include <fstream>
+#include <memory>
+#include <thread>
+#include <unistd.h>
+#include <vtkRenderWindow.h>
+
+namespace rv {
+
+namespace {
+
+struct SweepOptions {
+  std::string sweep, output, png, size = "900x700", checkpoint;
+  int threads = 0;
+};
+
+std::string duration(double seconds) {
+  if (!std::isfinite(seconds) || seconds < 0) return "?";
+  const long s = std::lround(seconds);
+  if (s < 60) return fmt::format("{}s", s);
+  if (s < 3600) return fmt::format("{}m{:02}s", s / 60, s % 60);
+  return fmt::format("{}h{:02}m", s / 3600, (s % 3600) / 60);
+}
+
+SweepChartData chartData(const SweepSpec& spec) {
+  SweepChartData d;
+  d.title = spec.title;
+  for (std::size_t k = 0; k < spec.axes.size(); ++k) {
+    const SweepAxis& a = spec.axes[k];
+    d.axes.push_back(spec.axisLabel(k));
+    d.counts.push_back(a.count);
+    d.mins.push_back(a.min);
+    d.maxs.push_back(a.max);
+  }
+  d.columns = spec.columns;
+  d.orbit = spec.quantity->id == "orbit";
+  return d;
+}
+
+void writePngChart(const SweepChartData& data, const std::string& path, const std::string& size) {
+  const auto [w, h] = parseSize(size);
+  const auto chart = makeSweepChart(data);
+  auto ctx = createHeadlessContext(w, h);
+  chart->attach(ctx->window());
+  writePng(ctx->window(), path, "--png");
+}
+
+// the CSV (and the chart's values) from the store, in grid order
+void writeResults(const SweepSpec& spec, const SweepStore& store, const SweepOptions& o) {
+  AtomicFile csv(o.output, "-o");
+  std::FILE* f = std::fopen(csv.tempPath().c_str(), "w");
+  if (!f) throw InputError("-o " + o.output + ": cannot write");
+  SweepChartData data = chartData(spec);
+  const bool png = !o.png.empty();
+  std::string line;
+  for (const auto& h : sweepCsvHeader(spec))
+    line += (line.empty() ? "" : ",") + h;
+  std::fprintf(f, "%s\n", line.c_str());
+  for (long i = 0; i < spec.points(); ++i) {
+    const SweepRecord r = store.read(i);
+    std::fprintf(f, "%s\n", sweepCsvRow(spec, i, r).c_str());
+    if (png) data.values.insert(data.values.end(), r.values.begin(), r.values.end());
+  }
+  const bool ok = std::fflush(f) == 0 && ::fsync(fileno(f)) == 0;
+  std::fclose(f);
+  if (!ok) throw ComputationError(o.output + ": cannot write");
+  csv.commit();
+  if (png) writePngChart(data, o.png, o.size);
+}
+
+int runSweep(const SweepOptions& o) {
+  const MpiSession mpi;
+  const auto world = mpi.world();
+  const bool writer = !world || world->rank == 0;
+  if (o.threads < 0) throw InputError("--threads: must be at least 1");
+
+  // rank 0 reads and checks everything and opens the store, then hands the resolved sweep to the others
+  std::optional<SweepSpec> spec;
+  std::unique_ptr<SweepStore> opened;
+  std::string resolved;
+  const int remote = world ? world->size - 1 : 0;
+  const int threads = o.threads > 0 ? o.threads
+                      : world       ? 1
+                                    : static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
+  const bool keep = !o.checkpoint.empty();
+  if (writer) {
+    try {
+      spec = loadSweep(o.sweep);
+      checkWritable(o.output, "-o");
+      if (!o.png.empty()) {
+        checkWritable(o.png, "--png");
+        (void)parseSize(o.size);
+      }
+      resolved = spec->resolved.dump();
+      const std::string storePath =
+          keep ? o.checkpoint : fmt::format("{}.{}.sweep-part", o.output, ::getpid());
+      opened =
+          std::make_unique<SweepStore>(storePath, resolved, spec->points(),
+                                       static_cast<int>(spec->columns.size()), keep ? "--checkpoint" : "-o");
+    } catch (...) {
+      (void)mpi.broadcast({}); // the other ranks end too
+      throw;
+    }
+  }
+  resolved = mpi.broadcast(resolved);
+  if (resolved.empty()) return 2;
+  if (!writer) {
+    const SweepSpec s = sweepFromJson(nlohmann::json::parse(resolved), o.sweep);
+    workSweep(mpi, static_cast<int>(s.columns.size()), [&s](long i) { return evaluateSweepPoint(s, i, {}); });
+    return 0;
+  }
+
+  SweepStore& store = *opened;
+  struct Cleanup { // a run without --checkpoint leaves no store behind, whatever happens
+    SweepStore& store;
+    bool keep;
+    ~Cleanup() {
+      if (!keep) store.remove();
+    }
+  } cleanup{store, keep};
+
+  const long resumed = store.doneCount();
+  std::atomic<long> computed{0};
+  ChunkScheduler scheduler(store, threads + remote, static_cast<long>(spec->options->get("chunk")));
+  const auto evaluate = [&](long i, const ToolControl& c) {
+    SweepRecord r = evaluateSweepPoint(*spec, i, c);
+    ++computed;
+    return r;
+  };
+  Progress progress("sweep");
+  const auto start = std::chrono::steady_clock::now();
+  const auto report = [&] {
+    const long done = store.doneCount(), total = spec->points();
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const long now = done - resumed;
+    const double eta = now > 0 ? elapsed / now * (total - done) : NAN;
+    progress.update(static_cast<double>(done) / total,
+                    fmt::format("{}/{} points, ETA {}", done, total, duration(eta)));
+  };
+  ToolControl control;
+  control.stopRequested = [] { return interrupted(); };
+  control.progress = [&](double) { report(); };
+  double bytesPerPoint = 0;
+  if (remote > 0) {
+    // this rank computes on its threads while its main thread serves the others
+    ToolControl local;
+    local.stopRequested = [] { return interrupted(); };
+    std::exception_ptr failure;
+    std::thread computing([&] {
+      try {
+        runSweepThreads(store, scheduler, evaluate, threads, local);
+      } catch (...) {
+        failure = std::current_exception();
+      }
+    });
+    const SweepTraffic traffic = serveSweep(mpi, store, scheduler, [&] {
+      report();
+      return interrupted();
+    });
+    computed += traffic.records;
+    bytesPerPoint =
+        traffic.records > 0 ? static_cast<double>(traffic.bytes) / static_cast<double>(traffic.records) : 0;
+    computing.join();
+    if (failure) std::rethrow_exception(failure);
+  } else {
+    runSweepThreads(store, scheduler, evaluate, threads, control);
+  }
+  const bool complete = store.doneCount() == spec->points();
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  long failed = 0;
+  if (complete) {
+    writeResults(*spec, store, o);
+    for (long i = 0; i < spec->points(); ++i) // cheap next to the sweep: only the status bytes matter
+      failed += store.read(i).ok ? 0 : 1;
+  }
+  fmt::print(
+      stderr,
+      "sweep: {} points: {} computed now, {} from the checkpoint, {} failed; {:.3g} s on {} thread{}{}{}\n",
+      spec->points(), computed.load(), resumed, failed, seconds, threads, threads == 1 ? "" : "s",
+      remote > 0 ? fmt::format(" and {} more rank{}", remote, remote == 1 ? "" : "s") : "",
+      bytesPerPoint > 0 ? fmt::format(", {:.0f} bytes sent per point", bytesPerPoint) : "");
+  if (!complete) {
+    if (keep) fmt::print(stderr, "sweep: stopped; run again with --checkpoint {} to go on\n", o.checkpoint);
+    return 130;
+  }
+  if (keep) store.remove();
+  return 0;
+}
+
+} // namespace
+
+Command addSweepCommand(CLI::App& app) {
+  auto* cmd = app.add_subcommand(
+      "sweep",
+      "a chart of regimes: a tool's number over a grid of parameters or initial points (docs/sweeps.md); "
+      "runs on threads, or on ranks under mpirun");
+  auto o = std::make_shared<SweepOptions>();
+  cmd->add_option("sweep", o->sweep, "sweep file (JSON: scene, axes, quantity, set, options)")->required();
+  cmd->add_option("-o,--output", o->output, "CSV file: the axes, the quantity's columns, seconds, status")
+      ->required();
+  cmd->add_option("--png", o->png, "also draw the chart into this PNG");
+  cmd->add_option("--size", o->size, "chart size WIDTHxHEIGHT")->capture_default_str();
+  cmd->add_option("--threads", o->threads,
+                  "computing threads (default: every core; under mpirun, 1 per rank)");
+  cmd->add_option("--checkpoint", o->checkpoint,
+                  "keep finished points in FILE: a sweep killed and started again goes on from there");
+  return {cmd, [o] { return runSweep(*o); }};
+}
+
+} // namespace rv

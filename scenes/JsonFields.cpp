@@ -1,0 +1,79 @@
+#include "scenes/JsonFields.h"
+
+#include "dynamics/core/Errors.h"
+
+#include <algorithm>
+
+namespace rv {
+
+using nlohmann::json;
+
+void Where::fail(const std::string& reason) const {
+  throw InputError(str() + ": " + reason);
+}
+
+std::string shown(const json& j) {
+  return j.dump(-1, ' ', false, json::error_handler_t::replace);
+}
+
+const json& requireObject(const json& j, const Where& w) {
+  if (!j.is_object()) w.fail("expected an object");
+  return j;
+}
+
+double number(const json& j, const Where& w) {
+  if (!j.is_number()) w.fail("expected a number, got " + shown(j));
+  return j.get<double>();
+}
+
+std::string text(const json& j, const Where& w) {
+  if (!j.is_string()) w.fail("expected a string, got " + shown(j));
+  return j.get<std::string>();
+}
+
+bool boolean(const json& j, const Where& w) {
+  if (!j.is_boolean()) w.fail("expected true or false, got " + shown(j));
+  return j.get<bool>();
+}
+
+void onlyKeys(const json& j, const Where& w, std::initializer_list<const char*> keys) {
+  for (const auto& [k, v] : j.items()) {
+    bool ok = false;
+    for (const char* known : keys)
+      ok = ok || k == known;
+    if (!ok) {
+      std::string list;
+      for (const char* known : keys)
+        list += std::string(" ") + known;
+      (w / k).fail("unknown key (known:" + list + ")");
+    }
+  }
+}
+
+void readParameters(const json& j, const Where& w, ParameterValues& values,
+                    const std::vector<std::string>& skip) {
+  for (const auto& [k, v] : j.items()) {
+    if (std::find(skip.begin(), skip.end(), k) != skip.end()) continue;
+    if (values.table().find(k) < 0) {
+      std::string known;
+      for (const auto& s : values.table().specs())
+        known += " " + s.id;
+      (w / k).fail("unknown parameter (known:" + known + ")");
+    }
+    try {
+      const auto& choices = values.table().specs()[values.table().find(k)].choices;
+      if (!choices.empty() && v.is_string())
+        values.setChoice(k, v.get<std::string>(), (w / k).str());
+      else if (choices.size() == 2 && choices[0] == "no" && v.is_boolean())
+        values.set(k, v.get<bool>() ? 1 : 0);
+      else
+        values.set(k, number(v, w / k));
+    } catch (const InputError& e) {
+      const std::string msg = e.what();
+      if (msg.rfind(w.file + ":", 0) == 0) throw;
+      (w / k).fail(msg.substr(msg.find(": ") == std::string::npos ? 0 : msg.find(": ") + 2));
+    }
+  }
+}
+
+} // namespace rv

@@ -1,0 +1,34 @@
+// JsonFields.h -- reading the fields of the project's JSON files (scenes, sweeps) with every error naming
+// "file:json.path: reason" (InputError).
+#pragma once
+#include "dynamics/core/ParameterTable.h"
+
+#include <initializer_list>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace rv {
+
+/// The error context: "file:json.path".
+struct Where {
+  std::string file, path;
+  Where operator/(const std::string& key) const { return {file, path.empty() ? key : path + "." + key}; }
+  std::string str() const { return file + ":" + (path.empty() ? "$" : path); }
+  [[noreturn]] void fail(const std::string& reason) const;
+};
+
+/// A value in a message (invalid UTF-8 replaced: dump() would throw on it).
+std::string shown(const nlohmann::json& j);
+const nlohmann::json& requireObject(const nlohmann::json& j, const Where& w);
+double number(const nlohmann::json& j, const Where& w);
+std::string text(const nlohmann::json& j, const Where& w);
+bool boolean(const nlohmann::json& j, const Where& w);
+/// Fails naming the first key of `j` that is not in `keys`.
+void onlyKeys(const nlohmann::json& j, const Where& w, std::initializer_list<const char*> keys);
+/// Fills a parameter table's values from a JSON object, skipping the keys in `skip`; a choice takes its name
+/// (or true/false for no/yes).
+void readParameters(const nlohmann::json& j, const Where& w, ParameterValues& values,
+                    const std::vector<std::string>& skip = {});
+
+} // namespace rv

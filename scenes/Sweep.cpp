@@ -1,0 +1,556 @@
+#include "scenes/Sweep.h"
+
+#include "dynamics/core/Errors.h"
+#include "dynamics/tools/FixedPoint.h"
+#include "dynamics/tools/Megno.h"
+#include "dynamics/tools/ToolRegistry.h"
+#include "scenes/JsonFields.h"
+#include "scenes/SceneLoader.h"
+#include "scenes/SceneTools.h"
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fmt/core.h>
+#include <fstream>
+#include <limits>
+#include <numeric>
+#include <set>
+#include <sstream>
+
+namespace rv {
+
+using nlohmann::json;
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// the observable named after a quantity's prefix, or the default
+const Observable& namedObservable(const Scene& scene, const std::string& name) {
+  const int k = scene.model->findObservable(name);
+  if (k < 0) throw InputError("no observable '" + name + "' in " + scene.model->info().id);
+  return scene.model->observables()[static_cast<std::size_t>(k)];
+}
+
+// the scene's trajectory up to `time`: `onStep(t0, x0, t1, x1)` sees every step, the last one cut at `time`
+template <class OnStep>
+void integrateTo(const Scene& scene, double time, const ToolControl& control, OnStep onStep) {
+  auto integ = scene.startIntegrator();
+  Eigen::VectorXd prev = integ->state(), end;
+  double tPrev = integ->time();
+  while (tPrev < time) {
+    if (control.stopRequested()) throw Stopped{};
+    integ->step();
+    if (integ->time() >= time) {
+      integ->interpolate(time, end);
+      onStep(tPrev, prev, time, end);
+      return;
+    }
+    onStep(tPrev, prev, integ->time(), integ->state());
+    prev = integ->state();
+    tPrev = integ->time();
+  }
+}
+
+std::vector<double> lyapunovExponents(const Scene& scene, const ToolControl& control) {
+  const RunSpec spec = scene.runSpec();
+  const Model& model = *scene.model;
+  LyapunovRun run(
+      model, [&] { return spec.makeIntegrator(model); }, scene.initialState, scene.lyapunov);
+  if (!run.run({}, control)) throw Stopped{};
+  return run.result().last.exponents;
+}
+
+MegnoEstimate megnoEstimate(const Scene& scene, const ToolControl& control) {
+  const RunSpec spec = scene.runSpec();
+  const Model& model = *scene.model;
+  MegnoRun run(
+      model, [&] { return spec.makeIntegrator(model); }, scene.initialState,
+      megnoSettings(scene.tool("megno")));
+  if (!run.run({}, control)) throw Stopped{};
+  return run.result().last;
+}
+
+// the smallest d dividing n with |Map^d(x) - x| small: the least period of a point of Map^n
+int leastPeriod(const Scene& scene, const Eigen::VectorXd& x, int n, double tolerance,
+                const ToolControl& control) {
+  for (int d = 1; d < n; ++d) {
+    if (n % d) continue;
+    MapToolOverrides o;
+    o.order = d;
+    const SceneMap m(scene, o, false);
+    const ReturnMap map = m.map();
+    if (map.difference(map(x, control), x).norm() < tolerance) return d;
+  }
+  return n;
+}
+
+std::vector<SweepQuantity> makeQuantities() {
+  std::vector<SweepQuantity> q;
+  const auto single = [](const std::string& name) {
+    return [name](const SweepSpec&) { return std::vector<std::string>{name}; };
+  };
+  q.push_back({"lyapunov.max", "lyapunov", "the largest Lyapunov exponent at the end of lyapunov.time",
+               single("lyapunov.max"), [](const SweepSpec&, const Scene& s, const ToolControl& c) {
+                 return std::vector<double>{lyapunovExponents(s, c).front()};
+               }});
+  q.push_back({"lyapunov.positive", "lyapunov",
+               "how many exponents exceed options.zero (finite-time estimates of zero exponents decay like "
+               "1/t)",
+               single("lyapunov.positive"), [](const SweepSpec& sp, const Scene& s, const ToolControl& c) {
+                 const double zero = sp.options->get("zero");
+                 const auto e = lyapunovExponents(s, c);
+                 return std::vector<double>{static_cast<double>(
+                     std::count_if(e.begin(), e.end(), [zero](double v) { return v > zero; }))};
+               }});
+  q.push_back({"megno", "megno",
+               "<Y>, the time-averaged MEGNO at the end of megno.time (2: torus, growing: chaos)",
+               single("megno"), [](const SweepSpec&, const Scene& s, const ToolControl& c) {
+                 return std::vector<double>{megnoEstimate(s, c).megno};
+               }});
+  q.push_back({"fli", "megno", "the fast Lyapunov indicator ln |w(t)| at the end of megno.time",
+               single("fli"), [](const SweepSpec&, const Scene& s, const ToolControl& c) {
+                 return std::vector<double>{megnoEstimate(s, c).fli};
+               }});
+  q.push_back(
+      {"fixedpoint.type", "fixedpoint",
+       "the type of the fixed point of order fixedpoint.order found from the point: 0 elliptic, 1 "
+       "hyperbolic, 2 hyperbolic with reflection, 3 parabolic, 4 stable node, 5 unstable node, 6 stable "
+       "focus, 7 unstable focus, 8 stable, 9 unstable",
+       single("fixedpoint.type"), [](const SweepSpec&, const Scene& s, const ToolControl& c) {
+         const SceneMap m(s);
+         const ReturnMap map = m.map();
+         const FixedPointResult r = findFixedPoint(map, m.guess(), m.search(), c);
+         return std::vector<double>{static_cast<double>(r.type)};
+       }});
+  q.push_back({"fixedpoint.order", "fixedpoint",
+               "the least period (1..options.max_order) of a periodic point found within options.radius of "
+               "the point, and its type (as fixedpoint.type)",
+               [](const SweepSpec&) {
+                 return std::vector<std::string>{"fixedpoint.order", "fixedpoint.type"};
+               },
+               [](const SweepSpec& sp, const Scene& s, const ToolControl& c) {
+                 const int maxOrder = static_cast<int>(sp.options->get("max_order"));
+                 const double radius = sp.options->get("radius");
+                 std::string last = "no periodic point of order <= " + std::to_string(maxOrder);
+                 for (int n = 1; n <= maxOrder; ++n) {
+                   MapToolOverrides o;
+                   o.order = n;
+                   const SceneMap m(s, o);
+                   const ReturnMap map = m.map();
+                   FixedPointResult r;
+                   try {
+                     r = findFixedPoint(map, m.guess(), m.search(), c);
+                   } catch (const ComputationError& e) {
+                     last = e.what();
+                     continue;
+                   }
+                   if (map.difference(r.point, m.guess()).norm() > radius) continue;
+                   const int period = leastPeriod(s, r.point, n, 1e3 * m.search().accuracy + 1e-9, c);
+                   return std::vector<double>{static_cast<double>(period), static_cast<double>(r.type)};
+                 }
+                 throw ComputationError(fmt::format("within radius {}: {}", radius, last));
+               }});
+  q.push_back(
+      {"observable.", "integrate",
+       "observable.NAME: the observable's value at options.time, or its time average over [0, time] "
+       "(options.statistic)",
+       [](const SweepSpec& sp) { return std::vector<std::string>{sp.quantity->id + sp.quantityName}; },
+       [](const SweepSpec& sp, const Scene& s, const ToolControl& c) {
+         const Observable& f = namedObservable(s, sp.quantityName);
+         const double time = sp.options->get("time");
+         const bool mean = sp.options->choice("statistic") == "mean";
+         double sum = 0, last = f.value(0, s.initialState.data());
+         integrateTo(s, time, c,
+                     [&](double t0, const Eigen::VectorXd& x0, double t1, const Eigen::VectorXd& x1) {
+                       const double v = f.value(t1, x1.data());
+                       sum += 0.5 * (f.value(t0, x0.data()) + v) * (t1 - t0); // the trapezoidal rule
+                       last = v;
+                     });
+         return std::vector<double>{mean ? sum / time : last};
+       }});
+  q.push_back({"reversal", "integrate",
+               "reversal[.NAME]: whether the spin about the vertical (or the observable NAME) changed sign "
+               "within options.time (1/0), when it first did (linear interpolation) and its value at the end",
+               [](const SweepSpec&) {
+                 return std::vector<std::string>{"reversed", "reversal_at", "spin_end"};
+               },
+               [](const SweepSpec& sp, const Scene& s, const ToolControl& c) {
+                 const Observable& f =
+                     namedObservable(s, sp.quantityName.empty() ? "omega_vertical" : sp.quantityName);
+                 const double s0 = f.value(0, s.initialState.data());
+                 double at = kNaN, end = s0;
+                 integrateTo(s, sp.options->get("time"), c,
+                             [&](double t0, const Eigen::VectorXd& x0, double t1, const Eigen::VectorXd& x1) {
+                               const double a = f.value(t0, x0.data()), b = f.value(t1, x1.data());
+                               if (std::isnan(at) && s0 != 0 && b * s0 < 0)
+                                 at = a == b ? t1 : t0 + (t1 - t0) * a / (a - b);
+                               end = b;
+                             });
+                 return std::vector<double>{std::isnan(at) ? 0.0 : 1.0, at, end};
+               }});
+  q.push_back({"orbit", "poincare",
+               "an orbit diagram: the last options.orbit_points points (after options.transient) of the map "
+               "coordinate options.coordinate, one row per grid point",
+               [](const SweepSpec& sp) {
+                 const auto names = scenePoincareMap(sp.base, 1)->coordinateNames();
+                 const auto k = static_cast<std::size_t>(sp.options->get("coordinate"));
+                 const std::string name = k < names.size() ? names[k] : "x";
+                 std::vector<std::string> cols;
+                 for (int i = 1; i <= static_cast<int>(sp.options->get("orbit_points")); ++i)
+                   cols.push_back(fmt::format("{}.{}", name, i));
+                 return cols;
+               },
+               [](const SweepSpec& sp, const Scene& s, const ToolControl& c) {
+                 const long keep = static_cast<long>(sp.options->get("orbit_points"));
+                 const long skip = static_cast<long>(sp.options->get("transient"));
+                 const auto map = scenePoincareMap(s, skip + keep);
+                 const auto k = static_cast<std::size_t>(sp.options->get("coordinate"));
+                 std::vector<double> v;
+                 for (long n = 0; n < skip + keep; ++n) {
+                   const auto p = map->next(c);
+                   if (!p) {
+                     if (c.stopRequested()) throw Stopped{};
+                     throw ComputationError(fmt::format("the map ended after {} points", n));
+                   }
+                   if (n >= skip) v.push_back(k < p->coordinates.size() ? p->coordinates[k] : kNaN);
+                 }
+                 return v;
+               }});
+  return q;
+}
+
+std::string resolveScenePath(const std::string& name, const std::string& sweepPath, const Where& w) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path p(name);
+  if (p.is_absolute()) return name;
+  for (const fs::path& base : {fs::path(sweepPath).parent_path(), fs::path(".")}) {
+    const fs::path candidate = base / p;
+    if (fs::is_regular_file(candidate, ec)) return candidate.lexically_normal().string();
+  }
+  w.fail("no scene file '" + name + "' (looked beside the sweep file and in the working folder)");
+}
+
+// the scene document of grid point `index`
+std::pair<json, std::vector<SceneOverride>> pointDocument(const SweepSpec& spec, long index) {
+  json doc = spec.base.document;
+  std::vector<SceneOverride> overrides;
+  const auto values = spec.axisValues(index);
+  for (std::size_t a = 0; a < spec.axes.size(); ++a) {
+    const SweepAxis& axis = spec.axes[a];
+    if (axis.mapCoordinate < 0) {
+      overrides.push_back({axis.id, fmt::format("{:.17g}", values[a])});
+      continue;
+    }
+    json& initial = doc["initial"];
+    if (!initial.contains("map") || !initial["map"].is_array()) {
+      json root = initial.contains("root") ? initial["root"] : json();
+      initial = json::object();
+      initial["map"] = json::array();
+      if (!root.is_null()) initial["root"] = root;
+    }
+    json& point = initial["map"];
+    while (point.size() <= static_cast<std::size_t>(axis.mapCoordinate))
+      point.push_back(0.0);
+    point[static_cast<std::size_t>(axis.mapCoordinate)] = values[a];
+    if (doc.contains("fixedpoint") && doc["fixedpoint"].is_object())
+      doc["fixedpoint"].erase("guess"); // searched from here
+  }
+  return {std::move(doc), std::move(overrides)};
+}
+
+std::string csvField(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string q = "\"";
+  for (char c : s)
+    q += c == '"' ? std::string("\"\"") : std::string(1, c == '\n' ? ' ' : c);
+  return q + "\"";
+}
+
+} // namespace
+
+const std::vector<SweepQuantity>& sweepQuantities() {
+  static const std::vector<SweepQuantity> q = makeQuantities();
+  return q;
+}
+
+const ParameterTable& sweepOptionsTable() {
+  static const ParameterTable t{
+      {.id = "time",
+       .label = "Time",
+       .defaultValue = 100,
+       .min = 1e-300,
+       .max = 1e300,
+       .description = "integration time of observable.* and reversal (maps: iterations)"},
+      {.id = "statistic",
+       .label = "Statistic",
+       .defaultValue = 0,
+       .min = 0,
+       .max = 1,
+       .description = "observable.*: the value at the end or the time average",
+       .integer = true,
+       .choices = {"end", "mean"}},
+      {.id = "zero",
+       .label = "Zero exponent bound",
+       .defaultValue = 0.01,
+       .min = 0,
+       .max = 1e300,
+       .description = "lyapunov.positive counts the exponents above this"},
+      {.id = "orbit_points",
+       .label = "Orbit points",
+       .defaultValue = 100,
+       .min = 1,
+       .max = 100000,
+       .description = "orbit: the map points kept per grid point",
+       .integer = true},
+      {.id = "transient",
+       .label = "Transient",
+       .defaultValue = 200,
+       .min = 0,
+       .max = 1e12,
+       .description = "orbit: the map points dropped first",
+       .integer = true},
+      {.id = "coordinate",
+       .label = "Coordinate",
+       .defaultValue = 0,
+       .min = 0,
+       .max = 2,
+       .description = "orbit: which map coordinate is kept (0: the first)",
+       .integer = true},
+      {.id = "max_order",
+       .label = "Largest order",
+       .defaultValue = 8,
+       .min = 1,
+       .max = 1000,
+       .description = "fixedpoint.order: the orders tried, 1 to this",
+       .integer = true},
+      {.id = "radius",
+       .label = "Radius",
+       .defaultValue = 0.1,
+       .min = 0,
+       .max = 1e300,
+       .description = "fixedpoint.order: how far from the grid point the periodic point may lie"},
+      {.id = "chunk",
+       .label = "Largest chunk",
+       .defaultValue = 0,
+       .min = 0,
+       .max = 1e9,
+       .description = "the most points handed to a thread or rank at once (0: automatic)",
+       .integer = true},
+  };
+  return t;
+}
+
+double SweepAxis::at(int i) const {
+  if (count <= 1) return min;
+  return i == count - 1 ? max : min + (max - min) * i / (count - 1);
+}
+
+long SweepSpec::points() const {
+  long n = 1;
+  for (const auto& a : axes)
+    n *= a.count;
+  return n;
+}
+
+std::vector<double> SweepSpec::axisValues(long index) const {
+  std::vector<double> v;
+  for (const auto& a : axes) {
+    v.push_back(a.at(static_cast<int>(index % a.count)));
+    index /= a.count;
+  }
+  return v;
+}
+
+SweepSpec sweepFromJson(json doc, const std::string& source) {
+  const Where root{source, ""};
+  requireObject(doc, root);
+  onlyKeys(doc, root, {"scene", "axes", "quantity", "set", "options", "title", "description"});
+  SweepSpec spec;
+  spec.source = source;
+  if (doc.contains("title")) spec.title = text(doc["title"], root / "title");
+
+  // the scene: a path or the document itself (as ranks receive it), with `set` applied
+  if (!doc.contains("scene")) root.fail("missing \"scene\" (a scene file)");
+  std::vector<SceneOverride> sets;
+  if (doc.contains("set")) {
+    for (const auto& [k, v] : requireObject(doc["set"], root / "set").items())
+      sets.push_back({k, v.dump()});
+  }
+  try {
+    if (doc["scene"].is_object()) {
+      spec.base = sceneFromJson(doc["scene"], source + ":scene", sets);
+    } else {
+      const std::string path = resolveScenePath(text(doc["scene"], root / "scene"), source, root / "scene");
+      spec.base = loadScene(path, sets);
+    }
+  } catch (const InputError& e) {
+    const std::string msg = e.what();
+    // an override names itself as "--set KEY": say where it is in the sweep file
+    if (msg.rfind("--set ", 0) == 0) (root / "set").fail(msg.substr(6));
+    throw;
+  }
+
+  // the quantity
+  if (!doc.contains("quantity")) root.fail("missing \"quantity\"");
+  const std::string quantity = text(doc["quantity"], root / "quantity");
+  for (const auto& q : sweepQuantities()) {
+    const bool prefix = q.id.back() == '.';
+    if (quantity == q.id || (prefix && quantity.rfind(q.id, 0) == 0 && quantity.size() > q.id.size()) ||
+        (q.id == "reversal" && quantity.rfind("reversal.", 0) == 0)) {
+      spec.quantity = &q;
+      spec.quantityName = quantity.substr(std::min(quantity.size(), q.id.size() + (prefix ? 0 : 1)));
+      break;
+    }
+  }
+  if (!spec.quantity) {
+    std::string known;
+    for (const auto& q : sweepQuantities())
+      known += " " + q.id + (q.id.back() == '.' ? "NAME" : "");
+    (root / "quantity").fail("unknown quantity '" + quantity + "' (known:" + known + ")");
+  }
+  if (!ToolRegistry::builtin().find(spec.quantity->tool) && spec.quantity->tool != "integrate")
+    (root / "quantity").fail("the tool " + spec.quantity->tool + " is not registered");
+  if (!spec.quantityName.empty() && spec.base.model->findObservable(spec.quantityName) < 0)
+    (root / "quantity")
+        .fail("unknown observable '" + spec.quantityName + "' of " + spec.base.model->info().id +
+              " (`rollviz describe " + spec.base.model->info().id + "` lists them)");
+  const bool needsMap = spec.quantity->tool == "fixedpoint" || spec.quantity->tool == "poincare";
+  if (needsMap && !spec.base.model->isMap() && spec.base.poincare.observable.empty())
+    (root / "quantity").fail(quantity + " needs the scene's Poincare section (poincare.section)");
+
+  // the options
+  auto options = std::make_shared<ParameterValues>(sweepOptionsTable());
+  if (doc.contains("options"))
+    readParameters(requireObject(doc["options"], root / "options"), root / "options", *options);
+  spec.options = options;
+
+  // the axes
+  const Where wa = root / "axes";
+  if (!doc.contains("axes")) root.fail("missing \"axes\" (one or two)");
+  if (!doc["axes"].is_array() || doc["axes"].empty() || doc["axes"].size() > 2)
+    wa.fail("expected an array of one or two axes");
+  std::set<std::string> ids;
+  double total = 1;
+  for (std::size_t i = 0; i < doc["axes"].size(); ++i) {
+    const Where w = wa / std::to_string(i);
+    const json& a = requireObject(doc["axes"][i], w);
+    onlyKeys(a, w, {"id", "min", "max", "count"});
+    for (const char* k : {"id", "min", "max", "count"})
+      if (!a.contains(k)) w.fail(std::string("missing \"") + k + "\"");
+    SweepAxis axis;
+    axis.id = text(a["id"], w / "id");
+    axis.min = number(a["min"], w / "min");
+    axis.max = number(a["max"], w / "max");
+    const double count = number(a["count"], w / "count");
+    if (!(count >= 1) || count != std::floor(count) || count > 1e8)
+      (w / "count").fail("must be a whole number from 1 to 10^8, got " + shown(a["count"]));
+    axis.count = static_cast<int>(count);
+    if (!std::isfinite(axis.min) || !std::isfinite(axis.max)) w.fail("min and max must be finite");
+    if (axis.min > axis.max) (w / "min").fail(fmt::format("min {} is above max {}", axis.min, axis.max));
+    if (!ids.insert(axis.id).second) (w / "id").fail("axis '" + axis.id + "' given twice");
+    total *= axis.count;
+    if (axis.id.rfind("map.", 0) == 0) {
+      const std::string k = axis.id.substr(4);
+      if (k.size() != 1 || k[0] < '0' || k[0] > '2')
+        (w / "id").fail("a map axis is map.0, map.1 or map.2 (the coordinates on the section)");
+      axis.mapCoordinate = k[0] - '0';
+    } else {
+      // the key must be one --set takes: try it with the scene's own value there (or min when it has none)
+      json value = axis.min;
+      const json* node = &spec.base.document;
+      std::stringstream path(axis.id.find('.') == std::string::npos ? "parameters." + axis.id : axis.id);
+      for (std::string part; node && std::getline(path, part, '.');)
+        node = node->is_object() && node->contains(part) ? &(*node)[part] : nullptr;
+      if (node && node->is_number()) value = *node;
+      try {
+        (void)sceneFromJson(spec.base.document, source, {{axis.id, value.dump()}});
+      } catch (const InputError& e) {
+        std::string msg = e.what();
+        if (msg.rfind("--set ", 0) == 0) msg = msg.substr(msg.find(": ") + 2);
+        (w / "id").fail("'" + axis.id + "' is not a parameter or scene key of this scene: " + msg);
+      }
+    }
+    spec.axes.push_back(axis);
+  }
+  if (total > 1e9) wa.fail("more than 10^9 grid points");
+  spec.columns = spec.quantity->columns(spec);
+
+  spec.resolved = doc;
+  spec.resolved["scene"] = spec.base.document;
+  spec.resolved.erase("set");
+  return spec;
+}
+
+SweepSpec loadSweep(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) throw InputError(path + ": is a folder, not a sweep file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+    throw InputError(path + ": cannot open the sweep file (" +
+                     (fs::exists(path, ec) ? "not readable" : "no such file") + ")");
+  return sweepFromJson(parseSceneJson(in, path), path);
+}
+
+Scene sweepPointScene(const SweepSpec& spec, long index) {
+  auto [doc, overrides] = pointDocument(spec, index);
+  return sceneFromJson(std::move(doc), spec.source, overrides);
+}
+
+SweepRecord evaluateSweepPoint(const SweepSpec& spec, long index, const ToolControl& control) {
+  const auto start = std::chrono::steady_clock::now();
+  SweepRecord r;
+  try {
+    const Scene scene = sweepPointScene(spec, index);
+    r.values = spec.quantity->evaluate(spec, scene, control);
+    r.values.resize(spec.columns.size(), kNaN);
+  } catch (const Stopped&) {
+    r.ok = false;
+    r.reason = "stopped";
+  } catch (const std::exception& e) { // InputError (no scene at these values) or ComputationError
+    r.ok = false;
+    r.reason = e.what();
+    if (r.reason.rfind(spec.source + ":", 0) == 0) r.reason.erase(0, spec.source.size() + 1); // said once
+  }
+  if (!r.ok) r.values.assign(spec.columns.size(), kNaN);
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return r;
+}
+
+std::string SweepSpec::axisLabel(std::size_t a) const {
+  const SweepAxis& axis = axes.at(a);
+  if (axis.mapCoordinate < 0) return axis.id;
+  try {
+    const auto names = scenePoincareMap(base, 1)->coordinateNames();
+    if (static_cast<std::size_t>(axis.mapCoordinate) < names.size())
+      return names[static_cast<std::size_t>(axis.mapCoordinate)] + " (" + axis.id + ")";
+  } catch (const std::exception&) { // a label is not worth failing for
+  }
+  return axis.id;
+}
+
+std::vector<std::string> sweepCsvHeader(const SweepSpec& spec) {
+  std::vector<std::string> h;
+  for (const auto& a : spec.axes)
+    h.push_back(a.id);
+  h.insert(h.end(), spec.columns.begin(), spec.columns.end());
+  h.emplace_back("seconds");
+  h.emplace_back("status");
+  return h;
+}
+
+std::string sweepCsvRow(const SweepSpec& spec, long index, const SweepRecord& r) {
+  std::string row;
+  for (double v : spec.axisValues(index))
+    row += fmt::format("{:.17g},", v);
+  for (double v : r.values)
+    row += fmt::format("{:.17g},", v);
+  row += fmt::format("{:.6g},", r.seconds);
+  row += r.ok ? "ok" : csvField("failed: " + r.reason);
+  return row;
+}
+
+} // namespace rv

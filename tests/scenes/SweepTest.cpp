@@ -1,0 +1,231 @@
+// Sweep files: bad ones name the field; each quantity against a known answer -- Lorenz's largest exponent
+// against the stable equilibrium's eigenvalues and against a Lyapunov run of the same scene, the conserved
+// energy as an observable's end value and mean, the rattleback's reversal against its mirror symmetry, the
+// Henon map's orbit against its fixed point in closed form, the standard map's periods and types.
+#include "scenes/Sweep.h"
+#include "dynamics/core/Errors.h"
+#include "scenes/SceneLoader.h"
+
+#include <Eigen/Eigenvalues>
+#include <cmath>
+#include <gtest/gtest.h>
+
+namespace rv {
+namespace {
+
+using nlohmann::json;
+
+json sweep(const std::string& problem, json axes, const std::string& quantity, json set = json::object(),
+           json options = json::object()) {
+  json j{{"scene", defaultScenePath(problem)}, {"axes", std::move(axes)}, {"quantity", quantity}};
+  if (!set.empty()) j["set"] = std::move(set);
+  if (!options.empty()) j["options"] = std::move(options);
+  return j;
+}
+
+json axis(const std::string& id, double min, double max, int count) {
+  return {{"id", id}, {"min", min}, {"max", max}, {"count", count}};
+}
+
+std::string errorOf(const json& doc) {
+  try {
+    (void)sweepFromJson(doc, "sw.json");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+SweepRecord evaluate(const SweepSpec& s, long i) {
+  const SweepRecord r = evaluateSweepPoint(s, i, {});
+  EXPECT_TRUE(r.ok) << r.reason;
+  return r;
+}
+
+TEST(Sweep, BadFilesNameTheField) {
+  const json good = sweep("lorenz", json::array({axis("rho", 5, 30, 3)}), "lyapunov.max");
+  EXPECT_EQ(errorOf(good), "(no error)");
+  const auto expectError = [&](json doc, const std::string& where) {
+    const std::string e = errorOf(doc);
+    EXPECT_NE(e.find("sw.json:" + where + ":"), std::string::npos) << where << " -> " << e;
+  };
+  json j = good;
+  j["axes"][0]["id"] = "no_such";
+  expectError(j, "axes.0.id");
+  j = good;
+  j["quantity"] = "no_such";
+  expectError(j, "quantity");
+  j = good;
+  j["quantity"] = "observable.no_such";
+  expectError(j, "quantity");
+  j = good;
+  j["axes"][0]["count"] = 0;
+  expectError(j, "axes.0.count");
+  j = good;
+  j["axes"][0]["count"] = 2.5;
+  expectError(j, "axes.0.count");
+  j = good;
+  j["axes"][0]["min"] = 40;
+  expectError(j, "axes.0.min");
+  j = good;
+  j["scene"] = "no/such/scene.json";
+  expectError(j, "scene");
+  j = good;
+  j.erase("scene");
+  expectError(j, "$");
+  j = good;
+  j["axes"].push_back(axis("rho", 1, 2, 2));
+  expectError(j, "axes.1.id");
+  j = good;
+  j["axes"] = json::array();
+  expectError(j, "axes");
+  j = good;
+  j["axes"][0]["id"] = "map.7";
+  expectError(j, "axes.0.id");
+  j = good;
+  j["axes"][0]["id"] = "integrator.no_such";
+  expectError(j, "axes.0.id");
+  j = good;
+  j["set"] = {{"no_such", 1}};
+  expectError(j, "set");
+  j = good;
+  j["options"] = {{"orbit_points", -1}};
+  expectError(j, "options.orbit_points");
+  j = good;
+  j["colour"] = "red";
+  expectError(j, "colour");
+}
+
+TEST(Sweep, GridOrderAndAxisValues) {
+  const SweepSpec s = sweepFromJson(
+      sweep("lorenz", json::array({axis("rho", 5, 30, 6), axis("sigma", 5, 15, 3)}), "lyapunov.max"),
+      "sw.json");
+  EXPECT_EQ(s.points(), 18);
+  EXPECT_EQ(s.axisValues(0), (std::vector<double>{5, 5}));
+  EXPECT_EQ(s.axisValues(5), (std::vector<double>{30, 5})); // the first axis fastest, ending exactly at max
+  EXPECT_EQ(s.axisValues(7), (std::vector<double>{10, 10}));
+  EXPECT_EQ(sweepCsvHeader(s),
+            (std::vector<std::string>{"rho", "sigma", "lyapunov.max", "seconds", "status"}));
+  const Scene p = sweepPointScene(s, 7);
+  EXPECT_EQ(p.document["parameters"]["rho"], 10.0);
+  EXPECT_EQ(p.document["parameters"]["sigma"], 10.0);
+}
+
+TEST(Sweep, LorenzLargestExponentKnownAnswers) {
+  const SweepSpec s = sweepFromJson(
+      sweep("lorenz", json::array({axis("rho", 5, 28, 2)}), "lyapunov.max", {{"lyapunov.time", 300}}),
+      "sw.json");
+  // rho = 5: every trajectory falls onto a stable equilibrium C+ or C-; the exponent is the largest real part
+  // of the Jacobian's eigenvalues there
+  const double sigma = 10, beta = 8.0 / 3, rho = 5, c = std::sqrt(beta * (rho - 1));
+  Eigen::Matrix3d J;
+  J << -sigma, sigma, 0, rho - (rho - 1), -1, -c, c, c, -beta;
+  const double expected = Eigen::EigenSolver<Eigen::Matrix3d>(J).eigenvalues().real().maxCoeff();
+  const SweepRecord at5 = evaluate(s, 0);
+  EXPECT_LT(at5.values[0], 0);
+  EXPECT_NEAR(at5.values[0], expected, 0.02);
+  // rho = 28: the same number as a Lyapunov run of the scene with --set (what `rollviz lyapunov` does)
+  const Scene scene = loadScene(defaultScenePath("lorenz"), {{"lyapunov.time", "300"}, {"rho", "28"}});
+  const RunSpec spec = scene.runSpec();
+  LyapunovRun run(
+      *scene.model, [&] { return spec.makeIntegrator(*scene.model); }, scene.initialState, scene.lyapunov);
+  ASSERT_TRUE(run.run());
+  const SweepRecord at28 = evaluate(s, 1);
+  EXPECT_EQ(at28.values[0], run.result().last.exponents[0]);
+  EXPECT_NEAR(at28.values[0], 0.9056, 0.05); // Sprott, Chaos and Time-Series Analysis (2003): 0.9056
+}
+
+TEST(Sweep, MapAxesSetTheInitialPointOnTheSection) {
+  const SweepSpec s = sweepFromJson(
+      sweep("henon_heiles", json::array({axis("map.0", -0.1, 0.1, 3), axis("map.1", 0.0, 0.2, 2)}),
+            "observable.E", {}, {{"time", 20}}),
+      "sw.json");
+  const Scene p = sweepPointScene(s, 5); // (0.1, 0.2)
+  const Scene direct = loadScene(defaultScenePath("henon_heiles"), {{"initial.map", "[0.1, 0.2]"}});
+  EXPECT_EQ(p.initialState, direct.initialState);
+  EXPECT_NE(s.axisLabel(1).find("py"), std::string::npos) << s.axisLabel(1);
+}
+
+TEST(Sweep, ObservableEndValueAndMeanOfAConservedEnergy) {
+  for (const char* statistic : {"end", "mean"}) {
+    const SweepSpec s = sweepFromJson(sweep("henon_heiles", json::array({axis("map.0", -0.1, 0.1, 2)}),
+                                            "observable.E", {}, {{"time", 30}, {"statistic", statistic}}),
+                                      "sw.json");
+    for (long i = 0; i < s.points(); ++i)
+      EXPECT_NEAR(evaluate(s, i).values[0], 0.125, 1e-9) << statistic;
+  }
+  // a time average that is not the end value: x(t) of a regular orbit averages to about zero over many
+  // periods
+  const SweepSpec s = sweepFromJson(sweep("henon_heiles", json::array({axis("map.0", 0.1, 0.1, 1)}),
+                                          "observable.x", {}, {{"time", 400}, {"statistic", "mean"}}),
+                                    "sw.json");
+  EXPECT_LT(std::abs(evaluate(s, 0).values[0]), 0.05);
+}
+
+TEST(Sweep, RattlebackReversalObeysTheMirrorSymmetry) {
+  // mirroring the body (psi -> -psi) and the spin (M3 -> -M3) maps motions onto motions: a reversal at the
+  // same time, the final spin opposite; with no misalignment (psi = 0) no reversal at all
+  const SweepSpec s =
+      sweepFromJson(sweep("ellipsoid_on_plane",
+                          json::array({axis("initial.state.M3", -0.3, 0.3, 2), axis("psi", -0.2, 0.2, 3)}),
+                          "reversal", {}, {{"time", 150}}),
+                    "sw.json");
+  ASSERT_EQ(s.columns, (std::vector<std::string>{"reversed", "reversal_at", "spin_end"}));
+  const SweepRecord a = evaluate(s, 0), b = evaluate(s, 5); // (-0.3, -0.2) and (0.3, 0.2)
+  EXPECT_EQ(a.values[0], b.values[0]);
+  if (a.values[0] == 1) {
+    EXPECT_NEAR(a.values[1], b.values[1], 1e-6);
+  }
+  EXPECT_NEAR(a.values[2], -b.values[2], 1e-8);
+  EXPECT_EQ(evaluate(s, 2).values[0], 0); // psi = 0
+  EXPECT_EQ(evaluate(s, 3).values[0], 0);
+  EXPECT_EQ(a.values[0], 1); // the scene's own case (M3 = -0.3 with the body misaligned) turns back
+}
+
+TEST(Sweep, HenonOrbitSettlesOnTheClosedFormFixedPoint) {
+  const SweepSpec s = sweepFromJson(sweep("henon_map", json::array({axis("a", 0.2, 0.3, 2)}), "orbit", {},
+                                          {{"orbit_points", 20}, {"transient", 500}}),
+                                    "sw.json");
+  ASSERT_EQ(s.columns.size(), 20U);
+  EXPECT_EQ(s.columns[0], "x.1");
+  const double b = 0.3;
+  for (long i = 0; i < 2; ++i) {
+    const double a = s.axisValues(i)[0];
+    const double fixed = (-(1 - b) + std::sqrt((1 - b) * (1 - b) + 4 * a)) / (2 * a); // x = 1 - a x^2 + b x
+    for (double v : evaluate(s, i).values)
+      EXPECT_NEAR(v, fixed, 1e-9) << a;
+  }
+}
+
+TEST(Sweep, StandardMapPeriodsAndTypes) {
+  // K = 0.9: (pi, 0) is an elliptic fixed point (trace 2 - K), (0, 0) a hyperbolic one (trace 2 + K), and
+  // {(0, pi), (pi, pi)} an elliptic orbit of period 2
+  const SweepSpec s = sweepFromJson(
+      sweep("standard_map", json::array({axis("map.0", 0.03, 3.11, 2), axis("map.1", 0.02, 3.12, 2)}),
+            "fixedpoint.order", {}, {{"max_order", 3}, {"radius", 0.1}}),
+      "sw.json");
+  const auto at = [&](long i) { return evaluate(s, i).values; };
+  EXPECT_EQ(at(0), (std::vector<double>{1, 1})); // near (0, 0): order 1, hyperbolic
+  EXPECT_EQ(at(1), (std::vector<double>{1, 0})); // near (pi, 0): order 1, elliptic
+  EXPECT_EQ(at(2), (std::vector<double>{2, 0})); // near (0, pi): order 2, elliptic
+  const SweepSpec t = sweepFromJson(
+      sweep("standard_map", json::array({axis("map.0", 3.11, 3.11, 1), axis("map.1", 0.02, 0.02, 1)}),
+            "fixedpoint.type"),
+      "sw.json");
+  EXPECT_EQ(evaluate(t, 0).values[0], 0); // the fixed point (pi, 0) found from (3.11, 0.02): elliptic
+}
+
+TEST(Sweep, AFailedPointSaysWhyAndTheRestGoOn) {
+  const SweepSpec s = sweepFromJson(
+      sweep("henon_heiles", json::array({axis("map.0", 0.0, 0.9, 2)}), "megno", {{"megno.time", 20}}),
+      "sw.json");
+  EXPECT_TRUE(evaluateSweepPoint(s, 0, {}).ok);
+  const SweepRecord outside = evaluateSweepPoint(s, 1, {});
+  EXPECT_FALSE(outside.ok);
+  EXPECT_NE(outside.reason.find("no state"), std::string::npos) << outside.reason;
+  EXPECT_TRUE(std::isnan(outside.values[0]));
+  EXPECT_NE(sweepCsvRow(s, 1, outside).find(",\"failed: "), std::string::npos);
+}
+
+} // namespace
+} // namespace rv
