@@ -542,6 +542,53 @@ std::vector<std::string> sweepCsvHeader(const SweepSpec& spec) {
   return h;
 }
 
+SweepChartData sweepChartData(const SweepSpec& spec) {
+  SweepChartData d;
+  d.title = spec.title;
+  for (std::size_t k = 0; k < spec.axes.size(); ++k) {
+    const SweepAxis& a = spec.axes[k];
+    d.axes.push_back(spec.axisLabel(k));
+    d.counts.push_back(a.count);
+    d.mins.push_back(a.min);
+    d.maxs.push_back(a.max);
+  }
+  d.columns = spec.columns;
+  d.orbit = spec.quantity->id == "orbit";
+  return d;
+}
+
+std::vector<double> readSweepCsv(const SweepSpec& spec, const std::string& path, const std::string& what) {
+  std::ifstream in(path);
+  if (!in) throw InputError(what + " " + path + ": cannot open");
+  std::string line, expected;
+  for (const auto& h : sweepCsvHeader(spec))
+    expected += (expected.empty() ? "" : ",") + h;
+  if (!std::getline(in, line) || line != expected)
+    throw InputError(what + " " + path + ": not the CSV of this sweep (expected the header " + expected +
+                     ")");
+  const std::size_t first = spec.axes.size(), n = spec.columns.size();
+  std::vector<double> values;
+  values.reserve(static_cast<std::size_t>(spec.points()) * n);
+  long row = 0;
+  for (; std::getline(in, line); ++row) {
+    std::stringstream fields(line);
+    std::string field;
+    for (std::size_t k = 0; k < first + n; ++k) {
+      if (!std::getline(fields, field, ','))
+        throw InputError(fmt::format("{} {}:{}: too few columns", what, path, row + 2));
+      if (k < first) continue;
+      try {
+        values.push_back(field == "nan" ? kNaN : std::stod(field));
+      } catch (const std::exception&) {
+        throw InputError(fmt::format("{} {}:{}: not a number '{}'", what, path, row + 2, field));
+      }
+    }
+  }
+  if (row != spec.points())
+    throw InputError(fmt::format("{} {}: {} rows, the sweep has {} points", what, path, row, spec.points()));
+  return values;
+}
+
 std::string sweepCsvRow(const SweepSpec& spec, long index, const SweepRecord& r) {
   std::string row;
   for (double v : spec.axisValues(index))

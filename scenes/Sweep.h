@@ -7,6 +7,7 @@
 #pragma once
 #include "dynamics/core/ParameterTable.h"
 #include "dynamics/jobs/SweepStore.h"
+#include "render/charts/SweepChart.h"
 #include "scenes/Scene.h"
 
 #include <functional>
@@ -80,6 +81,12 @@ SweepRecord evaluateSweepPoint(const SweepSpec& spec, long index, const ToolCont
 
 /// The CSV header: the axes, the quantity's columns, seconds, status.
 std::vector<std::string> sweepCsvHeader(const SweepSpec& spec);
+/// The chart's description of the sweep (axes, ranges, columns), without values.
+SweepChartData sweepChartData(const SweepSpec& spec);
+/// The values of a finished sweep's CSV (written by `rollviz sweep` from this sweep file): InputError naming
+/// `what` (e.g. "--csv") when its header or rows do not match the sweep.
+std::vector<double> readSweepCsv(const SweepSpec& spec, const std::string& path, const std::string& what);
+
 /// One CSV row of a point (status "ok" or "failed: reason", quoted).
 std::string sweepCsvRow(const SweepSpec& spec, long index, const SweepRecord& record);
 

@@ -2,6 +2,7 @@
 #pragma once
 #include "scenes/SceneLoader.h"
 #include "scenes/SceneTools.h"
+#include "scenes/Sweep.h"
 
 #include <CLI/CLI.hpp>
 #include <complex>
@@ -50,5 +51,8 @@ Command addSurfaceCommand(CLI::App& app);
 Command addRamCommand(CLI::App& app);
 Command addDiagramCommand(CLI::App& app);
 Command addSweepCommand(CLI::App& app);
+
+/// Draws a sweep's chart into a PNG (`rollviz sweep --png`, `rollviz chart --view sweep`).
+void writePngChart(const SweepChartData& data, const std::string& path, const std::string& size);
 
 } // namespace rv

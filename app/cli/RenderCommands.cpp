@@ -27,7 +27,7 @@ struct RenderOptions {
 };
 struct ChartOptions {
   SceneArgs scene;
-  std::string view = "poincare", output, size = "800x800", diagram;
+  std::string view = "poincare", output, size = "800x800", diagram, csv;
   long points = 0;
 };
 struct VideoOptions {
@@ -71,9 +71,16 @@ Command addChartCommand(CLI::App& app) {
   auto* cmd = app.add_subcommand("chart", "draw a view of a scene's tool output as a chart into a PNG");
   auto o = std::make_shared<ChartOptions>();
   addSceneArgs(cmd, o->scene);
-  cmd->add_option("--view", o->view, "what to draw: " + CLI::detail::join(chartViews(), " | "))
+  static const std::vector<std::string> views = [] {
+    auto v = chartViews();
+    v.emplace_back("sweep"); // a finished sweep: SCENE is the sweep file, --csv its output
+    return v;
+  }();
+  cmd->add_option("--view", o->view, "what to draw: " + CLI::detail::join(views, " | "))
       ->capture_default_str()
-      ->check(CLI::IsMember(chartViews()));
+      ->check(CLI::IsMember(views));
+  cmd->add_option("--csv", o->csv,
+                  "--view sweep: the CSV `rollviz sweep` wrote (the positional is the sweep file)");
   cmd->add_option("-o,--output", o->output, "PNG file")->required();
   cmd->add_option("--size", o->size, "picture size WIDTHxHEIGHT")->capture_default_str();
   cmd->add_option("--points", o->points, "Poincare points to compute (default: the scene's poincare.points)");
@@ -83,6 +90,17 @@ Command addChartCommand(CLI::App& app) {
       "them)");
   return {cmd, [o] {
             const auto [w, h] = parseSize(o->size);
+            if (o->view == "sweep") {
+              if (o->csv.empty())
+                throw InputError("--csv: --view sweep draws a finished sweep's CSV: give it");
+              const SweepSpec spec = loadSweep(o->scene.scene);
+              checkWritable(o->output, "-o");
+              SweepChartData data = sweepChartData(spec);
+              data.values = readSweepCsv(spec, o->csv, "--csv");
+              writePngChart(data, o->output, o->size);
+              return 0;
+            }
+            if (!o->csv.empty()) throw InputError("--csv: only with --view sweep");
             const Scene scene = o->scene.load();
             checkWritable(o->output, "-o");
             Progress progress(o->view);

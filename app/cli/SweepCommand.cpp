@@ -41,20 +41,7 @@ std::string duration(double seconds) {
   return fmt::format("{}h{:02}m", s / 3600, (s % 3600) / 60);
 }
 
-SweepChartData chartData(const SweepSpec& spec) {
-  SweepChartData d;
-  d.title = spec.title;
-  for (std::size_t k = 0; k < spec.axes.size(); ++k) {
-    const SweepAxis& a = spec.axes[k];
-    d.axes.push_back(spec.axisLabel(k));
-    d.counts.push_back(a.count);
-    d.mins.push_back(a.min);
-    d.maxs.push_back(a.max);
-  }
-  d.columns = spec.columns;
-  d.orbit = spec.quantity->id == "orbit";
-  return d;
-}
+} // namespace
 
 void writePngChart(const SweepChartData& data, const std::string& path, const std::string& size) {
   const auto [w, h] = parseSize(size);
@@ -64,12 +51,14 @@ void writePngChart(const SweepChartData& data, const std::string& path, const st
   writePng(ctx->window(), path, "--png");
 }
 
+namespace {
+
 // the CSV (and the chart's values) from the store, in grid order
 void writeResults(const SweepSpec& spec, const SweepStore& store, const SweepOptions& o) {
   AtomicFile csv(o.output, "-o");
   std::FILE* f = std::fopen(csv.tempPath().c_str(), "w");
   if (!f) throw InputError("-o " + o.output + ": cannot write");
-  SweepChartData data = chartData(spec);
+  SweepChartData data = sweepChartData(spec);
   const bool png = !o.png.empty();
   std::string line;
   for (const auto& h : sweepCsvHeader(spec))

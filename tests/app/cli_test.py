@@ -548,6 +548,131 @@ class Cli(unittest.TestCase):
         self.assertEqual(run(*args, "--threads", "2", "-o", whole).returncode, 0)
         self.assertEqual(open(whole).read(), open(resumed).read())
 
+    def sweep_file(self, name, doc):
+        path = self.path(name)
+        with open(path, "w") as f:
+            json.dump(doc, f)
+        return path
+
+    def sweep_values(self, path):
+        """the rows of a sweep's CSV without the cost column (which differs from run to run)"""
+        rows = list(csv.reader(open(path)))
+        cost = rows[0].index("seconds")
+        return [r[:cost] + r[cost + 1:] for r in rows]
+
+    def sweep_counts(self, stderr):
+        """(points, computed now, from the checkpoint) from the summary line on stderr"""
+        import re
+        m = re.search(r"sweep: (\d+) points: (\d+) computed now, (\d+) from the checkpoint", stderr)
+        self.assertIsNotNone(m, stderr)
+        return tuple(int(g) for g in m.groups())
+
+    def test_sweeps_are_the_same_on_threads_ranks_and_when_resumed(self):
+        hh = self.sweep_file("hh.json", {
+            "scene": os.path.join(SRC, "scenes", "henon_heiles.json"),
+            "axes": [{"id": "map.0", "min": -0.3, "max": 0.3, "count": 12},
+                     {"id": "map.1", "min": -0.3, "max": 0.3, "count": 10}],
+            "quantity": "megno", "set": {"megno.time": 800}})
+        one, two, png = self.path("one.csv"), self.path("two.csv"), self.path("hh.png")
+        r = run("sweep", hh, "-o", one, "--threads", "1")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertEqual(self.sweep_counts(r.stderr), (120, 120, 0))
+        rows = self.sweep_values(one)
+        self.assertEqual(rows[0], ["map.0", "map.1", "megno", "status"])
+        self.assertEqual(len(rows), 121)
+        statuses = [row[-1] for row in rows[1:]]
+        self.assertGreater(statuses.count("ok"), 60)
+        self.assertTrue(all(s == "ok" or s.startswith("failed: ") for s in statuses))
+        r = run("sweep", hh, "-o", two, "--threads", "2", "--png", png)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertEqual(rows, self.sweep_values(two), "1 and 2 threads differ")
+        size, px = pixels(png)
+        self.assertEqual(size, (900, 700))
+        self.assertTrue(varied(px))
+        # `rollviz chart --view sweep` draws the same picture from the CSV; another sweep's CSV is refused
+        again = self.path("again.png")
+        r = run("chart", hh, "--view", "sweep", "--csv", two, "--size", "900x700", "-o", again)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertEqual(pixels(again)[1], px)
+        self.assertBadInput(run("chart", hh, "--view", "sweep", "--csv", SCENE, "-o", again), "--csv")
+        self.assertBadInput(run("chart", hh, "--view", "sweep", "-o", again), "--csv")
+        # MPI: rank 0 writes, the others compute; -n 1 and -n 2 give the threaded chart bit for bit
+        env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+                   OMPI_MCA_rmaps_base_oversubscribe="1")
+        env.pop("DISPLAY", None)
+        for ranks in ("1", "2"):
+            out = self.path("mpi%s.csv" % ranks)
+            r = subprocess.run(["mpirun", "-n", ranks, RV, "sweep", hh, "-o", out], capture_output=True, text=True,
+                               env=env, timeout=300)
+            self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+            self.assertEqual(rows, self.sweep_values(out), "mpirun -n %s differs" % ranks)
+            self.assertEqual(self.sweep_counts(r.stderr)[1], 120)
+        # killed (SIGKILL) mid-way and started again: the same chart, and every point computed exactly once
+        ck, resumed = self.path("sweep.ck"), self.path("resumed.csv")
+        e = dict(os.environ)
+        e.pop("DISPLAY", None)
+        p = subprocess.Popen([RV, "sweep", hh, "-o", resumed, "--threads", "1", "--checkpoint", ck],
+                             stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=e)
+        time.sleep(1.5)
+        self.assertIsNone(p.poll(), "the sweep ended before it was killed: make it longer")
+        p.kill()
+        p.wait()
+        self.assertTrue(os.path.exists(ck))
+        self.assertFalse(os.path.exists(resumed))
+        r = run("sweep", hh, "-o", resumed, "--threads", "2", "--checkpoint", ck)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        total, now, before = self.sweep_counts(r.stderr)
+        self.assertGreater(before, 0)
+        self.assertEqual(now + before, total)
+        self.assertEqual(rows, self.sweep_values(resumed))
+        self.assertFalse(os.path.exists(ck), "a completed sweep removes its checkpoint")
+        # another sweep's checkpoint is refused
+        open(ck, "w").write("not a sweep store")
+        self.assertBadInput(run("sweep", hh, "-o", resumed, "--checkpoint", ck), "--checkpoint", ck)
+
+    def test_sweep_known_answers_bad_files_and_examples(self):
+        lorenz = os.path.join(SRC, "scenes", "lorenz.json")
+        sw = self.sweep_file("lor.json", {"scene": lorenz, "quantity": "lyapunov.max",
+                                          "axes": [{"id": "rho", "min": 4, "max": 28, "count": 2}],
+                                          "set": {"lyapunov.time": 200}})
+        out = self.path("lor.csv")
+        r = run("sweep", sw, "-o", out, "--png", self.path("lor.png"))
+        self.assertEqual(r.returncode, 0, r.stderr)
+        rows = list(csv.DictReader(open(out)))
+        self.assertLess(float(rows[0]["lyapunov.max"]), 0)  # stable equilibria
+        r = run("lyapunov", lorenz, "--set", "rho=28", "--set", "lyapunov.time=200", "--json")
+        self.assertEqual(float(rows[1]["lyapunov.max"]), json.loads(r.stdout)["exponents"][0])
+        good = {"scene": lorenz, "quantity": "lyapunov.max", "axes": [{"id": "rho", "min": 0, "max": 1, "count": 3}]}
+        for field, change in [("axes.0.id", lambda d: d["axes"][0].update(id="no_such")),
+                              ("quantity", lambda d: d.update(quantity="no_such")),
+                              ("axes.0.count", lambda d: d["axes"][0].update(count=0)),
+                              ("axes.0.min", lambda d: d["axes"][0].update(min=2)),
+                              ("scene", lambda d: d.update(scene="no_such.json"))]:
+            doc = json.loads(json.dumps(good))
+            change(doc)
+            bad = self.sweep_file("bad.json", doc)
+            self.assertBadInput(run("sweep", bad, "-o", self.path("bad.csv")), bad + ":" + field)
+            self.assertFalse(os.path.exists(self.path("bad.csv")))
+        self.assertBadInput(run("sweep", self.path("none.json"), "-o", out), "none.json")
+        self.assertEqual(os.listdir(self.dir).count("bad.csv"), 0)
+        # the shipped example sweeps, on a coarse grid
+        folder = os.path.join(SRC, "scenes", "sweeps")
+        examples = sorted(f for f in os.listdir(folder) if f.endswith(".json"))
+        self.assertGreaterEqual(len(examples), 5)
+        for name in examples:
+            doc = json.load(open(os.path.join(folder, name)))
+            doc["scene"] = os.path.normpath(os.path.join(folder, doc["scene"]))
+            for a in doc["axes"]:
+                a["count"] = 2
+            if "options" in doc and "orbit_points" in doc["options"]:
+                doc["options"]["orbit_points"] = 5
+            out = self.path(name + ".csv")
+            r = run("sweep", self.sweep_file(name, doc), "-o", out, "--png", self.path(name + ".png"))
+            self.assertEqual(r.returncode, 0, name + ": " + r.stderr)
+            self.assertEqual(len(list(csv.reader(open(out)))), 1 + 2 ** len(doc["axes"]), name)
+            self.assertTrue(varied(pixels(self.path(name + ".png"))[1]), name)
+        self.assertEqual([f for f in os.listdir(self.dir) if "sweep-part" in f], [], "a temporary store was left")
+
     def test_gui_without_a_display_says_so(self):
         r = run("gui", SCENE, env={"WAYLAND_DISPLAY": ""})
         if "WAYLAND_DISPLAY" in os.environ:
