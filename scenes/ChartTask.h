@@ -30,6 +30,7 @@ public:
   void edit(const nlohmann::json& document);
   /// Edit properties: the edited scene's document; the chart is computed again (returns false).
   bool edit(const TaskEdit& e) override;
+  bool ownsItsScene() const override { return true; }
 
   const std::string& view() const { return view_; }
   const std::string& diagram() const { return diagram_; }

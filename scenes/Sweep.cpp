@@ -4,6 +4,7 @@
 #include "dynamics/tools/FixedPoint.h"
 #include "dynamics/tools/Megno.h"
 #include "dynamics/tools/ToolRegistry.h"
+#include "dynamics/tools/ToolSettings.h"
 #include "scenes/JsonFields.h"
 #include "scenes/SceneLoader.h"
 #include "scenes/SceneTools.h"
@@ -86,6 +87,14 @@ int leastPeriod(const Scene& scene, const Eigen::VectorXd& x, int n, double tole
   return n;
 }
 
+// "0 elliptic, 1 hyperbolic, ...": the codes of FixedPointType in the CSV
+std::string typeCodes() {
+  std::string codes;
+  for (int k = 0; k <= static_cast<int>(FixedPointType::Unstable); ++k)
+    codes += fmt::format("{}{} {}", k ? ", " : "", k, toString(static_cast<FixedPointType>(k)));
+  return codes;
+}
+
 std::vector<SweepQuantity> makeQuantities() {
   std::vector<SweepQuantity> q;
   const auto single = [](const std::string& name) {
@@ -113,17 +122,14 @@ std::vector<SweepQuantity> makeQuantities() {
                single("fli"), [](const SweepSpec&, const Scene& s, const ToolControl& c) {
                  return std::vector<double>{megnoEstimate(s, c).fli};
                }});
-  q.push_back(
-      {"fixedpoint.type", "fixedpoint",
-       "the type of the fixed point of order fixedpoint.order found from the point: 0 elliptic, 1 "
-       "hyperbolic, 2 hyperbolic with reflection, 3 parabolic, 4 stable node, 5 unstable node, 6 stable "
-       "focus, 7 unstable focus, 8 stable, 9 unstable",
-       single("fixedpoint.type"), [](const SweepSpec&, const Scene& s, const ToolControl& c) {
-         const SceneMap m(s);
-         const ReturnMap map = m.map();
-         const FixedPointResult r = findFixedPoint(map, m.guess(), m.search(), c);
-         return std::vector<double>{static_cast<double>(r.type)};
-       }});
+  q.push_back({"fixedpoint.type", "fixedpoint",
+               "the type of the fixed point of order fixedpoint.order found from the point: " + typeCodes(),
+               single("fixedpoint.type"), [](const SweepSpec&, const Scene& s, const ToolControl& c) {
+                 const SceneMap m(s);
+                 const ReturnMap map = m.map();
+                 const FixedPointResult r = findFixedPoint(map, m.guess(), m.search(), c);
+                 return std::vector<double>{static_cast<double>(r.type)};
+               }});
   q.push_back({"fixedpoint.order", "fixedpoint",
                "the least period (1..options.max_order) of a periodic point found within options.radius of "
                "the point, and its type (as fixedpoint.type)",
@@ -274,73 +280,6 @@ std::string csvField(const std::string& s) {
 const std::vector<SweepQuantity>& sweepQuantities() {
   static const std::vector<SweepQuantity> q = makeQuantities();
   return q;
-}
-
-const ParameterTable& sweepOptionsTable() {
-  static const ParameterTable t{
-      {.id = "time",
-       .label = "Time",
-       .defaultValue = 100,
-       .min = 1e-300,
-       .max = 1e300,
-       .description = "integration time of observable.* and reversal (maps: iterations)"},
-      {.id = "statistic",
-       .label = "Statistic",
-       .defaultValue = 0,
-       .min = 0,
-       .max = 1,
-       .description = "observable.*: the value at the end or the time average",
-       .integer = true,
-       .choices = {"end", "mean"}},
-      {.id = "zero",
-       .label = "Zero exponent bound",
-       .defaultValue = 0.01,
-       .min = 0,
-       .max = 1e300,
-       .description = "lyapunov.positive counts the exponents above this"},
-      {.id = "orbit_points",
-       .label = "Orbit points",
-       .defaultValue = 100,
-       .min = 1,
-       .max = 100000,
-       .description = "orbit: the map points kept per grid point",
-       .integer = true},
-      {.id = "transient",
-       .label = "Transient",
-       .defaultValue = 200,
-       .min = 0,
-       .max = 1e12,
-       .description = "orbit: the map points dropped first",
-       .integer = true},
-      {.id = "coordinate",
-       .label = "Coordinate",
-       .defaultValue = 0,
-       .min = 0,
-       .max = 2,
-       .description = "orbit: which map coordinate is kept (0: the first)",
-       .integer = true},
-      {.id = "max_order",
-       .label = "Largest order",
-       .defaultValue = 8,
-       .min = 1,
-       .max = 1000,
-       .description = "fixedpoint.order: the orders tried, 1 to this",
-       .integer = true},
-      {.id = "radius",
-       .label = "Radius",
-       .defaultValue = 0.1,
-       .min = 0,
-       .max = 1e300,
-       .description = "fixedpoint.order: how far from the grid point the periodic point may lie"},
-      {.id = "chunk",
-       .label = "Largest chunk",
-       .defaultValue = 0,
-       .min = 0,
-       .max = 1e9,
-       .description = "the most points handed to a thread or rank at once (0: automatic)",
-       .integer = true},
-  };
-  return t;
 }
 
 double SweepAxis::at(int i) const {

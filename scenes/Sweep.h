@@ -43,9 +43,6 @@ struct SweepQuantity {
 /// Every quantity a sweep can chart.
 const std::vector<SweepQuantity>& sweepQuantities();
 
-/// The sweep file's "options": time, statistic, orbit points, fixed-point order search... (one declaration).
-const ParameterTable& sweepOptionsTable();
-
 /// A validated sweep.
 struct SweepSpec {
   std::string source; ///< the sweep file (for messages)

@@ -27,47 +27,61 @@ void printParameters(const ParameterTable& table) {
                s.unit.empty() ? "" : " (" + s.unit + ")");
   }
 }
+// the sweep quantities a tool yields (all of them for the sweep itself)
+void printQuantities(const std::string& tool) {
+  bool any = false;
+  for (const auto& q : sweepQuantities()) {
+    if (tool != "sweep" && q.tool != tool) continue;
+    if (!any) fmt::print("\nsweep quantities (rollviz sweep, \"quantity\"):\n");
+    any = true;
+    fmt::print("  {:<22} {}{}\n", q.id.back() == '.' ? q.id + "NAME" : q.id, q.description,
+               tool == "sweep" ? " [" + q.tool + "]" : "");
+  }
+}
 } // namespace
 
 Command addListCommand(CLI::App& app) {
   auto* cmd = app.add_subcommand("list", "list problems, integrators or scenes");
   auto whatPtr = std::make_shared<std::string>();
-  cmd->add_option("what", *whatPtr, "problems | integrators | tools | scenes")
+  cmd->add_option("what", *whatPtr, "problems | integrators | tools | quantities | scenes")
       ->required()
-      ->check(CLI::IsMember({"problems", "integrators", "tools", "scenes"}));
-  return {cmd, [whatPtr] {
-            const std::string& what = *whatPtr;
-            if (what == "problems")
-              for (const auto& e : ModelRegistry::builtin().entries())
-                fmt::print("{}\n", e.info->id);
-            else if (what == "integrators")
-              for (const auto& e : IntegratorRegistry::builtin().entries())
-                fmt::print("{:<10} {}\n", e.id, e.title);
-            else if (what == "tools") {
-              // the manual's tree: a child indented under its parent
-              const auto& tools = ToolRegistry::builtin().entries();
-              const auto depth = [&](const ToolEntry& e) {
-                int d = 0;
-                for (const ToolEntry* p = &e; !p->parent.empty(); p = &ToolRegistry::builtin().get(p->parent))
-                  ++d;
-                return d;
-              };
-              for (const auto& e : tools)
-                fmt::print("{:<{}}{:<{}} {}: {}\n", "", 2 * depth(e), e.id, 20 - 2 * depth(e), e.title,
-                           e.description);
-              fmt::print(
-                  "\nrollviz describe-tool ID: a tool's settings (scene section, --set SECTION.ID=VALUE) "
-                  "and outputs\n");
-            } else {
-              std::vector<std::string> files;
-              for (const auto& f : std::filesystem::directory_iterator(scenesDirectory()))
-                if (f.path().extension() == ".json") files.push_back(f.path().string());
-              std::sort(files.begin(), files.end());
-              for (const auto& f : files)
-                fmt::print("{}\n", f);
-            }
-            return 0;
-          }};
+      ->check(CLI::IsMember({"problems", "integrators", "tools", "quantities", "scenes"}));
+  return {
+      cmd, [whatPtr] {
+        const std::string& what = *whatPtr;
+        if (what == "problems")
+          for (const auto& e : ModelRegistry::builtin().entries())
+            fmt::print("{}\n", e.info->id);
+        else if (what == "integrators")
+          for (const auto& e : IntegratorRegistry::builtin().entries())
+            fmt::print("{:<10} {}\n", e.id, e.title);
+        else if (what == "quantities")
+          for (const auto& q : sweepQuantities())
+            fmt::print("{:<20} {}: {}\n", q.id.back() == '.' ? q.id + "NAME" : q.id, q.tool, q.description);
+        else if (what == "tools") {
+          // the manual's tree: a child indented under its parent
+          const auto& tools = ToolRegistry::builtin().entries();
+          const auto depth = [&](const ToolEntry& e) {
+            int d = 0;
+            for (const ToolEntry* p = &e; !p->parent.empty(); p = &ToolRegistry::builtin().get(p->parent))
+              ++d;
+            return d;
+          };
+          for (const auto& e : tools)
+            fmt::print("{:<{}}{:<{}} {}: {}\n", "", 2 * depth(e), e.id, 20 - 2 * depth(e), e.title,
+                       e.description);
+          fmt::print("\nrollviz describe-tool ID: a tool's settings (scene section, --set SECTION.ID=VALUE) "
+                     "and outputs\n");
+        } else {
+          std::vector<std::string> files;
+          for (const auto& f : std::filesystem::directory_iterator(scenesDirectory()))
+            if (f.path().extension() == ".json") files.push_back(f.path().string());
+          std::sort(files.begin(), files.end());
+          for (const auto& f : files)
+            fmt::print("{}\n", f);
+        }
+        return 0;
+      }};
 }
 
 Command addDescribeToolCommand(CLI::App& app) {
@@ -89,9 +103,14 @@ Command addDescribeToolCommand(CLI::App& app) {
         } else if (!e.section.empty()) {
           fmt::print("\nsettings: the scene section \"{}\" (README: scene files)\n", e.section);
         }
+        if (e.options) {
+          fmt::print("\noptions (a sweep file's \"options\"; id, default, range, meaning):\n");
+          printParameters(*e.options);
+        }
         fmt::print("\noutputs:\n");
         for (const auto& out : e.outputs)
           fmt::print("  {:<22} {}\n", out.name, out.description);
+        printQuantities(e.id);
         return 0;
       }};
 }

@@ -8,6 +8,7 @@
 #include "app/gui/PlotFilterDialog.h"
 #include "app/gui/PlotWindow.h"
 #include "app/gui/QtVtkWidget.h"
+#include "app/gui/SweepWindow.h"
 #include "app/gui/ToolManager.h"
 #include "app/gui/VisualizerSettings.h"
 #include "dynamics/core/Errors.h"
@@ -179,6 +180,14 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   auto* file = menuBar()->addMenu("&File");
   file->addAction("Open scene…", this, &MainWindow::openDialog);
   file->addAction("Save scene as…", this, &MainWindow::saveDialog)->setShortcut(QKeySequence::SaveAs);
+  file->addAction("Open sweep…", this,
+                  [this] {
+                    const QString path = QFileDialog::getOpenFileName(
+                        this, "Open a sweep (a chart of regimes)",
+                        QString::fromStdString(scenesDirectory() + "/sweeps"), "Sweep files (*.json)");
+                    if (!path.isEmpty()) openSweep(path);
+                  })
+      ->setToolTip("a tool's number over a grid of parameters or initial points; click a cell to open it");
   file->addAction("Export map…", this,
                   [this] {
                     if (scene_)
@@ -235,7 +244,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 MainWindow::~MainWindow() {
   timer_.stop();
   qDeleteAll(findChildren<ChartWindow*>()); // their jobs live in the map's job tree, which goes first
-  if (recorder_) {                          // a recording in progress is stopped, and its video kept
+  qDeleteAll(findChildren<SweepWindow*>());
+  if (recorder_) { // a recording in progress is stopped, and its video kept
     stopRecording();
     recorder_->process->waitForFinished(10000);
   }
@@ -556,6 +566,19 @@ ChartWindow* MainWindow::openChart(const std::string& view, const std::string& d
   w->show();
   if (view == "bifurcation") map_->addDiagramWindow(w); // the map's trajectories are points on it
   return w;
+}
+
+SweepWindow* MainWindow::openSweep(const QString& path) {
+  try {
+    auto* w = new SweepWindow(map_->jobs(), loadSweep(path.toStdString()), this);
+    w->setAttribute(Qt::WA_DeleteOnClose);
+    connect(w, &SweepWindow::openScene, this, [this](const nlohmann::json& doc) { runDocument(doc); });
+    w->show();
+    return w;
+  } catch (const std::exception& e) {
+    QMessageBox::warning(this, "rollviz", QString("Cannot open the sweep:\n%1").arg(e.what()));
+    return nullptr;
+  }
 }
 
 PlotWindow* MainWindow::openPlotWindow(const PlotView& plot) {

@@ -28,6 +28,7 @@ namespace rv {
 
 class QtVtkWidget;
 class ChartWindow;
+class SweepWindow;
 class PlotWindow;
 class MultipliersWindow;
 class VisualizerSettings;
@@ -76,6 +77,9 @@ public:
   /// Opens a filter window with a chart view of the scene (computed on a worker thread); `diagram` picks the
   /// bifurcation view's diagram (empty: the problem's first).
   ChartWindow* openChart(const std::string& view, const std::string& diagram = "");
+  /// Opens a sweep file (docs/sweeps.md) in a sweep window that runs it as a job; nullptr (and a message)
+  /// when the file is bad.
+  SweepWindow* openSweep(const QString& path);
   /// Asks which of the problem's bifurcation diagrams to open (manual §2.4.4: Diagram name) and opens it.
   void diagramDialog();
   /// Create in the control panel's Tools tab: starts tool `id` on the map or opens its chart window.

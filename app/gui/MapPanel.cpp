@@ -11,7 +11,6 @@
 #include "dynamics/jobs/PoincareTask.h"
 #include "dynamics/tools/ToolSettings.h"
 #include "render/charts/Chart3D.h"
-#include "scenes/ChartTask.h"
 #include "scenes/SceneLoader.h"
 #include "scenes/SceneTools.h"
 
@@ -49,11 +48,11 @@ MapPanel::~MapPanel() {
 }
 
 void MapPanel::setScene(const Scene& scene) {
-  // the map's tools belong to the old scene; a chart's job belongs to its window, which computes its own
-  // scene
+  // the map's tools belong to the old scene; a chart's or a sweep's job belongs to its window, which computes
+  // its own scene
   std::vector<int> old;
   for (const Job* j : jobs_.jobs())
-    if (!j->parent() && !dynamic_cast<const ChartTask*>(&j->task())) old.push_back(j->id());
+    if (!j->parent() && !j->task().ownsItsScene()) old.push_back(j->id());
   for (int id : old) // by id: removing one removes the tools under it
     if (Job* j = jobs_.find(id)) jobs_.remove(*j);
   series_.clear();

@@ -60,7 +60,7 @@ std::size_t SweepStore::recordBytes() const {
 
 SweepStore::SweepStore(std::string path, const std::string& identity, long points, int columns,
                        const std::string& what)
-    : path_(std::move(path)), points_(points), columns_(columns), done_(static_cast<std::size_t>(points), 0) {
+    : path_(std::move(path)), points_(points), columns_(columns), done_(static_cast<std::size_t>(points)) {
   const std::string h = header(identity, points, columns);
   dataOffset_ = static_cast<std::int64_t>(h.size());
   const auto total = dataOffset_ + static_cast<std::int64_t>(recordBytes()) * points;
@@ -111,7 +111,7 @@ SweepStore::SweepStore(std::string path, const std::string& identity, long point
     }
     for (long i = 0; i < n; ++i)
       if (block[static_cast<std::size_t>(i) * rb] != kNone) {
-        done_[static_cast<std::size_t>(first + i)] = 1;
+        done_[static_cast<std::size_t>(first + i)].store(1, std::memory_order_relaxed);
         ++doneCount_;
       }
   }
@@ -134,11 +134,8 @@ void SweepStore::write(long index, const SweepRecord& r) {
               std::min<std::size_t>(r.reason.size(), kReasonBytes));
   writeAll(fd_, buf.data(), buf.size(), dataOffset_ + static_cast<std::int64_t>(index * recordBytes()),
            path_);
-  char& flag = done_[static_cast<std::size_t>(index)];
-  if (!flag) {
-    flag = 1;
-    ++doneCount_;
-  }
+  // after the record is written: a reader that sees the flag reads the whole record
+  if (done_[static_cast<std::size_t>(index)].exchange(1, std::memory_order_acq_rel) == 0) ++doneCount_;
 }
 
 SweepRecord SweepStore::read(long index) const {

@@ -45,8 +45,11 @@ public:
   SweepStore& operator=(const SweepStore&) = delete;
   long points() const { return points_; }
   int columns() const { return columns_; }
-  /// Whether point `index` has a record (read at open; kept up to date by write).
-  bool done(long index) const { return done_[static_cast<std::size_t>(index)] != 0; }
+  /// Whether point `index` has a record (read at open; kept up to date by write). Safe to ask from any thread
+  /// while others write: a point reads as done only once its record is whole.
+  bool done(long index) const {
+    return done_[static_cast<std::size_t>(index)].load(std::memory_order_acquire) != 0;
+  }
   /// Points with a record.
   long doneCount() const { return doneCount_.load(); }
   /// Writes the record of `index` (thread-safe for distinct indices). ComputationError when the disk fails.
@@ -64,7 +67,7 @@ private:
   long points_;
   int columns_;
   std::int64_t dataOffset_ = 0;
-  std::vector<char> done_;
+  std::vector<std::atomic<unsigned char>> done_;
   std::atomic<long> doneCount_{0};
 };
 

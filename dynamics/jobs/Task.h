@@ -46,6 +46,9 @@ public:
   /// when it starts again. Throws InputError when the tool takes no new values (the default) or cannot take
   /// these.
   virtual bool edit(const TaskEdit& edit);
+  /// Whether it computes from a scene of its own and belongs to a window (a chart, a sweep), so that another
+  /// scene in the main window leaves it be; the map's tools (false) belong to the scene shown.
+  virtual bool ownsItsScene() const { return false; }
 };
 
 } // namespace rv

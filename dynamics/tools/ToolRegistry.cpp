@@ -185,6 +185,21 @@ const ToolRegistry& ToolRegistry::builtin() {
          .reference = "manual §2.3.10",
          .computation =
              "dynamics/core/Diagram.h (each model's diagrams(), e.g. dynamics/models/ChaplyginDiagram.h)"});
+    add({.id = "sweep",
+         .title = "Chart of regimes (sweep)",
+         .description =
+             "a number one of the tools above yields (its sweep quantities), over a grid of one or "
+             "two model parameters, scene keys or initial map points; on threads or MPI ranks "
+             "(docs/sweeps.md)",
+         .command = "sweep",
+         .outputs = {{"<axes>", "the grid point's axis values (the first axis fastest)"},
+                     {"<quantity columns>", "the quantity: one column, or several (orbit, reversal, ...)"},
+                     {"seconds", "what the point cost"},
+                     {"status", "ok, or failed: the reason"}},
+         .reference = "Cincotta & Simo, A&AS 147 (2000) 205 (MEGNO charts); Polychronopoulos & Kuck, IEEE TC "
+                      "36 (1987) 1425 (guided self-scheduling)",
+         .computation = "scenes/Sweep.h (evaluateSweepPoint); dynamics/jobs/SweepStore.h; app/cli/SweepMpi.h",
+         .options = &sweepOptionsTable()});
     return t;
   }();
   return r;

@@ -37,6 +37,8 @@ struct ToolEntry {
   std::vector<ToolOutput> outputs;
   std::string reference;   ///< the paper behind it
   std::string computation; ///< where the computation is defined: "dynamics/tools/Megno.h (MegnoRun)"
+  /// Settings kept outside scenes (a sweep file's "options"), or nullptr.
+  const ParameterTable* options = nullptr;
 };
 
 /// All tools, in the order of the manual's tree (a parent before its children).

@@ -14,6 +14,9 @@ const ParameterTable& continuationTable();
 const ParameterTable& separatrixTable();
 const ParameterTable& bifurcationTreeTable();
 const ParameterTable& gridTable();
+/// A sweep file's "options" (scenes/Sweep.h): time, statistic, orbit points, the order search... (one
+/// declaration, shown by `rollviz describe-tool sweep`).
+const ParameterTable& sweepOptionsTable();
 
 FixedPointSettings fixedPointSettings(const ParameterValues& v);
 /// The numeric part (parameter id, finite value and step come from the command or the scene's strings).

@@ -14,6 +14,12 @@ public:
   virtual void attach(vtkRenderWindow* window) = 0;
   /// The data drawn, as CSV with a header: series, then the coordinates (round-trip exact).
   virtual void writeCsv(std::ostream& out) const = 0;
+  /// The chart coordinates of a point of the window (pixels from the bottom left); false outside the plot
+  /// area or for charts without a plane.
+  virtual bool toChart(double px, double py, double& x, double& y) const {
+    (void)px, (void)py, (void)x, (void)y;
+    return false;
+  }
 };
 
 } // namespace rv

@@ -44,7 +44,7 @@ public:
   /// Removes every series.
   void clear();
   /// Map coordinates of a point of the scene (pixels from the bottom left); false outside the plot area.
-  bool toChart(double px, double py, double& x, double& y) const;
+  bool toChart(double px, double py, double& x, double& y) const override;
   /// Draws series `index` emphasised (-1: none).
   void select(int index);
   /// Draws into `window` (the chart's view takes it over).

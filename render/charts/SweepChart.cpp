@@ -76,6 +76,17 @@ public:
     chart_->GetTitleProperties()->SetFontSize(16);
   }
   void attach(vtkRenderWindow* window) override { view_->SetRenderWindow(window); }
+  bool toChart(double px, double py, double& x, double& y) const override {
+    const int* p1 = chart_->GetPoint1(); // the plot area's corners in scene pixels
+    const int* p2 = chart_->GetPoint2();
+    if (px < p1[0] || px > p2[0] || py < p1[1] || py > p2[1] || p1[0] == p2[0] || p1[1] == p2[1])
+      return false;
+    vtkAxis* ax = chart_->GetAxis(vtkAxis::BOTTOM);
+    vtkAxis* ay = chart_->GetAxis(vtkAxis::LEFT);
+    x = ax->GetMinimum() + (px - p1[0]) / (p2[0] - p1[0]) * (ax->GetMaximum() - ax->GetMinimum());
+    y = ay->GetMinimum() + (py - p1[1]) / (p2[1] - p1[1]) * (ay->GetMaximum() - ay->GetMinimum());
+    return true;
+  }
   void writeCsv(std::ostream& out) const override {
     out << data_.axes[0] << "," << data_.axes[1] << ","
         << (data_.columns.empty() ? "value" : data_.columns[0]) << "\n";

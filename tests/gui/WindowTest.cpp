@@ -11,6 +11,7 @@
 #include "app/gui/ParameterForm.h"
 #include "app/gui/PlotWindow.h"
 #include "app/gui/QtVtkWidget.h"
+#include "app/gui/SweepWindow.h"
 #include "app/gui/ToolManager.h"
 #include "app/gui/VisualizerSettings.h"
 #include "dynamics/jobs/JobTree.h"
@@ -253,6 +254,53 @@ private slots:
     // closing the window deletes its job
     const int id = job->id();
     chart->close();
+    QTRY_VERIFY(!window_->mapPanel()->jobs().find(id));
+    QVERIFY(window_->openScene(QString::fromStdString(defaultScenePath("chaplygin_ball"))));
+  }
+
+  // a sweep runs as a job of the tool manager, its window fills in, and a click on a cell opens that grid
+  // point's scene (its initial point on the section) in the main window
+  void sweepWindowFillsInAndOpensAPointsScene() {
+    const QString path = dir_.filePath("hh_sweep.json");
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(QByteArray::fromStdString(nlohmann::json{
+        {"scene", defaultScenePath("henon_heiles")},
+        {"axes",
+         {{{"id", "map.0"}, {"min", -0.2}, {"max", 0.2}, {"count", 5}},
+          {{"id", "map.1"}, {"min", -0.2}, {"max", 0.2}, {"count", 4}}}},
+        {"quantity", "megno"},
+        {"set", {{"megno.time", 100}}}}.dump()));
+    f.close();
+    SweepWindow* w = window_->openSweep(path);
+    QVERIFY(w);
+    Job* job = w->job();
+    QVERIFY(job);
+    ToolManager* tools = window_->toolManager();
+    tools->refresh();
+    tools->select(job->id());
+    QCOMPARE(tools->selected(), job);
+    QTRY_VERIFY_WITH_TIMEOUT(job->status() == Job::Status::Finished, 60000);
+    QTRY_COMPARE_WITH_TIMEOUT(w->done(), 20L, 5000);
+    QTest::qWait(300);
+    QVERIFY(keep(w->grab().toImage(), "window_sweep.png"));
+    QVERIFY(varied(w->view()->grabFramebuffer()));
+    // the position of grid point 13 = (map.0, map.1) = (0.1, 0.0667)
+    QPoint at(-1, -1);
+    for (int y = 0; y < w->view()->height() && at.x() < 0; y += 3)
+      for (int x = 0; x < w->view()->width() && at.x() < 0; x += 3)
+        if (w->pointUnder(QPointF(x, y)) == 13) at = QPoint(x, y);
+    QVERIFY2(at.x() >= 0, "no pixel over grid point 13");
+    QTest::mouseClick(w->view(), Qt::LeftButton, {}, at);
+    QTRY_VERIFY_WITH_TIMEOUT(window_->scene() && window_->scene()->model->info().id == "henon_heiles", 5000);
+    const auto point = window_->scene()->document["initial"]["map"];
+    QCOMPARE(point.size(), std::size_t(2));
+    QCOMPARE(point[0].get<double>(), w->spec().axisValues(13)[0]);
+    QCOMPARE(point[1].get<double>(), w->spec().axisValues(13)[1]);
+    // the job is the window's: another scene leaves it, closing the window deletes it
+    const int id = job->id();
+    QVERIFY(window_->mapPanel()->jobs().find(id));
+    w->close();
     QTRY_VERIFY(!window_->mapPanel()->jobs().find(id));
     QVERIFY(window_->openScene(QString::fromStdString(defaultScenePath("chaplygin_ball"))));
   }

@@ -1,0 +1,136 @@
+#include "app/gui/SweepWindow.h"
+
+#include "app/gui/QtVtkWidget.h"
+#include "scenes/SceneLoader.h"
+#include "scenes/SweepTask.h"
+
+#include <QEvent>
+#include <QHBoxLayout>
+#include <QMouseEvent>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QTimer>
+#include <cmath>
+
+namespace rv {
+
+SweepWindow::SweepWindow(JobTree& jobs, SweepSpec spec, QWidget* parent)
+    : FilterWindow(QString::fromStdString(
+                       spec.title.empty() ? "Sweep: " + spec.quantity->id + spec.quantityName : spec.title),
+                   "sweep", parent),
+      spec_(spec), jobs_(jobs) {
+  setStatus("computing…");
+  progressBar_ = new QProgressBar(this);
+  progressBar_->setRange(0, 1000);
+  progressBar_->setTextVisible(false);
+  cancel_ = new QPushButton("Stop", this);
+  cancel_->setToolTip("stop the sweep (the tool manager continues it with the points left)");
+  connect(cancel_, &QPushButton::clicked, this, [this] {
+    if (Job* j = job()) j->stop();
+  });
+  bar()->insertWidget(1, progressBar_);
+  bar()->insertWidget(2, cancel_);
+  Job& job = jobs_.add(std::make_unique<SweepTask>(std::move(spec)));
+  jobId_ = job.id();
+  job.start();
+  view()->installEventFilter(this);
+  view()->setToolTip("click a cell: open that point's scene in the main window");
+  auto* timer = new QTimer(this); // the job only stores its results; the window reads them
+  connect(timer, &QTimer::timeout, this, &SweepWindow::poll);
+  timer->start(250);
+}
+
+SweepWindow::~SweepWindow() {
+  if (Job* j = job()) jobs_.remove(*j);
+}
+
+Job* SweepWindow::job() const {
+  return jobs_.find(jobId_);
+}
+
+long SweepWindow::pointAt(double x, double y) const {
+  long index = 0, stride = 1;
+  const double at[2] = {x, y};
+  for (std::size_t a = 0; a < spec_.axes.size(); ++a) {
+    const SweepAxis& axis = spec_.axes[a];
+    const double step = axis.count > 1 ? (axis.max - axis.min) / (axis.count - 1) : 1;
+    const long i = axis.count > 1 ? std::lround((at[a] - axis.min) / step) : 0;
+    if (i < 0 || i >= axis.count || std::abs(at[a] - axis.at(static_cast<int>(i))) > step) return -1;
+    index += i * stride;
+    stride *= axis.count;
+  }
+  return index;
+}
+
+void SweepWindow::openPoint(long index) {
+  try {
+    emit openScene(sweepPointScene(spec_, index).document);
+    std::string where;
+    for (std::size_t a = 0; a < spec_.axes.size(); ++a)
+      where +=
+          (where.empty() ? "" : ", ") + spec_.axes[a].id + " = " + std::to_string(spec_.axisValues(index)[a]);
+    setStatus(QString::fromStdString("opened " + where));
+  } catch (const std::exception& e) {
+    setStatus(QString("no scene there: %1").arg(e.what()));
+  }
+}
+
+long SweepWindow::pointUnder(const QPointF& position) const {
+  const double dpr = view()->devicePixelRatioF();
+  double x = 0, y = 0;
+  if (!chart_ || !chart_->toChart(position.x() * dpr, (view()->height() - position.y()) * dpr, x, y))
+    return -1;
+  return pointAt(x, spec_.axes.size() == 1 ? 0 : y); // a one-axis chart: the nearest grid value along it
+}
+
+bool SweepWindow::eventFilter(QObject* watched, QEvent* event) {
+  if (watched == view() && event->type() == QEvent::MouseButtonPress && chart_) {
+    auto* e = static_cast<QMouseEvent*>(event);
+    if (e->button() == Qt::LeftButton) {
+      if (const long i = pointUnder(e->position()); i >= 0) openPoint(i);
+      return true;
+    }
+  }
+  return FilterWindow::eventFilter(watched, event);
+}
+
+void SweepWindow::poll() {
+  Job* j = job();
+  const Job::Status status = j ? j->status() : Job::Status::Failed;
+  const bool running = status == Job::Status::Running;
+  progressBar_->setVisible(running);
+  cancel_->setVisible(running);
+  if (!j) {
+    if (seen_ != Job::Status::Failed) setStatus("deleted in the tool manager");
+    seen_ = Job::Status::Failed;
+    return;
+  }
+  const auto& task = static_cast<const SweepTask&>(j->task());
+  const long done = task.store().doneCount();
+  if (done != done_) { // new points: draw again (a chart is never attached to a view that drew another)
+    done_ = done;
+    if (chart_) {
+      chart_.reset();
+      replaceView();
+      view()->installEventFilter(this);
+    }
+    chart_ = makeSweepChart(task.chartData());
+    chart_->attach(view()->renderWindow());
+    view()->update();
+  }
+  progressBar_->setValue(static_cast<int>(1000 * j->progress()));
+  const QString count = QString("%1 of %2 points").arg(done).arg(spec_.points());
+  if (running) {
+    setStatus("computing… " + count);
+  } else if (status != seen_) {
+    setStatus(status == Job::Status::Finished ? count + "; click a cell to open its scene"
+              : status == Job::Status::Failed ? "failed: " + QString::fromStdString(j->error())
+                                              : "stopped: " + count);
+  }
+  const bool ended =
+      status == Job::Status::Finished || status == Job::Status::Stopped || status == Job::Status::Failed;
+  if (status != seen_ && ended) emit finished();
+  seen_ = status;
+}
+
+} // namespace rv

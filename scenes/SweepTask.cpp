@@ -1,0 +1,71 @@
+#include "scenes/SweepTask.h"
+
+#include <algorithm>
+#include <atomic>
+#include <filesystem>
+#include <fmt/core.h>
+#include <limits>
+#include <thread>
+#include <unistd.h>
+
+namespace rv {
+
+namespace {
+std::string temporaryStore() {
+  static std::atomic<int> counter{0};
+  return (std::filesystem::temp_directory_path() /
+          fmt::format("rollviz-sweep-{}-{}.store", ::getpid(), counter.fetch_add(1)))
+      .string();
+}
+} // namespace
+
+SweepTask::SweepTask(SweepSpec spec, int threads)
+    : spec_(std::move(spec)),
+      threads_(threads > 0 ? threads : static_cast<int>(std::max(1U, std::thread::hardware_concurrency()))),
+      path_(temporaryStore()) {
+  reset();
+}
+
+SweepTask::~SweepTask() {
+  if (store_) store_->remove();
+}
+
+std::string SweepTask::name() const {
+  return "Sweep: " + spec_.quantity->id + spec_.quantityName;
+}
+
+std::string SweepTask::describe() const {
+  std::string axes;
+  for (const auto& a : spec_.axes)
+    axes += fmt::format("{}{} in [{}, {}] x {}", axes.empty() ? "" : "; ", a.id, a.min, a.max, a.count);
+  return fmt::format("{}{}quantity {}{} over {} ({} points, {} threads); scene: problem {}", spec_.title,
+                     spec_.title.empty() ? "" : "\n", spec_.quantity->id, spec_.quantityName, axes,
+                     spec_.points(), threads_, spec_.base.model->info().id);
+}
+
+bool SweepTask::run(const ToolControl& control) {
+  ChunkScheduler scheduler(*store_, threads_, static_cast<long>(spec_.options->get("chunk")));
+  return runSweepThreads(
+      *store_, scheduler, [this](long i, const ToolControl& c) { return evaluateSweepPoint(spec_, i, c); },
+      threads_, control);
+}
+
+void SweepTask::reset() {
+  if (store_) store_->remove();
+  store_ = std::make_unique<SweepStore>(path_, spec_.resolved.dump(), spec_.points(),
+                                        static_cast<int>(spec_.columns.size()), "sweep");
+}
+
+SweepChartData SweepTask::chartData() const {
+  SweepChartData d = sweepChartData(spec_);
+  const std::size_t n = spec_.columns.size();
+  d.values.assign(static_cast<std::size_t>(spec_.points()) * n, std::numeric_limits<double>::quiet_NaN());
+  for (long i = 0; i < spec_.points(); ++i)
+    if (store_->done(i)) {
+      const SweepRecord r = store_->read(i);
+      std::copy(r.values.begin(), r.values.end(), d.values.begin() + static_cast<std::ptrdiff_t>(i * n));
+    }
+  return d;
+}
+
+} // namespace rv

@@ -1,0 +1,39 @@
+// SweepTask.h -- a sweep (Sweep.h) as a Task, so that the GUI runs it as a Job of the tool manager: progress,
+// stop, continue (the points done are kept: a continued sweep computes only the rest), restart, delete. Its
+// results stay in a store on disk (a temporary file, removed with the task) that a window reads while it
+// runs.
+#pragma once
+#include "dynamics/jobs/SweepStore.h"
+#include "dynamics/jobs/Task.h"
+#include "scenes/Sweep.h"
+
+#include <memory>
+#include <string>
+
+namespace rv {
+
+class SweepTask final : public Task {
+public:
+  /// `threads` computing threads (0: every core).
+  explicit SweepTask(SweepSpec spec, int threads = 0);
+  ~SweepTask() override;
+  std::string name() const override;
+  std::string describe() const override;
+  bool run(const ToolControl& control) override;
+  void reset() override;
+  bool ownsItsScene() const override { return true; }
+
+  const SweepSpec& spec() const { return spec_; }
+  /// The records so far; safe to read while the task runs (a point is done once its record is whole).
+  const SweepStore& store() const { return *store_; }
+  /// The chart's data now: the values of the points done, NaN for the others.
+  SweepChartData chartData() const;
+
+private:
+  SweepSpec spec_;
+  int threads_;
+  std::string path_;
+  std::unique_ptr<SweepStore> store_;
+};
+
+} // namespace rv
