@@ -24,8 +24,13 @@ bool launchedByMpirun() {
 }
 
 #ifdef ROLLVIZ_HAVE_MPI
-constexpr int kRequestTag = 1; // worker -> rank 0: the records of the last chunk (empty at first)
+// A worker asks for its next chunk while it computes the current one (double buffering: rank 0's answer is
+// never waited for), so it always holds at most two chunks. Every request carries the records of the chunk
+// finished before it and gets a chunk back, empty when there is no more work; after the empty one the worker
+// sends the records of its last chunk and ends.
+constexpr int kRequestTag = 1; // worker -> rank 0: records, and a request for a chunk
 constexpr int kChunkTag = 2;   // rank 0 -> worker: [begin, end), empty when there is no more work
+constexpr int kLastTag = 3;    // worker -> rank 0: the records of its last chunk; it ends
 #endif
 
 } // namespace
@@ -73,34 +78,39 @@ SweepTraffic serveSweep(const MpiSession& mpi, SweepStore& store, ChunkScheduler
   int working = world->size - 1;
   bool stopping = false;
   std::vector<char> buffer;
+  auto idle = std::chrono::microseconds(100);
   while (working > 0) {
     int waiting = 0;
     MPI_Status status;
-    MPI_Iprobe(MPI_ANY_SOURCE, kRequestTag, MPI_COMM_WORLD, &waiting, &status);
+    MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &waiting, &status);
     if (!waiting) {
-      // no busy wait: this rank's own threads compute meanwhile; a request waits at most this long
-      std::this_thread::sleep_for(std::chrono::microseconds(200));
+      // no busy wait: this rank's own threads compute meanwhile, and workers ask ahead of need, so a longer
+      // sleep (up to 2 ms when nothing comes) costs them nothing
+      std::this_thread::sleep_for(idle);
+      idle = std::min(2 * idle, std::chrono::microseconds(2000));
       if (!stopping && poll()) {
         stopping = true;
         scheduler.stop();
       }
       continue;
     }
+    idle = std::chrono::microseconds(100);
     int count = 0;
     MPI_Get_count(&status, MPI_CHAR, &count);
     buffer.resize(static_cast<std::size_t>(count));
-    MPI_Recv(buffer.data(), count, MPI_CHAR, status.MPI_SOURCE, kRequestTag, MPI_COMM_WORLD,
+    MPI_Recv(buffer.data(), count, MPI_CHAR, status.MPI_SOURCE, status.MPI_TAG, MPI_COMM_WORLD,
              MPI_STATUS_IGNORE);
     for (auto& [index, record] : unpackRecords(buffer, store.columns())) {
       store.write(index, record);
       ++traffic.records;
     }
     traffic.bytes += count;
-    std::int64_t chunk[2] = {0, 0};
-    if (const auto next = scheduler.next())
-      chunk[0] = next->first, chunk[1] = next->second;
-    else
+    if (status.MPI_TAG == kLastTag) {
       --working;
+      continue;
+    }
+    std::int64_t chunk[2] = {0, 0};
+    if (const auto next = scheduler.next()) chunk[0] = next->first, chunk[1] = next->second;
     MPI_Send(chunk, 2, MPI_INT64_T, status.MPI_SOURCE, kChunkTag, MPI_COMM_WORLD);
   }
   return traffic;
@@ -113,16 +123,23 @@ SweepTraffic serveSweep(const MpiSession& mpi, SweepStore& store, ChunkScheduler
 void workSweep(const MpiSession& mpi, int columns, const std::function<SweepRecord(long)>& evaluate) {
 #ifdef ROLLVIZ_HAVE_MPI
   (void)mpi, (void)columns; // the session only has to be alive; records carry their own column count
-  std::vector<char> results;
-  for (;;) {
-    MPI_Send(results.data(), static_cast<int>(results.size()), MPI_CHAR, 0, kRequestTag, MPI_COMM_WORLD);
+  std::vector<char> results, sending; // sending: the records on their way while the next are computed
+  std::int64_t chunk[2];
+  MPI_Send(results.data(), 0, MPI_CHAR, 0, kRequestTag, MPI_COMM_WORLD);
+  MPI_Recv(chunk, 2, MPI_INT64_T, 0, kChunkTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+  while (chunk[0] != chunk[1]) {
+    // ask for the next chunk now (with the last one's records), compute this one, then take the answer
+    sending.swap(results);
+    MPI_Request request;
+    MPI_Isend(sending.data(), static_cast<int>(sending.size()), MPI_CHAR, 0, kRequestTag, MPI_COMM_WORLD,
+              &request);
     results.clear();
-    std::int64_t chunk[2];
-    MPI_Recv(chunk, 2, MPI_INT64_T, 0, kChunkTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-    if (chunk[0] == chunk[1]) return;
     for (std::int64_t i = chunk[0]; i < chunk[1]; ++i)
       packRecord(results, static_cast<long>(i), evaluate(static_cast<long>(i)));
+    MPI_Recv(chunk, 2, MPI_INT64_T, 0, kChunkTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    MPI_Wait(&request, MPI_STATUS_IGNORE); // answered, so received: done at once
   }
+  MPI_Send(results.data(), static_cast<int>(results.size()), MPI_CHAR, 0, kLastTag, MPI_COMM_WORLD);
 #else
   (void)mpi, (void)columns, (void)evaluate;
 #endif

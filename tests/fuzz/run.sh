@@ -8,7 +8,7 @@ cd "$(dirname "$0")/../.."
 seconds=${1:-30}
 findings=build/fuzz/findings
 mkdir -p "$findings"
-for target in scene override; do
+for target in scene override sweep; do
   exe=build/fuzz/tests/fuzz/fuzz_$target
   corpus=build/fuzz/corpus-$target
   mkdir -p "$corpus"
@@ -18,7 +18,7 @@ for target in scene override; do
     "$exe" -runs=0 "$regressions"/*
   fi
   seeds=scenes
-  [ "$target" = override ] && seeds=tests/fuzz/seeds/override
+  [ "$target" != scene ] && seeds=tests/fuzz/seeds/$target
   echo "== fuzz_$target: ${seconds} s"
   "$exe" -max_total_time="$seconds" -timeout=5 -rss_limit_mb=2048 -max_len=8192 -print_final_stats=1 \
     -artifact_prefix="$findings/$target-" "$corpus" "$seeds"
