@@ -198,7 +198,8 @@ const ToolRegistry& ToolRegistry::builtin() {
                      {"status", "ok, or failed: the reason"}},
          .reference = "Cincotta & Simo, A&AS 147 (2000) 205 (MEGNO charts); Polychronopoulos & Kuck, IEEE TC "
                       "36 (1987) 1425 (guided self-scheduling)",
-         .computation = "scenes/Sweep.h (evaluateSweepPoint); dynamics/jobs/SweepStore.h; app/cli/SweepMpi.h",
+         .computation = "dynamics/jobs/SweepStore.h (the store, chunks and threads); scenes/Sweep.h "
+                        "(evaluateSweepPoint); app/cli/SweepMpi.h (the ranks)",
          .options = &sweepOptionsTable()});
     return t;
   }();

@@ -540,7 +540,7 @@ class Cli(unittest.TestCase):
             self.assertEqual(open(outs[0]).read(), open(outs[1]).read(), tool)
         # a surface killed after its first save and resumed with another number of threads: the same file
         ck, resumed = self.path("grid.ck"), self.path("resumed.csv")
-        args = ["surface", hh, "--x", "-0.4,0.4", "--y", "-0.4,0.4", "--step", "0.01"]
+        args = ["surface", hh, "--x", "-0.4,0.4", "--y", "-0.4,0.4", "--step", "0.005"]  # ~5 s: saves after 1 s
         self.start_until_checkpoint([*args, "--threads", "1", "-o", resumed, "--checkpoint", ck], ck)
         r = run(*args, "--threads", "2", "-o", resumed, "--checkpoint", ck)
         self.assertEqual(r.returncode, 0, r.stderr)
