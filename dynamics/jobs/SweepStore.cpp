@@ -194,7 +194,8 @@ bool runSweepThreads(SweepStore& store, ChunkScheduler& scheduler,
   std::exception_ptr failure; // a disk failure ends the run
   std::mutex failureMutex;
   const ToolControl pointControl{[&] { return stop.load(std::memory_order_relaxed); }, [](double) {}};
-  std::atomic<int> active{std::max(1, threads)};
+  const int count = std::max(1, threads);
+  std::atomic<int> active{count}; // counted down by each worker as it ends
   const auto worker = [&] {
     try {
       while (!stop.load()) {
@@ -214,7 +215,8 @@ bool runSweepThreads(SweepStore& store, ChunkScheduler& scheduler,
     --active;
   };
   std::vector<std::thread> pool;
-  for (int t = 0; t < active.load(); ++t)
+  pool.reserve(static_cast<std::size_t>(count));
+  for (int t = 0; t < count; ++t) // not `active`: a worker with nothing to do ends (and counts down) at once
     pool.emplace_back(worker);
   const double total = static_cast<double>(std::max(1L, store.points()));
   while (active.load() > 0) {

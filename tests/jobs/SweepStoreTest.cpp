@@ -154,6 +154,27 @@ TEST(SweepStore, AStoppedRunResumesWithoutRecomputing) {
   store.remove();
 }
 
+// more threads than work (a resumed sweep with nothing or one point left): every thread ends, none hangs
+TEST(SweepStore, ThreadsWithNothingToDoEnd) {
+  const std::string path = tempPath("idle");
+  std::filesystem::remove(path);
+  SweepStore store(path, "idle", 3, 1, "-o");
+  store.write(0, {{1.0}, 0, true, ""});
+  store.write(2, {{1.0}, 0, true, ""});
+  std::atomic<int> calls{0};
+  const auto evaluate = [&](long, const ToolControl&) {
+    ++calls;
+    return SweepRecord{{2.0}, 0, true, ""};
+  };
+  for (int round = 0; round < 2; ++round) { // one point left, then none
+    ChunkScheduler scheduler(store, 8);
+    EXPECT_TRUE(runSweepThreads(store, scheduler, evaluate, 8, {}));
+  }
+  EXPECT_EQ(calls.load(), 1);
+  EXPECT_EQ(store.read(1).values, (std::vector<double>{2.0}));
+  store.remove();
+}
+
 TEST(SweepStore, RecordsCrossBetweenRanksIntact) {
   std::vector<char> bytes;
   packRecord(bytes, 12, {{1.0, std::nan(""), -0.0}, 2.5, false, "no state here"});
