@@ -137,13 +137,22 @@ int runSweep(const SweepOptions& o) {
   };
   Progress progress("sweep");
   const auto start = std::chrono::steady_clock::now();
+  // on a terminal a live line; elsewhere (mpirun forwards stderr through a pipe, batch logs) a line every 30
+  // s
+  const bool terminal = ::isatty(STDERR_FILENO) == 1;
+  auto logged = start;
   const auto report = [&] {
     const long done = store.doneCount(), total = spec->points();
-    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const auto clock = std::chrono::steady_clock::now();
+    const double elapsed = std::chrono::duration<double>(clock - start).count();
     const long now = done - resumed;
     const double eta = now > 0 ? elapsed / now * (total - done) : NAN;
-    progress.update(static_cast<double>(done) / total,
-                    fmt::format("{}/{} points, ETA {}", done, total, duration(eta)));
+    const std::string detail = fmt::format("{}/{} points, ETA {}", done, total, duration(eta));
+    progress.update(static_cast<double>(done) / total, detail);
+    if (!terminal && clock - logged >= std::chrono::seconds(30)) {
+      logged = clock;
+      fmt::print(stderr, "sweep: {:.0f}%  {}\n", 100.0 * done / total, detail);
+    }
   };
   ToolControl control;
   control.stopRequested = [] { return interrupted(); };
