@@ -175,6 +175,33 @@ TEST(SweepStore, ThreadsWithNothingToDoEnd) {
   store.remove();
 }
 
+// the GUI reads a sweep while its job writes: a point that reads as done has its whole record
+TEST(SweepStore, ARunningSweepCanBeReadWhileItIsWritten) {
+  const std::string path = tempPath("live");
+  std::filesystem::remove(path);
+  SweepStore store(path, "live", 200, 2, "-o");
+  ChunkScheduler scheduler(store, 2);
+  std::atomic<bool> finished{false};
+  long checked = 0;
+  std::thread reader([&] {
+    std::vector<char> seen(200, 0);
+    while (!finished.load())
+      for (long i = 0; i < 200; ++i)
+        if (!seen[static_cast<std::size_t>(i)] && store.done(i)) {
+          seen[static_cast<std::size_t>(i)] = 1;
+          const SweepRecord r = store.read(i), expected = slowRecord(i, {});
+          EXPECT_EQ(r.values, expected.values) << i;
+          EXPECT_EQ(r.ok, expected.ok) << i;
+          ++checked;
+        }
+  });
+  EXPECT_TRUE(runSweepThreads(store, scheduler, slowRecord, 2, {}));
+  finished = true;
+  reader.join();
+  EXPECT_GT(checked, 0);
+  store.remove();
+}
+
 TEST(SweepStore, RecordsCrossBetweenRanksIntact) {
   std::vector<char> bytes;
   packRecord(bytes, 12, {{1.0, std::nan(""), -0.0}, 2.5, false, "no state here"});
