@@ -124,12 +124,14 @@ std::vector<SweepQuantity> makeQuantities() {
                }});
   q.push_back({"fixedpoint.type", "fixedpoint",
                "the type of the fixed point of order fixedpoint.order found from the point: " + typeCodes(),
-               single("fixedpoint.type"), [](const SweepSpec&, const Scene& s, const ToolControl& c) {
+               single("fixedpoint.type"),
+               [](const SweepSpec&, const Scene& s, const ToolControl& c) {
                  const SceneMap m(s);
                  const ReturnMap map = m.map();
                  const FixedPointResult r = findFixedPoint(map, m.guess(), m.search(), c);
                  return std::vector<double>{static_cast<double>(r.type)};
-               }});
+               },
+               /*needsMap=*/true});
   q.push_back({"fixedpoint.order", "fixedpoint",
                "the least period (1..options.max_order) of a periodic point found within options.radius of "
                "the point, and its type (as fixedpoint.type)",
@@ -157,9 +159,10 @@ std::vector<SweepQuantity> makeQuantities() {
                    return std::vector<double>{static_cast<double>(period), static_cast<double>(r.type)};
                  }
                  throw ComputationError(fmt::format("within radius {}: {}", radius, last));
-               }});
+               },
+               /*needsMap=*/true});
   q.push_back(
-      {"observable.", "integrate",
+      {"observable.", "",
        "observable.NAME: the observable's value at options.time, or its time average over [0, time] "
        "(options.statistic)",
        [](const SweepSpec& sp) { return std::vector<std::string>{sp.quantity->id + sp.quantityName}; },
@@ -176,7 +179,7 @@ std::vector<SweepQuantity> makeQuantities() {
                      });
          return std::vector<double>{mean ? sum / time : last};
        }});
-  q.push_back({"reversal", "integrate",
+  q.push_back({"reversal", "",
                "reversal[.NAME]: whether the spin about the vertical (or the observable NAME) changed sign "
                "within options.time (1/0), when it first did (linear interpolation) and its value at the end",
                [](const SweepSpec&) {
@@ -195,7 +198,8 @@ std::vector<SweepQuantity> makeQuantities() {
                                end = b;
                              });
                  return std::vector<double>{std::isnan(at) ? 0.0 : 1.0, at, end};
-               }});
+               },
+               /*needsMap=*/false, /*cloud=*/false, /*optionalName=*/true});
   q.push_back({"orbit", "poincare",
                "an orbit diagram: the last options.orbit_points points (after options.transient) of the map "
                "coordinate options.coordinate, one row per grid point",
@@ -223,7 +227,8 @@ std::vector<SweepQuantity> makeQuantities() {
                    if (n >= skip) v.push_back(k < p->coordinates.size() ? p->coordinates[k] : kNaN);
                  }
                  return v;
-               }});
+               },
+               /*needsMap=*/true, /*cloud=*/true});
   return q;
 }
 
@@ -337,10 +342,14 @@ SweepSpec sweepFromJson(json doc, const std::string& source) {
   const std::string quantity = text(doc["quantity"], root / "quantity");
   for (const auto& q : sweepQuantities()) {
     const bool prefix = q.id.back() == '.';
-    if (quantity == q.id || (prefix && quantity.rfind(q.id, 0) == 0 && quantity.size() > q.id.size()) ||
-        (q.id == "reversal" && quantity.rfind("reversal.", 0) == 0)) {
+    const std::string stem = prefix ? q.id : q.id + "."; // what a name follows: "observable.", "reversal."
+    if (!prefix && quantity == q.id) {
       spec.quantity = &q;
-      spec.quantityName = quantity.substr(std::min(quantity.size(), q.id.size() + (prefix ? 0 : 1)));
+      break;
+    }
+    if ((prefix || q.optionalName) && quantity.rfind(stem, 0) == 0 && quantity.size() > stem.size()) {
+      spec.quantity = &q;
+      spec.quantityName = quantity.substr(stem.size());
       break;
     }
   }
@@ -350,14 +359,13 @@ SweepSpec sweepFromJson(json doc, const std::string& source) {
       known += " " + q.id + (q.id.back() == '.' ? "NAME" : "");
     (root / "quantity").fail("unknown quantity '" + quantity + "' (known:" + known + ")");
   }
-  if (!ToolRegistry::builtin().find(spec.quantity->tool) && spec.quantity->tool != "integrate")
+  if (!spec.quantity->tool.empty() && !ToolRegistry::builtin().find(spec.quantity->tool))
     (root / "quantity").fail("the tool " + spec.quantity->tool + " is not registered");
   if (!spec.quantityName.empty() && spec.base.model->findObservable(spec.quantityName) < 0)
     (root / "quantity")
         .fail("unknown observable '" + spec.quantityName + "' of " + spec.base.model->info().id +
               " (`rollviz describe " + spec.base.model->info().id + "` lists them)");
-  const bool needsMap = spec.quantity->tool == "fixedpoint" || spec.quantity->tool == "poincare";
-  if (needsMap && !spec.base.model->isMap() && spec.base.poincare.observable.empty())
+  if (spec.quantity->needsMap && !spec.base.model->isMap() && spec.base.poincare.observable.empty())
     (root / "quantity").fail(quantity + " needs the scene's Poincare section (poincare.section)");
 
   // the options
@@ -492,7 +500,7 @@ SweepChartData sweepChartData(const SweepSpec& spec) {
     d.maxs.push_back(a.max);
   }
   d.columns = spec.columns;
-  d.orbit = spec.quantity->id == "orbit";
+  d.orbit = spec.quantity->cloud;
   return d;
 }
 

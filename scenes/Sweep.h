@@ -32,12 +32,15 @@ struct SweepSpec;
 /// A number per grid point, computed by a registered tool (ToolRegistry id `tool`).
 struct SweepQuantity {
   std::string id;          ///< as written in a sweep file; a trailing '.' takes a name ("observable.")
-  std::string tool;        ///< the registered tool that computes it
+  std::string tool;        ///< the registered tool that computes it ("": the scene's own integration)
   std::string description; ///< one line for `rollviz list quantities` and docs
   /// The CSV columns it fills.
   std::function<std::vector<std::string>(const SweepSpec&)> columns;
   /// Its values at one grid point's scene; throws ComputationError (or Stopped) when there are none.
   std::function<std::vector<double>(const SweepSpec&, const Scene&, const ToolControl&)> evaluate;
+  bool needsMap = false;     ///< computed on the scene's map: a flow needs a Poincare section
+  bool cloud = false;        ///< every column is a point of an orbit diagram (drawn as a cloud)
+  bool optionalName = false; ///< takes ".NAME" but has a default (reversal[.NAME])
 };
 
 /// Every quantity a sweep can chart.

@@ -51,21 +51,25 @@ bool SweepTask::run(const ToolControl& control) {
 }
 
 void SweepTask::reset() {
+  ++generation_;
   if (store_) store_->remove();
   store_ = std::make_unique<SweepStore>(path_, spec_.resolved.dump(), spec_.points(),
                                         static_cast<int>(spec_.columns.size()), "sweep");
 }
 
-SweepChartData SweepTask::chartData() const {
-  SweepChartData d = sweepChartData(spec_);
-  const std::size_t n = spec_.columns.size();
-  d.values.assign(static_cast<std::size_t>(spec_.points()) * n, std::numeric_limits<double>::quiet_NaN());
-  for (long i = 0; i < spec_.points(); ++i)
-    if (store_->done(i)) {
-      const SweepRecord r = store_->read(i);
+void SweepTask::updateChartData(SweepChartData& d, std::vector<char>& read) const {
+  const std::size_t n = spec_.columns.size(), points = static_cast<std::size_t>(spec_.points());
+  if (read.size() != points) {
+    d = sweepChartData(spec_);
+    d.values.assign(points * n, std::numeric_limits<double>::quiet_NaN());
+    read.assign(points, 0);
+  }
+  for (std::size_t i = 0; i < points; ++i)
+    if (!read[i] && store_->done(static_cast<long>(i))) {
+      const SweepRecord r = store_->read(static_cast<long>(i));
       std::copy(r.values.begin(), r.values.end(), d.values.begin() + static_cast<std::ptrdiff_t>(i * n));
+      read[i] = 1;
     }
-  return d;
 }
 
 } // namespace rv

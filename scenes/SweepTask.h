@@ -26,14 +26,19 @@ public:
   const SweepSpec& spec() const { return spec_; }
   /// The records so far; safe to read while the task runs (a point is done once its record is whole).
   const SweepStore& store() const { return *store_; }
-  /// The chart's data now: the values of the points done, NaN for the others.
-  SweepChartData chartData() const;
+  /// Brings a chart's data up to date: the values of the points done, NaN for the others. `read` marks the
+  /// points already read into `data` (both empty at first: they are sized here), so only the points done
+  /// since are read from the store.
+  void updateChartData(SweepChartData& data, std::vector<char>& read) const;
+  /// How many times the store was started afresh (a restart makes what was read of it stale).
+  int generation() const { return generation_; }
 
 private:
   SweepSpec spec_;
   int threads_;
   std::string path_;
   std::unique_ptr<SweepStore> store_;
+  int generation_ = 0;
 };
 
 } // namespace rv

@@ -13,6 +13,14 @@
 namespace rv {
 
 namespace {
+// "observable.NAME" for the quantities that take a name
+std::string quantityName(const SweepQuantity& q) {
+  return q.id.back() == '.' ? q.id + "NAME" : q.id;
+}
+std::string toolOf(const SweepQuantity& q) {
+  return q.tool.empty() ? "integrate" : q.tool;
+}
+
 void printParameters(const ParameterTable& table) {
   for (const auto& s : table.specs()) {
     std::string range, value = fmt::format("{}", s.defaultValue);
@@ -27,15 +35,15 @@ void printParameters(const ParameterTable& table) {
                s.unit.empty() ? "" : " (" + s.unit + ")");
   }
 }
-// the sweep quantities a tool yields (all of them for the sweep itself)
-void printQuantities(const std::string& tool) {
+// the sweep quantities a tool yields (all of them for the sweep itself: the tool with the sweep's options)
+void printQuantities(const ToolEntry& tool) {
+  const bool sweep = tool.options == &sweepOptionsTable();
   bool any = false;
   for (const auto& q : sweepQuantities()) {
-    if (tool != "sweep" && q.tool != tool) continue;
+    if (!sweep && q.tool != tool.id) continue;
     if (!any) fmt::print("\nsweep quantities (rollviz sweep, \"quantity\"):\n");
     any = true;
-    fmt::print("  {:<22} {}{}\n", q.id.back() == '.' ? q.id + "NAME" : q.id, q.description,
-               tool == "sweep" ? " [" + q.tool + "]" : "");
+    fmt::print("  {:<22} {}{}\n", quantityName(q), q.description, sweep ? " [" + toolOf(q) + "]" : "");
   }
 }
 } // namespace
@@ -46,42 +54,42 @@ Command addListCommand(CLI::App& app) {
   cmd->add_option("what", *whatPtr, "problems | integrators | tools | quantities | scenes")
       ->required()
       ->check(CLI::IsMember({"problems", "integrators", "tools", "quantities", "scenes"}));
-  return {
-      cmd, [whatPtr] {
-        const std::string& what = *whatPtr;
-        if (what == "problems")
-          for (const auto& e : ModelRegistry::builtin().entries())
-            fmt::print("{}\n", e.info->id);
-        else if (what == "integrators")
-          for (const auto& e : IntegratorRegistry::builtin().entries())
-            fmt::print("{:<10} {}\n", e.id, e.title);
-        else if (what == "quantities")
-          for (const auto& q : sweepQuantities())
-            fmt::print("{:<20} {}: {}\n", q.id.back() == '.' ? q.id + "NAME" : q.id, q.tool, q.description);
-        else if (what == "tools") {
-          // the manual's tree: a child indented under its parent
-          const auto& tools = ToolRegistry::builtin().entries();
-          const auto depth = [&](const ToolEntry& e) {
-            int d = 0;
-            for (const ToolEntry* p = &e; !p->parent.empty(); p = &ToolRegistry::builtin().get(p->parent))
-              ++d;
-            return d;
-          };
-          for (const auto& e : tools)
-            fmt::print("{:<{}}{:<{}} {}: {}\n", "", 2 * depth(e), e.id, 20 - 2 * depth(e), e.title,
-                       e.description);
-          fmt::print("\nrollviz describe-tool ID: a tool's settings (scene section, --set SECTION.ID=VALUE) "
-                     "and outputs\n");
-        } else {
-          std::vector<std::string> files;
-          for (const auto& f : std::filesystem::directory_iterator(scenesDirectory()))
-            if (f.path().extension() == ".json") files.push_back(f.path().string());
-          std::sort(files.begin(), files.end());
-          for (const auto& f : files)
-            fmt::print("{}\n", f);
-        }
-        return 0;
-      }};
+  return {cmd, [whatPtr] {
+            const std::string& what = *whatPtr;
+            if (what == "problems")
+              for (const auto& e : ModelRegistry::builtin().entries())
+                fmt::print("{}\n", e.info->id);
+            else if (what == "integrators")
+              for (const auto& e : IntegratorRegistry::builtin().entries())
+                fmt::print("{:<10} {}\n", e.id, e.title);
+            else if (what == "quantities")
+              for (const auto& q : sweepQuantities())
+                fmt::print("{:<20} {}: {}\n", quantityName(q), toolOf(q), q.description);
+            else if (what == "tools") {
+              // the manual's tree: a child indented under its parent
+              const auto& tools = ToolRegistry::builtin().entries();
+              const auto depth = [&](const ToolEntry& e) {
+                int d = 0;
+                for (const ToolEntry* p = &e; !p->parent.empty(); p = &ToolRegistry::builtin().get(p->parent))
+                  ++d;
+                return d;
+              };
+              for (const auto& e : tools)
+                fmt::print("{:<{}}{:<{}} {}: {}\n", "", 2 * depth(e), e.id, 20 - 2 * depth(e), e.title,
+                           e.description);
+              fmt::print(
+                  "\nrollviz describe-tool ID: a tool's settings (scene section, --set SECTION.ID=VALUE) "
+                  "and outputs\n");
+            } else {
+              std::vector<std::string> files;
+              for (const auto& f : std::filesystem::directory_iterator(scenesDirectory()))
+                if (f.path().extension() == ".json") files.push_back(f.path().string());
+              std::sort(files.begin(), files.end());
+              for (const auto& f : files)
+                fmt::print("{}\n", f);
+            }
+            return 0;
+          }};
 }
 
 Command addDescribeToolCommand(CLI::App& app) {
@@ -110,7 +118,7 @@ Command addDescribeToolCommand(CLI::App& app) {
         fmt::print("\noutputs:\n");
         for (const auto& out : e.outputs)
           fmt::print("  {:<22} {}\n", out.name, out.description);
-        printQuantities(e.id);
+        printQuantities(e);
         return 0;
       }};
 }

@@ -185,9 +185,7 @@ int runSweep(const SweepOptions& o) {
   const bool complete = store.doneCount() == spec->points();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (complete) writeResults(*spec, store, o);
-  long failed = 0;
-  for (long i = 0; i < spec->points(); ++i) // cheap next to the sweep itself
-    failed += store.done(i) && !store.read(i).ok ? 1 : 0;
+  const long failed = store.failedCount();
   fmt::print(
       stderr,
       "sweep: {} points: {} computed now, {} from the checkpoint, {} failed; {:.3g} s on {} thread{}{}{}\n",

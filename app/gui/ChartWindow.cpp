@@ -8,8 +8,6 @@
 #include "scenes/SceneLoader.h"
 
 #include <QHBoxLayout>
-#include <QProgressBar>
-#include <QPushButton>
 #include <QTimer>
 #include <vtkChartXY.h>
 #include <vtkPlotPoints.h>
@@ -22,14 +20,7 @@ ChartWindow::ChartWindow(JobTree& jobs, const nlohmann::json& document, const st
                    QString::fromStdString(view), parent),
       viewName_(view), diagram_(diagram), jobs_(jobs) {
   setStatus("computing…");
-  progressBar_ = new QProgressBar(this);
-  progressBar_->setRange(0, 1000);
-  progressBar_->setTextVisible(false);
-  cancel_ = new QPushButton("Cancel", this);
-  cancel_->setToolTip("stop the computation (the tool manager continues it)");
-  connect(cancel_, &QPushButton::clicked, this, &ChartWindow::cancel);
-  bar()->insertWidget(1, progressBar_);
-  bar()->insertWidget(2, cancel_);
+  addProgress("Cancel", "stop the computation (the tool manager continues it)", [this] { cancel(); });
   Job& job = jobs_.add(std::make_unique<ChartTask>(document, source, view, diagram));
   jobId_ = job.id();
   job.start();
@@ -54,11 +45,8 @@ void ChartWindow::poll() {
   Job* j = job();
   const Job::Status status = j ? j->status() : Job::Status::Failed;
   const bool running = status == Job::Status::Running;
-  progressBar_->setVisible(running);
-  cancel_->setVisible(running);
-  cancel_->setEnabled(running);
+  showProgress(running, j ? j->progress() : 0);
   if (running) {
-    progressBar_->setValue(static_cast<int>(1000 * j->progress()));
     if (seen_ != status) setStatus("computing…");
     seen_ = status;
     return;

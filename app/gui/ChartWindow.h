@@ -13,9 +13,6 @@
 #include <string>
 #include <vector>
 
-class QProgressBar;
-class QPushButton;
-
 namespace rv {
 
 class ChartWindow : public FilterWindow {
@@ -66,8 +63,6 @@ private:
   JobTree& jobs_;
   int jobId_;
   Job::Status seen_ = Job::Status::Ready;
-  QProgressBar* progressBar_;
-  QPushButton* cancel_;
 };
 
 } // namespace rv

@@ -5,6 +5,7 @@
 
 #include <QFileDialog>
 #include <QLabel>
+#include <QProgressBar>
 #include <QPushButton>
 #include <QVBoxLayout>
 #include <fstream>
@@ -35,6 +36,26 @@ FilterWindow::FilterWindow(const QString& title, const QString& fileName, QWidge
   bar_->addWidget(csv);
   layout->addLayout(bar_);
   resize(640, 640);
+}
+
+void FilterWindow::addProgress(const QString& stopText, const QString& stopTip,
+                               const std::function<void()>& stop) {
+  progressBar_ = new QProgressBar(this);
+  progressBar_->setRange(0, 1000);
+  progressBar_->setTextVisible(false);
+  stop_ = new QPushButton(stopText, this);
+  stop_->setToolTip(stopTip);
+  connect(stop_, &QPushButton::clicked, this, stop);
+  bar_->insertWidget(1, progressBar_);
+  bar_->insertWidget(2, stop_);
+}
+
+void FilterWindow::showProgress(bool running, double fraction) {
+  if (!progressBar_) return;
+  progressBar_->setVisible(running);
+  stop_->setVisible(running);
+  stop_->setEnabled(running);
+  if (running) progressBar_->setValue(static_cast<int>(1000 * fraction));
 }
 
 void FilterWindow::setStatus(const QString& text) {

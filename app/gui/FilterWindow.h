@@ -8,6 +8,8 @@
 #include <functional>
 
 class QLabel;
+class QProgressBar;
+class QPushButton;
 class QHBoxLayout;
 
 namespace rv {
@@ -40,11 +42,18 @@ protected:
   void replaceView();
   /// The row under the chart, for a window's own controls (left of the save buttons).
   QHBoxLayout* bar() const { return bar_; }
+  /// For windows whose chart is computed by a job: a progress bar and a stop button (`stopText`, `stopTip`)
+  /// in the bar; a click runs `stop`.
+  void addProgress(const QString& stopText, const QString& stopTip, const std::function<void()>& stop);
+  /// Shows the progress bar and the stop button at `fraction` while the job runs, hides them otherwise.
+  void showProgress(bool running, double fraction);
 
 private:
   QtVtkWidget* view_;
   QLabel* status_;
   QHBoxLayout* bar_;
+  QProgressBar* progressBar_ = nullptr;
+  QPushButton* stop_ = nullptr;
   QString fileName_;
 };
 

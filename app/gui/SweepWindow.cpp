@@ -7,8 +7,6 @@
 #include <QEvent>
 #include <QHBoxLayout>
 #include <QMouseEvent>
-#include <QProgressBar>
-#include <QPushButton>
 #include <QTimer>
 #include <cmath>
 
@@ -20,16 +18,9 @@ SweepWindow::SweepWindow(JobTree& jobs, SweepSpec spec, QWidget* parent)
                    "sweep", parent),
       spec_(spec), jobs_(jobs) {
   setStatus("computing…");
-  progressBar_ = new QProgressBar(this);
-  progressBar_->setRange(0, 1000);
-  progressBar_->setTextVisible(false);
-  cancel_ = new QPushButton("Stop", this);
-  cancel_->setToolTip("stop the sweep (the tool manager continues it with the points left)");
-  connect(cancel_, &QPushButton::clicked, this, [this] {
+  addProgress("Stop", "stop the sweep (the tool manager continues it with the points left)", [this] {
     if (Job* j = job()) j->stop();
   });
-  bar()->insertWidget(1, progressBar_);
-  bar()->insertWidget(2, cancel_);
   Job& job = jobs_.add(std::make_unique<SweepTask>(std::move(spec)));
   jobId_ = job.id();
   job.start();
@@ -98,8 +89,7 @@ void SweepWindow::poll() {
   Job* j = job();
   const Job::Status status = j ? j->status() : Job::Status::Failed;
   const bool running = status == Job::Status::Running;
-  progressBar_->setVisible(running);
-  cancel_->setVisible(running);
+  showProgress(running, j ? j->progress() : 0);
   if (!j) {
     if (seen_ != Job::Status::Failed) setStatus("deleted in the tool manager");
     seen_ = Job::Status::Failed;
@@ -107,18 +97,23 @@ void SweepWindow::poll() {
   }
   const auto& task = static_cast<const SweepTask&>(j->task());
   const long done = task.store().doneCount();
+  if (task.generation() != generation_) { // restarted: its store is new
+    generation_ = task.generation();
+    read_.clear();
+    done_ = -1;
+  }
   if (done != done_) { // new points: draw again (a chart is never attached to a view that drew another)
     done_ = done;
+    task.updateChartData(data_, read_); // only the points done since the last time are read
     if (chart_) {
       chart_.reset();
       replaceView();
       view()->installEventFilter(this);
     }
-    chart_ = makeSweepChart(task.chartData());
+    chart_ = makeSweepChart(data_);
     chart_->attach(view()->renderWindow());
     view()->update();
   }
-  progressBar_->setValue(static_cast<int>(1000 * j->progress()));
   const QString count = QString("%1 of %2 points").arg(done).arg(spec_.points());
   if (running) {
     setStatus("computing… " + count);

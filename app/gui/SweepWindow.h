@@ -9,9 +9,7 @@
 
 #include <memory>
 #include <nlohmann/json.hpp>
-
-class QProgressBar;
-class QPushButton;
+#include <vector>
 
 namespace rv {
 
@@ -50,8 +48,9 @@ private:
   long done_ = -1;
   Job::Status seen_ = Job::Status::Ready;
   std::shared_ptr<Chart> chart_;
-  QProgressBar* progressBar_;
-  QPushButton* cancel_;
+  SweepChartData data_;    ///< what was read of the job's store
+  std::vector<char> read_; ///< the points read into data_
+  int generation_ = 0;     ///< of the store read (SweepTask::generation)
 };
 
 } // namespace rv

@@ -110,9 +110,10 @@ SweepStore::SweepStore(std::string path, const std::string& identity, long point
       throw InputError(what + " " + path_ + ": truncated sweep checkpoint");
     }
     for (long i = 0; i < n; ++i)
-      if (block[static_cast<std::size_t>(i) * rb] != kNone) {
+      if (const char state = block[static_cast<std::size_t>(i) * rb]; state != kNone) {
         done_[static_cast<std::size_t>(first + i)].store(1, std::memory_order_relaxed);
         ++doneCount_;
+        if (state == kFailed) ++failedCount_;
       }
   }
 }
@@ -135,7 +136,10 @@ void SweepStore::write(long index, const SweepRecord& r) {
   writeAll(fd_, buf.data(), buf.size(), dataOffset_ + static_cast<std::int64_t>(index * recordBytes()),
            path_);
   // after the record is written: a reader that sees the flag reads the whole record
-  if (done_[static_cast<std::size_t>(index)].exchange(1, std::memory_order_acq_rel) == 0) ++doneCount_;
+  if (done_[static_cast<std::size_t>(index)].exchange(1, std::memory_order_acq_rel) == 0) {
+    ++doneCount_;
+    if (!r.ok) ++failedCount_; // a point is written once (a rewrite keeps its first count)
+  }
 }
 
 SweepRecord SweepStore::read(long index) const {

@@ -52,6 +52,8 @@ public:
   }
   /// Points with a record.
   long doneCount() const { return doneCount_.load(); }
+  /// Points whose record says they failed.
+  long failedCount() const { return failedCount_.load(); }
   /// Writes the record of `index` (thread-safe for distinct indices). ComputationError when the disk fails.
   void write(long index, const SweepRecord& record);
   /// The record of a done point.
@@ -68,7 +70,7 @@ private:
   int columns_;
   std::int64_t dataOffset_ = 0;
   std::vector<std::atomic<unsigned char>> done_;
-  std::atomic<long> doneCount_{0};
+  std::atomic<long> doneCount_{0}, failedCount_{0};
 };
 
 /// Hands out the points without a record in chunks [begin, end) of consecutive indices.

@@ -1,7 +1,8 @@
-// libFuzzer target: any bytes as a sweep file (run from the project root, so that "scene": "scenes/..." loads).
-// Validation either succeeds -- and then the scenes of the grid's first and last points are built -- or fails
-// with InputError (a grid point with no valid scene: InputError too); any other exception, a crash, a
-// sanitizer report, a hang or unbounded memory is a bug. No point is computed: that is the tools' own fuzzing.
+// libFuzzer target: any bytes as a sweep file (run from the project root, so that "scene": "scenes/..."
+// loads). Validation either succeeds -- and then the scenes of the grid's first and last points are built --
+// or fails with InputError (a grid point with no valid scene: InputError too); any other exception, a crash,
+// a sanitizer report, a hang or unbounded memory is a bug. No point is computed: that is the tools' own
+// fuzzing.
 #include "dynamics/core/Errors.h"
 #include "scenes/SceneLoader.h"
 #include "scenes/Sweep.h"

@@ -42,6 +42,7 @@ TEST(SweepStore, RecordsSurviveAReopenAndOtherRunsAreRefused) {
   }
   SweepStore again(path, "run A", 10, 2, "--checkpoint");
   EXPECT_EQ(again.doneCount(), 2);
+  EXPECT_EQ(again.failedCount(), 1);
   EXPECT_TRUE(again.done(7) && again.done(2) && !again.done(0));
   const SweepRecord a = again.read(7), b = again.read(2);
   EXPECT_EQ(a.values, (std::vector<double>{1.5, -2.0}));
