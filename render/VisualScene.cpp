@@ -17,6 +17,7 @@
 #include <numbers>
 #include <vtkCamera.h>
 #include <vtkLightKit.h>
+#include <vtkPropCollection.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkTextActor.h>
@@ -101,12 +102,30 @@ VisualObject& VisualScene::add(std::unique_ptr<VisualObject> object) {
   for (auto& o : objects_)
     if (o->name() == object->name()) o.reset();
   std::erase(objects_, nullptr);
+  const auto viewProps = [this] {
+    std::vector<vtkProp*> out;
+    vtkCollectionSimpleIterator it;
+    renderer_->GetViewProps()->InitTraversal(it);
+    while (vtkProp* p = renderer_->GetViewProps()->GetNextProp(it))
+      out.push_back(p);
+    return out;
+  };
+  const auto before = viewProps();
   object->attach(renderer_);
+  auto& mine = props_[object->name()];
+  mine.clear();
+  for (vtkProp* p : viewProps())
+    if (std::find(before.begin(), before.end(), p) == before.end()) mine.push_back(p);
   ObjectOptions options = options_.object(object->name());
   if (!options_.objects.count(object->name())) options.enabled = object->shownByDefault();
   object->apply(options);
   objects_.push_back(std::move(object));
   return *objects_.back();
+}
+
+std::vector<vtkProp*> VisualScene::props(const std::string& name) const {
+  const auto it = props_.find(name);
+  return it == props_.end() ? std::vector<vtkProp*>{} : it->second;
 }
 
 VisualObject* VisualScene::find(const std::string& name) const {

@@ -6,10 +6,12 @@
 #include "render/ViewOptions.h"
 #include "render/objects/VisualObject.h"
 
+#include <map>
 #include <memory>
 #include <vector>
 #include <vtkSmartPointer.h>
 
+class vtkProp;
 class vtkRenderer;
 class vtkRenderWindow;
 class vtkTextActor;
@@ -29,6 +31,8 @@ public:
   VisualObject& add(std::unique_ptr<VisualObject> object);
   VisualObject* find(const std::string& name) const;
   const std::vector<std::unique_ptr<VisualObject>>& objects() const { return objects_; }
+  /// The props an object added to the renderer (exports name the pieces after their objects).
+  std::vector<vtkProp*> props(const std::string& name) const;
   /// Changes an object's appearance; the options are kept for re-runs.
   void setOptions(const std::string& name, const ObjectOptions& options);
   const ViewOptions& options() const { return options_; }
@@ -59,6 +63,7 @@ private:
   vtkSmartPointer<vtkRenderer> renderer_;
   vtkSmartPointer<vtkTextActor> overlay_;
   std::vector<std::unique_ptr<VisualObject>> objects_;
+  std::map<std::string, std::vector<vtkProp*>> props_; ///< by object name; the objects own them
 };
 
 } // namespace rv

@@ -8,6 +8,7 @@
 #include "app/cli/Progress.h"
 #include "dynamics/core/Errors.h"
 #include "dynamics/tools/ToolSettings.h"
+#include "render/export/VtkXmlFiles.h"
 #include "scenes/SceneTools.h"
 
 #include <cmath>
@@ -16,6 +17,7 @@
 #include <fmt/ranges.h>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 
 namespace rv {
@@ -155,7 +157,8 @@ void addGridArgs(CLI::App* cmd, GridArgs& a, bool ram) {
   cmd->add_option("--z", a.z, "3D grid of a 3D map: range MIN,MAX of the third (else grid.z is its value)");
   cmd->add_option("--step", a.step, "grid step along every axis (default: grid.step_x, step_y, step_z)");
   cmd->add_option("--threads", a.threads, "number of threads (default: grid.threads)");
-  cmd->add_option("-o,--output", a.output, "CSV file (default: standard output)");
+  cmd->add_option("-o,--output", a.output,
+                  "CSV file (default: standard output); a .vti file is image data for ParaView");
   addCheckpointOption(cmd, a.checkpoint);
   if (ram)
     cmd->add_option("--level", a.level,
@@ -192,7 +195,10 @@ int runGrid(const GridArgs& a, MapGrid::Kind kind) {
                         fmt::format("{} --x {} --y {} --z {} --step {} --level {} {}",
                                     s->scene().document.dump(), a.x, a.y, a.z, a.step, a.level, a.map.order));
   if (auto saved = checkpoint.load()) grid.restore(saved->state);
-  Output out(a.output);
+  const bool vti = hasExtension(a.output, ".vti");
+  if (vti) checkWritable(a.output, "-o");
+  std::optional<Output> out;
+  if (!vti) out.emplace(a.output);
   Progress progress(kind == MapGrid::Kind::Surface ? "surface" : "ram");
   const bool complete =
       checkpoint.run([&](const ToolControl& c) { return grid.run(c); },
@@ -205,8 +211,22 @@ int runGrid(const GridArgs& a, MapGrid::Kind kind) {
     names.push_back("allowed");
     if (!grid.levelName().empty()) names.push_back(grid.levelName());
   }
-  std::fprintf(out.get(), "%s\n", header(names).c_str());
   const GridValues& r = grid.result();
+  if (vti) {
+    ImageGrid image;
+    image.size = r.size;
+    for (int d = 0; d < 3; ++d)
+      image.origin[d] = g.axes[d].min, image.spacing[d] = g.axes[d].step;
+    if (!g.threeD) image.origin[2] = map.dimension() == 3 ? g.zValue : 0, image.spacing[2] = 1;
+    image.axisNames.assign(names.begin(), names.begin() + dims);
+    image.arrays.names.assign(names.begin() + dims, names.end());
+    image.arrays.values.push_back(r.values);
+    if (!r.level.empty()) image.arrays.values.push_back(r.level);
+    writeImageVti(a.output, image);
+    if (complete) checkpoint.finish();
+    return complete ? 0 : 130;
+  }
+  std::fprintf(out->get(), "%s\n", header(names).c_str());
   for (int k = 0; k < r.size[2]; ++k)
     for (int j = 0; j < r.size[1]; ++j)
       for (int i = 0; i < r.size[0]; ++i) {
@@ -215,9 +235,9 @@ int runGrid(const GridArgs& a, MapGrid::Kind kind) {
         row.resize(dims);
         row.push_back(r.values[at]);
         if (!r.level.empty()) row.push_back(r.level[at]);
-        printRow(out.get(), row);
+        printRow(out->get(), row);
       }
-  out.commit();
+  out->commit();
   if (complete) checkpoint.finish();
   return complete ? 0 : 130;
 }

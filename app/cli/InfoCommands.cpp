@@ -111,6 +111,12 @@ Command addDescribeToolCommand(CLI::App& app) {
         } else if (!e.section.empty()) {
           fmt::print("\nsettings: the scene section \"{}\" (README: scene files)\n", e.section);
         }
+        if (!e.alsoSections.empty()) {
+          std::string also;
+          for (const auto& a : e.alsoSections)
+            also += (also.empty() ? "" : ", ") + a;
+          fmt::print("\nalso reads the sections: {} (rollviz describe-tool of their tools)\n", also);
+        }
         if (e.options) {
           fmt::print("\noptions (a sweep file's \"options\"; id, default, range, meaning):\n");
           printParameters(*e.options);

@@ -4,6 +4,7 @@
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/TimeSampler.h"
 #include "dynamics/io/AtomicFile.h"
+#include "render/export/VtkXmlFiles.h"
 
 #include <cmath>
 #include <cstdio>
@@ -27,7 +28,10 @@ Command addIntegrateCommand(CLI::App& app) {
   cmd->add_option("--time", o->time, "how long to integrate (simulation time)")->required();
   cmd->add_option("--every", o->every, "output period (rows at t = 0, every, 2 every, ...)")->required();
   cmd->add_option("--columns", o->columns, "observables, comma separated (rollviz describe PROBLEM)");
-  cmd->add_option("-o,--output", o->output, "CSV file (default: standard output)");
+  cmd->add_option(
+      "-o,--output", o->output,
+      "CSV file (default: standard output); a .vtp file is a polyline for ParaView through the first "
+      "three columns, every column as point data");
   return {cmd, [o] {
             const double time = o->time, every = o->every;
             const std::string &columns = o->columns, &output = o->output;
@@ -46,6 +50,27 @@ Command addIntegrateCommand(CLI::App& app) {
             }
             if (cols.empty()) throw InputError("--columns: give at least one observable");
 
+            const auto& obs = scene.model->observables();
+            const long rows = static_cast<long>(std::floor(time / every * (1 + 1e-12))) + 1;
+            if (hasExtension(output, ".vtp")) {
+              checkWritable(output, "-o");
+              NamedColumns table;
+              for (int c : cols)
+                table.names.push_back(obs[c].id);
+              auto integrator = scene.startIntegrator();
+              Progress progress("integrate");
+              std::vector<double> row(cols.size());
+              const bool complete =
+                  sampleUniform(*integrator, every, rows, [&](double t, const Eigen::VectorXd& x) {
+                    for (std::size_t k = 0; k < cols.size(); ++k)
+                      row[k] = obs[cols[k]].value(t, x.data());
+                    table.addRow(row);
+                    progress.update(rows > 1 ? std::abs(t) / time : 1.0);
+                    return !interrupted();
+                  });
+              writePolyDataVtp(output, table, {0, cols.size() > 1 ? 1 : -1, cols.size() > 2 ? 2 : -1}, true);
+              return complete ? 0 : 130;
+            }
             std::unique_ptr<AtomicFile> file;
             FILE* out = stdout;
             if (!output.empty()) {
@@ -53,12 +78,10 @@ Command addIntegrateCommand(CLI::App& app) {
               out = std::fopen(file->tempPath().c_str(), "w");
               if (!out) throw InputError("-o " + output + ": cannot open for writing");
             }
-            const auto& obs = scene.model->observables();
             for (std::size_t k = 0; k < cols.size(); ++k)
               std::fprintf(out, "%s%s", k ? "," : "", obs[cols[k]].id.c_str());
             std::fputc('\n', out);
 
-            const long rows = static_cast<long>(std::floor(time / every * (1 + 1e-12))) + 1;
             auto integrator = scene.startIntegrator();
             Progress progress("integrate");
             std::string failure;

@@ -8,6 +8,7 @@
 #include "render/VisualScene.h"
 #include "render/charts/PoincareChart.h"
 #include "render/context/HeadlessContext.h"
+#include "render/export/VtkXmlFiles.h"
 #include "render/video/VideoExport.h"
 #include "scenes/SceneCharts.h"
 
@@ -42,7 +43,9 @@ Command addRenderCommand(CLI::App& app) {
   auto* cmd = app.add_subcommand("render", "render the 3D view of a scene at a time into a PNG");
   auto o = std::make_shared<RenderOptions>();
   addSceneArgs(cmd, o->scene);
-  cmd->add_option("-o,--output", o->output, "PNG file")->required();
+  cmd->add_option("-o,--output", o->output,
+                  "PNG file; a .vtm file is the view's pieces (bodies, plane, traces) for ParaView")
+      ->required();
   cmd->add_option("--size", o->size, "picture size WIDTHxHEIGHT")->capture_default_str();
   cmd->add_option("--time", o->time, "simulation time to show (the trace covers [0, time])")
       ->capture_default_str();
@@ -59,6 +62,10 @@ Command addRenderCommand(CLI::App& app) {
             VisualScene visual(*scene.model, scene.view, scene.initialState);
             Eigen::VectorXd x;
             playTo(visual, *integrator, o->time, x);
+            if (hasExtension(o->output, ".vtm")) {
+              writeSceneVtm(visual, o->output);
+              return 0;
+            }
             auto ctx = createHeadlessContext(w, h);
             visual.addTo(ctx->window());
             writePng(ctx->window(), o->output, "-o", o->snapshot);

@@ -11,6 +11,7 @@
 #include "render/Snapshot.h"
 #include "render/charts/SweepChart.h"
 #include "render/context/HeadlessContext.h"
+#include "render/export/VtkXmlFiles.h"
 #include "scenes/Sweep.h"
 
 #include <atomic>
@@ -54,26 +55,55 @@ void writePngChart(const SweepChartData& data, const std::string& path, const st
 namespace {
 
 // the CSV (and the chart's values) from the store, in grid order
-void writeResults(const SweepSpec& spec, const SweepStore& store, const SweepOptions& o) {
-  AtomicFile csv(o.output, "-o");
+// the grid as image data: a node per point, its columns and cost as arrays (NaN where it failed)
+void writeVti(const SweepSpec& spec, const SweepStore& store, const std::string& path) {
+  ImageGrid image;
+  for (std::size_t a = 0; a < spec.axes.size(); ++a) {
+    const SweepAxis& axis = spec.axes[a];
+    image.size[a] = axis.count;
+    image.origin[a] = axis.min;
+    image.spacing[a] = axis.count > 1 ? (axis.max - axis.min) / (axis.count - 1) : 1;
+    image.axisNames.push_back(spec.axisLabel(a));
+  }
+  image.arrays.names = spec.columns;
+  image.arrays.names.emplace_back("seconds");
+  for (long i = 0; i < spec.points(); ++i) {
+    SweepRecord r = store.read(i);
+    r.values.resize(spec.columns.size(), NAN);
+    r.values.push_back(r.seconds);
+    image.arrays.addRow(r.values);
+  }
+  writeImageVti(path, image);
+}
+
+void writeCsv(const SweepSpec& spec, const SweepStore& store, const std::string& path) {
+  AtomicFile csv(path, "-o");
   std::FILE* f = std::fopen(csv.tempPath().c_str(), "w");
-  if (!f) throw InputError("-o " + o.output + ": cannot write");
-  SweepChartData data = sweepChartData(spec);
-  const bool png = !o.png.empty();
+  if (!f) throw InputError("-o " + path + ": cannot write");
   std::string line;
   for (const auto& h : sweepCsvHeader(spec))
     line += (line.empty() ? "" : ",") + h;
   std::fprintf(f, "%s\n", line.c_str());
-  for (long i = 0; i < spec.points(); ++i) {
-    const SweepRecord r = store.read(i);
-    std::fprintf(f, "%s\n", sweepCsvRow(spec, i, r).c_str());
-    if (png) data.values.insert(data.values.end(), r.values.begin(), r.values.end());
-  }
+  for (long i = 0; i < spec.points(); ++i)
+    std::fprintf(f, "%s\n", sweepCsvRow(spec, i, store.read(i)).c_str());
   const bool ok = std::fflush(f) == 0 && ::fsync(fileno(f)) == 0;
   std::fclose(f);
-  if (!ok) throw ComputationError(o.output + ": cannot write");
+  if (!ok) throw ComputationError(path + ": cannot write");
   csv.commit();
-  if (png) writePngChart(data, o.png, o.size);
+}
+
+void writeResults(const SweepSpec& spec, const SweepStore& store, const SweepOptions& o) {
+  if (hasExtension(o.output, ".vti"))
+    writeVti(spec, store, o.output);
+  else
+    writeCsv(spec, store, o.output);
+  if (o.png.empty()) return;
+  SweepChartData data = sweepChartData(spec);
+  for (long i = 0; i < spec.points(); ++i) {
+    const SweepRecord r = store.read(i);
+    data.values.insert(data.values.end(), r.values.begin(), r.values.end());
+  }
+  writePngChart(data, o.png, o.size);
 }
 
 int runSweep(const SweepOptions& o) {
@@ -209,7 +239,10 @@ Command addSweepCommand(CLI::App& app) {
       "runs on threads, or on ranks under mpirun");
   auto o = std::make_shared<SweepOptions>();
   cmd->add_option("sweep", o->sweep, "sweep file (JSON: scene, axes, quantity, set, options)")->required();
-  cmd->add_option("-o,--output", o->output, "CSV file: the axes, the quantity's columns, seconds, status")
+  cmd->add_option(
+         "-o,--output", o->output,
+         "CSV file: the axes, the quantity's columns, seconds, status; a .vti file is image data for "
+         "ParaView (the axes as x, y; the columns and seconds as point data)")
       ->required();
   cmd->add_option("--png", o->png, "also draw the chart into this PNG");
   cmd->add_option("--size", o->size, "chart size WIDTHxHEIGHT")->capture_default_str();

@@ -8,6 +8,7 @@
 #include "dynamics/core/Errors.h"
 #include "dynamics/io/AtomicFile.h"
 #include "dynamics/tools/Megno.h"
+#include "render/export/VtkXmlFiles.h"
 
 #include <cmath>
 #include <cstdio>
@@ -62,13 +63,32 @@ Command addPoincareCommand(CLI::App& app) {
   auto o = std::make_shared<PoincareOptions>();
   addSceneArgs(cmd, o->scene);
   cmd->add_option("--points", o->points, "how many points (default: the scene's poincare.points)");
-  cmd->add_option("-o,--output", o->output,
-                  "CSV file: the map coordinates, t, sheet (default: standard output)");
+  cmd->add_option(
+      "-o,--output", o->output,
+      "CSV file: the map coordinates, t, sheet (default: standard output); a .vtp file is a point "
+      "cloud for ParaView with the same columns as point data");
   addCheckpointOption(cmd, o->checkpoint);
   return {cmd, [o] {
             if (o->points < 0) throw InputError("--points: must be positive");
             const Scene scene = o->scene.load();
             const auto map = scenePoincareMap(scene, o->points);
+            if (hasExtension(o->output, ".vtp")) {
+              if (!o->checkpoint.empty()) throw InputError("--checkpoint: only with CSV output");
+              checkWritable(o->output, "-o");
+              NamedColumns table;
+              table.names = map->coordinateNames();
+              table.names.insert(table.names.end(), {"t", "sheet"});
+              const int dims = static_cast<int>(map->coordinateNames().size());
+              Progress progress("poincare");
+              const ToolControl control = interruptibleControl(progress);
+              while (auto p = map->next(control)) {
+                std::vector<double> row = p->coordinates;
+                row.insert(row.end(), {p->time, static_cast<double>(p->sheet)});
+                table.addRow(row);
+              }
+              writePolyDataVtp(o->output, table, {0, dims > 1 ? 1 : -1, dims > 2 ? 2 : -1}, false);
+              return interrupted() ? 130 : 0;
+            }
             Checkpoint checkpoint(o->checkpoint, "poincare",
                                   scene.document.dump() + " --points " + std::to_string(o->points));
             Output out(o->output);
