@@ -7,9 +7,9 @@ BUILD_PKGS=(cmake g++ pkg-config ninja-build ccache
   libavcodec-dev libavformat-dev libswscale-dev libavutil-dev
   libegl-dev libgl1-mesa-dri libosmesa6-dev
   nlohmann-json3-dev libcli11-dev libfmt-dev libfftw3-dev
-  libopenmpi-dev openmpi-bin)
+  libopenmpi-dev openmpi-bin pybind11-dev python3-dev)
 TEST_PKGS=(libgtest-dev libgmock-dev libbenchmark-dev libboost-dev
-  xvfb xauth xdotool x11-apps ffmpeg python3 python3-numpy python3-pil
+  xvfb xauth xdotool x11-apps ffmpeg python3 python3-numpy python3-pil python3-pytest python3-vtk9 python3-matplotlib
   clang-14 libfuzzer-14-dev clang-tidy)
 want=("${BUILD_PKGS[@]}")
 [ "${1:-build}" = test ] && want+=("${TEST_PKGS[@]}")

@@ -156,7 +156,8 @@ const ToolRegistry& ToolRegistry::builtin() {
          .outputs = {{"level, order, parameter", "each doubling"}, {"ratios", "JSON: the Feigenbaum ratios"}},
          .reference = "manual §2.3.7",
          .computation =
-             "dynamics/tools/BifurcationTree.h (bifurcationTree); as a job dynamics/jobs/FixedPointTasks.h"});
+             "dynamics/tools/BifurcationTree.h (bifurcationTree); as a job dynamics/jobs/FixedPointTasks.h",
+         .alsoSections = {"continuation"}});
     add({.id = "surface",
          .title = "Surface |Map(x) - x|",
          .description = "on the grid section's rectangle (a chart window)",
@@ -165,7 +166,8 @@ const ToolRegistry& ToolRegistry::builtin() {
          .chartView = "surface",
          .outputs = {{"<grid coordinates>", "the cell"}, {"value", "|Map(x) - x|"}},
          .reference = "manual §2.3.8",
-         .computation = "dynamics/tools/MapGrid.h (MapGrid)"});
+         .computation = "dynamics/tools/MapGrid.h (MapGrid)",
+         .alsoSections = {"fixedpoint"}});
     add({.id = "ram",
          .title = "Region of allowed motion",
          .description = "on the grid section's rectangle (a chart window)",
@@ -174,7 +176,8 @@ const ToolRegistry& ToolRegistry::builtin() {
          .chartView = "ram",
          .outputs = {{"<grid coordinates>", "the cell"}, {"value", "1 where motion is allowed"}},
          .reference = "manual §2.3.9",
-         .computation = "dynamics/tools/MapGrid.h (MapGrid)"});
+         .computation = "dynamics/tools/MapGrid.h (MapGrid)",
+         .alsoSections = {"fixedpoint"}});
     add({.id = "diagram",
          .title = "Topological analysis",
          .description = "the bifurcation diagram on the plane of first integrals",

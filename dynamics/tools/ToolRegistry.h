@@ -37,6 +37,9 @@ struct ToolEntry {
   std::vector<ToolOutput> outputs;
   std::string reference;   ///< the paper behind it
   std::string computation; ///< where the computation is defined: "dynamics/tools/Megno.h (MegnoRun)"
+  /// Other scene sections whose settings it reads besides its own and its parents' (the bifurcation tree
+  /// reads the continuation's); a Python keyword may name their keys plainly.
+  std::vector<std::string> alsoSections = {};
   /// Settings kept outside scenes (a sweep file's "options"), or nullptr.
   const ParameterTable* options = nullptr;
 };

@@ -1,0 +1,414 @@
+// PyModule.cpp -- the Python module `rollviz` (pybind11): scenes, integration, pictures and videos, the lists
+// of problems and tools. The tools themselves are bound in PyTools.cpp; the package's __init__.py turns each
+// registered tool into a Scene method. Errors: InputError -> ValueError with the CLI's message,
+// ComputationError -> rollviz.ComputationError; long calls run as jobs (PyJob.h): the GIL is released,
+// Ctrl-C raises KeyboardInterrupt, `progress=callable` reports.
+#include "app/python/PyCommon.h"
+#include "app/python/PyJob.h"
+#include "dynamics/core/Errors.h"
+#include "dynamics/core/ModelRegistry.h"
+#include "dynamics/core/TimeSampler.h"
+#include "dynamics/io/AtomicFile.h"
+#include "render/Snapshot.h"
+#include "render/VisualScene.h"
+#include "render/context/HeadlessContext.h"
+#include "render/export/VtkXmlFiles.h"
+#include "render/video/VideoExport.h"
+#include "scenes/SceneCharts.h"
+
+#include <cmath>
+#include <fstream>
+#include <vtkRenderWindow.h>
+
+namespace rv::py {
+
+nlohmann::json toJson(const pyb::handle& v, const std::string& what) {
+  if (v.is_none()) return nullptr;
+  if (pyb::isinstance<pyb::bool_>(v)) return v.cast<bool>();
+  if (pyb::isinstance<pyb::int_>(v)) return v.cast<long long>();
+  if (pyb::isinstance<pyb::float_>(v)) return v.cast<double>();
+  if (pyb::isinstance<pyb::str>(v)) return v.cast<std::string>();
+  if (pyb::isinstance<pyb::dict>(v)) {
+    nlohmann::json j = nlohmann::json::object();
+    for (const auto& [k, x] : v.cast<pyb::dict>())
+      j[pyb::str(k).cast<std::string>()] = toJson(x, what);
+    return j;
+  }
+  if (pyb::isinstance<pyb::sequence>(v) || pyb::hasattr(v, "tolist")) {
+    const pyb::object list =
+        pyb::hasattr(v, "tolist") ? v.attr("tolist")() : pyb::reinterpret_borrow<pyb::object>(v);
+    if (!pyb::isinstance<pyb::sequence>(list)) return toJson(list, what); // a NumPy scalar
+    nlohmann::json j = nlohmann::json::array();
+    for (const auto& x : list.cast<pyb::sequence>())
+      j.push_back(toJson(x, what));
+    return j;
+  }
+  if (PyNumber_Check(v.ptr())) return pyb::float_(pyb::reinterpret_borrow<pyb::object>(v)).cast<double>();
+  throw InputError(what + ": cannot use a value of type " +
+                   pyb::str(v.get_type().attr("__name__")).cast<std::string>());
+}
+
+SceneOverride toOverride(const std::string& key, const pyb::handle& value) {
+  return {key, toJson(value, key).dump()};
+}
+
+Scene withOverrides(const Scene& scene, const std::vector<SceneOverride>& overrides) {
+  if (overrides.empty()) return scene;
+  return sceneFromJson(scene.document, scene.source, overrides);
+}
+
+pyb::list describeTable(const ParameterTable& table) {
+  pyb::list out;
+  for (const auto& s : table.specs()) {
+    pyb::dict d;
+    d["id"] = s.id;
+    d["description"] = s.description;
+    if (s.choices.empty()) {
+      d["default"] = s.defaultValue;
+      d["min"] = s.min, d["max"] = s.max;
+      d["integer"] = s.integer;
+    } else {
+      d["default"] = s.choices[static_cast<std::size_t>(s.defaultValue)];
+      d["choices"] = s.choices;
+    }
+    if (!s.unit.empty()) d["unit"] = s.unit;
+    out.append(d);
+  }
+  return out;
+}
+
+namespace {
+
+std::pair<int, int> pictureSize(const pyb::handle& size, const char* what) {
+  const auto wh = size.cast<std::pair<int, int>>();
+  if (wh.first < 16 || wh.second < 16 || wh.first > 16384 || wh.second > 16384)
+    throw InputError(std::string(what) + ": expected (width, height), each in [16, 16384]");
+  return wh;
+}
+
+std::vector<SceneOverride> overridesOf(const pyb::kwargs& kw) {
+  std::vector<SceneOverride> o;
+  for (const auto& [k, v] : kw)
+    o.push_back(toOverride(pyb::str(k).cast<std::string>(), v));
+  return o;
+}
+
+pyb::array_t<unsigned char> toPicture(Image&& image) {
+  const int w = image.width, h = image.height;
+  return toArray(std::move(image.rgb), {h, w, 3});
+}
+
+// integrate(time, every, columns): the rows `rollviz integrate` writes, as (t, X)
+pyb::tuple integrate(const Scene& scene, double time, double every, const pyb::object& columns,
+                     const pyb::object& progress) {
+  if (!(std::isfinite(time) && time >= 0)) throw InputError("time: must be a finite number >= 0");
+  if (!(std::isfinite(every) && every > 0)) throw InputError("every: must be positive");
+  const auto& obs = scene.model->observables();
+  std::vector<int> cols;
+  if (columns.is_none()) {
+    for (std::size_t i = 0; i < obs.size(); ++i)
+      cols.push_back(static_cast<int>(i));
+  } else {
+    for (const auto& c : columns.cast<std::vector<std::string>>()) {
+      const int i = scene.model->findObservable(c);
+      if (i < 0)
+        throw InputError("columns: unknown observable '" + c + "' of " + scene.model->info().id +
+                         " (rollviz.describe(\"" + scene.model->info().id + "\"))");
+      cols.push_back(i);
+    }
+  }
+  if (cols.empty()) throw InputError("columns: give at least one observable");
+  const long rows = static_cast<long>(std::floor(time / every * (1 + 1e-12))) + 1;
+  std::vector<double> t, x;
+  t.reserve(rows);
+  x.reserve(rows * cols.size());
+  runJob(progress, [&](const ToolControl& control) {
+    auto integrator = scene.startIntegrator();
+    sampleUniform(*integrator, every, rows, [&](double tk, const Eigen::VectorXd& state) {
+      t.push_back(tk);
+      for (int c : cols)
+        x.push_back(obs[c].value(tk, state.data()));
+      control.progress(rows > 1 ? std::abs(tk) / time : 1.0);
+      return !control.stopRequested();
+    });
+  });
+  const auto n = static_cast<pyb::ssize_t>(t.size()), k = static_cast<pyb::ssize_t>(cols.size());
+  return pyb::make_tuple(toArray(std::move(t)), toArray(std::move(x), {n, k}));
+}
+
+pyb::array_t<unsigned char> render(const Scene& scene, const pyb::handle& size, double time, int scale,
+                                   bool transparent) {
+  const auto [w, h] = pictureSize(size, "size");
+  if (!(std::isfinite(time) && time >= 0)) throw InputError("time: must be a finite number >= 0");
+  if (scale != 1 || transparent)
+    throw InputError(
+        "scale, transparent: only for files (Scene.snapshot); render() returns the window's RGB");
+  Image image;
+  {
+    pyb::gil_scoped_release release;
+    auto integrator = scene.startIntegrator();
+    VisualScene visual(*scene.model, scene.view, scene.initialState);
+    Eigen::VectorXd x;
+    playTo(visual, *integrator, time, x);
+    auto ctx = createHeadlessContext(w, h);
+    visual.addTo(ctx->window());
+    image = capture(ctx->window());
+    ctx->window()->RemoveRenderer(visual.renderer());
+  }
+  return toPicture(std::move(image));
+}
+
+void snapshot(const Scene& scene, const std::string& path, const pyb::handle& size, double time, int scale,
+              bool transparent) {
+  const auto [w, h] = pictureSize(size, "size");
+  if (!(std::isfinite(time) && time >= 0)) throw InputError("time: must be a finite number >= 0");
+  checkWritable(path, "path");
+  pyb::gil_scoped_release release;
+  auto integrator = scene.startIntegrator();
+  VisualScene visual(*scene.model, scene.view, scene.initialState);
+  Eigen::VectorXd x;
+  playTo(visual, *integrator, time, x);
+  auto ctx = createHeadlessContext(w, h);
+  visual.addTo(ctx->window());
+  writePng(ctx->window(), path, "path", SnapshotOptions{.scale = scale, .transparent = transparent});
+  ctx->window()->RemoveRenderer(visual.renderer());
+}
+
+void exportView(const Scene& scene, const std::string& path, double time) {
+  if (!(std::isfinite(time) && time >= 0)) throw InputError("time: must be a finite number >= 0");
+  if (!hasExtension(path, ".vtm")) throw InputError("path " + path + ": the view is exported as a .vtm file");
+  checkWritable(path, "path");
+  pyb::gil_scoped_release release;
+  auto integrator = scene.startIntegrator();
+  VisualScene visual(*scene.model, scene.view, scene.initialState);
+  Eigen::VectorXd x;
+  playTo(visual, *integrator, time, x);
+  writeSceneVtm(visual, path, "path");
+}
+
+long video(const Scene& scene, const std::string& path, double duration, int fps, const pyb::handle& size,
+           double speed, const std::string& encoder, const pyb::object& progress) {
+  const auto [w, h] = pictureSize(size, "size");
+  if (!(std::isfinite(duration) && duration > 0)) throw InputError("duration: must be positive");
+  if (fps < 1 || fps > 240) throw InputError("fps: must lie in [1, 240]");
+  if (w % 2 || h % 2) throw InputError("size: a video needs an even width and height");
+  checkWritable(path, "path");
+  long frames = 0;
+  runJob(progress, [&](const ToolControl& control) {
+    auto integrator = scene.startIntegrator();
+    VisualScene visual(*scene.model, scene.view, scene.initialState);
+    auto ctx = createHeadlessContext(w, h);
+    visual.addTo(ctx->window());
+    const VideoSpec spec{.path = path,
+                         .width = w,
+                         .height = h,
+                         .fps = fps,
+                         .duration = duration,
+                         .speed = speed > 0 ? speed : scene.view.speed,
+                         .encoder = encoder};
+    frames = exportVideo(visual, ctx->window(), *integrator, spec, [&](long k, long n) {
+      control.progress(static_cast<double>(k) / n);
+      return !control.stopRequested();
+    });
+    ctx->window()->RemoveRenderer(visual.renderer());
+  });
+  return frames;
+}
+
+pyb::array_t<unsigned char> chart(const Scene& scene, const std::string& view, const pyb::handle& size,
+                                  long points, const std::string& diagram, const pyb::object& progress) {
+  const auto [w, h] = pictureSize(size, "size");
+  const auto& views = chartViews();
+  if (std::find(views.begin(), views.end(), view) == views.end()) {
+    std::string known;
+    for (const auto& v : views)
+      known += " " + v;
+    throw InputError("view " + view + ": not a chart (known:" + known + ")");
+  }
+  Image image;
+  runJob(progress, [&](const ToolControl& control) {
+    const auto c = sceneChart(scene, view, control, points, diagram);
+    auto ctx = createHeadlessContext(w, h);
+    c->attach(ctx->window());
+    image = capture(ctx->window());
+  });
+  return toPicture(std::move(image));
+}
+
+pyb::dict describeProblem(const std::string& id) {
+  const ModelEntry& entry = ModelRegistry::builtin().get(id);
+  const ModelInfo& info = *entry.info;
+  const auto model = entry.create(ParameterValues(info.parameters));
+  pyb::dict d;
+  d["id"] = info.id;
+  d["title"] = info.title;
+  d["reference"] = info.reference;
+  d["kind"] = model->isMap() ? "map" : "flow";
+  d["parameters"] = describeTable(info.parameters);
+  d["state"] = info.stateNames;
+  d["integrals"] = info.integralNames;
+  d["map_coordinates"] = info.mapCoordinates;
+  d["invariant_measure"] = model->hasInvariantMeasure();
+  pyb::list obs;
+  for (const auto& o : model->observables()) {
+    pyb::dict x;
+    x["id"] = o.id, x["description"] = o.description;
+    obs.append(x);
+  }
+  d["observables"] = obs;
+  return d;
+}
+
+} // namespace
+
+} // namespace rv::py
+
+PYBIND11_MODULE(_rollviz, m) {
+  using namespace rv;
+  using namespace rv::py;
+  namespace pyb = pybind11;
+  m.doc() = "rollviz: bodies rolling without slipping, and the tools of nonlinear dynamics (C++ core)";
+
+  static pyb::exception<ComputationError> computationError(m, "ComputationError", PyExc_RuntimeError);
+  pyb::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const InputError& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    } catch (const ComputationError& e) {
+      computationError(e.what());
+    }
+  });
+
+  m.def(
+      "problems",
+      [] {
+        pyb::list out;
+        for (const auto& e : ModelRegistry::builtin().entries()) {
+          pyb::dict d;
+          d["id"] = e.info->id, d["title"] = e.info->title;
+          out.append(d);
+        }
+        return out;
+      },
+      "The problems (models): a list of {id, title}.");
+  m.def(
+      "describe", &describeProblem, pyb::arg("problem"),
+      "A problem's parameters, state, first integrals, map coordinates and observables (rollviz describe).");
+  m.def(
+      "integrators",
+      [] {
+        pyb::list out;
+        for (const auto& e : IntegratorRegistry::builtin().entries()) {
+          pyb::dict d;
+          d["id"] = e.id, d["title"] = e.title;
+          d["parameters"] = describeTable(*e.parameters);
+          out.append(d);
+        }
+        return out;
+      },
+      "The integrators: a list of {id, title, parameters}.");
+  m.def("scenes_directory", &scenesDirectory, "The folder of the shipped scene files.");
+
+  pyb::class_<Scene> scene(m, "Scene",
+                           "A validated scene: a problem, its parameters, method, initial state and "
+                           "tool settings (rollviz's scene file).");
+  scene
+      .def(pyb::init([](const std::string& problem, const pyb::kwargs& kw) {
+             ModelRegistry::builtin().get(problem); // ValueError listing the problems
+             return loadScene(defaultScenePath(problem), overridesOf(kw));
+           }),
+           pyb::arg("problem"),
+           "The shipped scene of a problem (scenes/<problem>.json) with parameters or dotted scene keys set.")
+      .def_static(
+          "load",
+          [](const std::string& path, const pyb::kwargs& kw) { return loadScene(path, overridesOf(kw)); },
+          pyb::arg("path"), "Loads a scene file; keyword arguments as for set().")
+      .def_static(
+          "from_json",
+          [](const std::string& text, const std::string& source) {
+            return sceneFromJson(nlohmann::json::parse(text), source);
+          },
+          pyb::arg("text"), pyb::arg("source") = "<json>", "A scene from its JSON text.")
+      .def(
+          "set",
+          [](Scene& s, const pyb::kwargs& kw) -> Scene& {
+            s = withOverrides(s, overridesOf(kw));
+            return s;
+          },
+          pyb::return_value_policy::reference,
+          "Sets model parameters (energy=0.4) and dotted scene keys (**{'integrator.method': 'everhart'}), "
+          "as "
+          "--set does; ValueError naming a bad key or value (the scene is left as it was). Returns the "
+          "scene.")
+      .def(
+          "copy", [](const Scene& s) { return s; }, "An independent copy.")
+      .def_property_readonly("problem", [](const Scene& s) { return s.model->info().id; })
+      .def_property_readonly("source", [](const Scene& s) { return s.source; })
+      .def_property_readonly(
+          "parameters",
+          [](const Scene& s) {
+            pyb::dict d;
+            const auto& table = s.model->info().parameters;
+            for (std::size_t i = 0; i < table.size(); ++i)
+              d[table.specs()[i].id.c_str()] = s.runSpec().modelParameters[table.specs()[i].id];
+            return d;
+          },
+          "The model parameters' values.")
+      .def_property_readonly("initial_state",
+                             [](const Scene& s) {
+                               return toArray(std::vector<double>(
+                                   s.initialState.data(), s.initialState.data() + s.initialState.size()));
+                             })
+      .def_property_readonly("observables",
+                             [](const Scene& s) {
+                               std::vector<std::string> ids;
+                               for (const auto& o : s.model->observables())
+                                 ids.push_back(o.id);
+                               return ids;
+                             })
+      .def_property_readonly("map_coordinates", [](const Scene& s) { return s.model->info().mapCoordinates; })
+      .def(
+          "to_json", [](const Scene& s) { return s.document.dump(2); },
+          "The scene file's text (what save() writes).")
+      .def(
+          "save",
+          [](const Scene& s, const std::string& path) {
+            AtomicFile file(path, "path");
+            {
+              std::ofstream out(file.tempPath());
+              out << s.document.dump(2) << "\n";
+              if (!out) throw ComputationError("cannot write " + path);
+            }
+            file.commit();
+          },
+          pyb::arg("path"), "Writes the scene file (through a temporary name).")
+      .def("__repr__",
+           [](const Scene& s) { return "<rollviz.Scene " + s.model->info().id + " from " + s.source + ">"; })
+      .def("integrate", &integrate, pyb::arg("time"), pyb::arg("every"), pyb::arg("columns") = pyb::none(),
+           pyb::kw_only(), pyb::arg("progress") = pyb::none(),
+           "Integrates and samples observables at t = 0, every, 2 every, ... up to time (rollviz integrate): "
+           "returns (t, X), X[k, j] the j-th column at t[k]. columns: observable ids (default: all).")
+      .def(
+          "render", &render, pyb::arg("size") = std::pair<int, int>{640, 480}, pyb::arg("time") = 10.0,
+          pyb::arg("scale") = 1, pyb::arg("transparent") = false,
+          "The 3D view at `time` (the trace covers [0, time]) as an H x W x 3 uint8 array, rendered headless "
+          "(EGL) as rollviz render draws it.")
+      .def("snapshot", &snapshot, pyb::arg("path"), pyb::arg("size") = std::pair<int, int>{1280, 720},
+           pyb::arg("time") = 10.0, pyb::arg("scale") = 1, pyb::arg("transparent") = false,
+           "Writes the 3D view at `time` as a PNG (rollviz render -o PATH).")
+      .def("export_view", &exportView, pyb::arg("path"), pyb::arg("time") = 10.0,
+           "Writes the 3D view at `time` as a ParaView multiblock (.vtm: bodies, plane, traces; rollviz "
+           "render "
+           "-o view.vtm).")
+      .def(
+          "video", &video, pyb::arg("path"), pyb::arg("duration") = 5.0, pyb::arg("fps") = 25,
+          pyb::arg("size") = std::pair<int, int>{1280, 720}, pyb::arg("speed") = 0.0,
+          pyb::arg("encoder") = "libx264", pyb::kw_only(), pyb::arg("progress") = pyb::none(),
+          "Records the 3D view into an MP4 (rollviz video); speed 0: the scene's view.speed. Returns frames.")
+      .def("chart", &chart, pyb::arg("view") = "poincare", pyb::arg("size") = std::pair<int, int>{800, 800},
+           pyb::arg("points") = 0, pyb::arg("diagram") = "", pyb::kw_only(),
+           pyb::arg("progress") = pyb::none(),
+           "A chart of the scene (rollviz chart --view VIEW) as an H x W x 3 uint8 array.");
+  bindTools(m, scene);
+}

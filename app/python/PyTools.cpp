@@ -1,0 +1,633 @@
+// PyTools.cpp -- every registered tool (dynamics/tools/ToolRegistry.h) as a call on a scene:
+// Scene._run(tool, progress=None, **settings). A plain keyword is a setting of the tool's scene section
+// (megno(time=...) is megno.time), else of the section of the tool it hangs under in the manual's tree
+// (continuation(guess=...) is fixedpoint.guess); a dotted keyword names any scene key. The settings apply to
+// this call only and are validated by the scene loader, so its messages (ValueError) are the CLI's. The
+// package's __init__.py makes a Scene method of each tool from _tools(). Results are dicts of NumPy arrays
+// and numbers, the same numbers the CLI writes.
+#include "app/python/PyCommon.h"
+#include "app/python/PyJob.h"
+#include "dynamics/core/Errors.h"
+#include "dynamics/core/ModelRegistry.h"
+#include "dynamics/tools/Megno.h"
+#include "dynamics/tools/ToolSettings.h"
+#include "scenes/SceneTools.h"
+#include "scenes/Sweep.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fmt/core.h>
+#include <map>
+#include <optional>
+#include <thread>
+#include <unistd.h>
+
+namespace rv::py {
+
+namespace {
+
+// A tool's call: the scene with its settings applied, the keywords that are no scene keys, the callback.
+struct Call {
+  Scene scene;
+  std::map<std::string, pyb::object> args;
+  pyb::object progress;
+  bool has(const std::string& k) const { return args.count(k) > 0; }
+  template <class T> T get(const std::string& k, T fallback) const {
+    const auto it = args.find(k);
+    return it == args.end() || it->second.is_none() ? fallback : it->second.cast<T>();
+  }
+};
+
+struct Runner {
+  std::vector<std::string> args; ///< keywords of the call that are no scene keys
+  std::string help;              ///< what they mean (docstrings)
+  std::function<pyb::object(Call&)> run;
+};
+
+std::vector<double> toVector(const Eigen::VectorXd& x) {
+  return {x.data(), x.data() + x.size()};
+}
+
+pyb::array_t<std::complex<double>> complexArray(const std::vector<std::complex<double>>& m) {
+  return toArray(std::vector<std::complex<double>>(m));
+}
+
+// rows of equal length as an n x k array
+pyb::array_t<double> table(std::vector<double>&& flat, std::size_t columns) {
+  const auto k = static_cast<pyb::ssize_t>(columns);
+  const auto n = k ? static_cast<pyb::ssize_t>(flat.size()) / k : 0;
+  return toArray(std::move(flat), {n, k});
+}
+
+std::unique_ptr<SceneMap> sceneMap(const Call& c, bool needGuess = true) {
+  MapToolOverrides o;
+  return std::make_unique<SceneMap>(c.scene, o, needGuess);
+}
+
+pyb::object poincare(Call& c) {
+  std::vector<double> flat;
+  std::size_t width = 0;
+  runJob(c.progress, [&](const ToolControl& control) {
+    const auto map = scenePoincareMap(c.scene);
+    width = map->coordinateNames().size() + 2;
+    while (auto p = map->next(control)) {
+      flat.insert(flat.end(), p->coordinates.begin(), p->coordinates.end());
+      flat.push_back(p->time);
+      flat.push_back(p->sheet);
+    }
+  });
+  return table(std::move(flat), width);
+}
+
+pyb::object lyapunov(Call& c) {
+  std::vector<double> times, history;
+  LyapunovResult r;
+  runJob(c.progress, [&](const ToolControl& control) {
+    const RunSpec spec = c.scene.runSpec();
+    const Model& model = *c.scene.model;
+    LyapunovRun run(
+        model, [&] { return spec.makeIntegrator(model); }, c.scene.initialState, c.scene.lyapunov);
+    run.run(
+        [&](const LyapunovEstimate& e) {
+          if (!times.empty() && times.back() == e.time) return; // the last estimate may come twice
+          times.push_back(e.time);
+          history.insert(history.end(), e.exponents.begin(), e.exponents.end());
+        },
+        control);
+    r = run.result();
+  });
+  pyb::dict d;
+  d["exponents"] = toArray(std::vector<double>(r.last.exponents));
+  d["sum"] = r.last.sum();
+  d["time"] = r.last.time;
+  d["converged"] = r.converged;
+  d["stopped"] = r.stopped;
+  d["t"] = toArray(std::move(times));
+  d["history"] = table(std::move(history), r.last.exponents.size());
+  return d;
+}
+
+pyb::object megno(Call& c) {
+  std::vector<double> t, y, mean, fli;
+  MegnoResult r;
+  runJob(c.progress, [&](const ToolControl& control) {
+    const RunSpec spec = c.scene.runSpec();
+    const Model& model = *c.scene.model;
+    MegnoRun run(
+        model, [&] { return spec.makeIntegrator(model); }, c.scene.initialState,
+        megnoSettings(c.scene.tool("megno")));
+    run.run(
+        [&](const MegnoEstimate& e) {
+          t.push_back(e.time), y.push_back(e.y), mean.push_back(e.megno), fli.push_back(e.fli);
+        },
+        control);
+    r = run.result();
+  });
+  pyb::dict d;
+  d["megno"] = r.last.megno;
+  d["megno_rate"] = r.last.megnoRate;
+  d["y"] = r.last.y;
+  d["fli"] = r.last.fli;
+  d["time"] = r.last.time;
+  d["stopped"] = r.stopped;
+  d["history"] =
+      pyb::dict(pyb::arg("t") = toArray(std::move(t)), pyb::arg("megno") = toArray(std::move(mean)),
+                pyb::arg("y") = toArray(std::move(y)), pyb::arg("fli") = toArray(std::move(fli)));
+  return d;
+}
+
+pyb::object spectrum(Call& c) {
+  const SpectrumSettings& s = c.scene.spectrum;
+  if (s.function.empty()) throw InputError("function: give the observable to expand");
+  SpectrumResult r;
+  runJob(c.progress, [&](const ToolControl& control) {
+    auto integ = c.scene.startIntegrator();
+    r = fourierSpectrum(*c.scene.model, *integ, c.scene.model->isMap() || c.scene.integratorEntry->fixedStep,
+                        s, control);
+  });
+  std::vector<double> peaks;
+  for (const auto& p : r.peaks)
+    peaks.push_back(p.frequency), peaks.push_back(p.amplitude);
+  pyb::dict d;
+  d["function"] = s.function;
+  d["frequency"] = toArray(std::move(r.frequency));
+  d["amplitude"] = toArray(std::move(r.amplitude));
+  d["peaks"] = table(std::move(peaks), 2);
+  d["step"] = r.step;
+  d["samples"] = r.samples;
+  return d;
+}
+
+pyb::dict fixedPointDict(const FixedPointResult& r, const ReturnMap& map) {
+  pyb::dict d;
+  d["point"] = toArray(toVector(r.point));
+  d["coordinates"] = map.coordinateNames();
+  d["multipliers"] = complexArray(r.multipliers);
+  d["type"] = toString(r.type);
+  d["residual"] = r.residual;
+  d["iterations"] = r.iterations;
+  d["evaluations"] = r.evaluations;
+  d["order"] = map.order();
+  std::vector<double> path;
+  for (const auto& q : r.path) {
+    const auto p = toVector(q.point);
+    path.insert(path.end(), p.begin(), p.end());
+  }
+  d["path"] = table(std::move(path), static_cast<std::size_t>(r.point.size()));
+  return d;
+}
+
+pyb::object fixedpoint(Call& c) {
+  const auto s = sceneMap(c);
+  const ReturnMap map = s->map();
+  FixedPointResult r;
+  runJob(c.progress, [&](const ToolControl& control) {
+    try {
+      r = findFixedPoint(map, s->guess(), s->search(), control);
+    } catch (const Stopped&) {
+      throw ComputationError("fixedpoint: stopped");
+    }
+  });
+  return fixedPointDict(r, map);
+}
+
+pyb::dict changeDict(const TypeChange& t, const std::string& parameter) {
+  pyb::dict d;
+  d["parameter"] = t.parameter;
+  d["kind"] = toString(t.kind);
+  d["from"] = toString(t.from);
+  d["to"] = toString(t.to);
+  d["point"] = toArray(toVector(t.at.fixedPoint.point));
+  d["multipliers"] = complexArray(t.at.fixedPoint.multipliers);
+  d["description"] = describe(t, parameter);
+  return d;
+}
+
+pyb::object continuation(Call& c) {
+  const auto s = sceneMap(c);
+  const ContinuationSettings cs = s->continuation();
+  const auto run = s->continuationRun();
+  std::string failure;
+  runJob(c.progress, [&](const ToolControl& control) {
+    try {
+      run->run(
+          control, [](const ContinuationPoint&) {}, [](const TypeChange&) {});
+    } catch (const ComputationError& e) {
+      if (run->points().empty()) throw;
+      failure = e.what(); // the family up to here is a result: keep it, and say why it ends
+    }
+  });
+  const ReturnMap map = s->map();
+  std::vector<double> param, points, residual;
+  std::vector<std::complex<double>> multipliers;
+  std::vector<std::string> types;
+  std::size_t m = 0;
+  for (const auto& p : run->points()) {
+    param.push_back(p.parameter);
+    const auto x = toVector(p.fixedPoint.point);
+    points.insert(points.end(), x.begin(), x.end());
+    multipliers.insert(multipliers.end(), p.fixedPoint.multipliers.begin(), p.fixedPoint.multipliers.end());
+    m = p.fixedPoint.multipliers.size();
+    residual.push_back(p.fixedPoint.residual);
+    types.emplace_back(toString(p.fixedPoint.type));
+  }
+  pyb::list changes;
+  for (const auto& t : run->changes())
+    changes.append(changeDict(t, cs.parameter));
+  const auto n = static_cast<pyb::ssize_t>(param.size());
+  pyb::dict d;
+  d["parameter"] = cs.parameter;
+  d["parameter_values"] = toArray(std::move(param));
+  d["coordinates"] = map.coordinateNames();
+  d["points"] = table(std::move(points), map.coordinateNames().size());
+  d["multipliers"] = toArray(std::move(multipliers), {n, static_cast<pyb::ssize_t>(m)});
+  d["residual"] = toArray(std::move(residual));
+  d["types"] = types;
+  d["changes"] = changes;
+  d["failure"] = failure;
+  return d;
+}
+
+pyb::object multipliers(Call& c) {
+  const auto s = sceneMap(c);
+  std::vector<std::vector<std::complex<double>>> path;
+  runJob(c.progress, [&](const ToolControl& control) { path = multiplierPath(*s, control); });
+  pyb::list out;
+  for (const auto& m : path)
+    out.append(complexArray(m));
+  return out;
+}
+
+pyb::object separatrix(Call& c) {
+  const auto s = sceneMap(c);
+  const ReturnMap map = s->map();
+  if (map.dimension() != 2) throw InputError("separatrix: separatrices are drawn for 2D maps only");
+  const ParameterValues& sv = s->scene().tool("separatrix");
+  std::vector<int> list;
+  if (!c.has("branches"))
+    list = {static_cast<int>(sv["branch"])};
+  else if (pyb::isinstance<pyb::str>(c.args["branches"]) && c.get<std::string>("branches", "") == "all")
+    list = {1, 2, 3, 4};
+  else
+    for (int b : c.args["branches"].cast<std::vector<int>>()) {
+      if (b < 1 || b > 4) throw InputError("branches: branches are 1, 2, 3, 4 (or \"all\")");
+      list.push_back(b);
+    }
+  pyb::dict d;
+  std::vector<std::pair<int, SeparatrixResult>> results;
+  FixedPointResult fp;
+  runJob(c.progress, [&](const ToolControl& control) {
+    try {
+      fp = findFixedPoint(map, s->guess(), s->search(), control);
+    } catch (const Stopped&) {
+      throw ComputationError("separatrix: stopped");
+    }
+    for (int b : list) {
+      SeparatrixSettings ss = separatrixSettings(sv, s->search());
+      ss.branch = b;
+      results.emplace_back(b, growSeparatrix(map, fp, ss, control));
+      if (results.back().second.stoppedBecause == "stopped") break;
+    }
+  });
+  d["fixedpoint"] = fixedPointDict(fp, map);
+  pyb::dict branches;
+  for (auto& [b, r] : results) {
+    std::vector<double> flat;
+    for (const auto& p : r.points) {
+      const auto x = toVector(p);
+      flat.insert(flat.end(), x.begin(), x.end());
+    }
+    pyb::dict x;
+    x["points"] = table(std::move(flat), 2);
+    x["parameters"] = toArray(std::vector<double>(r.parameters));
+    x["multiplier"] = r.multiplier;
+    x["unstable"] = r.unstable;
+    x["linear_region"] = r.linearRegion;
+    x["ended_by"] = r.stoppedBecause;
+    branches[pyb::int_(b)] = x;
+  }
+  d["branches"] = branches;
+  return d;
+}
+
+pyb::object bifurcationTree(Call& c) {
+  const auto s = sceneMap(c);
+  const ContinuationSettings cs = s->continuation();
+  const BifurcationTreeSettings t = bifurcationTreeSettings(s->scene().tool("bifurcation_tree"), cs);
+  const double start = s->spec().modelParameters[cs.parameter];
+  std::vector<double> rows;
+  std::vector<std::string> types;
+  BifurcationTreeResult r;
+  const ReturnMap map = s->map();
+  runJob(c.progress, [&](const ToolControl& control) {
+    try {
+      bifurcationTree(
+          s->spec().modelAt(cs.parameter), s->integrators(), s->section(), start, s->guess(), t, control,
+          [&](const TreeBranch& b, const ContinuationPoint& p) {
+            rows.push_back(b.level), rows.push_back(b.order), rows.push_back(p.parameter);
+            const auto x = toVector(p.fixedPoint.point);
+            rows.insert(rows.end(), x.begin(), x.end());
+            types.emplace_back(toString(p.fixedPoint.type));
+          },
+          [](const PeriodDoubling&) {}, &r);
+    } catch (const Stopped&) {
+    }
+  });
+  pyb::list doublings;
+  for (const auto& x : r.doublings) {
+    pyb::dict d;
+    d["level"] = x.level, d["order"] = x.order, d["parameter"] = x.parameter;
+    doublings.append(d);
+  }
+  std::vector<std::string> columns{"level", "order", cs.parameter};
+  for (const auto& n : map.coordinateNames())
+    columns.push_back(n);
+  pyb::dict d;
+  d["parameter"] = cs.parameter;
+  d["columns"] = columns;
+  d["rows"] = table(std::move(rows), columns.size());
+  d["types"] = types;
+  d["doublings"] = doublings;
+  d["ratios"] = r.ratios();
+  return d;
+}
+
+pyb::object grid(Call& c, MapGrid::Kind kind) {
+  const auto s = sceneMap(c, false);
+  const ParameterValues& gv = s->scene().tool("grid");
+  GridSettings g = gridSettings(gv);
+  g.axes[0].min = gv["x_min"], g.axes[0].max = gv["x_max"];
+  g.axes[1].min = gv["y_min"], g.axes[1].max = gv["y_max"];
+  if (c.has("z_range")) {
+    const auto z = c.args["z_range"].cast<std::pair<double, double>>();
+    if (!(z.first <= z.second)) throw InputError("z_range: expected (min, max)");
+    g.axes[2].min = z.first, g.axes[2].max = z.second;
+    g.threeD = true;
+  }
+  for (int a = 0; a < 2; ++a)
+    if (!(g.axes[a].min <= g.axes[a].max))
+      throw InputError(fmt::format("grid.{0}_min, grid.{0}_max: need min <= max", a ? "y" : "x"));
+  const ReturnMap map = s->map();
+  MapGrid mg(map, kind, g, c.get<std::string>("level", ""));
+  runJob(c.progress, [&](const ToolControl& control) { mg.run(control); });
+  const GridValues& r = mg.result();
+  const int dims = g.threeD ? 3 : 2;
+  pyb::dict d;
+  const char* names[] = {"x", "y", "z"};
+  for (int a = 0; a < dims; ++a) {
+    std::vector<double> axis;
+    for (int i = 0; i < r.size[a]; ++i)
+      axis.push_back(g.axes[a].at(i));
+    d[names[a]] = toArray(std::move(axis));
+  }
+  d["coordinates"] = std::vector<std::string>(map.coordinateNames().begin(),
+                                              map.coordinateNames().begin() +
+                                                  std::min<std::size_t>(dims, map.coordinateNames().size()));
+  // values[k][j][i] at (x_i, y_j, z_k): x fastest, as the grid stores them
+  std::vector<pyb::ssize_t> shape{r.size[1], r.size[0]};
+  if (dims == 3) shape.insert(shape.begin(), r.size[2]);
+  d[kind == MapGrid::Kind::Surface ? "distance" : "allowed"] = toArray(std::vector<double>(r.values), shape);
+  if (!r.level.empty()) d["level"] = toArray(std::vector<double>(r.level), shape);
+  if (!mg.levelName().empty()) d["level_name"] = mg.levelName();
+  d["complete"] = r.done == static_cast<long>(r.values.size());
+  return d;
+}
+
+pyb::object diagram(Call& c) {
+  const std::vector<Diagram> diagrams = c.scene.model->diagrams();
+  const Diagram& d =
+      findDiagram(diagrams, c.get<std::string>("diagram", ""), "diagram", c.scene.model->info().id);
+  const std::string only = c.get<std::string>("branch", "");
+  pyb::dict branches;
+  bool found = only.empty();
+  for (const auto& x : d.branches) {
+    if (!only.empty() && x.id != only) continue;
+    found = true;
+    const double lo = c.get<double>("min", x.min), hi = c.get<double>("max", x.max),
+                 step = c.get<double>("step", x.step);
+    if (!(step > 0) || !(hi >= lo)) throw InputError("min/max/step: need min <= max and step > 0");
+    const long n = static_cast<long>(std::floor((hi - lo) / step * (1 + 1e-12)));
+    if (n > 10'000'000) throw InputError("step: more than 1e7 points");
+    std::vector<double> rows;
+    for (long k = 0; k <= n; ++k) {
+      const double s = lo + k * step;
+      for (const DiagramPoint& p : x.points(s))
+        rows.push_back(s), rows.push_back(p[0]), rows.push_back(p[1]);
+    }
+    branches[x.id.c_str()] = table(std::move(rows), 3);
+  }
+  if (!found) throw InputError("branch " + only + ": no such branch of " + d.id);
+  const DiagramPoint state = d.place(c.scene.initialState.data());
+  pyb::dict out;
+  out["diagram"] = d.id;
+  out["title"] = d.title;
+  out["axes"] = std::vector<std::string>{d.axes[0], d.axes[1]};
+  out["branches"] = branches;
+  out["state"] = std::vector<double>{state[0], state[1]};
+  return out;
+}
+
+pyb::object plot(Call& c) {
+  std::vector<std::vector<double>> points;
+  runJob(c.progress, [&](const ToolControl& control) {
+    auto integ = c.scene.startIntegrator();
+    points = samplePlot(*c.scene.model, *integ, c.scene.plot.settings, control);
+  });
+  std::vector<double> flat;
+  std::size_t width = 0;
+  for (const auto& p : points) {
+    flat.insert(flat.end(), p.begin(), p.end());
+    width = p.size();
+  }
+  return table(std::move(flat), width);
+}
+
+const std::map<std::string, Runner>& runners() {
+  static const std::map<std::string, Runner> r{
+      {"poincare", {{}, "", poincare}},
+      {"map3d", {{}, "", poincare}},
+      {"spectrum", {{}, "", spectrum}},
+      {"lyapunov", {{}, "", lyapunov}},
+      {"megno", {{}, "", megno}},
+      {"plot", {{}, "", plot}},
+      {"fixedpoint", {{}, "", fixedpoint}},
+      {"continuation", {{}, "", continuation}},
+      {"multipliers", {{}, "", multipliers}},
+      {"separatrix",
+       {{"branches"}, "branches: a list of 1..4 or \"all\" (default: separatrix.branch)", separatrix}},
+      {"bifurcation_tree", {{}, "", bifurcationTree}},
+      {"surface",
+       {{"z_range"},
+        "z_range: (min, max) of the third coordinate: a 3D grid of a 3D map (ranges: grid.x_min ... y_max)",
+        [](Call& c) { return grid(c, MapGrid::Kind::Surface); }}},
+      {"ram",
+       {{"z_range", "level"},
+        "z_range as for surface; level: 2D maps: the observable giving the energy level's height",
+        [](Call& c) { return grid(c, MapGrid::Kind::AllowedRegion); }}},
+      {"diagram",
+       {{"diagram", "branch", "min", "max", "step"},
+        "diagram: which (default: the problem's first); branch: one only; min, max, step: of the branch "
+        "parameter",
+        diagram}},
+  };
+  return r;
+}
+
+// the scene sections a plain keyword of the tool may belong to: its own, its ancestors' in the tree, then the
+// others it reads
+std::vector<std::string> sectionsOf(const ToolEntry& tool) {
+  std::vector<std::string> out;
+  for (const ToolEntry* t = &tool; t;
+       t = t->parent.empty() ? nullptr : &ToolRegistry::builtin().get(t->parent))
+    if (!t->section.empty() && std::find(out.begin(), out.end(), t->section) == out.end())
+      out.push_back(t->section);
+  for (const auto& s : tool.alsoSections)
+    if (std::find(out.begin(), out.end(), s) == out.end()) out.push_back(s);
+  return out;
+}
+
+// a plain keyword's scene key: the first of the tool's sections that takes it
+SceneOverride placeKeyword(const Scene& scene, const ToolEntry& tool, const std::string& key,
+                           const pyb::handle& value) {
+  if (key.find('.') != std::string::npos) return toOverride(key, value);
+  const auto sections = sectionsOf(tool);
+  if (sections.empty())
+    throw InputError(tool.id + "(" + key + "=...): " + tool.id +
+                     " has no settings of its own; give a dotted scene key (**{\"section.key\": value})");
+  std::optional<std::string> firstError, valueError;
+  for (const auto& s : sections) {
+    SceneOverride o = toOverride(s + "." + key, value);
+    try {
+      (void)withOverrides(scene, {o});
+      return o;
+    } catch (const InputError& e) {
+      const std::string m = e.what();
+      if (!firstError) firstError = m;
+      // a known key with a bad value says more than "unknown" or "belongs to another section"
+      if (!valueError && m.find("unknown parameter") == std::string::npos &&
+          m.find("belongs to") == std::string::npos)
+        valueError = m;
+    }
+  }
+  throw InputError(valueError ? *valueError : *firstError);
+}
+
+pyb::object runTool(const Scene& scene, const std::string& id, const pyb::object& progress,
+                    const pyb::kwargs& kw) {
+  const ToolEntry& tool = ToolRegistry::builtin().get(id);
+  const auto it = runners().find(id);
+  if (it == runners().end())
+    throw InputError(id + ": not a tool of a scene" +
+                     (id == "sweep" ? " (rollviz.sweep(path) runs a sweep file)" : ""));
+  const Runner& runner = it->second;
+  Call call{scene, {}, progress};
+  std::vector<SceneOverride> overrides;
+  for (const auto& [k, v] : kw) {
+    const std::string key = pyb::str(k).cast<std::string>();
+    if (std::find(runner.args.begin(), runner.args.end(), key) != runner.args.end())
+      call.args[key] = pyb::reinterpret_borrow<pyb::object>(v);
+    else
+      overrides.push_back(placeKeyword(scene, tool, key, v));
+  }
+  call.scene = withOverrides(scene, overrides);
+  return runner.run(call);
+}
+
+pyb::dict toolDict(const ToolEntry& e) {
+  pyb::dict d;
+  d["id"] = e.id, d["title"] = e.title, d["parent"] = e.parent, d["description"] = e.description;
+  d["section"] = e.section, d["command"] = e.command, d["chart"] = e.chartView, d["reference"] = e.reference;
+  if (const ToolSection* s = findToolSection(e.section))
+    d["settings"] = describeTable(*s->table);
+  else
+    d["settings"] = pyb::list();
+  if (e.options) d["options"] = describeTable(*e.options);
+  pyb::list outputs;
+  for (const auto& o : e.outputs)
+    outputs.append(pyb::make_tuple(o.name, o.description));
+  d["outputs"] = outputs;
+  pyb::list quantities;
+  for (const auto& q : sweepQuantities())
+    if (q.tool == e.id || e.options) quantities.append(q.id);
+  d["sweep_quantities"] = quantities;
+  std::vector<std::string> sections = sectionsOf(e);
+  d["sections"] = sections;
+  const auto it = runners().find(e.id);
+  d["arguments"] = it == runners().end() ? std::vector<std::string>{} : it->second.args;
+  d["arguments_help"] = it == runners().end() ? std::string() : it->second.help;
+  return d;
+}
+
+// rollviz.sweep(path): the sweep on threads, its columns as arrays (rollviz sweep)
+pyb::object sweep(const std::string& path, int threads, const pyb::object& progress) {
+  const SweepSpec spec = loadSweep(path);
+  if (threads < 0) throw InputError("threads: must be at least 1");
+  if (threads == 0) threads = static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
+  const std::string storePath =
+      (std::filesystem::temp_directory_path() /
+       fmt::format("rollviz-{}-{}.sweep-part", ::getpid(), reinterpret_cast<std::uintptr_t>(&spec)))
+          .string();
+  SweepStore store(storePath, spec.resolved.dump(), spec.points(), static_cast<int>(spec.columns.size()),
+                   "sweep");
+  struct Cleanup {
+    SweepStore& store;
+    ~Cleanup() { store.remove(); }
+  } cleanup{store};
+  ChunkScheduler scheduler(store, threads, static_cast<long>(spec.options->get("chunk")));
+  bool complete = false;
+  runJob(progress, [&](const ToolControl& control) {
+    ToolControl c = control;
+    c.progress = [&](double) { control.progress(static_cast<double>(store.doneCount()) / spec.points()); };
+    complete = runSweepThreads(
+        store, scheduler, [&](long i, const ToolControl& pc) { return evaluateSweepPoint(spec, i, pc); },
+        threads, c);
+  });
+  const long n = spec.points();
+  std::vector<std::vector<double>> axes(spec.axes.size()), columns(spec.columns.size());
+  std::vector<double> seconds;
+  std::vector<std::string> status;
+  for (long i = 0; i < n; ++i) {
+    const auto a = spec.axisValues(i);
+    for (std::size_t k = 0; k < axes.size(); ++k)
+      axes[k].push_back(a[k]);
+    const SweepRecord r = store.read(i);
+    for (std::size_t k = 0; k < columns.size(); ++k)
+      columns[k].push_back(k < r.values.size() ? r.values[k] : NAN);
+    seconds.push_back(r.seconds);
+    status.push_back(r.ok ? "ok" : "failed: " + r.reason);
+  }
+  pyb::dict values;
+  for (std::size_t k = 0; k < axes.size(); ++k)
+    values[spec.axes[k].id.c_str()] = toArray(std::move(axes[k]));
+  for (std::size_t k = 0; k < columns.size(); ++k)
+    values[spec.columns[k].c_str()] = toArray(std::move(columns[k]));
+  pyb::dict d;
+  d["columns"] = values;
+  d["seconds"] = toArray(std::move(seconds));
+  d["status"] = status;
+  std::vector<int> shape;
+  for (const auto& a : spec.axes)
+    shape.push_back(a.count);
+  d["shape"] = shape;
+  d["quantity"] = spec.quantity->id + spec.quantityName;
+  d["complete"] = complete;
+  return d;
+}
+
+} // namespace
+
+void bindTools(pyb::module_& m, pyb::class_<Scene>& scene) {
+  m.def("_tools", [] {
+    pyb::list out;
+    for (const auto& e : ToolRegistry::builtin().entries())
+      out.append(toolDict(e));
+    return out;
+  });
+  scene.def("_run", &runTool, pyb::arg("tool"), pyb::kw_only(), pyb::arg("progress") = pyb::none());
+  m.def("sweep", &sweep, pyb::arg("path"), pyb::arg("threads") = 0, pyb::kw_only(),
+        pyb::arg("progress") = pyb::none(),
+        "Runs a sweep file (rollviz sweep) on threads: its axes and quantity columns as arrays (first axis "
+        "fastest; reshape to `shape` reversed), seconds and status per point.");
+}
+
+} // namespace rv::py

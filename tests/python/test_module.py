@@ -1,0 +1,267 @@
+"""The Python module against the CLI: the same numbers to the last digit, NumPy shapes and dtypes, the lists,
+the exceptions with the CLI's messages, the GIL released during a computation, Ctrl-C, pictures."""
+
+import os
+import signal
+import subprocess
+import sys
+import textwrap
+import threading
+import time
+
+import numpy as np
+import pytest
+
+from conftest import SOURCE, cli, cli_json, read_csv, scene_path
+
+rollviz = pytest.importorskip("rollviz")
+
+
+def test_integrate_equals_the_cli(tmp_path):
+    out = tmp_path / "cli.csv"
+    cli("integrate", scene_path("chaplygin_ball.json"), "--time", 5, "--every", 0.5, "--columns", "t,E,M1,gamma3",
+        "-o", out)
+    header, expected = read_csv(out)
+    t, X = rollviz.Scene.load(scene_path("chaplygin_ball.json")).integrate(time=5, every=0.5,
+                                                                           columns=header)
+    assert t.dtype == np.float64 and X.dtype == np.float64
+    assert t.shape == (11,) and X.shape == (11, 4)
+    assert np.array_equal(X, expected)  # bit for bit: the same computation, %.17g round-trips
+    assert np.array_equal(t, expected[:, 0])
+
+
+def test_a_set_scene_equals_the_cli_with_set(tmp_path):
+    out = tmp_path / "cli.csv"
+    cli("integrate", scene_path("chaplygin_ball.json"), "--set", "energy=0.4", "--set", "integrator.method=everhart",
+        "--time", 2, "--every", 0.25, "--columns", "t,E,M2", "-o", out)
+    _, expected = read_csv(out)
+    s = rollviz.Scene.load(scene_path("chaplygin_ball.json"))
+    assert s.set(energy=0.4, **{"integrator.method": "everhart"}) is s
+    assert s.parameters["energy"] == 0.4
+    _, X = s.integrate(2, 0.25, ["t", "E", "M2"])
+    assert np.array_equal(X, expected)
+
+
+def test_scene_of_a_problem_is_its_shipped_scene():
+    a = rollviz.Scene("henon_heiles", E=0.1) if "E" in rollviz.Scene("henon_heiles").parameters else None
+    s = rollviz.Scene("chaplygin_ball", energy=0.4)
+    assert s.problem == "chaplygin_ball" and s.parameters["energy"] == 0.4
+    assert s.parameters["c"] == rollviz.Scene.load(scene_path("chaplygin_ball.json")).parameters["c"]
+    del a
+
+
+def test_poincare_equals_the_cli(tmp_path):
+    out = tmp_path / "map.csv"
+    cli("poincare", scene_path("henon_heiles.json"), "--points", 150, "-o", out)
+    header, expected = read_csv(out)
+    P = rollviz.Scene.load(scene_path("henon_heiles.json")).poincare(points=150)
+    assert isinstance(P, np.ndarray) and P.dtype == np.float64
+    assert P.shape == expected.shape == (150, len(header))
+    assert np.array_equal(P, expected)
+
+
+def test_lyapunov_and_megno_equal_the_cli():
+    s = rollviz.Scene.load(scene_path("henon_map.json"))
+    expected = cli_json("lyapunov", scene_path("henon_map.json"), "--time", 500)
+    r = s.lyapunov(time=500)
+    assert list(r.exponents) == expected["exponents"] and r.converged == expected["converged"]
+    assert r.time == expected["time"] and r.sum == expected["sum"]
+    assert r.history.shape == (len(r.t), 2) and r.t[-1] <= r.time
+    m = rollviz.Scene.load(scene_path("henon_heiles.json")).megno(time=200)
+    e = cli_json("megno", scene_path("henon_heiles.json"), "--time", 200)
+    assert (m.megno, m.fli, m.y, m.time) == (e["megno"], e["fli"], e["y"], e["time"])
+    assert m.history["t"].shape == m.history["megno"].shape
+
+
+def test_fixedpoint_equals_the_cli():
+    e = cli_json("fixedpoint", scene_path("henon_map.json"), "--guess", "0.63,0.19")
+    r = rollviz.Scene.load(scene_path("henon_map.json")).fixedpoint(guess=[0.63, 0.19])
+    assert list(r.point) == e["point"] and r.type == e["type"] and r.residual == e["residual"]
+    assert r.multipliers.dtype == np.complex128
+    assert [[z.real, z.imag] for z in r.multipliers] == e["multipliers"]
+    # the Henon map's fixed point, independently: x = (b - 1 + sqrt((1 - b)^2 + 4a)) / 2a, y = b x
+    a, b = 1.4, 0.3
+    x = (b - 1 + np.sqrt((1 - b) ** 2 + 4 * a)) / (2 * a)
+    assert np.allclose(r.point, [x, b * x], atol=1e-12)
+
+
+def test_continuation_routes_its_keywords_to_the_sections():
+    s = rollviz.Scene.load(scene_path("henon_map.json"))
+    # guess belongs to fixedpoint (the tool's parent), parameter/to/step to continuation
+    r = s.continuation(guess=[0.63, 0.19], parameter="a", to=1.3, step=-0.05)
+    assert r.parameter == "a" and len(r.parameter_values) == r.points.shape[0] >= 2
+    assert np.isclose(r.parameter_values[0], 1.4) and np.isclose(r.parameter_values[-1], 1.3)
+    for av, (x, y) in zip(r.parameter_values, r.points):
+        assert np.isclose(x, (0.3 - 1 + np.sqrt(0.49 + 4 * av)) / (2 * av), atol=1e-9)
+
+
+def test_every_problem_and_tool_is_listed():
+    problems = cli("list", "problems").stdout.split()
+    assert [p["id"] for p in rollviz.problems()] == problems
+    for p in problems:
+        d = rollviz.describe(p)
+        assert d["id"] == p and d["observables"] and d["parameters"] is not None
+    ids = [line.split()[0] for line in cli("list", "tools").stdout.splitlines()
+           if line.strip() and not line.startswith("rollviz")]
+    tools = rollviz.tools()
+    assert [t.id for t in tools] == ids
+    for t in tools:
+        if t.id == "sweep":
+            continue
+        method = getattr(rollviz.Scene, t.id)
+        assert t.title in method.__doc__
+        for setting in t.settings:  # every setting of its section is documented on the method
+            assert setting["id"] in method.__doc__
+
+
+def test_bad_input_raises_valueerror_with_the_cli_message():
+    s = rollviz.Scene.load(scene_path("chaplygin_ball.json"))
+    p = cli("integrate", scene_path("chaplygin_ball.json"), "--set", "no_such_param=1", "--time", 1, "--every", 1,
+            check=False)
+    assert p.returncode == 2
+    with pytest.raises(ValueError) as e:
+        s.set(no_such_param=1)
+    assert str(e.value) == p.stderr.strip().removeprefix("rollviz: ")
+    assert s.parameters["energy"] == 0.5  # left as it was
+    with pytest.raises(ValueError, match="megno.foo: unknown parameter"):
+        s.megno(foo=1)
+    with pytest.raises(ValueError, match="columns: unknown observable 'nope'"):
+        s.integrate(1, 0.1, ["t", "nope"])
+    with pytest.raises(ValueError, match="no_such_problem"):
+        rollviz.Scene("no_such_problem")
+    with pytest.raises(ValueError, match="every: must be positive"):
+        s.integrate(1, 0)
+
+
+def test_a_failed_computation_raises_computationerror():
+    args = ["fixedpoint", scene_path("henon_map.json"), "--guess", "5,5", "--set", "fixedpoint.max_iterations=2"]
+    p = cli(*args, check=False)
+    assert p.returncode == 1
+    with pytest.raises(rollviz.ComputationError) as e:
+        rollviz.Scene.load(scene_path("henon_map.json")).fixedpoint(guess=[5, 5], max_iterations=2)
+    assert str(e.value) == p.stderr.strip().removeprefix("rollviz: failed: ")
+    assert issubclass(rollviz.ComputationError, RuntimeError)
+
+
+def test_the_gil_is_released_during_a_computation():
+    s = rollviz.Scene.load(scene_path("chaplygin_ball.json"))
+    ticks, done = [0], [False]
+
+    def spin():
+        while not done[0]:
+            ticks[0] += 1
+            time.sleep(0.001)
+
+    th = threading.Thread(target=spin)
+    th.start()
+    t0 = time.perf_counter()
+    s.integrate(time=4000, every=1, columns=["t"])
+    elapsed = time.perf_counter() - t0
+    done[0] = True
+    th.join()
+    assert elapsed > 0.2, "the integration should take a while for this test to mean something"
+    assert ticks[0] > 0.3 * elapsed * 1000 / 2, (ticks[0], elapsed)
+
+
+def test_progress_is_reported_on_the_calling_thread():
+    seen = []
+    caller = threading.get_ident()
+    rollviz.Scene.load(scene_path("chaplygin_ball.json")).integrate(
+        3000, 1, ["t"], progress=lambda f: seen.append((f, threading.get_ident())))
+    fractions = [f for f, _ in seen]
+    assert fractions[-1] == 1.0 and fractions == sorted(fractions) and len(fractions) >= 2
+    assert all(tid == caller for _, tid in seen)
+
+
+def test_an_exception_in_the_progress_callback_stops_the_call():
+    def stop(_):
+        raise RuntimeError("enough")
+
+    t0 = time.perf_counter()
+    with pytest.raises(RuntimeError, match="enough"):
+        rollviz.Scene.load(scene_path("chaplygin_ball.json")).integrate(1e6, 1, ["t"], progress=stop)
+    assert time.perf_counter() - t0 < 10
+
+
+def test_ctrl_c_stops_a_long_call_with_keyboardinterrupt():
+    code = textwrap.dedent(f"""
+        import sys, time, rollviz
+        s = rollviz.Scene.load({scene_path('chaplygin_ball.json')!r})
+        print("started", flush=True)
+        t0 = time.time()
+        try:
+            s.lyapunov(time=1e9)
+        except KeyboardInterrupt:
+            print("interrupted after", time.time() - t0, flush=True)
+            sys.exit(0)
+        sys.exit(3)
+    """)
+    p = subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE, text=True, env=os.environ.copy())
+    assert p.stdout.readline().strip() == "started"
+    time.sleep(1.0)
+    sent = time.perf_counter()
+    p.send_signal(signal.SIGINT)
+    out, _ = p.communicate(timeout=30)
+    assert p.returncode == 0, out
+    assert "interrupted" in out and time.perf_counter() - sent < 5
+
+
+def test_render_is_the_clis_picture(tmp_path):
+    from PIL import Image
+    png = tmp_path / "cli.png"
+    cli("render", scene_path("chaplygin_ball.json"), "--size", "320x240", "--time", 2, "-o", png)
+    img = rollviz.Scene.load(scene_path("chaplygin_ball.json")).render(size=(320, 240), time=2)
+    assert img.shape == (240, 320, 3) and img.dtype == np.uint8
+    assert img.std() > 5, "blank picture"
+    expected = np.asarray(Image.open(png).convert("RGB"))
+    diff = np.abs(img.astype(int) - expected.astype(int))
+    assert diff.mean() < 0.5 and (diff > 40).mean() < 0.002, (diff.mean(), (diff > 40).mean())
+
+
+def test_chart_and_video(tmp_path):
+    s = rollviz.Scene.load(scene_path("henon_map.json"))
+    img = s.chart("poincare", size=(200, 160), points=500)
+    assert img.shape == (160, 200, 3) and img.std() > 5
+    out = tmp_path / "v.mp4"
+    frames = rollviz.Scene.load(scene_path("chaplygin_ball.json")).video(str(out), duration=0.4, fps=10,
+                                                                         size=(96, 64))
+    assert frames == 4 and out.stat().st_size > 0
+
+
+def test_sweep_equals_the_cli(tmp_path):
+    sweep = tmp_path / "s.json"
+    sweep.write_text(
+        '{"scene": "%s", "axes": [{"id": "a", "min": 1.0, "max": 1.4, "count": 5}], "quantity": "lyapunov.max",'
+        ' "set": {"lyapunov.time": 200}}' % scene_path("henon_map.json"))
+    out = tmp_path / "s.csv"
+    cli("sweep", sweep, "-o", out, "--threads", 2)
+    import csv
+    rows = list(csv.DictReader(open(out)))
+    r = rollviz.sweep(str(sweep), threads=2)
+    assert r.complete and r.shape == [5] and r.status == ["ok"] * 5
+    assert list(r.columns["a"]) == [float(x["a"]) for x in rows]
+    assert list(r.columns["lyapunov.max"]) == [float(x["lyapunov.max"]) for x in rows]
+
+
+def test_every_tool_runs_from_python():
+    """Each tool of the registry answers on a small case (the ones above check numbers)."""
+    hm = rollviz.Scene.load(scene_path("henon_map.json"))
+    assert hm.map3d(points=10).shape[0] == 10
+    assert hm.spectrum(function="x", samples=256).frequency.size > 0
+    assert hm.plot(**{"plot.x": "x", "plot.y": "y", "plot.time_limit": 50}).shape[1] == 2
+    r = hm.multipliers(guess=[0.63, 0.19], parameter="a", to=1.35, step=-0.05)
+    assert len(r) >= 2 and all(m.shape == (2,) for m in r)
+    sep = hm.separatrix(guess=[0.63, 0.19], branches=[1], points=50)
+    assert sep.fixedpoint.type.startswith("hyperbolic") and sep.branches[1].points.shape[1] == 2
+    g = hm.surface(step_x=0.5, step_y=0.5, x_min=-1, x_max=1, y_min=-1, y_max=1)
+    assert g.distance.shape == (g.y.size, g.x.size) == (5, 5)
+    cb = rollviz.Scene.load(scene_path("chaplygin_ball.json"))
+    d = cb.diagram()
+    assert d.branches and all(b.shape[1] == 3 for b in d.branches.values())
+    assert cb.ram(step_x=0.5, step_y=0.5).allowed.ndim == 2
+    # the standard map's fixed point (pi, 0) doubles its period at K = 4 (trace of the Jacobian 2 - K = -2)
+    sm = rollviz.Scene.load(scene_path("standard_map.json"), K=3.5)
+    # parameter, to, step: the continuation section's (the tool reads it, ToolEntry::alsoSections)
+    tree = sm.bifurcation_tree(guess=[np.pi, 0], parameter="K", to=4.5, step=0.05, levels=1)
+    assert tree.rows.shape[1] == len(tree.columns)
+    assert tree.doublings and abs(tree.doublings[0].parameter - 4) < 1e-6
