@@ -101,7 +101,6 @@ pyb::array_t<unsigned char> toPicture(Image&& image) {
 // integrate(time, every, columns): the rows `rollviz integrate` writes, as (t, X)
 pyb::tuple integrate(const Scene& scene, double time, double every, const pyb::object& columns,
                      const pyb::object& progress) {
-  if (!(std::isfinite(time) && time >= 0)) throw InputError("time: must be a finite number >= 0");
   if (!(std::isfinite(every) && every > 0)) throw InputError("every: must be positive");
   const auto& obs = scene.model->observables();
   std::vector<int> cols;
@@ -136,20 +135,27 @@ pyb::tuple integrate(const Scene& scene, double time, double every, const pyb::o
   return pyb::make_tuple(toArray(std::move(t)), toArray(std::move(x), {n, k}));
 }
 
+// the 3D view at `time`, the traces covering [0, time] (as `rollviz render` shows it)
+std::unique_ptr<VisualScene> playedTo(const Scene& scene, double time) {
+  if (!(std::isfinite(time) && time >= 0)) throw InputError("time: must be a finite number >= 0");
+  auto integrator = scene.startIntegrator();
+  auto visual = std::make_unique<VisualScene>(*scene.model, scene.view, scene.initialState);
+  Eigen::VectorXd x;
+  playTo(*visual, *integrator, time, x);
+  return visual;
+}
+
 pyb::array_t<unsigned char> render(const Scene& scene, const pyb::handle& size, double time, int scale,
                                    bool transparent) {
   const auto [w, h] = pictureSize(size, "size");
-  if (!(std::isfinite(time) && time >= 0)) throw InputError("time: must be a finite number >= 0");
   if (scale != 1 || transparent)
     throw InputError(
         "scale, transparent: only for files (Scene.snapshot); render() returns the window's RGB");
   Image image;
   {
     pyb::gil_scoped_release release;
-    auto integrator = scene.startIntegrator();
-    VisualScene visual(*scene.model, scene.view, scene.initialState);
-    Eigen::VectorXd x;
-    playTo(visual, *integrator, time, x);
+    const auto shown = playedTo(scene, time);
+    VisualScene& visual = *shown;
     auto ctx = createHeadlessContext(w, h);
     visual.addTo(ctx->window());
     image = capture(ctx->window());
@@ -161,13 +167,10 @@ pyb::array_t<unsigned char> render(const Scene& scene, const pyb::handle& size, 
 void snapshot(const Scene& scene, const std::string& path, const pyb::handle& size, double time, int scale,
               bool transparent) {
   const auto [w, h] = pictureSize(size, "size");
-  if (!(std::isfinite(time) && time >= 0)) throw InputError("time: must be a finite number >= 0");
   checkWritable(path, "path");
   pyb::gil_scoped_release release;
-  auto integrator = scene.startIntegrator();
-  VisualScene visual(*scene.model, scene.view, scene.initialState);
-  Eigen::VectorXd x;
-  playTo(visual, *integrator, time, x);
+  const auto shown = playedTo(scene, time);
+  VisualScene& visual = *shown;
   auto ctx = createHeadlessContext(w, h);
   visual.addTo(ctx->window());
   writePng(ctx->window(), path, "path", SnapshotOptions{.scale = scale, .transparent = transparent});
@@ -175,20 +178,18 @@ void snapshot(const Scene& scene, const std::string& path, const pyb::handle& si
 }
 
 void exportView(const Scene& scene, const std::string& path, double time) {
-  if (!(std::isfinite(time) && time >= 0)) throw InputError("time: must be a finite number >= 0");
   if (!hasExtension(path, ".vtm")) throw InputError("path " + path + ": the view is exported as a .vtm file");
   checkWritable(path, "path");
   pyb::gil_scoped_release release;
-  auto integrator = scene.startIntegrator();
-  VisualScene visual(*scene.model, scene.view, scene.initialState);
-  Eigen::VectorXd x;
-  playTo(visual, *integrator, time, x);
+  const auto shown = playedTo(scene, time);
+  VisualScene& visual = *shown;
   writeSceneVtm(visual, path, "path");
 }
 
 long video(const Scene& scene, const std::string& path, double duration, int fps, const pyb::handle& size,
            double speed, const std::string& encoder, const pyb::object& progress) {
-  const auto [w, h] = pictureSize(size, "size");
+  const auto picture = pictureSize(size, "size");
+  const int w = picture.first, h = picture.second; // lambdas capture no structured bindings (clang 14)
   if (!(std::isfinite(duration) && duration > 0)) throw InputError("duration: must be positive");
   if (fps < 1 || fps > 240) throw InputError("fps: must lie in [1, 240]");
   if (w % 2 || h % 2) throw InputError("size: a video needs an even width and height");
@@ -217,7 +218,8 @@ long video(const Scene& scene, const std::string& path, double duration, int fps
 
 pyb::array_t<unsigned char> chart(const Scene& scene, const std::string& view, const pyb::handle& size,
                                   long points, const std::string& diagram, const pyb::object& progress) {
-  const auto [w, h] = pictureSize(size, "size");
+  const auto picture = pictureSize(size, "size");
+  const int w = picture.first, h = picture.second; // lambdas capture no structured bindings (clang 14)
   const auto& views = chartViews();
   if (std::find(views.begin(), views.end(), view) == views.end()) {
     std::string known;
@@ -270,7 +272,8 @@ PYBIND11_MODULE(_rollviz, m) {
   m.doc() = "rollviz: bodies rolling without slipping, and the tools of nonlinear dynamics (C++ core)";
 
   static pyb::exception<ComputationError> computationError(m, "ComputationError", PyExc_RuntimeError);
-  pyb::register_exception_translator([](std::exception_ptr p) {
+  // by value: pybind11 takes a plain function pointer of this signature
+  pyb::register_exception_translator([](std::exception_ptr p) { // NOLINT(performance-unnecessary-value-param)
     try {
       if (p) std::rethrow_exception(p);
     } catch (const InputError& e) {

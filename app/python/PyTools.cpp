@@ -376,6 +376,7 @@ pyb::object grid(Call& c, MapGrid::Kind kind) {
   const char* names[] = {"x", "y", "z"};
   for (int a = 0; a < dims; ++a) {
     std::vector<double> axis;
+    axis.reserve(r.size[a]);
     for (int i = 0; i < r.size[a]; ++i)
       axis.push_back(g.axes[a].at(i));
     d[names[a]] = toArray(std::move(axis));
