@@ -24,24 +24,14 @@ void runJob(const pyb::object& progress, const std::function<void(const ToolCont
   control.stopRequested = [&] { return stop.load(std::memory_order_relaxed); };
   control.progress = [&](double f) { fraction.store(f, std::memory_order_relaxed); };
   const bool report = !progress.is_none();
-  {
-    pyb::gil_scoped_release release;
-    std::thread worker([&] {
-      try {
-        work(control);
-      } catch (...) {
-        failure = std::current_exception();
-      }
-      std::lock_guard lock(m);
-      done = true;
-      cv.notify_all();
-    });
+  // the caller's side while the worker computes: signals and progress, the GIL taken briefly each time
+  const auto poll = [&] {
     double shown = -1;
     for (;;) {
       {
         std::unique_lock lock(m);
         // 50 ms: Ctrl-C answers at once to a person, and the interpreter's other threads get the GIL
-        if (cv.wait_for(lock, std::chrono::milliseconds(50), [&] { return done; })) break;
+        if (cv.wait_for(lock, std::chrono::milliseconds(50), [&] { return done; })) return;
       }
       if (pythonError) continue; // stopping: wait for the worker
       pyb::gil_scoped_acquire acquire;
@@ -60,6 +50,26 @@ void runJob(const pyb::object& progress, const std::function<void(const ToolCont
           stop = true;
         }
       }
+    }
+  };
+  {
+    pyb::gil_scoped_release release;
+    std::thread worker([&] {
+      try {
+        work(control);
+      } catch (...) {
+        failure = std::current_exception();
+      }
+      std::lock_guard lock(m);
+      done = true;
+      cv.notify_all();
+    });
+    try {
+      poll();
+    } catch (...) { // nothing may leave while the worker runs: stop it first
+      stop = true;
+      worker.join();
+      throw;
     }
     worker.join();
   }

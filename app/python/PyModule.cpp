@@ -99,8 +99,11 @@ pyb::array_t<unsigned char> toPicture(Image&& image) {
 }
 
 // integrate(time, every, columns): the rows `rollviz integrate` writes, as (t, X)
-pyb::tuple integrate(const Scene& scene, double time, double every, const pyb::object& columns,
+pyb::tuple integrate(const Scene& shared, double time, double every, const pyb::object& columns,
                      const pyb::object& progress) {
+  // a copy: another Python thread may set() the scene while this runs without the GIL
+  const Scene scene = shared; // NOLINT(performance-unnecessary-copy-initialization)
+  if (!(std::isfinite(time) && time >= 0)) throw InputError("time: must be a finite number >= 0");
   if (!(std::isfinite(every) && every > 0)) throw InputError("every: must be positive");
   const auto& obs = scene.model->observables();
   std::vector<int> cols;
@@ -145,8 +148,10 @@ std::unique_ptr<VisualScene> playedTo(const Scene& scene, double time) {
   return visual;
 }
 
-pyb::array_t<unsigned char> render(const Scene& scene, const pyb::handle& size, double time, int scale,
+pyb::array_t<unsigned char> render(const Scene& shared, const pyb::handle& size, double time, int scale,
                                    bool transparent) {
+  // a copy: another Python thread may set() the scene while this runs without the GIL
+  const Scene scene = shared; // NOLINT(performance-unnecessary-copy-initialization)
   const auto [w, h] = pictureSize(size, "size");
   if (scale != 1 || transparent)
     throw InputError(
@@ -164,8 +169,10 @@ pyb::array_t<unsigned char> render(const Scene& scene, const pyb::handle& size, 
   return toPicture(std::move(image));
 }
 
-void snapshot(const Scene& scene, const std::string& path, const pyb::handle& size, double time, int scale,
+void snapshot(const Scene& shared, const std::string& path, const pyb::handle& size, double time, int scale,
               bool transparent) {
+  // a copy: another Python thread may set() the scene while this runs without the GIL
+  const Scene scene = shared; // NOLINT(performance-unnecessary-copy-initialization)
   const auto [w, h] = pictureSize(size, "size");
   checkWritable(path, "path");
   pyb::gil_scoped_release release;
@@ -177,7 +184,9 @@ void snapshot(const Scene& scene, const std::string& path, const pyb::handle& si
   ctx->window()->RemoveRenderer(visual.renderer());
 }
 
-void exportView(const Scene& scene, const std::string& path, double time) {
+void exportView(const Scene& shared, const std::string& path, double time) {
+  // a copy: another Python thread may set() the scene while this runs without the GIL
+  const Scene scene = shared; // NOLINT(performance-unnecessary-copy-initialization)
   if (!hasExtension(path, ".vtm")) throw InputError("path " + path + ": the view is exported as a .vtm file");
   checkWritable(path, "path");
   pyb::gil_scoped_release release;
@@ -186,8 +195,10 @@ void exportView(const Scene& scene, const std::string& path, double time) {
   writeSceneVtm(visual, path, "path");
 }
 
-long video(const Scene& scene, const std::string& path, double duration, int fps, const pyb::handle& size,
+long video(const Scene& shared, const std::string& path, double duration, int fps, const pyb::handle& size,
            double speed, const std::string& encoder, const pyb::object& progress) {
+  // a copy: another Python thread may set() the scene while this runs without the GIL
+  const Scene scene = shared; // NOLINT(performance-unnecessary-copy-initialization)
   const auto picture = pictureSize(size, "size");
   const int w = picture.first, h = picture.second; // lambdas capture no structured bindings (clang 14)
   if (!(std::isfinite(duration) && duration > 0)) throw InputError("duration: must be positive");
@@ -216,8 +227,10 @@ long video(const Scene& scene, const std::string& path, double duration, int fps
   return frames;
 }
 
-pyb::array_t<unsigned char> chart(const Scene& scene, const std::string& view, const pyb::handle& size,
+pyb::array_t<unsigned char> chart(const Scene& shared, const std::string& view, const pyb::handle& size,
                                   long points, const std::string& diagram, const pyb::object& progress) {
+  // a copy: another Python thread may set() the scene while this runs without the GIL
+  const Scene scene = shared; // NOLINT(performance-unnecessary-copy-initialization)
   const auto picture = pictureSize(size, "size");
   const int w = picture.first, h = picture.second; // lambdas capture no structured bindings (clang 14)
   const auto& views = chartViews();

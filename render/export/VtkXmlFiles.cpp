@@ -5,8 +5,10 @@
 #include "render/VisualScene.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cctype>
 #include <filesystem>
+#include <regex>
 #include <unistd.h>
 #include <vtkActor.h>
 #include <vtkCellArray.h>
@@ -172,17 +174,27 @@ void writeSceneVtm(const VisualScene& scene, const std::string& path, const std:
   const fs::path stem = target.stem();
   const fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
   // a folder of the same name is replaced only when it holds nothing but an earlier export's pieces
-  if (fs::is_directory(dir / stem)) {
-    for (const auto& e : fs::directory_iterator(dir / stem))
-      if (!e.is_regular_file() || e.path().filename().string().rfind(stem.string() + "_", 0) != 0)
-        throw InputError(what + " " + path + ": the folder " + (dir / stem).string() +
+  // (the writer names them STEM_N[_M].vtX), and only once the new export is complete
+  const fs::path pieces = dir / stem;
+  const std::regex piece(std::regex_replace(stem.string(), std::regex(R"([.^$|()\[\]{}*+?\\])"), R"(\$&)") +
+                         R"(_\d+(_\d+)*\.vt[a-z]+)");
+  if (fs::is_directory(pieces)) {
+    bool any = false;
+    for (const auto& e : fs::directory_iterator(pieces)) {
+      any = true;
+      if (!e.is_regular_file() || !std::regex_match(e.path().filename().string(), piece))
+        throw InputError(what + " " + path + ": the folder " + pieces.string() +
                          " exists and is not an earlier export's: the pieces go there");
-    fs::remove_all(dir / stem);
-  } else if (fs::exists(dir / stem)) {
-    throw InputError(what + " " + path + ": " + (dir / stem).string() +
-                     " exists: the pieces' folder goes there");
+    }
+    if (!any)
+      throw InputError(what + " " + path + ": the empty folder " + pieces.string() +
+                       " exists: the pieces go there (remove it)");
+  } else if (fs::exists(pieces)) {
+    throw InputError(what + " " + path + ": " + pieces.string() + " exists: the pieces' folder goes there");
   }
-  const fs::path temp = dir / (".rollviz-vtm-" + std::to_string(::getpid()) + "-" + stem.string());
+  static std::atomic<int> calls{0}; // one temporary folder per call: exports may run on several threads
+  const fs::path temp = dir / (".rollviz-vtm-" + std::to_string(::getpid()) + "-" + std::to_string(calls++) +
+                               "-" + stem.string());
   std::error_code ec;
   fs::remove_all(temp, ec);
   fs::create_directories(temp, ec);
@@ -200,9 +212,16 @@ void writeSceneVtm(const VisualScene& scene, const std::string& path, const std:
   writer->SetDataModeToBinary();
   writer->SetCompressorTypeToZLib();
   if (writer->Write() != 1) throw ComputationError("cannot write " + path);
-  fs::rename(temp / stem, dir / stem, ec);
+  // the earlier pieces step aside into the temporary folder (removed with it), the new ones and the .vtm come
+  // in
+  if (fs::exists(pieces)) fs::rename(pieces, temp / "earlier", ec);
+  if (!ec) fs::rename(temp / stem, pieces, ec);
   if (!ec) fs::rename(temp / target.filename(), target, ec);
-  if (ec) throw ComputationError("cannot write " + path + ": " + ec.message());
+  if (ec) {
+    std::error_code back;
+    if (!fs::exists(pieces) && fs::exists(temp / "earlier")) fs::rename(temp / "earlier", pieces, back);
+    throw ComputationError("cannot write " + path + ": " + ec.message());
+  }
 }
 
 } // namespace rv

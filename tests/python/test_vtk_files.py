@@ -100,3 +100,8 @@ def test_render_vtm_holds_the_views_pieces(tmp_path):
     (tmp_path / "keep" / "mine.txt").write_text("x")
     p = cli("render", scene_path("chaplygin_ball.json"), "-o", tmp_path / "keep.vtm", check=False)
     assert p.returncode == 2 and "keep" in p.stderr and (tmp_path / "keep" / "mine.txt").exists()
+    (tmp_path / "run").mkdir()  # named like the writer's pieces, but not one of them
+    (tmp_path / "run" / "run_notes.txt").write_text("x")
+    p = cli("render", scene_path("chaplygin_ball.json"), "-o", tmp_path / "run.vtm", check=False)
+    assert p.returncode == 2 and (tmp_path / "run" / "run_notes.txt").exists() and not (tmp_path / "run.vtm").exists()
+    assert not [f for f in tmp_path.iterdir() if f.name.startswith(".rollviz")]  # no temporary left
