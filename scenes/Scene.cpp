@@ -1,5 +1,10 @@
 #include "scenes/Scene.h"
 
+#include "dynamics/core/Errors.h"
+#include "dynamics/core/TimeSampler.h"
+
+#include <cmath>
+
 namespace rv {
 
 std::unique_ptr<Integrator> Scene::startIntegrator() const {
@@ -14,6 +19,34 @@ RunSpec Scene::runSpec() const {
   spec.integratorParameters = *integratorParameters;
   spec.initialState = initialState;
   return spec;
+}
+
+std::vector<int> observableColumns(const Model& model, const std::vector<std::string>& ids,
+                                   const std::string& what) {
+  std::vector<int> cols;
+  for (const auto& c : ids) {
+    const int i = model.findObservable(c);
+    if (i < 0)
+      throw InputError(what + ": unknown observable '" + c + "' of " + model.info().id +
+                       " (rollviz describe " + model.info().id + ")");
+    cols.push_back(i);
+  }
+  if (cols.empty()) throw InputError(what + ": give at least one observable");
+  return cols;
+}
+
+bool sampleColumns(const Scene& scene, double time, double every, const std::vector<int>& columns,
+                   const std::function<bool(double, const std::vector<double>&)>& visit) {
+  // a time that is a whole number of periods up to rounding still gets its last row
+  const long rows = static_cast<long>(std::floor(time / every * (1 + 1e-12))) + 1;
+  const auto& obs = scene.model->observables();
+  auto integrator = scene.startIntegrator();
+  std::vector<double> row(columns.size());
+  return sampleUniform(*integrator, every, rows, [&](double t, const Eigen::VectorXd& x) {
+    for (std::size_t k = 0; k < columns.size(); ++k)
+      row[k] = obs[columns[k]].value(t, x.data());
+    return visit(t, row);
+  });
 }
 
 } // namespace rv

@@ -10,6 +10,7 @@
 #include "render/ViewOptions.h"
 
 #include <array>
+#include <functional>
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -53,5 +54,16 @@ struct Scene {
   /// The scene in dynamics terms, for tasks and jobs.
   RunSpec runSpec() const;
 };
+
+/// The observables named `ids` as indices into the model's observables; InputError "WHAT: unknown observable
+/// 'x' of PROBLEM (rollviz describe PROBLEM)" for a name it does not know, or when `ids` is empty.
+std::vector<int> observableColumns(const Model& model, const std::vector<std::string>& ids,
+                                   const std::string& what);
+
+/// What `rollviz integrate` samples: the scene integrated from its initial state, visit(t, row) with the
+/// columns' values at t = 0, every, 2 every, ... up to `time`. Stops early (returns false) when visit returns
+/// false; throws ComputationError when a step fails.
+bool sampleColumns(const Scene& scene, double time, double every, const std::vector<int>& columns,
+                   const std::function<bool(double, const std::vector<double>&)>& visit);
 
 } // namespace rv

@@ -2,12 +2,12 @@
 #include "app/cli/Commands.h"
 #include "app/cli/Progress.h"
 #include "dynamics/core/Errors.h"
-#include "dynamics/core/TimeSampler.h"
 #include "dynamics/io/AtomicFile.h"
 #include "render/export/VtkXmlFiles.h"
 
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <memory>
 #include <sstream>
 
@@ -39,35 +39,29 @@ Command addIntegrateCommand(CLI::App& app) {
             if (!(std::isfinite(time) && time >= 0)) throw InputError("--time: must be a finite number >= 0");
             if (!(std::isfinite(every) && every > 0)) throw InputError("--every: must be positive");
             const Scene scene = args.load();
-            std::vector<int> cols;
+            std::vector<std::string> ids;
             std::stringstream list(columns);
-            for (std::string c; std::getline(list, c, ',');) {
-              const int i = scene.model->findObservable(c);
-              if (i < 0)
-                throw InputError("--columns: unknown observable '" + c + "' of " + scene.model->info().id +
-                                 " (rollviz describe " + scene.model->info().id + ")");
-              cols.push_back(i);
-            }
-            if (cols.empty()) throw InputError("--columns: give at least one observable");
-
+            for (std::string c; std::getline(list, c, ',');)
+              ids.push_back(c);
+            const std::vector<int> cols = observableColumns(*scene.model, ids, "--columns");
             const auto& obs = scene.model->observables();
-            const long rows = static_cast<long>(std::floor(time / every * (1 + 1e-12))) + 1;
+            Progress progress("integrate");
+            // every row goes to `emit`; the answer says whether the run went to its end
+            const auto sample = [&](const std::function<void(double, const std::vector<double>&)>& emit) {
+              return sampleColumns(scene, time, every, cols, [&](double t, const std::vector<double>& row) {
+                emit(t, row);
+                progress.update(time > 0 ? std::abs(t) / time : 1.0);
+                return !interrupted();
+              });
+            };
+
             if (hasExtension(output, ".vtp")) {
               checkWritable(output, "-o");
               NamedColumns table;
               for (int c : cols)
                 table.names.push_back(obs[c].id);
-              auto integrator = scene.startIntegrator();
-              Progress progress("integrate");
-              std::vector<double> row(cols.size());
               const bool complete =
-                  sampleUniform(*integrator, every, rows, [&](double t, const Eigen::VectorXd& x) {
-                    for (std::size_t k = 0; k < cols.size(); ++k)
-                      row[k] = obs[cols[k]].value(t, x.data());
-                    table.addRow(row);
-                    progress.update(rows > 1 ? std::abs(t) / time : 1.0);
-                    return !interrupted();
-                  });
+                  sample([&](double, const std::vector<double>& row) { table.addRow(row); });
               writePolyDataVtp(output, table, {0, cols.size() > 1 ? 1 : -1, cols.size() > 2 ? 2 : -1}, true);
               return complete ? 0 : 130;
             }
@@ -82,17 +76,13 @@ Command addIntegrateCommand(CLI::App& app) {
               std::fprintf(out, "%s%s", k ? "," : "", obs[cols[k]].id.c_str());
             std::fputc('\n', out);
 
-            auto integrator = scene.startIntegrator();
-            Progress progress("integrate");
             std::string failure;
             bool stopped = false;
             try {
-              stopped = !sampleUniform(*integrator, every, rows, [&](double t, const Eigen::VectorXd& x) {
-                for (std::size_t k = 0; k < cols.size(); ++k)
-                  std::fprintf(out, "%s%.17g", k ? "," : "", obs[cols[k]].value(t, x.data()));
+              stopped = !sample([&](double, const std::vector<double>& row) {
+                for (std::size_t k = 0; k < row.size(); ++k)
+                  std::fprintf(out, "%s%.17g", k ? "," : "", row[k]);
                 std::fputc('\n', out);
-                progress.update(rows > 1 ? std::abs(t) / time : 1.0);
-                return !interrupted();
               });
             } catch (const ComputationError& e) {
               failure = e.what();

@@ -20,6 +20,7 @@
 #include <cstdio>
 #include <fmt/core.h>
 #include <fstream>
+#include <functional>
 #include <memory>
 #include <thread>
 #include <unistd.h>
@@ -56,7 +57,11 @@ namespace {
 
 // the CSV (and the chart's values) from the store, in grid order
 // the grid as image data: a node per point, its columns and cost as arrays (NaN where it failed)
-void writeVti(const SweepSpec& spec, const SweepStore& store, const std::string& path) {
+// Both writers read the store once, in grid order, and show each record to `seen` (the chart's values).
+using RecordSeen = std::function<void(const SweepRecord&)>;
+
+void writeVti(const SweepSpec& spec, const SweepStore& store, const std::string& path,
+              const RecordSeen& seen) {
   ImageGrid image;
   for (std::size_t a = 0; a < spec.axes.size(); ++a) {
     const SweepAxis& axis = spec.axes[a];
@@ -69,6 +74,7 @@ void writeVti(const SweepSpec& spec, const SweepStore& store, const std::string&
   image.arrays.names.emplace_back("seconds");
   for (long i = 0; i < spec.points(); ++i) {
     SweepRecord r = store.read(i);
+    seen(r);
     r.values.resize(spec.columns.size(), NAN);
     r.values.push_back(r.seconds);
     image.arrays.addRow(r.values);
@@ -76,7 +82,8 @@ void writeVti(const SweepSpec& spec, const SweepStore& store, const std::string&
   writeImageVti(path, image);
 }
 
-void writeCsv(const SweepSpec& spec, const SweepStore& store, const std::string& path) {
+void writeCsv(const SweepSpec& spec, const SweepStore& store, const std::string& path,
+              const RecordSeen& seen) {
   AtomicFile csv(path, "-o");
   std::FILE* f = std::fopen(csv.tempPath().c_str(), "w");
   if (!f) throw InputError("-o " + path + ": cannot write");
@@ -84,8 +91,11 @@ void writeCsv(const SweepSpec& spec, const SweepStore& store, const std::string&
   for (const auto& h : sweepCsvHeader(spec))
     line += (line.empty() ? "" : ",") + h;
   std::fprintf(f, "%s\n", line.c_str());
-  for (long i = 0; i < spec.points(); ++i)
-    std::fprintf(f, "%s\n", sweepCsvRow(spec, i, store.read(i)).c_str());
+  for (long i = 0; i < spec.points(); ++i) {
+    const SweepRecord r = store.read(i);
+    seen(r);
+    std::fprintf(f, "%s\n", sweepCsvRow(spec, i, r).c_str());
+  }
   const bool ok = std::fflush(f) == 0 && ::fsync(fileno(f)) == 0;
   std::fclose(f);
   if (!ok) throw ComputationError(path + ": cannot write");
@@ -93,17 +103,16 @@ void writeCsv(const SweepSpec& spec, const SweepStore& store, const std::string&
 }
 
 void writeResults(const SweepSpec& spec, const SweepStore& store, const SweepOptions& o) {
-  if (hasExtension(o.output, ".vti"))
-    writeVti(spec, store, o.output);
-  else
-    writeCsv(spec, store, o.output);
-  if (o.png.empty()) return;
+  const bool png = !o.png.empty();
   SweepChartData data = sweepChartData(spec);
-  for (long i = 0; i < spec.points(); ++i) {
-    const SweepRecord r = store.read(i);
-    data.values.insert(data.values.end(), r.values.begin(), r.values.end());
-  }
-  writePngChart(data, o.png, o.size);
+  const RecordSeen seen = [&](const SweepRecord& r) {
+    if (png) data.values.insert(data.values.end(), r.values.begin(), r.values.end());
+  };
+  if (hasExtension(o.output, ".vti"))
+    writeVti(spec, store, o.output, seen);
+  else
+    writeCsv(spec, store, o.output, seen);
+  if (png) writePngChart(data, o.png, o.size);
 }
 
 int runSweep(const SweepOptions& o) {

@@ -7,7 +7,6 @@
 #include "app/python/PyJob.h"
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/ModelRegistry.h"
-#include "dynamics/core/TimeSampler.h"
 #include "dynamics/io/AtomicFile.h"
 #include "render/Snapshot.h"
 #include "render/VisualScene.h"
@@ -105,32 +104,23 @@ pyb::tuple integrate(const Scene& shared, double time, double every, const pyb::
   const Scene scene = shared; // NOLINT(performance-unnecessary-copy-initialization)
   if (!(std::isfinite(time) && time >= 0)) throw InputError("time: must be a finite number >= 0");
   if (!(std::isfinite(every) && every > 0)) throw InputError("every: must be positive");
-  const auto& obs = scene.model->observables();
-  std::vector<int> cols;
-  if (columns.is_none()) {
-    for (std::size_t i = 0; i < obs.size(); ++i)
-      cols.push_back(static_cast<int>(i));
-  } else {
-    for (const auto& c : columns.cast<std::vector<std::string>>()) {
-      const int i = scene.model->findObservable(c);
-      if (i < 0)
-        throw InputError("columns: unknown observable '" + c + "' of " + scene.model->info().id +
-                         " (rollviz.describe(\"" + scene.model->info().id + "\"))");
-      cols.push_back(i);
-    }
-  }
-  if (cols.empty()) throw InputError("columns: give at least one observable");
-  const long rows = static_cast<long>(std::floor(time / every * (1 + 1e-12))) + 1;
+  std::vector<std::string> ids;
+  if (columns.is_none())
+    for (const auto& o : scene.model->observables())
+      ids.push_back(o.id);
+  else
+    ids = columns.cast<std::vector<std::string>>();
+  const std::vector<int> cols = observableColumns(*scene.model, ids, "columns");
   std::vector<double> t, x;
+  // room for the rows, within reason: a huge request grows as it goes instead of failing up front
+  const std::size_t rows = std::min<double>(time / every + 1, 1 << 20);
   t.reserve(rows);
   x.reserve(rows * cols.size());
   runJob(progress, [&](const ToolControl& control) {
-    auto integrator = scene.startIntegrator();
-    sampleUniform(*integrator, every, rows, [&](double tk, const Eigen::VectorXd& state) {
+    sampleColumns(scene, time, every, cols, [&](double tk, const std::vector<double>& row) {
       t.push_back(tk);
-      for (int c : cols)
-        x.push_back(obs[c].value(tk, state.data()));
-      control.progress(rows > 1 ? std::abs(tk) / time : 1.0);
+      x.insert(x.end(), row.begin(), row.end());
+      control.progress(time > 0 ? std::abs(tk) / time : 1.0);
       return !control.stopRequested();
     });
   });

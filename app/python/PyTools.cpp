@@ -177,17 +177,22 @@ pyb::dict fixedPointDict(const FixedPointResult& r, const ReturnMap& map) {
   return d;
 }
 
+// the fixed point the scene's map search finds; a stop request ends the call as a failure naming the tool
+FixedPointResult searchFixedPoint(const SceneMap& s, const ReturnMap& map, const ToolControl& control,
+                                  const std::string& tool) {
+  try {
+    return findFixedPoint(map, s.guess(), s.search(), control);
+  } catch (const Stopped&) {
+    throw ComputationError(tool + ": stopped");
+  }
+}
+
 pyb::object fixedpoint(Call& c) {
   const auto s = sceneMap(c);
   const ReturnMap map = s->map();
   FixedPointResult r;
-  runJob(c.progress, [&](const ToolControl& control) {
-    try {
-      r = findFixedPoint(map, s->guess(), s->search(), control);
-    } catch (const Stopped&) {
-      throw ComputationError("fixedpoint: stopped");
-    }
-  });
+  runJob(c.progress,
+         [&](const ToolControl& control) { r = searchFixedPoint(*s, map, control, "fixedpoint"); });
   return fixedPointDict(r, map);
 }
 
@@ -277,11 +282,7 @@ pyb::object separatrix(Call& c) {
   std::vector<std::pair<int, SeparatrixResult>> results;
   FixedPointResult fp;
   runJob(c.progress, [&](const ToolControl& control) {
-    try {
-      fp = findFixedPoint(map, s->guess(), s->search(), control);
-    } catch (const Stopped&) {
-      throw ComputationError("separatrix: stopped");
-    }
+    fp = searchFixedPoint(*s, map, control, "separatrix");
     for (int b : list) {
       SeparatrixSettings ss = separatrixSettings(sv, s->search());
       ss.branch = b;

@@ -22,6 +22,14 @@ def arrays(data):
     return {pd.GetArrayName(i): vtk_to_numpy(pd.GetArray(i)) for i in range(pd.GetNumberOfArrays())}
 
 
+def assert_columns_are_the_csv(data, header, table):
+    """The file's point-data arrays are the CSV's columns, in order and to the last digit."""
+    a = arrays(data)
+    assert list(a) == header
+    for k, name in enumerate(header):
+        assert np.array_equal(a[name], table[:, k])
+
+
 def test_integrate_vtp_is_the_csv_as_a_polyline(tmp_path):
     args = ["integrate", scene_path("chaplygin_ball.json"), "--time", 5, "--every", 0.5, "--columns", "t,E,M1,gamma3"]
     cli(*args, "-o", tmp_path / "run.csv")
@@ -29,10 +37,7 @@ def test_integrate_vtp_is_the_csv_as_a_polyline(tmp_path):
     header, table = read_csv(tmp_path / "run.csv")
     p = read(vtk_io.vtkXMLPolyDataReader, tmp_path / "run.vtp")
     assert p.GetNumberOfPoints() == 11 and p.GetNumberOfLines() == 1 and p.GetNumberOfVerts() == 0
-    a = arrays(p)
-    assert list(a) == header
-    for k, name in enumerate(header):
-        assert np.array_equal(a[name], table[:, k])
+    assert_columns_are_the_csv(p, header, table)
     assert np.array_equal(vtk_to_numpy(p.GetPoints().GetData()), table[:, :3])
 
 
@@ -43,10 +48,7 @@ def test_poincare_vtp_is_a_point_cloud(tmp_path):
     header, table = read_csv(tmp_path / "map.csv")
     p = read(vtk_io.vtkXMLPolyDataReader, tmp_path / "map.vtp")
     assert p.GetNumberOfPoints() == 120 and p.GetNumberOfVerts() == 120 and p.GetNumberOfLines() == 0
-    a = arrays(p)
-    assert list(a) == header
-    for k, name in enumerate(header):
-        assert np.array_equal(a[name], table[:, k])
+    assert_columns_are_the_csv(p, header, table)
 
 
 def test_surface_vti_is_the_grid(tmp_path):
