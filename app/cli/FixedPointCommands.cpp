@@ -357,57 +357,60 @@ Command addBifurcationTreeCommand(CLI::App& app) {
       app.add_subcommand("bifurcation-tree", "the period-doubling cascade of an elliptic fixed point");
   auto a = std::make_shared<ContinueArgs>();
   addContinueArgs(cmd, *a);
-  return {
-      cmd, [a] {
-        const auto s = setUp(a->map, true, continuationOverrides(*a));
-        const ContinuationSettings c = s->continuation();
-        const BifurcationTreeSettings t = bifurcationTreeSettings(s->scene().tool("bifurcation_tree"), c);
-        const double start = s->spec().modelParameters[c.parameter];
-        Output out(a->output);
-        const ReturnMap map = s->map();
-        std::vector<std::string> names{"level", "order", c.parameter};
-        for (const auto& n : map.coordinateNames())
-          names.push_back(n);
-        names.push_back("type");
-        std::fprintf(out.get(), "%s\n", header(names).c_str());
-        Progress progress("bifurcation-tree");
-        BifurcationTreeResult r;
-        bool stopped = false;
-        try {
-          bifurcationTree(
-              s->spec().modelAt(c.parameter), s->integrators(), s->section(), start, s->guess(), t,
-              interruptibleControl(progress),
-              [&](const TreeBranch& b, const ContinuationPoint& p) {
-                std::vector<double> row{static_cast<double>(b.level), static_cast<double>(b.order),
-                                        p.parameter};
-                for (double x : toVector(p.fixedPoint.point))
-                  row.push_back(x);
-                printRow(out.get(), row, std::string(",") + toString(p.fixedPoint.type));
-              },
-              [&](const PeriodDoubling& d) {
-                if (!a->json)
-                  fmt::print(a->output.empty() ? stderr : stdout,
-                             "period doubling of order {} at {} = {:.12g}\n", d.order, c.parameter,
-                             d.parameter);
-              },
-              &r);
-        } catch (const Stopped&) {
-          stopped = true;
-        }
-        out.commit();
-        if (a->json) {
-          nlohmann::json d = nlohmann::json::array();
-          for (const auto& x : r.doublings)
-            d.push_back({{"level", x.level}, {"order", x.order}, {"parameter", x.parameter}});
-          fmt::print(
-              "{}\n",
-              nlohmann::json{{"parameter", c.parameter}, {"doublings", d}, {"ratios", r.ratios()}}.dump());
-        } else {
-          for (double q : r.ratios())
-            fmt::print(a->output.empty() ? stderr : stdout, "ratio: {:.10g}\n", q);
-        }
-        return stopped ? 130 : 0;
-      }};
+  return {cmd, [a] {
+            const auto s = setUp(a->map, true, continuationOverrides(*a));
+            const ContinuationSettings c = s->continuation();
+            const BifurcationTreeSettings t = bifurcationTreeSettings(s->scene().tool("bifurcation_tree"), c);
+            const double start = s->spec().modelParameters[c.parameter];
+            Output out(a->output);
+            const ReturnMap map = s->map();
+            std::vector<std::string> names{"level", "order", c.parameter};
+            for (const auto& n : map.coordinateNames())
+              names.push_back(n);
+            names.push_back("type");
+            std::fprintf(out.get(), "%s\n", header(names).c_str());
+            Progress progress("bifurcation-tree");
+            BifurcationTreeResult r;
+            bool stopped = false;
+            try {
+              bifurcationTree(
+                  s->spec().modelAt(c.parameter), s->integrators(), s->section(), start, s->guess(), t,
+                  interruptibleControl(progress),
+                  [&](const TreeBranch& b, const ContinuationPoint& p) {
+                    std::vector<double> row{static_cast<double>(b.level), static_cast<double>(b.order),
+                                            p.parameter};
+                    for (double x : toVector(p.fixedPoint.point))
+                      row.push_back(x);
+                    printRow(out.get(), row, std::string(",") + toString(p.fixedPoint.type));
+                  },
+                  [&](const PeriodDoubling& d) {
+                    if (!a->json)
+                      fmt::print(a->output.empty() ? stderr : stdout,
+                                 "period doubling of order {} at {} = {:.12g}\n", d.order, c.parameter,
+                                 d.parameter);
+                  },
+                  &r);
+            } catch (const Stopped&) {
+              stopped = true;
+            }
+            out.commit();
+            if (a->json) {
+              nlohmann::json d = nlohmann::json::array();
+              for (const auto& x : r.doublings)
+                d.push_back({{"level", x.level}, {"order", x.order}, {"parameter", x.parameter}});
+              fmt::print("{}\n", nlohmann::json{{"parameter", c.parameter},
+                                                {"doublings", d},
+                                                {"ratios", r.ratios()},
+                                                {"end", r.end}}
+                                     .dump());
+            } else {
+              for (double q : r.ratios())
+                fmt::print(a->output.empty() ? stderr : stdout, "ratio: {:.10g}\n", q);
+              if (!r.end.empty())
+                fmt::print(a->output.empty() ? stderr : stdout, "the tree ends: {}\n", r.end);
+            }
+            return stopped ? 130 : 0;
+          }};
 }
 
 Command addSeparatrixCommand(CLI::App& app) {

@@ -318,6 +318,10 @@ void MapPanel::startBifurcationTree() {
       for (const auto& d : doublings)
         emit message(
             QString("period doubling of the order-%1 point at %2").arg(d.order).arg(d.parameter, 0, 'g', 12));
+      std::vector<std::string> ends;
+      raw->ends().take(ends);
+      for (const auto& e : ends)
+        emit message(QString("the bifurcation tree ends: %1").arg(QString::fromStdString(e)));
       return !points.empty();
     });
     emit message("growing the bifurcation tree of the scene's fixed point");

@@ -350,6 +350,7 @@ pyb::object bifurcationTree(Call& c) {
   d["types"] = types;
   d["doublings"] = doublings;
   d["ratios"] = r.ratios();
+  d["end"] = r.end;
   return d;
 }
 

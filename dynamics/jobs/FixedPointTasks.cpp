@@ -155,19 +155,21 @@ void BifurcationTreeTask::edit(MapTaskSpec spec, BifurcationTreeSettings setting
 void BifurcationTreeTask::reset() {
   points_.clear();
   doublings_.clear();
+  ends_.clear();
 }
 
 bool BifurcationTreeTask::run(const ToolControl& control) {
   reset();
   const std::string& id = settings_.continuation.parameter;
   try {
-    bifurcationTree(
+    const BifurcationTreeResult r = bifurcationTree(
         spec_.run.modelAt(id), integrators(spec_.run), spec_.section, spec_.run.modelParameters[id],
         spec_.guess, settings_, control,
         [this](const TreeBranch& b, const ContinuationPoint& p) {
           points_.push({b.level, b.order, p});
         },
         [this](const PeriodDoubling& d) { doublings_.push(d); });
+    ends_.push(r.end);
     return true;
   } catch (const Stopped&) {
     return false;

@@ -121,12 +121,15 @@ public:
   bool edit(const TaskEdit& e) override;
   Channel<TreePoint>& points() { return points_; }
   Channel<PeriodDoubling>& doublings() { return doublings_; }
+  /// Why the tree ended (BifurcationTreeResult::end), once it has.
+  Channel<std::string>& ends() { return ends_; }
 
 private:
   MapTaskSpec spec_;
   BifurcationTreeSettings settings_;
   Channel<TreePoint> points_;
   Channel<PeriodDoubling> doublings_;
+  Channel<std::string> ends_;
 };
 
 /// The |Map(x) - x| surface or the region of allowed motion.

@@ -4,7 +4,10 @@
 // continued in turn; at each level the step, the accuracy of the bifurcation value and the region shrink by
 // the coefficient, by default the Feigenbaum constant of area-preserving maps, 8.721097200 (Greene, MacKay,
 // Vivaldi & Feigenbaum, Physica D 3 (1981) 468; Benettin, Cercignani, Galgani & Giorgilli, Lett. Nuovo
-// Cimento 28 (1980) 1).
+// Cimento 28 (1980) 1). A point of a doubled family is accepted only when its minimal period is the doubled
+// one (the parent orbit is a fixed point of the doubled order too, and Newton near the pitchfork of Map^2n
+// falls onto it); the tree ends when the next bifurcation value could no longer be told apart from the last
+// in double precision.
 #pragma once
 #include "dynamics/tools/Continuation.h"
 
@@ -36,14 +39,17 @@ struct TreeBranch {
 struct BifurcationTreeResult {
   std::vector<TreeBranch> branches;
   std::vector<PeriodDoubling> doublings;
+  /// Why the tree ended: "the finite value is reached", "levels reached", ... (empty while it grows).
+  std::string end;
   /// (p_k - p_{k-1}) / (p_{k+1} - p_k) for consecutive doublings: tends to the Feigenbaum constant.
   std::vector<double> ratios() const;
 };
 
 /// Builds the tree from the elliptic fixed point of order `section.order` near `guess` at parameter value
 /// `start`. Streams every continued point (with its level and order) and every doubling. Throws
-/// ComputationError when the initial point is not elliptic or a step finds no point; Stopped when asked to
-/// stop (what was found so far is in `partial`).
+/// ComputationError when the initial point is not elliptic or its family cannot be followed; past the first
+/// doubling a failure ends the tree (the reason in `end`). Stopped when asked to stop (what was found so far
+/// is in `partial`).
 BifurcationTreeResult
 bifurcationTree(const Continuation::ModelAt& modelAt, const IntegratorFactory& makeIntegrator,
                 const SectionSettings& section, double start, const Eigen::VectorXd& guess,

@@ -55,7 +55,18 @@ FixedPointResult Continuation::solveAt(double p, const Eigen::VectorXd& guess,
                                        const ToolControl& control) const {
   const auto model = modelAt_(p);
   const ReturnMap map(*model, make_, section_);
-  return findFixedPoint(map, guess, s_.search, control);
+  FixedPointResult r = findFixedPoint(map, guess, s_.search, control);
+  if (s_.minimalOrder && section_.order % 2 == 0) {
+    // the partners of a point of minimal order n lie apart; a point of order n / 2 is its own partner
+    SectionSettings half = section_;
+    half.order /= 2;
+    const ReturnMap halfMap(*model, make_, half);
+    const double apart = halfMap.difference(halfMap(r.point, control), r.point).norm();
+    if (apart <= 100 * s_.search.accuracy)
+      throw ComputationError(format("the point found is of order %d (%g from its partner), not of order %d",
+                                    half.order, apart, section_.order));
+  }
+  return r;
 }
 
 TypeChange Continuation::locate(const ContinuationPoint& a, const ContinuationPoint& b,
@@ -124,16 +135,18 @@ bool Continuation::run(const ToolControl& control,
     while (true) {
       const ContinuationPoint& last = points_.back();
       if (std::abs(last.parameter - s_.to) <= 1e-12 * std::max(1.0, std::abs(s_.to))) break;
-      // the next value on the grid start + k step (no accumulated rounding), the last step shortened to land
-      // on the finite value; a step that finds no point is halved (up to 8 times) before the family is given
-      // up
-      const double k = std::floor((last.parameter - start_) / s_.step + 1e-9) + 1;
+      // the next value on the grid start + k step (no accumulated rounding; a grid point within a hundredth
+      // of a step, such as the last point itself when the step is near the parameter's rounding, is passed
+      // over), the last step shortened to land on the finite value; a step that finds no point is halved (up
+      // to 8 times) before the family is given up
+      double k = std::floor((last.parameter - start_) / s_.step) + 1;
+      if ((start_ + k * s_.step - last.parameter) / s_.step < 0.01) k += 1;
       const double stepped = start_ + k * s_.step;
       double p = (s_.to - stepped) * s_.step > 1e-9 * s_.step * s_.step ? stepped : s_.to;
       std::optional<ContinuationPoint> next;
       for (int halving = 0; !next; ++halving) {
         Eigen::VectorXd guess = last.fixedPoint.point;
-        if (points_.size() >= 2) {
+        if (points_.size() >= 2 && points_[points_.size() - 2].parameter != last.parameter) {
           const ContinuationPoint& before = points_[points_.size() - 2];
           guess += shape_->difference(last.fixedPoint.point, before.fixedPoint.point) * s_.extrapolation *
                    (p - last.parameter) / (last.parameter - before.parameter);

@@ -18,6 +18,9 @@ struct ContinuationSettings {
   double extrapolation = 1; ///< d
   bool stopAtTypeChange = false;
   double bifurcationAccuracy = 1e-10; ///< of the parameter value of a located type change
+  /// Accept only points whose minimal order is the family's (an even order): a point that is also a fixed
+  /// point of half the order is the parent of a doubled family counted twice, and the step is retried shorter.
+  bool minimalOrder = false;
   FixedPointSettings search;
 };
 
@@ -64,7 +67,8 @@ public:
   const std::vector<ContinuationPoint>& points() const { return points_; }
   const std::vector<TypeChange>& changes() const { return changes_; }
   const ContinuationSettings& settings() const { return s_; }
-  /// The fixed point at parameter value p from a guess (a model is built for p).
+  /// The fixed point at parameter value p from a guess (a model is built for p). Throws ComputationError when
+  /// none is found, or (settings.minimalOrder) when the point found has half the order.
   FixedPointResult solveAt(double p, const Eigen::VectorXd& guess, const ToolControl& control) const;
 
 private:

@@ -310,6 +310,19 @@ class Cli(unittest.TestCase):
         j = json.loads(r.stdout)
         self.assertAlmostEqual(j["doublings"][0]["parameter"], 3.0, delta=1e-8)
         self.assertAlmostEqual(j["doublings"][1]["parameter"], 4.0, delta=1e-8)
+        self.assertIn("levels", j["end"])
+        # the cascade from a = 2.5 down to order 32 (values: tests/dynamics/reference/henon_cascade.py)
+        r = run("bifurcation-tree", os.path.join(SRC, "scenes", "henon_map.json"), "--set", "b=-1",
+                "--set", "a=2.5", "--guess", "0.35,-0.35", "--param", "a", "--to", "5", "--step", "0.05",
+                "--set", "bifurcation_tree.levels=5", "-o", self.path("t5.csv"))
+        self.assertEqual(r.returncode, 0, r.stderr)
+        lines = r.stdout.splitlines()  # with -o the report goes to standard output
+        values = [float(line.split("=")[1]) for line in lines if line.startswith("period doubling")]
+        self.assertEqual(len(values), 6, r.stdout)
+        self.assertAlmostEqual(values[5], 4.1361430974114378, delta=1e-9)
+        ratios = [float(line.split(":")[1]) for line in lines if line.startswith("ratio:")]
+        self.assertAlmostEqual(ratios[2], 8.72, delta=0.05)
+        self.assertIn("the tree ends: 6 doublings followed", r.stdout)
         h = run("bifurcation-tree", os.path.join(SRC, "scenes", "standard_map.json"), "--guess", "0.01,0.01",
                 "--param", "K", "--to", "2", "--step", "0.1")
         self.assertEqual(h.returncode, 1, h.stderr)

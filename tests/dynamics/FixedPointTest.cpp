@@ -232,6 +232,50 @@ TEST(BifurcationTree, AreaPreservingHenonCascadeMatchesTheAnalyticFirstTwoDoubli
   }
 }
 
+// The cascade to the limit of double precision, from the elliptic point at a = 2.5 (issue 15): every
+// bifurcation value against 40-digit values of an independent formulation (the orbit as a cyclic recurrence
+// x_{n+1} + x_{n-1} = 1 - a x_n^2 and tr M = -2, solved jointly by Newton in mpmath:
+// tests/dynamics/reference/henon_cascade.py). Each doubled family must be of its minimal order: before the
+// check, Newton near the pitchfork of Map^16 fell back onto the order-8 orbit and the tree stopped at four.
+TEST(BifurcationTree, AreaPreservingHenonCascadeReachesOrder64AndFeigenbaumsRatio) {
+  BifurcationTreeSettings s;
+  s.continuation.parameter = "a";
+  s.continuation.to = 5;
+  s.continuation.step = 0.05;
+  s.maxLevels = 6;
+  const Continuation::ModelAt at = [](double a) {
+    return test::makeModel("henon_map", {{"a", a}, {"b", -1}});
+  };
+  const auto r = bifurcationTree(at, everhart(), order(1), 2.5, Eigen::Vector2d(0.35, -0.35), s);
+  const double reference[] = {3.0,
+                              4.0,
+                              4.1204524973184659888,
+                              4.1343639124567984248,
+                              4.1359600588032131131,
+                              4.1361430974114378415,
+                              4.1361640856087688651};
+  ASSERT_EQ(r.doublings.size(), 7u) << r.end;
+  for (int k = 0; k < 7; ++k) {
+    EXPECT_EQ(r.doublings[k].order, 1 << k);
+    EXPECT_NEAR(r.doublings[k].parameter, reference[k], 1e-9) << "order " << (1 << k);
+  }
+  const auto ratios = r.ratios();
+  ASSERT_EQ(ratios.size(), 5u);
+  EXPECT_NEAR(ratios[2], 8.72, 0.05);
+  EXPECT_NEAR(ratios[4], 8.7210972, 2e-4); // Greene, MacKay, Vivaldi & Feigenbaum 1981
+  EXPECT_NE(r.end.find("levels"), std::string::npos) << r.end;
+  for (const auto& b : r.branches) { // no point of a doubled family is its parent counted twice
+    if (b.order < 2) continue;
+    SectionSettings half = order(b.order / 2);
+    for (const auto& p : b.points) {
+      const auto m = at(p.parameter);
+      const ReturnMap map(*m, everhart(), half);
+      EXPECT_GT(map.difference(map(p.fixedPoint.point), p.fixedPoint.point).norm(), 1e-8)
+          << "order " << b.order << " at a = " << p.parameter;
+    }
+  }
+}
+
 TEST(BifurcationTree, RefusesAHyperbolicStart) {
   BifurcationTreeSettings s;
   s.continuation.parameter = "K";
