@@ -164,8 +164,7 @@ std::unique_ptr<Chart> spectrumChart(const Scene& scene, const ChartRequest&, co
     throw InputError("--view spectrum: the scene has no spectrum.function");
   auto integ = scene.startIntegrator();
   const SpectrumResult r =
-      fourierSpectrum(*scene.model, *integ, scene.model->isMap() || scene.integratorEntry->fixedStep,
-                      scene.spectrum, control);
+      fourierSpectrum(*scene.model, *integ, scene.spectrum, control);
   std::vector<std::array<double, 2>> peaks;
   for (const auto& pk : r.peaks)
     peaks.push_back({pk.frequency, pk.amplitude});

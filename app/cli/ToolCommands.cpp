@@ -230,9 +230,7 @@ Command addSpectrumCommand(CLI::App& app) {
             Output out(o->output.empty() && o->json ? "/dev/null" : o->output);
             auto integ = scene.startIntegrator();
             Progress progress("spectrum");
-            const SpectrumResult r = fourierSpectrum(*scene.model, *integ,
-                                                     scene.model->isMap() || scene.integratorEntry->fixedStep,
-                                                     s, interruptibleControl(progress));
+            const SpectrumResult r = fourierSpectrum(*scene.model, *integ, s, interruptibleControl(progress));
             if (o->output.empty() && o->json) {
               printPeaks(s.function, r);
               return interrupted() ? 130 : 0;

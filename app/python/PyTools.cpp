@@ -142,8 +142,7 @@ pyb::object spectrum(Call& c) {
   SpectrumResult r;
   runJob(c.progress, [&](const ToolControl& control) {
     auto integ = c.scene.startIntegrator();
-    r = fourierSpectrum(*c.scene.model, *integ, c.scene.model->isMap() || c.scene.integratorEntry->fixedStep,
-                        s, control);
+    r = fourierSpectrum(*c.scene.model, *integ, s, control);
   });
   std::vector<double> peaks;
   for (const auto& p : r.peaks)

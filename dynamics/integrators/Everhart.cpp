@@ -1,6 +1,7 @@
 #include "dynamics/integrators/Everhart.h"
 
 #include "dynamics/core/Errors.h"
+#include "dynamics/core/Format.h"
 
 #include <cmath>
 #include <mutex>
@@ -78,19 +79,31 @@ const ParameterTable& Everhart::parameterTable() {
        .max = 100,
        .description = "most predictor-corrector iterations per step (fewer when the corrector has converged)",
        .integer = true},
+      {.id = "adaptive",
+       .label = "Adaptive step",
+       .defaultValue = 0,
+       .min = 0,
+       .max = 1,
+       .description = "choose each step by IAS15's rule (then `step` is only the first step)",
+       .choices = {"no", "yes"}},
+      {.id = "tolerance",
+       .label = "Tolerance",
+       .defaultValue = 1e-9,
+       .min = 1e-16,
+       .max = 1e-2,
+       .description = "adaptive step: the polynomial's last coefficient relative to the right-hand side "
+                      "(IAS15's epsilon; 1e-9 gives rounding-level steps at order 15)"},
   };
   return table;
 }
 
 IntegratorEntry Everhart::entry() {
-  return {"everhart",
-          "Everhart, implicit, Gauss-Radau spacings, orders 3..27",
-          "Everhart 1985; Rein and Spiegel, IAS15, MNRAS 446 (2015)",
-          &parameterTable(),
-          true,
+  return {"everhart", "Everhart, implicit, Gauss-Radau spacings, orders 3..27",
+          "Everhart 1985; Rein and Spiegel, IAS15, MNRAS 446 (2015)", &parameterTable(),
           [](const ParameterValues& p) -> std::unique_ptr<Integrator> {
             return std::make_unique<Everhart>(p["step"], static_cast<int>(p["order"]),
-                                              static_cast<int>(p["iterations"]));
+                                              static_cast<int>(p["iterations"]),
+                                              p["adaptive"] != 0 ? p["tolerance"] : 0.0);
           }};
 }
 
@@ -105,7 +118,7 @@ struct EverhartTables {
   std::vector<long double> cl, gaussNodes, gaussWeights;
   std::vector<std::vector<long double>> integrated; // L_j(tau) = int_0^tau l_j = sum_p integrated[j][p] tau^p
   Eigen::MatrixXd A, extrapolate;
-  Eigen::VectorXd b;
+  Eigen::VectorXd b, leading; // leading(j) = 1 / prod_{m != j} (c_j - c_m): the last divided difference
 };
 
 EverhartTables computeTables(int n) {
@@ -129,8 +142,12 @@ EverhartTables computeTables(int n) {
   }
   if (static_cast<int>(t.cl.size()) != n || static_cast<int>(t.gaussNodes.size()) != n)
     throw ComputationError("Everhart: could not compute the Gauss-Radau spacings");
-  t.A.resize(n, n), t.extrapolate.resize(n, n), t.b.resize(n);
+  t.A.resize(n, n), t.extrapolate.resize(n, n), t.b.resize(n), t.leading.resize(n);
   for (int j = 0; j < n; ++j) {
+    ld w = 1;
+    for (int m = 0; m < n; ++m)
+      if (m != j) w *= t.cl[j] - t.cl[m];
+    t.leading[j] = static_cast<double>(1 / w);
     ld bj = 0;
     for (int k = 0; k < n; ++k)
       bj += t.gaussWeights[k] * lagrange(t.cl, j, t.gaussNodes[k]);
@@ -170,13 +187,14 @@ const EverhartTables& tablesFor(int n) {
 }
 } // namespace
 
-Everhart::Everhart(double step, int order, int iterations) : h_(step), maxIterations_(iterations) {
+Everhart::Everhart(double step, int order, int iterations, double tolerance)
+    : h_(step), tolerance_(tolerance), maxIterations_(iterations) {
   const int effective = effectiveOrder(order);
   if (effective == 0) throw InputError("order " + std::to_string(order) + " is below 3 (use 3, 7, ..., 27)");
   n_ = (effective + 1) / 2;
   const EverhartTables& t = tablesFor(n_);
   integrated_ = &t.integrated;
-  A_ = t.A, extrapolate_ = t.extrapolate, b_ = t.b;
+  A_ = t.A, extrapolate_ = t.extrapolate, b_ = t.b, leading_ = t.leading;
   c_.assign(t.cl.begin(), t.cl.end());
 }
 
@@ -187,38 +205,65 @@ void Everhart::start(const Model& model, double t0, const Eigen::VectorXd& x0, i
   f1_.resize(d), y_.resize(d), sum_.resize(d);
   compensation_.setZero(d);
   havePrevious_ = false;
+  rejected_ = 0;
+  extrapolate_ = tablesFor(n_).extrapolate, lastRatio_ = 1;
   evaluate(x_, f1_);
 }
 
-void Everhart::step() {
-  const double h = direction_ * h_;
-  // predictor: the last step's polynomial continued over this one, plus the correction the last prediction
-  // needed (IAS15 carries its predictor's error over the same way); a constant on the first step
-  if (havePrevious_) {
-    Fnew_.noalias() = F_ * extrapolate_;
-    Fnew_ += correction_;
-  } else {
-    Fnew_ = f1_.replicate(1, n_);
-    correction_.setZero(F_.rows(), n_);
+void Everhart::setExtrapolation(double ratio) {
+  // l_l(tau) = prod_m (tau - c_m) * leading_l / (tau - c_l) (the first barycentric form: O(n^2) a step, which
+  // the adaptive step pays every step); tau = 1 + ratio c_j > c_l, never a node
+  for (int j = 0; j < n_; ++j) {
+    const double tau = 1 + ratio * c_[j];
+    double all = 1;
+    for (int m = 0; m < n_; ++m)
+      all *= tau - c_[m];
+    for (int l = 0; l < n_; ++l)
+      extrapolate_(l, j) = all * leading_[l] / (tau - c_[l]);
   }
-  F_.swap(Fnew_);
-  F_.col(0) = f1_;
-  predicted_ = F_;
-  // corrector: F_j = f(x0 + h sum_l A(j, l) F_l), sweeping the nodes in order and using each new value at
-  // once (as Everhart's substeps do, which roughly halves the sweeps of a Jacobi iteration); stop when the
-  // change times the observed contraction is below rounding, or when only rounding is left (IAS15's rule)
+  lastRatio_ = ratio;
+}
+
+void Everhart::step() {
+  switch (n_) {
+  case 2:
+    return stepWith<2>();
+  case 4:
+    return stepWith<4>();
+  case 6:
+    return stepWith<6>();
+  case 8:
+    return stepWith<8>();
+  case 10:
+    return stepWith<10>();
+  case 12:
+    return stepWith<12>();
+  default:
+    return stepWith<14>();
+  }
+}
+
+// The corrector on a step of signed length h from x_ (F_ holds the prediction, column 0 = f(x_)): F_j =
+// f(x0 + h sum_l A(j, l) F_l), sweeping the nodes in order and using each new value at once (as Everhart's
+// substeps do, which roughly halves the sweeps of a Jacobi iteration); stops when the change times the
+// observed contraction is below rounding, or when only rounding is left (IAS15's rule). Returns the
+// polynomial's last coefficient relative to the largest node value (IAS15's error measure).
+template <int N> double Everhart::correct(double h) {
+  using Nodes = Eigen::Matrix<double, Eigen::Dynamic, N>;
+  const Eigen::Map<const Nodes> nodes(F_.data(), F_.rows(), N);
   double previousChange = 0;
   lastIterations_ = 0;
   for (int it = 0; it < maxIterations_; ++it) {
     ++lastIterations_;
     double change = 0, scale = 0;
-    for (int j = 1; j < n_; ++j) {
-      y_.noalias() = F_ * A_.row(j).transpose();
-      y_ = x_ + h * y_;
+    for (int j = 1; j < N; ++j) {
+      // y = x0 + h sum_l A(j, l) F_l: with N known the product unrolls and vectorises along the state
+      const Eigen::Matrix<double, N, 1> a = h * A_.row(j).transpose();
+      y_.noalias() = x_ + nodes.lazyProduct(a);
       model_->rhs(y_.data(), f1_.data()); // f1_ is free until the step ends
       ++evaluations_;
-      change = std::max(change, (f1_ - F_.col(j)).lpNorm<Eigen::Infinity>());
-      scale = std::max(scale, f1_.lpNorm<Eigen::Infinity>());
+      change = std::max(change, (f1_ - F_.col(j)).cwiseAbs().maxCoeff());
+      scale = std::max(scale, f1_.cwiseAbs().maxCoeff());
       F_.col(j) = f1_;
     }
     const double relative = scale > 0 ? change / scale : change;
@@ -226,19 +271,70 @@ void Everhart::step() {
     if (relative * contraction < 1e-16 || (it > 2 && relative >= previousChange)) break;
     previousChange = relative;
   }
-  if (havePrevious_) correction_ = F_ - predicted_;
-  // x1 = x0 + h sum_j b_j F_j, with compensated (Kahan) summation across steps
-  xPrev_ = x_;
-  sum_.noalias() = F_ * b_;
-  y_ = h * sum_ - compensation_;
-  sum_ = x_ + y_;
-  compensation_ = (sum_ - x_) - y_;
-  x_ = sum_;
-  tPrev_ = t_;
-  t_ = tPrev_ + h;
-  checkFinite();
-  evaluate(x_, f1_);
-  havePrevious_ = true;
+  if (tolerance_ <= 0) return 0;
+  const Eigen::Matrix<double, N, 1> w = leading_;
+  y_.noalias() = nodes.lazyProduct(w);
+  const double scale = nodes.cwiseAbs().maxCoeff();
+  return scale > 0 ? y_.cwiseAbs().maxCoeff() / scale : y_.cwiseAbs().maxCoeff();
+}
+
+template <int N> void Everhart::stepWith() {
+  F_.swap(Fnew_); // Fnew_: the last step's nodes, kept while a rejected step is redone
+  for (int attempt = 0;; ++attempt) {
+    const double h = direction_ * h_;
+    // predictor: the last step's polynomial continued over this one (a step `ratio` times as long), plus the
+    // correction the last prediction needed when the step is unchanged (IAS15 carries its predictor's error
+    // over the same way); a constant on the first step
+    if (havePrevious_) {
+      const double ratio = h_ / lastStep_;
+      if (ratio != lastRatio_) setExtrapolation(ratio);
+      using Nodes = Eigen::Matrix<double, Eigen::Dynamic, N>;
+      const Eigen::Matrix<double, N, N> E = extrapolate_;
+      Eigen::Map<Nodes> predicted(F_.data(), F_.rows(), N);
+      predicted.noalias() = Eigen::Map<const Nodes>(Fnew_.data(), Fnew_.rows(), N).lazyProduct(E);
+      if (ratio == 1) F_ += correction_;
+    } else {
+      F_ = f1_.replicate(1, N);
+    }
+    F_.col(0) = f1_;
+    predicted_ = F_;
+    const double error = correct<N>(h);
+    double next = h_;
+    if (tolerance_ > 0) {
+      // IAS15 (Rein & Spiegel 2015, eq. 11): the step that brings the last coefficient to the tolerance; a
+      // step more than 4 times too long is redone, and a step grows at most 4 times
+      next = error > 0 ? h_ * std::pow(tolerance_ / error, 1.0 / (N - 1)) : 4 * h_;
+      if (!std::isfinite(next)) next = h_ / 4;
+      if (next < 0.25 * h_) {
+        ++rejected_;
+        if (attempt >= 30 || next < 1e-14 * std::max(1.0, std::abs(t_)))
+          throw ComputationError(
+              format("Everhart: the adaptive step fell to %g at t = %.12g (the tolerance %g "
+                     "cannot be met; the solution may be singular there)",
+                     next, t_, tolerance_));
+        h_ = next;
+        continue;
+      }
+      next = std::min(next, 4 * h_);
+    }
+    // what the predictor missed, carried into the next prediction (not from the first step's constant guess)
+    if (havePrevious_) correction_ = F_ - predicted_;
+    // x1 = x0 + h sum_j b_j F_j, with compensated (Kahan) summation across steps
+    xPrev_ = x_;
+    sum_.noalias() = F_ * b_;
+    y_ = h * sum_ - compensation_;
+    sum_ = x_ + y_;
+    compensation_ = (sum_ - x_) - y_;
+    x_ = sum_;
+    tPrev_ = t_;
+    t_ = tPrev_ + h;
+    checkFinite();
+    evaluate(x_, f1_);
+    havePrevious_ = true;
+    lastStep_ = h_;
+    h_ = next;
+    return;
+  }
 }
 
 void Everhart::interpolate(double t, Eigen::VectorXd& out) const {
@@ -262,12 +358,14 @@ void Everhart::interpolate(double t, Eigen::VectorXd& out) const {
 void Everhart::save(Snapshot& s) const {
   Integrator::save(s);
   s.put(havePrevious_ ? 1 : 0);
+  s.put(h_), s.put(lastStep_), s.put(static_cast<double>(rejected_));
   s.put(F_), s.put(predicted_), s.put(correction_), s.put(compensation_), s.put(f1_);
 }
 
 void Everhart::restore(Snapshot& s) {
   Integrator::restore(s);
   havePrevious_ = s.get() != 0;
+  h_ = s.get(), lastStep_ = s.get(), rejected_ = s.getLong();
   s.get(F_), s.get(predicted_), s.get(correction_), s.get(compensation_), s.get(f1_);
   if (F_.rows() != x_.size() || F_.cols() != n_)
     throw InputError("checkpoint: saved for another Everhart order");

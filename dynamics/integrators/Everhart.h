@@ -5,7 +5,11 @@
 // use n = 2, 4, ..., 14. References: E. Everhart, An efficient integrator that uses Gauss-Radau spacings, in
 // Dynamics of Comets (1985),
 //   185-202; H. Rein, D. S. Spiegel, IAS15, MNRAS 446 (2015) 1424 (stopping rule, compensated summation).
-// The spacings and weights are computed at start-up in long double (no hard-coded tables).
+// The spacings and weights are computed at start-up in long double (no hard-coded tables). As in IAS15: the
+// predictor shifts the last step's polynomial onto the new step and adds the correction the last prediction
+// missed, the corrector stops when its change falls below rounding or stops shrinking, the state update is
+// summed with compensation, the node arithmetic has its node count fixed at compile time and allocates
+// nothing; optionally (adaptive) the step follows IAS15's rule on the polynomial's last coefficient.
 #pragma once
 #include "dynamics/integrators/Integrator.h"
 
@@ -15,8 +19,10 @@ namespace rv {
 
 class Everhart final : public Integrator {
 public:
-  /// `order` is rounded down to 3, 7, ..., 27 as the manual says; InputError below 3.
-  Everhart(double step, int order, int iterations);
+  /// `order` is rounded down to 3, 7, ..., 27 as the manual says; InputError below 3. A positive `tolerance`
+  /// makes the step adaptive (`step` is then the first one): IAS15's rule, the largest last coefficient of
+  /// the polynomial of the right-hand side relative to its largest value, kept near the tolerance.
+  Everhart(double step, int order, int iterations, double tolerance = 0);
   static IntegratorEntry entry();
   static const ParameterTable& parameterTable();
   /// The largest of 3, 7, 11, ..., 27 not above `requested` (0 when requested < 3).
@@ -30,6 +36,11 @@ public:
   void restore(Snapshot& s) override;
 
   int order() const { return 2 * n_ - 1; }
+  bool fixedStep() const override { return tolerance_ <= 0; }
+  /// The step the next step() will try (the last one taken, or the adapted one).
+  double stepSize() const { return h_; }
+  /// Steps redone with a smaller step (adaptive only).
+  long rejectedSteps() const { return rejected_; }
   /// Spacings c_0 = 0 < c_1 < ... < c_{n-1} < 1 on the unit step.
   const std::vector<double>& spacings() const { return c_; }
   /// Quadrature weights b_j = integral over [0, 1] of the j-th Lagrange polynomial.
@@ -38,13 +49,21 @@ public:
   int lastIterations() const { return lastIterations_; }
 
 private:
-  double h_;
+  template <int N> void stepWith();
+  template <int N> double correct(double h);
+  /// The predictor's extrapolation for a step `ratio` times the last one: l_l(1 + ratio c_j).
+  void setExtrapolation(double ratio);
+
+  double h_, tolerance_;
   int n_, maxIterations_, lastIterations_ = 0;
+  long rejected_ = 0;
   bool havePrevious_ = false;
+  double lastStep_ = 0;  ///< length of the last step taken
+  double lastRatio_ = 1; ///< the step ratio extrapolate_ was made for
   std::vector<double> c_;
   const std::vector<std::vector<long double>>* integrated_ = nullptr; // shared tables, see Everhart.cpp
-  Eigen::MatrixXd A_, extrapolate_; // A(i, j) = int_0^{c_i} l_j; extrapolate(l, j) = l_l(1 + c_j)
-  Eigen::VectorXd b_;
+  Eigen::MatrixXd A_, extrapolate_;        // A(i, j) = int_0^{c_i} l_j; extrapolate(l, j) = l_l(1 + c_j)
+  Eigen::VectorXd b_, leading_;            // leading_(j): weight of F_j in the polynomial's last coefficient
   Eigen::MatrixXd F_, Fnew_;               // right-hand side at the nodes (dim x n)
   Eigen::MatrixXd predicted_, correction_; // the last prediction and what the corrector changed in it
   Eigen::VectorXd f1_, y_, sum_, compensation_;

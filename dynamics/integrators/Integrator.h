@@ -30,6 +30,9 @@ public:
   /// Reads what save() wrote; throws InputError when the snapshot does not fit this integrator.
   virtual void restore(Snapshot& s);
 
+  /// Whether the step never changes (what the Fourier spectrum needs).
+  virtual bool fixedStep() const { return false; }
+
   double time() const { return t_; }
   double previousTime() const { return tPrev_; }
   const Eigen::VectorXd& state() const { return x_; }
@@ -61,7 +64,6 @@ struct IntegratorEntry {
   std::string title;     ///< one line, for lists
   std::string reference; ///< the paper or book behind it
   const ParameterTable* parameters;
-  bool fixedStep; ///< the step never changes (needed by the Fourier spectrum)
   /// Builds the integrator; throws InputError naming the parameter when values are inconsistent.
   std::function<std::unique_ptr<Integrator>(const ParameterValues&)> create;
 };

@@ -43,7 +43,6 @@ IntegratorEntry Merson::entry() {
           "Runge-Kutta-Merson 4(5), adaptive step",
           "Merson 1957; Hairer, Norsett, Wanner, Solving ODE I, §II.4",
           &parameterTable(),
-          false,
           [](const ParameterValues& p) -> std::unique_ptr<Integrator> {
             return std::make_unique<Merson>(p["step"], p["precision"], p["min_step"], p["max_step"]);
           }};

@@ -19,7 +19,6 @@ IntegratorEntry Rk4::entry() {
           "Runge-Kutta 4, fixed step",
           "Hairer, Norsett, Wanner, Solving ODE I, §II.1",
           &parameterTable(),
-          true,
           [](const ParameterValues& p) -> std::unique_ptr<Integrator> {
             return std::make_unique<Rk4>(p["step"]);
           }};

@@ -18,6 +18,7 @@ public:
   void save(Snapshot& s) const override;
   void restore(Snapshot& s) override;
   double stepSize() const { return h_; }
+  bool fixedStep() const override { return true; }
 
 private:
   double h_;

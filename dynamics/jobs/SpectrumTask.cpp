@@ -6,8 +6,7 @@ bool SpectrumTask::run(const ToolControl& control) {
   const auto model = spec_.makeModel();
   auto integ = spec_.makeIntegrator(*model);
   integ->start(*model, 0, spec_.initialState);
-  const bool fixed = model->isMap() || spec_.integrator->fixedStep;
-  SpectrumResult r = fourierSpectrum(*model, *integ, fixed, settings_, control);
+  SpectrumResult r = fourierSpectrum(*model, *integ, settings_, control);
   if (control.stopRequested()) return false;
   results_.push(std::move(r));
   return true;

@@ -78,11 +78,12 @@ SpectrumResult spectrumOf(const std::vector<double>& x, double step, const Spect
   return r;
 }
 
-SpectrumResult fourierSpectrum(const Model& model, Integrator& integ, bool fixedStep,
-                               const SpectrumSettings& s, const ToolControl& control) {
-  if (!fixedStep)
+SpectrumResult fourierSpectrum(const Model& model, Integrator& integ, const SpectrumSettings& s,
+                               const ToolControl& control) {
+  if (!model.isMap() && !integ.fixedStep())
     throw InputError(
-        "spectrum: needs a fixed-step integrator (rk4 or everhart): the samples must be evenly spaced");
+        "spectrum: needs a fixed-step integrator (rk4, or everhart without adaptive): the samples "
+        "must be evenly spaced");
   const int i = model.findObservable(s.function);
   if (i < 0) throw InputError("spectrum: unknown function '" + s.function + "' of " + model.info().id);
   if (s.samples < 8) throw InputError("spectrum: at least 8 samples are needed");

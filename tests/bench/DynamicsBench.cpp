@@ -114,6 +114,53 @@ void AccurateChaplygin_rollviz(benchmark::State& state) {
   state.counters["rhs_evaluations"] = static_cast<double>(evals);
 }
 
+// Everhart 15 with IAS15's adaptive step at a tolerance (state.range(0) = -log10 tolerance), to t = 1000
+void Chaplygin_adaptive(benchmark::State& state) {
+  const AccurateCase c;
+  const Model* m = c.model.get();
+  double err = 0;
+  long evals = 0, steps = 0;
+  const double tolerance = std::pow(10.0, -static_cast<double>(state.range(0)));
+  for (auto _ : state) {
+    Everhart e(0.5, 15, 12, tolerance);
+    e.start(*m, 0, c.x0);
+    Eigen::VectorXd x(c.x0.size());
+    steps = 0;
+    while (e.time() < 1000)
+      e.step(), ++steps;
+    e.interpolate(1000, x);
+    err = std::abs(m->integrals(x.data())[0] - c.E0) / c.E0;
+    evals = e.evaluations();
+  }
+  state.counters["energy_error"] = err;
+  state.counters["rhs_evaluations"] = static_cast<double>(evals);
+  state.counters["steps"] = static_cast<double>(steps);
+}
+
+// odeint's runge_kutta_fehlberg78, controlled, at tolerance 10^-state.range(0)
+void Chaplygin_odeint(benchmark::State& state) {
+  const AccurateCase c;
+  const Model* m = c.model.get();
+  const double tolerance = std::pow(10.0, -static_cast<double>(state.range(0)));
+  double err = 0;
+  long evals = 0;
+  for (auto _ : state) {
+    std::vector<double> x(c.x0.data(), c.x0.data() + c.x0.size());
+    long count = 0;
+    auto sys = [&](const std::vector<double>& y, std::vector<double>& dy, double) {
+      ++count;
+      m->rhs(y.data(), dy.data());
+    };
+    odeint::integrate_adaptive(
+        odeint::make_controlled(tolerance, tolerance, odeint::runge_kutta_fehlberg78<std::vector<double>>()),
+        sys, x, 0.0, 1000.0, 0.1);
+    err = std::abs(m->integrals(x.data())[0] - c.E0) / c.E0;
+    evals = count;
+  }
+  state.counters["energy_error"] = err;
+  state.counters["rhs_evaluations"] = static_cast<double>(evals);
+}
+
 void AccurateChaplygin_odeint(benchmark::State& state) {
   const AccurateCase c;
   const Model* m = c.model.get();
@@ -169,6 +216,20 @@ BENCHMARK(AccurateChaplygin_rollviz)
     ->Unit(benchmark::kMillisecond)
     ->ArgsProduct({{1, 2}, {6, 12}});
 BENCHMARK(AccurateChaplygin_odeint)->Name("AccurateChaplygin/odeint")->Unit(benchmark::kMillisecond);
+// the same motion near 1e-15: RKF78 at its smallest useful tolerances beside Everhart fixed and adaptive
+BENCHMARK(AccurateChaplygin_rollviz)
+    ->Name("PreciseChaplygin/rollviz")
+    ->Unit(benchmark::kMillisecond)
+    ->Args({2, 12})
+    ->Args({2, 8})
+    ->Args({3, 6});
+BENCHMARK(Chaplygin_adaptive)
+    ->Name("PreciseChaplygin/rollviz_adaptive")
+    ->Unit(benchmark::kMillisecond)
+    ->Arg(9)
+    ->Arg(8)
+    ->Arg(7);
+BENCHMARK(Chaplygin_odeint)->Name("PreciseChaplygin/odeint")->Unit(benchmark::kMillisecond)->Arg(15)->Arg(16);
 BENCHMARK_CAPTURE(Steps, rk4, std::string("rk4"));
 BENCHMARK_CAPTURE(Steps, merson, std::string("merson"));
 BENCHMARK_CAPTURE(Steps, everhart15, std::string("everhart15"));

@@ -104,6 +104,63 @@ INSTANTIATE_TEST_SUITE_P(Orders, EverhartOrder,
                          ::testing::Values(EverhartCase{3, 0.1, 0.05}, EverhartCase{7, 0.4, 0.2},
                                            EverhartCase{11, 0.8, 0.4}));
 
+// Adaptive Everhart (IAS15's step rule): the order shows in how the error falls with the number of steps the
+// tolerance buys (an adaptive method's convergence is measured against its work, Hairer-Norsett-Wanner
+// §II.4), on the pendulum against small fixed steps of order 27, compared where the last step ends (the dense
+// output between steps is of lower order).
+TEST(IntegratorOrder, AdaptiveEverhartIsFifteenPerStep) {
+  Pendulum m;
+  Eigen::VectorXd x0(3);
+  x0 << 1.2, 0.3, 0.0;
+  const auto run = [&](double tolerance) {
+    Everhart e(0.1, 15, 40, tolerance);
+    EXPECT_FALSE(e.fixedStep());
+    e.start(m, 0, x0);
+    long steps = 0;
+    while (e.time() < 40)
+      e.step(), ++steps;
+    Everhart reference(0.01, 27, 30);
+    reference.start(m, 0, x0);
+    while (reference.time() < e.time())
+      reference.step();
+    Eigen::VectorXd exact(3);
+    reference.interpolate(e.time(), exact);
+    return std::pair<double, double>((e.state() - exact).norm(), static_cast<double>(steps));
+  };
+  // steps come in whole numbers, so the slope is taken over a decade of tolerance (33 -> 48 steps here)
+  const auto [e1, n1] = run(0.1);
+  const auto [e2, n2] = run(0.01);
+  std::printf("  tolerance 0.1: %.0f steps -> %.3e, 0.01: %.0f steps -> %.3e\n", n1, e1, n2, e2);
+  ASSERT_GT(n2, n1);
+  EXPECT_NEAR(std::log(e1 / e2) / std::log(n2 / n1), 15.0, 3.5);
+  EXPECT_LT(run(1e-9).first, 1e-12); // the default tolerance: the accuracy of the reference
+}
+
+// A first step far too long is redone shorter, and the steps follow the motion's time scale: a pendulum
+// swinging close to its separatrix slows down near the top (long steps) and whips through the bottom.
+TEST(Everhart, AdaptiveStepRejectsAFirstStepTooLongAndFollowsTheTimeScale) {
+  Pendulum m;
+  Eigen::VectorXd x0(3);
+  x0 << 3.1, 0.0, 0.0; // released near the top: q'' = -sin q
+  Everhart adaptive(50.0, 15, 40, 1e-9);
+  adaptive.start(m, 0, x0);
+  double shortest = 1e300, longest = 0;
+  while (adaptive.time() < 30) {
+    adaptive.step();
+    const double h = adaptive.time() - adaptive.previousTime();
+    shortest = std::min(shortest, h), longest = std::max(longest, h);
+  }
+  EXPECT_GE(adaptive.rejectedSteps(), 1);
+  EXPECT_GT(longest / shortest, 3.0);
+  Everhart fine(0.005, 27, 40); // the reference: small fixed steps of the highest order
+  fine.start(m, 0, x0);
+  while (fine.time() < adaptive.time() - 1e-12)
+    fine.step();
+  Eigen::VectorXd a(3), b(3);
+  adaptive.interpolate(30, a), fine.interpolate(30, b);
+  EXPECT_LT((a - b).norm(), 1e-10);
+}
+
 TEST(Everhart, SpacingsAreGaussRadauAndTheWeightsIntegrateExactly) {
   for (int order : {3, 7, 11, 15, 19, 23, 27}) {
     Everhart e(0.1, order, 10);

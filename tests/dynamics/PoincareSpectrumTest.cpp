@@ -158,12 +158,12 @@ TEST(FourierSpectrum, OfAHarmonicOscillatorAlongATrajectory) {
   s.function = "x";
   s.samples = 16384;
   s.peaks = 1;
-  const auto r = fourierSpectrum(*m, rk4, true, s);
+  const auto r = fourierSpectrum(*m, rk4, s);
   EXPECT_NEAR(r.peaks[0].frequency, 1 / (2 * M_PI), 1 / (16384 * 0.05));
   EXPECT_NEAR(r.peaks[0].amplitude, 0.01, 5e-4);
   Merson merson(0.05, 1e-10, 1e-8, 0.1);
   merson.start(*m, 0, x0);
-  EXPECT_THROW(fourierSpectrum(*m, merson, false, s), InputError);
+  EXPECT_THROW(fourierSpectrum(*m, merson, s), InputError);
 }
 
 } // namespace

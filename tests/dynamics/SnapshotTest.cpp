@@ -24,8 +24,18 @@ std::unique_ptr<Integrator> make(const IntegratorEntry& e) {
 
 TEST(Snapshot, EveryIntegratorResumesBitIdentically) {
   const auto m = test::makeModel("henon_heiles", {});
-  for (const auto& e : IntegratorRegistry::builtin().entries()) {
-    SCOPED_TRACE(e.id);
+  std::vector<std::pair<const IntegratorEntry*, bool>> cases; // every method, and Everhart's adaptive step
+  for (const auto& e : IntegratorRegistry::builtin().entries())
+    cases.emplace_back(&e, false);
+  cases.emplace_back(&IntegratorRegistry::builtin().get("everhart"), true);
+  for (const auto& [entry, adaptive] : cases) {
+    const IntegratorEntry& e = *entry;
+    SCOPED_TRACE(e.id + (adaptive ? " adaptive" : ""));
+    const auto make = [adaptive = adaptive](const IntegratorEntry& method) {
+      ParameterValues p(*method.parameters);
+      if (adaptive) p.set("adaptive", 1), p.set("step", 0.37);
+      return method.create(p);
+    };
     auto a = make(e);
     a->start(*m, 0, henonHeilesStart());
     for (int i = 0; i < 37; ++i)
