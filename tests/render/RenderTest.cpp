@@ -176,9 +176,11 @@ INSTANTIATE_TEST_SUITE_P(
                   "henon_heiles",
                   {"spectrum.function=x", "integrator.method=rk4", "integrator.step=0.01"}},
         ChartCase{"lyapunov", "lorenz", {"lyapunov.time=100", "lyapunov.output_period=2"}},
+        // a chaotic orbit: long enough for MEGNO's linear growth, short enough that rounding (which differs
+        // with the integrator's summation order) has not yet grown to the picture's scale
         ChartCase{"megno",
                   "henon_heiles",
-                  {"energy=0.16666666666666666", "megno.time=400", "megno.output_period=2"}},
+                  {"energy=0.16666666666666666", "megno.time=200", "megno.output_period=1"}},
         ChartCase{"surface",
                   "henon_map",
                   {"grid.x_min=-1.5", "grid.x_max=1.5", "grid.y_min=-0.5", "grid.y_max=0.5",
