@@ -21,6 +21,7 @@ public:
   bool fixedStep() const override { return true; }
 
 private:
+  template <int D> void stepWith();
   double h_;
   Eigen::VectorXd k1_, k2_, k3_, k4_, tmp_, fPrev_;
 };
