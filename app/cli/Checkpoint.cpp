@@ -12,8 +12,9 @@
 namespace rv {
 
 namespace {
-constexpr int kFormat = 1;
-}
+// 2: Everhart's snapshot holds its step (adaptive) and the last step's length; a format-1 file is refused
+constexpr int kFormat = 2;
+} // namespace
 
 Checkpoint::Checkpoint(std::string path, std::string command, std::string run)
     : path_(std::move(path)), command_(std::move(command)), run_(std::move(run)),

@@ -153,7 +153,11 @@ const ToolRegistry& ToolRegistry::builtin() {
          .description = "period doublings along the continuation",
          .section = "bifurcation_tree",
          .command = "bifurcation-tree",
-         .outputs = {{"level, order, parameter", "each doubling"}, {"ratios", "JSON: the Feigenbaum ratios"}},
+         .outputs = {{"level, order, parameter", "each doubling"},
+                     {"ratios", "JSON: the Feigenbaum ratios"},
+                     {"end",
+                      "why the tree ended (levels reached, the finite value, a family that could not be "
+                      "followed, ...)"}},
          .reference = "manual §2.3.7",
          .computation =
              "dynamics/tools/BifurcationTree.h (bifurcationTree); as a job dynamics/jobs/FixedPointTasks.h",
