@@ -106,6 +106,7 @@ TEST(Integrators, StepsAndDenseOutputDoNotAllocate) {
   all.push_back(std::make_unique<Merson>(1e-2, 1e-10, 1e-8, 0.1));
   all.push_back(std::make_unique<Everhart>(0.1, 15, 12));
   all.push_back(std::make_unique<Everhart>(0.1, 27, 12));
+  all.push_back(std::make_unique<Everhart>(0.1, 15, 12, 1e-9)); // adaptive: the step ratio changes every step
   for (auto& integ : all) {
     integ->start(*model, 0, x0);
     integ->step();
