@@ -163,8 +163,7 @@ std::unique_ptr<Chart> spectrumChart(const Scene& scene, const ChartRequest&, co
   if (scene.spectrum.function.empty())
     throw InputError("--view spectrum: the scene has no spectrum.function");
   auto integ = scene.startIntegrator();
-  const SpectrumResult r =
-      fourierSpectrum(*scene.model, *integ, scene.spectrum, control);
+  const SpectrumResult r = fourierSpectrum(*scene.model, *integ, scene.spectrum, control);
   std::vector<std::array<double, 2>> peaks;
   for (const auto& pk : r.peaks)
     peaks.push_back({pk.frequency, pk.amplitude});

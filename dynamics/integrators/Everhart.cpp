@@ -194,7 +194,7 @@ Everhart::Everhart(double step, int order, int iterations, double tolerance)
   n_ = (effective + 1) / 2;
   const EverhartTables& t = tablesFor(n_);
   integrated_ = &t.integrated;
-  A_ = t.A, extrapolate_ = t.extrapolate, b_ = t.b, leading_ = t.leading;
+  A_ = t.A, b_ = t.b, leading_ = t.leading; // extrapolate_ is set by start()
   c_.assign(t.cl.begin(), t.cl.end());
 }
 

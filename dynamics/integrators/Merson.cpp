@@ -39,10 +39,8 @@ const ParameterTable& Merson::parameterTable() {
 }
 
 IntegratorEntry Merson::entry() {
-  return {"merson",
-          "Runge-Kutta-Merson 4(5), adaptive step",
-          "Merson 1957; Hairer, Norsett, Wanner, Solving ODE I, §II.4",
-          &parameterTable(),
+  return {"merson", "Runge-Kutta-Merson 4(5), adaptive step",
+          "Merson 1957; Hairer, Norsett, Wanner, Solving ODE I, §II.4", &parameterTable(),
           [](const ParameterValues& p) -> std::unique_ptr<Integrator> {
             return std::make_unique<Merson>(p["step"], p["precision"], p["min_step"], p["max_step"]);
           }};

@@ -49,7 +49,6 @@ BifurcationTreeResult bifurcationTree(
   double p0 = start, region = s.regionSize;
   Eigen::VectorXd x0 = guess;
   for (int level = 0; level <= s.maxLevels; ++level) {
-    cs.minimalOrder = level > 0;
     Continuation c(modelAt, make, sec, p0, x0, cs);
     result.branches.push_back(TreeBranch{.level = level, .order = sec.order});
     const auto addPoint = [&](const ContinuationPoint& p) {

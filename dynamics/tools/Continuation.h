@@ -19,7 +19,8 @@ struct ContinuationSettings {
   bool stopAtTypeChange = false;
   double bifurcationAccuracy = 1e-10; ///< of the parameter value of a located type change
   /// Accept only points whose minimal order is the family's (an even order): a point that is also a fixed
-  /// point of half the order is the parent of a doubled family counted twice, and the step is retried shorter.
+  /// point of half the order is the parent of a doubled family counted twice, and the step is retried
+  /// shorter.
   bool minimalOrder = false;
   FixedPointSettings search;
 };

@@ -33,8 +33,8 @@ struct SpectrumResult {
 
 /// Samples the observable at t0, t0 + h, ... from a started fixed-step integrator. Throws InputError for an
 /// unknown observable, too few samples or an integrator whose step varies.
-SpectrumResult fourierSpectrum(const Model& model, Integrator& integrator,
-                               const SpectrumSettings& settings, const ToolControl& control = {});
+SpectrumResult fourierSpectrum(const Model& model, Integrator& integrator, const SpectrumSettings& settings,
+                               const ToolControl& control = {});
 
 /// The spectrum and peaks of given samples (exposed for tests).
 SpectrumResult spectrumOf(const std::vector<double>& samples, double step, const SpectrumSettings& settings);

@@ -203,16 +203,22 @@ namespace {
 // 2 - 2 sqrt(1 + a): it doubles at a = 3. Its 2-cycle has x1 + x2 = 2 / a, x1 x2 = (4 - a) / a^2 and
 // tr D(P^2) = 4 a^2 x1 x2 - 2 = 14 - 4a: it doubles at a = 4. (The standard map's 2-cycle does not double:
 // its trace touches -2 and turns back, which the tree correctly ignores.)
-TEST(BifurcationTree, AreaPreservingHenonCascadeMatchesTheAnalyticFirstTwoDoublings) {
+// the area-preserving Henon map at a, and a tree in a up to `to` with steps of 0.05
+const Continuation::ModelAt areaPreservingHenon = [](double a) {
+  return test::makeModel("henon_map", {{"a", a}, {"b", -1}});
+};
+BifurcationTreeSettings henonTree(double to, int levels) {
   BifurcationTreeSettings s;
   s.continuation.parameter = "a";
-  s.continuation.to = 4.2;
+  s.continuation.to = to;
   s.continuation.step = 0.05;
-  s.maxLevels = 2;
-  const Continuation::ModelAt at = [](double a) {
-    return test::makeModel("henon_map", {{"a", a}, {"b", -1}});
-  };
-  std::vector<double> ratioInput;
+  s.maxLevels = levels;
+  return s;
+}
+
+TEST(BifurcationTree, AreaPreservingHenonCascadeMatchesTheAnalyticFirstTwoDoublings) {
+  const BifurcationTreeSettings s = henonTree(4.2, 2);
+  const Continuation::ModelAt& at = areaPreservingHenon;
   const auto r = bifurcationTree(at, everhart(), order(1), 2.0, Eigen::Vector2d(0.4, -0.4), s);
   ASSERT_GE(r.doublings.size(), 2u);
   EXPECT_NEAR(r.doublings[0].parameter, 3.0, 1e-8);
@@ -238,14 +244,8 @@ TEST(BifurcationTree, AreaPreservingHenonCascadeMatchesTheAnalyticFirstTwoDoubli
 // tests/dynamics/reference/henon_cascade.py). Each doubled family must be of its minimal order: before the
 // check, Newton near the pitchfork of Map^16 fell back onto the order-8 orbit and the tree stopped at four.
 TEST(BifurcationTree, AreaPreservingHenonCascadeReachesOrder64AndFeigenbaumsRatio) {
-  BifurcationTreeSettings s;
-  s.continuation.parameter = "a";
-  s.continuation.to = 5;
-  s.continuation.step = 0.05;
-  s.maxLevels = 6;
-  const Continuation::ModelAt at = [](double a) {
-    return test::makeModel("henon_map", {{"a", a}, {"b", -1}});
-  };
+  const BifurcationTreeSettings s = henonTree(5, 6);
+  const Continuation::ModelAt& at = areaPreservingHenon;
   const auto r = bifurcationTree(at, everhart(), order(1), 2.5, Eigen::Vector2d(0.35, -0.35), s);
   const double reference[] = {3.0,
                               4.0,
