@@ -53,6 +53,12 @@ void Model::coreJacobian(const double* x, double* jac) const {
       jac[i * m + j] = full[i * n + j];
 }
 
+void Model::recordField(taylor::Tape&, const double*) const {
+  throw InputError(info_->id +
+                   ": the taylor integrator needs a model whose right-hand side is written once as "
+                   "a template (ModelWithField); use another integrator");
+}
+
 void Model::tangentRhs(const double* x, const double* V, int k, double* dx, double* dV) const {
   const int m = info_->coreDimension;
   rhs(x, dx);

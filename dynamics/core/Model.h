@@ -13,6 +13,9 @@
 #include <vector>
 
 namespace rv {
+namespace taylor {
+class Tape;
+}
 
 /// A named quantity computed from (t, state): energy, Andoyer-Deprit variables, Euler angles, ...
 struct Observable {
@@ -96,6 +99,10 @@ public:
   /// coreDimension, column after column): dx = f(x), dV = J_core(x) V. What the variational equations need;
   /// models with a templated field compute both in one pass of directional derivatives.
   virtual void tangentRhs(const double* x, const double* V, int k, double* dx, double* dV) const;
+  /// Records one evaluation of the right-hand side at x on a tape that yields its Taylor coefficients
+  /// (TaylorTape.h). Models with a templated field do it with no code of their own; the rest throw
+  /// InputError saying that the Taylor method cannot expand them.
+  virtual void recordField(taylor::Tape& tape, const double* x) const;
   /// Values of the first integrals, in the order of info().integralNames.
   virtual Eigen::VectorXd integrals(const double* x) const;
   /// Density of the invariant measure (1 when hasInvariantMeasure() is false).

@@ -2,6 +2,7 @@
 // type, and gets rhs() in double and an exact Jacobian through Eigen's forward-mode AutoDiff.
 #pragma once
 #include "dynamics/core/Model.h"
+#include "dynamics/core/TaylorTape.h"
 
 #include <stdexcept>
 #include <unsupported/Eigen/AutoDiff>
@@ -73,6 +74,17 @@ public:
     default:
       return Model::tangentRhs(x, V, k, dx, dV);
     }
+  }
+
+  /// The field evaluated on recording scalars: its Taylor expansion for the taylor integrator.
+  void recordField(taylor::Tape& tape, const double* x) const final {
+    taylor::Recording recording(tape, N);
+    Vec<taylor::Var> xa, fa;
+    for (int i = 0; i < N; ++i)
+      xa[i] = tape.input(i, x[i]);
+    self().field(xa, fa);
+    for (int i = 0; i < N; ++i)
+      tape.setOutput(i, fa[i]);
   }
 
 private:

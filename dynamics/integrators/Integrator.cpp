@@ -4,6 +4,7 @@
 #include "dynamics/integrators/Everhart.h"
 #include "dynamics/integrators/Merson.h"
 #include "dynamics/integrators/Rk4.h"
+#include "dynamics/integrators/Taylor.h"
 
 #include <cmath>
 #include <sstream>
@@ -62,6 +63,7 @@ const IntegratorRegistry& IntegratorRegistry::builtin() {
     r.add(Rk4::entry());
     r.add(Merson::entry());
     r.add(Everhart::entry());
+    r.add(Taylor::entry());
     return r;
   }();
   return registry;

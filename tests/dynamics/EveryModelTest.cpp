@@ -1,7 +1,10 @@
 // Properties every registered model must have: a default scene that loads, an exact Jacobian that agrees with
 // finite differences at the scene's initial state, observables that evaluate, and for flows with an invariant
 // measure a zero divergence of rho f there.
+#include "dynamics/core/Errors.h"
 #include "dynamics/core/ModelRegistry.h"
+#include "dynamics/integrators/Everhart.h"
+#include "dynamics/integrators/Taylor.h"
 #include "tests/dynamics/TestSupport.h"
 
 #include <filesystem>
@@ -12,19 +15,25 @@ namespace {
 
 class EveryModel : public ::testing::TestWithParam<std::string> {};
 
+// a generic state near the model's scale
+Eigen::VectorXd genericState(const Model& m) {
+  const int n = m.dimension();
+  Eigen::VectorXd x = Eigen::VectorXd::Constant(n, 0.3);
+  for (int i = 0; i < n; ++i)
+    x[i] += 0.07 * i;
+  if (m.info().stateNames.size() >= 6 && m.info().stateNames[3] == "gamma1")
+    x = m.stateFromNamed(
+        {{"M1", 0.2}, {"M2", -0.3}, {"M3", 0.4}, {"gamma1", 0.1}, {"gamma2", 0.2}, {"gamma3", 1}}, "t");
+  if (m.info().id == "ball_on_paraboloid")
+    x = m.stateFromNamed({{"M1", 0.02}, {"M2", -0.03}, {"M3", 0.04}, {"x1", 0.2}, {"x2", -0.1}}, "t");
+  return x;
+}
+
 TEST_P(EveryModel, JacobianMatchesFiniteDifferencesAndObservablesEvaluate) {
   const auto& entry = ModelRegistry::builtin().get(GetParam());
   const auto m = entry.create(ParameterValues(entry.info->parameters));
   const int n = m->dimension();
-  // a generic state near the model's scale: from a map point when it has one
-  Eigen::VectorXd x = Eigen::VectorXd::Constant(n, 0.3);
-  for (int i = 0; i < n; ++i)
-    x[i] += 0.07 * i;
-  if (m->info().stateNames.size() >= 6 && m->info().stateNames[3] == "gamma1")
-    x = m->stateFromNamed(
-        {{"M1", 0.2}, {"M2", -0.3}, {"M3", 0.4}, {"gamma1", 0.1}, {"gamma2", 0.2}, {"gamma3", 1}}, "t");
-  if (GetParam() == "ball_on_paraboloid")
-    x = m->stateFromNamed({{"M1", 0.02}, {"M2", -0.03}, {"M3", 0.04}, {"x1", 0.2}, {"x2", -0.1}}, "t");
+  const Eigen::VectorXd x = genericState(*m);
   std::vector<double> J(n * n);
   m->jacobian(x.data(), J.data());
   Eigen::VectorXd xp, xm, fp(n), fm(n);
@@ -63,6 +72,49 @@ TEST_P(EveryModel, JacobianMatchesFiniteDifferencesAndObservablesEvaluate) {
   if (m->hasInvariantMeasure()) {
     EXPECT_NEAR(test::divergenceOfDensityFlow(*m, x), 0, 1e-7) << GetParam();
   }
+}
+
+// The Taylor method expands every flow from its one templated field, with no code of its own: its steps agree
+// with small Everhart steps of another formulation (interpolation polynomials of the right-hand side),
+// including inside a step (the series as dense output), and a step back returns to the start.
+TEST_P(EveryModel, TaylorExpandsTheFieldWithNoCodeOfItsOwn) {
+  const auto& entry = ModelRegistry::builtin().get(GetParam());
+  const auto m = entry.create(ParameterValues(entry.info->parameters));
+  Taylor taylor(1e-15, 0);
+  if (m->isMap()) {
+    EXPECT_THROW(taylor.start(*m, 0, genericState(*m)), InputError);
+    return;
+  }
+  const Eigen::VectorXd x0 = genericState(*m);
+  const double T = GetParam() == "lorenz" ? 1.0 : 3.0; // Lorenz doubles errors every ~0.7
+  taylor.start(*m, 0, x0);
+  Everhart reference(T / 600, 15, 20);
+  reference.start(*m, 0, x0);
+  Eigen::VectorXd expected(x0.size()), dense(x0.size());
+  int steps = 0;
+  while (taylor.time() < T) {
+    taylor.step(), ++steps;
+    const double mid = 0.5 * (taylor.previousTime() + taylor.time());
+    while (reference.time() < mid)
+      reference.step();
+    reference.interpolate(mid, expected);
+    taylor.interpolate(mid, dense);
+    const double scale = std::max(1.0, expected.cwiseAbs().maxCoeff());
+    EXPECT_LT((dense - expected).cwiseAbs().maxCoeff(), 1e-11 * scale)
+        << GetParam() << " inside step " << steps;
+    while (reference.time() < taylor.time())
+      reference.step();
+    reference.interpolate(taylor.time(), expected);
+    ASSERT_LT((taylor.state() - expected).cwiseAbs().maxCoeff(), 1e-11 * scale)
+        << GetParam() << " step " << steps;
+  }
+  EXPECT_LT(steps, 200) << GetParam(); // long steps, not the reference's 600
+  Taylor back(1e-15, 0);
+  back.start(*m, taylor.time(), taylor.state(), -1);
+  while (back.time() > 1e-12)
+    back.step();
+  back.interpolate(0, dense);
+  EXPECT_LT((dense - x0).cwiseAbs().maxCoeff(), 1e-9 * std::max(1.0, x0.cwiseAbs().maxCoeff())) << GetParam();
 }
 
 INSTANTIATE_TEST_SUITE_P(Registry, EveryModel,
