@@ -54,9 +54,9 @@ void Model::coreJacobian(const double* x, double* jac) const {
 }
 
 void Model::recordField(taylor::Tape&, const double*) const {
-  throw InputError(info_->id +
-                   ": the taylor integrator needs a model whose right-hand side is written once as "
-                   "a template (ModelWithField); use another integrator");
+  throw InputError(info_->id + ": the taylor integrator cannot expand this system (it expands a model's own "
+                               "right-hand side, not the tangent vectors of Lyapunov exponents or MEGNO); "
+                               "choose another integrator.method, e.g. everhart");
 }
 
 void Model::tangentRhs(const double* x, const double* V, int k, double* dx, double* dV) const {

@@ -24,23 +24,54 @@ void Tape::prepare(int order) {
 }
 
 namespace {
-// sum_{j=lo}^{hi} a[j] b[k-j]
+// sum_{j=lo}^{hi} a[j] b[k-j], in four independent partial sums: one running sum would wait on the adder's
+// latency at every term, and these sums are most of the expansion's time
 inline double convolve(const double* a, const double* b, int k, int lo, int hi) {
-  double s = 0;
-  for (int j = lo; j <= hi; ++j)
-    s += a[j] * b[k - j];
-  return s;
+  double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+  int j = lo;
+  for (; j + 3 <= hi; j += 4) {
+    s0 += a[j] * b[k - j];
+    s1 += a[j + 1] * b[k - j - 1];
+    s2 += a[j + 2] * b[k - j - 2];
+    s3 += a[j + 3] * b[k - j - 3];
+  }
+  for (; j <= hi; ++j)
+    s0 += a[j] * b[k - j];
+  return (s0 + s1) + (s2 + s3);
 }
 // sum_{j=1}^{k} j a[j] b[k-j]: the derivative-weighted product of exp, sin and cos
 inline double weighted(const double* a, const double* b, int k) {
-  double s = 0;
-  for (int j = 1; j <= k; ++j)
-    s += j * a[j] * b[k - j];
-  return s;
+  double s0 = 0, s1 = 0;
+  int j = 1;
+  for (; j + 1 <= k; j += 2) {
+    s0 += j * a[j] * b[k - j];
+    s1 += (j + 1) * a[j + 1] * b[k - j - 1];
+  }
+  if (j <= k) s0 += j * a[j] * b[k - j];
+  return s0 + s1;
 }
 } // namespace
 
 void Tape::evaluate(int k) {
+  // the order as a compile-time constant where it is small: every sum's length is then known and unrolled
+  switch (k) {
+#define RV_TAYLOR_ORDER(K)                                                                                   \
+  case K:                                                                                                    \
+    return evaluateOrder<K>(K);
+    RV_TAYLOR_ORDER(1)
+    RV_TAYLOR_ORDER(2) RV_TAYLOR_ORDER(3) RV_TAYLOR_ORDER(4) RV_TAYLOR_ORDER(5) RV_TAYLOR_ORDER(6)
+        RV_TAYLOR_ORDER(7) RV_TAYLOR_ORDER(8) RV_TAYLOR_ORDER(9) RV_TAYLOR_ORDER(10) RV_TAYLOR_ORDER(11)
+            RV_TAYLOR_ORDER(12) RV_TAYLOR_ORDER(13) RV_TAYLOR_ORDER(14) RV_TAYLOR_ORDER(15)
+                RV_TAYLOR_ORDER(16) RV_TAYLOR_ORDER(17) RV_TAYLOR_ORDER(18) RV_TAYLOR_ORDER(19)
+                    RV_TAYLOR_ORDER(20) RV_TAYLOR_ORDER(21) RV_TAYLOR_ORDER(22) RV_TAYLOR_ORDER(23)
+                        RV_TAYLOR_ORDER(24)
+#undef RV_TAYLOR_ORDER
+                            default : return evaluateOrder<0>(k);
+  }
+}
+
+template <int K> void Tape::evaluateOrder(int runtimeOrder) {
+  const int k = K > 0 ? K : runtimeOrder;
   const int count = static_cast<int>(nodes_.size());
   const double dk = k;
   for (int n = inputs_; n < count; ++n) {

@@ -105,6 +105,9 @@ public:
   const std::vector<Node>& nodes() const { return nodes_; }
 
 private:
+  /// evaluate() with the order fixed at compile time (K > 0) or given at run time (K = 0).
+  template <int K> void evaluateOrder(int runtimeOrder);
+
   std::vector<Node> nodes_;
   std::vector<double> values_, coef_;
   std::vector<Var> outputs_;

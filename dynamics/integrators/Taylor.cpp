@@ -43,7 +43,8 @@ const ParameterTable& Taylor::parameterTable() {
 }
 
 IntegratorEntry Taylor::entry() {
-  return {"taylor", "Taylor series by automatic differentiation of the model, adaptive order and step",
+  return {"taylor",
+          "Taylor series by automatic differentiation of the model, order from the tolerance, adaptive step",
           "Jorba and Zou, Exp. Math. 14 (2005); Biscani and Izzo, MNRAS 504 (2021)", &parameterTable(),
           [](const ParameterValues& p) -> std::unique_ptr<Integrator> {
             return std::make_unique<Taylor>(p["tolerance"], static_cast<int>(p["order"]),

@@ -224,6 +224,28 @@ class Cli(unittest.TestCase):
         self.assertBadInput(run("spectrum", hh, "--function", "nope"), "nope")
         self.assertBadInput(run("poincare", hh, "--set", "poincare.section=nope"), "poincare.section")
 
+    def test_taylor_integrator(self):
+        # the Taylor method through the scene's integrator section: the same map points as Everhart's small steps
+        hh = os.path.join(SRC, "scenes", "henon_heiles.json")
+        points = {}
+        for method in ("taylor", "everhart"):
+            out = self.path(method + ".csv")
+            extra = ["--set", "integrator.step=0.01"] if method == "everhart" else []
+            r = run("poincare", hh, "--points", "10", "--set", "initial.map=[0.1,0.2]", "--set",
+                    "integrator.method=" + method, *extra, "-o", out)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            with open(out) as f:
+                points[method] = [[float(v) for v in row[:3]] for row in list(csv.reader(f))[1:]]
+        self.assertEqual(len(points["taylor"]), 10)
+        for a, b in zip(points["taylor"], points["everhart"]):
+            for u, v in zip(a, b):
+                self.assertAlmostEqual(u, v, delta=1e-9)
+        self.assertIn("taylor", run("list", "integrators").stdout)
+        # the tangent vectors of the Lyapunov exponents are not the model's field: a clear refusal
+        self.assertBadInput(run("lyapunov", hh, "--time", "10", "--set", "integrator.method=taylor"), "taylor")
+        self.assertBadInput(run("poincare", hh, "--set", "integrator.method=taylor", "--set",
+                                "integrator.order=61"), "integrator.order")
+
     def test_poincare_chart(self):
         out = self.path("c.png")
         r = run("chart", SCENE, "--view", "poincare", "-o", out, "--points", "300", "--size", "400x400")

@@ -5,10 +5,12 @@
 #include "dynamics/integrators/Everhart.h"
 #include "dynamics/integrators/Merson.h"
 #include "dynamics/integrators/Rk4.h"
+#include "dynamics/integrators/Taylor.h"
 
 #include <benchmark/benchmark.h>
 #include <boost/numeric/odeint.hpp>
 #include <cmath>
+#include <functional>
 #include <vector>
 
 namespace {
@@ -114,27 +116,40 @@ void AccurateChaplygin_rollviz(benchmark::State& state) {
   state.counters["rhs_evaluations"] = static_cast<double>(evals);
 }
 
-// Everhart 15 with IAS15's adaptive step at a tolerance (state.range(0) = -log10 tolerance), to t = 1000
-void Chaplygin_adaptive(benchmark::State& state) {
+// an adaptive method from the accurate case's start to t = 1000 (dense output there): the energy error,
+// evaluations and steps of the last run as counters
+void adaptiveToThousand(benchmark::State& state, const std::function<std::unique_ptr<Integrator>()>& make) {
   const AccurateCase c;
   const Model* m = c.model.get();
   double err = 0;
   long evals = 0, steps = 0;
-  const double tolerance = std::pow(10.0, -static_cast<double>(state.range(0)));
   for (auto _ : state) {
-    Everhart e(0.5, 15, 12, tolerance);
-    e.start(*m, 0, c.x0);
+    const auto e = make();
+    e->start(*m, 0, c.x0);
     Eigen::VectorXd x(c.x0.size());
     steps = 0;
-    while (e.time() < 1000)
-      e.step(), ++steps;
-    e.interpolate(1000, x);
+    while (e->time() < 1000)
+      e->step(), ++steps;
+    e->interpolate(1000, x);
     err = std::abs(m->integrals(x.data())[0] - c.E0) / c.E0;
-    evals = e.evaluations();
+    evals = e->evaluations();
   }
   state.counters["energy_error"] = err;
   state.counters["rhs_evaluations"] = static_cast<double>(evals);
   state.counters["steps"] = static_cast<double>(steps);
+}
+
+// Everhart 15 with IAS15's adaptive step at a tolerance (state.range(0) = -log10 tolerance), to t = 1000
+void Chaplygin_adaptive(benchmark::State& state) {
+  const double tolerance = std::pow(10.0, -static_cast<double>(state.range(0)));
+  adaptiveToThousand(state, [&] { return std::make_unique<Everhart>(0.5, 15, 12, tolerance); });
+}
+
+// the Taylor method at a tolerance (state.range(0) = -log10 tolerance; the order follows from it), to t =
+// 1000; "rhs_evaluations" counts one per order and step (a sweep of the tape)
+void Chaplygin_taylor(benchmark::State& state) {
+  const double tolerance = std::pow(10.0, -static_cast<double>(state.range(0)));
+  adaptiveToThousand(state, [&] { return std::make_unique<Taylor>(tolerance, 0); });
 }
 
 // odeint's runge_kutta_fehlberg78, controlled, at tolerance 10^-state.range(0)
@@ -194,6 +209,7 @@ void Steps(benchmark::State& state, const std::string& method) {
   if (method == "merson") integ = std::make_unique<Merson>(1e-2, 1e-10, 1e-8, 0.1);
   if (method == "everhart15") integ = std::make_unique<Everhart>(0.2, 15, 12);
   if (method == "everhart27") integ = std::make_unique<Everhart>(0.5, 27, 12);
+  if (method == "taylor") integ = std::make_unique<Taylor>(1e-15, 0);
   integ->start(*m, 0, x0);
   for (auto _ : state)
     integ->step();
@@ -215,6 +231,7 @@ BENCHMARK(AccurateChaplygin_rollviz)
     ->Name("AccurateChaplygin/rollviz")
     ->Unit(benchmark::kMillisecond)
     ->ArgsProduct({{1, 2}, {6, 12}});
+BENCHMARK(Chaplygin_taylor)->Name("AccurateChaplygin/rollviz_taylor")->Unit(benchmark::kMillisecond)->Arg(12);
 BENCHMARK(AccurateChaplygin_odeint)->Name("AccurateChaplygin/odeint")->Unit(benchmark::kMillisecond);
 // the same motion near 1e-15: RKF78 at its smallest useful tolerances beside Everhart fixed and adaptive
 BENCHMARK(AccurateChaplygin_rollviz)
@@ -229,8 +246,14 @@ BENCHMARK(Chaplygin_adaptive)
     ->Arg(9)
     ->Arg(8)
     ->Arg(7);
+BENCHMARK(Chaplygin_taylor)
+    ->Name("PreciseChaplygin/rollviz_taylor")
+    ->Unit(benchmark::kMillisecond)
+    ->Arg(15)
+    ->Arg(16);
 BENCHMARK(Chaplygin_odeint)->Name("PreciseChaplygin/odeint")->Unit(benchmark::kMillisecond)->Arg(15)->Arg(16);
 BENCHMARK_CAPTURE(Steps, rk4, std::string("rk4"));
 BENCHMARK_CAPTURE(Steps, merson, std::string("merson"));
 BENCHMARK_CAPTURE(Steps, everhart15, std::string("everhart15"));
 BENCHMARK_CAPTURE(Steps, everhart27, std::string("everhart27"));
+BENCHMARK_CAPTURE(Steps, taylor, std::string("taylor"));

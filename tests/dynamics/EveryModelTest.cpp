@@ -86,7 +86,8 @@ TEST_P(EveryModel, TaylorExpandsTheFieldWithNoCodeOfItsOwn) {
     return;
   }
   const Eigen::VectorXd x0 = genericState(*m);
-  const double T = GetParam() == "lorenz" ? 1.0 : 3.0; // Lorenz doubles errors every ~0.7
+  // backward in time Lorenz expands volumes by e^(41/3) per unit time: a short run keeps the return exact
+  const double T = GetParam() == "lorenz" ? 0.5 : 3.0;
   taylor.start(*m, 0, x0);
   Everhart reference(T / 600, 15, 20);
   reference.start(*m, 0, x0);
@@ -114,7 +115,8 @@ TEST_P(EveryModel, TaylorExpandsTheFieldWithNoCodeOfItsOwn) {
   while (back.time() > 1e-12)
     back.step();
   back.interpolate(0, dense);
-  EXPECT_LT((dense - x0).cwiseAbs().maxCoeff(), 1e-9 * std::max(1.0, x0.cwiseAbs().maxCoeff())) << GetParam();
+  EXPECT_LT((dense - x0).cwiseAbs().maxCoeff(), 1e-10 * std::max(1.0, x0.cwiseAbs().maxCoeff()))
+      << GetParam();
 }
 
 INSTANTIATE_TEST_SUITE_P(Registry, EveryModel,
