@@ -53,12 +53,16 @@ IntegratorEntry Taylor::entry() {
 }
 
 int Taylor::orderFor(double tolerance) {
+  if (!(tolerance > 1e-300)) return kMaxOrder + 1; // refused by the constructor (and no overflow to int here)
   return std::max(2, static_cast<int>(std::ceil(-std::log(tolerance) / 2 + 1)));
 }
 
 Taylor::Taylor(double tolerance, int order, double step)
-    : tolerance_(tolerance), step_(step), order_(order > 0 ? order : orderFor(tolerance)) {
+    : step_(step), order_(order > 0 ? order : orderFor(tolerance)) {
   if (!(tolerance > 0)) throw InputError("integrator.tolerance: must be positive");
+  if (order <= 0 && order_ > kMaxOrder)
+    throw InputError("integrator.tolerance: too small for the taylor method (order at most " +
+                     std::to_string(kMaxOrder) + ")");
   if (order_ > kMaxOrder)
     throw InputError("integrator.order: at most " + std::to_string(kMaxOrder) + " for the taylor method");
   if (order_ < 1) throw InputError("integrator.order: at least 1");

@@ -46,7 +46,7 @@ private:
   /// Jorba and Zou's step from the last two coefficients, with heyoka's safety factor.
   double chooseStep() const;
 
-  double tolerance_, step_;
+  double step_;
   int order_;
   double lastStep_ = 0;
   taylor::Tape tape_;
