@@ -93,7 +93,8 @@ void Taylor::expand() {
     }
     if (k < order_) tape_.evaluate(k);
   }
-  evaluations_ += order_; // one sweep of the tape per order: the work of about one right-hand side each
+  // counted as one evaluation per sweep of the tape (a sweep at order k costs ~k per product)
+  evaluations_ += order_;
 }
 
 double Taylor::chooseStep() const {
