@@ -1,6 +1,8 @@
 #include "dynamics/core/TaylorTape.h"
 
 #include <algorithm>
+#include <array>
+#include <utility>
 
 namespace rv::taylor {
 
@@ -54,20 +56,13 @@ inline double weighted(const double* a, const double* b, int k) {
 
 void Tape::evaluate(int k) {
   // the order as a compile-time constant where it is small: every sum's length is then known and unrolled
-  switch (k) {
-#define RV_TAYLOR_ORDER(K)                                                                                   \
-  case K:                                                                                                    \
-    return evaluateOrder<K>(K);
-    RV_TAYLOR_ORDER(1)
-    RV_TAYLOR_ORDER(2) RV_TAYLOR_ORDER(3) RV_TAYLOR_ORDER(4) RV_TAYLOR_ORDER(5) RV_TAYLOR_ORDER(6)
-        RV_TAYLOR_ORDER(7) RV_TAYLOR_ORDER(8) RV_TAYLOR_ORDER(9) RV_TAYLOR_ORDER(10) RV_TAYLOR_ORDER(11)
-            RV_TAYLOR_ORDER(12) RV_TAYLOR_ORDER(13) RV_TAYLOR_ORDER(14) RV_TAYLOR_ORDER(15)
-                RV_TAYLOR_ORDER(16) RV_TAYLOR_ORDER(17) RV_TAYLOR_ORDER(18) RV_TAYLOR_ORDER(19)
-                    RV_TAYLOR_ORDER(20) RV_TAYLOR_ORDER(21) RV_TAYLOR_ORDER(22) RV_TAYLOR_ORDER(23)
-                        RV_TAYLOR_ORDER(24)
-#undef RV_TAYLOR_ORDER
-                            default : return evaluateOrder<0>(k);
+  constexpr int kUnrolled = 24;
+  static constexpr auto byOrder = []<int... K>(std::integer_sequence<int, K...>) {
+    return std::array<void (Tape::*)(int), sizeof...(K)>{&Tape::evaluateOrder<K + 1>...};
   }
+  (std::make_integer_sequence<int, kUnrolled>{});
+  if (k >= 1 && k <= kUnrolled) return (this->*byOrder[static_cast<std::size_t>(k - 1)])(k);
+  evaluateOrder<0>(k);
 }
 
 template <int K> void Tape::evaluateOrder(int runtimeOrder) {

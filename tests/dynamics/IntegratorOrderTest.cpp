@@ -5,6 +5,7 @@
 #include "dynamics/integrators/Everhart.h"
 #include "dynamics/integrators/Merson.h"
 #include "dynamics/integrators/Rk4.h"
+#include "tests/dynamics/TestModels.h"
 #include "tests/dynamics/TestSupport.h"
 
 #include <cmath>
@@ -23,18 +24,6 @@ struct Pendulum : ModelWithField<Pendulum, 3> {
   template <class S> void field(const Vec<S>& x, Vec<S>& dx) const {
     using std::sin;
     dx[0] = x[1], dx[1] = -sin(x[0]), dx[2] = x[0] * x[1];
-  }
-};
-
-const ModelInfo& oscillatorInfo() {
-  static const ModelInfo info{.id = "oscillator", .stateNames = {"q", "p", "s"}, .coreDimension = 3};
-  return info;
-}
-// q'' = -q with s' = q p: q = cos t, p = -sin t, s = (cos^2 t - 1) / 2 exactly, so no reference run is needed
-struct Oscillator : ModelWithField<Oscillator, 3> {
-  Oscillator() : ModelWithField(oscillatorInfo(), ParameterValues(oscillatorInfo().parameters)) {}
-  template <class S> void field(const Vec<S>& x, Vec<S>& dx) const {
-    dx[0] = x[1], dx[1] = -x[0], dx[2] = x[0] * x[1];
   }
 };
 
@@ -62,11 +51,10 @@ double measuredOrder(const std::function<std::unique_ptr<Integrator>(double)>& m
 
 TEST(IntegratorOrder, EverhartFifteenAgainstAnExactSolution) {
   // 2^15 per halving crosses double rounding quickly: an exact solution and a step ratio of 1.25
-  Oscillator m;
-  Eigen::VectorXd x0(3), exact(3);
-  x0 << 1, 0, 0;
+  test::CoupledOscillator m;
+  const Eigen::VectorXd x0 = test::CoupledOscillator::exact(0);
   const double T = 40;
-  exact << std::cos(T), -std::sin(T), (std::cos(T) * std::cos(T) - 1) / 2;
+  const Eigen::VectorXd exact = test::CoupledOscillator::exact(T);
   const auto error = [&](double h) {
     Everhart e(h, 15, 40);
     e.start(m, 0, x0);

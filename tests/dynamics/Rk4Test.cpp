@@ -6,6 +6,7 @@
 #include "dynamics/core/TimeSampler.h"
 #include "dynamics/integrators/Everhart.h"
 #include "dynamics/integrators/Merson.h"
+#include "tests/dynamics/TestModels.h"
 #include "tests/dynamics/TestSupport.h"
 
 #include <atomic>
@@ -39,15 +40,6 @@ const ModelInfo& oscillatorInfo() {
 struct Oscillator : ModelWithField<Oscillator, 2> {
   Oscillator() : ModelWithField(oscillatorInfo(), ParameterValues(oscillatorInfo().parameters)) {}
   template <class S> void field(const Vec<S>& x, Vec<S>& dx) const { dx[0] = x[1], dx[1] = -x[0]; }
-};
-const ModelInfo& blowupInfo() {
-  static const ModelInfo info{.id = "blowup", .stateNames = {"y"}, .coreDimension = 1};
-  return info;
-}
-// y' = y^2, y(0) = 1 blows up at t = 1
-struct Blowup : ModelWithField<Blowup, 1> {
-  Blowup() : ModelWithField(blowupInfo(), ParameterValues(blowupInfo().parameters)) {}
-  template <class S> void field(const Vec<S>& x, Vec<S>& dx) const { dx[0] = x[0] * x[0]; }
 };
 
 TEST(Rk4, DenseOutputIsFourthOrderBetweenSteps) {
@@ -86,7 +78,7 @@ TEST(Rk4, BackwardIntegrationRetracesTheForwardOne) {
 }
 
 TEST(Rk4, BlowUpIsAComputationError) {
-  Blowup m;
+  test::Blowup m;
   Rk4 rk4(0.01);
   Eigen::VectorXd x0(1);
   x0 << 1;

@@ -6,6 +6,7 @@
 #include "dynamics/integrators/Everhart.h"
 #include "dynamics/tools/PoincareMap.h"
 #include "dynamics/tools/TangentSystem.h"
+#include "tests/dynamics/TestModels.h"
 #include "tests/dynamics/TestSupport.h"
 
 #include <cmath>
@@ -66,40 +67,21 @@ TEST(TaylorTape, EveryRecurrenceMatchesCauchysIntegral) {
   EXPECT_EQ(w.v, 14.0);
 }
 
-const ModelInfo& oscillatorInfo() {
-  static const ModelInfo info{.id = "oscillator", .stateNames = {"q", "p", "s"}, .coreDimension = 3};
-  return info;
-}
-// q'' = -q with s' = q p: q = cos t, p = -sin t, s = (cos^2 t - 1) / 2 exactly (no reference run, whose own
-// error would hide the method's near rounding)
-struct Oscillator : ModelWithField<Oscillator, 3> {
-  Oscillator() : ModelWithField(oscillatorInfo(), ParameterValues(oscillatorInfo().parameters)) {}
-  template <class S> void field(const Vec<S>& x, Vec<S>& dx) const {
-    dx[0] = x[1], dx[1] = -x[0], dx[2] = x[0] * x[1];
-  }
-};
-
-Eigen::VectorXd oscillatorAt(double t) {
-  Eigen::VectorXd x(3);
-  x << std::cos(t), -std::sin(t), (std::cos(t) * std::cos(t) - 1) / 2;
-  return x;
-}
-
 class TaylorOrder : public ::testing::TestWithParam<int> {};
 
 // With a fixed step the global error falls by 2^p when the step is halved (IntegratorOrderTest's measure).
 TEST_P(TaylorOrder, FixedStepIsOfItsOrder) {
   const int p = GetParam();
   const double T = 40, h1 = p <= 2 ? 0.1 : p <= 4 ? 0.2 : p <= 8 ? 0.8 : 2.0, h2 = h1 / 2;
-  Oscillator m;
+  test::CoupledOscillator m;
   const auto error = [&](double h) {
     Taylor taylor(1e-15, p, h);
     EXPECT_TRUE(taylor.fixedStep());
-    taylor.start(m, 0, oscillatorAt(0));
+    taylor.start(m, 0, test::CoupledOscillator::exact(0));
     for (long i = 0; i < std::lround(T / h); ++i)
       taylor.step();
     EXPECT_NEAR(taylor.time(), T, 1e-12);
-    return (taylor.state() - oscillatorAt(T)).norm();
+    return (taylor.state() - test::CoupledOscillator::exact(T)).norm();
   };
   const double e1 = error(h1), e2 = error(h2);
   std::printf("  order %d: h %.3g -> %.3e, h %.3g -> %.3e\n", p, h1, e1, h2, e2);
@@ -111,18 +93,18 @@ INSTANTIATE_TEST_SUITE_P(Orders, TaylorOrder, ::testing::Values(2, 4, 8, 12));
 // step follows the series' radius of convergence): the default reaches rounding, looser ones trade accuracy
 // for a lower order.
 TEST(TaylorAdaptive, TheErrorFollowsTheTolerance) {
-  Oscillator m;
+  test::CoupledOscillator m;
   const double T = 40;
   const auto run = [&](double tolerance) {
     Taylor taylor(tolerance, 0);
     EXPECT_FALSE(taylor.fixedStep());
-    taylor.start(m, 0, oscillatorAt(0));
+    taylor.start(m, 0, test::CoupledOscillator::exact(0));
     long steps = 0;
     while (taylor.time() < T)
       taylor.step(), ++steps;
     Eigen::VectorXd x(3);
     taylor.interpolate(T, x);
-    return std::pair<double, long>((x - oscillatorAt(T)).norm(), steps);
+    return std::pair<double, long>((x - test::CoupledOscillator::exact(T)).norm(), steps);
   };
   const auto [e6, n6] = run(1e-6);
   const auto [e9, n9] = run(1e-9);
@@ -180,18 +162,8 @@ TEST(Taylor, RefusesWhatItCannotExpand) {
   }
 }
 
-const ModelInfo& blowupInfo() {
-  static const ModelInfo info{.id = "blowup", .stateNames = {"x"}, .coreDimension = 1};
-  return info;
-}
-// x' = x^2 blows up at t = 1/x0
-struct Blowup : ModelWithField<Blowup, 1> {
-  Blowup() : ModelWithField(blowupInfo(), ParameterValues(blowupInfo().parameters)) {}
-  template <class S> void field(const Vec<S>& x, Vec<S>& dx) const { dx[0] = x[0] * x[0]; }
-};
-
 TEST(Taylor, AStateThatStopsBeingFiniteIsAComputationError) {
-  Blowup m;
+  test::Blowup m;
   Taylor taylor(1e-15, 0, 0.6);
   taylor.start(m, 0, Eigen::VectorXd::Constant(1, 1.0));
   EXPECT_THROW(
