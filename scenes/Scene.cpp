@@ -3,9 +3,16 @@
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/TimeSampler.h"
 
+#include <array>
 #include <cmath>
 
 namespace rv {
+
+void applyPlotTable(const ParameterValues& v, PlotView& plot) {
+  applyPlotTable(v, plot.settings);
+  plot.chart.holdProportions = v.choice("hold_proportions") == "yes";
+  plot.chart.pointSize = std::array{2.0f, 4.0f, 7.0f}.at(static_cast<std::size_t>(v["point_type"]));
+}
 
 std::unique_ptr<Integrator> Scene::startIntegrator() const {
   auto integrator = runSpec().makeIntegrator(*model);

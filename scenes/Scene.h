@@ -25,6 +25,10 @@ struct PlotView {
   PlotChartOptions chart; ///< the window's ranges, proportions and point type
 };
 
+/// Sets a plot's numbers and window options from the "plot" section's table (PlotFilter.h plotTable):
+/// period, max_points, time_limit, hold_proportions and point_type.
+void applyPlotTable(const ParameterValues& v, PlotView& plot);
+
 /// A validated scene: everything needed to integrate and to draw. Copies are cheap and share the immutable
 /// model and parameter values (no JSON is parsed again).
 struct Scene {

@@ -6,6 +6,7 @@
 #include "dynamics/tools/ToolSettings.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -164,68 +165,6 @@ ViewOptions readView(const json& j, const Where& w) {
   return v;
 }
 
-double positive(const json& j, const Where& w) {
-  const double v = number(j, w);
-  if (!(v > 0)) w.fail("must be positive");
-  return v;
-}
-
-long count(const json& j, const Where& w, long least = 1) {
-  const double v = number(j, w);
-  if (!(v >= least && v == std::floor(v) && v < 1e15))
-    w.fail("must be a whole number >= " + std::to_string(least));
-  return static_cast<long>(v);
-}
-
-SpectrumSettings readSpectrum(const json& j, const Where& w) {
-  requireObject(j, w);
-  onlyKeys(j, w, {"function", "samples", "max_frequency", "peaks", "min_peak_distance"});
-  SpectrumSettings s;
-  if (j.contains("function")) s.function = text(j["function"], w / "function");
-  if (j.contains("samples")) s.samples = count(j["samples"], w / "samples", 8);
-  if (j.contains("max_frequency")) s.maxFrequency = positive(j["max_frequency"], w / "max_frequency");
-  if (j.contains("peaks")) s.peaks = static_cast<int>(count(j["peaks"], w / "peaks", 0));
-  if (j.contains("min_peak_distance"))
-    s.minPeakDistance = number(j["min_peak_distance"], w / "min_peak_distance");
-  return s;
-}
-
-PlotView readPlot(const json& j, const Where& w) {
-  requireObject(j, w);
-  onlyKeys(j, w,
-           {"x", "y", "z", "condition", "period", "max_points", "time_limit", "x_min", "x_max", "y_min",
-            "y_max", "z_min", "z_max", "hold_proportions", "point_type"});
-  PlotView p;
-  if (j.contains("x")) p.settings.axes[0] = text(j["x"], w / "x");
-  if (j.contains("y")) p.settings.axes[1] = text(j["y"], w / "y");
-  if (j.contains("z")) p.settings.axes.push_back(text(j["z"], w / "z"));
-  if (j.contains("condition")) p.settings.condition = text(j["condition"], w / "condition");
-  if (j.contains("period")) p.settings.period = positive(j["period"], w / "period");
-  if (j.contains("max_points")) p.settings.maxPoints = count(j["max_points"], w / "max_points", 1);
-  if (j.contains("time_limit")) p.settings.timeLimit = positive(j["time_limit"], w / "time_limit");
-  const char* keys[6] = {"x_min", "x_max", "y_min", "y_max", "z_min", "z_max"};
-  for (int i = 0; i < 6; ++i)
-    if (j.contains(keys[i])) p.chart.range[i] = number(j[keys[i]], w / keys[i]);
-  for (int i = 0; i < 3; ++i)
-    if (p.chart.range[2 * i] && p.chart.range[2 * i + 1] &&
-        !(*p.chart.range[2 * i + 1] > *p.chart.range[2 * i]))
-      (w / keys[2 * i + 1]).fail(std::string("must exceed ") + keys[2 * i]);
-  if (j.contains("hold_proportions"))
-    p.chart.holdProportions = boolean(j["hold_proportions"], w / "hold_proportions");
-  if (j.contains("point_type")) {
-    const std::string s = text(j["point_type"], w / "point_type");
-    if (s == "small")
-      p.chart.pointSize = 2;
-    else if (s == "middle")
-      p.chart.pointSize = 4;
-    else if (s == "big")
-      p.chart.pointSize = 7;
-    else
-      (w / "point_type").fail("expected small, middle or big, got \"" + s + "\"");
-  }
-  return p;
-}
-
 Eigen::VectorXd readInitial(const json& j, const Where& w, const Model& model,
                             const SectionSettings& poincare) {
   requireObject(j, w);
@@ -253,6 +192,15 @@ Eigen::VectorXd readInitial(const json& j, const Where& w, const Model& model,
   return model.stateFromMap(point, spec, wm.str());
 }
 
+// the plot window's range of an axis: x_min, x_max, y_min, ... (none: the data's); the keys are read in the
+// order of the table below, so a maximum is read after its minimum
+template <int I> void readPlotRange(const json& j, const Where& w, Scene& scene) {
+  auto& range = scene.plot.chart.range;
+  range[I] = number(j, w);
+  if (I % 2 == 1 && range[I - 1] && !(*range[I] > *range[I - 1]))
+    w.fail(std::string("must exceed ") + std::array{"x_min", "y_min", "z_min"}[I / 2]);
+}
+
 // The keys of the tool sections that are no numbers of their tables: the section each belongs to, what a
 // misplaced one is told, and how it is read.
 struct TextKey {
@@ -278,6 +226,22 @@ const TextKey textKeys[] = {
      }},
     {"to", "continuation", "belongs to the \"continuation\" section",
      [](const json& j, const Where& w, Scene& scene) { scene.continuationTo = number(j, w); }},
+    {"function", "spectrum", "",
+     [](const json& j, const Where& w, Scene& scene) { scene.spectrum.function = text(j, w); }},
+    {"x", "plot", "",
+     [](const json& j, const Where& w, Scene& scene) { scene.plot.settings.axes[0] = text(j, w); }},
+    {"y", "plot", "",
+     [](const json& j, const Where& w, Scene& scene) { scene.plot.settings.axes[1] = text(j, w); }},
+    {"z", "plot", "",
+     [](const json& j, const Where& w, Scene& scene) { scene.plot.settings.axes.push_back(text(j, w)); }},
+    {"condition", "plot", "",
+     [](const json& j, const Where& w, Scene& scene) { scene.plot.settings.condition = text(j, w); }},
+    {"x_min", "plot", "", readPlotRange<0>},
+    {"x_max", "plot", "", readPlotRange<1>},
+    {"y_min", "plot", "", readPlotRange<2>},
+    {"y_max", "plot", "", readPlotRange<3>},
+    {"z_min", "plot", "", readPlotRange<4>},
+    {"z_max", "plot", "", readPlotRange<5>},
 };
 
 // the tool sections: numbers and choices from their tables, plus the text keys above
@@ -293,8 +257,17 @@ void readToolSections(const json& doc, const Where& root, Scene& scene) {
         return section.table->find(t.key) < 0 && (section.key == t.section || *t.misplaced);
       };
       std::vector<std::string> text;
-      for (const auto& t : textKeys)
+      std::string known; // what an unknown key is told: the table's ids and the section's own text keys
+      for (const auto& spec : section.table->specs())
+        known += " " + spec.id;
+      for (const auto& t : textKeys) {
         if (applies(t)) text.emplace_back(t.key);
+        if (applies(t) && section.key == t.section) known += std::string(" ") + t.key;
+      }
+      for (const auto& item : j.items())
+        if (section.table->find(item.key()) < 0 &&
+            std::find(text.begin(), text.end(), item.key()) == text.end())
+          (w / item.key()).fail("unknown parameter (known:" + known + ")");
       readParameters(j, w, *values, text);
       for (const auto& t : textKeys) {
         if (!j.contains(t.key) || !applies(t)) continue;
@@ -336,8 +309,7 @@ void applyOverrides(json& doc, const std::vector<SceneOverride>& overrides) {
       doc["parameters"][o.key] = value;
       continue;
     }
-    static const std::set<std::string> sections{"integrator", "initial",    "spectrum",
-                                                "plot",       "parameters", "view"};
+    static const std::set<std::string> sections{"integrator", "initial", "parameters", "view"};
     const std::string head = o.key.substr(0, o.key.find('.'));
     if (!sections.count(head) && !findToolSection(head))
       throw InputError(flag + ": unknown scene field '" + head + "'");
@@ -381,8 +353,8 @@ Scene sceneFromJson(json doc, const std::string& source, const std::vector<Scene
   requireObject(doc, root);
   applyOverrides(doc, overrides);
   for (const auto& [key, value] : doc.items()) {
-    static const std::set<std::string> known{"problem",  "parameters", "integrator", "initial",    "plot",
-                                             "spectrum", "view",       "title",      "description"};
+    static const std::set<std::string> known{"problem", "parameters", "integrator", "initial",
+                                             "view",    "title",      "description"};
     if (!known.count(key) && !findToolSection(key)) {
       std::string list;
       for (const auto& k : known)
@@ -432,8 +404,8 @@ Scene sceneFromJson(json doc, const std::string& source, const std::vector<Scene
   readToolSections(doc, root, scene);
   scene.poincare = poincareSettings(scene.tool("poincare"), scene.poincare.observable);
   scene.lyapunov = lyapunovSettings(scene.tool("lyapunov"));
-  if (doc.contains("spectrum")) scene.spectrum = readSpectrum(doc["spectrum"], root / "spectrum");
-  if (doc.contains("plot")) scene.plot = readPlot(doc["plot"], root / "plot");
+  scene.spectrum = spectrumSettings(scene.tool("spectrum"), scene.spectrum.function);
+  applyPlotTable(scene.tool("plot"), scene.plot);
   if (!scene.poincare.observable.empty() && !scene.model->isMap() &&
       scene.model->findObservable(scene.poincare.observable) < 0)
     (root / "poincare" / "section")

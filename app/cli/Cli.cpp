@@ -3,6 +3,7 @@
 #include "app/cli/Commands.h"
 #include "app/cli/Progress.h"
 #include "dynamics/core/Errors.h"
+#include "dynamics/tools/ToolRegistry.h"
 
 #include <fmt/core.h>
 
@@ -32,17 +33,27 @@ std::pair<int, int> parseSize(const std::string& text) {
   return {w, h};
 }
 
+const std::map<std::string, ToolCommandBuilder>& toolCommandBuilders() {
+  static const std::map<std::string, ToolCommandBuilder> builders{
+      {"poincare", addPoincareCommand},     {"spectrum", addSpectrumCommand},
+      {"lyapunov", addLyapunovCommand},     {"megno", addMegnoCommand},
+      {"fixedpoint", addFixedPointCommand}, {"continue", addContinueCommand},
+      {"separatrix", addSeparatrixCommand}, {"bifurcation-tree", addBifurcationTreeCommand},
+      {"surface", addSurfaceCommand},       {"ram", addRamCommand},
+      {"diagram", addDiagramCommand},       {"sweep", addSweepCommand}};
+  return builders;
+}
+
 int runCli(int argc, char** argv, const GuiLauncher& gui) {
   CLI::App app{"rollviz: bodies rolling without slipping, and the tools of nonlinear dynamics"};
   app.require_subcommand(0, 1);
-  const std::vector<Command> commands{
-      addListCommand(app),      addDescribeCommand(app),   addDescribeToolCommand(app),
-      addIntegrateCommand(app), addPoincareCommand(app),   addLyapunovCommand(app),
-      addMegnoCommand(app),     addSpectrumCommand(app),   addFixedPointCommand(app),
-      addContinueCommand(app),  addSeparatrixCommand(app), addBifurcationTreeCommand(app),
-      addSurfaceCommand(app),   addRamCommand(app),        addDiagramCommand(app),
-      addRenderCommand(app),    addVideoCommand(app),      addChartCommand(app),
-      addSweepCommand(app)};
+  std::vector<Command> commands{
+      addListCommand(app),   addDescribeCommand(app), addDescribeToolCommand(app), addIntegrateCommand(app),
+      addRenderCommand(app), addVideoCommand(app),    addChartCommand(app)};
+  for (const auto& tool : ToolRegistry::builtin().entries())
+    if (!tool.command.empty())
+      commands.push_back(
+          toolCommandBuilders().at(tool.command)(app.add_subcommand(tool.command, tool.commandHelp)));
   GuiOptions guiOptions;
   if (gui) {
     auto* cmd = app.add_subcommand("gui", "open the GUI on a scene (the default with no arguments)");

@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 #include <complex>
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -34,23 +35,29 @@ struct Command {
 };
 Command addListCommand(CLI::App& app);
 Command addDescribeCommand(CLI::App& app);
+Command addDescribeToolCommand(CLI::App& app);
 Command addIntegrateCommand(CLI::App& app);
 Command addRenderCommand(CLI::App& app);
 Command addVideoCommand(CLI::App& app);
 Command addChartCommand(CLI::App& app);
-Command addPoincareCommand(CLI::App& app);
-Command addLyapunovCommand(CLI::App& app);
-Command addMegnoCommand(CLI::App& app);
-Command addSpectrumCommand(CLI::App& app);
-Command addDescribeToolCommand(CLI::App& app);
-Command addFixedPointCommand(CLI::App& app);
-Command addContinueCommand(CLI::App& app);
-Command addSeparatrixCommand(CLI::App& app);
-Command addBifurcationTreeCommand(CLI::App& app);
-Command addSurfaceCommand(CLI::App& app);
-Command addRamCommand(CLI::App& app);
-Command addDiagramCommand(CLI::App& app);
-Command addSweepCommand(CLI::App& app);
+
+/// The headless commands of the registered tools (dynamics/tools/ToolRegistry.h): each fills the subcommand
+/// the registry names (ToolEntry::command, with ToolEntry::commandHelp) with its options and its run.
+using ToolCommandBuilder = Command (*)(CLI::App* cmd);
+/// By ToolEntry::command; runCli adds the subcommand of every registered tool that has one from here.
+const std::map<std::string, ToolCommandBuilder>& toolCommandBuilders();
+Command addPoincareCommand(CLI::App* cmd);
+Command addLyapunovCommand(CLI::App* cmd);
+Command addMegnoCommand(CLI::App* cmd);
+Command addSpectrumCommand(CLI::App* cmd);
+Command addFixedPointCommand(CLI::App* cmd);
+Command addContinueCommand(CLI::App* cmd);
+Command addSeparatrixCommand(CLI::App* cmd);
+Command addBifurcationTreeCommand(CLI::App* cmd);
+Command addSurfaceCommand(CLI::App* cmd);
+Command addRamCommand(CLI::App* cmd);
+Command addDiagramCommand(CLI::App* cmd);
+Command addSweepCommand(CLI::App* cmd);
 
 /// Draws a sweep's chart into a PNG (`rollviz sweep --png`, `rollviz chart --view sweep`).
 void writePngChart(const SweepChartData& data, const std::string& path, const std::string& size);

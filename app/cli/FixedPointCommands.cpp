@@ -244,9 +244,7 @@ int runGrid(const GridArgs& a, MapGrid::Kind kind) {
 
 } // namespace
 
-Command addFixedPointCommand(CLI::App& app) {
-  auto* cmd = app.add_subcommand("fixedpoint",
-                                 "a fixed point of order n of the scene's map, its multipliers and type");
+Command addFixedPointCommand(CLI::App* cmd) {
   auto a = std::make_shared<MapArgs>();
   auto json = std::make_shared<bool>(false), path = std::make_shared<bool>(false);
   addMapArgs(cmd, *a);
@@ -296,10 +294,7 @@ Command addFixedPointCommand(CLI::App& app) {
           }};
 }
 
-Command addContinueCommand(CLI::App& app) {
-  auto* cmd =
-      app.add_subcommand("continue", "continue a fixed point in a parameter: the family, its multipliers "
-                                     "and where its type changes");
+Command addContinueCommand(CLI::App* cmd) {
   auto a = std::make_shared<ContinueArgs>();
   addContinueArgs(cmd, *a);
   return {
@@ -352,9 +347,7 @@ Command addContinueCommand(CLI::App& app) {
       }};
 }
 
-Command addBifurcationTreeCommand(CLI::App& app) {
-  auto* cmd =
-      app.add_subcommand("bifurcation-tree", "the period-doubling cascade of an elliptic fixed point");
+Command addBifurcationTreeCommand(CLI::App* cmd) {
   auto a = std::make_shared<ContinueArgs>();
   addContinueArgs(cmd, *a);
   return {cmd, [a] {
@@ -413,9 +406,7 @@ Command addBifurcationTreeCommand(CLI::App& app) {
           }};
 }
 
-Command addSeparatrixCommand(CLI::App& app) {
-  auto* cmd =
-      app.add_subcommand("separatrix", "the separatrices of a hyperbolic fixed point of a 2D map, as CSV");
+Command addSeparatrixCommand(CLI::App* cmd) {
   auto a = std::make_shared<MapArgs>();
   auto branches = std::make_shared<std::string>(), output = std::make_shared<std::string>();
   addMapArgs(cmd, *a);
@@ -470,23 +461,19 @@ Command addSeparatrixCommand(CLI::App& app) {
           }};
 }
 
-Command addSurfaceCommand(CLI::App& app) {
-  auto* cmd = app.add_subcommand("surface", "the surface z = |Map^n(x) - x| on a grid, as CSV");
+Command addSurfaceCommand(CLI::App* cmd) {
   auto a = std::make_shared<GridArgs>();
   addGridArgs(cmd, *a, false);
   return {cmd, [a] { return runGrid(*a, MapGrid::Kind::Surface); }};
 }
 
-Command addRamCommand(CLI::App& app) {
-  auto* cmd = app.add_subcommand("ram", "the region of allowed motion on a grid of the map's plane, as CSV");
+Command addRamCommand(CLI::App* cmd) {
   auto a = std::make_shared<GridArgs>();
   addGridArgs(cmd, *a, true);
   return {cmd, [a] { return runGrid(*a, MapGrid::Kind::AllowedRegion); }};
 }
 
-Command addDiagramCommand(CLI::App& app) {
-  auto* cmd = app.add_subcommand(
-      "diagram", "a bifurcation diagram on the plane of first integrals, with the scene's point");
+Command addDiagramCommand(CLI::App* cmd) {
   auto scene = std::make_shared<SceneArgs>();
   auto id = std::make_shared<std::string>(), branch = std::make_shared<std::string>(),
        output = std::make_shared<std::string>();

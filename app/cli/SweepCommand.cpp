@@ -241,11 +241,7 @@ int runSweep(const SweepOptions& o) {
 
 } // namespace
 
-Command addSweepCommand(CLI::App& app) {
-  auto* cmd = app.add_subcommand(
-      "sweep",
-      "a chart of regimes: a tool's number over a grid of parameters or initial points (docs/sweeps.md); "
-      "runs on threads, or on ranks under mpirun");
+Command addSweepCommand(CLI::App* cmd) {
   auto o = std::make_shared<SweepOptions>();
   cmd->add_option("sweep", o->sweep, "sweep file (JSON: scene, axes, quantity, set, options)")->required();
   cmd->add_option(

@@ -58,8 +58,7 @@ struct SpectrumOptions {
 
 } // namespace
 
-Command addPoincareCommand(CLI::App& app) {
-  auto* cmd = app.add_subcommand("poincare", "points of the Poincare map of a scene's trajectory, as CSV");
+Command addPoincareCommand(CLI::App* cmd) {
   auto o = std::make_shared<PoincareOptions>();
   addSceneArgs(cmd, o->scene);
   cmd->add_option("--points", o->points, "how many points (default: the scene's poincare.points)");
@@ -130,8 +129,7 @@ Command addPoincareCommand(CLI::App& app) {
           }};
 }
 
-Command addLyapunovCommand(CLI::App& app) {
-  auto* cmd = app.add_subcommand("lyapunov", "Lyapunov exponents along a scene's trajectory (Benettin)");
+Command addLyapunovCommand(CLI::App* cmd) {
   auto o = std::make_shared<LyapunovOptions>();
   addSceneArgs(cmd, o->scene);
   cmd->add_option("--time", o->time, "integration time (default: the scene's lyapunov.time)");
@@ -171,8 +169,7 @@ Command addLyapunovCommand(CLI::App& app) {
           }};
 }
 
-Command addMegnoCommand(CLI::App& app) {
-  auto* cmd = app.add_subcommand("megno", "the chaos indicators MEGNO and FLI along a scene's trajectory");
+Command addMegnoCommand(CLI::App* cmd) {
   auto o = std::make_shared<MegnoOptions>();
   addSceneArgs(cmd, o->scene);
   cmd->add_option("--time", o->time, "integration time (default: the scene's megno.time)");
@@ -212,8 +209,7 @@ Command addMegnoCommand(CLI::App& app) {
           }};
 }
 
-Command addSpectrumCommand(CLI::App& app) {
-  auto* cmd = app.add_subcommand("spectrum", "Fourier spectrum of an observable along a scene's trajectory");
+Command addSpectrumCommand(CLI::App* cmd) {
   auto o = std::make_shared<SpectrumOptions>();
   addSceneArgs(cmd, o->scene);
   cmd->add_option("--function", o->function, "observable to expand (default: the scene's spectrum.function)");

@@ -121,8 +121,24 @@ void ControlPanel::setScene(const Scene& scene) {
   methodScroll_ =
       add("method", "Method", *scene.integratorEntry->parameters, *scene.integratorParameters, methodBox_);
   tabs_->addTab(toolsTab_, "Tools");
-  for (const auto& t : toolSections())
-    add(t.key, QString::fromStdString(t.title), *t.table, scene.tool(t.key));
+  observables_.clear();
+  for (const auto& t : toolSections()) {
+    QComboBox* chooser = nullptr;
+    // the observable a section names (the Poincare section, the spectrum's function): a flow's observables
+    if (!t.observableKey.empty() && !scene.model->isMap()) {
+      chooser = new QComboBox;
+      chooser->setObjectName(QString::fromStdString(t.key + "_" + t.observableKey));
+      chooser->addItem(""); // the scene's default
+      for (const auto& o : scene.model->observables())
+        chooser->addItem(QString::fromStdString(o.id));
+      const auto& section = scene.document.value(t.key, nlohmann::json::object());
+      if (section.contains(t.observableKey) && section[t.observableKey].is_string())
+        chooser->setCurrentText(QString::fromStdString(section[t.observableKey].get<std::string>()));
+      chooser->setToolTip(QString::fromStdString(t.observableKey + ": the observable of " + t.title));
+      observables_.emplace_back(t.key + "." + t.observableKey, chooser);
+    }
+    add(t.key, QString::fromStdString(t.title), *t.table, scene.tool(t.key), chooser);
+  }
 }
 
 bool ControlPanel::chooseMethod(const std::string& id) {
@@ -157,6 +173,12 @@ nlohmann::json ControlPanel::editedDocument() const {
       else
         doc[section][id] = v[id];
     }
+  }
+  for (const auto& [path, chooser] : observables_) {
+    const std::string section = path.substr(0, path.find('.')), key = path.substr(path.find('.') + 1);
+    const std::string chosen = chooser->currentText().toStdString();
+    const auto& old = scene_->document.value(section, nlohmann::json::object());
+    if (!chosen.empty() && old.value(key, std::string()) != chosen) doc[section][key] = chosen;
   }
   return doc;
 }

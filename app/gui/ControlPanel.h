@@ -59,6 +59,7 @@ private:
   QComboBox* methodBox_ = nullptr;
   QScrollArea* methodScroll_ = nullptr;
   std::vector<std::pair<std::string, ParameterForm*>> forms_;
+  std::vector<std::pair<std::string, QComboBox*>> observables_; ///< "section.key" and its chooser
 };
 
 } // namespace rv

@@ -605,7 +605,7 @@ MultipliersWindow* MainWindow::openMultipliersWindow() {
 
 void MainWindow::plotDialog(int dimensions) {
   if (!scene_) return;
-  PlotFilterDialog dialog(*scene_->model, scene_->plot, dimensions, this);
+  PlotFilterDialog dialog(*scene_->model, scene_->plot, scene_->tool("plot"), dimensions, this);
   if (dialog.exec() == QDialog::Accepted) openPlotWindow(dialog.plot());
 }
 

@@ -1,10 +1,11 @@
 #include "app/gui/PlotFilterDialog.h"
 
+#include "app/gui/ParameterForm.h"
+#include "dynamics/tools/PlotFilter.h"
+
 #include <QComboBox>
 #include <QDialogButtonBox>
-#include <QDoubleSpinBox>
 #include <QFormLayout>
-#include <QSpinBox>
 
 namespace rv {
 
@@ -20,8 +21,8 @@ QComboBox* observableBox(const Model& model, const std::string& chosen, QWidget*
 }
 } // namespace
 
-PlotFilterDialog::PlotFilterDialog(const Model& model, const PlotView& proposed, int dimensions,
-                                   QWidget* parent)
+PlotFilterDialog::PlotFilterDialog(const Model& model, const PlotView& proposed, const ParameterValues& table,
+                                   int dimensions, QWidget* parent)
     : QDialog(parent), proposed_(proposed) {
   setWindowTitle(QString("%1D plot filter").arg(dimensions));
   auto* form = new QFormLayout(this);
@@ -38,22 +39,9 @@ PlotFilterDialog::PlotFilterDialog(const Model& model, const PlotView& proposed,
   condition_->setObjectName("condition");
   condition_->setToolTip("a point is output whenever this has changed by the period since the last one");
   form->addRow("Out condition", condition_);
-  period_ = new QDoubleSpinBox(this);
-  period_->setDecimals(6);
-  period_->setRange(1e-6, 1e6);
-  period_->setValue(proposed.settings.period);
-  period_->setToolTip("the change of the out condition between two points");
-  form->addRow("Out value (period)", period_);
-  maxPoints_ = new QSpinBox(this);
-  maxPoints_->setRange(1, 100000000);
-  maxPoints_->setValue(static_cast<int>(std::min<long>(proposed.settings.maxPoints, 100000000)));
-  maxPoints_->setToolTip("the most points drawn for one trajectory");
-  form->addRow("Max. number of points", maxPoints_);
-  pointType_ = new QComboBox(this);
-  pointType_->addItems({"small", "middle", "big"});
-  const float size = proposed.chart.pointSize;
-  pointType_->setCurrentIndex(size <= 2 ? 0 : size <= 4 ? 1 : 2);
-  form->addRow("Point type", pointType_);
+  form_ = new ParameterForm(plotTable(), this);
+  form_->setValues(table);
+  form->addRow(form_);
   auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
   connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
   connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
@@ -66,9 +54,7 @@ PlotView PlotFilterDialog::plot() const {
   for (auto* a : axes_)
     p.settings.axes.push_back(a->currentText().toStdString());
   p.settings.condition = condition_->currentText().toStdString();
-  p.settings.period = period_->value();
-  p.settings.maxPoints = maxPoints_->value();
-  p.chart.pointSize = std::array<float, 3>{2, 4, 7}[pointType_->currentIndex()];
+  applyPlotTable(form_->values(), p);
   return p;
 }
 

@@ -8,6 +8,52 @@
 
 namespace rv {
 
+const ParameterTable& plotTable() {
+  const PlotSettings d;
+  static const ParameterTable t{
+      {.id = "period",
+       .label = "Period",
+       .defaultValue = d.period,
+       .min = 1e-300,
+       .description = "the change of the output condition between two points"},
+      {.id = "max_points",
+       .label = "Max. number of points",
+       .defaultValue = static_cast<double>(d.maxPoints),
+       .min = 1,
+       .max = 1e15,
+       .description = "the most points drawn for one trajectory",
+       .integer = true},
+      {.id = "time_limit",
+       .label = "Time limit",
+       .defaultValue = d.timeLimit,
+       .min = 1e-300,
+       .description = "integration time at most"},
+      {.id = "hold_proportions",
+       .label = "Hold proportions",
+       .defaultValue = 0,
+       .min = 0,
+       .max = 1,
+       .description = "equal scales on the axes",
+       .integer = true,
+       .choices = {"no", "yes"}},
+      {.id = "point_type",
+       .label = "Point type",
+       .defaultValue = 1,
+       .min = 0,
+       .max = 2,
+       .description = "the size of the points drawn: 2, 4 or 7 pixels",
+       .integer = true,
+       .choices = {"small", "middle", "big"}},
+  };
+  return t;
+}
+
+void applyPlotTable(const ParameterValues& v, PlotSettings& s) {
+  s.period = v["period"];
+  s.maxPoints = static_cast<long>(v["max_points"]);
+  s.timeLimit = v["time_limit"];
+}
+
 PlotSampler::PlotSampler(const Model& model, const PlotSettings& s, const std::string& context)
     : settings_(s) {
   if (!s.wholeState && s.axes.size() != 2 && s.axes.size() != 3)

@@ -3,6 +3,7 @@
 // last point, up to a number of points. Sampling in time uses the dense output (exact times).
 #pragma once
 #include "dynamics/core/Model.h"
+#include "dynamics/core/ParameterTable.h"
 #include "dynamics/integrators/Integrator.h"
 #include "dynamics/tools/ToolControl.h"
 
@@ -21,6 +22,13 @@ struct PlotSettings {
   /// the apex filter); the axes are then not used.
   bool wholeState = false;
 };
+
+/// The numbers and choices of the "plot" scene section, declared once: period, max_points, time_limit, and
+/// the window's hold_proportions (no/yes) and point_type (small/middle/big). The observables (x, y, z,
+/// condition) and the ranges (x_min ... z_max) are read beside the table.
+const ParameterTable& plotTable();
+/// Sets the period, point limit and time limit from the table's values.
+void applyPlotTable(const ParameterValues& v, PlotSettings& s);
 
 /// The filter's rule applied to states as they come (a running trajectory feeding an open plot window):
 /// a state is kept when the condition has moved by the period since the last kept one, up to maxPoints.

@@ -1,7 +1,9 @@
 #include "dynamics/tools/ToolRegistry.h"
 
 #include "dynamics/core/Errors.h"
+#include "dynamics/tools/FourierSpectrum.h"
 #include "dynamics/tools/Megno.h"
+#include "dynamics/tools/PlotFilter.h"
 #include "dynamics/tools/PoincareMap.h"
 #include "dynamics/tools/ToolSettings.h"
 
@@ -9,7 +11,8 @@ namespace rv {
 
 const std::vector<ToolSection>& toolSections() {
   static const std::vector<ToolSection> s{
-      {"poincare", "Poincaré map", &poincareTable()},
+      {"poincare", "Poincaré map", &poincareTable(), "section"},
+      {"spectrum", "Fourier spectrum", &spectrumTable(), "function"},
       {"fixedpoint", "Fixed point finding", &fixedPointTable()},
       {"continuation", "Fixed point continuation", &continuationTable()},
       {"separatrix", "Separatrix", &separatrixTable()},
@@ -17,6 +20,7 @@ const std::vector<ToolSection>& toolSections() {
       {"grid", "Surface |Map(x) - x| and region of allowed motion", &gridTable()},
       {"lyapunov", "Lyapunov exponents", &lyapunovTable()},
       {"megno", "MEGNO and FLI", &megnoTable()},
+      {"plot", "2D / 3D plot", &plotTable()},
   };
   return s;
 }
@@ -37,6 +41,7 @@ const ToolRegistry& ToolRegistry::builtin() {
                         "map window",
          .section = "poincare",
          .command = "poincare",
+         .commandHelp = "points of the Poincare map of a scene's trajectory, as CSV",
          .chartView = "poincare",
          .outputs = {{"<map coordinates>", "the point on the section"},
                      {"t", "the time of the crossing"},
@@ -49,6 +54,7 @@ const ToolRegistry& ToolRegistry::builtin() {
          .description = "of spectrum.function along the trajectory (a chart window)",
          .section = "spectrum",
          .command = "spectrum",
+         .commandHelp = "Fourier spectrum of an observable along a scene's trajectory",
          .chartView = "spectrum",
          .outputs = {{"frequency", "CSV column"},
                      {"amplitude", "CSV column"},
@@ -61,6 +67,7 @@ const ToolRegistry& ToolRegistry::builtin() {
          .description = "the spectrum of exponents against time (a chart window)",
          .section = "lyapunov",
          .command = "lyapunov",
+         .commandHelp = "Lyapunov exponents along a scene's trajectory (Benettin)",
          .chartView = "lyapunov",
          .outputs = {{"exponents", "the estimates at the end, largest first"},
                      {"sum", "their sum (0 for a measure-preserving flow)"},
@@ -76,6 +83,7 @@ const ToolRegistry& ToolRegistry::builtin() {
              "maps, ~ lambda t / 2 on chaotic orbits (a chart window)",
          .section = "megno",
          .command = "megno",
+         .commandHelp = "the chaos indicators MEGNO and FLI along a scene's trajectory",
          .chartView = "megno",
          .outputs = {{"megno", "<Y>, the time-averaged MEGNO at the end"},
                      {"megno_rate", "<Y> / (t/2): tends to the largest Lyapunov exponent on chaotic orbits"},
@@ -108,6 +116,7 @@ const ToolRegistry& ToolRegistry::builtin() {
          .description = "Newton (or gradient) search from fixedpoint.guess; its type and multipliers",
          .section = "fixedpoint",
          .command = "fixedpoint",
+         .commandHelp = "a fixed point of order n of the scene's map, its multipliers and type",
          .outputs = {{"point", "the fixed point"},
                      {"type", "elliptic, hyperbolic, ..."},
                      {"multipliers", "the eigenvalues of D(Map^n)"},
@@ -121,6 +130,8 @@ const ToolRegistry& ToolRegistry::builtin() {
          .description = "the family of the fixed point in continuation.parameter up to continuation.to",
          .section = "continuation",
          .command = "continue",
+         .commandHelp =
+             "continue a fixed point in a parameter: the family, its multipliers and where its type changes",
          .chartView = "continuation",
          .outputs = {{"parameter", "the parameter's value"},
                      {"<map coordinates>", "the fixed point"},
@@ -143,6 +154,7 @@ const ToolRegistry& ToolRegistry::builtin() {
          .description = "the branches of the invariant manifolds of a hyperbolic point",
          .section = "separatrix",
          .command = "separatrix",
+         .commandHelp = "the separatrices of a hyperbolic fixed point of a 2D map, as CSV",
          .outputs = {{"branch", "1..4"}, {"<map coordinates>", "the points of the branch"}},
          .reference = "manual §2.3.6",
          .computation =
@@ -153,6 +165,7 @@ const ToolRegistry& ToolRegistry::builtin() {
          .description = "period doublings along the continuation",
          .section = "bifurcation_tree",
          .command = "bifurcation-tree",
+         .commandHelp = "the period-doubling cascade of an elliptic fixed point",
          .outputs = {{"level, order, parameter", "each doubling"},
                      {"ratios", "JSON: the Feigenbaum ratios"},
                      {"end",
@@ -167,6 +180,7 @@ const ToolRegistry& ToolRegistry::builtin() {
          .description = "on the grid section's rectangle (a chart window)",
          .section = "grid",
          .command = "surface",
+         .commandHelp = "the surface z = |Map^n(x) - x| on a grid, as CSV",
          .chartView = "surface",
          .outputs = {{"<grid coordinates>", "the cell"}, {"value", "|Map(x) - x|"}},
          .reference = "manual §2.3.8",
@@ -177,6 +191,7 @@ const ToolRegistry& ToolRegistry::builtin() {
          .description = "on the grid section's rectangle (a chart window)",
          .section = "grid",
          .command = "ram",
+         .commandHelp = "the region of allowed motion on a grid of the map's plane, as CSV",
          .chartView = "ram",
          .outputs = {{"<grid coordinates>", "the cell"}, {"value", "1 where motion is allowed"}},
          .reference = "manual §2.3.9",
@@ -186,6 +201,7 @@ const ToolRegistry& ToolRegistry::builtin() {
          .title = "Topological analysis",
          .description = "the bifurcation diagram on the plane of first integrals",
          .command = "diagram",
+         .commandHelp = "a bifurcation diagram on the plane of first integrals, with the scene's point",
          .chartView = "bifurcation",
          .outputs = {{"branch, parameter", "the curve and its parameter"},
                      {"<the diagram's axes>", "the point"}},
@@ -199,6 +215,8 @@ const ToolRegistry& ToolRegistry::builtin() {
              "two model parameters, scene keys or initial map points; on threads or MPI ranks "
              "(docs/sweeps.md)",
          .command = "sweep",
+         .commandHelp = "a chart of regimes: a tool's number over a grid of parameters or initial points "
+                        "(docs/sweeps.md); runs on threads, or on ranks under mpirun",
          .outputs = {{"<axes>", "the grid point's axis values (the first axis fastest)"},
                      {"<quantity columns>", "the quantity: one column, or several (orbit, reversal, ...)"},
                      {"seconds", "what the point cost"},

@@ -17,6 +17,9 @@ struct ToolSection {
   std::string key;   ///< scene section, e.g. "fixedpoint"
   std::string title; ///< as in the manual's menu
   const ParameterTable* table;
+  /// The section's text setting that names one of the model's observables ("section" of the Poincare map,
+  /// "function" of the spectrum), chosen in the GUI beside the table; "" when it has none.
+  std::string observableKey = {};
 };
 
 /// One field of a tool's output (a CSV column or a JSON field).
@@ -33,6 +36,7 @@ struct ToolEntry {
   std::string description; ///< one line: what it computes and where it shows
   std::string section;     ///< the scene section of its settings ("" when it has none of its own)
   std::string command;     ///< the `rollviz` subcommand that runs it headless ("" when none)
+  std::string commandHelp; ///< what that subcommand writes (its `--help` line)
   std::string chartView;   ///< the `rollviz chart --view` that draws it ("" when none)
   std::vector<ToolOutput> outputs;
   std::string reference;   ///< the paper behind it

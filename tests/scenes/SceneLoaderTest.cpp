@@ -239,5 +239,43 @@ TEST(SceneLoader, LyapunovAndMegnoSettingsComeFromTheirTables) {
   EXPECT_NE(errorOf(ball(), {parseOverride("megno.nonsense=1")}).find("megno.nonsense"), std::string::npos);
 }
 
+TEST(SceneLoader, SpectrumAndPlotSettingsComeFromTheirTablesBesideTheirTextKeys) {
+  json j = ball();
+  j["spectrum"] = {{"function", "M1"}, {"samples", 512}, {"peaks", 3}};
+  j["plot"] = {
+      {"x", "t"},          {"y", "M1"},  {"z", "M2"},   {"condition", "t"},    {"period", 0.5},
+      {"max_points", 300}, {"x_min", 0}, {"x_max", 10}, {"point_type", "big"}, {"hold_proportions", true}};
+  const Scene s = sceneFromJson(j, "s.json");
+  EXPECT_EQ(s.spectrum.function, "M1");
+  EXPECT_EQ(s.spectrum.samples, 512);
+  EXPECT_EQ(s.spectrum.peaks, 3);
+  EXPECT_EQ(s.plot.settings.axes, (std::vector<std::string>{"t", "M1", "M2"}));
+  EXPECT_EQ(s.plot.settings.period, 0.5);
+  EXPECT_EQ(s.plot.settings.maxPoints, 300);
+  EXPECT_EQ(s.plot.chart.range[0], 0.0);
+  EXPECT_EQ(s.plot.chart.range[1], 10.0);
+  EXPECT_FALSE(s.plot.chart.range[2]);
+  EXPECT_EQ(s.plot.chart.pointSize, 7.0f);
+  EXPECT_TRUE(s.plot.chart.holdProportions);
+  // the defaults are the structs' own (one declaration)
+  const Scene d = sceneFromJson(ball(), "s.json");
+  EXPECT_EQ(d.spectrum.samples, SpectrumSettings{}.samples);
+  EXPECT_EQ(d.plot.settings.period, PlotSettings{}.period);
+  EXPECT_EQ(d.plot.chart.pointSize, PlotChartOptions{}.pointSize);
+  // bad values are named by their path; an unknown key is told the section's keys, text keys included
+  const auto bad = [](const char* set, const char* expected) {
+    const std::string e = errorOf(ball(), {parseOverride(set)});
+    EXPECT_NE(e.find(expected), std::string::npos) << set << ": " << e;
+  };
+  bad("spectrum.samples=4", "s.json:spectrum.samples");
+  bad("plot.point_type=\"huge\"", "s.json:plot.point_type");
+  bad("plot.nonsense=1", "known: period max_points time_limit hold_proportions point_type x y z condition");
+  bad("spectrum.nonsense=1", "function");
+  bad("plot.x=3", "s.json:plot.x: expected");
+  json r = ball();
+  r["plot"] = {{"y_min", 2}, {"y_max", 1}};
+  EXPECT_NE(errorOf(r).find("s.json:plot.y_max: must exceed y_min"), std::string::npos) << errorOf(r);
+}
+
 } // namespace
 } // namespace rv
