@@ -21,6 +21,7 @@ void ChartTask::edit(const nlohmann::json& document) {
   // parsed and validated once, now (bad input is reported to whoever edits); every run computes from it
   scene_ = sceneFromJson(document, source_);
   describe_ = scene_.runSpec().describe();
+  progress_.reset(); // computed from the old scene
 }
 
 bool ChartTask::edit(const TaskEdit& e) {
@@ -31,11 +32,12 @@ bool ChartTask::edit(const TaskEdit& e) {
 bool ChartTask::run(const ToolControl& control) {
   std::shared_ptr<Chart> chart;
   try {
-    chart = sceneChart(scene_, view_, control, 0, diagram_);
+    chart = sceneChart(scene_, view_, control, 0, diagram_, &progress_);
   } catch (const Stopped&) {
     return false;
   }
   const bool stopped = control.stopRequested();
+  if (!stopped) progress_.reset(); // done: a later run computes afresh
   std::lock_guard lock(mutex_);
   chart_ = std::move(chart);
   if (!stopped) ++completed_;
@@ -43,6 +45,7 @@ bool ChartTask::run(const ToolControl& control) {
 }
 
 void ChartTask::reset() {
+  progress_.reset();
   std::lock_guard lock(mutex_);
   chart_.reset();
 }

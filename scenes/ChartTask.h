@@ -1,12 +1,14 @@
 // ChartTask.h -- a chart view of a scene (SceneCharts) computed as a Task, so that every long computation
 // runs as a Job in the job tree: listed in the tool manager with its progress, stopped, continued, edited and
-// deleted there like the map's tools. A chart is computed whole: after a stop, Continue computes it again
-// from the start (the same result: every computation here is deterministic); what was computed before a stop
-// is kept as a partial chart where the view can draw one.
+// deleted there like the map's tools. After a stop, Continue goes on from the stop point where the view keeps
+// its computation (SceneCharts.h ChartProgress: the Poincare map, Map3D, Lyapunov, MEGNO, surface, RAM) and
+// computes the rest again from the start (the same result: every computation here is deterministic); what
+// was computed before a stop is kept as a partial chart where the view can draw one.
 #pragma once
 #include "dynamics/jobs/Task.h"
 #include "render/charts/Chart.h"
 #include "scenes/Scene.h"
+#include "scenes/SceneCharts.h"
 
 #include <memory>
 #include <mutex>
@@ -46,6 +48,7 @@ private:
       scene_; ///< parsed once per edit; read by run() only while the job runs, changed only while it does not
   mutable std::mutex mutex_;
   std::shared_ptr<Chart> chart_;
+  std::unique_ptr<ChartProgress> progress_; ///< a stopped resumable view's computation; used by run() only
   int completed_ = 0;
 };
 

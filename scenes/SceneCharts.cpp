@@ -23,16 +23,82 @@ std::string chartTitle(const std::string& view) {
 
 namespace {
 
-std::unique_ptr<PoincareChart> gridChart(const Scene& scene, MapGrid::Kind kind, const ToolControl& control) {
-  const SceneMap sm(Scene(scene), {}, false);
+// the chart's plane of the grid section (the 2D section of a 3D map)
+GridSettings chartGridSettings(const Scene& scene) {
   const ParameterValues& gv = scene.tool("grid");
   GridSettings g = gridSettings(gv);
-  g.threeD = false; // a chart is a plane (the 2D section of a 3D map)
+  g.threeD = false;
   g.axes[0].min = gv["x_min"], g.axes[0].max = gv["x_max"];
   g.axes[1].min = gv["y_min"], g.axes[1].max = gv["y_max"];
-  const ReturnMap map = sm.map();
-  MapGrid grid(map, kind, g);
-  grid.run(control);
+  return g;
+}
+
+// A computation kept between the runs of a chart's job (ChartProgress): its objects and what it has drawn.
+struct GridProgress final : ChartProgress {
+  GridProgress(const Scene& scene, MapGrid::Kind kind)
+      : sm(Scene(scene), {}, false), map(sm.map()), grid(map, kind, chartGridSettings(scene)) {}
+  SceneMap sm;
+  ReturnMap map;
+  MapGrid grid;
+};
+
+struct LyapunovProgress final : ChartProgress {
+  explicit LyapunovProgress(const Scene& scene)
+      : model(scene.model), spec(scene.runSpec()),
+        run(
+            *model, [this] { return spec.makeIntegrator(*model); }, scene.initialState, scene.lyapunov) {}
+  std::shared_ptr<const Model> model;
+  RunSpec spec;
+  LyapunovRun run;
+  std::vector<double> t;
+  std::vector<std::vector<double>> exponents;
+};
+
+struct MegnoProgress final : ChartProgress {
+  explicit MegnoProgress(const Scene& scene)
+      : model(scene.model), spec(scene.runSpec()),
+        run(
+            *model, [this] { return spec.makeIntegrator(*model); }, scene.initialState,
+            megnoSettings(scene.tool("megno"))) {}
+  std::shared_ptr<const Model> model;
+  RunSpec spec;
+  MegnoRun run;
+  std::vector<double> t, y;
+};
+
+struct MapProgress final : ChartProgress {
+  MapProgress(const Scene& scene, long points) : model(scene.model), map(scenePoincareMap(scene, points)) {}
+  std::shared_ptr<const Model> model;
+  std::unique_ptr<PoincareMap> map;
+  std::array<std::vector<double>, 3> c;
+};
+
+// One builder per view: what it computes and how it is drawn. The table below is the only place a view's name
+// is matched; the menu order is the table's.
+struct ChartRequest {
+  long points;
+  std::string diagram;
+  std::unique_ptr<ChartProgress>* progress; ///< where a resumable view keeps its computation, or nullptr
+};
+
+// The computation of a resumable view: the one kept from the last run when there is one (a stopped chart goes
+// on), else a new one, kept for the next run when the caller keeps progress.
+template <class P, class... Args>
+P& progressOf(const ChartRequest& r, std::unique_ptr<ChartProgress>& local, Args&&... args) {
+  std::unique_ptr<ChartProgress>& slot = r.progress ? *r.progress : local;
+  if (!dynamic_cast<P*>(slot.get())) slot = std::make_unique<P>(std::forward<Args>(args)...);
+  return static_cast<P&>(*slot);
+}
+
+std::unique_ptr<PoincareChart> gridChart(const Scene& scene, const ChartRequest& request, MapGrid::Kind kind,
+                                         const ToolControl& control) {
+  std::unique_ptr<ChartProgress> local;
+  auto& progress = progressOf<GridProgress>(request, local, scene, kind);
+  progress.grid.run(control);
+  const GridSettings& g = progress.grid.settings();
+  const ReturnMap& map = progress.map;
+  const SceneMap& sm = progress.sm;
+  const MapGrid& grid = progress.grid;
   const auto& names = map.coordinateNames();
   auto chart = std::make_unique<PoincareChart>(names[0], names[1]);
   const GridValues& r = grid.result();
@@ -64,22 +130,18 @@ std::unique_ptr<PoincareChart> gridChart(const Scene& scene, MapGrid::Kind kind,
   return chart;
 }
 
-// One builder per view: what it computes and how it is drawn. The table below is the only place a view's name
-// is matched; the menu order is the table's.
-struct ChartRequest {
-  long points;
-  std::string diagram;
-};
 using ChartBuilder = std::unique_ptr<Chart> (*)(const Scene&, const ChartRequest&, const ToolControl&);
 
 // a 3D map's three coordinates; a 2D map's points on the energy level, in the first three state variables
 std::unique_ptr<Chart> map3dChart(const Scene& scene, const ChartRequest& r, const ToolControl& control) {
-  const auto map = scenePoincareMap(scene, r.points);
+  std::unique_ptr<ChartProgress> local;
+  auto& progress = progressOf<MapProgress>(r, local, scene, r.points);
+  const auto& map = progress.map;
   const bool threeD = map->coordinateNames().size() >= 3;
   const auto& state = scene.model->info().stateNames;
   if (!threeD && state.size() < 3)
     throw InputError("--view map3d: " + scene.model->info().id + " has no 3D map");
-  std::array<std::vector<double>, 3> c;
+  auto& c = progress.c;
   while (auto p = map->next(control))
     for (int i = 0; i < 3; ++i)
       c[i].push_back(threeD ? p->coordinates[i] : map->lastState()[i]);
@@ -103,8 +165,11 @@ std::unique_ptr<Chart> plotChart(const Scene& scene, const ChartRequest&, const 
 }
 
 std::unique_ptr<Chart> poincareChart(const Scene& scene, const ChartRequest& r, const ToolControl& control) {
-  const auto map = scenePoincareMap(scene, r.points);
-  std::vector<double> x, y;
+  std::unique_ptr<ChartProgress> local;
+  auto& progress = progressOf<MapProgress>(r, local, scene, r.points);
+  const auto& map = progress.map;
+  auto& x = progress.c[0];
+  auto& y = progress.c[1];
   while (auto p = map->next(control)) {
     x.push_back(p->coordinates.at(0));
     y.push_back(p->coordinates.size() > 1 ? p->coordinates[1] : p->time);
@@ -178,13 +243,12 @@ std::unique_ptr<Chart> spectrumChart(const Scene& scene, const ChartRequest&, co
   return chart;
 }
 
-std::unique_ptr<Chart> lyapunovChart(const Scene& scene, const ChartRequest&, const ToolControl& control) {
-  const RunSpec spec = scene.runSpec();
-  const Model& model = *scene.model;
-  std::vector<double> t;
-  std::vector<std::vector<double>> ex;
-  lyapunovExponents(
-      model, [&] { return spec.makeIntegrator(model); }, scene.initialState, scene.lyapunov,
+std::unique_ptr<Chart> lyapunovChart(const Scene& scene, const ChartRequest& r, const ToolControl& control) {
+  std::unique_ptr<ChartProgress> local;
+  auto& progress = progressOf<LyapunovProgress>(r, local, scene);
+  auto& t = progress.t;
+  auto& ex = progress.exponents;
+  progress.run.run(
       [&](const LyapunovEstimate& e) {
         t.push_back(e.time);
         ex.resize(e.exponents.size());
@@ -197,25 +261,22 @@ std::unique_ptr<Chart> lyapunovChart(const Scene& scene, const ChartRequest&, co
   return chart;
 }
 
-std::unique_ptr<Chart> megnoChart(const Scene& scene, const ChartRequest&, const ToolControl& control) {
-  const RunSpec spec = scene.runSpec();
-  const Model& model = *scene.model;
-  std::vector<double> t, y;
-  megno(
-      model, [&] { return spec.makeIntegrator(model); }, scene.initialState,
-      megnoSettings(scene.tool("megno")),
-      [&](const MegnoEstimate& e) { t.push_back(e.time), y.push_back(e.megno); }, control);
+std::unique_ptr<Chart> megnoChart(const Scene& scene, const ChartRequest& r, const ToolControl& control) {
+  std::unique_ptr<ChartProgress> local;
+  auto& progress = progressOf<MegnoProgress>(r, local, scene);
+  progress.run.run(
+      [&](const MegnoEstimate& e) { progress.t.push_back(e.time), progress.y.push_back(e.megno); }, control);
   auto chart = std::make_unique<PoincareChart>("t", "MEGNO <Y>");
-  drawCurves(*chart, t, {y});
+  drawCurves(*chart, progress.t, {progress.y});
   return chart;
 }
 
-std::unique_ptr<Chart> surfaceChart(const Scene& scene, const ChartRequest&, const ToolControl& control) {
-  return gridChart(scene, MapGrid::Kind::Surface, control);
+std::unique_ptr<Chart> surfaceChart(const Scene& scene, const ChartRequest& r, const ToolControl& control) {
+  return gridChart(scene, r, MapGrid::Kind::Surface, control);
 }
 
-std::unique_ptr<Chart> ramChart(const Scene& scene, const ChartRequest&, const ToolControl& control) {
-  return gridChart(scene, MapGrid::Kind::AllowedRegion, control);
+std::unique_ptr<Chart> ramChart(const Scene& scene, const ChartRequest& r, const ToolControl& control) {
+  return gridChart(scene, r, MapGrid::Kind::AllowedRegion, control);
 }
 
 const std::vector<std::pair<std::string, ChartBuilder>>& chartBuilders() {
@@ -246,9 +307,10 @@ const std::vector<std::string>& chartViews() {
 }
 
 std::unique_ptr<Chart> sceneChart(const Scene& scene, const std::string& view, const ToolControl& control,
-                                  long points, const std::string& diagram) {
+                                  long points, const std::string& diagram,
+                                  std::unique_ptr<ChartProgress>* progress) {
   for (const auto& [name, build] : chartBuilders())
-    if (name == view) return build(scene, {points, diagram}, control);
+    if (name == view) return build(scene, {points, diagram, progress}, control);
   std::string known;
   for (const auto& v : chartViews())
     known += " " + v;

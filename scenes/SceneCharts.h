@@ -21,10 +21,21 @@ const std::vector<std::string>& chartViews();
 /// A view's title for menus: the title of the registered tool it draws (the view's name when none).
 std::string chartTitle(const std::string& view);
 
+/// What a chart's computation keeps between the runs of its job, so that a stopped chart goes on from where
+/// it stopped: the Poincare map and Map3D (the map and its points), the Lyapunov exponents and MEGNO (the run
+/// and its curves), the surface and the RAM (the grid's rows). The other views compute again.
+class ChartProgress {
+public:
+  virtual ~ChartProgress() = default;
+};
+
 /// Computes what `view` shows for the scene and draws it. `points` > 0 overrides poincare.points; `diagram`
 /// picks the bifurcation view's diagram (empty: the problem's first). Throws InputError for an unknown view
-/// or one the problem does not have; Stopped results are drawn as far as they got.
+/// or one the problem does not have; Stopped results are drawn as far as they got. With `progress`, a
+/// resumable view keeps its computation there and, called again with the same scene after a stop, goes on
+/// from it (the caller drops it when the scene changes).
 std::unique_ptr<Chart> sceneChart(const Scene& scene, const std::string& view, const ToolControl& control,
-                                  long points = 0, const std::string& diagram = "");
+                                  long points = 0, const std::string& diagram = "",
+                                  std::unique_ptr<ChartProgress>* progress = nullptr);
 
 } // namespace rv

@@ -8,16 +8,23 @@
 #include "app/gui/QtVtkWidget.h"
 #include "dynamics/core/Errors.h"
 #include "dynamics/jobs/FixedPointTasks.h"
+#include "dynamics/jobs/MegnoTask.h"
 #include "dynamics/jobs/PoincareTask.h"
 #include "dynamics/tools/ToolSettings.h"
 #include "render/charts/Chart3D.h"
 #include "scenes/SceneLoader.h"
 #include "scenes/SceneTools.h"
 
+#include <QCheckBox>
+#include <QColor>
 #include <QComboBox>
+#include <QHBoxLayout>
+#include <QLabel>
 #include <QMouseEvent>
 #include <QVBoxLayout>
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 namespace rv {
 
@@ -33,7 +40,32 @@ MapPanel::MapPanel(QWidget* parent) : QWidget(parent) {
       "searches a fixed point; the wheel zooms)");
   connect(modeBox_, &QComboBox::currentIndexChanged, this,
           [this](int i) { clickMode_ = static_cast<ClickMode>(i); });
+  megnoBox_ = new QCheckBox("Colour by MEGNO", this);
+  megnoBox_->setObjectName("colour_by_megno");
+  megnoBox_->setToolTip(
+      "colour each trajectory by its chaos indicator <Y> (MEGNO, the scene's megno settings; "
+      "a job under the trajectory's): about 2 on a torus, growing on chaotic orbits");
+  connect(megnoBox_, &QCheckBox::toggled, this, [this](bool on) { setColourByMegno(on); });
+  // the colour scale, shown while colouring: three swatches of megnoColour
+  QString legend = "&lt;Y&gt;:";
+  for (const double y : {2.0, 5.0, 8.0}) {
+    const Rgb c = megnoColour(y);
+    legend += QString(" <span style='color:%1'>&#9632;</span> %2")
+                  .arg(QColor::fromRgbF(static_cast<float>(c[0]), static_cast<float>(c[1]),
+                                        static_cast<float>(c[2]))
+                           .name())
+                  .arg(y == 2   ? "2 (torus)"
+                       : y == 8 ? "8+ (chaos)"
+                                : "5");
+  }
+  megnoLegend_ = new QLabel(legend, this);
+  megnoLegend_->setObjectName("megno_legend");
+  megnoLegend_->setVisible(false);
   layout->addWidget(modeBox_);
+  auto* bar = new QHBoxLayout; // a row of its own: the panel is narrow
+  bar->addWidget(megnoBox_);
+  bar->addWidget(megnoLegend_, 1);
+  layout->addLayout(bar);
   layout->addWidget(view_, 1);
   view_->installEventFilter(this);
   setMinimumSize(320, 320);
@@ -88,6 +120,7 @@ void MapPanel::start(const Eigen::VectorXd& state) {
   const int plot = chart_->addSeries({}, {}, colour);
   series_.push_back({&job, raw, {}, {}, {}, plot, colour});
   feedPlots(series_.back());
+  if (colourByMegno_) startMegno(series_.back());
   chart_->select(plot);
   job.start();
 }
@@ -442,6 +475,17 @@ void MapPanel::drain() {
       emit message(QString::fromStdString("fixed point: " + s.job->error()));
     }
   }
+  for (auto& s : series_) { // a MEGNO job that has ended colours its trajectory
+    if (!s.megnoJob || s.megnoValue || s.megnoJob->running()) continue;
+    if (s.megnoJob->status() == Job::Status::Finished) {
+      s.megnoValue = s.megno->result().last.megno;
+      applyColour(s);
+      changed = true;
+    } else if (s.megnoJob->status() == Job::Status::Failed) {
+      emit message(QString::fromStdString("MEGNO: " + s.megnoJob->error()));
+      s.megnoValue = std::numeric_limits<double>::quiet_NaN(); // reported once; drawn in its own colour
+    }
+  }
   std::vector<MapPoint> batch;
   for (auto& s : series_) {
     if (s.task->points().take(batch) == 0) continue;
@@ -468,6 +512,11 @@ void MapPanel::removeJob(Job& job) {
     for (const Job* c : jobs_.children(*gone[i]))
       gone.push_back(c);
   const auto isGone = [&](const Job* j) { return std::find(gone.begin(), gone.end(), j) != gone.end(); };
+  for (auto& s : series_)
+    if (s.megnoJob && isGone(s.megnoJob) && !isGone(s.job)) { // its MEGNO alone: back to its own colour
+      s.megnoJob = nullptr, s.megno = nullptr, s.megnoValue.reset();
+      chart_->setColor(s.plot, s.colour);
+    }
   for (auto it = series_.begin(); it != series_.end();)
     if (isGone(it->job)) {
       chart_->setSeries(it->plot, {}, {});
@@ -599,13 +648,58 @@ bool MapPanel::setJobColor(int id, const Rgb& color) {
   for (auto& s : series_)
     if (s.job->id() == id) {
       s.colour = color;
-      chart_->setColor(s.plot, color);
+      applyColour(s); // its own colour shows unless it is coloured by its MEGNO
       for (PlotWindow* p : plotWindows())
         p->setColor(id, color);
       view_->update();
       return true;
     }
   return false;
+}
+
+Rgb MapPanel::megnoColour(double megno) {
+  // 2 and below blue (hue 240), 8 and above red (hue 0); NaN (a failed job) falls to blue
+  const double t = std::clamp((megno - 2) / 6, 0.0, 1.0);
+  const QColor c = QColor::fromHsvF(static_cast<float>(2.0 / 3.0 * (1 - t)), 0.85f, 0.9f);
+  return {c.redF(), c.greenF(), c.blueF()};
+}
+
+void MapPanel::startMegno(Series& s) {
+  if (s.megnoJob) return;
+  auto task = std::make_unique<MegnoTask>(s.task->spec(), megnoSettings(scene_->tool("megno")));
+  s.megno = task.get();
+  s.megnoJob = &jobs_.add(std::move(task), s.job);
+  s.megnoJob->start();
+}
+
+void MapPanel::applyColour(const Series& s) {
+  const Rgb c = shownColour(s.job->id());
+  chart_->setColor(s.plot, c);
+  view_->update();
+}
+
+void MapPanel::setColourByMegno(bool on) {
+  colourByMegno_ = on;
+  if (megnoBox_->isChecked() != on) megnoBox_->setChecked(on);
+  megnoLegend_->setVisible(on);
+  for (auto& s : series_) {
+    if (on) startMegno(s);
+    applyColour(s);
+  }
+}
+
+std::optional<double> MapPanel::trajectoryMegno(int id) const {
+  for (const auto& s : series_)
+    if (s.job->id() == id) return s.megnoValue;
+  return std::nullopt;
+}
+
+Rgb MapPanel::shownColour(int id) const {
+  for (const auto& s : series_)
+    if (s.job->id() == id)
+      return colourByMegno_ && s.megnoValue && !std::isnan(*s.megnoValue) ? megnoColour(*s.megnoValue)
+                                                                          : s.colour;
+  return {0, 0, 0};
 }
 
 bool MapPanel::setJobRange(int id, long first, long last) {

@@ -3,7 +3,10 @@
 // new trajectory there (the point is completed through the scene's energy and other integrals); in the "fixed
 // points" mode (or Shift+click) it searches a fixed point of the map from there (manual §2.3.4: the search
 // path is drawn, the point, its multipliers and type reported); in the "pan / zoom" mode a drag moves the
-// chart. The jobs run on their own threads; this panel only draws.
+// chart. "Colour by MEGNO" computes the chaos indicator <Y> of each trajectory (a MEGNO job under its
+// trajectory's, with the scene's megno settings) and colours its points by it: blue near 2 (a torus), red
+// from 8 up (chaos), hue between; 0 (a stable periodic orbit of a map) is blue too. The jobs run on their own
+// threads; this panel only draws.
 #pragma once
 #include "app/gui/ChartWindow.h"
 #include "dynamics/jobs/JobTree.h"
@@ -20,7 +23,9 @@
 #include <optional>
 #include <vector>
 
+class QCheckBox;
 class QComboBox;
+class QLabel;
 
 namespace rv {
 
@@ -29,6 +34,7 @@ class MultipliersWindow;
 class PlotWindow;
 class PoincareTask;
 class FixedPointTask;
+class MegnoTask;
 
 class MapPanel : public QWidget {
   Q_OBJECT
@@ -87,6 +93,16 @@ public:
   bool setJobRange(int id, long first, long last);
   /// The points of trajectory `id` shown now (tests).
   long shownPoints(int id) const;
+  /// Colours every trajectory, those running and those to come, by its MEGNO <Y> (a MEGNO job each, under
+  /// the trajectory's job, started once); off gives back their own colours.
+  void setColourByMegno(bool on);
+  bool colourByMegno() const { return colourByMegno_; }
+  /// The MEGNO <Y> of trajectory `id` once its job has finished; nothing before, or for no trajectory.
+  std::optional<double> trajectoryMegno(int id) const;
+  /// The colour trajectory `id` is drawn in now (its own, or its MEGNO's); black for no trajectory.
+  Rgb shownColour(int id) const;
+  /// The colour of a MEGNO <Y>: hue from blue (2 and below) to red (8 and above).
+  static Rgb megnoColour(double megno);
   /// Opens (or shows) the Map3D window of a 3D map (manual §2.1: the full map beside its projection), fed
   /// with the trajectories' points as they come; nullptr (with a message) for a 2D map.
   QWidget* openMap3D();
@@ -134,7 +150,16 @@ private:
     int plot;
     Rgb colour;
     long first = 1, last = 0; ///< the range shown (Set range)
+    Job* megnoJob = nullptr;  ///< the MEGNO job colouring it (under its job), once started
+    MegnoTask* megno = nullptr;
+    std::optional<double> megnoValue; ///< <Y> when that job has finished
   };
+  void startMegno(Series& s);
+  /// Draws a trajectory in its own colour or its MEGNO's.
+  void applyColour(const Series& s);
+  bool colourByMegno_ = false;
+  QCheckBox* megnoBox_;
+  QLabel* megnoLegend_;
   /// Gives the trajectory's job a tap of each open plot filter.
   void feedPlots(const Series& s);
   std::vector<QPointer<PlotWindow>> plots_;

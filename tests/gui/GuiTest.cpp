@@ -45,6 +45,24 @@ private slots:
     QCOMPARE(accuracy->text(), QString("1e-15"));
   }
 
+  // the observable a section names (poincare.section, spectrum.function) is chosen beside its table's form
+  // and written into the document only when changed
+  void theObservableOfASectionIsChosenBesideItsForm() {
+    const Scene scene = loadScene(defaultScenePath("chaplygin_ball"));
+    ControlPanel panel;
+    panel.setScene(scene);
+    auto* function = panel.findChild<QComboBox*>("spectrum_function");
+    auto* section = panel.findChild<QComboBox*>("poincare_section");
+    QVERIFY(function && section);
+    QVERIFY(function->findText(QString::fromStdString(scene.model->observables().back().id)) >= 0);
+    QVERIFY(!panel.editedDocument().contains("spectrum"));
+    function->setCurrentText(QString::fromStdString(scene.model->observables().back().id));
+    QCOMPARE(panel.editedDocument()["spectrum"]["function"].get<std::string>(),
+             scene.model->observables().back().id);
+    QCOMPARE(sceneFromJson(panel.editedDocument(), "edited.json").spectrum.function,
+             scene.model->observables().back().id);
+  }
+
   void typingOutsideTheRangeSaysSoNextToTheField() {
     const Scene scene = loadScene(defaultScenePath("chaplygin_ball"));
     ControlPanel panel;

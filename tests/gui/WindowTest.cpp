@@ -18,6 +18,7 @@
 #include "dynamics/jobs/PoincareTask.h"
 #include "scenes/SceneLoader.h"
 
+#include <QCheckBox>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
 #include <QPushButton>
@@ -520,6 +521,47 @@ private slots:
     QCOMPARE(plot2->points(ids.front()), 300L);
     plot2->close();
     plot3->close();
+  }
+
+  // issue 13: the map window colours each trajectory by its MEGNO <Y> (a MEGNO job under the trajectory's).
+  // The standard map at K = 1.5: an orbit of the KAM island around the elliptic point (pi, 0) is
+  // quasi-periodic
+  // (<Y> -> 2, blue); one by the hyperbolic point (0, 0) is chaotic (<Y> ~ lambda N / 2, red).
+  void mapColoursTrajectoriesByMegno() {
+    nlohmann::json doc = loadScene(defaultScenePath("standard_map")).document;
+    doc["parameters"]["K"] = 1.5;
+    doc["initial"] = {{"map", {3.4415926535897931, 0.0}}};
+    doc["megno"] = {{"time", 20000}};
+    QVERIFY(window_->runDocument(doc));
+    MapPanel* map = window_->mapPanel();
+    QVERIFY(map->startAt(0.1, 0.1));
+    std::vector<int> ids;
+    for (Job* j : map->jobs().jobs())
+      if (!j->parent() && dynamic_cast<PoincareTask*>(&j->task())) ids.push_back(j->id());
+    QCOMPARE(ids.size(), std::size_t(2));
+    const Rgb own = map->shownColour(ids[1]);
+    auto* box = map->findChild<QCheckBox*>("colour_by_megno");
+    QVERIFY(box);
+    box->click();
+    QVERIFY(map->colourByMegno());
+    for (int id : ids) // one MEGNO job under each trajectory, listed in the tool manager
+      QCOMPARE(map->jobs().children(*map->jobs().find(id)).size(), std::size_t(1));
+    QTRY_VERIFY_WITH_TIMEOUT(map->trajectoryMegno(ids[0]) && map->trajectoryMegno(ids[1]), 30000);
+    const double torus = *map->trajectoryMegno(ids[0]), chaos = *map->trajectoryMegno(ids[1]);
+    QVERIFY2(std::abs(torus - 2) < 0.1, qPrintable(QString::number(torus)));
+    QVERIFY2(chaos > 50, qPrintable(QString::number(chaos)));
+    const Rgb blue = map->shownColour(ids[0]), red = map->shownColour(ids[1]);
+    QVERIFY(blue == MapPanel::megnoColour(torus) && blue[2] > 2 * blue[0]);
+    QVERIFY(red == MapPanel::megnoColour(chaos) && red[0] > 2 * red[2]);
+    QTest::qWait(200);
+    QVERIFY(keep(map->grab().toImage(), "window_map_megno.png"));
+    // deleting a MEGNO job gives its trajectory back its own colour; so does switching the colouring off
+    map->removeJob(*map->jobs().children(*map->jobs().find(ids[1])).front());
+    QVERIFY(!map->trajectoryMegno(ids[1]));
+    QVERIFY(map->shownColour(ids[1]) == own);
+    box->click();
+    QVERIFY(!map->colourByMegno());
+    QVERIFY(map->shownColour(ids[0]) != blue);
   }
 
   // manual §2.4.3: a running continuation feeds the multipliers filter, a point whenever its parameter moved
