@@ -19,9 +19,10 @@ std::string ChartTask::name() const {
 
 void ChartTask::edit(const nlohmann::json& document) {
   // parsed and validated once, now (bad input is reported to whoever edits); every run computes from it
-  scene_ = sceneFromJson(document, source_);
+  Scene next = sceneFromJson(document, source_); // bad input leaves the task as it was
+  progress_.reset();                             // computed from the old scene: dropped before it goes
+  scene_ = std::move(next);
   describe_ = scene_.runSpec().describe();
-  progress_.reset(); // computed from the old scene
 }
 
 bool ChartTask::edit(const TaskEdit& e) {
