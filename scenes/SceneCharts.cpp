@@ -42,28 +42,18 @@ struct GridProgress final : ChartProgress {
   MapGrid grid;
 };
 
-struct LyapunovProgress final : ChartProgress {
-  explicit LyapunovProgress(const Scene& scene)
+// a run of estimates against time (LyapunovRun, MegnoRun) and the curves drawn of them so far
+template <class Run> struct EstimatesProgress final : ChartProgress {
+  template <class Settings>
+  EstimatesProgress(const Scene& scene, const Settings& settings)
       : model(scene.model), spec(scene.runSpec()),
         run(
-            *model, [this] { return spec.makeIntegrator(*model); }, scene.initialState, scene.lyapunov) {}
+            *model, [this] { return spec.makeIntegrator(*model); }, scene.initialState, settings) {}
   std::shared_ptr<const Model> model;
   RunSpec spec;
-  LyapunovRun run;
+  Run run;
   std::vector<double> t;
-  std::vector<std::vector<double>> exponents;
-};
-
-struct MegnoProgress final : ChartProgress {
-  explicit MegnoProgress(const Scene& scene)
-      : model(scene.model), spec(scene.runSpec()),
-        run(
-            *model, [this] { return spec.makeIntegrator(*model); }, scene.initialState,
-            megnoSettings(scene.tool("megno"))) {}
-  std::shared_ptr<const Model> model;
-  RunSpec spec;
-  MegnoRun run;
-  std::vector<double> t, y;
+  std::vector<std::vector<double>> curves;
 };
 
 struct MapProgress final : ChartProgress {
@@ -245,9 +235,9 @@ std::unique_ptr<Chart> spectrumChart(const Scene& scene, const ChartRequest&, co
 
 std::unique_ptr<Chart> lyapunovChart(const Scene& scene, const ChartRequest& r, const ToolControl& control) {
   std::unique_ptr<ChartProgress> local;
-  auto& progress = progressOf<LyapunovProgress>(r, local, scene);
+  auto& progress = progressOf<EstimatesProgress<LyapunovRun>>(r, local, scene, scene.lyapunov);
   auto& t = progress.t;
-  auto& ex = progress.exponents;
+  auto& ex = progress.curves;
   progress.run.run(
       [&](const LyapunovEstimate& e) {
         t.push_back(e.time);
@@ -263,11 +253,14 @@ std::unique_ptr<Chart> lyapunovChart(const Scene& scene, const ChartRequest& r, 
 
 std::unique_ptr<Chart> megnoChart(const Scene& scene, const ChartRequest& r, const ToolControl& control) {
   std::unique_ptr<ChartProgress> local;
-  auto& progress = progressOf<MegnoProgress>(r, local, scene);
-  progress.run.run(
-      [&](const MegnoEstimate& e) { progress.t.push_back(e.time), progress.y.push_back(e.megno); }, control);
+  auto& progress =
+      progressOf<EstimatesProgress<MegnoRun>>(r, local, scene, megnoSettings(scene.tool("megno")));
+  auto& t = progress.t;
+  auto& y = progress.curves;
+  y.resize(1);
+  progress.run.run([&](const MegnoEstimate& e) { t.push_back(e.time), y[0].push_back(e.megno); }, control);
   auto chart = std::make_unique<PoincareChart>("t", "MEGNO <Y>");
-  drawCurves(*chart, progress.t, {progress.y});
+  drawCurves(*chart, t, y);
   return chart;
 }
 
