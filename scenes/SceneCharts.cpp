@@ -25,11 +25,8 @@ namespace {
 
 // the chart's plane of the grid section (the 2D section of a 3D map)
 GridSettings chartGridSettings(const Scene& scene) {
-  const ParameterValues& gv = scene.tool("grid");
-  GridSettings g = gridSettings(gv);
+  GridSettings g = gridSettings(scene.tool("grid"));
   g.threeD = false;
-  g.axes[0].min = gv["x_min"], g.axes[0].max = gv["x_max"];
-  g.axes[1].min = gv["y_min"], g.axes[1].max = gv["y_max"];
   return g;
 }
 

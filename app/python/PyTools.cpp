@@ -355,10 +355,7 @@ pyb::object bifurcationTree(Call& c) {
 
 pyb::object grid(Call& c, MapGrid::Kind kind) {
   const auto s = sceneMap(c, false);
-  const ParameterValues& gv = s->scene().tool("grid");
-  GridSettings g = gridSettings(gv);
-  g.axes[0].min = gv["x_min"], g.axes[0].max = gv["x_max"];
-  g.axes[1].min = gv["y_min"], g.axes[1].max = gv["y_max"];
+  GridSettings g = gridSettings(s->scene().tool("grid"));
   if (c.has("z_range")) {
     const auto z = c.args["z_range"].cast<std::pair<double, double>>();
     if (!(z.first <= z.second)) throw InputError("z_range: expected (min, max)");

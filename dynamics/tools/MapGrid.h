@@ -6,7 +6,9 @@
 #pragma once
 #include "dynamics/tools/ReturnMap.h"
 
+#include <algorithm>
 #include <array>
+#include <thread>
 
 namespace rv {
 
@@ -17,11 +19,13 @@ struct GridAxis {
   double at(int i) const { return min + i * step; }
 };
 
+/// A grid's settings; a default-constructed one holds the defaults of gridTable() (ToolSettings.h).
 struct GridSettings {
-  std::array<GridAxis, 3> axes; ///< the map coordinates in order; the third only for 3D grids
-  bool threeD = false;          ///< a 3D map on a 3D grid (false: the 2D grid, at z = zValue for 3D maps)
-  double zValue = 0;            ///< the third coordinate of a 2D section of a 3D map
-  int threads = 2;
+  /// the map coordinates in order; the third only for 3D grids
+  std::array<GridAxis, 3> axes{GridAxis{-1, 1, 0.02}, GridAxis{-1, 1, 0.02}, GridAxis{0, 1, 0.05}};
+  bool threeD = false; ///< a 3D map on a 3D grid (false: the 2D grid, at z = zValue for 3D maps)
+  double zValue = 0;   ///< the third coordinate of a 2D section of a 3D map
+  int threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 };
 
 /// Values on the grid, x fastest: value(i, j, k) = values[(k * ny + j) * nx + i]; NaN where undefined.

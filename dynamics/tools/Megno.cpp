@@ -7,16 +7,17 @@
 namespace rv {
 
 const ParameterTable& megnoTable() {
+  const MegnoSettings d; // the defaults
   static const ParameterTable t{
       {.id = "time",
        .label = "Time",
-       .defaultValue = 1000,
+       .defaultValue = d.maxTime,
        .min = 1e-300,
        .max = 1e300,
        .description = "integration time (maps: iterations)"},
       {.id = "output_period",
        .label = "Output period",
-       .defaultValue = 10,
+       .defaultValue = d.outputPeriod,
        .min = 1e-300,
        .max = 1e300,
        .description =
@@ -24,7 +25,7 @@ const ParameterTable& megnoTable() {
            "intervals)"},
       {.id = "interval",
        .label = "Renormalisation interval",
-       .defaultValue = 10,
+       .defaultValue = d.interval,
        .min = 1e-300,
        .max = 1e300,
        .description = "the tangent vector is scaled back to length 1 this often (flows); the logarithms add "

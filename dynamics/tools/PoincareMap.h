@@ -26,7 +26,7 @@ struct SectionSettings {
   bool manySheeted = false; ///< keep only points on sheet `root`
   int root = 1;
   int order = 1;          ///< keep every order-th crossing (the map to this power)
-  long maxPoints = 0;     ///< 0: no limit
+  long maxPoints = 2000;  ///< how many points a map computes; 0: no limit (a trajectory run until stopped)
   double maxTime = 1e300; ///< stop integrating at this time
 };
 

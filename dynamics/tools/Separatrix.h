@@ -18,7 +18,7 @@ struct SeparatrixSettings {
   double maxAngle = 0.1;          ///< turn (radians) between consecutive segments
   double minAngleDistance = 1e-7; ///< segments shorter than this are not refined for their angle
   int segmentPoints = 16;         ///< initial points on the fundamental segment
-  int maxIterations = 30;         ///< images of the fundamental segment (levels)
+  int maxIterations = 20;         ///< images of the fundamental segment (levels)
   long maxPoints = 20000;
   double fixedPointAccuracy = 1e-10; ///< the linear region may not shrink below this
 };

@@ -9,6 +9,7 @@
 
 namespace rv {
 
+/// The tables take their defaults from default-constructed settings structs (one declaration of each).
 const ParameterTable& fixedPointTable();
 const ParameterTable& continuationTable();
 const ParameterTable& separatrixTable();
@@ -23,7 +24,8 @@ FixedPointSettings fixedPointSettings(const ParameterValues& v);
 ContinuationSettings continuationSettings(const ParameterValues& v, const FixedPointSettings& search);
 SeparatrixSettings separatrixSettings(const ParameterValues& v, const FixedPointSettings& search);
 BifurcationTreeSettings bifurcationTreeSettings(const ParameterValues& v, const ContinuationSettings& c);
-/// The grid's threads and steps; the ranges are set by the caller.
+/// The grid's threads, steps, section and the chart's ranges x_min ... y_max (a command's flags override
+/// them).
 GridSettings gridSettings(const ParameterValues& v);
 
 } // namespace rv

@@ -145,7 +145,7 @@ private slots:
     RunSpec spec(ModelRegistry::builtin().get("henon_heiles"), IntegratorRegistry::builtin().get("everhart"));
     spec.initialState = spec.makeModel()->stateFromMap({0.1, 0.1}, {}, "test");
     JobTree jobs;
-    Job& trajectory = jobs.add(std::make_unique<PoincareTask>(spec, SectionSettings{}));
+    Job& trajectory = jobs.add(std::make_unique<PoincareTask>(spec, SectionSettings{.maxPoints = 0}));
     LyapunovSettings ls;
     ls.maxTime = 1e9;
     Job& lyapunov = jobs.add(std::make_unique<LyapunovTask>(spec, ls), &trajectory);

@@ -33,7 +33,7 @@ using test::waitFor;
 
 TEST(Job, RunsStopsPromptlyAndContinuesWhereItStopped) {
   JobTree tree;
-  auto task = std::make_unique<PoincareTask>(henonHeiles(), SectionSettings{});
+  auto task = std::make_unique<PoincareTask>(henonHeiles(), SectionSettings{.maxPoints = 0});
   auto* poincare = task.get();
   Job& job = tree.add(std::move(task));
   job.start();
@@ -56,7 +56,7 @@ TEST(Job, RunsStopsPromptlyAndContinuesWhereItStopped) {
 
 TEST(Job, EditTheEnergyAndContinueGivesPointsAtTheNewEnergy) {
   JobTree tree;
-  auto task = std::make_unique<PoincareTask>(henonHeiles(0.125), SectionSettings{});
+  auto task = std::make_unique<PoincareTask>(henonHeiles(0.125), SectionSettings{.maxPoints = 0});
   auto* poincare = task.get();
   Job& job = tree.add(std::move(task));
   job.start();
@@ -92,7 +92,7 @@ TEST(Job, EditTheEnergyAndContinueGivesPointsAtTheNewEnergy) {
 // edited before its first map point (stopped at once): it starts again from its first point, on the new level
 TEST(Job, AnEditBeforeTheFirstPointStartsAgainAtTheNewEnergy) {
   JobTree tree;
-  auto task = std::make_unique<PoincareTask>(henonHeiles(0.125), SectionSettings{});
+  auto task = std::make_unique<PoincareTask>(henonHeiles(0.125), SectionSettings{.maxPoints = 0});
   auto* poincare = task.get();
   Job& job = tree.add(std::move(task));
   job.edit([](Task& t) {
@@ -122,7 +122,7 @@ TEST(PlotTaps, AMapTrajectoryFeedsAnOpenPlotWithTheFiltersPoints) {
   ASSERT_EQ(expected.size(), 40u);
 
   JobTree tree;
-  auto task = std::make_unique<PoincareTask>(spec, SectionSettings{});
+  auto task = std::make_unique<PoincareTask>(spec, SectionSettings{.maxPoints = 0});
   auto* poincare = task.get();
   auto tap = std::make_shared<PlotTap>(settings);
   auto closed = std::make_shared<PlotTap>(settings);
@@ -184,7 +184,7 @@ TEST(Job, FailuresAreReportedWithTheReason) {
   RunSpec spec = henonHeiles();
   spec.integratorParameters.set("step", 5.0); // blows up
   spec.initialState << 0, 0.5, 0.6, 0.1;
-  Job& job = tree.add(std::make_unique<PoincareTask>(spec, SectionSettings{}));
+  Job& job = tree.add(std::make_unique<PoincareTask>(spec, SectionSettings{.maxPoints = 0}));
   job.start();
   ASSERT_TRUE(waitFor([&] { return job.status() == Job::Status::Failed; }));
   EXPECT_NE(job.error().find("finite"), std::string::npos) << job.error();
@@ -192,7 +192,7 @@ TEST(Job, FailuresAreReportedWithTheReason) {
 
 TEST(JobTree, ToolsHangUnderTheirTrajectoryAndGoWithIt) {
   JobTree tree;
-  Job& map = tree.add(std::make_unique<PoincareTask>(henonHeiles(), SectionSettings{}));
+  Job& map = tree.add(std::make_unique<PoincareTask>(henonHeiles(), SectionSettings{.maxPoints = 0}));
   LyapunovSettings ls;
   ls.maxTime = 50;
   Job& lyap = tree.add(std::make_unique<LyapunovTask>(henonHeiles(), ls), &map);
@@ -220,7 +220,7 @@ TEST(JobTree, StressManyJobsInRandomOrder) {
   std::mt19937 rng(42);
   std::vector<MapPoint> sink;
   for (int i = 0; i < 100; ++i)
-    tree.add(std::make_unique<PoincareTask>(henonHeiles(), SectionSettings{}));
+    tree.add(std::make_unique<PoincareTask>(henonHeiles(), SectionSettings{.maxPoints = 0}));
   for (int op = 0; op < 400; ++op) {
     auto jobs = tree.jobs();
     if (jobs.empty()) break;
@@ -275,8 +275,8 @@ TEST(JobTree, StressFiftyJobsStartedEditedStoppedContinuedDeletedLoseNoResult) {
   std::map<Job*, long> taken; // points taken from each job since it last began again
   std::vector<MapPoint> sink;
   const auto add = [&] {
-    Job& j =
-        tree.add(std::make_unique<PoincareTask>(henonHeiles(0.1 + 0.01 * (rng() % 3)), SectionSettings{}));
+    Job& j = tree.add(std::make_unique<PoincareTask>(henonHeiles(0.1 + 0.01 * (rng() % 3)),
+                                                     SectionSettings{.maxPoints = 0}));
     taken[&j] = 0;
   };
   for (int i = 0; i < 50; ++i)
