@@ -35,13 +35,17 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
+#include <QPlainTextEdit>
 #include <QProcess>
+#include <QPushButton>
 #include <QSaveFile>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QTemporaryFile>
+#include <QTime>
 #include <QToolBar>
+#include <QVBoxLayout>
 #include <cmath>
 #include <csignal>
 #include <fstream>
@@ -65,6 +69,17 @@ static QString rollvizExecutable() {
   return QCoreApplication::applicationFilePath();
 }
 
+void MainWindow::report(const QString& text, int timeoutMs) {
+  statusBar()->showMessage(text, timeoutMs);
+  results_->appendPlainText(QTime::currentTime().toString("HH:mm:ss") + "  " + text);
+  results_->moveCursor(QTextCursor::End); // the newest line shows
+  results_->ensureCursorVisible();
+}
+
+QString MainWindow::results() const {
+  return results_->toPlainText();
+}
+
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   view_ = new QtVtkWidget(this);
   setCentralWidget(view_);
@@ -86,8 +101,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     map_->editJob(job, edited);
   });
   connect(tools_, &ToolManager::restarted, map_, &MapPanel::clearOutput);
-  connect(tools_, &ToolManager::message, this,
-          [this](const QString& m) { statusBar()->showMessage(m, 8000); });
+  connect(tools_, &ToolManager::message, this, [this](const QString& m) { report(m, 8000); });
   connect(tools_, &ToolManager::selectedJob, map_, &MapPanel::highlightJob);
   connect(tools_, &ToolManager::selectedJob, this, [this](int id) {
     if (apex_) followInApex(id);
@@ -95,13 +109,38 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   connect(map_, &MapPanel::jobRemoved, this, [this](int id) {
     if (apex_ && id == apexSource_) followInApex(-1);
   });
+  tools_->setRowLook([this](int id) {
+    ToolManager::RowLook look{map_->trajectoryStart(id), std::nullopt};
+    if (map_->isTrajectory(id)) look.colour = map_->shownColour(id);
+    return look;
+  });
   tools_->setOutputActions([this](int id, const Rgb& c) { return map_->setJobColor(id, c); },
                            [this](int id, long a, long b) { return map_->setJobRange(id, a, b); });
   auto* toolsDock = new QDockWidget("Tool manager", this);
   toolsDock->setObjectName("tools");
   toolsDock->setWidget(tools_);
   addDockWidget(Qt::BottomDockWidgetArea, toolsDock);
-  resizeDocks({toolsDock}, {150}, Qt::Vertical); // the 3D view keeps most of the height
+  // the results of the session beside the tool manager: they outlive the status bar's few seconds
+  auto* resultsPane = new QWidget(this);
+  auto* resultsLayout = new QVBoxLayout(resultsPane);
+  resultsLayout->setContentsMargins(2, 2, 2, 2);
+  results_ = new QPlainTextEdit(resultsPane);
+  results_->setObjectName("results");
+  results_->setReadOnly(true);
+  results_->setMinimumWidth(360); // a fixed point's line with its multipliers reads in two lines
+  results_->setToolTip("every result and message of the session (select and copy; Clear empties it)");
+  auto* clear = new QPushButton("Clear", resultsPane);
+  clear->setObjectName("clear_results");
+  connect(clear, &QPushButton::clicked, results_, &QPlainTextEdit::clear);
+  resultsLayout->addWidget(results_, 1);
+  resultsLayout->addWidget(clear, 0, Qt::AlignRight);
+  auto* resultsDock = new QDockWidget("Results", this);
+  resultsDock->setObjectName("results_dock");
+  resultsDock->setWidget(resultsPane);
+  addDockWidget(Qt::BottomDockWidgetArea, resultsDock);
+  splitDockWidget(toolsDock, resultsDock, Qt::Horizontal);
+  resizeDocks({toolsDock}, {220}, Qt::Vertical); // the 3D view keeps most of the height; six rows show
+  resizeDocks({toolsDock, resultsDock}, {700, 500}, Qt::Horizontal);
   connect(control_, &ControlPanel::apply, this, [this](const nlohmann::json& doc) { runDocument(doc); });
   connect(control_, &ControlPanel::create, this, [this](const std::string& id) { createTool(id); });
   connect(control_, &ControlPanel::problemChosen, this,
@@ -192,7 +231,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
                   [this] {
                     if (scene_)
                       exportChartDialog(this, map_->view(), map_->chart(), "map",
-                                        [this](const QString& m) { statusBar()->showMessage(m, 8000); });
+                                        [this](const QString& m) { report(m, 8000); });
                   })
       ->setToolTip("the Poincaré map window as a PNG picture or its points as CSV");
   recentMenu_ = file->addMenu("Recent scenes");
@@ -231,7 +270,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   continuation->setShortcut(QKeySequence("Ctrl+Shift+C"));
   status_ = new QLabel(this);
   statusBar()->addWidget(status_, 1);
-  connect(map_, &MapPanel::message, this, [this](const QString& m) { statusBar()->showMessage(m, 5000); });
+  connect(map_, &MapPanel::message, this, [this](const QString& m) { report(m, 8000); });
+  // every dock can be shown again from the Windows menu (a closed one has no other handle)
+  windows->addSeparator();
+  for (QDockWidget* d : findChildren<QDockWidget*>())
+    windows->addAction(d->toggleViewAction());
 
   connect(&timer_, &QTimer::timeout, this, &MainWindow::tick);
   timer_.start(16);
@@ -451,7 +494,7 @@ bool MainWindow::startRecording(const QString& path, const VideoSpec& spec) {
   if (!scene_ || recorder_) return false;
   auto r = std::make_unique<Recording>();
   if (!r->scene.open()) {
-    statusBar()->showMessage("Cannot record: no temporary file for the scene", 8000);
+    report("Cannot record: no temporary file for the scene", 8000);
     return false;
   }
   r->scene.write(QByteArray::fromStdString(documentWithEdits().dump(2)));
@@ -469,18 +512,17 @@ bool MainWindow::startRecording(const QString& path, const VideoSpec& spec) {
     const QString output = QString::fromUtf8(done->process->readAll()).trimmed();
     done->process.release()->deleteLater(); // this runs inside the process's own signal
     recordAction_->setText("Record…");
-    statusBar()->showMessage(code == 0 || code == 130 ? "wrote " + path : "recording failed: " + output,
-                             8000);
+    report(code == 0 || code == 130 ? "wrote " + path : "recording failed: " + output, 8000);
     emit recordingFinished(code, path);
   });
   r->process->start();
   if (!r->process->waitForStarted(5000)) {
-    statusBar()->showMessage("Cannot record: cannot start " + rollvizExecutable(), 8000);
+    report("Cannot record: cannot start " + rollvizExecutable(), 8000);
     return false;
   }
   recorder_ = std::move(r);
   recordAction_->setText("Stop recording");
-  statusBar()->showMessage("recording " + path + "…");
+  report("recording " + path + "…");
   return true;
 }
 
@@ -544,8 +586,7 @@ void MainWindow::diagramDialog() {
   if (!scene_) return;
   const auto diagrams = scene_->model->diagrams();
   if (diagrams.empty()) {
-    statusBar()->showMessage(
-        QString::fromStdString(scene_->model->info().id + " has no bifurcation diagrams"), 8000);
+    report(QString::fromStdString(scene_->model->info().id + " has no bifurcation diagrams"), 8000);
     return;
   }
   QStringList items;
@@ -590,7 +631,7 @@ PlotWindow* MainWindow::openPlotWindow(const PlotView& plot) {
     map_->addPlotWindow(w);
     return w;
   } catch (const std::exception& e) {
-    statusBar()->showMessage(QString("Cannot plot: %1").arg(e.what()), 8000);
+    report(QString("Cannot plot: %1").arg(e.what()), 8000);
     return nullptr;
   }
 }
@@ -665,7 +706,7 @@ void MainWindow::saveDialog() {
     std::ofstream(file.tempPath()) << doc.dump(2) << "\n";
     file.commit();
     rememberRecent(path);
-    statusBar()->showMessage("saved " + path, 5000);
+    report("saved " + path, 5000);
   } catch (const std::exception& e) {
     QMessageBox::warning(this, "rollviz", QString("Cannot save the scene:\n%1").arg(e.what()));
   }
@@ -720,7 +761,7 @@ int MainWindow::resumeSavedJobs() {
     const QString path = QString::fromStdString(saved.at("scene").get<std::string>());
     useScene(std::make_unique<Scene>(sceneFromJson(saved.at("document"), path.toStdString())), path);
     const int n = map_->resume(saved.at("trajectories"));
-    statusBar()->showMessage(QString("continued %1 trajectories from the last session").arg(n), 5000);
+    report(QString("continued %1 trajectories from the last session").arg(n), 5000);
     return n;
   } catch (const std::exception& e) {
     QMessageBox::warning(this, "rollviz",

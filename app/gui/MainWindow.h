@@ -23,6 +23,7 @@ class QDropEvent;
 class QMenu;
 class QDoubleSpinBox;
 class QLabel;
+class QPlainTextEdit;
 
 namespace rv {
 
@@ -65,6 +66,12 @@ public:
   ControlPanel* controlPanel() const { return control_; }
   ToolManager* toolManager() const { return tools_; }
   const Scene* scene() const { return scene_.get(); }
+  /// Shows a message in the status bar for `timeoutMs` (0: until the next) and keeps it, with the time, in
+  /// the Results dock: the tools' results (fixed points and their multipliers, ...) and the reasons of
+  /// failures stay there, copyable, until cleared.
+  void report(const QString& text, int timeoutMs = 8000);
+  /// The Results dock's text.
+  QString results() const;
 
   /// Writes the 3D view as drawn to a PNG; false when it cannot.
   bool snapshotTo(const QString& path);
@@ -166,6 +173,7 @@ private:
   QAction* playAction_;
   QDoubleSpinBox* speedBox_;
   QLabel* status_;
+  QPlainTextEdit* results_;
   QTimer timer_;
   QElapsedTimer clock_;
   QString scenePath_;

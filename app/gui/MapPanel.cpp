@@ -21,6 +21,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QMouseEvent>
+#include <QPushButton>
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
@@ -62,12 +63,30 @@ MapPanel::MapPanel(QWidget* parent) : QWidget(parent) {
   megnoLegend_->setObjectName("megno_legend");
   megnoLegend_->setVisible(false);
   layout->addWidget(modeBox_);
+  auto* fit = new QPushButton("Fit", this);
+  fit->setObjectName("fit_map");
+  fit->setToolTip(
+      "ranges around every point drawn (the axes stay put while you click: new trajectories do not "
+      "rescale them; the wheel zooms, a drag in the pan / zoom mode moves)");
+  connect(fit, &QPushButton::clicked, this, [this] {
+    if (!chart_) return;
+    chart_->fitToData();
+    view_->update();
+  });
   auto* bar = new QHBoxLayout; // a row of its own: the panel is narrow
   bar->addWidget(megnoBox_);
   bar->addWidget(megnoLegend_, 1);
+  bar->addWidget(fit);
   layout->addLayout(bar);
-  layout->addWidget(view_, 1);
+  // the map coordinates under the cursor, beside the chart: nothing of the cursor is drawn into it (or into
+  // an export of it), and the text never runs off the window's edge
+  cursorLabel_ = new QLabel(this);
+  cursorLabel_->setObjectName("cursor_position");
+  cursorLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  layout->addWidget(cursorLabel_);
+  layout->insertWidget(layout->count() - 1, view_, 1);
   view_->installEventFilter(this);
+  view_->setMouseTracking(true);
   setMinimumSize(320, 320);
 }
 
@@ -98,14 +117,16 @@ void MapPanel::setScene(const Scene& scene) {
   scene_ = &scene;
   resetMap3D(false);
   const auto names = PoincareMap(*scene.model, scene.startIntegrator(), scene.poincare).coordinateNames();
+  axisNames_ = {names.at(0), names.size() > 1 ? names[1] : "t"};
   // one chart for the panel's life: replacing it would leave the window's interactor (and its timers)
   // driving a destroyed chart scene
   if (!chart_) {
-    chart_ = std::make_unique<PoincareChart>(names.at(0), names.size() > 1 ? names[1] : "t");
+    chart_ = std::make_unique<PoincareChart>(axisNames_[0], axisNames_[1]);
+    chart_->setPointLabel(false); // the cursor's coordinates show in cursorLabel_
     chart_->attach(view_->renderWindow());
   } else {
     chart_->clear();
-    chart_->setTitles(names.at(0), names.size() > 1 ? names[1] : "t");
+    chart_->setTitles(axisNames_[0], axisNames_[1]);
   }
   start(scene.initialState);
 }
@@ -212,10 +233,12 @@ std::vector<double> MapPanel::mapPoint(double x, double y) const {
 
 bool MapPanel::startAt(double x, double y) {
   if (!scene_) return false;
+  chart_->holdRanges(); // the next click lands where the user aims: the new points do not rescale the axes
   try {
     const MapPointSpec spec{.sectionValue = scene_->poincare.value,
                             .root = std::max(1, scene_->poincare.root)};
     start(scene_->model->stateFromMap(mapPoint(x, y), spec, "map point"));
+    series_.back().origin = QString("(%1, %2)").arg(x, 0, 'g', 6).arg(y, 0, 'g', 6);
     emit message(QString("trajectory %1 started at (%2, %3)").arg(series_.size()).arg(x).arg(y));
     return true;
   } catch (const InputError& e) {
@@ -226,6 +249,7 @@ bool MapPanel::startAt(double x, double y) {
 
 void MapPanel::searchFixedPointAt(double x, double y) {
   if (!scene_ || scene_->model->info().mapCoordinates.empty()) return;
+  chart_->holdRanges();
   try {
     MapToolOverrides o;
     o.guess = mapPoint(x, y);
@@ -597,6 +621,21 @@ long MapPanel::points() const {
 }
 
 bool MapPanel::eventFilter(QObject* watched, QEvent* event) {
+  if (watched == view_ && chart_ && event->type() == QEvent::MouseMove) {
+    const auto* e = static_cast<QMouseEvent*>(event);
+    const double dpr = view_->devicePixelRatioF();
+    double x, y;
+    const bool inside =
+        chart_->toChart(e->position().x() * dpr, (view_->height() - e->position().y()) * dpr, x, y);
+    cursorLabel_->setText(inside ? QString("%1 = %2, %3 = %4")
+                                       .arg(QString::fromStdString(axisNames_[0]))
+                                       .arg(x, 0, 'g', 6)
+                                       .arg(QString::fromStdString(axisNames_[1]))
+                                       .arg(y, 0, 'g', 6)
+                                 : QString());
+  }
+  if (watched == view_ && event->type() == QEvent::Leave) cursorLabel_->clear();
+  if (watched == view_ && chart_ && event->type() == QEvent::Wheel) chart_->holdRanges(); // a zoom stays
   if (watched == view_ && event->type() == QEvent::MouseButtonPress && chart_) {
     auto* e = static_cast<QMouseEvent*>(event);
     const bool ctrl = e->modifiers() & Qt::ControlModifier, shift = e->modifiers() & Qt::ShiftModifier;
@@ -642,6 +681,19 @@ void MapPanel::drawSeries(const Series& s) {
   if (s.first <= 1 && s.last <= 0) return chart_->setSeries(s.plot, s.x, s.y);
   const auto [a, b] = shownSpan(s);
   chart_->setSeries(s.plot, {s.x.begin() + a, s.x.begin() + b}, {s.y.begin() + a, s.y.begin() + b});
+}
+
+bool MapPanel::isTrajectory(int id) const {
+  return std::any_of(series_.begin(), series_.end(), [&](const Series& s) { return s.job->id() == id; });
+}
+
+QString MapPanel::trajectoryStart(int id) const {
+  for (const auto& s : series_)
+    if (s.job->id() == id) {
+      if (!s.origin.isEmpty() || s.x.empty()) return s.origin;
+      return QString("(%1, %2)").arg(s.x[0], 0, 'g', 6).arg(s.y[0], 0, 'g', 6);
+    }
+  return {};
 }
 
 bool MapPanel::setJobColor(int id, const Rgb& color) {

@@ -16,6 +16,7 @@
 
 #include <QPointer>
 #include <QWidget>
+#include <array>
 #include <complex>
 #include <functional>
 #include <memory>
@@ -85,6 +86,11 @@ public:
   void clearOutput(int id);
   /// Draws the trajectory of job `id` emphasised (-1, or a job that is not a trajectory: none).
   void highlightJob(int id);
+  /// Whether job `id` is a trajectory of the map.
+  bool isTrajectory(int id) const;
+  /// Where trajectory `id` starts, in map coordinates ("(x, y)": the click, else its first map point; empty
+  /// before it has one or for no trajectory): what tells trajectories apart in the tool manager.
+  QString trajectoryStart(int id) const;
   /// The colour of a trajectory's points (manual §2.1: colour of output); false when `id` is not a
   /// trajectory.
   bool setJobColor(int id, const Rgb& color);
@@ -153,6 +159,7 @@ private:
     Job* megnoJob = nullptr;  ///< the MEGNO job colouring it (under its job), once started
     MegnoTask* megno = nullptr;
     std::optional<double> megnoValue; ///< <Y> when that job has finished
+    QString origin;                   ///< where a click started it (map coordinates); else its first point
   };
   void startMegno(Series& s);
   /// Draws a trajectory in its own colour or its MEGNO's.
@@ -160,6 +167,8 @@ private:
   bool colourByMegno_ = false;
   QCheckBox* megnoBox_;
   QLabel* megnoLegend_;
+  QLabel* cursorLabel_; ///< the map coordinates under the cursor
+  std::array<std::string, 2> axisNames_{"x", "y"};
   /// Gives the trajectory's job a tap of each open plot filter.
   void feedPlots(const Series& s);
   std::vector<QPointer<PlotWindow>> plots_;

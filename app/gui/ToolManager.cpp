@@ -5,12 +5,16 @@
 #include <QColorDialog>
 #include <QHBoxLayout>
 #include <QHeaderView>
+#include <QIcon>
 #include <QInputDialog>
 #include <QLineEdit>
+#include <QMessageBox>
+#include <QPixmap>
 #include <QPushButton>
 #include <QTimer>
 #include <QTreeWidget>
 #include <QVBoxLayout>
+#include <algorithm>
 #include <map>
 
 namespace rv {
@@ -19,16 +23,23 @@ ToolManager::ToolManager(JobTree& jobs, std::function<void(Job&)> remove, QWidge
     : QWidget(parent), jobs_(jobs), remove_(std::move(remove)) {
   auto* layout = new QVBoxLayout(this);
   tree_ = new QTreeWidget(this);
-  tree_->setHeaderLabels({"#", "tool", "status", "progress", "method and problem"});
+  tree_->setHeaderLabels({"#", "tool", "status", "progress", "start", "method and problem"});
   tree_->header()->setStretchLastSection(true);
+  tree_->setColumnWidth(0, 60);
+  tree_->setColumnWidth(1, 150);
+  tree_->setColumnWidth(4, 170);
   layout->addWidget(tree_, 1);
   auto* buttons = new QHBoxLayout;
-  const auto button = [&](const char* text, const char* tip, void (ToolManager::*slot)()) {
+  const auto add = [&](const char* text, const char* tip) {
     auto* b = new QPushButton(text, this);
     b->setToolTip(tip);
     b->setObjectName(QString(text).toLower());
-    connect(b, &QPushButton::clicked, this, slot);
     buttons->addWidget(b);
+    buttons_[b->objectName()] = {b, tip};
+    return b;
+  };
+  const auto button = [&](const char* text, const char* tip, void (ToolManager::*slot)()) {
+    connect(add(text, tip), &QPushButton::clicked, this, slot);
   };
   button("Stop", "stop the selected tool (it can continue later)", &ToolManager::stopSelected);
   button("Start", "start the selected tool, or continue it from where it stopped",
@@ -40,21 +51,22 @@ ToolManager::ToolManager(JobTree& jobs, std::function<void(Job&)> remove, QWidge
       "then goes on with them: a map or fixed-point search from its stop point, a continuation, separatrix "
       "or bifurcation tree from its beginning",
       &ToolManager::editSelected);
-  button("Delete", "stop and delete the selected tool and the tools under it", &ToolManager::deleteSelected);
+  connect(add("Delete", "stop and delete the selected tool and the tools under it (asks first)"),
+          &QPushButton::clicked, this, [this] {
+            if (confirmDelete()) deleteSelected();
+          });
   button("Find parent", "select the tool the selected one studies", &ToolManager::selectParent);
-  auto* colour = new QPushButton("Colour…", this);
-  colour->setToolTip("the colour of the selected trajectory's points");
-  connect(colour, &QPushButton::clicked, this, [this] { colourSelected(); });
-  buttons->addWidget(colour);
-  auto* range = new QPushButton("Set range…", this);
-  range->setToolTip("which of the selected trajectory's points show (from the first-th to the last-th)");
-  connect(range, &QPushButton::clicked, this, [this] { rangeSelected(); });
-  buttons->addWidget(range);
+  connect(add("Colour…", "the colour of the selected trajectory's points"), &QPushButton::clicked, this,
+          [this] { colourSelected(); });
+  connect(
+      add("Set range…", "which of the selected trajectory's points show (from the first-th to the last-th)"),
+      &QPushButton::clicked, this, [this] { rangeSelected(); });
   button("Stop all", "stop every tool", &ToolManager::stopAll);
   button("Delete all", "stop and delete every tool", &ToolManager::deleteAll);
   layout->addLayout(buttons);
   connect(tree_, &QTreeWidget::currentItemChanged, this, [this] {
     const Job* j = selected();
+    updateButtons();
     emit selectedJob(j ? j->id() : -1);
   });
   timer_ = new QTimer(this);
@@ -99,12 +111,69 @@ void ToolManager::refresh() {
     if (j->status() == Job::Status::Failed) status += ": " + QString::fromStdString(j->error());
     it->setText(2, status);
     it->setText(3, QString("%1%").arg(static_cast<int>(100 * j->progress())));
-    it->setText(4, QString::fromStdString(j->task().describe())); // the tasks describe their fixed settings
+    const QString description = QString::fromStdString(j->task().describe()); // their fixed settings
+    it->setText(5, description);
+    it->setToolTip(5, description); // whole, where the column cuts it
+    const RowLook look = look_ ? look_(j->id()) : RowLook{};
+    it->setText(4, look.start);
+    if (look.colour) { // the swatch of the colour its output is drawn in
+      const Rgb& c = *look.colour;
+      QPixmap swatch(12, 12);
+      swatch.fill(
+          QColor::fromRgbF(static_cast<float>(c[0]), static_cast<float>(c[1]), static_cast<float>(c[2])));
+      it->setIcon(1, QIcon(swatch));
+    } else {
+      it->setIcon(1, QIcon());
+    }
     const QBrush ink = j->running() ? QBrush(QColor(200, 20, 20)) : QBrush(); // manual §2.1: running in red
     for (int c = 0; c < tree_->columnCount(); ++c)
       it->setForeground(c, ink);
   }
   if (keep >= 0) select(keep);
+  updateButtons();
+}
+
+void ToolManager::updateButtons() {
+  const Job* j = selected();
+  const std::vector<Job*> all = jobs_.jobs();
+  const bool any = !all.empty();
+  const bool anyRunning = std::any_of(all.begin(), all.end(), [](const Job* k) { return k->running(); });
+  const bool running = j && j->running(), finished = j && j->status() == Job::Status::Finished;
+  const bool drawsPoints = j && look_ && look_(j->id()).colour && !j->parent();
+  const auto enable = [&](const char* name, bool on, const char* whyNot) {
+    auto& [b, tip] = buttons_.at(name);
+    b->setEnabled(on);
+    b->setToolTip(on ? tip : tip + "\n(now: " + whyNot + ")");
+  };
+  const char* none = "select a tool first";
+  enable("stop", running, j ? "the tool is not running" : none);
+  enable("start", j && !running && !finished, !j ? none : running ? "it runs" : "it has finished: Restart");
+  enable("restart", j != nullptr, none);
+  enable("edit", j && !running && editor_, !j ? none : "stop the tool first");
+  enable("delete", j != nullptr, none);
+  enable("find parent", j && j->parent(), j ? "the tool has no parent" : none);
+  enable("colour…", drawsPoints, j ? "only a trajectory of the map has a colour" : none);
+  enable("set range…", drawsPoints, j ? "only a trajectory of the map has a range of points" : none);
+  enable("stop all", anyRunning, "no tool runs");
+  enable("delete all", any, "no tools");
+}
+
+bool ToolManager::confirmDelete() {
+  const Job* j = selected();
+  if (!j) return false;
+  std::size_t under = 0;
+  std::vector<const Job*> stack{j};
+  while (!stack.empty()) {
+    const Job* k = stack.back();
+    stack.pop_back();
+    for (const Job* c : jobs_.children(*k))
+      stack.push_back(c), ++under;
+  }
+  QString text = QString("Delete tool %1 (%2)").arg(j->id()).arg(QString::fromStdString(j->task().name()));
+  if (under > 0) text += QString(" and the %1 tool%2 under it").arg(under).arg(under > 1 ? "s" : "");
+  text += "? What it computed and drew goes with it.";
+  return QMessageBox::question(this, "Delete tool", text, QMessageBox::Yes | QMessageBox::No,
+                               QMessageBox::No) == QMessageBox::Yes;
 }
 
 Job* ToolManager::selected() const {

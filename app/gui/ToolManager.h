@@ -1,14 +1,18 @@
 // ToolManager.h -- the tool manager (manual §2.1): every running tool instance as a tree (tools under the
-// trajectory they study), with its status, progress and technical description; stop, continue, restart and
-// delete act on the selected instance. It only reads the jobs' atomic state: the GUI thread never waits on
-// one except to stop it.
+// trajectory they study), with its status, progress, where it starts (a trajectory's colour swatch and start
+// point) and technical description; stop, continue, restart and delete act on the selected instance, and a
+// button is enabled only when its action applies (its tooltip says why not). Delete asks first. It only reads
+// the jobs' atomic state: the GUI thread never waits on one except to stop it.
 #pragma once
 #include "render/ViewOptions.h"
+#include <QString>
 #include <QWidget>
 
 #include <functional>
+#include <map>
 #include <optional>
 
+class QPushButton;
 class QTreeWidget;
 class QTimer;
 
@@ -31,7 +35,10 @@ public:
   void stopSelected();
   void continueSelected();
   void restartSelected();
+  /// Deletes the selected job (and those under it) without asking; the Delete button asks first.
   void deleteSelected();
+  /// Delete's question: true when the user confirms deleting the selected job (and how many under it).
+  bool confirmDelete();
   /// Edit properties (manual §2.1): gives the selected job, which must be stopped, the control panel's
   /// values through `editor` (set by the owner); it then continues from its stop point with them.
   void editSelected();
@@ -46,6 +53,15 @@ public:
                         std::function<bool(int, long, long)> range) {
     colour_ = std::move(colour), range_ = std::move(range);
   }
+  /// What a row shows of a job beside its description: where it starts (empty: nothing) and the colour its
+  /// output is drawn in (none: no swatch); set by the owner, which knows what it draws.
+  struct RowLook {
+    QString start;
+    std::optional<Rgb> colour;
+  };
+  void setRowLook(std::function<RowLook(int)> look) { look_ = std::move(look); }
+  /// Enables the buttons that apply to the selected job (called on each refresh and selection change).
+  void updateButtons();
   /// Colour of output for the selected job (a colour dialog unless `color` is given).
   void colourSelected(std::optional<Rgb> color = std::nullopt);
   /// Set range for the selected job (a dialog unless `first` is given; last <= 0: to the end).
@@ -68,7 +84,10 @@ private:
   std::function<void(Job&)> editor_;
   std::function<bool(int, const Rgb&)> colour_;
   std::function<bool(int, long, long)> range_;
+  std::function<RowLook(int)> look_;
   QTreeWidget* tree_;
+  /// the buttons by object name, with their tooltips when enabled
+  std::map<QString, std::pair<QPushButton*, QString>> buttons_;
   QTimer* timer_;
 };
 

@@ -21,6 +21,7 @@
 #include <vtkRenderer.h>
 #include <vtkTable.h>
 #include <vtkTextProperty.h>
+#include <vtkTooltipItem.h>
 
 namespace rv {
 
@@ -181,6 +182,51 @@ void PoincareChart::setRanges(double x0, double x1, double y0, double y1) {
   vtkAxis* ay = chart_->GetAxis(vtkAxis::LEFT);
   ax->SetRange(x0, x1), ay->SetRange(y0, y1);
   ax->SetBehavior(vtkAxis::FIXED), ay->SetBehavior(vtkAxis::FIXED);
+}
+
+void PoincareChart::setPointLabel(bool on) {
+  if (on == (chart_->GetTooltip() != nullptr)) return;
+  chart_->SetTooltip(on ? vtkSmartPointer<vtkTooltipItem>::New().GetPointer() : nullptr);
+}
+
+std::array<double, 4> PoincareChart::ranges() const {
+  vtkAxis* ax = chart_->GetAxis(vtkAxis::BOTTOM);
+  vtkAxis* ay = chart_->GetAxis(vtkAxis::LEFT);
+  return {ax->GetMinimum(), ax->GetMaximum(), ay->GetMinimum(), ay->GetMaximum()};
+}
+
+void PoincareChart::holdRanges() {
+  for (int a : {vtkAxis::BOTTOM, vtkAxis::LEFT})
+    chart_->GetAxis(a)->SetBehavior(vtkAxis::FIXED);
+}
+
+void PoincareChart::fitToData() {
+  // the bounds of the points drawn (a thinned series keeps its extremes), read from the plots' tables: the
+  // axes' own automatic bounds are only recomputed in the next frame
+  double x0 = std::numeric_limits<double>::infinity(), x1 = -x0, y0 = x0, y1 = -x0;
+  for (vtkIdType i = 0; i < chart_->GetNumberOfPlots(); ++i) {
+    vtkTable* t = chart_->GetPlot(i)->GetInput();
+    auto* xs = t ? vtkDoubleArray::SafeDownCast(t->GetColumn(0)) : nullptr;
+    auto* ys = t ? vtkDoubleArray::SafeDownCast(t->GetColumn(1)) : nullptr;
+    if (!xs || !ys) continue;
+    for (vtkIdType r = 0; r < std::min(xs->GetNumberOfValues(), ys->GetNumberOfValues()); ++r) {
+      const double x = xs->GetValue(r), y = ys->GetValue(r);
+      if (!std::isfinite(x) || !std::isfinite(y)) continue;
+      x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+    }
+  }
+  if (!(x0 <= x1 && y0 <= y1)) { // nothing drawn: the axes follow the data to come
+    for (int a : {vtkAxis::BOTTOM, vtkAxis::LEFT})
+      chart_->GetAxis(a)->SetBehavior(vtkAxis::AUTO);
+    return;
+  }
+  // a margin of 3 % (a point on the edge stays visible); a single value gets a unit range
+  const auto pad = [](double& lo, double& hi) {
+    const double m = hi > lo ? 0.03 * (hi - lo) : 0.5 * std::max(1.0, std::abs(lo));
+    lo -= m, hi += m;
+  };
+  pad(x0, x1), pad(y0, y1);
+  setRanges(x0, x1, y0, y1);
 }
 
 void PoincareChart::setSeries(int index, const std::vector<double>& x, const std::vector<double>& y) {

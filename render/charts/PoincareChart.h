@@ -33,8 +33,17 @@ public:
   /// coloured from `low` (at the smallest value) to `high`; NaN is drawn transparent.
   void addImage(int nx, int ny, double x0, double dx, double y0, double dy, const std::vector<double>& values,
                 const Rgb& low, const Rgb& high);
+  /// The label drawn over the point under the cursor (its series and coordinates); off, nothing of the cursor
+  /// is drawn into the chart (and so into its exports).
+  void setPointLabel(bool on);
   /// Fixes the axes' ranges (otherwise they follow the data).
   void setRanges(double x0, double x1, double y0, double y1);
+  /// The axes' ranges now: x0, x1, y0, y1.
+  std::array<double, 4> ranges() const;
+  /// Keeps the axes where they are now (new data no longer rescales them; zoom and pan still move them).
+  void holdRanges();
+  /// Ranges around every point drawn now, held; the axes follow the data again while there is none.
+  void fitToData();
   /// Recolours series `index`.
   void setColor(int index, const Rgb& color);
   /// Replaces the points of series `index`.

@@ -19,12 +19,18 @@
 #include "scenes/SceneLoader.h"
 
 #include <QCheckBox>
+#include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QTemporaryDir>
+#include <QTreeWidget>
 #include <QtTest>
 #include <cstdio>
 #include <functional>
@@ -562,6 +568,137 @@ private slots:
     box->click();
     QVERIFY(!map->colourByMegno());
     QVERIFY(map->shownColour(ids[0]) != blue);
+  }
+
+  // The map holds still while the user clicks: a new trajectory does not rescale the axes (Fit does); the
+  // cursor's map coordinates show beside the chart, and nothing of the cursor is drawn into it (or into an
+  // export of it: File > Export map writes the framebuffer).
+  void mapHoldsStillWhileClicking() {
+    nlohmann::json doc = loadScene(defaultScenePath("standard_map")).document;
+    doc["parameters"]["K"] = 1.5;
+    doc["initial"] = {{"map", {3.4415926535897931, 0.0}}}; // an island round the elliptic point (pi, 0)
+    QVERIFY(window_->runDocument(doc));
+    MapPanel* map = window_->mapPanel();
+    QtVtkWidget* view = map->view();
+    QTRY_VERIFY_WITH_TIMEOUT(map->points() >= 300, 20000);
+    QTest::qWait(100);
+    view->grabFramebuffer(); // a frame: until the first click the axes follow the data
+    const auto island = map->chart().ranges();
+    QVERIFY2(island[1] - island[0] < 2, qPrintable(QString::number(island[1] - island[0])));
+    QVERIFY(map->startAt(0.1, 0.1)); // the chaotic sea, all over the torus
+    const long before = map->points();
+    QTRY_VERIFY_WITH_TIMEOUT(map->points() >= before + 1500, 20000);
+    QTest::qWait(100);
+    view->grabFramebuffer();
+    QVERIFY(map->chart().ranges() == island);
+    auto* fit = map->findChild<QPushButton*>("fit_map");
+    QVERIFY(fit);
+    fit->click();
+    view->grabFramebuffer();
+    const auto all = map->chart().ranges();
+    QVERIFY2(all[1] - all[0] > 5, qPrintable(QString::number(all[1] - all[0])));
+    QVERIFY(all[3] - all[2] > island[3] - island[2]);
+    // the cursor over the chaotic trajectory's first point: its coordinates beside the chart, none in it
+    map->stopAll();
+    const auto running = [&] {
+      const std::vector<Job*> jobs = map->jobs().jobs();
+      return std::any_of(jobs.begin(), jobs.end(), [](const Job* j) { return j->running(); });
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(!running(), 10000);
+    map->drain();
+    QTest::qWait(100);
+    const QImage still = view->grabFramebuffer();
+    const double dpr = view->devicePixelRatioF();
+    const QPoint c = view->rect().center();
+    double x0, y0, x1, y1; // toChart is linear: two pixels give the point's
+    QVERIFY(map->chart().toChart(c.x() * dpr, (view->height() - c.y()) * dpr, x0, y0));
+    QVERIFY(map->chart().toChart((c.x() + 20) * dpr, (view->height() - c.y() + 20) * dpr, x1, y1));
+    const QPoint onPoint(qRound(c.x() + 20 * (0.1 - x0) / (x1 - x0)),
+                         qRound(c.y() - 20 * (0.1 - y0) / (y1 - y0)));
+    QVERIFY(view->rect().contains(onPoint));
+    QTest::mouseMove(view, onPoint);
+    QTest::qWait(200);
+    auto* label = map->findChild<QLabel*>("cursor_position");
+    QVERIFY(label);
+    QVERIFY2(label->text().contains(" = 0.1") || label->text().contains(" = 0.09"),
+             qPrintable(label->text()));
+    QVERIFY(view->grabFramebuffer() == still);
+    QVERIFY(keep(map->grab().toImage(), "window_map_held.png"));
+  }
+
+  // A tool's result stays in the Results dock when the status bar's message is gone; Clear empties it.
+  void resultsAreKept() {
+    nlohmann::json doc = loadScene(defaultScenePath("standard_map")).document;
+    doc["parameters"]["K"] = 1.5;
+    QVERIFY(window_->runDocument(doc));
+    auto* pane = window_->findChild<QDockWidget*>("results_dock");
+    QVERIFY(pane && pane->isVisible());
+    window_->mapPanel()->searchFixedPointAt(3.1, 0.05);
+    QTRY_VERIFY_WITH_TIMEOUT(window_->results().contains("fixed point ("), 20000);
+    window_->statusBar()->clearMessage();
+    QTest::qWait(50);
+    QVERIFY2(window_->results().contains("elliptic; multipliers"), qPrintable(window_->results()));
+    QVERIFY(keep(window_->grab().toImage(), "window_results.png"));
+    window_->findChild<QPushButton*>("clear_results")->click();
+    QVERIFY(window_->results().isEmpty());
+  }
+
+  // The tool manager's rows tell trajectories apart (start point, colour swatch), its buttons are enabled
+  // only when they apply, Delete asks first, and the Windows menu shows a closed dock again.
+  void toolManagerRowsButtonsAndDelete() {
+    nlohmann::json doc = loadScene(defaultScenePath("standard_map")).document;
+    doc["parameters"]["K"] = 1.5;
+    doc["poincare"] = {{"points", 1e12}}; // runs until stopped
+    QVERIFY(window_->runDocument(doc));
+    MapPanel* map = window_->mapPanel();
+    QVERIFY(map->startAt(0.25, 0.5));
+    ToolManager* tools = window_->toolManager();
+    const int id = map->jobs().jobs().back()->id();
+    tools->refresh();
+    tools->select(id);
+    QTreeWidgetItem* row = tools->tree()->currentItem();
+    QVERIFY(row);
+    QCOMPARE(row->text(4), QString("(0.25, 0.5)"));
+    QVERIFY(!row->icon(1).isNull());
+    const auto button = [&](const char* name) { return tools->findChild<QPushButton*>(name); };
+    QVERIFY(button("stop")->isEnabled());
+    QVERIFY(!button("start")->isEnabled());
+    QVERIFY(!button("edit")->isEnabled());
+    QVERIFY(!button("find parent")->isEnabled());
+    QVERIFY(button("colour…")->isEnabled());
+    tools->stopSelected();
+    QVERIFY(!button("stop")->isEnabled());
+    QVERIFY(button("start")->isEnabled() && button("edit")->isEnabled());
+    QVERIFY(button("stop")->toolTip().contains("not running"));
+    // Delete asks: No keeps the tool, Yes deletes it
+    const auto answer = [](QMessageBox::StandardButton b) {
+      QTimer::singleShot(300, [b] {
+        if (auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget()))
+          box->button(b)->click();
+      });
+    };
+    answer(QMessageBox::No);
+    button("delete")->click();
+    QVERIFY(map->jobs().find(id));
+    answer(QMessageBox::Yes);
+    button("delete")->click();
+    QVERIFY(!map->jobs().find(id));
+    tools->refresh();
+    QVERIFY(!tools->selected() && !button("delete")->isEnabled());
+    // a closed dock comes back from the Windows menu
+    auto* dock = window_->findChild<QDockWidget*>("tools");
+    dock->close();
+    QVERIFY(!dock->isVisible());
+    QMenu* windows = nullptr;
+    for (QAction* a : window_->menuBar()->actions())
+      if (a->text() == "&Windows") windows = a->menu();
+    QVERIFY(windows);
+    QAction* reopen = nullptr;
+    for (QAction* a : windows->actions())
+      if (a->text() == "Tool manager") reopen = a;
+    QVERIFY(reopen);
+    reopen->trigger();
+    QVERIFY(dock->isVisible());
   }
 
   // manual §2.4.3: a running continuation feeds the multipliers filter, a point whenever its parameter moved
