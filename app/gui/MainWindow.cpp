@@ -227,6 +227,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
                     if (!path.isEmpty()) openSweep(path);
                   })
       ->setToolTip("a tool's number over a grid of parameters or initial points; click a cell to open it");
+  file->addAction("Snapshot…\tCtrl+S", this, &MainWindow::snapshot) // the key is the toolbar action's
+      ->setToolTip("the 3D view as a PNG (Ctrl+S; also on the toolbar)");
   file->addAction("Export map…", this,
                   [this] {
                     if (scene_)
@@ -477,7 +479,16 @@ void MainWindow::showStatus() {
 }
 
 void MainWindow::snapshot() {
-  const QString path = QFileDialog::getSaveFileName(this, "Save snapshot", "snapshot.png", "PNG (*.png)");
+  // proposed in the pictures folder (not the working directory, often the source tree), named by the problem
+  // and the time shown
+  QString folder = QStandardPaths::writableLocation(QStandardPaths::PicturesLocation);
+  if (folder.isEmpty() || !QDir(folder).exists()) folder = QDir::homePath();
+  const QString name =
+      QString("%1-t%2.png")
+          .arg(scene_ ? QString::fromStdString(scene_->model->info().id) : QString("rollviz"))
+          .arg(shownTime_, 0, 'f', 2);
+  const QString path =
+      QFileDialog::getSaveFileName(this, "Save snapshot", QDir(folder).filePath(name), "PNG (*.png)");
   if (path.isEmpty()) return;
   if (!snapshotTo(path)) QMessageBox::warning(this, "rollviz", "Cannot write " + path);
 }
@@ -487,7 +498,9 @@ bool MainWindow::snapshotTo(const QString& path) {
   const QString part = path + ".part.png";
   if (!view_->grabFramebuffer().save(part, "PNG")) return QFile::remove(part), false;
   QFile::remove(path);
-  return QFile::rename(part, path);
+  if (!QFile::rename(part, path)) return false;
+  report("snapshot written: " + path);
+  return true;
 }
 
 bool MainWindow::startRecording(const QString& path, const VideoSpec& spec) {

@@ -141,6 +141,7 @@ private slots:
   void snapshotWritesAPng() {
     const QString path = dir_.filePath("snap.png");
     QVERIFY(window_->snapshotTo(path));
+    QVERIFY(window_->results().contains("snapshot written: " + path)); // said, and kept
     const QImage img(path);
     QCOMPARE(img.size(), window_->view()->grabFramebuffer().size());
     QVERIFY(varied(img));
