@@ -625,6 +625,17 @@ private slots:
              qPrintable(label->text()));
     QVERIFY(view->grabFramebuffer() == still);
     QVERIFY(keep(map->grab().toImage(), "window_map_held.png"));
+    // the wheel zooms in, and the zoom stays
+    QWheelEvent wheel(QPointF(onPoint), view->mapToGlobal(QPointF(onPoint)), QPoint(), QPoint(0, 120),
+                      Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+    QApplication::sendEvent(view, &wheel);
+    view->grabFramebuffer();
+    const auto zoomed = map->chart().ranges();
+    QVERIFY2(zoomed[1] - zoomed[0] < 0.95 * (all[1] - all[0]),
+             qPrintable(QString::number(zoomed[1] - zoomed[0])));
+    map->drain();
+    view->grabFramebuffer();
+    QVERIFY(map->chart().ranges() == zoomed);
   }
 
   // A tool's result stays in the Results dock when the status bar's message is gone; Clear empties it.
