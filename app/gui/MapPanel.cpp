@@ -531,10 +531,7 @@ void MapPanel::drain() {
 }
 
 void MapPanel::removeJob(Job& job) {
-  std::vector<const Job*> gone{&job};
-  for (std::size_t i = 0; i < gone.size(); ++i)
-    for (const Job* c : jobs_.children(*gone[i]))
-      gone.push_back(c);
+  const std::vector<Job*> gone = jobs_.subtree(job);
   const auto isGone = [&](const Job* j) { return std::find(gone.begin(), gone.end(), j) != gone.end(); };
   for (auto& s : series_)
     if (s.megnoJob && isGone(s.megnoJob) && !isGone(s.job)) { // its MEGNO alone: back to its own colour

@@ -139,7 +139,7 @@ void ToolManager::updateButtons() {
   const bool any = !all.empty();
   const bool anyRunning = std::any_of(all.begin(), all.end(), [](const Job* k) { return k->running(); });
   const bool running = j && j->running(), finished = j && j->status() == Job::Status::Finished;
-  const bool drawsPoints = j && look_ && look_(j->id()).colour && !j->parent();
+  const bool drawsPoints = j && look_ && look_(j->id()).colour; // a colour: a trajectory of the map
   const auto enable = [&](const char* name, bool on, const char* whyNot) {
     auto& [b, tip] = buttons_.at(name);
     b->setEnabled(on);
@@ -159,16 +159,9 @@ void ToolManager::updateButtons() {
 }
 
 bool ToolManager::confirmDelete() {
-  const Job* j = selected();
+  Job* j = selected();
   if (!j) return false;
-  std::size_t under = 0;
-  std::vector<const Job*> stack{j};
-  while (!stack.empty()) {
-    const Job* k = stack.back();
-    stack.pop_back();
-    for (const Job* c : jobs_.children(*k))
-      stack.push_back(c), ++under;
-  }
+  const std::size_t under = jobs_.subtree(*j).size() - 1;
   QString text = QString("Delete tool %1 (%2)").arg(j->id()).arg(QString::fromStdString(j->task().name()));
   if (under > 0) text += QString(" and the %1 tool%2 under it").arg(under).arg(under > 1 ? "s" : "");
   text += "? What it computed and drew goes with it.";

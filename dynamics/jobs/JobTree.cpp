@@ -27,6 +27,14 @@ void JobTree::remove(Job& job) {
   std::erase_if(jobs_, [&](const std::unique_ptr<Job>& j) { return j.get() == &job; });
 }
 
+std::vector<Job*> JobTree::subtree(Job& job) const {
+  std::vector<Job*> out{&job};
+  for (std::size_t i = 0; i < out.size(); ++i)
+    for (Job* c : children(*out[i]))
+      out.push_back(c);
+  return out;
+}
+
 void JobTree::stopAll() {
   for (auto& j : jobs_)
     j->stop();

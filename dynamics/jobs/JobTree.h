@@ -20,6 +20,8 @@ public:
   void removeAll();
   std::vector<Job*> jobs() const;
   std::vector<Job*> children(const Job& job) const;
+  /// The job and everything under it, each parent before its children.
+  std::vector<Job*> subtree(Job& job) const;
   Job* find(int id) const;
 
 private:
