@@ -82,7 +82,9 @@ VisualScene::VisualScene(const Model& model, const ViewOptions& options, const E
     add(std::make_unique<PhaseCurveObject>(model.isMap() ? "points" : "curve", scale_, cap, model.isMap()));
     lo = {-scale_, -scale_, -scale_}, hi = {scale_, scale_, scale_};
   }
-  add(std::make_unique<SceneAxesObject>("scene_axes", options.axes, lo, hi));
+  auto axes = std::make_unique<SceneAxesObject>("scene_axes", options.axes, lo, hi);
+  axes->setFollowsMotion(options.kind != ViewKind::Apex);
+  add(std::move(axes));
   show(0.0, x0);
   resetCamera();
 }

@@ -1,6 +1,7 @@
 #include "scenes/SceneCharts.h"
 
 #include "dynamics/core/Errors.h"
+#include "dynamics/core/Format.h"
 #include "dynamics/tools/FixedPoint.h"
 #include "dynamics/tools/FourierSpectrum.h"
 #include "dynamics/tools/Lyapunov.h"
@@ -244,7 +245,10 @@ std::unique_ptr<Chart> lyapunovChart(const Scene& scene, const ChartRequest& r, 
       },
       control);
   auto chart = std::make_unique<PoincareChart>("t", "Lyapunov exponents");
-  drawCurves(*chart, t, ex);
+  std::vector<std::string> names; // each exponent with its last estimate: the number the chart is read for
+  for (std::size_t i = 0; i < ex.size(); ++i)
+    names.push_back(format("L%zu = %.6g", i + 1, ex[i].empty() ? 0.0 : ex[i].back()));
+  drawCurves(*chart, t, ex, {}, names);
   return chart;
 }
 
@@ -257,7 +261,7 @@ std::unique_ptr<Chart> megnoChart(const Scene& scene, const ChartRequest& r, con
   y.resize(1);
   progress.run.run([&](const MegnoEstimate& e) { t.push_back(e.time), y[0].push_back(e.megno); }, control);
   auto chart = std::make_unique<PoincareChart>("t", "MEGNO <Y>");
-  drawCurves(*chart, t, y);
+  drawCurves(*chart, t, y, {}, {format("<Y> = %.6g", y[0].empty() ? 0.0 : y[0].back())});
   return chart;
 }
 
@@ -300,7 +304,12 @@ std::unique_ptr<Chart> sceneChart(const Scene& scene, const std::string& view, c
                                   long points, const std::string& diagram,
                                   std::unique_ptr<ChartProgress>* progress) {
   for (const auto& [name, build] : chartBuilders())
-    if (name == view) return build(scene, {points, diagram, progress}, control);
+    if (name == view) {
+      auto chart = build(scene, {points, diagram, progress}, control);
+      if (auto* plane = dynamic_cast<PoincareChart*>(chart.get())) // every chart says what it is
+        plane->setTitle(chartTitle(view) + (diagram.empty() ? "" : " " + diagram));
+      return chart;
+    }
   std::string known;
   for (const auto& v : chartViews())
     known += " " + v;

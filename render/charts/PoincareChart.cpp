@@ -6,17 +6,21 @@
 #include <limits>
 #include <vtkAxis.h>
 #include <vtkCallbackCommand.h>
+#include <vtkChartLegend.h>
 #include <vtkChartXY.h>
+#include <vtkColorLegend.h>
 #include <vtkColorTransferFunction.h>
 #include <vtkCommand.h>
 #include <vtkContextScene.h>
 #include <vtkContextView.h>
 #include <vtkDoubleArray.h>
 #include <vtkImageData.h>
+#include <vtkObjectFactory.h>
 #include <vtkPlot.h>
 #include <vtkPlotHistogram2D.h>
 #include <vtkPlotPoints.h>
 #include <vtkPointData.h>
+#include <vtkRect.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkTable.h>
@@ -24,6 +28,29 @@
 #include <vtkTooltipItem.h>
 
 namespace rv {
+
+namespace {
+// A heat map's colour bar: the chart's colour legend kept just right of the plot area (the chart lays out
+// the plot area at each paint; vtkChartHistogram2D does the same for its own legend).
+class ColourBar final : public vtkColorLegend {
+public:
+  static ColourBar* New();
+  vtkTypeMacro(ColourBar, vtkColorLegend);
+  vtkChartXY* owner = nullptr; ///< the chart it stands beside (which owns it)
+  ColourBar() { Axis->GetLabelProperties()->SetFontSize(12); }
+  bool Paint(vtkContext2D* painter) override {
+    if (owner) {
+      const int* p1 = owner->GetPoint1();
+      const int* p2 = owner->GetPoint2();
+      SetPosition(vtkRectf(static_cast<float>(p2[0] + 12), static_cast<float>(p1[1]), 16.0f,
+                           static_cast<float>(p2[1] - p1[1])));
+    }
+    Update(); // the bar's picture of the colours (nothing calls it for an item added to a chart)
+    return vtkColorLegend::Paint(painter);
+  }
+};
+vtkStandardNewMacro(ColourBar);
+} // namespace
 
 Rgb seriesColor(int i) {
   static const Rgb palette[] = {{0.12, 0.38, 0.85}, {0.85, 0.25, 0.15}, {0.15, 0.6, 0.25},  {0.6, 0.25, 0.7},
@@ -52,6 +79,25 @@ PoincareChart::PoincareChart(const std::string& xTitle, const std::string& yTitl
 }
 
 PoincareChart::~PoincareChart() = default; // (no GL work here: the window's context may be gone already)
+
+void PoincareChart::setTitle(const std::string& title) {
+  chart_->SetTitle(title);
+  chart_->GetTitleProperties()->SetFontSize(16);
+  chart_->GetTitleProperties()->SetBold(true);
+}
+
+void PoincareChart::setLegend(int index, const std::string& name) {
+  vtkPlot* plot = chart_->GetPlot(index);
+  if (!plot) return;
+  if (!chart_->GetShowLegend()) { // the first name: every series so far unnamed, left out of the legend
+    for (vtkIdType i = 0; i < chart_->GetNumberOfPlots(); ++i)
+      chart_->GetPlot(i)->SetLegendVisibility(false);
+    chart_->SetShowLegend(true);
+    chart_->GetLegend()->GetLabelProperties()->SetFontSize(13);
+  }
+  plot->SetLabel(name);
+  plot->SetLegendVisibility(true);
+}
 
 void PoincareChart::setTitles(const std::string& x, const std::string& y) {
   chart_->GetAxis(vtkAxis::BOTTOM)->SetTitle(x);
@@ -112,6 +158,7 @@ void PoincareChart::setPoints(vtkPlot* plot, int index, const std::vector<double
 
 int PoincareChart::addSeries(const std::vector<double>& x, const std::vector<double>& y, const Rgb& c) {
   vtkPlot* plot = chart_->AddPlot(vtkChart::POINTS);
+  plot->SetLegendVisibility(!chart_->GetShowLegend()); // (setLegend names it)
   const int index = static_cast<int>(chart_->GetNumberOfPlots()) - 1;
   setPoints(plot, index, x, y);
   plot->SetColor(static_cast<unsigned char>(255 * c[0]), static_cast<unsigned char>(255 * c[1]),
@@ -130,6 +177,7 @@ int PoincareChart::addCurve(const std::vector<double>& x, const std::vector<doub
   const auto flush = [&] {
     if (px.size() >= 2) {
       vtkPlot* plot = chart_->AddPlot(vtkChart::LINE);
+      plot->SetLegendVisibility(!chart_->GetShowLegend()); // (setLegend names it)
       plot->SetInputData(tableOf(px, py, chart_->GetNumberOfPlots()), 0, 1);
       plot->SetColor(static_cast<unsigned char>(255 * c[0]), static_cast<unsigned char>(255 * c[1]),
                      static_cast<unsigned char>(255 * c[2]), 255);
@@ -173,8 +221,15 @@ void PoincareChart::addImage(int nx, int ny, double x0, double dx, double y0, do
   vtkNew<vtkPlotHistogram2D> plot;
   plot->SetInputData(image);
   plot->SetTransferFunction(colors);
+  plot->SetLegendVisibility(false);
   chart_->AddPlot(plot);
   chart_->RecalculateBounds();
+  vtkNew<ColourBar> bar;
+  bar->owner = chart_;
+  bar->SetTransferFunction(colors);
+  bar->DrawBorderOn();
+  chart_->AddItem(bar);
+  chart_->SetHiddenAxisBorder(std::max(chart_->GetHiddenAxisBorder(), 72)); // room for the bar's numbers
 }
 
 void PoincareChart::setRanges(double x0, double x1, double y0, double y1) {

@@ -30,7 +30,8 @@ public:
   /// Adds a curve through (x[i], y[i]), broken where a value is NaN; returns the index of its first piece.
   int addCurve(const std::vector<double>& x, const std::vector<double>& y, const Rgb& color, float width = 2);
   /// A heat map of values on a regular grid (x fastest: values[j * nx + i] at (x0 + i dx, y0 + j dy)),
-  /// coloured from `low` (at the smallest value) to `high`; NaN is drawn transparent.
+  /// coloured from `low` (at the smallest value) to `high`; NaN is drawn transparent. A colour bar with the
+  /// values' scale stands right of the plot.
   void addImage(int nx, int ny, double x0, double dx, double y0, double dy, const std::vector<double>& values,
                 const Rgb& low, const Rgb& high);
   /// The label drawn over the point under the cursor (its series and coordinates); off, nothing of the cursor
@@ -50,6 +51,10 @@ public:
   void setSeries(int index, const std::vector<double>& x, const std::vector<double>& y);
   /// Names the axes.
   void setTitles(const std::string& x, const std::string& y);
+  /// The title over the chart (the tool's name).
+  void setTitle(const std::string& title);
+  /// Names series `index` in the chart's legend (shown once a series has a name; unnamed ones are left out).
+  void setLegend(int index, const std::string& name);
   /// Removes every series.
   void clear();
   /// Map coordinates of a point of the scene (pixels from the bottom left); false outside the plot area.

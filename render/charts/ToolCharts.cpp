@@ -81,9 +81,12 @@ void drawDiagram(PoincareChart& chart, const Diagram& d, const std::vector<Diagr
 }
 
 void drawCurves(PoincareChart& chart, const std::vector<double>& x,
-                const std::vector<std::vector<double>>& ys, const std::vector<std::array<double, 2>>& marks) {
-  for (std::size_t k = 0; k < ys.size(); ++k)
-    chart.addCurve(x, ys[k], seriesColor(static_cast<int>(k)));
+                const std::vector<std::vector<double>>& ys, const std::vector<std::array<double, 2>>& marks,
+                const std::vector<std::string>& names) {
+  for (std::size_t k = 0; k < ys.size(); ++k) {
+    const int first = chart.addCurve(x, ys[k], seriesColor(static_cast<int>(k)));
+    if (first >= 0 && k < names.size()) chart.setLegend(first, names[k]);
+  }
   if (!marks.empty()) {
     std::vector<double> mx, my;
     for (const auto& m : marks)

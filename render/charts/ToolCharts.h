@@ -26,10 +26,11 @@ void drawMultipliers(PoincareChart& chart, const std::vector<std::vector<std::co
 void drawDiagram(PoincareChart& chart, const Diagram& diagram, const std::vector<DiagramPoint>& states);
 
 /// One curve per series against a common abscissa (Lyapunov exponents against time, the spectrum), with
-/// optional marked points (peaks).
+/// optional marked points (peaks); `names` (one per curve, or none) label the curves in a legend.
 void drawCurves(PoincareChart& chart, const std::vector<double>& x,
                 const std::vector<std::vector<double>>& ys,
-                const std::vector<std::array<double, 2>>& marks = {});
+                const std::vector<std::array<double, 2>>& marks = {},
+                const std::vector<std::string>& names = {});
 
 /// A family of fixed points: parameter against a coordinate, one colour per type (elliptic blue, hyperbolic
 /// red, with reflection orange, others grey).

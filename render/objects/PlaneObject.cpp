@@ -52,13 +52,16 @@ void PlaneObject::attach(vtkRenderer* renderer) {
 void PlaneObject::apply(const ObjectOptions& o) {
   const Rgb light = o.color.value_or(Rgb{0.92, 0.92, 0.89});
   const Rgb dark = {light[0] * 0.9, light[1] * 0.9, light[2] * 0.9};
-  actor_->SetTexture(textureFor(o, [&] { return makeCheckerTexture(light, dark, {0.55, 0.55, 0.6}); }));
+  // "grid" (and "both") draw the plane's grid lines over the floor, on a plain sheet: a wireframe of the one
+  // quad would be its four edges, the floor gone
+  const bool grid = o.style != SurfaceStyle::Fill;
+  actor_->SetTexture(textureFor(o, [&] {
+    return makeCheckerTexture(light, grid ? light : dark, {0.45, 0.45, 0.55});
+  }));
   const Rgb base = actor_->GetTexture() ? Rgb{1, 1, 1} : light; // a texture carries the colour itself
   actor_->GetProperty()->SetColor(base[0], base[1], base[2]);
   actor_->SetVisibility(o.enabled);
   actor_->GetProperty()->SetOpacity(o.opacity.value_or(1.0));
-
-  actor_->GetProperty()->SetRepresentation(o.style == SurfaceStyle::Grid ? VTK_WIREFRAME : VTK_SURFACE);
 }
 
 void PlaneObject::show(const FrameState& s) {

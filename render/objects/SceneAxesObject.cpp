@@ -3,6 +3,7 @@
 #include "dynamics/core/Format.h"
 
 #include <algorithm>
+#include <cmath>
 #include <vtkActor.h>
 #include <vtkAxisActor.h>
 #include <vtkOutlineSource.h>
@@ -17,7 +18,8 @@ namespace rv {
 SceneAxesObject::SceneAxesObject(std::string name, const AxesOptions& axes,
                                  const std::array<double, 3>& fallbackMin,
                                  const std::array<double, 3>& fallbackMax)
-    : VisualObject(std::move(name)), axes_(axes), fallbackLo_(fallbackMin), fallbackHi_(fallbackMax) {
+    : VisualObject(std::move(name)), axes_(axes), fallbackLo_(fallbackMin), fallbackHi_(fallbackMax),
+      startLo_(fallbackMin), startHi_(fallbackMax) {
   for (int i = 0; i < 3; ++i) {
     auto a = vtkSmartPointer<vtkAxisActor>::New();
     a->SetAxisType(i); // VTK_AXIS_TYPE_X, _Y, _Z
@@ -54,6 +56,29 @@ void SceneAxesObject::attach(vtkRenderer* renderer) {
 
 void SceneAxesObject::apply(const ObjectOptions& o) {
   enabled_ = o.enabled;
+  rebuild();
+}
+
+void SceneAxesObject::advance(const FrameState& s) {
+  if (labelLo_ || !follows_) return; // a chart's box has the chart's range, the apex view the sphere's
+  std::array<double, 3> p{};
+  if (s.pose)
+    p = {s.pose->contact[0], s.pose->contact[1], s.pose->contact[2]};
+  else
+    for (int i = 0; i < 3; ++i)
+      p[i] = i < s.model.dimension() ? s.x[i] : 0.0;
+  bool grew = false;
+  for (int i = 0; i < 3; ++i) {
+    if (!std::isfinite(p[i])) return;
+    const double margin = 0.25 * (fallbackHi_[i] - fallbackLo_[i]);
+    if (p[i] < fallbackLo_[i]) fallbackLo_[i] = p[i] - margin, grew = true;
+    if (p[i] > fallbackHi_[i]) fallbackHi_[i] = p[i] + margin, grew = true;
+  }
+  if (grew && !(axes_.min && axes_.max)) rebuild();
+}
+
+void SceneAxesObject::clear() {
+  fallbackLo_ = startLo_, fallbackHi_ = startHi_;
   rebuild();
 }
 

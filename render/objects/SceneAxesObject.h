@@ -7,6 +7,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 #include <vtkSmartPointer.h>
 
@@ -23,6 +24,15 @@ public:
                   const std::array<double, 3>& fallbackMax);
   void attach(vtkRenderer* renderer) override;
   void apply(const ObjectOptions& options) override;
+  /// Without a range of its own the box grows to hold the motion: the contact point of a body, the first
+  /// three coordinates of a phase curve (by a quarter of its size each time, so it is rebuilt seldom).
+  void advance(const FrameState& s) override;
+  /// Whether the box grows with the motion (not in the apex view: its box is the unit sphere's).
+  void setFollowsMotion(bool follows) { follows_ = follows; }
+  /// Back to the region the scene started in.
+  void clear() override;
+  /// The range drawn now (min and max of x, y, z).
+  std::pair<std::array<double, 3>, std::array<double, 3>> range() const { return {lo_, hi_}; }
   /// Changes the style, range and ticks (the scene's view.axes).
   void setAxes(const AxesOptions& axes);
   /// Writes numbers from [lo, hi] (and these titles) along axes that span another world range (a chart
@@ -35,8 +45,9 @@ public:
 private:
   void rebuild();
   AxesOptions axes_;
-  std::array<double, 3> lo_, hi_, fallbackLo_, fallbackHi_;
+  std::array<double, 3> lo_, hi_, fallbackLo_, fallbackHi_, startLo_, startHi_;
   bool enabled_ = true;
+  bool follows_ = true;
   std::optional<std::array<double, 3>> labelLo_, labelHi_;
   std::array<std::string, 3> titles_ = {"x", "y", "z"};
   std::array<vtkSmartPointer<vtkAxisActor>, 3> axis_;

@@ -17,6 +17,7 @@
 #include <numbers>
 #include <vtkImageData.h>
 #include <vtkPNGReader.h>
+#include <vtkRenderer.h>
 
 namespace rv {
 namespace {
@@ -100,6 +101,71 @@ TEST(SceneAxes, TicksAreWhereTheRangeAndCountsPutThem) {
   AxesOptions none;
   p->visual->setAxes(none);
   EXPECT_GT(test::pixelsChanged(with, renderPlayed(*p->visual)), 300);
+}
+
+// Without a range of their own the axes hold the motion: the Lorenz attractor leaves the box its start point
+// gives (|x0| = sqrt 3) at once, and by t = 20 has reached z > 40 and |x| > 15 (its known extent); the box
+// covers every point of the curve, and Reset (clear) gives the starting box back.
+TEST(SceneAxes, TheBoxGrowsToHoldTheCurve) {
+  const auto p = play("lorenz", 20.0, {"view.axes.style=box"});
+  auto* axes = dynamic_cast<SceneAxesObject*>(p->visual->find("scene_axes"));
+  ASSERT_NE(axes, nullptr);
+  const auto [lo, hi] = axes->range();
+  EXPECT_GT(hi[2], 40.0);
+  EXPECT_LT(lo[0], -15.0);
+  EXPECT_GT(hi[0], 15.0);
+  // every point of the integration is inside: replay it and check
+  auto integrator = p->scene.startIntegrator();
+  int outside = 0;
+  while (integrator->time() < 20) {
+    integrator->step();
+    for (int i = 0; i < 3; ++i)
+      outside += integrator->state()[i] < lo[i] || integrator->state()[i] > hi[i];
+  }
+  EXPECT_EQ(outside, 0);
+  p->visual->clear();
+  const auto [lo0, hi0] = axes->range();
+  EXPECT_NEAR(hi0[2], std::sqrt(3.0), 1e-12);
+  // a range of its own stays
+  const auto fixed =
+      play("lorenz", 5.0, {"view.axes.style=box", "view.axes.min=[-1,-1,-1]", "view.axes.max=[1,1,1]"});
+  const auto [flo, fhi] = dynamic_cast<SceneAxesObject*>(fixed->visual->find("scene_axes"))->range();
+  EXPECT_EQ(fhi[2], 1.0);
+  // the apex view's box is the unit sphere's wherever the body rolls
+  const auto apex = play("chaplygin_ball", 30.0, {"view.kind=apex", "view.axes.style=box"});
+  const auto [alo, ahi] = dynamic_cast<SceneAxesObject*>(apex->visual->find("scene_axes"))->range();
+  EXPECT_EQ(alo[0], -1.0);
+  EXPECT_EQ(ahi[1], 1.0);
+}
+
+// "grid" draws the plane's grid over the floor: the floor stays (a wireframe of its one quad would leave the
+// background showing through where the floor was)
+TEST(Objects, GridStyleKeepsTheFloor) {
+  const auto p = play("chaplygin_ball", 0.5);
+  const Image fill = renderPlayed(*p->visual);
+  ObjectOptions grid = p->visual->options().object("plane");
+  grid.style = SurfaceStyle::Grid;
+  p->visual->setOptions("plane", grid);
+  const Image lines = renderPlayed(*p->visual);
+  EXPECT_TRUE(test::isVaried(lines));
+  if (const char* out = std::getenv("ROLLVIZ_TEST_OUTPUT")) {
+    writePng(fill, std::string(out) + "/plane_fill.png");
+    writePng(lines, std::string(out) + "/plane_grid.png");
+  }
+  // pixels of the window's background colour: as few as with the filled floor (the camera sees floor
+  // everywhere here; a wireframe of the plane's one quad would show the background through it)
+  double bg[3];
+  p->visual->renderer()->GetBackground(bg);
+  const auto background = [&](const Image& img) {
+    long n = 0;
+    for (std::size_t k = 0; k + 2 < img.rgb.size(); k += 3)
+      n += std::abs(img.rgb[k] - 255 * bg[0]) + std::abs(img.rgb[k + 1] - 255 * bg[1]) +
+               std::abs(img.rgb[k + 2] - 255 * bg[2]) <
+           12;
+    return n;
+  };
+  EXPECT_LT(background(lines), background(fill) + 200) << background(fill);
+  EXPECT_GT(test::pixelsChanged(fill, lines, 20), 500); // the checker gave way to lines on a plain sheet
 }
 
 TEST(Objects, TextureNoneAndAPngChangeTheBall) {
