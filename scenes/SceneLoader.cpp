@@ -353,8 +353,8 @@ Scene sceneFromJson(json doc, const std::string& source, const std::vector<Scene
   requireObject(doc, root);
   applyOverrides(doc, overrides);
   for (const auto& [key, value] : doc.items()) {
-    static const std::set<std::string> known{"problem", "parameters", "integrator", "initial",
-                                             "view",    "title",      "description"};
+    static const std::set<std::string> known{"problem", "parameters", "integrator",  "initial",
+                                             "view",    "title",      "description", "results"};
     if (!known.count(key) && !findToolSection(key)) {
       std::string list;
       for (const auto& k : known)
@@ -413,6 +413,12 @@ Scene sceneFromJson(json doc, const std::string& source, const std::vector<Scene
   if (!doc.contains("initial")) root.fail("missing \"initial\" (a map point or a state)");
   scene.initialState = readInitial(doc["initial"], root / "initial", *scene.model, scene.poincare);
   if (doc.contains("view")) scene.view = readView(doc["view"], root / "view");
+  if (doc.contains("results")) { // the GUI's Results kept with the scene: lines of text
+    const json& r = doc["results"];
+    if (!r.is_array()) (root / "results").fail("expected an array of lines of text");
+    for (std::size_t i = 0; i < r.size(); ++i)
+      if (!r[i].is_string()) (root / "results" / std::to_string(i)).fail("expected a line of text");
+  }
   scene.document = std::move(doc);
   return scene;
 }

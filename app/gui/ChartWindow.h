@@ -15,6 +15,10 @@
 
 namespace rv {
 
+/// A computation's error as the window says it: without the command line's flag ("--view spectrum: "), and a
+/// value the scene lacks ("the scene has no spectrum.function") named with the control panel's tab to set it.
+QString inGuiWords(std::string error);
+
 class ChartWindow : public FilterWindow {
   Q_OBJECT
 public:
@@ -24,6 +28,8 @@ public:
               const std::string& view, QWidget* parent = nullptr, const std::string& diagram = "");
   ~ChartWindow() override;
   bool ready() const { return chart_ != nullptr; }
+  /// The chart drawn (nullptr until it is ready).
+  const std::shared_ptr<Chart>& drawn() const { return chart_; }
   /// Stops the computation (Cancel): what was computed so far is drawn where the view can (a family, a
   /// plot), else the window says it stopped.
   void cancel();

@@ -19,6 +19,8 @@ ControlPanel::ControlPanel(QWidget* parent) : QWidget(parent) {
   auto* layout = new QVBoxLayout(this);
   tabs_ = new QTabWidget(this);
   tabs_->setObjectName("tabs");
+  tabs_->setElideMode(Qt::ElideNone); // whole titles, scroll arrows when they do not fit
+  tabs_->setUsesScrollButtons(true);
   layout->addWidget(tabs_, 1);
   auto* apply = new QPushButton("Apply", this);
   apply->setObjectName("apply");
@@ -67,6 +69,8 @@ void ControlPanel::selectTool(const std::string& id) {
 
 void ControlPanel::setScene(const Scene& scene) {
   scene_ = &scene;
+  // the tab shown stays shown when the scene runs again (Apply on the Method tab stays there)
+  const QString shown = tabs_->count() > 0 ? tabs_->tabText(tabs_->currentIndex()) : QString();
   while (tabs_->count() > 0) {
     QWidget* w = tabs_->widget(0);
     tabs_->removeTab(0);
@@ -81,6 +85,7 @@ void ControlPanel::setScene(const Scene& scene) {
     auto* scroll = new QScrollArea;
     scroll->setWidget(form);
     scroll->setWidgetResizable(true);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff); // the form fits the panel's width
     QWidget* tab = scroll;
     if (chooser) {
       tab = new QWidget;
@@ -106,20 +111,23 @@ void ControlPanel::setScene(const Scene& scene) {
     if (scene_ && id != scene_->model->info().id) emit problemChosen(id);
   });
   add("problem", "Problem", scene.model->info().parameters, scene.model->parameters(), problems);
-  methodBox_ = new QComboBox;
-  methodBox_->setObjectName("method_choice");
-  for (const auto& e : IntegratorRegistry::builtin().entries()) {
-    methodBox_->addItem(QString::fromStdString(e.id));
-    methodBox_->setItemData(methodBox_->count() - 1,
-                            QString::fromStdString(e.title + " (" + e.reference + ")"), Qt::ToolTipRole);
-  }
+  methodBox_ = nullptr, methodScroll_ = nullptr;
   method_ = scene.integratorEntry->id;
-  methodBox_->setCurrentText(QString::fromStdString(method_));
-  methodBox_->setToolTip("the integration method (manual §2.2); Apply runs the scene with it");
-  connect(methodBox_, &QComboBox::activated, this,
-          [this](int i) { chooseMethod(methodBox_->itemText(i).toStdString()); });
-  methodScroll_ =
-      add("method", "Method", *scene.integratorEntry->parameters, *scene.integratorParameters, methodBox_);
+  if (!scene.model->isMap()) { // an explicit map is iterated: no method to choose
+    methodBox_ = new QComboBox;
+    methodBox_->setObjectName("method_choice");
+    for (const auto& e : IntegratorRegistry::builtin().entries()) {
+      methodBox_->addItem(QString::fromStdString(e.id));
+      methodBox_->setItemData(methodBox_->count() - 1,
+                              QString::fromStdString(e.title + " (" + e.reference + ")"), Qt::ToolTipRole);
+    }
+    methodBox_->setCurrentText(QString::fromStdString(method_));
+    methodBox_->setToolTip("the integration method (manual §2.2); Apply runs the scene with it");
+    connect(methodBox_, &QComboBox::activated, this,
+            [this](int i) { chooseMethod(methodBox_->itemText(i).toStdString()); });
+    methodScroll_ =
+        add("method", "Method", *scene.integratorEntry->parameters, *scene.integratorParameters, methodBox_);
+  }
   tabs_->addTab(toolsTab_, "Tools");
   observables_.clear();
   for (const auto& t : toolSections()) {
@@ -139,13 +147,15 @@ void ControlPanel::setScene(const Scene& scene) {
     }
     add(t.key, QString::fromStdString(t.title), *t.table, scene.tool(t.key), chooser);
   }
+  for (int i = 0; i < tabs_->count(); ++i)
+    if (tabs_->tabText(i) == shown) tabs_->setCurrentIndex(i);
 }
 
 bool ControlPanel::chooseMethod(const std::string& id) {
   const IntegratorEntry* entry = nullptr;
   for (const auto& e : IntegratorRegistry::builtin().entries())
     if (e.id == id) entry = &e;
-  if (!entry || !scene_) return false;
+  if (!entry || !scene_ || !methodScroll_) return false;
   if (id == method_) return true;
   method_ = id;
   methodBox_->setCurrentText(QString::fromStdString(id));

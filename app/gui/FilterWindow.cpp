@@ -7,6 +7,7 @@
 #include <QLabel>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QStackedWidget>
 #include <QVBoxLayout>
 #include <fstream>
 
@@ -16,20 +17,33 @@ FilterWindow::FilterWindow(const QString& title, const QString& fileName, QWidge
     : QWidget(parent, Qt::Window), fileName_(fileName) {
   setWindowTitle("rollviz — " + title);
   view_ = new QtVtkWidget(this);
+  placeholder_ = new QLabel(this);
+  placeholder_->setObjectName("placeholder");
+  placeholder_->setAlignment(Qt::AlignCenter);
+  placeholder_->setWordWrap(true);
+  placeholder_->setMargin(24);
+  placeholder_->setStyleSheet("background: white; color: #555; font-size: 15pt");
+  stack_ = new QStackedWidget(this);
+  stack_->addWidget(view_);
+  stack_->addWidget(placeholder_);
   status_ = new QLabel(this);
-  auto* save = new QPushButton("Save PNG…", this);
+  status_->setWordWrap(true);
+  status_->setTextInteractionFlags(Qt::TextSelectableByMouse); // a result or a reason can be copied
+  auto* save = save_ = new QPushButton("Save PNG…", this);
+  save->setObjectName("save_png");
   connect(save, &QPushButton::clicked, this, [this] {
     const QString path = QFileDialog::getSaveFileName(this, "Save chart", fileName_ + ".png", "PNG (*.png)");
     if (!path.isEmpty() && !savePng(path)) setStatus("cannot write " + path);
   });
-  auto* csv = new QPushButton("Save CSV…", this);
+  auto* csv = csv_ = new QPushButton("Save CSV…", this);
+  csv->setObjectName("save_csv");
   connect(csv, &QPushButton::clicked, this, [this] {
     const QString path =
         QFileDialog::getSaveFileName(this, "Save chart data", fileName_ + ".csv", "CSV (*.csv)");
     if (!path.isEmpty() && !saveCsv(path)) setStatus("cannot write " + path);
   });
   auto* layout = new QVBoxLayout(this);
-  layout->addWidget(view_, 1);
+  layout->addWidget(stack_, 1);
   bar_ = new QHBoxLayout;
   bar_->addWidget(status_, 1);
   bar_->addWidget(save);
@@ -62,6 +76,10 @@ void FilterWindow::setStatus(const QString& text) {
   status_->setText(text);
 }
 
+QString FilterWindow::status() const {
+  return status_->text();
+}
+
 bool saveChartCsv(const Chart& chart, const QString& path) {
   try {
     AtomicFile file(path.toStdString(), "csv");
@@ -78,9 +96,32 @@ bool saveChartCsv(const Chart& chart, const QString& path) {
 
 void FilterWindow::replaceView() {
   auto* fresh = new QtVtkWidget(this);
-  delete layout()->replaceWidget(view_, fresh);
+  const bool shown = stack_->currentWidget() == view_;
+  stack_->insertWidget(stack_->indexOf(view_), fresh);
+  stack_->removeWidget(view_);
   delete view_;
   view_ = fresh;
+  if (shown) stack_->setCurrentWidget(view_);
+}
+
+void FilterWindow::showPlaceholder(const QString& text) {
+  placeholder_->setText(text);
+  stack_->setCurrentWidget(placeholder_);
+}
+
+void FilterWindow::showView() {
+  stack_->setCurrentWidget(view_);
+}
+
+QString FilterWindow::placeholder() const {
+  return stack_->currentWidget() == placeholder_ ? placeholder_->text() : QString();
+}
+
+void FilterWindow::setSavable(bool savable, const QString& why) {
+  for (QPushButton* b : {save_, csv_}) {
+    b->setEnabled(savable);
+    b->setToolTip(savable ? QString() : why);
+  }
 }
 
 void exportChartDialog(QWidget* parent, QtVtkWidget* view, const Chart& chart, const QString& name,

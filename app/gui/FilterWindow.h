@@ -11,6 +11,7 @@ class QLabel;
 class QProgressBar;
 class QPushButton;
 class QHBoxLayout;
+class QStackedWidget;
 
 namespace rv {
 
@@ -38,8 +39,16 @@ protected:
   /// The chart shown (nullptr while there is none yet).
   virtual const Chart* chart() const = 0;
   void setStatus(const QString& text);
+  /// The status line's text.
+  QString status() const;
   /// A fresh chart view in place of the old one (a new chart is never attached to a view that drew another).
   void replaceView();
+  /// In place of the chart: a message ("computing …", why it failed) on a white page, not a black view.
+  void showPlaceholder(const QString& text);
+  /// The chart view again.
+  void showView();
+  /// Save PNG / Save CSV enabled or not (`why` their tooltip when not).
+  void setSavable(bool savable, const QString& why = {});
   /// The row under the chart, for a window's own controls (left of the save buttons).
   QHBoxLayout* bar() const { return bar_; }
   /// For windows whose chart is computed by a job: a progress bar and a stop button (`stopText`, `stopTip`)
@@ -48,8 +57,15 @@ protected:
   /// Shows the progress bar and the stop button at `fraction` while the job runs, hides them otherwise.
   void showProgress(bool running, double fraction);
 
+public:
+  /// The placeholder's text while it shows (empty while the view shows).
+  QString placeholder() const;
+
 private:
   QtVtkWidget* view_;
+  QStackedWidget* stack_;
+  QLabel* placeholder_;
+  QPushButton *save_, *csv_;
   QLabel* status_;
   QHBoxLayout* bar_;
   QProgressBar* progressBar_ = nullptr;

@@ -40,6 +40,7 @@
 #include <QPushButton>
 #include <QSaveFile>
 #include <QSettings>
+#include <QSignalBlocker>
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QTemporaryFile>
@@ -143,8 +144,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   resizeDocks({toolsDock, resultsDock}, {700, 500}, Qt::Horizontal);
   connect(control_, &ControlPanel::apply, this, [this](const nlohmann::json& doc) { runDocument(doc); });
   connect(control_, &ControlPanel::create, this, [this](const std::string& id) { createTool(id); });
-  connect(control_, &ControlPanel::problemChosen, this,
-          [this](const std::string& id) { openScene(QString::fromStdString(defaultScenePath(id))); });
+  connect(control_, &ControlPanel::problemChosen, this, [this](const std::string& id) { chooseProblem(id); });
   settings_ = new VisualizerSettings(this);
   auto* settingsDock = new QDockWidget("Visualizer settings", this);
   settingsDock->setObjectName("settings");
@@ -195,18 +195,20 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
                     view_->update();
                   })
       ->setToolTip("Put the camera back to the scene's placement");
-  auto* style = new QComboBox(this);
+  auto* style = styleBox_ = new QComboBox(this);
+  style->setObjectName("surface_style");
   style->addItems({"fill", "grid", "both"});
   style->setToolTip("how surfaces are drawn: filled, as a grid, or both");
   connect(style, &QComboBox::currentIndexChanged, this, [this](int i) {
     setStyleOfAll(i == 1 ? SurfaceStyle::Grid : i == 2 ? SurfaceStyle::Both : SurfaceStyle::Fill);
   });
   view->addWidget(style);
-  auto* axes = new QComboBox(this);
+  auto* axes = axesBox_ = new QComboBox(this);
+  axes->setObjectName("axes_style");
   axes->addItems({"no axes", "normal axes", "box axes"});
   axes->setToolTip("the scene's coordinate axes (ticks and range: settings, tab axis)");
   connect(axes, &QComboBox::currentIndexChanged, this, [this](int i) {
-    AxesOptions a = edits_.axes;
+    AxesOptions a = visual_ ? visual_->options().axes : edits_.axes; // the rest as shown
     a.style = static_cast<AxesOptions::Style>(i);
     editAxes(a);
   });
@@ -313,6 +315,7 @@ void MainWindow::editObject(const std::string& name, const ObjectOptions& o) {
   edits_.objects[name] = o;
   if (visual_) visual_->setOptions(name, o);
   if (apex_ && apex_->find(name)) apex_->setOptions(name, o);
+  showViewSettings();
   view_->update();
   if (apexView_) apexView_->update();
 }
@@ -321,7 +324,24 @@ void MainWindow::editAxes(const AxesOptions& a) {
   edits_.axes = a;
   editedAxes_ = true;
   if (visual_) visual_->setAxes(a);
+  showViewSettings();
   view_->update();
+}
+
+void MainWindow::showViewSettings() {
+  if (!visual_) return;
+  const ViewOptions& v = visual_->options(); // what is drawn: the scene's view with the edits laid over it
+  std::vector<std::string> names;
+  std::optional<SurfaceStyle> style;
+  for (const auto& o : visual_->objects()) {
+    names.push_back(o->name());
+    if (!style && (o->name() == "ball" || o->name() == "body")) style = v.object(o->name()).style;
+  }
+  if (!style && !names.empty()) style = v.object(names.front()).style;
+  const QSignalBlocker quietStyle(styleBox_), quietAxes(axesBox_); // showing is not editing
+  styleBox_->setCurrentIndex(style == SurfaceStyle::Grid ? 1 : style == SurfaceStyle::Both ? 2 : 0);
+  axesBox_->setCurrentIndex(static_cast<int>(v.axes.style));
+  settings_->setObjects(names, v);
 }
 
 void MainWindow::setStyleOfAll(SurfaceStyle style) {
@@ -346,8 +366,29 @@ bool MainWindow::openScene(const QString& path) {
   rememberRecent(QFileInfo(path).absoluteFilePath());
   edits_ = {}; // another file: its own appearance
   editedAxes_ = false;
+  if (const auto r = scene->document.find("results"); r != scene->document.end()) // kept when it was saved
+    for (const auto& line : *r)
+      results_->appendPlainText(QString::fromStdString(line.get<std::string>()));
   useScene(std::move(scene), path);
   return true;
+}
+
+bool MainWindow::chooseProblem(const std::string& id) {
+  const std::size_t tools = map_->addedJobs().size(); // (the scene's own trajectory comes back with it)
+  if (tools > 0 &&
+      QMessageBox::question(
+          this, "rollviz",
+          QString(
+              "Open the default scene of %1?\nThe %2 tool(s) started on the map window (trajectories, fixed "
+              "points, families) belong to %3 and will be deleted.")
+              .arg(QString::fromStdString(id))
+              .arg(tools)
+              .arg(QString::fromStdString(scene_->model->info().id)),
+          QMessageBox::Yes | QMessageBox::No, QMessageBox::No) != QMessageBox::Yes) {
+    control_->setScene(*scene_); // the chooser shows the problem that stays
+    return false;
+  }
+  return openScene(QString::fromStdString(defaultScenePath(id)));
 }
 
 bool MainWindow::runDocument(const nlohmann::json& document) {
@@ -376,7 +417,8 @@ void MainWindow::useScene(std::unique_ptr<Scene> scene, const QString& path) {
   scene_ = std::move(scene);
   scenePath_ = path;
   const QString run = QString::fromStdString(scene_->runSpec().describe()); // "rk4(step=0.001) problem(...)"
-  method_ = run.left(run.indexOf(')') + 1);                                 // the method and its settings
+  method_ = scene_->model->isMap() ? QString("iterated map")
+                                   : run.left(run.indexOf(')') + 1); // the method and its settings
   speedBox_->setValue(scene_->view.speed);
   setWindowTitle(QString("rollviz — %1 (%2)")
                      .arg(QFileInfo(path).fileName(), QString::fromStdString(scene_->model->info().id)));
@@ -393,10 +435,7 @@ void MainWindow::restart() {
     visual_ =
         std::make_unique<VisualScene>(*scene_->model, effectiveView(scene_->view), scene_->initialState);
     visual_->addTo(view_->renderWindow());
-    std::vector<std::string> names;
-    for (const auto& o : visual_->objects())
-      names.push_back(o->name());
-    settings_->setObjects(names, visual_->options());
+    showViewSettings();
   } else {
     visual_->clear();
     visual_->show(0.0, scene_->initialState);
@@ -473,7 +512,8 @@ void MainWindow::showStatus() {
                   .arg(playing_ ? "playing" : "paused");
   if (visual_ && visual_->energyError()) s += QString("   dE/E = %1").arg(*visual_->energyError(), 0, 'e', 2);
   if (!method_.isEmpty()) s += "   " + method_;
-  if (lastStep_ > 0) s += QString("   h = %1").arg(lastStep_, 0, 'g', 4); // the step taken (adaptive methods)
+  if (lastStep_ > 0 && scene_ && !scene_->model->isMap())
+    s += QString("   h = %1").arg(lastStep_, 0, 'g', 4); // the step taken (adaptive methods)
   if (!error_.isEmpty()) s += "   stopped: " + error_;
   status_->setText(s);
 }
@@ -566,6 +606,10 @@ nlohmann::json MainWindow::documentWithEdits() const {
     j["tickmarks"] = a.tickmarks;
     j["subticks"] = a.subticks;
   }
+  // the Results dock goes with the scene: what was found is there when the scene is opened again
+  doc.erase("results");
+  for (const QString& line : results().split('\n', Qt::SkipEmptyParts))
+    doc["results"].push_back(line.toStdString());
   return doc;
 }
 
@@ -712,17 +756,29 @@ void MainWindow::saveDialog() {
   if (!scene_) return;
   const QString path =
       QFileDialog::getSaveFileName(this, "Save scene", QFileInfo(scenePath_).fileName(), "Scenes (*.json)");
-  if (path.isEmpty()) return;
+  QString why;
+  if (!path.isEmpty() && !saveSceneTo(path, &why))
+    QMessageBox::warning(this, "rollviz", "Cannot save the scene:\n" + why);
+}
+
+bool MainWindow::saveSceneTo(const QString& path, QString* why) {
+  if (!scene_) return false;
   const nlohmann::json doc = documentWithEdits();
   try {
     AtomicFile file(path.toStdString(), "scene");
-    std::ofstream(file.tempPath()) << doc.dump(2) << "\n";
+    std::ofstream out(file.tempPath());
+    out << doc.dump(2) << "\n";
+    out.close();
+    if (!out) throw std::runtime_error("cannot write " + path.toStdString());
     file.commit();
-    rememberRecent(path);
-    report("saved " + path, 5000);
   } catch (const std::exception& e) {
-    QMessageBox::warning(this, "rollviz", QString("Cannot save the scene:\n%1").arg(e.what()));
+    report(QString("Cannot save the scene: %1").arg(e.what()), 0);
+    if (why) *why = e.what();
+    return false;
   }
+  rememberRecent(path);
+  report("saved " + path, 5000);
+  return true;
 }
 
 void MainWindow::rememberRecent(const QString& path) {

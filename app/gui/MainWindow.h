@@ -18,6 +18,7 @@
 
 class QAction;
 class QCloseEvent;
+class QComboBox;
 class QDragEnterEvent;
 class QDropEvent;
 class QMenu;
@@ -44,6 +45,9 @@ public:
   ~MainWindow() override;
   /// Loads a scene file and starts it; on failure shows why and keeps the current scene.
   bool openScene(const QString& path);
+  /// Another problem chosen in the control panel: opens its default scene, after asking when the map window's
+  /// tools (which belong to the current problem) would be deleted. False when the user keeps the problem.
+  bool chooseProblem(const std::string& id);
   /// Runs a scene document (the control panel's edits); on failure shows why and keeps the current scene.
   bool runDocument(const nlohmann::json& document);
   /// Where the map window's running trajectories are saved when the window closes (the next start offers to
@@ -73,6 +77,9 @@ public:
   /// The Results dock's text.
   QString results() const;
 
+  /// Saves the scene as shown -- the settings' edits and the Results dock's lines (`results`) written in --
+  /// through a temporary name; false (the reason in Results) when it cannot.
+  bool saveSceneTo(const QString& path, QString* why = nullptr);
   /// Writes the 3D view as drawn to a PNG; false when it cannot.
   bool snapshotTo(const QString& path);
   /// Starts recording the scene's run from t = 0 into an MP4 (`rollviz video` in a child process: the window
@@ -142,6 +149,11 @@ private:
   void editObject(const std::string& name, const ObjectOptions& o);
   void editAxes(const AxesOptions& a);
   void setStyleOfAll(SurfaceStyle style);
+  /// The toolbar's style and axes boxes and the settings panel show what the 3D view draws (one source: the
+  /// visual scene's options), after every edit and scene.
+  void showViewSettings();
+  QComboBox* styleBox_;
+  QComboBox* axesBox_;
   void rememberRecent(const QString& path);
   void fillRecentMenu();
   void showStatus();

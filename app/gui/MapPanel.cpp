@@ -98,13 +98,17 @@ MapPanel::~MapPanel() {
   jobs_.removeAll();
 }
 
+std::vector<int> MapPanel::sceneJobs() const {
+  std::vector<int> ids;
+  for (const Job* j : jobs_.jobs())
+    if (!j->parent() && !j->task().ownsItsScene()) ids.push_back(j->id());
+  return ids;
+}
+
 void MapPanel::setScene(const Scene& scene) {
   // the map's tools belong to the old scene; a chart's or a sweep's job belongs to its window, which computes
   // its own scene
-  std::vector<int> old;
-  for (const Job* j : jobs_.jobs())
-    if (!j->parent() && !j->task().ownsItsScene()) old.push_back(j->id());
-  for (int id : old) // by id: removing one removes the tools under it
+  for (int id : sceneJobs()) // by id: removing one removes the tools under it
     if (Job* j = jobs_.find(id)) jobs_.remove(*j);
   series_.clear();
   searches_.clear();
@@ -129,6 +133,13 @@ void MapPanel::setScene(const Scene& scene) {
     chart_->setTitles(axisNames_[0], axisNames_[1]);
   }
   start(scene.initialState);
+  sceneStart_ = series_.back().job->id();
+}
+
+std::vector<int> MapPanel::addedJobs() const {
+  std::vector<int> ids = sceneJobs();
+  std::erase(ids, sceneStart_);
+  return ids;
 }
 
 void MapPanel::start(const Eigen::VectorXd& state) {
@@ -301,6 +312,8 @@ void MapPanel::addMultipliersWindow(MultipliersWindow* window) {
   for (const auto& t : tools_)
     for (const auto& [parameter, m] : t.multipliers)
       window->offer(t.job->id(), parameter, m, t.everyStep);
+  for (const auto& s : searches_)
+    if (!s.multipliers.empty()) window->showFixedPoint(s.job->id(), s.caption, s.multipliers);
   window->flush();
 }
 
@@ -495,6 +508,10 @@ void MapPanel::drain() {
                  .arg(z.imag() < 0 ? "" : "+")
                  .arg(z.imag(), 0, 'g', 6);
       emit message(m);
+      s.multipliers = r->multipliers; // shown in every multipliers filter, also in one opened later
+      s.caption = m;
+      for (auto& w : multiplierWindows_)
+        if (w) w->showFixedPoint(s.job->id(), m, s.multipliers);
     } else if (s.job->status() == Job::Status::Failed) {
       emit message(QString::fromStdString("fixed point: " + s.job->error()));
     }
@@ -558,6 +575,8 @@ void MapPanel::removeJob(Job& job) {
     }
   for (auto it = searches_.begin(); it != searches_.end();)
     if (isGone(it->job)) {
+      for (auto& w : multiplierWindows_)
+        if (w) w->forget(it->job->id()), w->flush();
       chart_->setSeries(it->point, {}, {});
       if (it->path >= 0) chart_->setSeries(it->path, {}, {});
       it = searches_.erase(it);
@@ -598,7 +617,9 @@ void MapPanel::clearOutput(int id) {
     }
   for (auto& s : searches_)
     if (s.job->id() == id) {
-      s.x.clear(), s.y.clear(), s.reported = false;
+      s.x.clear(), s.y.clear(), s.reported = false, s.multipliers.clear();
+      for (auto& w : multiplierWindows_)
+        if (w) w->forget(id), w->flush();
       chart_->setSeries(s.point, {}, {});
       if (s.path >= 0) chart_->setSeries(s.path, {}, {});
     }

@@ -49,6 +49,11 @@ public:
   /// Drops every trajectory and starts one at the scene's initial state (the scene must outlive the panel's
   /// use).
   void setScene(const Scene& scene);
+  /// The top-level jobs that belong to the scene (trajectories, searches, families; not the chart and sweep
+  /// windows' jobs, which compute their own scene): what setScene deletes.
+  std::vector<int> sceneJobs() const;
+  /// sceneJobs() less the trajectory setScene started: what the user added.
+  std::vector<int> addedJobs() const;
   /// Starts a trajectory at map coordinates (x, y); false (with a message) when there is no state there.
   bool startAt(double x, double y);
   /// Starts a fixed-point search (the scene's fixedpoint settings) from map coordinates (x, y).
@@ -182,6 +187,8 @@ private:
     std::vector<double> x, y;
     int path, point;
     bool reported = false;
+    std::vector<std::complex<double>> multipliers; ///< of the point found (empty: none yet)
+    QString caption;                               ///< the point, its type and multipliers, in words
   };
   void start(const Eigen::VectorXd& state);
   std::vector<double> mapPoint(double x, double y) const;
@@ -222,6 +229,7 @@ private:
   std::unique_ptr<class Chart3D> map3D_;
   std::size_t map3DSeries_ = 0; ///< trajectories the Map3D chart has a series for
   const Scene* scene_ = nullptr;
+  int sceneStart_ = -1; ///< the job of the trajectory setScene started
   JobTree jobs_;
   std::vector<Series> series_;
 };

@@ -24,7 +24,7 @@ MultipliersWindow::MultipliersWindow(QWidget* parent)
                       "one drawn (0: every point); a tree draws every step of its elliptic branches");
   bar()->insertWidget(0, new QLabel("Period", this));
   bar()->insertWidget(1, period_);
-  setStatus("multipliers of running continuations and bifurcation trees");
+  setStatus("multipliers of running continuations and bifurcation trees, and of the fixed points found");
   resize(720, 760); // about square for the chart (the unit circle round), with the bar under it
 }
 
@@ -49,6 +49,19 @@ bool MultipliersWindow::offer(int job, double parameter, const std::vector<std::
   f.parameters.push_back(parameter);
   dirty_ = true;
   return true;
+}
+
+void MultipliersWindow::showFixedPoint(int job, const QString& caption,
+                                       const std::vector<std::complex<double>>& multipliers) {
+  Family& f = families_[job];
+  f.outputs.assign(1, multipliers); // a search finds one point (again, when it is continued)
+  f.parameters.assign(1, 0.0);
+  dirty_ = true;
+  setStatus(caption);
+}
+
+QString MultipliersWindow::caption() const {
+  return status();
 }
 
 void MultipliersWindow::forget(int job) {

@@ -27,6 +27,11 @@ public:
   /// (`everyStep`: a tree's step, always). Returns whether it was.
   bool offer(int job, double parameter, const std::vector<std::complex<double>>& multipliers,
              bool everyStep = false);
+  /// A fixed point found by a search (job `job`): its multipliers drawn, `caption` (the point, its type and
+  /// multipliers in words) under the chart. Drawn at the next flush.
+  void showFixedPoint(int job, const QString& caption, const std::vector<std::complex<double>>& multipliers);
+  /// The text under the chart.
+  QString caption() const;
   /// The job was deleted: its points go.
   void forget(int job);
   /// Every family goes (another scene).

@@ -32,6 +32,7 @@ public:
 ParameterForm::ParameterForm(const ParameterTable& table, QWidget* parent) : QWidget(parent), table_(table) {
   auto* form = new QFormLayout(this);
   form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+  form->setRowWrapPolicy(QFormLayout::WrapLongRows); // a narrow panel puts the field under its label
   for (const auto& s : table.specs()) {
     QWidget* editor = nullptr;
     if (!s.choices.empty()) {
@@ -54,6 +55,7 @@ ParameterForm::ParameterForm(const ParameterTable& table, QWidget* parent) : QWi
       editor = box;
     }
     editor->setObjectName(QString::fromStdString(s.id));
+    editor->setMinimumWidth(90); // fields shrink with the panel instead of a horizontal scroll bar
     const QString tip =
         QString::fromStdString(s.id + ": " + s.description + (s.unit.empty() ? "" : " (" + s.unit + ")"));
     editor->setToolTip(tip);
@@ -68,6 +70,7 @@ ParameterForm::ParameterForm(const ParameterTable& table, QWidget* parent) : QWi
     auto* problem = new QLabel(field);
     problem->setObjectName(QString::fromStdString(s.id) + "_problem");
     problem->setStyleSheet("color: #b00020");
+    problem->setWordWrap(true); // the whole range shows in a narrow panel
     problem->hide();
     column->addWidget(problem);
     if (auto* box = qobject_cast<QAbstractSpinBox*>(editor)) {

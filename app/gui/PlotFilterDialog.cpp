@@ -6,6 +6,7 @@
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QFormLayout>
+#include <algorithm>
 
 namespace rv {
 
@@ -29,8 +30,16 @@ PlotFilterDialog::PlotFilterDialog(const Model& model, const PlotView& proposed,
   const auto& axes = proposed.settings.axes;
   const char* defaults[3] = {"t", "E", "t"};
   const char* labels[3] = {"Axis X", "Axis Y", "Axis Z"};
+  std::vector<std::string> taken; // an axis the scene does not give proposes an observable not yet on one
   for (int i = 0; i < dimensions; ++i) {
-    const std::string chosen = i < static_cast<int>(axes.size()) ? axes[i] : defaults[i];
+    std::string chosen = i < static_cast<int>(axes.size()) ? axes[i] : defaults[i];
+    if (i >= static_cast<int>(axes.size()) && std::ranges::find(taken, chosen) != taken.end())
+      for (const auto& o : model.observables())
+        if (std::ranges::find(taken, o.id) == taken.end()) {
+          chosen = o.id;
+          break;
+        }
+    taken.push_back(chosen);
     axes_.push_back(observableBox(model, chosen, this));
     axes_.back()->setObjectName(QString("axis%1").arg(i));
     form->addRow(labels[i], axes_.back());

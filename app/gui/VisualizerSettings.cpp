@@ -6,6 +6,7 @@
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
+#include <QLabel>
 #include <QPushButton>
 #include <QSlider>
 #include <QSpinBox>
@@ -57,7 +58,17 @@ VisualizerSettings::VisualizerSettings(QWidget* parent) : QWidget(parent) {
   of->addRow("Object", object_);
   of->addRow("Enabled", enabled_);
   of->addRow("Object colour", color_);
-  of->addRow("Transparency", transparency_);
+  auto* transparencyRow = new QWidget;
+  auto* tr = new QHBoxLayout(transparencyRow);
+  tr->setContentsMargins(0, 0, 0, 0);
+  tr->addWidget(transparency_, 1);
+  auto* percent = new QLabel("0 %");
+  percent->setObjectName("transparency_value");
+  percent->setMinimumWidth(percent->fontMetrics().horizontalAdvance("100 %"));
+  tr->addWidget(percent);
+  connect(transparency_, &QSlider::valueChanged, percent,
+          [percent](int v) { percent->setText(QString("%1 %").arg(v)); });
+  of->addRow("Transparency", transparencyRow);
   of->addRow("Grid density", density_);
   of->addRow("Trace enabled", trace_);
   of->addRow("Trace colour", traceColor_);
@@ -165,6 +176,7 @@ void VisualizerSettings::pickColor(const Rgb& color) {
 }
 
 void VisualizerSettings::showObject() {
+  const bool wasBlocked = blocked_; // (called inside setObjects, which must stay blocked to its end)
   blocked_ = true;
   const ObjectOptions& o = options_.object(object_->currentText().toStdString());
   enabled_->setChecked(o.enabled);
@@ -173,7 +185,7 @@ void VisualizerSettings::showObject() {
   density_->setValue(o.gridDensity);
   paintButton(color_, o.color);
   paintButton(traceColor_, o.traceColor);
-  blocked_ = false;
+  blocked_ = wasBlocked;
 }
 
 void VisualizerSettings::emitObject() {

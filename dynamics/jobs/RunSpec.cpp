@@ -26,9 +26,12 @@ std::string RunSpec::describe() const {
     for (std::size_t i = 0; i < specs.size(); ++i)
       os << (i ? ", " : "") << specs[i].id << "=" << p.values()[i];
   };
-  os << integrator->id << "(";
-  list(integratorParameters);
-  os << ") " << model->info->id << "(";
+  if (model->info->kind != ModelKind::Map) { // an explicit map is iterated, not integrated
+    os << integrator->id << "(";
+    list(integratorParameters);
+    os << ") ";
+  }
+  os << model->info->id << "(";
   list(modelParameters);
   os << ")";
   return os.str();

@@ -128,6 +128,20 @@ class Cli(unittest.TestCase):
                             "missing.json")
         self.assertEqual(sorted(os.listdir(self.dir)), ["bad.json", "keep.csv", "np.json"])
 
+    def test_a_scene_keeps_the_guis_results(self):
+        # the GUI saves its Results dock as "results": lines of text, read back by every command
+        doc = json.load(open(SCENE))
+        doc["results"] = ["12:00:00  fixed point (0.1, 0.2): elliptic; multipliers 0.5+0.8i 0.5-0.8i"]
+        good = self.path("good.json")
+        json.dump(doc, open(good, "w"))
+        r = run("integrate", good, "--time", "0.1", "--every", "0.1", "--columns", "E")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        doc["results"] = ["fine", 3]
+        bad = self.path("bad-results.json")
+        json.dump(doc, open(bad, "w"))
+        self.assertBadInput(run("integrate", bad, "--time", "0.1", "--every", "0.1"), "bad-results.json",
+                            "results")
+
     def test_a_blow_up_exits_1_with_the_reason_and_no_file(self):
         out = self.path("blow.csv")
         r = run("integrate", SCENE, "--set", "integrator.step=50", "--time", "100000", "--every", "1000", "-o", out)

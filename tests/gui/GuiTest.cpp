@@ -4,6 +4,7 @@
 // jobs as a tree, stop / continue / restart / delete on the selected one.
 #include "app/gui/ControlPanel.h"
 #include "app/gui/ParameterForm.h"
+#include "app/gui/PlotFilterDialog.h"
 #include "app/gui/ToolManager.h"
 #include "dynamics/core/ModelRegistry.h"
 #include "dynamics/jobs/JobTree.h"
@@ -141,6 +142,18 @@ private slots:
 class ToolManagerTest : public QObject {
   Q_OBJECT
 private slots:
+  // the 3D plot filter proposes three different axes when the scene's plot gives fewer (not Z = t = X)
+  void aThreeDimensionalPlotProposesThreeDifferentAxes() {
+    const Scene scene = loadScene(defaultScenePath("chaplygin_ball"));
+    PlotView none = scene.plot;
+    none.settings.axes.clear();
+    PlotFilterDialog dialog(*scene.model, none, scene.tool("plot"), 3);
+    const auto axes = dialog.plot().settings.axes;
+    QCOMPARE(axes.size(), std::size_t(3));
+    QCOMPARE(axes[0], std::string("t"));
+    QVERIFY(axes[2] != axes[0] && axes[2] != axes[1]);
+  }
+
   void actsOnTheSelectedJob() {
     RunSpec spec(ModelRegistry::builtin().get("henon_heiles"), IntegratorRegistry::builtin().get("everhart"));
     spec.initialState = spec.makeModel()->stateFromMap({0.1, 0.1}, {}, "test");

@@ -16,9 +16,11 @@
 #include "app/gui/VisualizerSettings.h"
 #include "dynamics/jobs/JobTree.h"
 #include "dynamics/jobs/PoincareTask.h"
+#include "render/charts/PoincareChart.h"
 #include "scenes/SceneLoader.h"
 
 #include <QCheckBox>
+#include <QComboBox>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
@@ -29,12 +31,15 @@
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QStatusBar>
+#include <QTabWidget>
 #include <QTemporaryDir>
 #include <QTreeWidget>
 #include <QtTest>
 #include <cstdio>
 #include <functional>
 #include <set>
+#include <vtkChartXY.h>
+#include <vtkPlot.h>
 
 namespace rv {
 
@@ -81,6 +86,12 @@ bool keep(const QImage& img, const QString& name) {
       colours.insert(img.pixel(x, y));
   if (colours.size() < 40) qWarning("%s: %zu colours", qPrintable(name), colours.size());
   return colours.size() >= 40;
+}
+// answers the next modal question box (opened by what the caller does next) with `b`
+void answerNextQuestion(QMessageBox::StandardButton b) {
+  QTimer::singleShot(300, [b] {
+    if (auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget())) box->button(b)->click();
+  });
 }
 int framesOf(const QString& path) {
   const std::string cmd = "ffprobe -v error -count_frames -select_streams v:0 -show_entries "
@@ -862,6 +873,180 @@ private slots:
     QCOMPARE(running, 3);
     QCOMPARE(window_->resumeSavedJobs(), 0); // nothing left
     map->stopAll();
+  }
+
+  // A fixed point found by a Shift+click shows in the Multipliers window (also one opened later), with its
+  // type and multipliers under the chart. The standard map's point (pi, 0) at K = 1.5 is elliptic with the
+  // trace 2 - K: multipliers on the unit circle with real part (2 - K) / 2 = 0.25.
+  void aFixedPointFoundShowsInTheMultipliersWindow() {
+    nlohmann::json doc = loadScene(defaultScenePath("standard_map")).document;
+    doc["parameters"]["K"] = 1.5;
+    QVERIFY(window_->runDocument(doc));
+    MultipliersWindow* w = window_->openMultipliersWindow();
+    MapPanel* map = window_->mapPanel();
+    map->searchFixedPointAt(3.1, 0.05);
+    Job* search = map->jobs().jobs().back();
+    QTRY_VERIFY_WITH_TIMEOUT(!search->running(), 20000);
+    map->drain();
+    const auto check = [&](MultipliersWindow* window) {
+      const auto& outputs = window->outputs(search->id());
+      QCOMPARE(outputs.size(), std::size_t(1));
+      QCOMPARE(outputs[0].size(), std::size_t(2));
+      for (const auto& m : outputs[0]) {
+        QVERIFY(std::abs(std::abs(m) - 1) < 1e-8);
+        QVERIFY(std::abs(m.real() - 0.25) < 1e-7);
+      }
+      QVERIFY2(window->caption().contains("elliptic"), qPrintable(window->caption()));
+    };
+    check(w);
+    MultipliersWindow* later = window_->openMultipliersWindow();
+    check(later);
+    QTest::qWait(200);
+    QVERIFY(keep(w->grab().toImage(), "window_multipliers_fixed_point.png"));
+    QVERIFY(inked(w->view()->grabFramebuffer()) > 1500);
+    // deleting the search takes its point away
+    map->removeJob(*search);
+    QCOMPARE(w->points(), 0L);
+    w->close();
+    later->close();
+  }
+
+  // The Results dock goes into the saved scene ("results": its lines) and comes back when it is opened.
+  void resultsAreSavedWithTheScene() {
+    nlohmann::json doc = loadScene(defaultScenePath("standard_map")).document;
+    doc["parameters"]["K"] = 1.5;
+    QVERIFY(window_->runDocument(doc));
+    window_->findChild<QPushButton*>("clear_results")->click();
+    window_->mapPanel()->searchFixedPointAt(3.1, 0.05);
+    QTRY_VERIFY_WITH_TIMEOUT(window_->results().contains("fixed point ("), 20000);
+    const QString path = dir_.filePath("with-results.json");
+    QVERIFY(window_->saveSceneTo(path));
+    const Scene saved = loadScene(path.toStdString());
+    QVERIFY(saved.document.contains("results"));
+    bool found = false;
+    for (const auto& line : saved.document["results"])
+      found = found || line.get<std::string>().find("elliptic; multipliers") != std::string::npos;
+    QVERIFY(found);
+    window_->findChild<QPushButton*>("clear_results")->click();
+    QVERIFY(window_->openScene(path));
+    QVERIFY2(window_->results().contains("elliptic; multipliers"), qPrintable(window_->results()));
+  }
+
+  // The toolbar and the settings panel show the same view settings after each edit, a colour change keeps
+  // the toolbar's style, and a new scene shows its own; the transparency slider says its number.
+  void toolbarAndSettingsAgree() {
+    QVERIFY(window_->openScene(QString::fromStdString(defaultScenePath("chaplygin_ball"))));
+    auto* style = window_->findChild<QComboBox*>("surface_style");
+    auto* axes = window_->findChild<QComboBox*>("axes_style");
+    QVERIFY(style && axes);
+    VisualizerSettings* settings = window_->settings();
+    QCOMPARE(axes->currentIndex(), settings->axesStyleBox()->currentIndex());
+    axes->setCurrentIndex(2); // box axes from the toolbar
+    QCOMPARE(settings->axesStyleBox()->currentIndex(), 2);
+    QVERIFY(window_->visual()->options().axes.style == AxesOptions::Style::Box);
+    settings->axesStyleBox()->setCurrentIndex(1); // normal from the settings
+    QCOMPARE(axes->currentIndex(), 1);
+    style->setCurrentIndex(1); // grid
+    settings->selectObject("ball");
+    settings->pickColor({0.2, 0.8, 0.2}); // a colour edit keeps the style the toolbar set
+    QVERIFY(window_->visual()->options().object("ball").style == SurfaceStyle::Grid);
+    QCOMPARE(style->currentIndex(), 1);
+    QCOMPARE(axes->currentIndex(), 1);
+    settings->transparencySlider()->setValue(30);
+    auto* percent = settings->findChild<QLabel*>("transparency_value");
+    QVERIFY(percent);
+    QCOMPARE(percent->text(), QString("30 %"));
+    QTest::qWait(100);
+    QVERIFY(keep(window_->grab().toImage(), "window_grid_style.png"));
+    // another scene: its own appearance, shown alike
+    QVERIFY(window_->openScene(QString::fromStdString(defaultScenePath("chaplygin_ball"))));
+    QCOMPARE(style->currentIndex(), 0);
+    QCOMPARE(axes->currentIndex(), 0);
+    QCOMPARE(settings->axesStyleBox()->currentIndex(), 0);
+  }
+
+  // Choosing another problem asks before the map's own trajectories go; No keeps them and the problem.
+  void aProblemSwitchAsksBeforeDroppingTrajectories() {
+    QVERIFY(window_->openScene(QString::fromStdString(defaultScenePath("standard_map"))));
+    MapPanel* map = window_->mapPanel();
+    QVERIFY(window_->chooseProblem("henon_map")); // nothing added: no question
+    QCOMPARE(window_->scene()->model->info().id, std::string("henon_map"));
+    QVERIFY(map->startAt(0.2, 0.1));
+    const int added = map->addedJobs().front();
+    answerNextQuestion(QMessageBox::No);
+    QVERIFY(!window_->chooseProblem("standard_map"));
+    QCOMPARE(window_->scene()->model->info().id, std::string("henon_map"));
+    QVERIFY(map->jobs().find(added));
+    answerNextQuestion(QMessageBox::Yes);
+    QVERIFY(window_->chooseProblem("standard_map"));
+    QCOMPARE(window_->scene()->model->info().id, std::string("standard_map"));
+    QVERIFY(!map->jobs().find(added));
+  }
+
+  // An explicit map has no Method tab (nothing is integrated) and its tool rows do not name a method; Apply
+  // on the Method tab of a flow stays there.
+  void controlPanelTabs() {
+    QVERIFY(window_->openScene(QString::fromStdString(defaultScenePath("standard_map"))));
+    auto* tabs = window_->controlPanel()->findChild<QTabWidget*>("tabs");
+    QVERIFY(tabs);
+    const auto titles = [&] {
+      QStringList t;
+      for (int i = 0; i < tabs->count(); ++i)
+        t << tabs->tabText(i);
+      return t;
+    };
+    QVERIFY2(!titles().contains("Method"), qPrintable(titles().join(",")));
+    QVERIFY(!QString::fromStdString(window_->mapPanel()->jobs().jobs().back()->task().describe())
+                 .contains("rk4"));
+    QVERIFY(window_->openScene(QString::fromStdString(defaultScenePath("chaplygin_ball"))));
+    QVERIFY(titles().contains("Method"));
+    tabs->setCurrentIndex(titles().indexOf("Method"));
+    window_->controlPanel()->findChild<QPushButton*>("apply")->click();
+    QCOMPARE(tabs->tabText(tabs->currentIndex()), QString("Method"));
+    QVERIFY(keep(window_->controlPanel()->grab().toImage(), "window_control_panel.png"));
+  }
+
+  // Charts say what they are and read alone: a failure in the GUI's words on the page (not black) with
+  // nothing to save; the Lyapunov chart's legend gives each exponent's final value; a heat map has its
+  // colour bar.
+  void chartsReadAlone() {
+    QVERIFY(window_->openScene(QString::fromStdString(defaultScenePath("chaplygin_ball"))));
+    ChartWindow* spectrum = window_->openChart("spectrum"); // the scene names no spectrum.function
+    QSignalSpy failed(spectrum, &ChartWindow::finished);
+    QVERIFY(failed.wait(20000));
+    QVERIFY(!spectrum->ready());
+    QVERIFY2(!spectrum->failure().contains("--view"), qPrintable(spectrum->failure()));
+    QVERIFY2(spectrum->failure().contains("control panel"), qPrintable(spectrum->failure()));
+    QVERIFY(spectrum->placeholder().contains(spectrum->failure()));
+    QVERIFY(!spectrum->findChild<QPushButton*>("save_png")->isEnabled());
+    QVERIFY(!spectrum->findChild<QPushButton*>("save_csv")->isEnabled());
+    QTest::qWait(100);
+    QVERIFY(keep(spectrum->grab().toImage(), "window_chart_failed.png"));
+    spectrum->close();
+
+    nlohmann::json doc = loadScene(defaultScenePath("henon_heiles")).document;
+    doc["lyapunov"] = {{"time", 200}, {"output_period", 2}};
+    QVERIFY(window_->runDocument(doc));
+    ChartWindow* lyapunov = window_->openChart("lyapunov");
+    QVERIFY(lyapunov->placeholder().startsWith("computing"));
+    QSignalSpy done(lyapunov, &ChartWindow::finished);
+    QVERIFY(done.wait(60000));
+    QVERIFY2(lyapunov->ready(), qPrintable(lyapunov->failure()));
+    QVERIFY(lyapunov->placeholder().isEmpty());
+    QVERIFY(lyapunov->findChild<QPushButton*>("save_png")->isEnabled());
+    auto* plane = dynamic_cast<PoincareChart*>(lyapunov->drawn().get());
+    QVERIFY(plane);
+    QVERIFY(plane->chart()->GetShowLegend());
+    QStringList labels;
+    for (vtkIdType i = 0; i < plane->chart()->GetNumberOfPlots(); ++i)
+      if (plane->chart()->GetPlot(i)->GetLegendVisibility())
+        labels << QString::fromStdString(plane->chart()->GetPlot(i)->GetLabel());
+    QCOMPARE(labels.size(), 4); // Henon-Heiles: four exponents
+    QVERIFY2(labels.front().startsWith("L1 = "), qPrintable(labels.join(" | ")));
+    QCOMPARE(QString::fromStdString(plane->chart()->GetTitle()), QString("Lyapunov exponents"));
+    QTest::qWait(200);
+    QVERIFY(keep(lyapunov->grab().toImage(), "window_chart_lyapunov.png"));
+    lyapunov->close();
   }
 
   void cleanupTestCase() { delete window_; }
