@@ -385,7 +385,8 @@ bool MainWindow::chooseProblem(const std::string& id) {
               .arg(tools)
               .arg(QString::fromStdString(scene_->model->info().id)),
           QMessageBox::Yes | QMessageBox::No, QMessageBox::No) != QMessageBox::Yes) {
-    control_->setScene(*scene_); // the chooser shows the problem that stays
+    if (auto* chooser = control_->findChild<QComboBox*>("problem_choice")) // shows the problem that stays
+      chooser->setCurrentText(QString::fromStdString(scene_->model->info().id));
     return false;
   }
   return openScene(QString::fromStdString(defaultScenePath(id)));

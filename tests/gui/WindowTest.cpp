@@ -976,6 +976,8 @@ private slots:
     answerNextQuestion(QMessageBox::No);
     QVERIFY(!window_->chooseProblem("standard_map"));
     QCOMPARE(window_->scene()->model->info().id, std::string("henon_map"));
+    QCOMPARE(window_->controlPanel()->findChild<QComboBox*>("problem_choice")->currentText(),
+             QString("henon_map"));
     QVERIFY(map->jobs().find(added));
     answerNextQuestion(QMessageBox::Yes);
     QVERIFY(window_->chooseProblem("standard_map"));
