@@ -68,7 +68,11 @@ void ChartWindow::poll() {
   const bool running = status == Job::Status::Running;
   showProgress(running, j ? j->progress() : 0);
   if (running) {
-    if (seen_ != status) setStatus("computing…");
+    if (seen_ != status) {
+      setStatus("computing…");
+      if (!chart_)
+        showPlaceholder("computing " + QString::fromStdString(chartTitle(viewName_)) + "…"); // continued
+    }
     seen_ = status;
     return;
   }
