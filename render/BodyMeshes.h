@@ -12,6 +12,11 @@ namespace rv {
 /// A triangulated surface with normals and texture coordinates for the geometry (None: an empty mesh).
 vtkSmartPointer<vtkPolyData> makeBodyMesh(const BodyGeometry& geometry);
 
+/// The body's "grid" style: `meridians` lines of constant longitude and `parallels` of constant latitude
+/// (height, for a paraboloid) on its surface, in its own frame.
+vtkSmartPointer<vtkPolyData> makeBodyGridLines(const BodyGeometry& geometry, int meridians = 24,
+                                               int parallels = 11);
+
 /// The fixed surface as a grid of (u, v) in [0, 1]^2, textured with a repeating pattern (8 x 4 repeats).
 vtkSmartPointer<vtkPolyData> makeSurfaceMesh(const SupportSurface& surface);
 

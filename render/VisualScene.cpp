@@ -1,5 +1,6 @@
 #include "render/VisualScene.h"
 
+#include "dynamics/core/Format.h"
 #include "render/BodyMeshes.h"
 #include "render/objects/ApexObject.h"
 #include "render/objects/BodyAxesObject.h"
@@ -64,6 +65,25 @@ VisualScene::VisualScene(const Model& model, const ViewOptions& options, const E
     add(std::make_unique<BodyBoxObject>("box", frame, std::array<double, 3>{box[0], box[1], box[2]}));
     add(std::make_unique<VectorObject>("vector", frame));
     lo = {-1, -1, -1}, hi = {1, 1, 1};
+    // a key to the colours, top left: which axis each apex is the tip of
+    for (int i = 0; i < 3; ++i) {
+      const char axis = "xyz"[i];
+      keyLines_.push_back(frame == LookingIn::Absolute ? format("body axis e%d seen from space", i + 1)
+                          : i == 2                     ? std::string("vertical z seen from the body (gamma)")
+                                                       : format("space axis %c seen from the body", axis));
+      vtkNew<vtkTextActor> key;
+      key->SetInput(keyLines_.back().c_str());
+      key->GetTextProperty()->SetFontSize(14);
+      key->GetTextProperty()->SetBold(true);
+      const Rgb c = axisColor(i);
+      key->GetTextProperty()->SetColor(c[0], c[1], c[2]);
+      key->GetTextProperty()->SetShadow(true); // legible over the blue sky too (a background box is not
+                                               // rescaled in large snapshots)
+      // above the time line, in display coordinates as it is (large snapshots rescale those)
+      key->SetDisplayPosition(10, 8 + 22 * (3 - i));
+      key->SetVisibility(options.overlay);
+      renderer_->AddActor2D(key);
+    }
   } else if (geometry && pose) {
     scale_ = bodySize(*geometry);
     if (const auto support = model.support())

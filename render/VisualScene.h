@@ -49,6 +49,8 @@ public:
   void clear();
   /// Puts the camera back to its default placement around the current state.
   void resetCamera();
+  /// The apex view's key to its colours, a line per axis (red, green, blue); empty in other views.
+  const std::vector<std::string>& colourKey() const { return keyLines_; }
 
 private:
   void placeCamera();
@@ -62,6 +64,7 @@ private:
   Eigen::Vector3d focus_ = Eigen::Vector3d::Zero();
   vtkSmartPointer<vtkRenderer> renderer_;
   vtkSmartPointer<vtkTextActor> overlay_;
+  std::vector<std::string> keyLines_;
   std::vector<std::unique_ptr<VisualObject>> objects_;
   std::map<std::string, std::vector<vtkProp*>> props_; ///< by object name; the objects own them
 };

@@ -81,6 +81,7 @@ void ControlPanel::setScene(const Scene& scene) {
   const auto add = [&](const std::string& key, const QString& title, const ParameterTable& table,
                        const ParameterValues& values, QComboBox* chooser = nullptr) {
     auto* form = new ParameterForm(table);
+    connect(form, &ParameterForm::rejected, this, &ControlPanel::message);
     form->setValues(values);
     auto* scroll = new QScrollArea;
     scroll->setWidget(form);
@@ -161,6 +162,7 @@ bool ControlPanel::chooseMethod(const std::string& id) {
   methodBox_->setCurrentText(QString::fromStdString(id));
   // the scene's own values for its method, the table's defaults for another
   auto* form = new ParameterForm(*entry->parameters);
+  connect(form, &ParameterForm::rejected, this, &ControlPanel::message);
   form->setValues(id == scene_->integratorEntry->id ? *scene_->integratorParameters
                                                     : ParameterValues(*entry->parameters));
   methodScroll_->setWidget(form); // deletes the old form

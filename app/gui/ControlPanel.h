@@ -49,6 +49,8 @@ signals:
   void create(const std::string& tool);
   /// Another problem was chosen in the Problem tab (its default scene should open).
   void problemChosen(const std::string& problem);
+  /// Something typed was refused (a parameter form's rejected()).
+  void message(const QString& text);
 
 private:
   QTabWidget* tabs_;

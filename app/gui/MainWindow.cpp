@@ -15,13 +15,13 @@
 #include "dynamics/io/AtomicFile.h"
 #include "dynamics/jobs/PoincareTask.h"
 #include "dynamics/tools/ToolRegistry.h"
+#include "render/video/ScreenRecorder.h"
 #include "scenes/SceneCharts.h"
 #include "scenes/SceneLoader.h"
 
 #include <QAction>
 #include <QCloseEvent>
 #include <QComboBox>
-#include <QCoreApplication>
 #include <QDir>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
@@ -36,19 +36,17 @@
 #include <QMessageBox>
 #include <QMimeData>
 #include <QPlainTextEdit>
-#include <QProcess>
 #include <QPushButton>
 #include <QSaveFile>
 #include <QSettings>
 #include <QSignalBlocker>
 #include <QStandardPaths>
 #include <QStatusBar>
-#include <QTemporaryFile>
+#include <QThread>
 #include <QTime>
 #include <QToolBar>
 #include <QVBoxLayout>
 #include <cmath>
-#include <csignal>
 #include <fstream>
 #include <functional>
 #include <map>
@@ -56,19 +54,14 @@
 
 namespace rv {
 
-// A recording is `rollviz video` on the scene as shown (the document with the settings' edits), in a child
-// process: the same frames as on the command line, no GL context shared with the window, and stopping it is
-// the command line's Ctrl-C (SIGINT): the frames so far become a valid, shorter video.
+// A recording takes the pictures the 3D view paints (QtVtkWidget's frame tap) with their wall-clock times;
+// ScreenRecorder encodes them on its own thread.
 struct MainWindow::Recording {
-  std::unique_ptr<QProcess> process = std::make_unique<QProcess>();
-  QTemporaryFile scene{QDir::tempPath() + "/rollviz-recording-XXXXXX.json"};
+  std::shared_ptr<ScreenRecorder> video;
+  QElapsedTimer clock;
   QString path;
+  QString error; // the first encoder failure while recording
 };
-
-static QString rollvizExecutable() {
-  if (QString exe = qEnvironmentVariable("ROLLVIZ_EXE"); !exe.isEmpty()) return exe;
-  return QCoreApplication::applicationFilePath();
-}
 
 void MainWindow::report(const QString& text, int timeoutMs) {
   statusBar()->showMessage(text, timeoutMs);
@@ -145,6 +138,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   connect(control_, &ControlPanel::apply, this, [this](const nlohmann::json& doc) { runDocument(doc); });
   connect(control_, &ControlPanel::create, this, [this](const std::string& id) { createTool(id); });
   connect(control_, &ControlPanel::problemChosen, this, [this](const std::string& id) { chooseProblem(id); });
+  connect(control_, &ControlPanel::message, this, [this](const QString& m) { report(m, 8000); });
   settings_ = new VisualizerSettings(this);
   auto* settingsDock = new QDockWidget("Visualizer settings", this);
   settingsDock->setObjectName("settings");
@@ -184,8 +178,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   snap->setToolTip("Save the 3D view as a PNG (Ctrl+S)");
   recordAction_ = bar->addAction("Record…", this, [this] { recording() ? stopRecording() : recordDialog(); });
   recordAction_->setToolTip(
-      "Record the run from t = 0 into an MP4 (frames at a fixed rate in simulation time); "
-      "press again to stop (Ctrl+Shift+R)");
+      "Record what the 3D view shows into an MP4 until pressed again, the video as long "
+      "as the recording (Ctrl+Shift+R); `rollviz video` renders exact frames offline");
   recordAction_->setShortcut(QKeySequence("Ctrl+Shift+R"));
   auto* view = addToolBar("Visualizer");
   view->setObjectName("visualizer");
@@ -292,9 +286,13 @@ MainWindow::~MainWindow() {
   timer_.stop();
   qDeleteAll(findChildren<ChartWindow*>()); // their jobs live in the map's job tree, which goes first
   qDeleteAll(findChildren<SweepWindow*>());
-  if (recorder_) { // a recording in progress is stopped, and its video kept
-    stopRecording();
-    recorder_->process->waitForFinished(10000);
+  if (finisher_) finisher_->wait(); // a video being finished is written whole
+  if (recorder_) {                  // a recording in progress is kept: its video is finished here
+    view_->setFrameTap({});
+    try {
+      recorder_->video->finish(recorder_->clock.elapsed() / 1000.0);
+    } catch (const std::exception&) { // nothing to tell any more; the writer leaves no half-written file
+    }
   }
   map_->stopAll();
   stream_.reset();
@@ -519,17 +517,23 @@ void MainWindow::showStatus() {
   status_->setText(s);
 }
 
-void MainWindow::snapshot() {
-  // proposed in the pictures folder (not the working directory, often the source tree), named by the problem
-  // and the time shown
-  QString folder = QStandardPaths::writableLocation(QStandardPaths::PicturesLocation);
+QString MainWindow::askWhereToWrite(const QString& title, QStandardPaths::StandardLocation where,
+                                    const QString& extension, const QString& filter) {
+  // proposed in the user's pictures or videos folder (not the working directory, often the source tree),
+  // named by the problem and the time shown
+  QString folder = QStandardPaths::writableLocation(where);
   if (folder.isEmpty() || !QDir(folder).exists()) folder = QDir::homePath();
   const QString name =
-      QString("%1-t%2.png")
+      QString("%1-t%2.%3")
           .arg(scene_ ? QString::fromStdString(scene_->model->info().id) : QString("rollviz"))
-          .arg(shownTime_, 0, 'f', 2);
+          .arg(shownTime_, 0, 'f', 2)
+          .arg(extension);
+  return QFileDialog::getSaveFileName(this, title, QDir(folder).filePath(name), filter);
+}
+
+void MainWindow::snapshot() {
   const QString path =
-      QFileDialog::getSaveFileName(this, "Save snapshot", QDir(folder).filePath(name), "PNG (*.png)");
+      askWhereToWrite("Save snapshot", QStandardPaths::PicturesLocation, "png", "PNG (*.png)");
   if (path.isEmpty()) return;
   if (!snapshotTo(path)) QMessageBox::warning(this, "rollviz", "Cannot write " + path);
 }
@@ -544,44 +548,67 @@ bool MainWindow::snapshotTo(const QString& path) {
   return true;
 }
 
-bool MainWindow::startRecording(const QString& path, const VideoSpec& spec) {
-  if (!scene_ || recorder_) return false;
+bool MainWindow::startRecording(const QString& path, int fps) {
+  if (recorder_) return false;
   auto r = std::make_unique<Recording>();
-  if (!r->scene.open()) {
-    report("Cannot record: no temporary file for the scene", 8000);
+  const qreal dpr = view_->devicePixelRatioF();
+  try {
+    r->video = std::make_shared<ScreenRecorder>(path.toStdString(), static_cast<int>(view_->width() * dpr),
+                                                static_cast<int>(view_->height() * dpr), fps);
+  } catch (const std::exception& e) {
+    report("Cannot record: " + QString::fromUtf8(e.what()), 8000);
     return false;
   }
-  r->scene.write(QByteArray::fromStdString(documentWithEdits().dump(2)));
-  r->scene.flush();
   r->path = path;
-  r->process->setProgram(rollvizExecutable());
-  r->process->setArguments({"video", r->scene.fileName(), "-o", path, "--duration",
-                            QString::number(spec.duration), "--fps", QString::number(spec.fps), "--size",
-                            QString("%1x%2").arg(spec.width).arg(spec.height), "--speed",
-                            QString::number(spec.speed)});
-  r->process->setProcessChannelMode(QProcess::MergedChannels);
-  connect(r->process.get(), &QProcess::finished, this, [this](int code, QProcess::ExitStatus) {
-    const auto done = std::move(recorder_);
-    const QString path = done->path;
-    const QString output = QString::fromUtf8(done->process->readAll()).trimmed();
-    done->process.release()->deleteLater(); // this runs inside the process's own signal
-    recordAction_->setText("Record…");
-    report(code == 0 || code == 130 ? "wrote " + path : "recording failed: " + output, 8000);
-    emit recordingFinished(code, path);
-  });
-  r->process->start();
-  if (!r->process->waitForStarted(5000)) {
-    report("Cannot record: cannot start " + rollvizExecutable(), 8000);
-    return false;
-  }
+  r->clock.start();
   recorder_ = std::move(r);
+  view_->setFrameTap([this](const Image& picture) {
+    if (!recorder_ || !recorder_->error.isEmpty()) return;
+    try {
+      recorder_->video->add(picture, recorder_->clock.elapsed() / 1000.0);
+    } catch (const std::exception& e) { // the disk is full, say: stop, and say why
+      recorder_->error = QString::fromUtf8(e.what());
+      QTimer::singleShot(0, this, &MainWindow::stopRecording);
+    }
+  });
+  view_->update(); // the picture on screen now is the first frame
   recordAction_->setText("Stop recording");
-  report("recording " + path + "…");
+  report("recording " + path + " (press Stop recording to end)");
   return true;
 }
 
 void MainWindow::stopRecording() {
-  if (recorder_) ::kill(static_cast<pid_t>(recorder_->process->processId()), SIGINT);
+  if (!recorder_) return;
+  view_->setFrameTap({});
+  const auto done = std::move(recorder_);
+  recordAction_->setText("Record…");
+  recordAction_->setEnabled(false); // until the file is written
+  const double seconds = done->clock.elapsed() / 1000.0;
+  const QString path = done->path, error = done->error;
+  // the encoder drains its queue on a thread of its own: the window stays responsive meanwhile
+  QThread* finisher = QThread::create([this, video = done->video, seconds, path, error] {
+    QString why = error;
+    long frames = 0;
+    if (why.isEmpty()) {
+      try {
+        frames = video->finish(seconds);
+        if (frames == 0) why = "the view painted nothing";
+      } catch (const std::exception& e) {
+        why = QString::fromUtf8(e.what());
+      }
+    }
+    QMetaObject::invokeMethod(this, [this, path, why, frames, seconds] {
+      recordAction_->setEnabled(true);
+      if (why.isEmpty())
+        report(QString("wrote %1 (%2 s, %3 frames)").arg(path).arg(seconds, 0, 'f', 1).arg(frames), 8000);
+      else
+        report("recording failed: " + why, 8000);
+      emit recordingFinished(why.isEmpty(), path);
+    });
+  });
+  connect(finisher, &QThread::finished, finisher, &QObject::deleteLater);
+  finisher_ = finisher;
+  finisher->start();
 }
 
 nlohmann::json MainWindow::documentWithEdits() const {
@@ -615,12 +642,9 @@ nlohmann::json MainWindow::documentWithEdits() const {
 }
 
 void MainWindow::recordDialog() {
-  const QString path = QFileDialog::getSaveFileName(this, "Record video", "rollviz.mp4", "MP4 video (*.mp4)");
-  if (path.isEmpty()) return;
-  VideoSpec spec;
-  spec.speed = speedBox_->value();
-  spec.duration = 10;
-  startRecording(path, spec);
+  const QString path =
+      askWhereToWrite("Record video", QStandardPaths::MoviesLocation, "mp4", "MP4 video (*.mp4)");
+  if (!path.isEmpty()) startRecording(path);
 }
 
 void MainWindow::createTool(const std::string& id) {

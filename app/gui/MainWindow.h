@@ -4,7 +4,6 @@
 #include "dynamics/jobs/PlotTap.h"
 #include "dynamics/jobs/TrajectoryStream.h"
 #include "render/VisualScene.h"
-#include "render/video/VideoExport.h"
 #include "scenes/Scene.h"
 
 #include <nlohmann/json.hpp>
@@ -12,6 +11,8 @@
 #include <QElapsedTimer>
 #include <QMainWindow>
 #include <QPointer>
+#include <QStandardPaths>
+#include <QThread>
 #include <QTimer>
 #include <memory>
 #include <optional>
@@ -82,10 +83,11 @@ public:
   bool saveSceneTo(const QString& path, QString* why = nullptr);
   /// Writes the 3D view as drawn to a PNG; false when it cannot.
   bool snapshotTo(const QString& path);
-  /// Starts recording the scene's run from t = 0 into an MP4 (`rollviz video` in a child process: the window
-  /// stays responsive); false (with the reason in the status bar) when it cannot start.
-  bool startRecording(const QString& path, const VideoSpec& spec);
-  /// Stops a recording: the frames so far become a valid, shorter video.
+  /// Starts recording what the 3D view shows, from now on, into an MP4 of `fps` frames a second at the view's
+  /// size: the run as it plays, camera moves and pauses included, the video as long as the recording
+  /// (`rollviz video` renders exact frames offline instead). False (the reason in Results) when it cannot.
+  bool startRecording(const QString& path, int fps = 25);
+  /// Ends a recording; the file is finished on a worker thread, then recordingFinished().
   void stopRecording();
   bool recording() const { return recorder_ != nullptr; }
   /// Opens a filter window with a chart view of the scene (computed on a worker thread); `diagram` picks the
@@ -130,10 +132,13 @@ public slots:
   void openDialog();
   void saveDialog();
   void recordDialog();
+  /// A file dialog proposing `<problem>-t<time>.<extension>` in the user's `where` folder; empty: cancelled.
+  QString askWhereToWrite(const QString& title, QStandardPaths::StandardLocation where,
+                          const QString& extension, const QString& filter);
 
 signals:
-  /// The recording ended: `exitCode` 0 (done), 130 (stopped: a shorter video), else failed.
-  void recordingFinished(int exitCode, const QString& path);
+  /// A recording's file is written (`ok`) or could not be (the reason in Results).
+  void recordingFinished(bool ok, const QString& path);
 
 protected:
   void closeEvent(QCloseEvent* e) override;
@@ -176,9 +181,10 @@ private:
   void followInApex(int id);
   /// Gives the apex window what the followed map trajectory computed since the last frame.
   void feedApexFromMap();
-  // a recording in progress: its own scene, integrator, headless context and exporter
+  // a recording in progress: the view's pictures into a ScreenRecorder, timed by a wall clock
   struct Recording;
   std::unique_ptr<Recording> recorder_;
+  QPointer<QThread> finisher_; ///< finishing the last recording's file
   MapPanel* map_;
   ControlPanel* control_;
   ToolManager* tools_;

@@ -86,10 +86,17 @@ ParameterForm::ParameterForm(const ParameterTable& table, QWidget* parent) : QWi
                 bool number = false;
                 t.trimmed().toDouble(&number);
                 problem->setText(ok ? QString() : number ? range : "not a number");
+                problem->setProperty("typed", t.trimmed());
                 problem->setVisible(!ok);
               });
-      connect(box, &QAbstractSpinBox::editingFinished, problem,
-              &QLabel::hide); // Qt puts back the last valid value
+      // leaving the field, Qt puts back the last valid value: say so (where it lasts) rather than silently
+      connect(box, &QAbstractSpinBox::editingFinished, this, [this, box, problem, label = s.label] {
+        if (problem->isHidden()) return;
+        emit rejected(QString("%1: %2 %3; kept %4")
+                          .arg(QString::fromStdString(label), problem->property("typed").toString(),
+                               problem->text(), QString::number(box->property("value").toDouble(), 'g', 15)));
+      });
+      connect(box, &QAbstractSpinBox::editingFinished, problem, &QLabel::hide);
     }
     form->addRow(label, field);
     editors_.push_back(editor);

@@ -29,6 +29,9 @@ public:
 
 signals:
   void edited();
+  /// A field was left holding what it cannot take (out of range, not a number): Qt put back its last valid
+  /// value; `message` says what was typed, why it was refused and what the field keeps.
+  void rejected(const QString& message);
 
 private:
   void touch(std::size_t i);

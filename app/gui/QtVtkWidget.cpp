@@ -12,6 +12,7 @@
 #include <QTimer>
 #include <QVBoxLayout>
 #include <QWheelEvent>
+#include <algorithm>
 #include <cmath>
 #include <vtkCallbackCommand.h>
 #include <vtkInteractorStyleTrackballCamera.h>
@@ -148,7 +149,21 @@ void QtVtkWidget::paintGL() {
   f->glClearColor(0, 0, 0, 1);
   f->glClear(GL_COLOR_BUFFER_BIT);
   f->glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  if (tap_) { // the picture as shown: Qt's framebuffer after the blit
+    f->glBindFramebuffer(GL_READ_FRAMEBUFFER, defaultFramebufferObject());
+    tapped_.width = dw, tapped_.height = dh;
+    tapped_.rgb.resize(static_cast<std::size_t>(dw) * dh * 3);
+    f->glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    f->glReadPixels(0, 0, dw, dh, GL_RGB, GL_UNSIGNED_BYTE, tapped_.rgb.data());
+    f->glPixelStorei(GL_PACK_ALIGNMENT, 4);                   // GL's default, which VTK and Qt assume
+    const std::size_t row = static_cast<std::size_t>(dw) * 3; // GL's rows run from the bottom
+    for (int y = 0; y < dh / 2; ++y)
+      std::swap_ranges(tapped_.rgb.begin() + static_cast<std::ptrdiff_t>(y * row),
+                       tapped_.rgb.begin() + static_cast<std::ptrdiff_t>((y + 1) * row),
+                       tapped_.rgb.begin() + static_cast<std::ptrdiff_t>((dh - 1 - y) * row));
+  }
   st->Pop();
+  if (tap_) tap_(tapped_);
 }
 
 void QtVtkWidget::mousePressEvent(QMouseEvent* e) {

@@ -1,7 +1,10 @@
 // QtVtkWidget.h -- a Qt 6 QOpenGLWidget hosting a vtkGenericOpenGLRenderWindow (Debian's QVTK widget is
 // built for Qt 5 and cannot share a process with Qt 6). Mouse and wheel go to a VTK interactor.
 #pragma once
+#include "render/Snapshot.h"
+
 #include <QOpenGLWidget>
+#include <functional>
 #include <map>
 #include <vtkCommand.h>
 #include <vtkGenericOpenGLRenderWindow.h>
@@ -26,6 +29,9 @@ public:
   static QtVtkWidget* inOwnWindow(QWidget* parent, const QString& title, int width = 560, int height = 560);
   /// OpenGL 3.2 core, no multisampling: what VTK 9.1 needs. Set as the default before QApplication.
   static QSurfaceFormat defaultFormat();
+  /// Receives every picture painted, as shown (RGB, rows from the top); an empty function stops it. What a
+  /// screen recording is made of.
+  void setFrameTap(std::function<void(const Image&)> tap) { tap_ = std::move(tap); }
 
 protected:
   void initializeGL() override;
@@ -43,6 +49,8 @@ private:
   vtkSmartPointer<vtkGenericRenderWindowInteractor> interactor_;
   std::map<int, QTimer*> timers_;
   bool inPaint_ = false, skipRender_ = false;
+  std::function<void(const Image&)> tap_;
+  Image tapped_; // reused: a frame's pixels are not reallocated on every paint
 };
 
 } // namespace rv

@@ -24,6 +24,13 @@ BodyObject::BodyObject(std::string name, const BodyGeometry& geometry)
   body_->GetProperty()->SetSpecularPower(30);
   body_->GetProperty()->BackfaceCullingOff(); // an open paraboloid shows its inside
 
+  vtkNew<vtkPolyDataMapper> gridMapper;
+  gridMapper->SetInputData(makeBodyGridLines(geometry));
+  grid_ = vtkSmartPointer<vtkActor>::New();
+  grid_->SetMapper(gridMapper);
+  grid_->GetProperty()->SetLineWidth(1.5);
+  grid_->GetProperty()->LightingOff();
+
   vtkNew<vtkRegularPolygonSource> disc;
   disc->SetNumberOfSides(64);
   disc->GeneratePolylineOff();
@@ -41,6 +48,7 @@ BodyObject::BodyObject(std::string name, const BodyGeometry& geometry)
 void BodyObject::attach(vtkRenderer* renderer) {
   renderer->AddActor(shadow_);
   renderer->AddActor(body_);
+  renderer->AddActor(grid_);
 }
 
 void BodyObject::apply(const ObjectOptions& o) {
@@ -48,13 +56,15 @@ void BodyObject::apply(const ObjectOptions& o) {
   body_->SetTexture(textureFor(o, [&] { return makeBallTexture(color); }));
   const Rgb base = body_->GetTexture() ? Rgb{1, 1, 1} : color; // a texture carries the colour itself
   body_->GetProperty()->SetColor(base[0], base[1], base[2]);
-  body_->SetVisibility(o.enabled);
   shadow_->SetVisibility(o.enabled);
   auto* p = body_->GetProperty();
   p->SetOpacity(o.opacity.value_or(1.0));
-  p->SetRepresentation(o.style == SurfaceStyle::Grid ? VTK_WIREFRAME : VTK_SURFACE);
-  p->SetEdgeVisibility(o.style == SurfaceStyle::Both);
-  p->SetEdgeColor(0.1, 0.1, 0.1);
+  body_->SetVisibility(o.enabled && o.style != SurfaceStyle::Grid);
+  grid_->SetVisibility(o.enabled && o.style != SurfaceStyle::Fill);
+  // alone, the grid has the body's colour; over the surface, dark lines
+  const Rgb line = o.style == SurfaceStyle::Grid ? color : Rgb{0.1, 0.1, 0.1};
+  grid_->GetProperty()->SetColor(line[0], line[1], line[2]);
+  grid_->GetProperty()->SetOpacity(o.opacity.value_or(1.0));
 }
 
 void BodyObject::show(const FrameState& s) {
@@ -66,6 +76,7 @@ void BodyObject::show(const FrameState& s) {
     m->SetElement(i, 3, s.pose->center[i]);
   }
   body_->SetUserMatrix(m);
+  grid_->SetUserMatrix(m);
   shadow_->SetPosition(s.pose->contact[0], s.pose->contact[1], s.pose->contact[2] + 3e-3 * size_);
 }
 

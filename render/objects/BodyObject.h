@@ -1,6 +1,7 @@
 // BodyObject.h -- a rigid body (ball, ellipsoid, paraboloid) drawn from its mesh in its own frame and placed
 // by the pose; textured so that turning and spinning are visible, with a dark disc on the plane under the
-// contact point (a cheap depth cue on software GL).
+// contact point (a cheap depth cue on software GL). Its "grid" style is meridians and parallels, not the
+// triangles of the mesh.
 #pragma once
 #include "dynamics/core/Model.h"
 #include "render/objects/VisualObject.h"
@@ -21,6 +22,7 @@ public:
 private:
   double size_;
   vtkSmartPointer<vtkActor> body_, shadow_;
+  vtkSmartPointer<vtkActor> grid_; ///< meridians and parallels: the "grid" and "both" styles
 };
 
 } // namespace rv

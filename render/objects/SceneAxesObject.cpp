@@ -30,6 +30,12 @@ SceneAxesObject::SceneAxesObject(std::string name, const AxesOptions& axes,
       p->SetColor(0.1, 0.1, 0.15);
       p->SetFontFamilyToArial();
     }
+    // labels are screen text (Use2DMode: readable at any zoom); VTK's 2D mode places x labels below their
+    // axis and y labels beside it, but leaves z's at the tick itself: right-justified, they stay outside the
+    // box
+    a->SetUse2DMode(1);
+    if (i == 2) a->GetLabelTextProperty()->SetJustificationToRight();
+    a->GetLabelTextProperty()->SetVerticalJustificationToCentered();
     a->GetAxisLinesProperty()->SetColor(0.15, 0.15, 0.2);
     a->GetAxisMajorTicksProperty()->SetColor(0.15, 0.15, 0.2);
     a->GetAxisMinorTicksProperty()->SetColor(0.15, 0.15, 0.2);
@@ -109,7 +115,8 @@ void SceneAxesObject::rebuild() {
   const double extent = std::max({hi_[0] - lo_[0], hi_[1] - lo_[1], hi_[2] - lo_[2]});
   for (int i = 0; i < 3; ++i) {
     auto& a = axis_[i];
-    double p1[3] = {lo_[0], lo_[1], lo_[2]}, p2[3] = {lo_[0], lo_[1], lo_[2]};
+    // y runs along the far x edge: three axes from one corner put their first labels on each other
+    double p1[3] = {i == 1 ? hi_[0] : lo_[0], lo_[1], lo_[2]}, p2[3] = {p1[0], p1[1], p1[2]};
     p2[i] = hi_[i];
     a->SetPoint1(p1);
     a->SetPoint2(p2);
@@ -135,10 +142,10 @@ void SceneAxesObject::rebuild() {
     a->SetLabels(labels);
     a->SetMajorTickSize(0.02 * extent);
     a->SetMinorTickSize(0.01 * extent);
-    a->SetLabelOffset(0.04 * extent);
-    a->SetTitleOffset(0.09 * extent);
-    a->SetLabelScale(0.018 * extent);
-    a->SetTitleScale(0.026 * extent);
+    a->SetLabelOffset(0.05 * extent);
+    a->SetTitleOffset(0.12 * extent);
+    a->SetLabelScale(0.032 * extent);
+    a->SetTitleScale(0.04 * extent);
     a->SetTickVisibility(axes_.ticks);
     a->SetMinorTicksVisible(axes_.ticks && axes_.subticks > 0);
     a->SetLabelVisibility(axes_.ticks);

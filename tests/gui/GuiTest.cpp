@@ -83,6 +83,18 @@ private slots:
     line->selectAll();
     QTest::keyClicks(line, "2.5");
     QCOMPARE(form->problem("I1"), QString());
+    // leaving a refused value: Qt keeps the last valid one, and the panel says so (the Results dock shows it)
+    QTest::keyClick(line, Qt::Key_Return);
+    const double kept = box->value();
+    QSignalSpy refused(&panel, &ControlPanel::message);
+    line->selectAll();
+    QTest::keyClicks(line, "-5");
+    QTest::keyClick(line, Qt::Key_Return);
+    QCOMPARE(box->value(), kept);
+    QCOMPARE(refused.size(), 1);
+    const QString said = refused.first().at(0).toString();
+    QVERIFY2(said.contains("-5 must lie in [0, inf]") && said.endsWith("kept 2.5"), qPrintable(said));
+    QVERIFY(form->problem("I1").isEmpty());
   }
 
   void editsBecomeTheSceneDocument() {

@@ -3,26 +3,36 @@
 #include "render/GrowingPolyline.h"
 #include "render/charts/PoincareChart.h"
 
+#include "render/BodyMeshes.h"
 #include "render/objects/ApexObject.h"
 #include "render/objects/FrameObjects.h"
 #include "render/objects/SceneAxesObject.h"
 #include "render/video/Mp4Writer.h"
+#include "render/video/ScreenRecorder.h"
 #include "tests/render/ImageCompare.h"
 #include "tests/render/Play.h"
 #include <Eigen/LU>
 
+#include <array>
 #include <cstdio>
 #include <filesystem>
 #include <gtest/gtest.h>
 #include <numbers>
+#include <unistd.h>
 #include <vtkImageData.h>
 #include <vtkPNGReader.h>
+#include <vtkPolyData.h>
 #include <vtkRenderer.h>
 
 namespace rv {
 namespace {
 
 using test::play;
+
+// a temporary file's name of this process: the EGL and OSMesa test binaries run side by side (ctest -j)
+std::string ownName(const std::string& name) {
+  return std::to_string(::getpid()) + "_" + name;
+}
 
 Image renderPlayed(VisualScene& visual, int w = 480, int h = 360) {
   auto ctx = createHeadlessContext(w, h);
@@ -81,6 +91,27 @@ TEST(ApexView, MatchesItsBaseline) {
   const Image img = renderPlayed(*p->visual);
   ASSERT_TRUE(test::isVaried(img));
   EXPECT_EQ(test::matchesBaseline(img, "apex_ellipsoid_on_plane_t30"), "");
+}
+
+// the apex view says what its colours are: a line per axis in that axis' colour (none in other views)
+TEST(ApexView, HasAKeyToItsColours) {
+  const auto p = play("ellipsoid_on_plane", 1.0, {"view.kind=apex"});
+  ASSERT_EQ(p->visual->colourKey().size(), 3u);
+  EXPECT_NE(p->visual->colourKey()[0].find("e1"), std::string::npos);
+  const auto body = play("chaplygin_ball", 0.0, {"view.kind=apex", "view.looking_in=body"});
+  EXPECT_NE(body->visual->colourKey()[2].find("gamma"), std::string::npos);
+  EXPECT_TRUE(play("ellipsoid_on_plane", 0.0)->visual->colourKey().empty());
+  const Image img = renderPlayed(*p->visual);
+  // bottom left, above the time: text in each axis colour (a channel well above the other two)
+  for (int axis = 0; axis < 3; ++axis) {
+    long n = 0;
+    for (int y = img.height - 100; y < img.height; ++y)
+      for (int x = 0; x < img.width / 2; ++x) {
+        const unsigned char* px = &img.rgb[(static_cast<std::size_t>(y) * img.width + x) * 3];
+        n += px[axis] > 120 && px[axis] > px[(axis + 1) % 3] + 60 && px[axis] > px[(axis + 2) % 3] + 60;
+      }
+    EXPECT_GT(n, 30) << "axis " << axis;
+  }
 }
 
 TEST(SceneAxes, TicksAreWhereTheRangeAndCountsPutThem) {
@@ -168,6 +199,41 @@ TEST(Objects, GridStyleKeepsTheFloor) {
   EXPECT_GT(test::pixelsChanged(fill, lines, 20), 500); // the checker gave way to lines on a plain sheet
 }
 
+// a body's "grid" is meridians and parallels on its surface (not the mesh's triangles): every vertex on the
+// ellipsoid, 24 + 11 lines
+TEST(Objects, ABodysGridIsMeridiansAndParallels) {
+  BodyGeometry g;
+  g.shape = BodyShape::Ellipsoid;
+  g.semiAxes = {1.0, 0.6, 0.4};
+  g.centre = {0.0, 0.0, 0.1};
+  const auto lines = makeBodyGridLines(g);
+  EXPECT_EQ(lines->GetNumberOfLines(), 35);
+  EXPECT_EQ(lines->GetNumberOfPolys(), 0);
+  double worst = 0;
+  for (vtkIdType i = 0; i < lines->GetNumberOfPoints(); ++i) {
+    double q[3];
+    lines->GetPoint(i, q);
+    worst = std::max(worst, std::abs(std::pow(q[0] / 1.0, 2) + std::pow(q[1] / 0.6, 2) +
+                                     std::pow((q[2] - 0.1) / 0.4, 2) - 1));
+  }
+  EXPECT_LT(worst, 1e-6); // (VTK keeps points in single precision)
+  // drawn: the grid alone covers far fewer pixels than the surface, yet is there
+  const auto p = play("chaplygin_ball", 0.5, {"view.objects.plane.enabled=false"});
+  const Image fill = renderPlayed(*p->visual);
+  ObjectOptions grid = p->visual->options().object("ball");
+  grid.style = SurfaceStyle::Grid;
+  p->visual->setOptions("ball", grid);
+  const Image wire = renderPlayed(*p->visual);
+  grid.enabled = false;
+  p->visual->setOptions("ball", grid);
+  const Image none = renderPlayed(*p->visual);
+  if (const char* out = std::getenv("ROLLVIZ_TEST_OUTPUT"))
+    writePng(wire, std::string(out) + "/ball_grid.png");
+  const long surface = test::pixelsChanged(none, fill, 20), meshLines = test::pixelsChanged(none, wire, 20);
+  EXPECT_GT(meshLines, surface / 20) << surface;
+  EXPECT_LT(meshLines, surface * 3 / 4) << surface; // lines, front and back, not a surface
+}
+
 TEST(Objects, TextureNoneAndAPngChangeTheBall) {
   const auto own = play("chaplygin_ball", 1.0);
   const auto plain = play("chaplygin_ball", 1.0, {"view.objects.ball.texture=none"});
@@ -180,11 +246,14 @@ TEST(Objects, TextureNoneAndAPngChangeTheBall) {
 }
 
 TEST(Snapshot, TransparentBackgroundAndLargePictures) {
-  const auto p = play("chaplygin_ball", 1.0, {"view.kind=apex"});
+  // (no text: glyphs rasterised at 3x differ from 1x ones averaged, and the key fills much of so small a
+  // view)
+  const auto p = play("chaplygin_ball", 1.0, {"view.kind=apex", "view.overlay=false"});
   auto ctx = createHeadlessContext(200, 150);
   p->visual->addTo(ctx->window());
   const auto dir = std::filesystem::temp_directory_path();
-  const std::string clear = (dir / "rv_clear.png").string(), large = (dir / "rv_large.png").string();
+  const std::string clear = (dir / ownName("rv_clear.png")).string(),
+                    large = (dir / ownName("rv_large.png")).string();
   writePng(ctx->window(), clear, "-o", {.transparent = true});
   writePng(ctx->window(), large, "-o", {.scale = 3});
   const Image normal = capture(ctx->window());
@@ -270,7 +339,7 @@ TEST(Video, ACancelledExportIsAValidShorterVideo) {
   auto integrator = p->scene.startIntegrator();
   auto ctx = createHeadlessContext(320, 240);
   p->visual->addTo(ctx->window());
-  const std::string path = (std::filesystem::temp_directory_path() / "rv_cancelled.mp4").string();
+  const std::string path = (std::filesystem::temp_directory_path() / ownName("rv_cancelled.mp4")).string();
   VideoSpec spec{.path = path, .width = 320, .height = 240, .fps = 10, .duration = 5};
   const long written =
       exportVideo(*p->visual, ctx->window(), *integrator, spec, [](long done, long) { return done < 7; });
@@ -278,6 +347,57 @@ TEST(Video, ACancelledExportIsAValidShorterVideo) {
   EXPECT_EQ(written, 7);
   EXPECT_EQ(countFrames(path), 7);
   std::filesystem::remove(path);
+}
+
+// the mean colour of video frame `n` (ffmpeg decodes it to RGB); {-1,-1,-1} when it cannot be read
+std::array<double, 3> frameColour(const std::string& path, int n, int width, int height) {
+  const std::string cmd = "ffmpeg -v error -i '" + path + "' -vf 'select=eq(n\\," + std::to_string(n) +
+                          ")' -vframes 1 -f rawvideo -pix_fmt rgb24 - 2>/dev/null";
+  FILE* f = popen(cmd.c_str(), "r");
+  std::array<double, 3> mean{-1, -1, -1};
+  if (!f) return mean;
+  std::vector<unsigned char> rgb(static_cast<std::size_t>(width) * height * 3);
+  if (std::fread(rgb.data(), 1, rgb.size(), f) == rgb.size()) {
+    mean = {0, 0, 0};
+    for (std::size_t p = 0; p < rgb.size(); ++p)
+      mean[p % 3] += rgb[p] / (rgb.size() / 3.0);
+  }
+  pclose(f);
+  return mean;
+}
+
+Image plain(int width, int height, unsigned char r, unsigned char g, unsigned char b) {
+  Image img{width, height, {}};
+  for (long p = 0; p < static_cast<long>(width) * height; ++p)
+    img.rgb.insert(img.rgb.end(), {r, g, b});
+  return img;
+}
+
+// a screen recording lasts as long as it was recorded: each picture holds until the next (a resized view's
+// picture is scaled), frame k showing what was on screen at k / fps
+TEST(Video, AScreenRecordingFollowsTheWallClock) {
+  const std::string path = (std::filesystem::temp_directory_path() / ownName("rv_screen.mp4")).string();
+  ScreenRecorder rec(path, 161, 120, 10); // an odd width is made even
+  EXPECT_EQ(rec.width(), 160);
+  rec.add(plain(161, 120, 220, 30, 30), 0.0); // red from the start
+  rec.add(plain(80, 60, 30, 30, 220), 0.55);  // blue (a smaller view) from 0.55 s
+  EXPECT_EQ(rec.frames(), 6);                 // frames 0..5 begin before 0.55 s
+  EXPECT_EQ(rec.finish(1.0), 10);             // blue holds until the end: one second of video
+  EXPECT_EQ(countFrames(path), 10);
+  const auto red = frameColour(path, 5, 160, 120), blue = frameColour(path, 6, 160, 120),
+             last = frameColour(path, 9, 160, 120);
+  EXPECT_GT(red[0], 180);
+  EXPECT_LT(red[2], 80);
+  EXPECT_GT(blue[2], 180);
+  EXPECT_LT(blue[0], 80);
+  EXPECT_GT(last[2], 180);
+  std::filesystem::remove(path);
+  // nothing recorded: no file
+  {
+    ScreenRecorder none(path, 160, 120, 10);
+    EXPECT_EQ(none.finish(2.0), 0);
+  }
+  EXPECT_FALSE(std::filesystem::exists(path));
 }
 
 } // namespace
