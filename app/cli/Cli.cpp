@@ -5,7 +5,12 @@
 #include "dynamics/core/Errors.h"
 #include "dynamics/tools/ToolRegistry.h"
 
+#include "render/context/HeadlessContext.h"
+
+#include <cstdlib>
+#include <filesystem>
 #include <fmt/core.h>
+#include <unistd.h>
 
 namespace rv {
 
@@ -44,12 +49,30 @@ const std::map<std::string, ToolCommandBuilder>& toolCommandBuilders() {
   return builders;
 }
 
+namespace {
+// With no EGL at all, `rollviz` runs the same command as `rollviz-osmesa` from its own folder (OSMesa cannot share
+// a process with GLVND's GL: stack/README.md). Outputs are written to temporary names and renamed, so nothing the
+// first attempt began is left; the environment variable tells the second why, and stops a loop.
+void handOverToOsMesa(char** argv, const char* why) {
+  std::error_code ec;
+  const auto self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (ec || self.filename() == "rollviz-osmesa" || std::getenv(kEglUnavailableVariable)) return;
+  const auto sibling = self.parent_path() / "rollviz-osmesa";
+  if (!std::filesystem::exists(sibling, ec)) return;
+  fmt::print(stderr, "rollviz: {}; running {} instead\n", why, sibling.string());
+  std::fflush(nullptr);
+  setenv(kEglUnavailableVariable, why, 1);
+  execv(sibling.c_str(), argv);
+  unsetenv(kEglUnavailableVariable); // exec failed: report the original error
+}
+} // namespace
+
 int runCli(int argc, char** argv, const GuiLauncher& gui) {
   CLI::App app{"rollviz: bodies rolling without slipping, and the tools of nonlinear dynamics"};
   app.require_subcommand(0, 1);
   std::vector<Command> commands{
       addListCommand(app),   addDescribeCommand(app), addDescribeToolCommand(app), addIntegrateCommand(app),
-      addRenderCommand(app), addVideoCommand(app),    addChartCommand(app)};
+      addRenderCommand(app), addVideoCommand(app),    addChartCommand(app),        addInfoCommand(app)};
   for (const auto& tool : ToolRegistry::builtin().entries())
     if (!tool.command.empty())
       commands.push_back(
@@ -82,6 +105,10 @@ int runCli(int argc, char** argv, const GuiLauncher& gui) {
   } catch (const InputError& e) {
     fmt::print(stderr, "rollviz: {}\n", e.what());
     return 2;
+  } catch (const HeadlessUnavailable& e) {
+    handOverToOsMesa(argv, e.what()); // returns only when it cannot
+    fmt::print(stderr, "rollviz: failed: {}\n", e.what());
+    return 1;
   } catch (const ComputationError& e) {
     fmt::print(stderr, "rollviz: failed: {}\n", e.what());
     return 1;

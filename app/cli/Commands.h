@@ -36,6 +36,10 @@ struct Command {
 Command addListCommand(CLI::App& app);
 Command addDescribeCommand(CLI::App& app);
 Command addDescribeToolCommand(CLI::App& app);
+/// `rollviz info`: version, build, libraries and the headless renderer (warns when it is software).
+Command addInfoCommand(CLI::App& app);
+/// Set by `rollviz` in the environment of the `rollviz-osmesa` it hands a command to: why EGL failed.
+inline constexpr const char* kEglUnavailableVariable = "ROLLVIZ_EGL_UNAVAILABLE";
 Command addIntegrateCommand(CLI::App& app);
 Command addRenderCommand(CLI::App& app);
 Command addVideoCommand(CLI::App& app);

@@ -1,4 +1,5 @@
-// InfoCommands.cpp -- `rollviz list ...`, `rollviz describe PROBLEM` and `rollviz describe-tool ID`.
+// InfoCommands.cpp -- `rollviz list ...`, `rollviz describe PROBLEM`, `rollviz describe-tool ID`, `rollviz info`.
+#include "app/cli/BuildInfo.h"
 #include "app/cli/Commands.h"
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/ModelRegistry.h"
@@ -6,9 +7,11 @@
 #include "dynamics/tools/ToolSettings.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <fmt/core.h>
 #include <memory>
+#include <nlohmann/json.hpp>
 
 namespace rv {
 
@@ -164,6 +167,39 @@ Command addDescribeCommand(CLI::App& app) {
               fmt::print(" {}: {}\n", e.id, e.title);
               printParameters(*e.parameters);
             }
+            return 0;
+          }};
+}
+
+Command addInfoCommand(CLI::App& app) {
+  auto* cmd = app.add_subcommand("info", "version, build, libraries and the renderer headless pictures use");
+  auto json = std::make_shared<bool>(false);
+  cmd->add_flag("--json", *json, "print one JSON object");
+  return {cmd, [json] {
+            // a tiny context tells the renderer; HeadlessUnavailable goes up to runCli, which hands over to
+            // rollviz-osmesa, and a bad ROLLVIZ_EGL_DEVICE is an InputError (status 2)
+            const auto ctx = createHeadlessContext(16, 16);
+            const RendererInfo& r = ctx->info();
+            const char* eglFailure = std::getenv(kEglUnavailableVariable);
+            if (*json) {
+              nlohmann::ordered_json j;
+              for (const auto& f : buildFacts())
+                j[f.name] = f.value;
+              j["renderer"] = {{"backend", r.backend}, {"context", r.context}, {"devices", r.devices},
+                               {"vendor", r.vendor},   {"renderer", r.renderer}, {"version", r.version},
+                               {"software", r.software}};
+              if (eglFailure) j["renderer"]["egl_unavailable"] = eglFailure;
+              fmt::print("{}\n", j.dump());
+            } else {
+              for (const auto& f : buildFacts())
+                fmt::print("{:<13}{}\n", f.name, f.value);
+              fmt::print("\nheadless renderer\n");
+              for (const auto& f : rendererFacts(r))
+                fmt::print("  {:<13}{}\n", f.name, f.value);
+              if (eglFailure) fmt::print("  {:<13}unavailable: {}\n", "EGL", eglFailure);
+            }
+            if (const auto warning = softwareRendererWarning(r); !warning.empty())
+              fmt::print(stderr, "rollviz: warning: {}\n", warning);
             return 0;
           }};
 }

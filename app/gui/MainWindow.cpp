@@ -1,5 +1,6 @@
 #include "app/gui/MainWindow.h"
 
+#include "app/gui/AboutDialog.h"
 #include "app/gui/ChartWindow.h"
 #include "app/gui/ControlPanel.h"
 #include "app/gui/FilterWindow.h"
@@ -266,6 +267,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   auto* continuation = tools->addAction("Continue the fixed point", map_, &MapPanel::startContinuation);
   continuation->setToolTip("the family in continuation.parameter up to continuation.to (control panel)");
   continuation->setShortcut(QKeySequence("Ctrl+Shift+C"));
+  auto* help = menuBar()->addMenu("&Help");
+  help->addAction("About rollviz…", this, [this] { (new AboutDialog(view_, this))->show(); })
+      ->setToolTip("the version, the libraries and the renderers (GPU or software) behind the pictures");
   status_ = new QLabel(this);
   statusBar()->addWidget(status_, 1);
   connect(map_, &MapPanel::message, this, [this](const QString& m) { report(m, 8000); });

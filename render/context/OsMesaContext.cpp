@@ -7,6 +7,7 @@
 #include "dynamics/core/Errors.h"
 
 #include <GL/osmesa.h>
+#include <string>
 #include <vector>
 #include <vtkCallbackCommand.h>
 #include <vtkGenericOpenGLRenderWindow.h>
@@ -34,6 +35,12 @@ public:
     ctx_ = OSMesaCreateContextAttribs(attr, nullptr);
     if (!ctx_ || !makeCurrent()) throw ComputationError("cannot create an OpenGL 3.2 core OSMesa context");
     glxshim::loader = [](const char* n) { return reinterpret_cast<glxshim::Proc>(OSMesaGetProcAddress(n)); };
+    info_.backend = "osmesa";
+    info_.context = "OSMesa (software, into memory)";
+    info_.vendor = text(GL_VENDOR);
+    info_.renderer = text(GL_RENDERER);
+    info_.version = text(GL_VERSION);
+    info_.software = true; // OSMesa renders on the CPU whatever its rasteriser
 
     window_ = vtkSmartPointer<vtkGenericOpenGLRenderWindow>::New();
     vtkNew<vtkCallbackCommand> cb;
@@ -60,12 +67,18 @@ public:
   }
   vtkRenderWindow* window() override { return window_; }
   const char* backend() const override { return "osmesa"; }
+  const RendererInfo& info() const override { return info_; }
 
 private:
+  static std::string text(GLenum what) {
+    const GLubyte* s = glGetString(what);
+    return s ? std::string(reinterpret_cast<const char*>(s)) : std::string("?");
+  }
   bool makeCurrent() { return OSMesaMakeCurrent(ctx_, buffer_.data(), GL_UNSIGNED_BYTE, w_, h_); }
   OSMesaContext ctx_ = nullptr;
   std::vector<unsigned char> buffer_;
   int w_, h_;
+  RendererInfo info_;
   vtkSmartPointer<vtkGenericOpenGLRenderWindow> window_;
 };
 

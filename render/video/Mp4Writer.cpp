@@ -118,4 +118,13 @@ long Mp4Writer::frames() const {
   return impl_->next;
 }
 
+std::string libavVersions() {
+  auto version = [](const char* name, unsigned v) {
+    return std::string(name) + " " + std::to_string(v >> 16) + "." + std::to_string((v >> 8) & 0xff) + "." +
+           std::to_string(v & 0xff);
+  };
+  return version("libavcodec", avcodec_version()) + ", " + version("libavformat", avformat_version()) + ", " +
+         version("libswscale", swscale_version());
+}
+
 } // namespace rv

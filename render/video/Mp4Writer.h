@@ -26,4 +26,7 @@ private:
   std::unique_ptr<Impl> impl_;
 };
 
+/// The libav libraries this executable runs with, e.g. "libavcodec 59.37.100, libavformat 59.27.100, ...".
+std::string libavVersions();
+
 } // namespace rv

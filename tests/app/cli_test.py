@@ -729,6 +729,50 @@ class Cli(unittest.TestCase):
         self.assertEqual(r.returncode, 1)
         self.assertIn("no display", r.stderr)
 
+    def test_info_names_the_renderer_and_warns_on_software(self):
+        r = run("info")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        for word in ("rollviz", "VTK", "Eigen", "libavcodec", "GL_RENDERER", "GL_VERSION", "EGL devices"):
+            self.assertIn(word, r.stdout)
+        j = json.loads(run("info", "--json").stdout)
+        renderer = j["renderer"]
+        self.assertEqual(renderer["backend"], "egl")
+        self.assertTrue(renderer["renderer"] and renderer["version"][0].isdigit(), renderer)
+        software = any(w in renderer["renderer"] for w in ("llvmpipe", "softpipe", "swrast"))
+        self.assertEqual(renderer["software"], software)
+        # a CPU rasteriser is worth a warning, on stderr (stdout stays the report)
+        self.assertEqual("rendering on the CPU" in r.stderr, software, r.stderr)
+        o = json.loads(run("info", "--json", exe=RVO).stdout)["renderer"]
+        self.assertEqual((o["backend"], o["software"]), ("osmesa", True))
+
+    def test_an_egl_device_is_chosen_by_number_and_a_wrong_one_is_bad_input(self):
+        devices = json.loads(run("info", "--json").stdout)["renderer"]["devices"]
+        if not devices:
+            self.skipTest("this EGL does not enumerate devices")
+        last = str(len(devices) - 1)
+        j = json.loads(run("info", "--json", env={"ROLLVIZ_EGL_DEVICE": last}).stdout)["renderer"]
+        self.assertEqual(j["context"], "EGL device " + devices[-1])
+        out = self.path("d.png")
+        r = run("render", SCENE, "-o", out, "--size", "160x120", env={"ROLLVIZ_EGL_DEVICE": last})
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertTrue(varied(pixels(out)[1]))
+        for wrong in (str(len(devices)), "gpu"):
+            r = run("render", SCENE, "-o", self.path("w.png"), env={"ROLLVIZ_EGL_DEVICE": wrong})
+            self.assertBadInput(r, "ROLLVIZ_EGL_DEVICE=" + wrong)
+            self.assertFalse(os.path.exists(self.path("w.png")))
+
+    def test_without_egl_the_command_goes_to_rollviz_osmesa(self):
+        # no EGL vendor library (GLVND finds none): what a machine without Mesa's EGL or a GPU driver looks like
+        noegl = {"__EGL_VENDOR_LIBRARY_FILENAMES": os.path.join(self.dir, "none.json")}
+        out = self.path("o.png")
+        r = run("render", SCENE, "-o", out, "--size", "160x120", env=noegl)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("rollviz-osmesa instead", r.stderr)
+        self.assertTrue(varied(pixels(out)[1]))
+        j = json.loads(run("info", "--json", env=noegl).stdout)["renderer"]
+        self.assertEqual(j["backend"], "osmesa")
+        self.assertIn("no EGL context", j["egl_unavailable"])
+
 
 if __name__ == "__main__":
     unittest.main(argv=[sys.argv[0], "-v", *sys.argv[4:]])

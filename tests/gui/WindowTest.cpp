@@ -2,6 +2,7 @@
 // settings panel recolours the ball in the next frame (pixel check) and the edit survives a re-run; snapshot
 // and record write a real PNG and a valid MP4 (ffprobe) while the event loop keeps running; a chart (filter)
 // window and the apex window draw real pictures. Screenshots of each window are kept in ROLLVIZ_TEST_OUTPUT.
+#include "app/gui/AboutDialog.h"
 #include "app/gui/ChartWindow.h"
 #include "app/gui/ControlPanel.h"
 #include "app/gui/FilterWindow.h"
@@ -27,6 +28,8 @@
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QOpenGLContext>
+#include <QOpenGLFunctions>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -743,6 +746,39 @@ private slots:
     QVERIFY(reopen);
     reopen->trigger();
     QVERIFY(dock->isVisible());
+  }
+
+  // Help > About names the window's GL renderer at once and the headless one when `rollviz info` answers
+  // (a process of its own), without blocking the window meanwhile
+  void aboutNamesTheRenderers() {
+    QMenu* help = nullptr;
+    for (QAction* a : window_->menuBar()->actions())
+      if (a->text() == "&Help") help = a->menu();
+    QVERIFY(help);
+    QVERIFY(!help->actions().isEmpty());
+    help->actions().first()->trigger();
+    auto* about = window_->findChild<AboutDialog*>("about");
+    QVERIFY(about && about->isVisible());
+    auto* label = about->findChild<QLabel*>();
+    QVERIFY(label);
+    window_->view()->makeCurrent();
+    const QString screen =
+        QString::fromLatin1(reinterpret_cast<const char*>(window_->view()->context()->functions()->glGetString(
+                                GL_RENDERER)))
+            .toHtmlEscaped();
+    window_->view()->doneCurrent();
+    QVERIFY2(label->text().contains(screen), qPrintable(screen));
+    QVERIFY(label->text().contains("GL_RENDERER"));
+    if (!qEnvironmentVariableIsEmpty("ROLLVIZ_EXE")) {
+      QTRY_VERIFY_WITH_TIMEOUT(label->text().contains("backend"), 20000);
+      QVERIFY2(label->text().contains("egl"), qPrintable(label->text()));
+      if (screen.contains("llvmpipe")) {
+        QVERIFY(label->text().contains("rendering on the CPU"));
+      }
+    }
+    QVERIFY(keep(about->grab().toImage(), "window_about.png"));
+    about->close();
+    QTRY_VERIFY(!window_->findChild<AboutDialog*>("about"));
   }
 
   // manual §2.4.3: a running continuation feeds the multipliers filter, a point whenever its parameter moved
