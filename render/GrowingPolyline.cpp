@@ -1,8 +1,12 @@
 #include "render/GrowingPolyline.h"
 
 #include <algorithm>
+#include <cmath>
+#include <numbers>
 #include <vtkActor.h>
+#include <vtkCamera.h>
 #include <vtkCellArray.h>
+#include <vtkCommand.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
@@ -10,6 +14,29 @@
 #include <vtkRenderer.h>
 
 namespace rv {
+
+namespace {
+// cells of (at most) a pixel: a segment left out passes within a cell's diagonal (1.7 px) of drawn ones, inside
+// the traces' 3-pixel width
+constexpr double kCellPixels = 1.0;
+// a cell key packs three 21-bit coordinates; a point further out (a million pixels off the line's start) is
+// never counted as covered
+constexpr std::int64_t kCellRange = 1 << 20;
+
+bool cellKey(const Eigen::Vector3d& p, double cell, std::uint64_t& key) {
+  key = 0;
+  for (int k = 0; k < 3; ++k) {
+    const double c = std::floor(p[k] / cell);
+    if (!(std::abs(c) < kCellRange)) return false;
+    key |= (static_cast<std::uint64_t>(static_cast<std::int64_t>(c) + kCellRange) & 0x1FFFFF) << (21 * k);
+  }
+  return true;
+}
+} // namespace
+
+GrowingPolyline::~GrowingPolyline() {
+  if (renderer_) renderer_->RemoveObserver(observer_);
+}
 
 GrowingPolyline::GrowingPolyline(double tolerance, long maxPoints, bool asPoints)
     : tolerance_(tolerance), maxPoints_(maxPoints), asPoints_(asPoints) {
@@ -27,6 +54,105 @@ GrowingPolyline::GrowingPolyline(double tolerance, long maxPoints, bool asPoints
 
 void GrowingPolyline::attach(vtkRenderer* renderer) {
   renderer->AddActor(actor_);
+  if (asPoints_) return;
+  if (renderer_) renderer_->RemoveObserver(observer_);
+  renderer_ = renderer;
+  observer_ = renderer->AddObserver(vtkCommand::StartEvent, this, &GrowingPolyline::beforeFrame);
+}
+
+void GrowingPolyline::setLevelOfDetail(bool on) {
+  lod_ = on;
+  if (!on && cell_ > 0) {
+    cell_ = 0;
+    settle(true);
+  }
+}
+
+long GrowingPolyline::segmentsDrawn() const {
+  return data_->GetLines()->GetNumberOfCells();
+}
+
+void GrowingPolyline::beforeFrame() {
+  double cell = 0;
+  double b[6];
+  actor_->GetBounds(b); // world coordinates, the body's placement included
+  auto* camera = renderer_->GetActiveCamera();
+  const int height = renderer_->GetSize()[1];
+  if (lod_ && camera && height > 0 && b[0] <= b[1]) {
+    double pixel = 0;
+    if (camera->GetParallelProjection()) {
+      pixel = 2 * camera->GetParallelScale() / height;
+    } else { // at the line's nearest corner along the view: no part of it is drawn larger
+      const Eigen::Vector3d eye(camera->GetPosition()), view(camera->GetDirectionOfProjection());
+      double depth = 1e300;
+      for (int corner = 0; corner < 8; ++corner)
+        depth = std::min(depth, (Eigen::Vector3d(b[corner & 1], b[2 + (corner >> 1 & 1)], b[4 + (corner >> 2)]) - eye)
+                                    .dot(view));
+      if (depth > 0)
+        pixel = 2 * depth * std::tan(0.5 * camera->GetViewAngle() * std::numbers::pi / 180) / height;
+    }
+    const double target = kCellPixels * pixel;
+    // cells of at most a pixel, not under an eighth of the simplification's tolerance (nothing to gain there); a
+    // camera that follows the body changes the pixel a little every frame: the cells change only when the pixel
+    // has shrunk below them or grown by a third
+    if (cell_ > 0 && cell_ <= target && target < 1.33 * cell_) return;
+    if (target >= tolerance_ / 8) cell = target;
+  }
+  if (cell != cell_) {
+    cell_ = cell;
+    settle(true);
+  }
+}
+
+void GrowingPolyline::settle(bool all) {
+  if (all) {
+    cells_.clear();
+    kept_.clear();
+    settled_ = 0;
+  }
+  const long segments = data_->GetNumberOfPoints() - 1;
+  const long target = std::max(0L, segments - kLodHead);
+  std::vector<std::uint64_t> keys;
+  for (long i = settled_; i < target; ++i) {
+    bool covered = cell_ > 0;
+    if (covered) { // the segment's samples every half cell: all in cells already reached?
+      const Eigen::Vector3d a = vertex(i), d = vertex(i + 1) - a;
+      const long steps = std::max(1L, static_cast<long>(std::ceil(d.norm() / (0.5 * cell_))));
+      keys.clear();
+      for (long k = 0; k <= steps; ++k) {
+        std::uint64_t key;
+        if (!cellKey(a + d * (static_cast<double>(k) / steps), cell_, key)) {
+          covered = false;
+          keys.clear();
+          break;
+        }
+        keys.push_back(key);
+        covered = covered && cells_.count(key);
+      }
+    }
+    if (!covered) {
+      cells_.insert(keys.begin(), keys.end());
+      kept_.push_back(i);
+    }
+  }
+  settled_ = std::max(settled_, target);
+  rebuildCells();
+}
+
+void GrowingPolyline::rebuildCells() {
+  auto* lines = data_->GetLines();
+  lines->Reset();
+  const long segments = data_->GetNumberOfPoints() - 1;
+  for (const long i : kept_) {
+    const vtkIdType seg[2] = {i, i + 1};
+    lines->InsertNextCell(2, seg);
+  }
+  for (long i = settled_; i < segments; ++i) { // the head, exact
+    const vtkIdType seg[2] = {i, i + 1};
+    lines->InsertNextCell(2, seg);
+  }
+  lines->Modified();
+  data_->Modified();
 }
 
 void GrowingPolyline::setAppearance(const Rgb& color, double lineWidth, double opacity, bool visible) {
@@ -43,6 +169,9 @@ void GrowingPolyline::clear() {
   data_->SetLines(vtkSmartPointer<vtkCellArray>::New());
   data_->SetVerts(vtkSmartPointer<vtkCellArray>::New());
   samples_.clear();
+  cells_.clear();
+  kept_.clear();
+  settled_ = 0;
   data_->Modified();
 }
 
@@ -100,6 +229,7 @@ void GrowingPolyline::append(double x, double y, double z) {
         data_->GetLines()->InsertNextCell(2, seg);
         data_->GetLines()->Modified();
       }
+      if (id - settled_ > 2 * kLodHead) settle(false); // the head's older half settles: filtered once
     }
   }
   pts->Modified();

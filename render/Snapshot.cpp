@@ -3,6 +3,7 @@
 #include "dynamics/core/Errors.h"
 #include "dynamics/io/AtomicFile.h"
 
+#include <algorithm>
 #include <cstring>
 #include <filesystem>
 #include <vector>
@@ -14,20 +15,34 @@
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkRendererCollection.h>
+#include <vtkSmartPointer.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkWindowToImageFilter.h>
 
 namespace rv {
 
 namespace {
-// VTK images are bottom-up; Image is top-down
+// VTK's rows are bottom-up, Image's top-down: rows of RGB are copied whole, in reverse order
+void flipRgbRows(const unsigned char* bottomUp, int width, int height, Image& out) {
+  out.width = width, out.height = height;
+  const std::size_t row = std::size_t(width) * 3;
+  out.rgb.resize(row * height);
+  for (int y = 0; y < height; ++y)
+    std::memcpy(out.rgb.data() + std::size_t(height - 1 - y) * row, bottomUp + std::size_t(y) * row, row);
+}
+
 Image fromVtk(vtkImageData* img) {
   Image out;
   int dims[3];
   img->GetDimensions(dims);
-  out.width = dims[0], out.height = dims[1];
   const int nc = img->GetNumberOfScalarComponents();
-  out.rgb.resize(std::size_t(out.width) * out.height * 3);
   const auto* src = static_cast<const unsigned char*>(img->GetScalarPointer());
+  if (nc == 3) {
+    flipRgbRows(src, dims[0], dims[1], out);
+    return out;
+  }
+  out.width = dims[0], out.height = dims[1];
+  out.rgb.resize(std::size_t(out.width) * out.height * 3);
   for (int y = 0; y < out.height; ++y)
     for (int x = 0; x < out.width; ++x)
       for (int c = 0; c < 3; ++c)
@@ -38,14 +53,21 @@ Image fromVtk(vtkImageData* img) {
 } // namespace
 
 Image capture(vtkRenderWindow* window) {
+  Image img;
+  captureInto(window, img);
+  return img;
+}
+
+void captureInto(vtkRenderWindow* window, Image& into) {
   window->Render();
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(window);
-  grab->ShouldRerenderOff(); // rendered just above: a second render would double the cost of a frame
-  grab->ReadFrontBufferOff();
-  grab->SetInputBufferTypeToRGB();
-  grab->Update();
-  return fromVtk(grab->GetOutput());
+  // read once from the buffer just rendered (front = 0: VTK's render framebuffer, also with no blit), into a
+  // buffer this thread keeps
+  thread_local vtkSmartPointer<vtkUnsignedCharArray> pixels = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  const int* size = window->GetSize();
+  const int w = size[0], h = size[1];
+  if (window->GetPixelData(0, 0, w - 1, h - 1, 0, pixels, 0) == VTK_ERROR)
+    throw ComputationError("cannot read the rendered picture back");
+  flipRgbRows(pixels->GetPointer(0), w, h, into);
 }
 
 void writePng(vtkRenderWindow* window, const std::string& path, const std::string& what,

@@ -15,6 +15,8 @@ struct Image {
 
 /// Renders the window and reads its pixels back.
 Image capture(vtkRenderWindow* window);
+/// The same into `into`, reusing its storage: a video's frames then cost no allocation (and no page faults).
+void captureInto(vtkRenderWindow* window, Image& into);
 
 /// How a snapshot differs from the window it is taken of.
 struct SnapshotOptions {

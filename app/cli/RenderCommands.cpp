@@ -15,6 +15,7 @@
 #include <cmath>
 #include <fmt/core.h>
 #include <memory>
+#include <tuple>
 #include <vtkRenderWindow.h>
 
 namespace rv {
@@ -33,9 +34,9 @@ struct ChartOptions {
 };
 struct VideoOptions {
   SceneArgs scene;
-  std::string output, size = "1280x720", encoder = "libx264";
-  double duration = 5, speed = 0;
-  int fps = 25;
+  std::string output, size, encoder = "libx264";
+  double duration = 0, speed = 0;
+  int fps = 0;
 };
 } // namespace
 
@@ -125,39 +126,35 @@ Command addVideoCommand(CLI::App& app) {
   auto o = std::make_shared<VideoOptions>();
   addSceneArgs(cmd, o->scene);
   cmd->add_option("-o,--output", o->output, "MP4 file")->required();
-  cmd->add_option("--duration", o->duration, "seconds of video")->capture_default_str();
-  cmd->add_option("--fps", o->fps, "frames per second")->capture_default_str();
-  cmd->add_option("--size", o->size, "frame size WIDTHxHEIGHT (even numbers)")->capture_default_str();
+  auto* duration = cmd->add_option("--duration", o->duration, "seconds of video (default: the scene's video.duration)");
+  auto* fps = cmd->add_option("--fps", o->fps, "frames per second (default: the scene's video.fps)");
+  cmd->add_option("--size", o->size, "frame size WIDTHxHEIGHT, even numbers (default: video.width x video.height)");
   cmd->add_option("--speed", o->speed,
                   "simulation seconds per video second (default: the scene's view.speed)");
   cmd->add_option("--encoder", o->encoder, "libav encoder (libx264, or mpeg4)")->capture_default_str();
-  return {cmd, [o] {
-            const auto [w, h] = parseSize(o->size);
-            if (!(std::isfinite(o->duration) && o->duration > 0))
-              throw InputError("--duration: must be positive");
-            if (o->fps < 1 || o->fps > 240) throw InputError("--fps: must lie in [1, 240]");
-            if (w % 2 || h % 2)
-              throw InputError("--size " + o->size + ": a video needs an even width and height");
+  return {cmd, [o, duration, fps] {
             const Scene scene = o->scene.load();
+            // the scene's video section, then what the command line says
+            VideoSpec spec = videoSpec(scene.tool("video"), o->speed > 0 ? o->speed : scene.view.speed);
+            spec.path = o->output;
+            spec.encoder.codec = o->encoder;
+            if (!o->size.empty()) std::tie(spec.width, spec.height) = parseSize(o->size);
+            if (duration->count()) spec.duration = o->duration;
+            if (fps->count()) spec.fps = o->fps;
+            checkVideoSpec(spec, o->size.empty() ? "video.width x video.height" : "--size",
+                           duration->count() ? "--duration" : "video.duration", fps->count() ? "--fps" : "video.fps");
             checkWritable(o->output, "-o");
             auto integrator = scene.startIntegrator();
             VisualScene visual(*scene.model, scene.view, scene.initialState);
-            auto ctx = createHeadlessContext(w, h);
+            auto ctx = createHeadlessContext(spec.width, spec.height);
             visual.addTo(ctx->window());
-            VideoSpec spec{.path = o->output,
-                           .width = w,
-                           .height = h,
-                           .fps = o->fps,
-                           .duration = o->duration,
-                           .speed = o->speed > 0 ? o->speed : scene.view.speed,
-                           .encoder = o->encoder};
             Progress progress("video");
             const long frames = exportVideo(visual, ctx->window(), *integrator, spec, [&](long k, long n) {
               progress.update(static_cast<double>(k) / n);
               return !interrupted();
             });
             ctx->window()->RemoveRenderer(visual.renderer());
-            return interrupted() && frames < std::lround(o->duration * o->fps) ? 130 : 0;
+            return interrupted() && frames < std::lround(spec.duration * spec.fps) ? 130 : 0;
           }};
 }
 

@@ -17,6 +17,7 @@
 #include "dynamics/jobs/PoincareTask.h"
 #include "dynamics/tools/ToolRegistry.h"
 #include "render/video/ScreenRecorder.h"
+#include "render/video/VideoExport.h"
 #include "scenes/SceneCharts.h"
 #include "scenes/SceneLoader.h"
 
@@ -557,8 +558,11 @@ bool MainWindow::startRecording(const QString& path, int fps) {
   auto r = std::make_unique<Recording>();
   const qreal dpr = view_->devicePixelRatioF();
   try {
+    // the scene's video section: its frame rate unless one is given, its quality and preset
+    const VideoSpec settings = scene_ ? videoSpec(scene_->tool("video"), 1) : VideoSpec{};
     r->video = std::make_shared<ScreenRecorder>(path.toStdString(), static_cast<int>(view_->width() * dpr),
-                                                static_cast<int>(view_->height() * dpr), fps);
+                                                static_cast<int>(view_->height() * dpr),
+                                                fps > 0 ? fps : settings.fps, settings.encoder);
   } catch (const std::exception& e) {
     report("Cannot record: " + QString::fromUtf8(e.what()), 8000);
     return false;

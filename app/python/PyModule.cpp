@@ -17,6 +17,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <tuple>
 #include <vtkRenderWindow.h>
 
 namespace rv::py {
@@ -185,29 +186,26 @@ void exportView(const Scene& shared, const std::string& path, double time) {
   writeSceneVtm(visual, path, "path");
 }
 
-long video(const Scene& shared, const std::string& path, double duration, int fps, const pyb::handle& size,
-           double speed, const std::string& encoder, const pyb::object& progress) {
+long video(const Scene& shared, const std::string& path, const pyb::object& duration, const pyb::object& fps,
+           const pyb::object& size, double speed, const std::string& encoder, const pyb::object& progress) {
   // a copy: another Python thread may set() the scene while this runs without the GIL
   const Scene scene = shared; // NOLINT(performance-unnecessary-copy-initialization)
-  const auto picture = pictureSize(size, "size");
-  const int w = picture.first, h = picture.second; // lambdas capture no structured bindings (clang 14)
-  if (!(std::isfinite(duration) && duration > 0)) throw InputError("duration: must be positive");
-  if (fps < 1 || fps > 240) throw InputError("fps: must lie in [1, 240]");
-  if (w % 2 || h % 2) throw InputError("size: a video needs an even width and height");
+  // the scene's video section, then the arguments given
+  VideoSpec spec = videoSpec(scene.tool("video"), speed > 0 ? speed : scene.view.speed);
+  spec.path = path;
+  spec.encoder.codec = encoder;
+  if (!size.is_none()) std::tie(spec.width, spec.height) = pictureSize(size, "size");
+  if (!duration.is_none()) spec.duration = duration.cast<double>();
+  if (!fps.is_none()) spec.fps = fps.cast<int>();
+  checkVideoSpec(spec, size.is_none() ? "video.width x video.height" : "size",
+                 duration.is_none() ? "video.duration" : "duration", fps.is_none() ? "video.fps" : "fps");
   checkWritable(path, "path");
   long frames = 0;
   runJob(progress, [&](const ToolControl& control) {
     auto integrator = scene.startIntegrator();
     VisualScene visual(*scene.model, scene.view, scene.initialState);
-    auto ctx = createHeadlessContext(w, h);
+    auto ctx = createHeadlessContext(spec.width, spec.height);
     visual.addTo(ctx->window());
-    const VideoSpec spec{.path = path,
-                         .width = w,
-                         .height = h,
-                         .fps = fps,
-                         .duration = duration,
-                         .speed = speed > 0 ? speed : scene.view.speed,
-                         .encoder = encoder};
     frames = exportVideo(visual, ctx->window(), *integrator, spec, [&](long k, long n) {
       control.progress(static_cast<double>(k) / n);
       return !control.stopRequested();
@@ -408,10 +406,11 @@ PYBIND11_MODULE(_rollviz, m) {
            "render "
            "-o view.vtm).")
       .def(
-          "video", &video, pyb::arg("path"), pyb::arg("duration") = 5.0, pyb::arg("fps") = 25,
-          pyb::arg("size") = std::pair<int, int>{1280, 720}, pyb::arg("speed") = 0.0,
-          pyb::arg("encoder") = "libx264", pyb::kw_only(), pyb::arg("progress") = pyb::none(),
-          "Records the 3D view into an MP4 (rollviz video); speed 0: the scene's view.speed. Returns frames.")
+          "video", &video, pyb::arg("path"), pyb::arg("duration") = pyb::none(), pyb::arg("fps") = pyb::none(),
+          pyb::arg("size") = pyb::none(), pyb::arg("speed") = 0.0, pyb::arg("encoder") = "libx264", pyb::kw_only(),
+          pyb::arg("progress") = pyb::none(),
+          "Records the 3D view into an MP4 (rollviz video); duration, fps and size default to the scene's video "
+          "section (with its crf and preset), speed 0 to its view.speed. Returns frames.")
       .def("chart", &chart, pyb::arg("view") = "poincare", pyb::arg("size") = std::pair<int, int>{800, 800},
            pyb::arg("points") = 0, pyb::arg("diagram") = "", pyb::kw_only(),
            pyb::arg("progress") = pyb::none(),

@@ -1,3 +1,4 @@
+#include "dynamics/tools/VideoSettings.h"
 #include "dynamics/tools/ToolRegistry.h"
 
 #include "dynamics/core/Errors.h"
@@ -21,6 +22,7 @@ const std::vector<ToolSection>& toolSections() {
       {"lyapunov", "Lyapunov exponents", &lyapunovTable()},
       {"megno", "MEGNO and FLI", &megnoTable()},
       {"plot", "2D / 3D plot", &plotTable()},
+      {"video", "Video", &videoTable()},
   };
   return s;
 }

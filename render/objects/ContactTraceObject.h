@@ -17,6 +17,9 @@ public:
   void show(const FrameState& s) override;
   void clear() override { line_.clear(); }
   long points() const { return line_.size(); }
+  /// Segments drawn in the last frame (GrowingPolyline's level of detail).
+  long segmentsDrawn() const { return line_.segmentsDrawn(); }
+  void setLevelOfDetail(bool on) { line_.setLevelOfDetail(on); }
   /// The newest point, in the frame it is kept in (the world's, or the body's).
   const Eigen::Vector3d& lastPoint() const { return last_; }
 

@@ -10,6 +10,7 @@
 #include <mutex>
 #include <thread>
 #include <utility>
+#include <vector>
 
 namespace rv {
 
@@ -30,6 +31,14 @@ public:
     if (error_) std::rethrow_exception(error_);
     queue_.push_back(std::move(frame));
     changed_.notify_all();
+  }
+  /// A frame already encoded, to capture the next one into (its storage reused), or an empty one.
+  Image spare() {
+    std::lock_guard lock(mutex_);
+    if (spares_.empty()) return {};
+    Image frame = std::move(spares_.back());
+    spares_.pop_back();
+    return frame;
   }
   /// Waits until every frame pushed is encoded; rethrows an encoder error.
   void close() {
@@ -56,6 +65,8 @@ private:
       }
       try {
         mp4_.add(frame.rgb.data());
+        std::lock_guard lock(mutex_);
+        if (spares_.size() < depth_) spares_.push_back(std::move(frame));
       } catch (...) {
         std::lock_guard lock(mutex_);
         error_ = std::current_exception();
@@ -70,6 +81,7 @@ private:
   std::mutex mutex_;
   std::condition_variable changed_;
   std::deque<Image> queue_;
+  std::vector<Image> spares_; ///< encoded frames whose storage the producer may reuse
   bool closed_ = false;
   std::exception_ptr error_;
   std::thread worker_; // last: starts once the rest is built

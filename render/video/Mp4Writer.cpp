@@ -46,7 +46,7 @@ struct Mp4Writer::Impl {
   SwsContext* sws = nullptr;
 };
 
-Mp4Writer::Mp4Writer(const std::string& path, int width, int height, int fps, const std::string& encoder,
+Mp4Writer::Mp4Writer(const std::string& path, int width, int height, int fps, const EncoderSettings& encoder,
                      const std::string& what) {
   if (width < 16 || height < 16 || width % 2 || height % 2)
     throw InputError("--size " + std::to_string(width) + "x" + std::to_string(height) +
@@ -56,7 +56,7 @@ Mp4Writer::Mp4Writer(const std::string& path, int width, int height, int fps, co
   impl_ = std::make_unique<Impl>(path, what);
   Impl& m = *impl_;
   m.w = width, m.h = height;
-  const AVCodec* codec = avcodec_find_encoder_by_name(encoder.c_str());
+  const AVCodec* codec = avcodec_find_encoder_by_name(encoder.codec.c_str());
   if (!codec) codec = avcodec_find_encoder(AV_CODEC_ID_MPEG4); // always built into libavcodec
   if (avformat_alloc_output_context2(&m.fmt, nullptr, "mp4", m.file.tempPath().c_str()) < 0)
     throw ComputationError("libav has no mp4 muxer");
@@ -68,8 +68,9 @@ Mp4Writer::Mp4Writer(const std::string& path, int width, int height, int fps, co
   m.enc->framerate = AVRational{fps, 1};
   m.enc->gop_size = 2 * fps;
   if (codec->id == AV_CODEC_ID_H264) {
-    av_opt_set(m.enc->priv_data, "preset", "veryfast", 0);
-    av_opt_set(m.enc->priv_data, "crf", "20", 0);
+    if (av_opt_set(m.enc->priv_data, "preset", encoder.preset.c_str(), 0) < 0)
+      throw InputError("video.preset: x264 has no preset '" + encoder.preset + "'");
+    av_opt_set_int(m.enc->priv_data, "crf", encoder.crf, 0);
   } else {
     m.enc->bit_rate = 6000000;
   }

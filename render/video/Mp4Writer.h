@@ -7,11 +7,18 @@
 
 namespace rv {
 
+/// The encoder and its settings (the scene's "video" section: crf, preset).
+struct EncoderSettings {
+  std::string codec = "libx264";    ///< a libav encoder; MPEG-4 part 2 when it is not there
+  std::string preset = "veryfast"; ///< x264's speed against size
+  int crf = 20;                     ///< x264's constant rate factor, 0 (lossless) .. 51
+};
+
 class Mp4Writer {
 public:
   /// Width and height must be even (yuv420p). Throws InputError for a bad size or path, ComputationError
   /// when the encoder cannot be opened.
-  Mp4Writer(const std::string& path, int width, int height, int fps, const std::string& encoder = "libx264",
+  Mp4Writer(const std::string& path, int width, int height, int fps, const EncoderSettings& encoder = {},
             const std::string& what = "-o");
   ~Mp4Writer();
   /// Appends one frame: width * height * 3 bytes of RGB, rows from the top.

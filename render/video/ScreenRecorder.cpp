@@ -26,7 +26,7 @@ Image scaled(const Image& in, int width, int height) {
 } // namespace
 
 ScreenRecorder::ScreenRecorder(const std::string& path, int width, int height, int fps,
-                               const std::string& encoder)
+                               const EncoderSettings& encoder)
     : width_(std::max(2, width & ~1)), height_(std::max(2, height & ~1)), fps_(fps) {
   mp4_ = std::make_unique<Mp4Writer>(path, width_, height_, fps, encoder);
   // a second of frames queued: the GUI thread waits only when the encoder is that far behind

@@ -1,5 +1,6 @@
 #include "render/video/VideoExport.h"
 
+#include "dynamics/core/Errors.h"
 #include "render/Snapshot.h"
 #include "render/video/EncoderThread.h"
 #include "render/video/Mp4Writer.h"
@@ -40,7 +41,9 @@ bool VideoExporter::next() {
   if (k_ >= total_) return false;
   playTo(scene_, integrator_,
          t0_ + integrator_.direction() * spec_.speed * static_cast<double>(k_) / spec_.fps, x_);
-  encoder_->push(capture(window_));
+  Image frame = encoder_->spare(); // an encoded frame's storage: no allocation per frame
+  captureInto(window_, frame);
+  encoder_->push(std::move(frame));
   return ++k_ < total_;
 }
 
@@ -58,6 +61,25 @@ long exportVideo(VisualScene& scene, vtkRenderWindow* window, Integrator& integr
     video.next();
   }
   return video.finish();
+}
+
+VideoSpec videoSpec(const ParameterValues& video, double speed) {
+  VideoSpec spec{.width = static_cast<int>(video["width"]),
+                 .height = static_cast<int>(video["height"]),
+                 .fps = static_cast<int>(video["fps"]),
+                 .duration = video["duration"],
+                 .speed = speed,
+                 .encoder = {.preset = video.choice("preset"), .crf = static_cast<int>(video["crf"])}};
+  return spec;
+}
+
+void checkVideoSpec(const VideoSpec& spec, const std::string& sizeName, const std::string& durationName,
+                    const std::string& fpsName) {
+  if (spec.width % 2 || spec.height % 2)
+    throw InputError(sizeName + " " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
+                     ": a video needs an even width and height");
+  if (!(std::isfinite(spec.duration) && spec.duration > 0)) throw InputError(durationName + ": must be positive");
+  if (spec.fps < 1 || spec.fps > 240) throw InputError(fpsName + ": must lie in [1, 240]");
 }
 
 } // namespace rv

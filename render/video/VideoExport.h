@@ -4,6 +4,7 @@
 #pragma once
 #include "dynamics/integrators/Integrator.h"
 #include "render/VisualScene.h"
+#include "render/video/Mp4Writer.h"
 
 #include <functional>
 #include <memory>
@@ -25,8 +26,16 @@ struct VideoSpec {
   int fps = 25;
   double duration = 5; ///< seconds of video
   double speed = 1;    ///< simulation seconds per video second
-  std::string encoder = "libx264";
+  EncoderSettings encoder;
 };
+
+/// The scene's "video" section (dynamics/tools/VideoSettings.h videoTable) as a spec, with `speed` (the view's).
+VideoSpec videoSpec(const ParameterValues& video, double speed);
+
+/// InputError naming `sizeName` when the size is odd, `durationName` when the duration is not positive or
+/// `fpsName` when the rate is outside [1, 240].
+void checkVideoSpec(const VideoSpec& spec, const std::string& sizeName, const std::string& durationName,
+                    const std::string& fpsName);
 
 class EncoderThread;
 

@@ -212,6 +212,36 @@ class Cli(unittest.TestCase):
         self.assertEqual(s["avg_frame_rate"], "10/1")
         self.assertEqual([f for f in os.listdir(self.dir)], ["v.mp4"], "no temporary left behind")
 
+    def test_the_scenes_video_section_sets_rate_size_length_and_encoder(self):
+        def probe(path):
+            info = subprocess.run(["ffprobe", "-v", "error", "-count_frames", "-select_streams", "v:0", "-show_entries",
+                                   "stream=width,height,nb_read_frames,avg_frame_rate", "-of", "json", path],
+                                  capture_output=True, text=True, check=True)
+            s = json.loads(info.stdout)["streams"][0]
+            return s["width"], s["height"], int(s["nb_read_frames"]), s["avg_frame_rate"]
+        section = ["--set", "video.fps=8", "--set", "video.width=240", "--set", "video.height=160",
+                   "--set", "video.duration=1.5"]
+        sizes = {}
+        for crf in (12, 40):
+            out = self.path("c%d.mp4" % crf)
+            r = run("video", SCENE, "-o", out, *section, "--set", "video.crf=%d" % crf, "--set", "video.preset=ultrafast")
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertEqual(probe(out), (240, 160, 12, "8/1"))
+            sizes[crf] = os.path.getsize(out)
+        # a higher constant rate factor is a coarser quantiser: the same frames in fewer bytes
+        self.assertLess(sizes[40], sizes[12] / 2, sizes)
+        # the command line's flags win over the section
+        out = self.path("f.mp4")
+        r = run("video", SCENE, "-o", out, *section, "--fps", "4", "--size", "160x120")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertEqual(probe(out), (160, 120, 6, "4/1"))
+        # bad settings name their key
+        self.assertBadInput(run("video", SCENE, "-o", out, "--set", "video.preset=quickest"), "video.preset", "ultrafast")
+        self.assertBadInput(run("video", SCENE, "-o", out, "--set", "video.crf=60"), "crf")
+        self.assertBadInput(run("video", SCENE, "-o", self.path("odd.mp4"), "--set", "video.width=321"),
+                            "video.width", "even")
+        self.assertFalse(os.path.exists(self.path("odd.mp4")))
+
     def test_poincare_lyapunov_spectrum(self):
         hh = os.path.join(SRC, "scenes", "henon_heiles.json")
         out = self.path("p.csv")

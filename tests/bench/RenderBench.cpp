@@ -10,6 +10,7 @@
 #include "scenes/SceneLoader.h"
 
 #include <benchmark/benchmark.h>
+#include <tuple>
 #include <cmath>
 #include <filesystem>
 #include <vtkRenderWindow.h>
@@ -55,17 +56,20 @@ void frame(benchmark::State& state, const std::string& id, int samples, long tra
   for (auto _ : state)
     benchmark::DoNotOptimize(capture(s->context->window()));
   for (const char* name : {"trace", "body_trace"})
-    if (const auto* t = dynamic_cast<const ContactTraceObject*>(s->visual->find(name)))
+    if (const auto* t = dynamic_cast<const ContactTraceObject*>(s->visual->find(name))) {
       state.counters[name] = static_cast<double>(t->points());
+      state.counters[std::string(name) + "_drawn"] = static_cast<double>(t->segmentsDrawn());
+    }
 }
 
-void videoExport(benchmark::State& state) {
+void videoExport(benchmark::State& state, int width, int height, const char* preset) {
   const auto path = std::filesystem::temp_directory_path() / "rollviz_bench.mp4";
   long frames = 0;
   for (auto _ : state) {
     state.PauseTiming(); // the scene's setup is not the export
     const auto s = setUp("ellipsoid_on_plane", 0);
-    VideoSpec spec{.path = path.string(), .width = 1280, .height = 720, .fps = 25, .duration = 4};
+    VideoSpec spec{.path = path.string(), .width = width, .height = height, .fps = 25, .duration = 4};
+    spec.encoder.preset = preset;
     state.ResumeTiming();
     frames += exportVideo(*s->visual, s->context->window(), *s->integrator, spec);
   }
@@ -110,10 +114,14 @@ const bool registered = [] {
         ->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("Chart800/poincare/1e6points/pan", chartMillion)
       ->Unit(benchmark::kMillisecond);
-  benchmark::RegisterBenchmark("VideoExport720p/ellipsoid_on_plane/4s", videoExport)
-      ->Unit(benchmark::kMillisecond)
-      ->UseRealTime()
-      ->Iterations(2);
+  // the encoder's presets at 720p and 1080p (video.preset; veryfast is the default)
+  for (const auto& [name, w, h] : {std::tuple{"720p", 1280, 720}, std::tuple{"1080p", 1920, 1080}})
+    for (const char* preset : {"veryfast", "superfast", "ultrafast"})
+      benchmark::RegisterBenchmark(("VideoExport" + std::string(name) + "/ellipsoid_on_plane/4s/" + preset).c_str(),
+                                   videoExport, w, h, preset)
+          ->Unit(benchmark::kMillisecond)
+          ->UseRealTime()
+          ->Iterations(2);
   return true;
 }();
 

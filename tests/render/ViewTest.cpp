@@ -5,6 +5,7 @@
 
 #include "render/BodyMeshes.h"
 #include "render/objects/ApexObject.h"
+#include "render/objects/ContactTraceObject.h"
 #include "render/objects/FrameObjects.h"
 #include "render/objects/SceneAxesObject.h"
 #include "render/video/Mp4Writer.h"
@@ -318,6 +319,54 @@ TEST(Trace, LongTracesAreSimplifiedWithinTheirTolerance) {
     worst = std::max(worst, best);
   }
   EXPECT_LE(worst, 1e-3 + 1e-6);
+}
+
+// the screen-space level of detail draws a fraction of a dense trace's segments and the same picture: the
+// rattleback's scribble after 3·10^5 steps (both traces), drawn with and without it
+TEST(Trace, TheLevelOfDetailDrawsFewerSegmentsAndTheSamePicture) {
+  auto played = test::play("ellipsoid_on_plane", 0);
+  auto integrator = played->scene.startIntegrator();
+  for (long k = 0; k < 1000000; ++k) {
+    integrator->step();
+    played->visual->advance(integrator->time(), integrator->state());
+  }
+  Eigen::VectorXd x = integrator->state();
+  played->visual->show(integrator->time(), x);
+  auto traces = [&] {
+    std::vector<ContactTraceObject*> t;
+    for (const char* name : {"trace", "body_trace"})
+      t.push_back(dynamic_cast<ContactTraceObject*>(played->visual->find(name)));
+    return t;
+  };
+  auto ctx = createHeadlessContext(1280, 720);
+  played->visual->addTo(ctx->window());
+  const Image lod = capture(ctx->window());
+  long drawn = 0, total = 0;
+  for (auto* t : traces()) {
+    ASSERT_TRUE(t);
+    drawn += t->segmentsDrawn();
+    total += t->points() - 1;
+    t->setLevelOfDetail(false);
+  }
+  const Image exact = capture(ctx->window());
+  for (auto* t : traces())
+    EXPECT_EQ(t->segmentsDrawn(), t->points() - 1);
+  ctx->window()->RemoveRenderer(played->visual->renderer());
+  if (const char* out = std::getenv("ROLLVIZ_TEST_OUTPUT")) {
+    writePng(lod, std::string(out) + "/trace_lod.png");
+    writePng(exact, std::string(out) + "/trace_exact.png");
+  }
+  EXPECT_GT(total, 40000) << "a dense trace";
+  long red = 0; // the plane's trace is drawn (red): the pictures compared are of a trace
+  for (std::size_t p = 0; p + 2 < exact.rgb.size(); p += 3)
+    red += exact.rgb[p] > 180 && exact.rgb[p + 1] < 80 && exact.rgb[p + 2] < 80;
+  EXPECT_GT(red, 5000);
+  EXPECT_LT(drawn, total / 2) << "the level of detail leaves most of a dense scribble's segments out";
+  const auto d = test::compareImages(lod, exact);
+  EXPECT_LT(d.meanAbs, 2.0); // the baselines' tolerance
+  EXPECT_LT(d.fractionOver, 0.01);
+  std::printf("segments drawn %ld of %ld; mean |difference| %.3f, pixels over 48: %.4f%%\n", drawn, total,
+              d.meanAbs, 100 * d.fractionOver);
 }
 
 int countFrames(const std::string& path) {
