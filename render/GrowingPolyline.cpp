@@ -16,8 +16,8 @@
 namespace rv {
 
 namespace {
-// cells of (at most) a pixel: a segment left out passes within a cell's diagonal (1.7 px) of drawn ones, inside
-// the traces' 3-pixel width
+// cells of (at most) a pixel: a segment left out passes within a cell's diagonal (1.7 px) of drawn ones,
+// inside the traces' 3-pixel width
 constexpr double kCellPixels = 1.0;
 // a cell key packs three 21-bit coordinates; a point further out (a million pixels off the line's start) is
 // never counted as covered
@@ -86,15 +86,16 @@ void GrowingPolyline::beforeFrame() {
       const Eigen::Vector3d eye(camera->GetPosition()), view(camera->GetDirectionOfProjection());
       double depth = 1e300;
       for (int corner = 0; corner < 8; ++corner)
-        depth = std::min(depth, (Eigen::Vector3d(b[corner & 1], b[2 + (corner >> 1 & 1)], b[4 + (corner >> 2)]) - eye)
-                                    .dot(view));
+        depth = std::min(
+            depth,
+            (Eigen::Vector3d(b[corner & 1], b[2 + (corner >> 1 & 1)], b[4 + (corner >> 2)]) - eye).dot(view));
       if (depth > 0)
         pixel = 2 * depth * std::tan(0.5 * camera->GetViewAngle() * std::numbers::pi / 180) / height;
     }
     const double target = kCellPixels * pixel;
-    // cells of at most a pixel, not under an eighth of the simplification's tolerance (nothing to gain there); a
-    // camera that follows the body changes the pixel a little every frame: the cells change only when the pixel
-    // has shrunk below them or grown by a third
+    // cells of at most a pixel, not under an eighth of the simplification's tolerance (nothing to gain
+    // there); a camera that follows the body changes the pixel a little every frame: the cells change only
+    // when the pixel has shrunk below them or grown by a third
     if (cell_ > 0 && cell_ <= target && target < 1.33 * cell_) return;
     if (target >= tolerance_ / 8) cell = target;
   }

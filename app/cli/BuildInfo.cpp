@@ -47,22 +47,25 @@ std::vector<Fact> rendererFacts(const RendererInfo& info) {
 std::string softwareRendererWarning(const RendererInfo& info) {
   if (!info.software) return {};
   if (info.backend == "osmesa")
-    return fmt::format("rendering on the CPU ({}): OSMesa never uses a GPU; `rollviz` (EGL) does where there is one.",
-                       info.renderer);
+    return fmt::format(
+        "rendering on the CPU ({}): OSMesa never uses a GPU; `rollviz` (EGL) does where there is one.",
+        info.renderer);
   if (info.backend != "egl") // the GUI's window, drawn by the X server's GL
-    return fmt::format("rendering on the CPU ({}): a 1280x720 frame costs ~20 ms, a GPU ~1 ms (over ssh -X, under "
-                       "xvfb or without the GPU's GL driver the window is drawn in software).",
-                       info.renderer);
+    return fmt::format(
+        "rendering on the CPU ({}): a 1280x720 frame costs ~20 ms, a GPU ~1 ms (over ssh -X, under "
+        "xvfb or without the GPU's GL driver the window is drawn in software).",
+        info.renderer);
   bool hardwareOffered = false;
   for (const auto& d : info.devices)
     hardwareOffered = hardwareOffered || d.find("software") == std::string::npos;
-  return fmt::format("rendering on the CPU ({}): a 1280x720 frame costs ~20 ms and a 10^6-point chart ~100 ms, "
-                     "a GPU ~1 ms. {}",
-                     info.renderer,
-                     hardwareOffered ? fmt::format("A hardware EGL device is listed: choose it with {}=N.",
-                                                   kEglDeviceVariable)
-                                     : std::string("No hardware EGL device was found (on a GPU node: is the "
-                                                   "driver's EGL vendor library installed?)."));
+  return fmt::format(
+      "rendering on the CPU ({}): a 1280x720 frame costs ~20 ms and a 10^6-point chart ~100 ms, "
+      "a GPU ~1 ms. {}",
+      info.renderer,
+      hardwareOffered
+          ? fmt::format("A hardware EGL device is listed: choose it with {}=N.", kEglDeviceVariable)
+          : std::string("No hardware EGL device was found (on a GPU node: is the "
+                        "driver's EGL vendor library installed?)."));
 }
 
 } // namespace rv

@@ -15,7 +15,8 @@ struct Fact {
 /// The version, the build and the libraries this executable was built with.
 std::vector<Fact> buildFacts();
 
-/// The headless renderer: backend, how the context was made, the EGL devices on offer, GL_VENDOR/RENDERER/VERSION.
+/// The headless renderer: backend, how the context was made, the EGL devices on offer,
+/// GL_VENDOR/RENDERER/VERSION.
 std::vector<Fact> rendererFacts(const RendererInfo& info);
 
 /// A warning when the renderer rasterises on the CPU (what it costs, what to do); empty on a GPU.

@@ -50,9 +50,9 @@ const std::map<std::string, ToolCommandBuilder>& toolCommandBuilders() {
 }
 
 namespace {
-// With no EGL at all, `rollviz` runs the same command as `rollviz-osmesa` from its own folder (OSMesa cannot share
-// a process with GLVND's GL: stack/README.md). Outputs are written to temporary names and renamed, so nothing the
-// first attempt began is left; the environment variable tells the second why, and stops a loop.
+// With no EGL at all, `rollviz` runs the same command as `rollviz-osmesa` from its own folder (OSMesa cannot
+// share a process with GLVND's GL: stack/README.md). Outputs are written to temporary names and renamed, so
+// nothing the first attempt began is left; the environment variable tells the second why, and stops a loop.
 void handOverToOsMesa(char** argv, const char* why) {
   std::error_code ec;
   const auto self = std::filesystem::read_symlink("/proc/self/exe", ec);

@@ -1,4 +1,5 @@
-// InfoCommands.cpp -- `rollviz list ...`, `rollviz describe PROBLEM`, `rollviz describe-tool ID`, `rollviz info`.
+// InfoCommands.cpp -- `rollviz list ...`, `rollviz describe PROBLEM`, `rollviz describe-tool ID`, `rollviz
+// info`.
 #include "app/cli/BuildInfo.h"
 #include "app/cli/Commands.h"
 #include "dynamics/core/Errors.h"
@@ -185,8 +186,8 @@ Command addInfoCommand(CLI::App& app) {
               nlohmann::ordered_json j;
               for (const auto& f : buildFacts())
                 j[f.name] = f.value;
-              j["renderer"] = {{"backend", r.backend}, {"context", r.context}, {"devices", r.devices},
-                               {"vendor", r.vendor},   {"renderer", r.renderer}, {"version", r.version},
+              j["renderer"] = {{"backend", r.backend},  {"context", r.context},   {"devices", r.devices},
+                               {"vendor", r.vendor},    {"renderer", r.renderer}, {"version", r.version},
                                {"software", r.software}};
               if (eglFailure) j["renderer"]["egl_unavailable"] = eglFailure;
               fmt::print("{}\n", j.dump());

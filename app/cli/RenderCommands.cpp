@@ -126,9 +126,11 @@ Command addVideoCommand(CLI::App& app) {
   auto o = std::make_shared<VideoOptions>();
   addSceneArgs(cmd, o->scene);
   cmd->add_option("-o,--output", o->output, "MP4 file")->required();
-  auto* duration = cmd->add_option("--duration", o->duration, "seconds of video (default: the scene's video.duration)");
+  auto* duration =
+      cmd->add_option("--duration", o->duration, "seconds of video (default: the scene's video.duration)");
   auto* fps = cmd->add_option("--fps", o->fps, "frames per second (default: the scene's video.fps)");
-  cmd->add_option("--size", o->size, "frame size WIDTHxHEIGHT, even numbers (default: video.width x video.height)");
+  cmd->add_option("--size", o->size,
+                  "frame size WIDTHxHEIGHT, even numbers (default: video.width x video.height)");
   cmd->add_option("--speed", o->speed,
                   "simulation seconds per video second (default: the scene's view.speed)");
   cmd->add_option("--encoder", o->encoder, "libav encoder (libx264, or mpeg4)")->capture_default_str();
@@ -142,7 +144,8 @@ Command addVideoCommand(CLI::App& app) {
             if (duration->count()) spec.duration = o->duration;
             if (fps->count()) spec.fps = o->fps;
             checkVideoSpec(spec, o->size.empty() ? "video.width x video.height" : "--size",
-                           duration->count() ? "--duration" : "video.duration", fps->count() ? "--fps" : "video.fps");
+                           duration->count() ? "--duration" : "video.duration",
+                           fps->count() ? "--fps" : "video.fps");
             checkWritable(o->output, "-o");
             auto integrator = scene.startIntegrator();
             VisualScene visual(*scene.model, scene.view, scene.initialState);

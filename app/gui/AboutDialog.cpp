@@ -30,11 +30,13 @@ QString table(const std::vector<Fact>& facts) {
 }
 QString warning(const RendererInfo& info) {
   const auto w = softwareRendererWarning(info);
-  return w.empty() ? QString() : "<p style='color:#a05000'>" + QString::fromStdString(w).toHtmlEscaped() + "</p>";
+  return w.empty() ? QString()
+                   : "<p style='color:#a05000'>" + QString::fromStdString(w).toHtmlEscaped() + "</p>";
 }
-// the rollviz executable to ask: this one, or the one the environment names (tests run from their own binaries)
+// the rollviz executable to ask: this one, or the one the environment names (tests run from their own
+// binaries)
 QString rollvizExecutable() {
-  if (const QString env = qEnvironmentVariable("ROLLVIZ_EXE"); !env.isEmpty()) return env;
+  if (QString env = qEnvironmentVariable("ROLLVIZ_EXE"); !env.isEmpty()) return env;
   const QString self = QCoreApplication::applicationFilePath();
   return QFileInfo(self).fileName() == "rollviz" ? self : QString();
 }
@@ -49,7 +51,8 @@ AboutDialog::AboutDialog(QtVtkWidget* view, QWidget* parent) : QDialog(parent) {
   head_ = "<h3>rollviz</h3><p>Bodies rolling without slipping, and the tools of nonlinear dynamics.</p>" +
           table(facts);
 
-  // the on-screen view: its own GLX context (the GUI never makes an EGL context: the GLX shim would follow it)
+  // the on-screen view: its own GLX context (the GUI never makes an EGL context: the GLX shim would follow
+  // it)
   RendererInfo screen;
   screen.backend = "glx";
   if (view->context()) {
@@ -65,9 +68,11 @@ AboutDialog::AboutDialog(QtVtkWidget* view, QWidget* parent) : QDialog(parent) {
     screen.software = isSoftwareRenderer(screen.renderer);
     view->doneCurrent();
   }
-  head_ += "<p><b>This window's 3D view</b> (Qt's OpenGL context)</p>" +
-           table({{"GL_VENDOR", screen.vendor}, {"GL_RENDERER", screen.renderer}, {"GL_VERSION", screen.version}}) +
-           warning(screen);
+  head_ +=
+      "<p><b>This window's 3D view</b> (Qt's OpenGL context)</p>" +
+      table(
+          {{"GL_VENDOR", screen.vendor}, {"GL_RENDERER", screen.renderer}, {"GL_VERSION", screen.version}}) +
+      warning(screen);
 
   text_ = new QLabel(this);
   text_->setTextInteractionFlags(Qt::TextSelectableByMouse);
@@ -108,8 +113,8 @@ AboutDialog::AboutDialog(QtVtkWidget* view, QWidget* parent) : QDialog(parent) {
 }
 
 void AboutDialog::showHeadless(const QString& html) {
-  text_->setText(head_ + "<p><b>Headless pictures</b> (rollviz render, video, chart; <tt>rollviz info</tt>)</p>" +
-                 html);
+  text_->setText(
+      head_ + "<p><b>Headless pictures</b> (rollviz render, video, chart; <tt>rollviz info</tt>)</p>" + html);
   adjustSize();
   if (!info_ || info_->state() == QProcess::NotRunning) emit headlessKnown();
 }

@@ -1,5 +1,6 @@
-// AboutDialog.h -- Help > About: the version, the libraries, and the renderers behind the pictures (the on-screen
-// view's GL and, from `rollviz info --json` run beside the GUI, the headless one), with the software-GL warning.
+// AboutDialog.h -- Help > About: the version, the libraries, and the renderers behind the pictures (the
+// on-screen view's GL and, from `rollviz info --json` run beside the GUI, the headless one), with the
+// software-GL warning.
 #pragma once
 #include <QDialog>
 

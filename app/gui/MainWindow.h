@@ -83,10 +83,10 @@ public:
   bool saveSceneTo(const QString& path, QString* why = nullptr);
   /// Writes the 3D view as drawn to a PNG; false when it cannot.
   bool snapshotTo(const QString& path);
-  /// Starts recording what the 3D view shows, from now on, into an MP4 of `fps` frames a second (0: the scene's
-  /// video.fps; its crf and preset too) at the view's size: the run as it plays, camera moves and pauses
-  /// included, the video as long as the recording (`rollviz video` renders exact frames offline instead). False
-  /// (the reason in Results) when it cannot.
+  /// Starts recording what the 3D view shows, from now on, into an MP4 of `fps` frames a second (0: the
+  /// scene's video.fps; its crf and preset too) at the view's size: the run as it plays, camera moves and
+  /// pauses included, the video as long as the recording (`rollviz video` renders exact frames offline
+  /// instead). False (the reason in Results) when it cannot.
   bool startRecording(const QString& path, int fps = 0);
   /// Ends a recording; the file is finished on a worker thread, then recordingFinished().
   void stopRecording();

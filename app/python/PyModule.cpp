@@ -405,12 +405,12 @@ PYBIND11_MODULE(_rollviz, m) {
            "Writes the 3D view at `time` as a ParaView multiblock (.vtm: bodies, plane, traces; rollviz "
            "render "
            "-o view.vtm).")
-      .def(
-          "video", &video, pyb::arg("path"), pyb::arg("duration") = pyb::none(), pyb::arg("fps") = pyb::none(),
-          pyb::arg("size") = pyb::none(), pyb::arg("speed") = 0.0, pyb::arg("encoder") = "libx264", pyb::kw_only(),
-          pyb::arg("progress") = pyb::none(),
-          "Records the 3D view into an MP4 (rollviz video); duration, fps and size default to the scene's video "
-          "section (with its crf and preset), speed 0 to its view.speed. Returns frames.")
+      .def("video", &video, pyb::arg("path"), pyb::arg("duration") = pyb::none(),
+           pyb::arg("fps") = pyb::none(), pyb::arg("size") = pyb::none(), pyb::arg("speed") = 0.0,
+           pyb::arg("encoder") = "libx264", pyb::kw_only(), pyb::arg("progress") = pyb::none(),
+           "Records the 3D view into an MP4 (rollviz video); duration, fps and size default to the scene's "
+           "video "
+           "section (with its crf and preset), speed 0 to its view.speed. Returns frames.")
       .def("chart", &chart, pyb::arg("view") = "poincare", pyb::arg("size") = std::pair<int, int>{800, 800},
            pyb::arg("points") = 0, pyb::arg("diagram") = "", pyb::kw_only(),
            pyb::arg("progress") = pyb::none(),

@@ -1,5 +1,5 @@
-#include "dynamics/tools/VideoSettings.h"
 #include "dynamics/tools/ToolRegistry.h"
+#include "dynamics/tools/VideoSettings.h"
 
 #include "dynamics/core/Errors.h"
 #include "dynamics/tools/FourierSpectrum.h"

@@ -39,7 +39,8 @@ const ParameterTable& videoTable() {
        .defaultValue = 20,
        .min = 0,
        .max = 51,
-       .description = "H.264 constant rate factor: 0 lossless, 18 visually lossless, 23 x264's default, 51 worst",
+       .description =
+           "H.264 constant rate factor: 0 lossless, 18 visually lossless, 23 x264's default, 51 worst",
        .integer = true},
       {.id = "preset",
        .label = "Encoder preset",
@@ -49,7 +50,8 @@ const ParameterTable& videoTable() {
        .description = "x264's speed against size at the same quality: ultrafast writes fastest and largest, "
                       "veryslow smallest",
        .integer = true,
-       .choices = {"ultrafast", "superfast", "veryfast", "faster", "fast", "medium", "slow", "slower", "veryslow"}},
+       .choices = {"ultrafast", "superfast", "veryfast", "faster", "fast", "medium", "slow", "slower",
+                   "veryslow"}},
   };
   return t;
 }

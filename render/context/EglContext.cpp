@@ -1,7 +1,7 @@
-// EglContext.cpp -- headless rendering with no X server through EGL. The device is chosen as on a compute node:
-// ROLLVIZ_EGL_DEVICE=N picks device N of EGL_EXT_device_enumeration's list; otherwise the first hardware device
-// (EGL_EXT_platform_device), then Mesa's surfaceless platform (llvmpipe), then any software device. With no EGL
-// at all, HeadlessUnavailable tells `rollviz` to hand the command to `rollviz-osmesa`.
+// EglContext.cpp -- headless rendering with no X server through EGL. The device is chosen as on a compute
+// node: ROLLVIZ_EGL_DEVICE=N picks device N of EGL_EXT_device_enumeration's list; otherwise the first
+// hardware device (EGL_EXT_platform_device), then Mesa's surfaceless platform (llvmpipe), then any software
+// device. With no EGL at all, HeadlessUnavailable tells `rollviz` to hand the command to `rollviz-osmesa`.
 #include "render/context/GlxShim.h"
 #include "render/context/HeadlessContext.h"
 
@@ -46,7 +46,8 @@ struct DeviceApi {
       reinterpret_cast<PFNEGLQUERYDEVICESTRINGEXTPROC>(eglGetProcAddress("eglQueryDeviceStringEXT"));
 };
 
-// The devices EGL offers, in its order (the order ROLLVIZ_EGL_DEVICE counts in); empty without the extensions.
+// The devices EGL offers, in its order (the order ROLLVIZ_EGL_DEVICE counts in); empty without the
+// extensions.
 std::vector<EglDevice> enumerateDevices(const DeviceApi& api) {
   const char* client = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
   if (!api.platformDisplay || !api.queryDevices || !api.deviceString ||
@@ -63,7 +64,8 @@ std::vector<EglDevice> enumerateDevices(const DeviceApi& api) {
     const char* ext = api.deviceString(h, EGL_EXTENSIONS);
     EglDevice d{h, "", hasExtension(ext, "EGL_MESA_device_software")};
     const char* file = nullptr;
-    if (hasExtension(ext, "EGL_EXT_device_drm_render_node")) file = api.deviceString(h, EGL_DRM_RENDER_NODE_FILE_EXT);
+    if (hasExtension(ext, "EGL_EXT_device_drm_render_node"))
+      file = api.deviceString(h, EGL_DRM_RENDER_NODE_FILE_EXT);
     if (!file && hasExtension(ext, "EGL_EXT_device_drm")) file = api.deviceString(h, EGL_DRM_DEVICE_FILE_EXT);
     d.name = d.software ? "software (Mesa)" : file ? file : "hardware";
     if (hasExtension(ext, "EGL_NV_device_cuda")) d.name += " (NVIDIA)";
@@ -85,12 +87,27 @@ std::optional<Opened> openContext(EGLDisplay dpy, std::string& why) {
     why = "no display";
     return std::nullopt;
   }
-  const EGLint cfgAttr[] = {EGL_SURFACE_TYPE, 0, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_RED_SIZE,   8,
-                            EGL_GREEN_SIZE,   8, EGL_BLUE_SIZE,       8,              EGL_ALPHA_SIZE, 8,
-                            EGL_DEPTH_SIZE,   24, EGL_NONE};
-  const EGLint ctxAttr[] = {EGL_CONTEXT_MAJOR_VERSION,       3,
-                            EGL_CONTEXT_MINOR_VERSION,       2,
-                            EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+  const EGLint cfgAttr[] = {EGL_SURFACE_TYPE,
+                            0,
+                            EGL_RENDERABLE_TYPE,
+                            EGL_OPENGL_BIT,
+                            EGL_RED_SIZE,
+                            8,
+                            EGL_GREEN_SIZE,
+                            8,
+                            EGL_BLUE_SIZE,
+                            8,
+                            EGL_ALPHA_SIZE,
+                            8,
+                            EGL_DEPTH_SIZE,
+                            24,
+                            EGL_NONE};
+  const EGLint ctxAttr[] = {EGL_CONTEXT_MAJOR_VERSION,
+                            3,
+                            EGL_CONTEXT_MINOR_VERSION,
+                            2,
+                            EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                            EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
                             EGL_NONE};
   EGLConfig cfg;
   EGLContext ctx = EGL_NO_CONTEXT;
@@ -109,7 +126,8 @@ std::optional<Opened> openContext(EGLDisplay dpy, std::string& why) {
   return std::nullopt;
 }
 
-// ROLLVIZ_EGL_DEVICE's index, or nullopt when it is not set; InputError naming the variable when it is no index.
+// ROLLVIZ_EGL_DEVICE's index, or nullopt when it is not set; InputError naming the variable when it is no
+// index.
 std::optional<std::size_t> requestedDevice() {
   const char* text = std::getenv(kEglDeviceVariable);
   if (!text || !*text) return std::nullopt;
@@ -183,7 +201,8 @@ private:
     for (std::size_t i = 0; i < devices.size(); ++i)
       info_.devices.push_back(std::to_string(i) + ": " + devices[i].name);
     auto tryDevice = [&](std::size_t i, std::string& why) {
-      const auto opened = openContext(api.platformDisplay(EGL_PLATFORM_DEVICE_EXT, devices[i].handle, nullptr), why);
+      const auto opened =
+          openContext(api.platformDisplay(EGL_PLATFORM_DEVICE_EXT, devices[i].handle, nullptr), why);
       if (!opened) return false;
       take(*opened, "EGL device " + std::to_string(i) + ": " + devices[i].name, devices[i].software);
       return true;
@@ -196,11 +215,14 @@ private:
                          (devices.empty() ? std::string("this machine's EGL cannot enumerate devices")
                                           : "there is no such EGL device (" + listOf(devices) + ")"));
       std::string why;
-      if (!tryDevice(*wanted, why)) throw ComputationError(asked + " (" + devices[*wanted].name + "): " + why);
+      if (!tryDevice(*wanted, why))
+        throw ComputationError(asked + " (" + devices[*wanted].name + "): " + why);
       return;
     }
     std::string failures, why;
-    auto failed = [&](const std::string& what) { failures += (failures.empty() ? "" : "; ") + what + ": " + why; };
+    auto failed = [&](const std::string& what) {
+      failures += (failures.empty() ? "" : "; ") + what + ": " + why;
+    };
     for (std::size_t i = 0; i < devices.size(); ++i) {
       if (devices[i].software) continue;
       if (tryDevice(i, why)) return;

@@ -48,9 +48,9 @@ public:
   virtual const RendererInfo& info() const = 0;
 };
 
-/// A context of the linked backend with a width x height picture. EGL takes the device ROLLVIZ_EGL_DEVICE names
-/// (InputError if there is no such device), else the first hardware device, else Mesa's surfaceless platform,
-/// else a software device. Throws HeadlessUnavailable when there is no usable GL at all.
+/// A context of the linked backend with a width x height picture. EGL takes the device ROLLVIZ_EGL_DEVICE
+/// names (InputError if there is no such device), else the first hardware device, else Mesa's surfaceless
+/// platform, else a software device. Throws HeadlessUnavailable when there is no usable GL at all.
 std::unique_ptr<HeadlessContext> createHeadlessContext(int width, int height);
 
 } // namespace rv

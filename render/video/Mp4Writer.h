@@ -9,9 +9,9 @@ namespace rv {
 
 /// The encoder and its settings (the scene's "video" section: crf, preset).
 struct EncoderSettings {
-  std::string codec = "libx264";    ///< a libav encoder; MPEG-4 part 2 when it is not there
+  std::string codec = "libx264";   ///< a libav encoder; MPEG-4 part 2 when it is not there
   std::string preset = "veryfast"; ///< x264's speed against size
-  int crf = 20;                     ///< x264's constant rate factor, 0 (lossless) .. 51
+  int crf = 20;                    ///< x264's constant rate factor, 0 (lossless) .. 51
 };
 
 class Mp4Writer {

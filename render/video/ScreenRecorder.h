@@ -19,7 +19,8 @@ class ScreenRecorder {
 public:
   /// Width and height are made even (the encoder's yuv420p). Throws InputError for a bad path,
   /// ComputationError when the encoder cannot be opened (Mp4Writer's).
-  ScreenRecorder(const std::string& path, int width, int height, int fps, const EncoderSettings& encoder = {});
+  ScreenRecorder(const std::string& path, int width, int height, int fps,
+                 const EncoderSettings& encoder = {});
   ~ScreenRecorder();
   /// The view's picture at `seconds` since the recording began (non-decreasing); every video frame that
   /// begins before it shows the picture before. A picture of another size is scaled to the video's.

@@ -78,7 +78,8 @@ void checkVideoSpec(const VideoSpec& spec, const std::string& sizeName, const st
   if (spec.width % 2 || spec.height % 2)
     throw InputError(sizeName + " " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
                      ": a video needs an even width and height");
-  if (!(std::isfinite(spec.duration) && spec.duration > 0)) throw InputError(durationName + ": must be positive");
+  if (!(std::isfinite(spec.duration) && spec.duration > 0))
+    throw InputError(durationName + ": must be positive");
   if (spec.fps < 1 || spec.fps > 240) throw InputError(fpsName + ": must lie in [1, 240]");
 }
 

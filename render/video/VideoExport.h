@@ -29,7 +29,8 @@ struct VideoSpec {
   EncoderSettings encoder;
 };
 
-/// The scene's "video" section (dynamics/tools/VideoSettings.h videoTable) as a spec, with `speed` (the view's).
+/// The scene's "video" section (dynamics/tools/VideoSettings.h videoTable) as a spec, with `speed` (the
+/// view's).
 VideoSpec videoSpec(const ParameterValues& video, double speed);
 
 /// InputError naming `sizeName` when the size is odd, `durationName` when the duration is not positive or

@@ -10,9 +10,9 @@
 #include "scenes/SceneLoader.h"
 
 #include <benchmark/benchmark.h>
-#include <tuple>
 #include <cmath>
 #include <filesystem>
+#include <tuple>
 #include <vtkRenderWindow.h>
 
 namespace rv {
@@ -117,8 +117,9 @@ const bool registered = [] {
   // the encoder's presets at 720p and 1080p (video.preset; veryfast is the default)
   for (const auto& [name, w, h] : {std::tuple{"720p", 1280, 720}, std::tuple{"1080p", 1920, 1080}})
     for (const char* preset : {"veryfast", "superfast", "ultrafast"})
-      benchmark::RegisterBenchmark(("VideoExport" + std::string(name) + "/ellipsoid_on_plane/4s/" + preset).c_str(),
-                                   videoExport, w, h, preset)
+      benchmark::RegisterBenchmark(
+          ("VideoExport" + std::string(name) + "/ellipsoid_on_plane/4s/" + preset).c_str(), videoExport, w, h,
+          preset)
           ->Unit(benchmark::kMillisecond)
           ->UseRealTime()
           ->Iterations(2);

@@ -763,8 +763,8 @@ private slots:
     QVERIFY(label);
     window_->view()->makeCurrent();
     const QString screen =
-        QString::fromLatin1(reinterpret_cast<const char*>(window_->view()->context()->functions()->glGetString(
-                                GL_RENDERER)))
+        QString::fromLatin1(
+            reinterpret_cast<const char*>(window_->view()->context()->functions()->glGetString(GL_RENDERER)))
             .toHtmlEscaped();
     window_->view()->doneCurrent();
     QVERIFY2(label->text().contains(screen), qPrintable(screen));

@@ -1,5 +1,6 @@
-// The headless context says what renders it, and EGL's device is chosen by ROLLVIZ_EGL_DEVICE. Built into both
-// render test binaries; the device tests run on EGL only (on CI: Mesa's software device, the one it lists).
+// The headless context says what renders it, and EGL's device is chosen by ROLLVIZ_EGL_DEVICE. Built into
+// both render test binaries; the device tests run on EGL only (on CI: Mesa's software device, the one it
+// lists).
 #include "tests/render/ImageCompare.h"
 #include "tests/render/Play.h"
 
@@ -98,7 +99,8 @@ TEST(EglDevice, ANumberThatNamesNoDeviceIsBadInputNamingTheVariable) {
       createHeadlessContext(16, 16);
       ADD_FAILURE() << wrong << " was taken";
     } catch (const InputError& e) {
-      EXPECT_NE(std::string(e.what()).find(std::string(kEglDeviceVariable) + "="), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(std::string(kEglDeviceVariable) + "="), std::string::npos)
+          << e.what();
     }
   }
   ScopedEnv empty(kEglDeviceVariable, ""); // set but empty: as if unset
