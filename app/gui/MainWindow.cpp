@@ -475,7 +475,11 @@ void MainWindow::togglePlay() {
 
 void MainWindow::tick() {
   const double wall = clock_.restart() / 1000.0;
-  map_->drain();
+  // the map's frame and the 3D view's in different turns of the event loop while the map fills: on software
+  // GL each costs tens of milliseconds, and both in one turn would keep the window from answering for their
+  // sum
+  const bool mapFrame = !mapWaits_ && map_->drain();
+  mapWaits_ = mapFrame;
   feedApexFromMap();
   if (!stream_) return;
   if (playing_ && error_.isEmpty()) {
@@ -506,7 +510,7 @@ void MainWindow::tick() {
     playAction_->setText("Play");
   }
   showStatus();
-  view_->update();
+  if (!mapFrame) view_->update(); // else on the next tick
 }
 
 void MainWindow::showStatus() {

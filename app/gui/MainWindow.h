@@ -206,6 +206,7 @@ private:
   std::optional<double> lastStepEnd_; ///< the time at the end of the last step taken
   double lastStep_ = 0;
   bool playing_ = true;
+  bool mapWaits_ = false; ///< the map drew in the last tick: this one is the 3D view's
   QString error_;
 };
 

@@ -477,7 +477,7 @@ std::vector<PlotWindow*> MapPanel::plotWindows() {
   return out;
 }
 
-void MapPanel::drain() {
+bool MapPanel::drain() {
   for (PlotWindow* p : plotWindows())
     p->flush();
   bool changed = false;
@@ -545,6 +545,7 @@ void MapPanel::drain() {
     view_->update();
     feedMap3D();
   }
+  return changed;
 }
 
 void MapPanel::removeJob(Job& job) {

@@ -76,8 +76,9 @@ public:
   /// Goes on with trajectories saveRunning() saved, under the current scene; returns how many. Throws
   /// InputError when the saved data do not fit the scene.
   int resume(const nlohmann::json& saved);
-  /// Takes the points computed since the last call and redraws; called by the window's frame timer.
-  void drain();
+  /// Takes the points computed since the last call and redraws; called by the window's frame timer. True when
+  /// there was something new (the map is redrawn).
+  bool drain();
   void stopAll();
   /// The jobs of the map window (trajectories and the tools started from it), for the tool manager.
   JobTree& jobs() { return jobs_; }

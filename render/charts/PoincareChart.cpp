@@ -1,5 +1,7 @@
 #include "render/charts/PoincareChart.h"
 
+#include "render/charts/RasterPointsPlot.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -130,9 +132,10 @@ vtkSmartPointer<vtkTable> tableOf(const std::vector<double>& x, const std::vecto
 namespace {
 // the indices of the smallest and largest x and y: kept by the thinning, so that the data's bounds (and the
 // automatic ranges) do not change with the view
-std::array<std::size_t, 4> extremes(const std::vector<double>& x, const std::vector<double>& y) {
-  std::array<std::size_t, 4> e{0, 0, 0, 0};
-  for (std::size_t k = 0; k < x.size(); ++k) {
+// (from index `from` on, starting from the extremes `e` of the points before it)
+std::array<std::size_t, 4> extremes(const std::vector<double>& x, const std::vector<double>& y,
+                                    std::size_t from = 0, std::array<std::size_t, 4> e = {0, 0, 0, 0}) {
+  for (std::size_t k = from; k < x.size(); ++k) {
     if (x[k] < x[e[0]]) e[0] = k;
     if (x[k] > x[e[1]]) e[1] = k;
     if (y[k] < y[e[2]]) e[2] = k;
@@ -144,20 +147,38 @@ std::array<std::size_t, 4> extremes(const std::vector<double>& x, const std::vec
 
 void PoincareChart::setPoints(vtkPlot* plot, int index, const std::vector<double>& x,
                               const std::vector<double>& y) {
-  std::erase_if(large_, [&](const LargeSeries& s) { return s.index == index; });
-  if (x.size() <= kThinAbove) return plot->SetInputData(tableOf(x, y, index), 0, 1);
-  // a large series: only its extremes until the thinning before the next frame (a table of every point
-  // would cost more than drawing the thinned ones)
-  large_.push_back({plot, index, x, y});
+  // a map filling: the same series with points added at its end takes only the new points (10^6 points copied
+  // on every frame would cost the GUI a turn of its event loop)
+  auto grown = std::find_if(large_.begin(), large_.end(), [&](const LargeSeries& s) {
+    const std::size_t n = s.x.size();
+    return s.index == index && s.plot == plot && n <= x.size() && x.size() == y.size() && n > 0 &&
+           s.x[n - 1] == x[n - 1] && s.y[n - 1] == y[n - 1] && s.x[0] == x[0] && s.y[0] == y[0] &&
+           s.x[n / 2] == x[n / 2] && s.y[n / 2] == y[n / 2];
+  });
+  if (grown == large_.end()) {
+    std::erase_if(large_, [&](const LargeSeries& s) { return s.index == index; });
+    if (x.size() <= kThinAbove) return plot->SetInputData(tableOf(x, y, index), 0, 1);
+    // a large series: only its extremes until the thinning before the next frame (a table of every point
+    // would cost more than drawing the thinned ones)
+    large_.push_back({plot, index, x, y, extremes(x, y)});
+    grown = large_.end() - 1;
+  } else {
+    const std::size_t old = grown->x.size();
+    grown->x.insert(grown->x.end(), x.begin() + static_cast<std::ptrdiff_t>(old), x.end());
+    grown->y.insert(grown->y.end(), y.begin() + static_cast<std::ptrdiff_t>(old), y.end());
+    grown->extremes = extremes(grown->x, grown->y, old, grown->extremes);
+  }
   thinnedFor_ = {};
   std::vector<double> ex, ey;
-  for (std::size_t k : extremes(x, y))
-    ex.push_back(x[k]), ey.push_back(y[k]);
+  for (std::size_t k : grown->extremes)
+    ex.push_back(grown->x[k]), ey.push_back(grown->y[k]);
   plot->SetInputData(tableOf(ex, ey, index), 0, 1);
 }
 
 int PoincareChart::addSeries(const std::vector<double>& x, const std::vector<double>& y, const Rgb& c) {
-  vtkPlot* plot = chart_->AddPlot(vtkChart::POINTS);
+  vtkNew<RasterPointsPlot> raster; // one splatted picture instead of a point sprite each
+  vtkPlot* plot = raster;
+  chart_->AddPlot(plot);
   plot->SetLegendVisibility(!chart_->GetShowLegend()); // (setLegend names it)
   const int index = static_cast<int>(chart_->GetNumberOfPlots()) - 1;
   setPoints(plot, index, x, y);
@@ -346,7 +367,7 @@ void PoincareChart::thinLargeSeries() {
       auto& t = taken[std::size_t(j) * nx + std::size_t(i)];
       if (!t) t = 1, kx.push_back(s.x[k]), ky.push_back(s.y[k]);
     }
-    for (std::size_t k : extremes(s.x, s.y)) // the data's bounds stay those of every point
+    for (std::size_t k : s.extremes) // the data's bounds stay those of every point
       kx.push_back(s.x[k]), ky.push_back(s.y[k]);
     s.plot->SetInputData(tableOf(kx, ky, s.index), 0, 1);
   }

@@ -79,6 +79,7 @@ private:
     vtkPlot* plot;
     int index;
     std::vector<double> x, y;
+    std::array<std::size_t, 4> extremes; ///< the indices of the smallest and largest x and y
   };
   void thinLargeSeries();
   /// A series' points: all of them, or for a large one its extremes until thinLargeSeries runs.
