@@ -173,17 +173,30 @@ void setValues(ParameterValues& v, const nlohmann::json& j, const std::string& w
 }
 } // namespace
 
+std::size_t MapPanel::takePoints(Series& s, std::size_t most) {
+  if (s.pendingAt >= s.pending.size()) {
+    s.task->points().take(s.pending);
+    s.pendingAt = 0;
+  }
+  const std::size_t end = s.pendingAt + std::min(most, s.pending.size() - s.pendingAt);
+  for (std::size_t k = s.pendingAt; k < end; ++k) {
+    const MapPoint& p = s.pending[k];
+    s.x.push_back(p.coordinates.at(0));
+    s.y.push_back(p.coordinates.size() > 1 ? p.coordinates[1] : p.time);
+    if (p.coordinates.size() > 2) s.z.push_back(p.coordinates[2]);
+  }
+  const std::size_t taken = end - s.pendingAt;
+  s.pendingAt = end;
+  return taken;
+}
+
 nlohmann::json MapPanel::saveRunning() {
   nlohmann::json out = nlohmann::json::array();
-  std::vector<MapPoint> rest;
   for (auto& s : series_) {
     if (!s.job->running()) continue;
     s.job->stop();
-    s.task->points().take(rest); // produced before the stop: part of what is saved
-    for (const auto& p : rest) {
-      s.x.push_back(p.coordinates.at(0));
-      s.y.push_back(p.coordinates.size() > 1 ? p.coordinates[1] : p.time);
-      if (p.coordinates.size() > 2) s.z.push_back(p.coordinates[2]);
+    // what was produced before the stop, drawn or not yet, is part of what is saved
+    while (takePoints(s, std::numeric_limits<std::size_t>::max()) > 0) {
     }
     Snapshot state;
     s.task->save(state);
@@ -527,14 +540,8 @@ bool MapPanel::drain() {
       s.megnoValue = std::numeric_limits<double>::quiet_NaN(); // reported once; drawn in its own colour
     }
   }
-  std::vector<MapPoint> batch;
   for (auto& s : series_) {
-    if (s.task->points().take(batch) == 0) continue;
-    for (const auto& p : batch) {
-      s.x.push_back(p.coordinates.at(0));
-      s.y.push_back(p.coordinates.size() > 1 ? p.coordinates[1] : p.time);
-      if (p.coordinates.size() > 2) s.z.push_back(p.coordinates[2]);
-    }
+    if (takePoints(s, kDrainPerTick) == 0) continue;
     drawSeries(s);
     changed = true;
   }

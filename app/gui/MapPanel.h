@@ -166,7 +166,12 @@ private:
     MegnoTask* megno = nullptr;
     std::optional<double> megnoValue; ///< <Y> when that job has finished
     QString origin;                   ///< where a click started it (map coordinates); else its first point
+    std::vector<MapPoint> pending;    ///< points taken from the job, drawn from pendingAt on
+    std::size_t pendingAt = 0;
   };
+  /// The most points of one trajectory a drain draws: a job can hand over 2^18 at once, and copying and
+  /// drawing them in one turn would keep the window from answering for tens of milliseconds.
+  static constexpr std::size_t kDrainPerTick = 1 << 16;
   void startMegno(Series& s);
   /// Draws a trajectory in its own colour or its MEGNO's.
   void applyColour(const Series& s);
@@ -182,6 +187,9 @@ private:
   static std::pair<long, long> shownSpan(const Series& s);
   /// Draws the part of a trajectory its range shows.
   void drawSeries(const Series& s);
+  /// Appends at most `most` of a trajectory's points not yet appended (taking the job's next ones when those
+  /// taken are used up); returns how many.
+  static std::size_t takePoints(Series& s, std::size_t most);
   struct Search {
     Job* job;
     FixedPointTask* task;

@@ -167,8 +167,8 @@ void PoincareChart::setPoints(vtkPlot* plot, int index, const std::vector<double
     grown->x.insert(grown->x.end(), x.begin() + static_cast<std::ptrdiff_t>(old), x.end());
     grown->y.insert(grown->y.end(), y.begin() + static_cast<std::ptrdiff_t>(old), y.end());
     grown->extremes = extremes(grown->x, grown->y, old, grown->extremes);
+    return; // the thinning before the next frame adds the new points to those it kept
   }
-  thinnedFor_ = {};
   std::vector<double> ex, ey;
   for (std::size_t k : grown->extremes)
     ex.push_back(grown->x[k]), ey.push_back(grown->y[k]);
@@ -338,8 +338,10 @@ void PoincareChart::thinLargeSeries() {
     if (fixed) return;
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
     for (const auto& s : large_)
-      for (double v : axis == 0 ? s.x : s.y)
+      for (std::size_t k : s.extremes) {
+        const double v = axis == 0 ? s.x[k] : s.y[k];
         if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
+      }
     if (hi > lo) range[2 * axis] = lo, range[2 * axis + 1] = hi;
   };
   follow(0, ax->GetBehavior() == vtkAxis::FIXED);
@@ -351,22 +353,29 @@ void PoincareChart::thinLargeSeries() {
     const int* size = view_->GetRenderWindow()->GetSize();
     w = size[0], h = size[1];
   }
-  const std::array<double, 6> key = {range[0], range[1], range[2], range[3], double(w), double(h)};
-  if (key == thinnedFor_) return;
-  thinnedFor_ = key;
+  const std::array<double, 7> key = {range[0],  range[1],  range[2],   range[3],
+                                     double(w), double(h), markerSize_};
   const double cell = std::max(1.0f, markerSize_ / 2); // pixels per cell: half a marker keeps the coverage
   const int nx = std::max(1, static_cast<int>(w / cell)), ny = std::max(1, static_cast<int>(h / cell));
   const double x0 = key[0], sx = nx / (key[1] - key[0]), y0 = key[2], sy = ny / (key[3] - key[2]);
-  std::vector<unsigned char> taken(std::size_t(nx) * ny);
   for (auto& s : large_) {
-    std::fill(taken.begin(), taken.end(), 0);
-    std::vector<double> kx, ky;
-    for (std::size_t k = 0; k < s.x.size(); ++k) {
+    if (s.grid != key) { // other ranges or another size: thinned again from the first point
+      s.grid = key;
+      s.taken.assign(std::size_t(nx) * ny, 0);
+      s.kx.clear(), s.ky.clear();
+      s.thinned = 0;
+    } else if (s.thinned == s.x.size()) {
+      continue; // nothing new
+    }
+    // only the points added since the last frame (a map filling), against the cells already taken
+    for (std::size_t k = s.thinned; k < s.x.size(); ++k) {
       const double i = (s.x[k] - x0) * sx, j = (s.y[k] - y0) * sy;
       if (!(i >= 0 && i < nx && j >= 0 && j < ny)) continue;
-      auto& t = taken[std::size_t(j) * nx + std::size_t(i)];
-      if (!t) t = 1, kx.push_back(s.x[k]), ky.push_back(s.y[k]);
+      auto& t = s.taken[std::size_t(j) * nx + std::size_t(i)];
+      if (!t) t = 1, s.kx.push_back(s.x[k]), s.ky.push_back(s.y[k]);
     }
+    s.thinned = s.x.size();
+    std::vector<double> kx = s.kx, ky = s.ky;
     for (std::size_t k : s.extremes) // the data's bounds stay those of every point
       kx.push_back(s.x[k]), ky.push_back(s.y[k]);
     s.plot->SetInputData(tableOf(kx, ky, s.index), 0, 1);
@@ -393,8 +402,7 @@ void PoincareChart::select(int index) {
 }
 
 void PoincareChart::setMarkerSize(float size) {
-  markerSize_ = size;
-  thinnedFor_ = {};
+  markerSize_ = size; // (the thinning's cells follow it: part of each series' grid key)
   select(selected_);
 }
 

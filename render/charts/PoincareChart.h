@@ -80,12 +80,17 @@ private:
     int index;
     std::vector<double> x, y;
     std::array<std::size_t, 4> extremes; ///< the indices of the smallest and largest x and y
+    // the thinning: for which ranges, plot size and marker its cells are, the cells taken, the points kept,
+    // and how many of x, y it has seen
+    std::array<double, 7> grid{};
+    std::vector<unsigned char> taken;
+    std::vector<double> kx, ky;
+    std::size_t thinned = 0;
   };
   void thinLargeSeries();
   /// A series' points: all of them, or for a large one its extremes until thinLargeSeries runs.
   void setPoints(vtkPlot* plot, int index, const std::vector<double>& x, const std::vector<double>& y);
   std::vector<LargeSeries> large_;
-  std::array<double, 6> thinnedFor_{};
   int selected_ = -1;
   float markerSize_ = 3;
   bool equalAspect_ = false;

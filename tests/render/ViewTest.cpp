@@ -455,16 +455,20 @@ TEST(Video, AScreenRecordingFollowsTheWallClock) {
 namespace rv {
 namespace {
 
-// a series of 150 000 points is thinned to one point per screen cell; the picture stays that of all points
-// (the same points drawn as ten series of 15 000, which are not thinned)
-TEST(Chart, ALargeSeriesIsThinnedWithoutChangingThePicture) {
-  std::vector<double> x, y;
-  double th = 0.1, p = 0.2;
-  for (int k = 0; k < 150000; ++k) {
+// n iterates of the standard map at K = 1.3 from (th, p): its chaotic sea, coordinates in (-pi, pi]
+void standardMapSea(int n, double th, double p, std::vector<double>& x, std::vector<double>& y) {
+  for (int k = 0; k < n; ++k) {
     p += 1.3 * std::sin(th), th += p;
     x.push_back(std::remainder(th, 2 * std::numbers::pi)),
         y.push_back(std::remainder(p, 2 * std::numbers::pi));
   }
+}
+
+// a series of 150 000 points is thinned to one point per screen cell; the picture stays that of all points
+// (the same points drawn as ten series of 15 000, which are not thinned)
+TEST(Chart, ALargeSeriesIsThinnedWithoutChangingThePicture) {
+  std::vector<double> x, y;
+  standardMapSea(150000, 0.1, 0.2, x, y);
   static_assert(PoincareChart::kThinAbove < 150000 && PoincareChart::kThinAbove >= 15000);
   const auto draw = [&](bool split) {
     PoincareChart chart("theta", "p");
@@ -499,6 +503,40 @@ TEST(Chart, ALargeSeriesIsThinnedWithoutChangingThePicture) {
 
 namespace rv {
 namespace {
+
+// a map filling: a series handed over as it grows (its new points thinned against the cells already taken,
+// only they copied) ends as the same picture as the whole series given at once
+TEST(Chart, ASeriesThatGrowsEndsAsTheWholeSeries) {
+  std::vector<double> x, y;
+  standardMapSea(120000, 0.3, 0.1, x, y);
+  Image first, stepwise, once;
+  {
+    PoincareChart grown("theta", "p");
+    auto ctx = createHeadlessContext(360, 360);
+    grown.attach(ctx->window());
+    grown.setRanges(-3, 3, -3, 3);
+    const int index =
+        grown.addSeries({x.begin(), x.begin() + 30000}, {y.begin(), y.begin() + 30000}, seriesColor(0));
+    first = capture(ctx->window());
+    for (std::ptrdiff_t n : {60000, 90000, 120000}) {
+      grown.setSeries(index, {x.begin(), x.begin() + n}, {y.begin(), y.begin() + n});
+      stepwise = capture(ctx->window());
+    }
+  }
+  {
+    PoincareChart whole("theta", "p");
+    auto ctx = createHeadlessContext(360, 360);
+    whole.attach(ctx->window());
+    whole.setRanges(-3, 3, -3, 3);
+    whole.addSeries(x, y, seriesColor(0));
+    capture(ctx->window()); // the first frame lays the plot out (thinned for the window's size until then)
+    once = capture(ctx->window());
+  }
+  EXPECT_GT(test::pixelsChanged(first, stepwise, 40), 500) << "the points added are drawn";
+  const auto d = test::compareImages(stepwise, once);
+  EXPECT_LT(d.meanAbs, 0.5);
+  EXPECT_LT(d.fractionOver, 0.001);
+}
 
 // looking in the body's frame the camera turns with the body: the ball's middle looks the same at any time,
 // while in the absolute frame it turns (the control)
