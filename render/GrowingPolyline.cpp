@@ -16,9 +16,10 @@
 namespace rv {
 
 namespace {
-// cells of (at most) a pixel: a segment left out passes within a cell's diagonal (1.7 px) of drawn ones,
-// inside the traces' 3-pixel width
+// cells of (at most) a pixel for lines 3 pixels wide, the traces' default: a segment left out passes within a
+// cell's diagonal (1.7 px) of drawn ones, inside their width; thinner lines get smaller cells in proportion
 constexpr double kCellPixels = 1.0;
+constexpr double kCellLineWidth = 3.0;
 // a cell key packs three 21-bit coordinates; a point further out (a million pixels off the line's start) is
 // never counted as covered
 constexpr std::int64_t kCellRange = 1 << 20;
@@ -78,7 +79,9 @@ void GrowingPolyline::beforeFrame() {
   actor_->GetBounds(b); // world coordinates, the body's placement included
   auto* camera = renderer_->GetActiveCamera();
   const int height = renderer_->GetSize()[1];
-  if (lod_ && camera && height > 0 && b[0] <= b[1]) {
+  auto* property = actor_->GetProperty();
+  // translucent lines darken where they overlap: leaving a covered segment out would show
+  if (lod_ && camera && height > 0 && b[0] <= b[1] && property->GetOpacity() >= 1) {
     double pixel = 0;
     if (camera->GetParallelProjection()) {
       pixel = 2 * camera->GetParallelScale() / height;
@@ -92,7 +95,7 @@ void GrowingPolyline::beforeFrame() {
       if (depth > 0)
         pixel = 2 * depth * std::tan(0.5 * camera->GetViewAngle() * std::numbers::pi / 180) / height;
     }
-    const double target = kCellPixels * pixel;
+    const double target = kCellPixels * pixel * std::min(1.0, property->GetLineWidth() / kCellLineWidth);
     // cells of at most a pixel, not under an eighth of the simplification's tolerance (nothing to gain
     // there); a camera that follows the body changes the pixel a little every frame: the cells change only
     // when the pixel has shrunk below them or grown by a third

@@ -6,12 +6,12 @@
 //
 // On top of that, a screen-space level of detail: before each frame the size of a pixel at the line's nearest
 // point is measured, and of the settled part of the line (all but the newest kLodHead segments, which stay
-// exact) only the segments that reach a cell (a cube of at most a pixel) no earlier segment reached are
-// drawn. A dense scribble (the rattleback's traces after 10^6 steps: 1.2·10^5 segments in a blob of a few
-// hundred pixels) then draws about as many segments as it covers pixels (1.6·10^4); a segment left out lies
-// within a cell's diagonal of drawn ones of the same colour and width, so the picture is the same within the
-// image tolerance (tests/render/ViewTest.cpp). Zooming in shrinks the cells and brings segments back; every
-// vertex is kept.
+// exact) only the segments that reach a cell (a cube of at most a pixel; smaller for lines under 3 pixels
+// wide) no earlier segment reached are drawn; translucent lines are drawn whole. A dense scribble (the
+// rattleback's traces after 10^6 steps: 1.2·10^5 segments in a blob of a few hundred pixels) then draws about
+// as many segments as it covers pixels (1.6·10^4); a segment left out lies within a cell's diagonal of drawn
+// ones of the same colour and width, so the picture is the same within the image tolerance
+// (tests/render/ViewTest.cpp). Zooming in shrinks the cells and brings segments back; every vertex is kept.
 #pragma once
 #include "render/ViewOptions.h"
 

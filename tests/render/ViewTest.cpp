@@ -351,6 +351,23 @@ TEST(Trace, TheLevelOfDetailDrawsFewerSegmentsAndTheSamePicture) {
   const Image exact = capture(ctx->window());
   for (auto* t : traces())
     EXPECT_EQ(t->segmentsDrawn(), t->points() - 1);
+  // a thinner line gets smaller cells (more segments drawn); a translucent one is drawn whole (overlaps
+  // darken)
+  auto* plane = traces()[0];
+  plane->setLevelOfDetail(true);
+  ObjectOptions o = played->visual->options().object("trace");
+  o.lineWidth = 1;
+  played->visual->setOptions("trace", o);
+  capture(ctx->window());
+  const long thinDrawn = plane->segmentsDrawn();
+  o.lineWidth = 3;
+  played->visual->setOptions("trace", o);
+  capture(ctx->window());
+  EXPECT_GT(thinDrawn, plane->segmentsDrawn() * 3 / 2);
+  o.opacity = 0.5;
+  played->visual->setOptions("trace", o);
+  capture(ctx->window());
+  EXPECT_EQ(plane->segmentsDrawn(), plane->points() - 1);
   ctx->window()->RemoveRenderer(played->visual->renderer());
   if (const char* out = std::getenv("ROLLVIZ_TEST_OUTPUT")) {
     writePng(lod, std::string(out) + "/trace_lod.png");
