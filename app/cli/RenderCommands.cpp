@@ -15,7 +15,6 @@
 #include <cmath>
 #include <fmt/core.h>
 #include <memory>
-#include <tuple>
 #include <vtkRenderWindow.h>
 
 namespace rv {
@@ -137,15 +136,14 @@ Command addVideoCommand(CLI::App& app) {
   return {cmd, [o, duration, fps] {
             const Scene scene = o->scene.load();
             // the scene's video section, then what the command line says
-            VideoSpec spec = videoSpec(scene.tool("video"), o->speed > 0 ? o->speed : scene.view.speed);
+            VideoOverrides given{.sizeName = "--size", .durationName = "--duration", .fpsName = "--fps"};
+            if (!o->size.empty()) given.size = parseSize(o->size);
+            if (duration->count()) given.duration = o->duration;
+            if (fps->count()) given.fps = o->fps;
+            VideoSpec spec =
+                videoSpec(scene.tool("video"), o->speed > 0 ? o->speed : scene.view.speed, given);
             spec.path = o->output;
             spec.encoder.codec = o->encoder;
-            if (!o->size.empty()) std::tie(spec.width, spec.height) = parseSize(o->size);
-            if (duration->count()) spec.duration = o->duration;
-            if (fps->count()) spec.fps = o->fps;
-            checkVideoSpec(spec, o->size.empty() ? "video.width x video.height" : "--size",
-                           duration->count() ? "--duration" : "video.duration",
-                           fps->count() ? "--fps" : "video.fps");
             checkWritable(o->output, "-o");
             auto integrator = scene.startIntegrator();
             VisualScene visual(*scene.model, scene.view, scene.initialState);

@@ -17,7 +17,6 @@
 
 #include <cmath>
 #include <fstream>
-#include <tuple>
 #include <vtkRenderWindow.h>
 
 namespace rv::py {
@@ -191,14 +190,13 @@ long video(const Scene& shared, const std::string& path, const pyb::object& dura
   // a copy: another Python thread may set() the scene while this runs without the GIL
   const Scene scene = shared; // NOLINT(performance-unnecessary-copy-initialization)
   // the scene's video section, then the arguments given
-  VideoSpec spec = videoSpec(scene.tool("video"), speed > 0 ? speed : scene.view.speed);
+  VideoOverrides given{.sizeName = "size", .durationName = "duration", .fpsName = "fps"};
+  if (!size.is_none()) given.size = pictureSize(size, "size");
+  if (!duration.is_none()) given.duration = duration.cast<double>();
+  if (!fps.is_none()) given.fps = fps.cast<int>();
+  VideoSpec spec = videoSpec(scene.tool("video"), speed > 0 ? speed : scene.view.speed, given);
   spec.path = path;
   spec.encoder.codec = encoder;
-  if (!size.is_none()) std::tie(spec.width, spec.height) = pictureSize(size, "size");
-  if (!duration.is_none()) spec.duration = duration.cast<double>();
-  if (!fps.is_none()) spec.fps = fps.cast<int>();
-  checkVideoSpec(spec, size.is_none() ? "video.width x video.height" : "size",
-                 duration.is_none() ? "video.duration" : "duration", fps.is_none() ? "video.fps" : "fps");
   checkWritable(path, "path");
   long frames = 0;
   runJob(progress, [&](const ToolControl& control) {

@@ -10,6 +10,7 @@
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
 #include <vtkPen.h>
+#include <vtkPointData.h>
 #include <vtkPoints2D.h>
 #include <vtkRect.h>
 #include <vtkTransform2D.h>
@@ -42,10 +43,13 @@ bool RasterPointsPlot::Paint(vtkContext2D* painter) {
   unsigned char rgba[4];
   this->Pen->GetColor(rgba); // the plot's colour (vtkPlot::SetColor), as vtkPlotPoints' markers take it
   const unsigned char alpha = this->Pen->GetOpacity();
-  vtkNew<vtkImageData> image;
-  image->SetDimensions(w, h, 1);
-  image->AllocateScalars(VTK_UNSIGNED_CHAR, 4);
-  auto* px = static_cast<unsigned char*>(image->GetScalarPointer());
+  int dims[3];
+  image_->GetDimensions(dims);
+  if (dims[0] != w || dims[1] != h || !image_->GetPointData()->GetScalars()) {
+    image_->SetDimensions(w, h, 1);
+    image_->AllocateScalars(VTK_UNSIGNED_CHAR, 4);
+  }
+  auto* px = static_cast<unsigned char*>(image_->GetScalarPointer());
   for (std::size_t k = 0; k < std::size_t(w) * h; ++k) // the colour everywhere, the markers in alpha
     px[4 * k] = rgba[0], px[4 * k + 1] = rgba[1], px[4 * k + 2] = rgba[2], px[4 * k + 3] = 0;
   // data -> scene pixels, as the painter would place the markers
@@ -65,7 +69,8 @@ bool RasterPointsPlot::Paint(vtkContext2D* painter) {
   painter->PushMatrix();
   vtkNew<vtkTransform2D> identity;
   painter->SetTransform(identity);
-  painter->DrawImage(vtkRectf(0, 0, static_cast<float>(w), static_cast<float>(h)), image);
+  image_->Modified(); // its pixels were rewritten in place
+  painter->DrawImage(vtkRectf(0, 0, static_cast<float>(w), static_cast<float>(h)), image_);
   painter->PopMatrix();
   return true;
 }

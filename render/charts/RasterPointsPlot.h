@@ -4,6 +4,8 @@
 // a few ms as a raster. Markers are crisp: a square, or a disk of the marker's diameter. Points coloured by
 // scalars, or with other marker styles, are drawn by vtkPlotPoints.
 #pragma once
+#include <vtkImageData.h>
+#include <vtkNew.h>
 #include <vtkPlotPoints.h>
 
 namespace rv {
@@ -19,6 +21,8 @@ protected:
   ~RasterPointsPlot() override = default;
 
 private:
+  vtkNew<vtkImageData>
+      image_; ///< the splatted picture, kept between frames (reallocated when the size changes)
   RasterPointsPlot(const RasterPointsPlot&) = delete;
   void operator=(const RasterPointsPlot&) = delete;
 };

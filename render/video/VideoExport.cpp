@@ -6,6 +6,7 @@
 #include "render/video/Mp4Writer.h"
 
 #include <cmath>
+#include <tuple>
 #include <utility>
 #include <vtkRenderWindow.h>
 
@@ -63,24 +64,25 @@ long exportVideo(VisualScene& scene, vtkRenderWindow* window, Integrator& integr
   return video.finish();
 }
 
-VideoSpec videoSpec(const ParameterValues& video, double speed) {
+VideoSpec videoSpec(const ParameterValues& video, double speed, const VideoOverrides& given) {
   VideoSpec spec{.width = static_cast<int>(video["width"]),
                  .height = static_cast<int>(video["height"]),
                  .fps = static_cast<int>(video["fps"]),
                  .duration = video["duration"],
                  .speed = speed,
                  .encoder = {.preset = video.choice("preset"), .crf = static_cast<int>(video["crf"])}};
-  return spec;
-}
-
-void checkVideoSpec(const VideoSpec& spec, const std::string& sizeName, const std::string& durationName,
-                    const std::string& fpsName) {
+  if (given.size) std::tie(spec.width, spec.height) = *given.size;
+  if (given.duration) spec.duration = *given.duration;
+  if (given.fps) spec.fps = *given.fps;
   if (spec.width % 2 || spec.height % 2)
-    throw InputError(sizeName + " " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
+    throw InputError((given.size ? given.sizeName : "video.width x video.height") + " " +
+                     std::to_string(spec.width) + "x" + std::to_string(spec.height) +
                      ": a video needs an even width and height");
   if (!(std::isfinite(spec.duration) && spec.duration > 0))
-    throw InputError(durationName + ": must be positive");
-  if (spec.fps < 1 || spec.fps > 240) throw InputError(fpsName + ": must lie in [1, 240]");
+    throw InputError((given.duration ? given.durationName : "video.duration") + ": must be positive");
+  if (spec.fps < 1 || spec.fps > 240)
+    throw InputError((given.fps ? given.fpsName : "video.fps") + ": must lie in [1, 240]");
+  return spec;
 }
 
 } // namespace rv

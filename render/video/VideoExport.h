@@ -8,7 +8,9 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
+#include <utility>
 
 class vtkRenderWindow;
 
@@ -29,14 +31,19 @@ struct VideoSpec {
   EncoderSettings encoder;
 };
 
-/// The scene's "video" section (dynamics/tools/VideoSettings.h videoTable) as a spec, with `speed` (the
-/// view's).
-VideoSpec videoSpec(const ParameterValues& video, double speed);
+/// What a front end was given beside the scene's video section (unset: the section's value), and the names
+/// its messages use for them (the flag or keyword).
+struct VideoOverrides {
+  std::optional<std::pair<int, int>> size;
+  std::optional<double> duration;
+  std::optional<int> fps;
+  std::string sizeName, durationName, fpsName;
+};
 
-/// InputError naming `sizeName` when the size is odd, `durationName` when the duration is not positive or
-/// `fpsName` when the rate is outside [1, 240].
-void checkVideoSpec(const VideoSpec& spec, const std::string& sizeName, const std::string& durationName,
-                    const std::string& fpsName);
+/// The scene's "video" section (dynamics/tools/VideoSettings.h videoTable) as a spec, with `speed` (the
+/// view's) and the overrides given. InputError when the result is odd-sized, not of positive length or its
+/// rate is outside [1, 240], naming the override -- or the section's key -- that made it so.
+VideoSpec videoSpec(const ParameterValues& video, double speed, const VideoOverrides& given = {});
 
 class EncoderThread;
 
