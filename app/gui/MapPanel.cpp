@@ -18,10 +18,12 @@
 #include <QCheckBox>
 #include <QColor>
 #include <QComboBox>
+#include <QElapsedTimer>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QMouseEvent>
 #include <QPushButton>
+#include <QTimer>
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
@@ -31,6 +33,8 @@ namespace rv {
 
 MapPanel::MapPanel(QWidget* parent) : QWidget(parent) {
   view_ = new QtVtkWidget(this);
+  // the chart's scene asks for a frame 40 ms after every change; drain() has painted it by then
+  view_->setRenderWanted([this] { return chart_ && chart_->changedSincePainted(); });
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
   modeBox_ = new QComboBox(this);
@@ -180,10 +184,13 @@ std::size_t MapPanel::takePoints(Series& s, std::size_t most) {
   }
   const std::size_t end = s.pendingAt + std::min(most, s.pending.size() - s.pendingAt);
   for (std::size_t k = s.pendingAt; k < end; ++k) {
-    const MapPoint& p = s.pending[k];
+    MapPoint& p = s.pending[k];
     s.x.push_back(p.coordinates.at(0));
     s.y.push_back(p.coordinates.size() > 1 ? p.coordinates[1] : p.time);
     if (p.coordinates.size() > 2) s.z.push_back(p.coordinates[2]);
+    // freed now, a few thousand a turn, not all at once when the next batch replaces this one (10^5 frees
+    // in one turn of the event loop)
+    std::vector<double>().swap(p.coordinates);
   }
   const std::size_t taken = end - s.pendingAt;
   s.pendingAt = end;
@@ -540,8 +547,18 @@ bool MapPanel::drain() {
       s.megnoValue = std::numeric_limits<double>::quiet_NaN(); // reported once; drawn in its own colour
     }
   }
+  // the points a few milliseconds allow in this turn of the event loop (the map's frame comes after them in
+  // the same turn), at most kDrainPerTick a series
+  QElapsedTimer spent;
+  spent.start();
   for (auto& s : series_) {
-    if (takePoints(s, kDrainPerTick) == 0) continue;
+    std::size_t taken = 0;
+    while (taken < kDrainPerTick && (taken == 0 || spent.elapsed() < kDrainMilliseconds)) {
+      const std::size_t got = takePoints(s, std::min<std::size_t>(kDrainPerTick - taken, 4096));
+      if (got == 0) break;
+      taken += got;
+    }
+    if (taken == 0) continue;
     drawSeries(s);
     changed = true;
   }

@@ -76,8 +76,9 @@ public:
   /// Goes on with trajectories saveRunning() saved, under the current scene; returns how many. Throws
   /// InputError when the saved data do not fit the scene.
   int resume(const nlohmann::json& saved);
-  /// Takes the points computed since the last call and redraws; called by the window's frame timer. True when
-  /// there was something new (the map is redrawn).
+  /// Takes the points computed since the last call, as many as a few milliseconds allow (kDrainMilliseconds;
+  /// the rest on the next call), and redraws; called by the window's frame timer. True when there was
+  /// something new (the map is redrawn).
   bool drain();
   void stopAll();
   /// The jobs of the map window (trajectories and the tools started from it), for the tool manager.
@@ -172,6 +173,7 @@ private:
   /// The most points of one trajectory a drain draws: a job can hand over 2^18 at once, and copying and
   /// drawing them in one turn would keep the window from answering for tens of milliseconds.
   static constexpr std::size_t kDrainPerTick = 1 << 16;
+  static constexpr qint64 kDrainMilliseconds = 4; ///< the time a turn of the event loop spends taking points
   void startMegno(Series& s);
   /// Draws a trajectory in its own colour or its MEGNO's.
   void applyColour(const Series& s);

@@ -32,6 +32,9 @@ public:
   /// Receives every picture painted, as shown (RGB, rows from the top); an empty function stops it. What a
   /// screen recording is made of.
   void setFrameTap(std::function<void(const Image&)> tap) { tap_ = std::move(tap); }
+  /// Asked before a render VTK requests on its own (a chart's scene, modified, renders itself 40 ms later):
+  /// false when the owner has painted the change since, and that frame would only repeat the last one.
+  void setRenderWanted(std::function<bool()> wanted) { renderWanted_ = std::move(wanted); }
 
 protected:
   void initializeGL() override;
@@ -50,6 +53,7 @@ private:
   std::map<int, QTimer*> timers_;
   bool inPaint_ = false, skipRender_ = false;
   std::function<void(const Image&)> tap_;
+  std::function<bool()> renderWanted_;
   Image tapped_; // reused: a frame's pixels are not reallocated on every paint
 };
 

@@ -326,6 +326,10 @@ void PoincareChart::clear() {
   selected_ = -1;
 }
 
+bool PoincareChart::changedSincePainted() const {
+  return view_->GetScene()->GetDirty();
+}
+
 void PoincareChart::thinLargeSeries() {
   if (large_.empty()) return;
   vtkAxis* ax = chart_->GetAxis(vtkAxis::BOTTOM);

@@ -69,6 +69,8 @@ public:
   /// Equal units per pixel on both axes (the manual's "hold proportions"): the shorter range is widened.
   void setEqualAspect(bool equal) { equalAspect_ = equal; }
   vtkChartXY* chart() const;
+  /// Whether something changed since the chart was last painted (its scene is dirty).
+  bool changedSincePainted() const;
 
 private:
   vtkSmartPointer<vtkContextView> view_;
