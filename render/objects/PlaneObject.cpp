@@ -2,15 +2,22 @@
 
 #include "render/Textures.h"
 
+#include <array>
 #include <cmath>
+#include <utility>
 #include <vtkActor.h>
+#include <vtkCamera.h>
 #include <vtkCellArray.h>
+#include <vtkCommand.h>
 #include <vtkFloatArray.h>
+#include <vtkMatrix4x4.h>
+#include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
+#include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkTexture.h>
 
@@ -45,8 +52,62 @@ PlaneObject::PlaneObject(std::string name, double cell, double halfSize)
   place(0, 0);
 }
 
+PlaneObject::~PlaneObject() {
+  if (renderer_) renderer_->RemoveObserver(startObserver_), renderer_->RemoveObserver(endObserver_);
+}
+
 void PlaneObject::attach(vtkRenderer* renderer) {
   renderer->AddActor(actor_);
+  if (renderer_) renderer_->RemoveObserver(startObserver_), renderer_->RemoveObserver(endObserver_);
+  renderer_ = renderer;
+  startObserver_ = renderer->AddObserver(vtkCommand::StartEvent, this, &PlaneObject::beforeFrame);
+  endObserver_ = renderer->AddObserver(vtkCommand::EndEvent, this, &PlaneObject::afterFrame);
+}
+
+bool PlaneObject::fillsTheView() const {
+  if (!renderer_ || !actor_->GetVisibility() || actor_->HasTranslucentPolygonalGeometry()) return false;
+  auto* window = renderer_->GetRenderWindow();
+  if (!window) return false;
+  int tiles[2];
+  window->GetTileScale(tiles);
+  if (tiles[0] != 1 || tiles[1] != 1) return false; // a tile of a large picture: keep it simple
+  // the segment of each corner's ray between the near and the far clipping planes, in world coordinates
+  vtkNew<vtkMatrix4x4> toWorld;
+  toWorld->DeepCopy(renderer_->GetActiveCamera()->GetCompositeProjectionTransformMatrix(
+      renderer_->GetTiledAspectRatio(), -1, 1));
+  toWorld->Invert();
+  const auto unproject = [&](double x, double y, double z) {
+    double p[4] = {x, y, z, 1};
+    toWorld->MultiplyPoint(p, p);
+    return std::array<double, 3>{p[0] / p[3], p[1] / p[3], p[2] / p[3]};
+  };
+  const double* b = actor_->GetBounds(); // the quad, flat at z = b[4]
+  int side = 0;
+  for (const auto& [x, y] : {std::pair{-1.0, -1.0}, {1.0, -1.0}, {1.0, 1.0}, {-1.0, 1.0}}) {
+    const auto a = unproject(x, y, -1), c = unproject(x, y, 1);
+    const double za = a[2] - b[4], zc = c[2] - b[4];
+    // the segment crosses the floor's plane, from the same side at every corner
+    const int s = za > 0 && zc < 0 ? 1 : za < 0 && zc > 0 ? -1 : 0;
+    if (s == 0 || (side != 0 && s != side)) return false;
+    side = s;
+    const double t = za / (za - zc), hx = a[0] + t * (c[0] - a[0]), hy = a[1] + t * (c[1] - a[1]);
+    if (!(hx > b[0] && hx < b[1] && hy > b[2] && hy < b[3])) return false;
+  }
+  // a screen point's segment crosses the plane on a convex part of the screen, and the crossings form the
+  // projective image of the view's rectangle: the corners inside the (convex) quad put all of it inside
+  return true;
+}
+
+void PlaneObject::beforeFrame() {
+  if (!renderer_->GetGradientBackground() || !fillsTheView()) return;
+  renderer_->GradientBackgroundOff();
+  backgroundHidden_ = true;
+}
+
+void PlaneObject::afterFrame() {
+  if (!backgroundHidden_) return;
+  renderer_->GradientBackgroundOn();
+  backgroundHidden_ = false;
 }
 
 void PlaneObject::apply(const ObjectOptions& o) {

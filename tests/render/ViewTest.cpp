@@ -2,6 +2,7 @@
 // built with RenderTest.cpp, so it runs on EGL and on OSMesa.
 #include "render/GrowingPolyline.h"
 #include "render/charts/PoincareChart.h"
+#include "render/objects/PlaneObject.h"
 
 #include "render/BodyMeshes.h"
 #include "render/objects/ApexObject.h"
@@ -19,6 +20,7 @@
 #include <filesystem>
 #include <gtest/gtest.h>
 #include <numbers>
+#include <tuple>
 #include <unistd.h>
 #include <vtkImageData.h>
 #include <vtkPNGReader.h>
@@ -578,6 +580,37 @@ TEST(Chart, AChangeIsPendingUntilTheNextFrame) {
   EXPECT_TRUE(chart.changedSincePainted());
   capture(ctx->window());
   EXPECT_FALSE(chart.changedSincePainted());
+}
+
+// the gradient background is left out of a frame only when the floor covers every pixel: checked against a
+// solid magenta background (not touched by the skip), which shows through wherever the floor does not reach:
+// seen from above, nearly level (the horizon shows), further off, from below, and far off (its edges show)
+TEST(Plane, TheBackgroundIsLeftOutOnlyWhereTheFloorFillsTheView) {
+  for (const auto& [elevation, distance, fills] : {std::tuple{"30", "", true},
+                                                   {"4", "", false},
+                                                   {"30", "40", true},
+                                                   {"-20", "", true},
+                                                   {"60", "400", false}}) {
+    std::vector<std::string> sets = {std::string("view.camera.elevation=") + elevation};
+    if (*distance) sets.push_back(std::string("view.camera.distance=") + distance);
+    const auto p = play("ellipsoid_on_plane", 2.0, sets);
+    auto* plane = dynamic_cast<PlaneObject*>(p->visual->find("plane"));
+    ASSERT_TRUE(plane);
+    auto ctx = createHeadlessContext(480, 270);
+    p->visual->addTo(ctx->window());
+    vtkRenderer* r = p->visual->renderer();
+    capture(ctx->window()); // lays the view out (clipping range)
+    EXPECT_EQ(plane->fillsTheView(), fills) << "elevation " << elevation << ", distance " << distance;
+    EXPECT_TRUE(r->GetGradientBackground()) << "restored after the frame";
+    r->GradientBackgroundOff();
+    r->SetBackground(1, 0, 1);
+    const Image img = capture(ctx->window());
+    long magenta = 0;
+    for (std::size_t k = 0; k + 2 < img.rgb.size(); k += 3)
+      magenta += img.rgb[k] > 240 && img.rgb[k + 1] < 15 && img.rgb[k + 2] > 240;
+    EXPECT_EQ(magenta == 0, fills) << magenta << " background pixels at elevation " << elevation;
+    ctx->window()->RemoveRenderer(r);
+  }
 }
 
 // looking in the body's frame the camera turns with the body: the ball's middle looks the same at any time,
