@@ -1,7 +1,7 @@
 // PlaneObject.h -- the supporting plane z = 0: a light checkerboard with a grid of cell size `cell`,
 // re-centred under the body as it rolls (snapped to whole cells, so the pattern stays fixed in space).
 // When the opaque floor fills the whole view the renderer's gradient background, hidden anyway, is not drawn
-// for that frame: on software GL it costs a fifth of a 1080p frame (tests/bench).
+// for that frame: on software GL that is ~13 % of a 1080p frame (tests/bench).
 #pragma once
 #include "render/objects/VisualObject.h"
 
