@@ -508,12 +508,19 @@ class Cli(unittest.TestCase):
         regular = json.loads(r.stdout)
         self.assertAlmostEqual(regular["megno"], 2, delta=0.2)
         self.assertEqual(regular["time"], 3000)
-        chaotic = json.loads(run("megno", hh, "--set", "energy=0.16666666666666666", "--time", "20000",
-                                 "--json").stdout)
-        lyap = json.loads(run("lyapunov", hh, "--set", "energy=0.16666666666666666", "--time", "20000",
-                              "--json").stdout)
-        self.assertGreater(chaotic["megno"], 20)
-        self.assertAlmostEqual(chaotic["megno_rate"], lyap["exponents"][0], delta=0.15 * lyap["exponents"][0])
+        # in the chaotic sea MEGNO's rate tends to the largest Lyapunov exponent; over a finite time one orbit may
+        # stick near islands for a while (either estimate then lags), so the medians of three orbits are compared
+        rates, exponents = [], []
+        for start in ("[0.1,0.1]", "[0.12,0.1]", "[0.05,0.05]"):
+            chaotic = json.loads(run("megno", hh, "--set", "energy=0.16666666666666666", "--set",
+                                     "initial.map=" + start, "--time", "20000", "--json").stdout)
+            lyap = json.loads(run("lyapunov", hh, "--set", "energy=0.16666666666666666", "--set",
+                                  "initial.map=" + start, "--time", "20000", "--json").stdout)
+            self.assertGreater(chaotic["megno"], 20, start)
+            rates.append(chaotic["megno_rate"])
+            exponents.append(lyap["exponents"][0])
+        rate, exponent = sorted(rates)[1], sorted(exponents)[1]
+        self.assertAlmostEqual(rate, exponent, delta=0.15 * exponent, msg=f"{rates} {exponents}")
         # the scene section and the text output
         t = run("megno", hh, "--set", "megno.time=100")
         self.assertEqual(t.returncode, 0, t.stderr)
