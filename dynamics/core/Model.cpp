@@ -59,6 +59,10 @@ void Model::recordField(taylor::Tape&, const double*) const {
                                "choose another integrator.method, e.g. everhart");
 }
 
+bool Model::tangentRk4(double*, double*, int, double, long) const {
+  return false;
+}
+
 void Model::tangentRhs(const double* x, const double* V, int k, double* dx, double* dV) const {
   const int m = info_->coreDimension;
   rhs(x, dx);

@@ -99,6 +99,11 @@ public:
   /// coreDimension, column after column): dx = f(x), dV = J_core(x) V. What the variational equations need;
   /// models with a templated field compute both in one pass of directional derivatives.
   virtual void tangentRhs(const double* x, const double* V, int k, double* dx, double* dV) const;
+  /// The fused path of fixed-step tangent runs (Lyapunov spectra with rk4): advances x and the k tangent
+  /// vectors V (laid out as in tangentRhs) by `steps` classical RK4 steps of h in one compiled loop, with no
+  /// virtual call per stage -- the same steps as the rk4 integrator on the variational equations
+  /// (TangentSystem). Returns false, changing nothing, where a model has no such path; steps = 0 only asks.
+  virtual bool tangentRk4(double* x, double* V, int k, double h, long steps) const;
   /// Records one evaluation of the right-hand side at x on a tape that yields its Taylor coefficients
   /// (TaylorTape.h). Models with a templated field do it with no code of their own; the rest throw
   /// InputError saying that the Taylor method cannot expand them.

@@ -3,9 +3,12 @@
 #pragma once
 #include "dynamics/core/Model.h"
 #include "dynamics/core/TaylorTape.h"
+#include "dynamics/integrators/Rk4Scheme.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <unsupported/Eigen/AutoDiff>
+#include <utility>
 
 namespace rv {
 
@@ -61,20 +64,22 @@ public:
         jac[i * M + j] = fa[i].derivatives()[j];
   }
 
-  /// One pass of forward AutoDiff seeded with the tangent vectors (fixed sizes for the 1-3 vectors of map
-  /// derivatives; more go through the Jacobian): the values are f, the derivatives J V.
+  /// One pass of forward AutoDiff seeded with the tangent vectors (derivative vectors of fixed size for up to
+  /// kMaxFixedVectors; more go through the Jacobian): the values are f, the derivatives J V.
   void tangentRhs(const double* x, const double* V, int k, double* dx, double* dV) const final {
-    switch (k) {
-    case 1:
-      return directional<1>(x, V, dx, dV);
-    case 2:
-      return directional<2>(x, V, dx, dV);
-    case 3:
-      return directional<3>(x, V, dx, dV);
-    default:
-      return Model::tangentRhs(x, V, k, dx, dV);
-    }
+    if (!withFixedVectors(k, [&]<int K>() { directional<K>(x, V, dx, dV); }))
+      Model::tangentRhs(x, V, k, dx, dV);
   }
+
+  /// RK4 on (x, V) with the state, the stages and the AutoDiff pass all of fixed size and inlined: what a
+  /// hand-written variational system compiles to (Boost.Odeint's chaotic_system example), from the one field.
+  bool tangentRk4(double* x, double* V, int k, double h, long steps) const final {
+    return !isMap() && withFixedVectors(k, [&]<int K>() { fusedRk4<K>(x, V, h, steps); });
+  }
+
+  /// Tangent vectors up to this many (and the core dimension) get code with their count fixed at compile
+  /// time.
+  static constexpr int kMaxFixedVectors = 6;
 
   /// The field evaluated on recording scalars: its Taylor expansion for the taylor integrator.
   void recordField(taylor::Tape& tape, const double* x) const final {
@@ -89,7 +94,34 @@ public:
 
 private:
   const Derived& self() const { return static_cast<const Derived&>(*this); }
-  template <int K> void directional(const double* x, const double* V, double* dx, double* dV) const {
+  // calls body.template operator()<k>() when 1 <= k <= min(M, kMaxFixedVectors); false otherwise
+  template <class Body> static bool withFixedVectors(int k, Body&& body) {
+    return [&]<int... I>(std::integer_sequence<int, I...>) {
+      return ((I + 1 == k ? (body.template operator()<I + 1>(), true) : false) || ...);
+    }
+    (std::make_integer_sequence<int, std::min(M, kMaxFixedVectors)>{});
+  }
+  template <int K> void fusedRk4(double* x, double* V, double h, long steps) const {
+    using Y = Eigen::Matrix<double, N + M * K, 1>;
+    using Tangents = Eigen::Matrix<double, M * K, 1>;
+    Y y, f0, k2, k3, k4, tmp, y1;
+    y.template head<N>() = Eigen::Map<const Vec<double>>(x);
+    y.template tail<M * K>() = Eigen::Map<const Tangents>(V);
+    const auto field = [this](const Y& in, Y& out) {
+      directional<K>(in.data(), in.data() + N, out.data(), out.data() + N);
+    };
+    for (long s = 0; s < steps; ++s) {
+      field(y, f0);
+      rk4Step(field, h, y, f0, k2, k3, k4, tmp, y1);
+      y = y1;
+    }
+    Eigen::Map<Vec<double>> xOut(x);
+    Eigen::Map<Tangents> vOut(V);
+    xOut = y.template head<N>();
+    vOut = y.template tail<M * K>();
+  }
+  template <int K>
+  EIGEN_ALWAYS_INLINE void directional(const double* x, const double* V, double* dx, double* dV) const {
     using D = Eigen::Matrix<double, K, 1>;
     using AD = Eigen::AutoDiffScalar<D>;
     Vec<AD> xa, fa;

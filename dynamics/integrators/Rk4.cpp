@@ -1,5 +1,7 @@
 #include "dynamics/integrators/Rk4.h"
 
+#include "dynamics/integrators/Rk4Scheme.h"
+
 namespace rv {
 
 const ParameterTable& Rk4::parameterTable() {
@@ -59,13 +61,11 @@ template <int D> void Rk4::stepWith() {
   fPrev_.swap(k1_);
   M x(x_.data(), n), x0(xPrev_.data(), n), f0(fPrev_.data(), n), k2(k2_.data(), n), k3(k3_.data(), n),
       k4(k4_.data(), n), tmp(tmp_.data(), n);
-  tmp = x0 + 0.5 * h * f0;
-  evaluate(tmp_, k2_);
-  tmp = x0 + 0.5 * h * k2;
-  evaluate(tmp_, k3_);
-  tmp = x0 + h * k3;
-  evaluate(tmp_, k4_);
-  x = x0 + (h / 6.0) * (f0 + 2.0 * k2 + 2.0 * k3 + k4);
+  const auto field = [this](const M& y, M& dy) {
+    model_->rhs(y.data(), dy.data());
+    ++evaluations_;
+  };
+  rk4Step(field, h, x0, f0, k2, k3, k4, tmp, x);
   tPrev_ = t_;
   t_ = tPrev_ + h;
   checkFinite();

@@ -2,9 +2,11 @@
 
 #include "dynamics/core/Errors.h"
 #include "dynamics/integrators/MapIteration.h"
+#include "dynamics/integrators/Rk4.h"
 #include "dynamics/tools/TangentSystem.h"
 
 #include <Eigen/QR>
+#include <algorithm>
 #include <cmath>
 
 namespace rv {
@@ -179,7 +181,14 @@ LyapunovRun::LyapunovRun(const Model& model, IntegratorFactory makeIntegrator, c
   logs_ = Eigen::VectorXd::Zero(k_);
   V_ = Eigen::MatrixXd::Identity(m_, k_);
   x_ = x0;
-  if (s_.mode == LyapunovSettings::Mode::Tangent) tangent_ = std::make_unique<TangentSystem>(model, k_);
+  if (s_.mode == LyapunovSettings::Mode::Tangent) {
+    tangent_ = std::make_unique<TangentSystem>(model, k_);
+    // rk4 with a model that compiles its tangent equations into the steps: the same steps, no integrator
+    const auto probe = model.isMap() ? nullptr : make_();
+    Eigen::VectorXd ask = Eigen::VectorXd::Zero(tangent_->dimension());
+    if (const auto* rk4 = dynamic_cast<const Rk4*>(probe.get()); rk4 && tangent_->rk4Steps(ask, 0, 0))
+      fusedStep_ = rk4->stepSize();
+  }
   project();
   startAll(0);
 }
@@ -203,8 +212,10 @@ void LyapunovRun::startAll(double t0) {
     state_.resize(n_ + static_cast<Eigen::Index>(m_) * k_);
     state_.head(n_) = x_;
     state_.tail(static_cast<Eigen::Index>(m_) * k_) = Eigen::Map<const Eigen::VectorXd>(V_.data(), V_.size());
-    integs_.push_back(fresh());
-    integs_.back()->start(*tangent_, t0, state_);
+    if (fusedStep_ == 0) {
+      integs_.push_back(fresh());
+      integs_.back()->start(*tangent_, t0, state_);
+    }
   } else {
     integs_.push_back(fresh());
     integs_.back()->start(model_, t0, x_);
@@ -221,7 +232,18 @@ void LyapunovRun::startAll(double t0) {
 bool LyapunovRun::interval(const ToolControl& control) {
   double step = std::min(interval_, s_.maxTime - t_);
   if (tangent_) {
-    advanceTo(*integs_[0], *tangent_, t_ + step, state_, control);
+    if (const long steps = fusedSteps(step); steps > 0) {
+      if (!advanceFused(steps, control)) {
+        startAll(t_);
+        return false;
+      }
+    } else {
+      if (integs_.empty()) { // an interval that is not a whole number of rk4 steps (often the last one)
+        integs_.push_back(make_());
+        integs_.back()->start(*tangent_, t_, state_);
+      }
+      advanceTo(*integs_[0], *tangent_, t_ + step, state_, control);
+    }
     if (control.stopRequested()) {
       startAll(t_);
       return false;
@@ -255,6 +277,28 @@ bool LyapunovRun::interval(const ToolControl& control) {
   project();
   orthonormalize(V_, logs_);
   startAll(t_);
+  return true;
+}
+
+// how many rk4 steps make `span` when the fused path applies and they make it exactly; 0 otherwise
+long LyapunovRun::fusedSteps(double span) const {
+  if (fusedStep_ == 0) return 0;
+  const double n = std::round(span / fusedStep_);
+  return n >= 1 && n < 1e15 && std::abs(n * fusedStep_ - span) <= 1e-9 * span ? static_cast<long>(n) : 0;
+}
+
+// the fused path over one interval, in chunks between which a stop request is seen; false when stopped
+bool LyapunovRun::advanceFused(long steps, const ToolControl& control) {
+  constexpr long kChunk = 4096;
+  for (long done = 0; done < steps; done += kChunk) {
+    if (control.stopRequested()) return false;
+    const long chunk = std::min(kChunk, steps - done);
+    tangent_->rk4Steps(state_, fusedStep_, chunk);
+    if (!std::isfinite(state_.sum())) // as Integrator::checkFinite: a NaN, an infinity or a blow-up
+      throw ComputationError("lyapunov: the variational equations stopped being finite by t = " +
+                             std::to_string(t_ + static_cast<double>(done + chunk) * fusedStep_) +
+                             " (blow-up; try a smaller step)");
+  }
   return true;
 }
 

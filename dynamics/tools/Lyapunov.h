@@ -72,11 +72,14 @@ private:
   void startAll(double t0);
   void project();
   bool interval(const ToolControl& control);
+  long fusedSteps(double span) const;
+  bool advanceFused(long steps, const ToolControl& control);
   const Model& model_;
   IntegratorFactory make_;
   LyapunovSettings s_;
   int m_, n_, k_;
   double interval_, t_ = 0, nextOutput_;
+  double fusedStep_ = 0; ///< the rk4 step when the model fuses it with its tangent equations, else 0
   int successes_ = 0;
   Eigen::VectorXd logs_, x_, state_;
   Eigen::MatrixXd V_;

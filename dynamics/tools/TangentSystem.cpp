@@ -33,6 +33,10 @@ void TangentSystem::rhs(const double* x, double* dx) const {
   base_.tangentRhs(x, x + n_, k_, dx, dx + n_);
 }
 
+bool TangentSystem::rk4Steps(Eigen::VectorXd& state, double h, long steps) const {
+  return base_.tangentRk4(state.data(), state.data() + n_, k_, h, steps);
+}
+
 void TangentSystem::jacobian(const double*, double*) const {
   throw ComputationError("the Jacobian of the variational equations is not available");
 }

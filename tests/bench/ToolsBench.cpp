@@ -1,7 +1,7 @@
 // Tool benchmarks: the Poincare map's cost against plain integration of the same trajectory, crossings per
 // second, Lyapunov spectra of Lorenz (tangent and perturbed modes) beside Boost.Odeint's chaotic_system
-// approach (the variational equations integrated with runge_kutta4 and a QR every interval), and job
-// throughput on 1 and 2 threads.
+// approach (the variational equations integrated with runge_kutta4 and a QR every interval), the Chaplygin
+// ball's spectrum, MEGNO orbits per second, and job throughput on 1 and 2 threads.
 #include "dynamics/core/ModelRegistry.h"
 #include "dynamics/integrators/Everhart.h"
 #include "dynamics/integrators/Rk4.h"
@@ -10,7 +10,9 @@
 #include "dynamics/tools/FixedPoint.h"
 #include "dynamics/tools/Lyapunov.h"
 #include "dynamics/tools/MapGrid.h"
+#include "dynamics/tools/Megno.h"
 #include "dynamics/tools/PoincareMap.h"
+#include "dynamics/tools/TangentSystem.h"
 
 #include <Eigen/QR>
 #include <array>
@@ -179,6 +181,79 @@ void LorenzSpectrum_odeint(benchmark::State& state) {
   state.counters["lambda1"] = l1;
 }
 
+// the Chaplygin ball's full spectrum: six tangent vectors beside the 16-component state (52 components), rk4
+// h = 0.01 to t = 200, a QR every unit of time. rollviz takes the fused path (the model's tangent equations
+// compiled into the steps); the peer steps the same variational system (TangentSystem, the generic path with
+// a virtual right-hand side) with Boost.Odeint's runge_kutta4 and the same QR
+const Eigen::VectorXd& chaplyginStart(const Model& m) {
+  static const Eigen::VectorXd x0 = m.stateFromMap({0.5, 0.2}, {}, "bench");
+  return x0;
+}
+
+void ChaplyginSpectrum(benchmark::State& state) {
+  const auto m = make("chaplygin_ball", {{"K1", 0.2}, {"K2", 0.1}, {"K3", 0.3}});
+  LyapunovSettings s;
+  s.interval = 1;
+  s.maxTime = 200;
+  double l1 = 0;
+  for (auto _ : state)
+    l1 = lyapunovExponents(
+             *m, [] { return std::make_unique<Rk4>(0.01); }, chaplyginStart(*m), s)
+             .last.exponents[0];
+  state.counters["lambda1"] = l1;
+  state.counters["spectra_per_second"] =
+      benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
+
+void ChaplyginSpectrum_odeint(benchmark::State& state) {
+  const auto m = make("chaplygin_ball", {{"K1", 0.2}, {"K2", 0.1}, {"K3", 0.3}});
+  const TangentSystem tangent(*m, 6);
+  const int n = m->dimension();
+  using State = std::vector<double>;
+  const auto sys = [&](const State& x, State& dx, double) { tangent.rhs(x.data(), dx.data()); };
+  double l1 = 0;
+  for (auto _ : state) {
+    State x(static_cast<std::size_t>(tangent.dimension()), 0.0);
+    Eigen::Map<Eigen::VectorXd>(x.data(), n) = chaplyginStart(*m);
+    Eigen::Map<Eigen::MatrixXd> V(x.data() + n, 6, 6);
+    V.setIdentity();
+    boost::numeric::odeint::runge_kutta4<State> rk4;
+    double t = 0, log1 = 0;
+    for (int k = 0; k < 200; ++k) {
+      for (int i = 0; i < 100; ++i, t += 0.01)
+        rk4.do_step(sys, x, t, 0.01);
+      Eigen::HouseholderQR<Eigen::MatrixXd> qr(V);
+      const double r11 = qr.matrixQR()(0, 0);
+      log1 += std::log(std::abs(r11));
+      Eigen::MatrixXd Q = qr.householderQ() * Eigen::MatrixXd::Identity(6, 6);
+      for (int j = 0; j < 6; ++j)
+        if (qr.matrixQR()(j, j) < 0) Q.col(j) = -Q.col(j);
+      V = Q;
+    }
+    l1 = log1 / t;
+  }
+  state.counters["lambda1"] = l1;
+  state.counters["spectra_per_second"] =
+      benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
+
+// MEGNO of one orbit as the Henon-Heiles sweep computes it (scenes/sweeps/henon_heiles_megno.json: E = 1/8,
+// everhart 15, h = 0.05, t = 400), on a torus and in the chaotic sea
+void MegnoHenonHeiles(benchmark::State& state, double x, double y) {
+  const auto m = make("henon_heiles", {{"energy", 0.125}});
+  const Eigen::VectorXd x0 = m->stateFromMap({x, y}, {}, "bench");
+  MegnoSettings s;
+  s.maxTime = 400;
+  double value = 0;
+  for (auto _ : state)
+    value = megno(
+                *m, [] { return std::make_unique<Everhart>(0.05, 15, 12); }, x0, s)
+                .last.megno;
+  state.counters["megno"] = value;
+  state.counters["orbits_per_second"] =
+      benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
+
 // points per second from `jobs` Poincare jobs on Henon-Heiles running side by side for 1 s
 void JobThroughput(benchmark::State& state) {
   const int jobs = static_cast<int>(state.range(0));
@@ -218,4 +293,12 @@ BENCHMARK_CAPTURE(LorenzSpectrum, perturbed, LyapunovSettings::Mode::Perturbed)
     ->Name("LorenzSpectrum/rollviz_perturbed")
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(LorenzSpectrum_odeint)->Name("LorenzSpectrum/odeint")->Unit(benchmark::kMillisecond);
+BENCHMARK(ChaplyginSpectrum)->Name("ChaplyginSpectrum/rollviz_tangent")->Unit(benchmark::kMillisecond);
+BENCHMARK(ChaplyginSpectrum_odeint)->Name("ChaplyginSpectrum/odeint_generic")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(MegnoHenonHeiles, torus, 0.1, 0.1)
+    ->Name("Megno/henon_heiles/torus")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(MegnoHenonHeiles, chaos, 0.0, 0.45)
+    ->Name("Megno/henon_heiles/chaos")
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(JobThroughput)->Arg(1)->Arg(2)->Iterations(1)->UseRealTime()->Unit(benchmark::kMillisecond);

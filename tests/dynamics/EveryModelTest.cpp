@@ -4,7 +4,9 @@
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/ModelRegistry.h"
 #include "dynamics/integrators/Everhart.h"
+#include "dynamics/integrators/Rk4.h"
 #include "dynamics/integrators/Taylor.h"
+#include "dynamics/tools/TangentSystem.h"
 #include "tests/dynamics/TestSupport.h"
 
 #include <filesystem>
@@ -117,6 +119,37 @@ TEST_P(EveryModel, TaylorExpandsTheFieldWithNoCodeOfItsOwn) {
   back.interpolate(0, dense);
   EXPECT_LT((dense - x0).cwiseAbs().maxCoeff(), 1e-10 * std::max(1.0, x0.cwiseAbs().maxCoeff()))
       << GetParam();
+}
+
+// Lyapunov spectra with rk4 take the fused path (the tangent equations compiled into the steps): it must take
+// the very steps the rk4 integrator takes on the variational system, for every number of vectors.
+TEST_P(EveryModel, FusedTangentStepsAreTheRk4IntegratorsSteps) {
+  const auto& entry = ModelRegistry::builtin().get(GetParam());
+  const auto m = entry.create(ParameterValues(entry.info->parameters));
+  const int c = m->info().coreDimension;
+  for (int k = 1; k <= c; ++k) {
+    TangentSystem tangent(*m, k);
+    Eigen::VectorXd state(tangent.dimension());
+    state.head(m->dimension()) = genericState(*m);
+    for (Eigen::Index i = m->dimension(); i < state.size(); ++i)
+      state[i] = std::sin(1.3 * static_cast<double>(i) + 0.4);
+    Eigen::VectorXd fused = state;
+    const bool hasPath = tangent.rk4Steps(fused, 0.01, 25);
+    if (m->isMap()) { // a map has no flow to step
+      EXPECT_FALSE(hasPath) << GetParam();
+      EXPECT_EQ(fused, state) << GetParam();
+      return;
+    }
+    ASSERT_TRUE(hasPath) << GetParam() << " k = " << k;
+    Rk4 rk4(0.01);
+    rk4.start(tangent, 0, state);
+    for (int s = 0; s < 25; ++s)
+      rk4.step();
+    const double scale = std::max(1.0, rk4.state().cwiseAbs().maxCoeff());
+    EXPECT_LT((fused - rk4.state()).cwiseAbs().maxCoeff(), 1e-14 * scale) << GetParam() << " k = " << k;
+    EXPECT_GT((fused - state).cwiseAbs().maxCoeff(), 1e-6) << GetParam(); // it moved
+  }
+  EXPECT_FALSE(TangentSystem(*m, 1).base().tangentRk4(nullptr, nullptr, c + 1, 0.01, 0)) << "k > core";
 }
 
 INSTANTIATE_TEST_SUITE_P(Registry, EveryModel,
