@@ -635,7 +635,9 @@ private slots:
     view->grabFramebuffer();
     const auto all = map->chart().ranges();
     QVERIFY2(all[1] - all[0] > 5, qPrintable(QString::number(all[1] - all[0])));
-    QVERIFY(all[3] - all[2] > island[3] - island[2]);
+    // the chaotic sea covers the torus: p over all of [0, 2 pi) (the island's p wraps too, so its automatic
+    // axis may be as tall, with nice numbers, as the fitted one)
+    QVERIFY2(all[2] < 0.05 && all[3] > 6.25, qPrintable(QString("p from %1 to %2").arg(all[2]).arg(all[3])));
     // the cursor over the chaotic trajectory's first point: its coordinates beside the chart, none in it
     map->stopAll();
     const auto running = [&] {
