@@ -298,7 +298,7 @@ BENCHMARK(ChaplyginSpectrum_odeint)->Name("ChaplyginSpectrum/odeint_generic")->U
 BENCHMARK_CAPTURE(MegnoHenonHeiles, torus, 0.1, 0.1)
     ->Name("Megno/henon_heiles/torus")
     ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(MegnoHenonHeiles, chaos, 0.0, 0.45)
+BENCHMARK_CAPTURE(MegnoHenonHeiles, chaos, 0.3, 0.3)
     ->Name("Megno/henon_heiles/chaos")
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(JobThroughput)->Arg(1)->Arg(2)->Iterations(1)->UseRealTime()->Unit(benchmark::kMillisecond);
