@@ -246,12 +246,12 @@ void Everhart::step() {
 // The corrector on a step of signed length h from x_ (F_ holds the prediction, column 0 = f(x_)): F_j =
 // f(x0 + h sum_l A(j, l) F_l), sweeping the nodes in order and using each new value at once (as Everhart's
 // substeps do, which roughly halves the sweeps of a Jacobi iteration); stops when only rounding is left
-// (IAS15's rule) or after `iterations` sweeps. Returns the
-// polynomial's last coefficient relative to the largest node value (IAS15's error measure).
+// (IAS15's rule) or what is left is far below it, or after `iterations` sweeps. Returns the polynomial's last
+// coefficient relative to the largest node value (IAS15's error measure).
 template <int N> double Everhart::correct(double h) {
   using Nodes = Eigen::Matrix<double, Eigen::Dynamic, N>;
   const Eigen::Map<const Nodes> nodes(F_.data(), F_.rows(), N);
-  double previousChange = 0;
+  double previousChange = 0, changeBefore = 0;
   lastIterations_ = 0;
   for (int it = 0; it < maxIterations_; ++it) {
     ++lastIterations_;
@@ -274,6 +274,15 @@ template <int N> double Everhart::correct(double h) {
     // step in ~1e5 stopped after two sweeps, a jump of 1.5e-13).
     const double relative = scale > 0 ? change / scale : change;
     if (relative == 0 || (it > 2 && relative >= previousChange)) break;
+    // Where the sweeps contract fast (short steps) the last one or two only chase rounding: stop once this
+    // change times the contraction seen over the two sweeps before leaves less than 1e-18 -- 100 times below
+    // the old extrapolated rule, no drift over 2e6 steps (h = 0.1 and 0.5) and 20-40 % fewer sweeps at
+    // h <= 0.1 -- unless the change dipped far below what that contraction predicts (chance, not convergence)
+    if (it >= 2 && changeBefore > 0) {
+      const double contraction = std::min(1.0, previousChange / changeBefore);
+      if (relative * contraction < 1e-18 && relative >= 0.1 * contraction * previousChange) break;
+    }
+    changeBefore = previousChange;
     previousChange = relative;
   }
   if (tolerance_ <= 0) return 0;
@@ -287,9 +296,12 @@ template <int N> void Everhart::stepWith() {
   F_.swap(Fnew_); // Fnew_: the last step's nodes, kept while a rejected step is redone
   for (int attempt = 0;; ++attempt) {
     const double h = direction_ * h_;
-    // predictor: the last step's polynomial continued over this one (a step `ratio` times as long), plus the
-    // correction the last prediction needed when the step is unchanged (IAS15 carries its predictor's error
-    // over the same way); a constant on the first step
+    // predictor: the last step's polynomial continued over this one (a step `ratio` times as long), plus,
+    // when the step is unchanged, what the continuation missed on the last step; a constant on the first
+    // step. As in IAS15 (its e and b - e), predicted_ keeps the bare continuation, so the correction is the
+    // miss of the continuation alone: measuring it against the corrected prediction made it alternate (m_n -
+    // m_(n-1)
+    // + ...), and the corrector needed 8-20 % more sweeps (chaplygin_ball, h = 0.02-0.5).
     if (havePrevious_) {
       const double ratio = h_ / lastStep_;
       if (ratio != lastRatio_) setExtrapolation(ratio);
@@ -297,12 +309,14 @@ template <int N> void Everhart::stepWith() {
       const Eigen::Matrix<double, N, N> E = extrapolate_;
       Eigen::Map<Nodes> predicted(F_.data(), F_.rows(), N);
       predicted.noalias() = Eigen::Map<const Nodes>(Fnew_.data(), Fnew_.rows(), N).lazyProduct(E);
+      predicted_ = F_;
       if (ratio == 1) F_ += correction_;
     } else {
       F_ = f1_.replicate(1, N);
+      predicted_ = F_;
     }
     F_.col(0) = f1_;
-    predicted_ = F_;
+    predicted_.col(0) = f1_;
     const double error = correct<N>(h);
     double next = h_;
     if (tolerance_ > 0) {

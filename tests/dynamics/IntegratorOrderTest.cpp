@@ -189,6 +189,27 @@ TEST(Everhart, LongRunsLeaveNoDriftOfTheInvariant) {
   EXPECT_LT(worst, 1.2e-13);
 }
 
+// On short steps the corrector contracts ~1e-3 a sweep: the first sweep fixes the prediction (whose miss is
+// rounding amplified by the continuation), the second reaches rounding, the third confirms it. Four or more
+// meant a correction measured against the corrected prediction (it alternated) or a stopping rule that waits
+// for the change to stop shrinking when what is left is already ~1e-20.
+TEST(Everhart, ShortStepsConvergeInThreeSweeps) {
+  test::CoupledOscillator m;
+  for (const double h : {0.02, 0.05, 0.1}) {
+    Everhart e(h, 15, 12);
+    e.start(m, 0, test::CoupledOscillator::exact(0));
+    const long before = e.evaluations(), steps = 20000;
+    for (long i = 0; i < steps; ++i)
+      e.step();
+    // 7 evaluations a sweep (8 nodes, the first known) and one at the new point
+    const double sweeps = (static_cast<double>(e.evaluations() - before) / steps - 1) / 7;
+    EXPECT_LT(sweeps, 3.1) << "h = " << h;
+    EXPECT_GE(sweeps, 3.0) << "h = " << h;
+    const double q = e.state()[0], p = e.state()[1];
+    EXPECT_LT(std::abs(q * q + p * p - 1), 5e-15) << "h = " << h;
+  }
+}
+
 TEST(Everhart, OrdersAreRoundedDownAsTheManualSays) {
   EXPECT_EQ(Everhart::effectiveOrder(15), 15);
   EXPECT_EQ(Everhart::effectiveOrder(14), 11);
