@@ -299,9 +299,8 @@ template <int N> void Everhart::stepWith() {
     // predictor: the last step's polynomial continued over this one (a step `ratio` times as long), plus,
     // when the step is unchanged, what the continuation missed on the last step; a constant on the first
     // step. As in IAS15 (its e and b - e), predicted_ keeps the bare continuation, so the correction is the
-    // miss of the continuation alone: measuring it against the corrected prediction made it alternate (m_n -
-    // m_(n-1)
-    // + ...), and the corrector needed 8-20 % more sweeps (chaplygin_ball, h = 0.02-0.5).
+    // miss of the continuation alone: measured against the corrected prediction it alternated, and the
+    // corrector needed 8-20 % more sweeps (chaplygin_ball, h = 0.02-0.5).
     if (havePrevious_) {
       const double ratio = h_ / lastStep_;
       if (ratio != lastRatio_) setExtrapolation(ratio);
