@@ -35,14 +35,18 @@ void Integrator::restore(Snapshot& s) {
     throw InputError("checkpoint: the saved state has another dimension");
 }
 
-void Integrator::checkFinite() const {
+void Integrator::requireFinite(const Eigen::VectorXd& x, double t, const char* what) {
   // a NaN or an infinity anywhere makes the sum non-finite (so does a sum past 1e308: a blow-up too); one
   // vectorised reduction instead of a test per component
-  if (!std::isfinite(x_.sum())) {
+  if (!std::isfinite(x.sum())) {
     std::ostringstream os;
-    os << "the solution stopped being finite at t = " << t_ << " (blow-up; try a smaller step)";
+    os << what << " stopped being finite at t = " << t << " (blow-up; try a smaller step)";
     throw ComputationError(os.str());
   }
+}
+
+void Integrator::checkFinite() const {
+  requireFinite(x_, t_, "the solution");
 }
 
 void Integrator::hermite(double t, const Eigen::VectorXd& fPrev, const Eigen::VectorXd& f,

@@ -40,6 +40,9 @@ public:
   int direction() const { return direction_; }
   /// Number of right-hand-side evaluations since start().
   long evaluations() const { return evaluations_; }
+  /// Throws ComputationError "<what> stopped being finite at t = ..." if x holds a NaN or an infinity (or
+  /// sums past the largest double: a blow-up too). What every integration, fused paths included, checks.
+  static void requireFinite(const Eigen::VectorXd& x, double t, const char* what);
 
 protected:
   void evaluate(const Eigen::VectorXd& x, Eigen::VectorXd& dx) {

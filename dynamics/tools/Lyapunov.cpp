@@ -294,10 +294,8 @@ bool LyapunovRun::advanceFused(long steps, const ToolControl& control) {
     if (control.stopRequested()) return false;
     const long chunk = std::min(kChunk, steps - done);
     tangent_->rk4Steps(state_, fusedStep_, chunk);
-    if (!std::isfinite(state_.sum())) // as Integrator::checkFinite: a NaN, an infinity or a blow-up
-      throw ComputationError("lyapunov: the variational equations stopped being finite by t = " +
-                             std::to_string(t_ + static_cast<double>(done + chunk) * fusedStep_) +
-                             " (blow-up; try a smaller step)");
+    Integrator::requireFinite(state_, t_ + static_cast<double>(done + chunk) * fusedStep_,
+                              "lyapunov: the variational equations");
   }
   return true;
 }
