@@ -11,6 +11,7 @@ void Tape::begin(int inputs) {
   nodes_.assign(static_cast<std::size_t>(inputs), Node{Op::Input});
   values_.assign(static_cast<std::size_t>(inputs), 0.0);
   outputs_.assign(static_cast<std::size_t>(inputs), Var());
+  branches_ = compiled_ = false;
 }
 
 void Tape::setOutput(int i, const Var& v) {
@@ -18,38 +19,217 @@ void Tape::setOutput(int i, const Var& v) {
   outputs_[static_cast<std::size_t>(i)] = v;
 }
 
+void Tape::compile() {
+  const int count = nodeCount();
+  // the operations some output needs: a reverse sweep (operands precede their node; a sine's cosine
+  // partner may follow it, and is marked after the sweep passed it, but its operands are the sine's own)
+  std::vector<char> used(static_cast<std::size_t>(count), 0);
+  for (const Var& o : outputs_)
+    if (o.id >= 0) used[static_cast<std::size_t>(o.id)] = 1;
+  for (int n = count - 1; n >= inputs_; --n) {
+    if (!used[static_cast<std::size_t>(n)]) continue;
+    const Node& node = nodes_[static_cast<std::size_t>(n)];
+    if (node.a >= 0) used[static_cast<std::size_t>(node.a)] = 1;
+    if (node.b >= 0) used[static_cast<std::size_t>(node.b)] = 1;
+  }
+
+  // each recorded operation as a compiled one
+  std::vector<Kind> kind(static_cast<std::size_t>(count), Kind::Lin);
+  std::vector<Instr> instr(static_cast<std::size_t>(count));
+  for (int n = inputs_; n < count; ++n) {
+    const Node& node = nodes_[static_cast<std::size_t>(n)];
+    Instr& in = instr[static_cast<std::size_t>(n)];
+    Kind& k = kind[static_cast<std::size_t>(n)];
+    in = {n, node.a, node.b >= 0 ? node.b : node.a, 1, 0, 0};
+    switch (node.op) {
+    case Op::Input:
+      break;
+    case Op::Add:
+      in.beta = 1;
+      break;
+    case Op::Sub:
+      in.beta = -1;
+      break;
+    case Op::Neg:
+      in.alpha = -1;
+      break;
+    case Op::AddC:
+      in.gamma = node.c;
+      break;
+    case Op::CSub:
+      in.alpha = -1, in.gamma = node.c;
+      break;
+    case Op::MulC:
+      in.alpha = node.c;
+      break;
+    case Op::Mul:
+      k = Kind::Mul;
+      break;
+    case Op::Square:
+      k = Kind::Square;
+      break;
+    case Op::Div:
+      k = Kind::Div;
+      break;
+    case Op::CDiv:
+      k = Kind::CDiv, in.gamma = node.c;
+      break;
+    case Op::DivC:
+      k = Kind::DivC, in.gamma = node.c;
+      break;
+    case Op::Sqrt:
+      k = Kind::Sqrt;
+      break;
+    case Op::Exp:
+      k = Kind::Exp;
+      break;
+    case Op::Log:
+      k = Kind::Log;
+      break;
+    case Op::PowC:
+      k = Kind::PowC, in.gamma = node.c;
+      break;
+    case Op::Sin:
+      k = Kind::Sin;
+      break;
+    case Op::Cos:
+      k = Kind::Cos;
+      break;
+    }
+  }
+
+  // list scheduling into runs of one kind: a node is ready once the operands whose coefficient of the
+  // same order it reads are done (a sine reads only lower orders of its partner)
+  const auto sameOrderOperands = [&](int n) {
+    const Node& node = nodes_[static_cast<std::size_t>(n)];
+    const bool partner = node.op == Op::Sin || node.op == Op::Cos;
+    return std::array<int, 2>{node.a, partner || node.b == node.a ? -1 : node.b};
+  };
+  std::vector<int> pending(static_cast<std::size_t>(count), 0);
+  std::vector<std::vector<int>> dependents(static_cast<std::size_t>(count));
+  constexpr std::size_t kKinds = static_cast<std::size_t>(Kind::Cos) + 1;
+  std::array<std::vector<int>, kKinds> ready;
+  int toSchedule = 0;
+  for (int n = inputs_; n < count; ++n) {
+    if (!used[static_cast<std::size_t>(n)]) continue;
+    ++toSchedule;
+    for (const int d : sameOrderOperands(n))
+      if (d >= inputs_) {
+        ++pending[static_cast<std::size_t>(n)];
+        dependents[static_cast<std::size_t>(d)].push_back(n);
+      }
+    if (pending[static_cast<std::size_t>(n)] == 0)
+      ready[static_cast<std::size_t>(kind[static_cast<std::size_t>(n)])].push_back(n);
+  }
+  code_.clear();
+  runs_.clear();
+  std::size_t current = 0;
+  for (int done = 0; done < toSchedule; ++done) {
+    if (ready[current].empty())
+      current = static_cast<std::size_t>(
+          std::max_element(ready.begin(), ready.end(),
+                           [](const auto& x, const auto& y) { return x.size() < y.size(); }) -
+          ready.begin());
+    const int n = ready[current].back();
+    ready[current].pop_back();
+    if (runs_.empty() || runs_.back().kind != static_cast<Kind>(current))
+      runs_.push_back({static_cast<Kind>(current), static_cast<int>(code_.size()), 0});
+    code_.push_back(instr[static_cast<std::size_t>(n)]);
+    runs_.back().end = static_cast<int>(code_.size());
+    for (const int d : dependents[static_cast<std::size_t>(n)])
+      if (--pending[static_cast<std::size_t>(d)] == 0)
+        ready[static_cast<std::size_t>(kind[static_cast<std::size_t>(d)])].push_back(d);
+  }
+  compiled_ = true;
+}
+
 void Tape::prepare(int order) {
+  if (!compiled_) compile();
+  order_ = order;
   stride_ = static_cast<std::size_t>(order) + 1;
-  coef_.resize(nodes_.size() * stride_);
+  width_ = 2 * stride_;
+  coef_.resize(nodes_.size() * width_);
   for (std::size_t n = 0; n < nodes_.size(); ++n)
-    coef_[n * stride_] = values_[n];
+    coef_[n * width_] = coef_[n * width_ + stride_ + static_cast<std::size_t>(order)] = values_[n];
+}
+
+void Tape::setInputs(const double* x) {
+  const std::size_t top = static_cast<std::size_t>(order_);
+  for (int i = 0; i < inputs_; ++i)
+    coefficients(i)[0] = reversed(i)[top] = x[i];
+  for (const Run& run : runs_)
+    for (int i = run.begin; i < run.end; ++i) {
+      const Instr& in = code_[static_cast<std::size_t>(i)];
+      const double a = coefficients(in.a)[0], b = coefficients(in.b)[0];
+      double v = 0;
+      switch (run.kind) {
+      case Kind::Lin:
+        v = in.alpha * a + in.beta * b + in.gamma;
+        break;
+      case Kind::Mul:
+        v = a * b;
+        break;
+      case Kind::Square:
+        v = a * a;
+        break;
+      case Kind::Div:
+        v = a / b;
+        break;
+      case Kind::CDiv:
+        v = in.gamma / a;
+        break;
+      case Kind::DivC:
+        v = a / in.gamma;
+        break;
+      case Kind::Sqrt:
+        v = std::sqrt(a);
+        break;
+      case Kind::Exp:
+        v = std::exp(a);
+        break;
+      case Kind::Log:
+        v = std::log(a);
+        break;
+      case Kind::PowC:
+        v = std::pow(a, in.gamma);
+        break;
+      case Kind::Sin:
+        v = std::sin(a);
+        break;
+      case Kind::Cos:
+        v = std::cos(a);
+        break;
+      }
+      coefficients(in.out)[0] = reversed(in.out)[top] = v;
+    }
 }
 
 namespace {
-// sum_{j=lo}^{hi} a[j] b[k-j], in four independent partial sums: one running sum would wait on the adder's
-// latency at every term, and these sums are most of the expansion's time
-inline double convolve(const double* a, const double* b, int k, int lo, int hi) {
+// sum_{j<n} x[j] y[j] over contiguous arrays, in four independent partial sums: one running sum would wait
+// on the adder's latency at every term, and these sums are most of the expansion's time (pairs of lanes
+// are what the vectoriser packs)
+inline double dot(const double* x, const double* y, int n) {
   double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
-  int j = lo;
-  for (; j + 3 <= hi; j += 4) {
-    s0 += a[j] * b[k - j];
-    s1 += a[j + 1] * b[k - j - 1];
-    s2 += a[j + 2] * b[k - j - 2];
-    s3 += a[j + 3] * b[k - j - 3];
+  int j = 0;
+  for (; j + 4 <= n; j += 4) {
+    s0 += x[j] * y[j];
+    s1 += x[j + 1] * y[j + 1];
+    s2 += x[j + 2] * y[j + 2];
+    s3 += x[j + 3] * y[j + 3];
   }
-  for (; j <= hi; ++j)
-    s0 += a[j] * b[k - j];
+  for (; j < n; ++j)
+    s0 += x[j] * y[j];
   return (s0 + s1) + (s2 + s3);
 }
-// sum_{j=1}^{k} j a[j] b[k-j]: the derivative-weighted product of exp, sin and cos
-inline double weighted(const double* a, const double* b, int k) {
+// sum_{j=1}^{k} j x[j] y[k-j], with y given in reverse (yr[order - i] = y[i], yr passed at order - k)
+inline double weighted(const double* x, const double* yr, int k) {
   double s0 = 0, s1 = 0;
   int j = 1;
   for (; j + 1 <= k; j += 2) {
-    s0 += j * a[j] * b[k - j];
-    s1 += (j + 1) * a[j + 1] * b[k - j - 1];
+    s0 += j * x[j] * yr[j];
+    s1 += (j + 1) * x[j + 1] * yr[j + 1];
   }
-  if (j <= k) s0 += j * a[j] * b[k - j];
+  if (j <= k) s0 += j * x[j] * yr[j];
   return s0 + s1;
 }
 } // namespace
@@ -67,84 +247,90 @@ void Tape::evaluate(int k) {
 
 template <int K> void Tape::evaluateOrder(int runtimeOrder) {
   const int k = K > 0 ? K : runtimeOrder;
-  const int count = static_cast<int>(nodes_.size());
   const double dk = k;
-  for (int n = inputs_; n < count; ++n) {
-    const Node& node = nodes_[static_cast<std::size_t>(n)];
-    double* c = coefficients(n);
-    const double* a = node.a >= 0 ? coefficients(node.a) : nullptr;
-    switch (node.op) {
-    case Op::Input:
-      break;
-    case Op::Add:
-      c[k] = a[k] + coefficients(node.b)[k];
-      break;
-    case Op::Sub:
-      c[k] = a[k] - coefficients(node.b)[k];
-      break;
-    case Op::Neg:
-    case Op::CSub:
-      c[k] = -a[k];
-      break;
-    case Op::AddC:
-      c[k] = a[k];
-      break;
-    case Op::MulC:
-      c[k] = node.c * a[k];
-      break;
-    case Op::DivC:
-      c[k] = a[k] / node.c;
-      break;
-    case Op::Mul:
-      c[k] = convolve(a, coefficients(node.b), k, 0, k);
-      break;
-    case Op::Square: {
-      // the symmetric half of the product, doubled, plus the middle term
-      double s = 2 * convolve(a, a, k, 0, (k - 1) / 2);
-      if (k % 2 == 0) s += a[k / 2] * a[k / 2];
-      c[k] = s;
-      break;
-    }
-    case Op::Div: { // c b = a
-      const double* b = coefficients(node.b);
-      c[k] = (a[k] - convolve(b, c, k, 1, k)) / b[0];
-      break;
-    }
-    case Op::CDiv: // c = const / a: c a = const
-      c[k] = -convolve(a, c, k, 1, k) / a[0];
-      break;
-    case Op::Sqrt: { // c^2 = a; a square root at zero has no series: its derivatives are taken as zero
-      if (c[0] == 0) {
-        c[k] = 0;
-        break;
+  // reversed(n) + back holds coefficients k, k-1, ..., 0 of node n in that order
+  const std::size_t back = static_cast<std::size_t>(order_ - k);
+  for (int i = 0; i < inputs_; ++i)
+    reversed(i)[back] = coefficients(i)[k];
+  for (const Run& run : runs_) {
+    const Instr* first = code_.data() + run.begin;
+    const Instr* last = code_.data() + run.end;
+    const auto each = [&](auto&& coefficient) {
+      for (const Instr* in = first; in != last; ++in) {
+        const double v = coefficient(*in, coefficients(in->a), coefficients(in->out));
+        coefficients(in->out)[k] = reversed(in->out)[back] = v;
       }
-      double s = 2 * convolve(c, c, k, 1, (k - 1) / 2);
-      if (k % 2 == 0 && k > 0) s += c[k / 2] * c[k / 2];
-      c[k] = (a[k] - s) / (2 * c[0]);
+    };
+    switch (run.kind) {
+    case Kind::Lin:
+      each([&](const Instr& in, const double* a, const double*) {
+        return in.alpha * a[k] + in.beta * coefficients(in.b)[k];
+      });
       break;
-    }
-    case Op::Exp: // c' = a' c
-      c[k] = weighted(a, c, k) / dk;
+    case Kind::Mul:
+      each([&](const Instr& in, const double* a, const double*) {
+        return dot(a, reversed(in.b) + back, k + 1);
+      });
       break;
-    case Op::Log: { // a c' = a'
-      double s = 0;
-      for (int j = 1; j < k; ++j)
-        s += j * c[j] * a[k - j];
-      c[k] = (a[k] - s / dk) / a[0];
+    case Kind::Square:
+      // the symmetric half of the product, doubled, plus the middle term
+      each([&](const Instr& in, const double* a, const double*) {
+        const double s = 2 * dot(a, reversed(in.a) + back, (k + 1) / 2);
+        return k % 2 == 0 ? s + a[k / 2] * a[k / 2] : s;
+      });
       break;
-    }
-    case Op::PowC: { // a c' = p a' c
-      double s = 0;
-      for (int j = 0; j < k; ++j)
-        s += (node.c * (k - j) - j) * a[k - j] * c[j];
-      c[k] = s / (dk * a[0]);
+    case Kind::Div: // c b = a
+      each([&](const Instr& in, const double* a, const double*) {
+        const double* b = coefficients(in.b);
+        return (a[k] - dot(b + 1, reversed(in.out) + back + 1, k)) / b[0];
+      });
       break;
-    }
-    case Op::Sin: // sin' = a' cos
-      c[k] = weighted(a, coefficients(node.b), k) / dk;
+    case Kind::CDiv: // c = const / a: c a = const
+      each([&](const Instr& in, const double* a, const double*) {
+        return -dot(a + 1, reversed(in.out) + back + 1, k) / a[0];
+      });
       break;
-    case Op::Cos: // cos' = -a' sin
-      c[k] = -weighted(a, coefficients(node.b), k) / dk;
+    case Kind::DivC:
+      each([&](const Instr& in, const double* a, const double*) { return a[k] / in.gamma; });
+      break;
+    case Kind::Sqrt: // c^2 = a; a square root at zero has no series: its derivatives are taken as zero
+      each([&](const Instr& in, const double* a, const double* c) {
+        if (c[0] == 0) return 0.0;
+        double s = 2 * dot(c + 1, reversed(in.out) + back + 1, (k - 1) / 2);
+        if (k % 2 == 0) s += c[k / 2] * c[k / 2];
+        return (a[k] - s) / (2 * c[0]);
+      });
+      break;
+    case Kind::Exp: // c' = a' c
+      each([&](const Instr& in, const double* a, const double*) {
+        return weighted(a, reversed(in.out) + back, k) / dk;
+      });
+      break;
+    case Kind::Log: // a c' = a'
+      each([&](const Instr&, const double* a, const double* c) {
+        double s = 0;
+        for (int j = 1; j < k; ++j)
+          s += j * c[j] * a[k - j];
+        return (a[k] - s / dk) / a[0];
+      });
+      break;
+    case Kind::PowC: // a c' = p a' c
+      each([&](const Instr& in, const double* a, const double* c) {
+        double s = 0;
+        for (int j = 0; j < k; ++j)
+          s += (in.gamma * (k - j) - j) * a[k - j] * c[j];
+        return s / (dk * a[0]);
+      });
+      break;
+    case Kind::Sin: // sin' = a' cos
+      each([&](const Instr& in, const double* a, const double*) {
+        return weighted(a, reversed(in.b) + back, k) / dk;
+      });
+      break;
+    case Kind::Cos: // cos' = -a' sin
+      each([&](const Instr& in, const double* a, const double*) {
+        return -weighted(a, reversed(in.b) + back, k) / dk;
+      });
       break;
     }
   }

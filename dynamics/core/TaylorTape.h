@@ -9,7 +9,14 @@
 // A. Griewank, A. Walther, Evaluating Derivatives (2008), §13.2 (the recurrences).
 //
 // The recording follows the branches the field takes at the recorded state (a field that branches on a
-// value, through valueOf, is expanded on the branch of that state), so a tape is recorded per expansion.
+// value, through valueOf, is expanded on the branch of that state): such a tape is recorded per expansion;
+// a tape without branches is recorded once and only its values are recomputed for a new state.
+//
+// Evaluation is compiled once per recording (heyoka compiles its decomposition once per system; here the
+// compiled form is a flat program, not machine code): operations whose result no output uses are
+// dropped, the linear ones (+, -, negation, constant offsets and factors) become one kind, the rest are
+// scheduled into runs of one kind each (one dispatch a run, not a node), and every node keeps its
+// coefficients in both orders so that each series product is a dot product of two contiguous arrays.
 #pragma once
 
 #include <Eigen/Core>
@@ -71,6 +78,11 @@ class Tape {
 public:
   /// Forgets the last recording (keeping its memory) and makes `inputs` input nodes 0..inputs-1.
   void begin(int inputs);
+  /// Notes that the field branched on a recorded value (valueOf): the tape then holds only for the
+  /// recorded state and must be recorded again for another.
+  void markBranch() { branches_ = true; }
+  /// Whether the recording branched on a value (see markBranch).
+  bool branches() const { return branches_; }
   /// Input node i, with the value x.
   Var input(int i, double x) {
     values_[static_cast<std::size_t>(i)] = x;
@@ -85,14 +97,18 @@ public:
   /// Output i of the field (a node or a constant).
   void setOutput(int i, const Var& v);
 
-  /// Makes room for coefficients 0..order of every node; coefficient 0 is the recorded value.
+  /// Makes room for coefficients 0..order of every node; coefficient 0 is the recorded value. Compiles
+  /// the recording on its first call after it.
   void prepare(int order);
+  /// New values of the inputs (after prepare): every node's value (coefficient 0) is recomputed along
+  /// the recorded operations. Only for a tape that does not branch.
+  void setInputs(const double* x);
   /// Coefficients 0..order of a node (contiguous).
-  double* coefficients(int node) { return coef_.data() + static_cast<std::size_t>(node) * stride_; }
+  double* coefficients(int node) { return coef_.data() + static_cast<std::size_t>(node) * width_; }
   const double* coefficients(int node) const {
-    return coef_.data() + static_cast<std::size_t>(node) * stride_;
+    return coef_.data() + static_cast<std::size_t>(node) * width_;
   }
-  /// Coefficient k of every non-input node, from coefficients 0..k of the inputs and 0..k-1 of the rest.
+  /// Coefficient k of every used node, from coefficients 0..k of the inputs and 0..k-1 of the rest.
   void evaluate(int k);
   /// Coefficient k of output i.
   double output(int i, int k) const {
@@ -102,17 +118,38 @@ public:
   }
   int inputCount() const { return inputs_; }
   int nodeCount() const { return static_cast<int>(nodes_.size()); }
+  /// Operations evaluated per order once compiled (the recorded ones some output uses).
+  int usedCount() const { return static_cast<int>(code_.size()); }
+  /// Runs of one kind the compiled operations fall into (one dispatch each per order).
+  int runCount() const { return static_cast<int>(runs_.size()); }
   const std::vector<Node>& nodes() const { return nodes_; }
 
 private:
+  /// The compiled kinds: Lin is c = alpha a + beta b (+ gamma at order 0) for every linear operation.
+  enum class Kind : std::uint8_t { Lin, Mul, Square, Div, CDiv, DivC, Sqrt, Exp, Log, PowC, Sin, Cos };
+  struct Instr {
+    int out, a, b;
+    double alpha, beta, gamma;
+  };
+  struct Run {
+    Kind kind;
+    int begin, end; // into code_
+  };
+  /// Drops unused operations, folds the linear kinds and schedules runs of one kind (see the header).
+  void compile();
+  /// Coefficients of a node in reverse: reversed(n)[order - k] is coefficient k.
+  double* reversed(int node) { return coefficients(node) + stride_; }
   /// evaluate() with the order fixed at compile time (K > 0) or given at run time (K = 0).
   template <int K> void evaluateOrder(int runtimeOrder);
 
   std::vector<Node> nodes_;
   std::vector<double> values_, coef_;
   std::vector<Var> outputs_;
-  std::size_t stride_ = 1;
-  int inputs_ = 0;
+  std::vector<Instr> code_;
+  std::vector<Run> runs_;
+  std::size_t stride_ = 1, width_ = 2;
+  int inputs_ = 0, order_ = 0;
+  bool branches_ = false, compiled_ = false;
 };
 
 /// Makes a tape the active one on this thread for its lifetime (restores the previous one after).
@@ -138,6 +175,7 @@ inline Var addConstant(const Var& x, double c) {
   return c == 0 ? x : record(Op::AddC, x.id, -1, c, x.v + c);
 }
 inline Var scale(const Var& x, double c) {
+  if (c == 0) return Var(0.0); // a zero factor (a diagonal tensor's off-diagonal): no node at all
   if (c == 1) return x;
   if (c == -1) return record(Op::Neg, x.id, -1, 0, -x.v);
   return record(Op::MulC, x.id, -1, c, c * x.v);
@@ -217,8 +255,9 @@ inline Var cos(const Var& x) {
 } // namespace rv::taylor
 
 namespace rv {
-/// The plain value of a recorded scalar (for branch decisions).
+/// The plain value of a recorded scalar (for branch decisions: the tape is marked as branching).
 inline double valueOf(const taylor::Var& v) {
+  if (!v.constant() && taylor::activeTape != nullptr) taylor::activeTape->markBranch();
   return v.v;
 }
 } // namespace rv

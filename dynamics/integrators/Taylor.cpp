@@ -77,12 +77,17 @@ void Taylor::start(const Model& model, double t0, const Eigen::VectorXd& x0, int
   compensation_.setZero(n);
   lastStep_ = 0;
   model.recordField(tape_, x_.data()); // throws InputError for a model it cannot expand: before any step
+  tape_.prepare(order_);
 }
 
 void Taylor::expand() {
   const int n = static_cast<int>(x_.size());
-  model_->recordField(tape_, x_.data());
-  tape_.prepare(order_);
+  if (tape_.branches()) { // the field took a branch on a value: record it again at this state
+    model_->recordField(tape_, x_.data());
+    tape_.prepare(order_);
+  } else {
+    tape_.setInputs(x_.data());
+  }
   X_.col(0) = x_;
   // x^[k] = f^[k-1] / k: each order of the inputs comes from the order below of the field
   for (int k = 1; k <= order_; ++k) {

@@ -37,8 +37,8 @@ public:
   double lastStep() const { return lastStep_; }
   /// Taylor coefficients of the last step: column k holds x^(k)(t0) / k!.
   const Eigen::MatrixXd& coefficients() const { return X_; }
-  /// Operations on the model's tape (what one order of the expansion costs).
-  int tapeLength() const { return tape_.nodeCount(); }
+  /// Operations evaluated per order on the model's compiled tape (what one order of the expansion costs).
+  int tapeLength() const { return tape_.usedCount(); }
 
 private:
   /// Fills X_ with the coefficients at x_.

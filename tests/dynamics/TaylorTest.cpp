@@ -67,6 +67,45 @@ TEST(TaylorTape, EveryRecurrenceMatchesCauchysIntegral) {
   EXPECT_EQ(w.v, 14.0);
 }
 
+// A tape without branches is recorded once: new input values recompute every node's value, and the series
+// at the new state are Cauchy's again; operations no output uses are not evaluated; a branch on a value
+// (valueOf) marks the tape as holding for its recorded state only.
+TEST(TaylorTape, ARecordingServesOtherStatesUnlessItBranched) {
+  const int order = 12;
+  taylor::Tape tape;
+  taylor::Var out, unused;
+  {
+    taylor::Recording recording(tape, 1);
+    const taylor::Var x = tape.input(0, 0.4);
+    unused = sin(x * x) / (x + 3.0); // recorded, but no output uses it
+    out = everyOperation(x);
+  }
+  tape.setOutput(0, out);
+  EXPECT_FALSE(tape.branches());
+  tape.prepare(order);
+  EXPECT_EQ(tape.usedCount(), tape.nodeCount() - 1 - 5); // the input and the five unused operations
+  for (const double x0 : {0.7, -0.2}) {
+    tape.setInputs(&x0);
+    EXPECT_NEAR(tape.output(0, 0), everyOperation(x0), 1e-14);
+    for (int k = 1; k <= order; ++k) {
+      tape.coefficients(0)[k] = k == 1 ? 1.0 : 0.0;
+      tape.evaluate(k);
+      const double expected = cauchyCoefficient(x0, k);
+      EXPECT_NEAR(tape.output(0, k), expected, 1e-10 * std::max(1.0, std::abs(expected)))
+          << "x0 " << x0 << ", order " << k;
+    }
+  }
+  taylor::Tape branching;
+  {
+    taylor::Recording recording(branching, 1);
+    const taylor::Var x = branching.input(0, 0.4);
+    EXPECT_EQ(valueOf(taylor::Var(2.0)), 2.0);
+    EXPECT_FALSE(branching.branches()); // a constant's value decides nothing about the state
+    branching.setOutput(0, valueOf(x) > 0 ? x : -x);
+  }
+  EXPECT_TRUE(branching.branches());
+}
+
 class TaylorOrder : public ::testing::TestWithParam<int> {};
 
 // With a fixed step the global error falls by 2^p when the step is halved (IntegratorOrderTest's measure).
