@@ -230,7 +230,7 @@ BENCHMARK(Rk4Chaplygin_odeint)->Name("Rk4Chaplygin/odeint")->Unit(benchmark::kMi
 BENCHMARK(AccurateChaplygin_rollviz)
     ->Name("AccurateChaplygin/rollviz")
     ->Unit(benchmark::kMillisecond)
-    ->ArgsProduct({{1, 2}, {6, 12}});
+    ->ArgsProduct({{1, 2}, {6, 8, 12}});
 BENCHMARK(Chaplygin_taylor)->Name("AccurateChaplygin/rollviz_taylor")->Unit(benchmark::kMillisecond)->Arg(12);
 BENCHMARK(AccurateChaplygin_odeint)->Name("AccurateChaplygin/odeint")->Unit(benchmark::kMillisecond);
 // the same motion near 1e-15: RKF78 at its smallest useful tolerances beside Everhart fixed and adaptive
