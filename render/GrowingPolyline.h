@@ -6,10 +6,10 @@
 //
 // On top of that, a screen-space level of detail: before each frame the size of a pixel at the line's nearest
 // point is measured, and of the settled part of the line (all but the newest kLodHead segments, which stay
-// exact) only the segments that reach a cell (a cube of at most a pixel; smaller for lines under 3 pixels
+// exact) only the segments that reach a cell (a cube of at most 1.5 pixels; smaller for lines under 3 pixels
 // wide) no earlier segment reached are drawn; translucent lines are drawn whole. A dense scribble (the
-// rattleback's traces after 10^6 steps: 1.2·10^5 segments in a blob of a few hundred pixels) then draws about
-// as many segments as it covers pixels (1.6·10^4); a segment left out lies within a cell's diagonal of drawn
+// rattleback's traces after 10^6 steps: 1.2·10^5 segments in a blob of a few hundred pixels) then draws fewer
+// segments than it covers pixels (1.0·10^4); a segment left out lies within a cell's diagonal of drawn
 // ones of the same colour and width, so the picture is the same within the image tolerance
 // (tests/render/ViewTest.cpp). Zooming in shrinks the cells and brings segments back; every vertex is kept.
 #pragma once
@@ -75,7 +75,7 @@ private:
 
   // level of detail
   bool lod_ = true;
-  double cell_ = 0;                         ///< about a pixel at the line (0: every segment drawn)
+  double cell_ = 0;                         ///< about 1.5 pixels at the line (0: every segment drawn)
   std::unordered_set<std::uint64_t> cells_; ///< cells reached by the drawn settled segments
   std::vector<long> kept_;                  ///< settled segments drawn: segment i joins vertices i, i + 1
   long settled_ = 0;                        ///< segments before this one are settled and filtered
