@@ -33,69 +33,24 @@ void Tape::compile() {
     if (node.b >= 0) used[static_cast<std::size_t>(node.b)] = 1;
   }
 
-  // each recorded operation as a compiled one
+  // each recorded operation as a compiled one: the linear kinds become c = alpha a + beta b (+ gamma at
+  // order 0); a node's constant is the offset of AddC and CSub and the operand of CDiv, DivC and PowC (it is
+  // 0 on the operations without one), MulC's is its factor
+  static constexpr std::array kindOf{Kind::Lin,  Kind::Lin, Kind::Lin, Kind::Lin,  Kind::Mul,  Kind::Square,
+                                     Kind::Div,  Kind::Lin, Kind::Lin, Kind::Lin,  Kind::DivC, Kind::CDiv,
+                                     Kind::Sqrt, Kind::Exp, Kind::Log, Kind::PowC, Kind::Sin,  Kind::Cos};
+  static_assert(kindOf.size() == static_cast<std::size_t>(Op::Cos) + 1);
   std::vector<Kind> kind(static_cast<std::size_t>(count), Kind::Lin);
   std::vector<Instr> instr(static_cast<std::size_t>(count));
   for (int n = inputs_; n < count; ++n) {
     const Node& node = nodes_[static_cast<std::size_t>(n)];
     Instr& in = instr[static_cast<std::size_t>(n)];
-    Kind& k = kind[static_cast<std::size_t>(n)];
-    in = {n, node.a, node.b >= 0 ? node.b : node.a, 1, 0, 0};
-    switch (node.op) {
-    case Op::Input:
-      break;
-    case Op::Add:
-      in.beta = 1;
-      break;
-    case Op::Sub:
-      in.beta = -1;
-      break;
-    case Op::Neg:
-      in.alpha = -1;
-      break;
-    case Op::AddC:
-      in.gamma = node.c;
-      break;
-    case Op::CSub:
-      in.alpha = -1, in.gamma = node.c;
-      break;
-    case Op::MulC:
-      in.alpha = node.c;
-      break;
-    case Op::Mul:
-      k = Kind::Mul;
-      break;
-    case Op::Square:
-      k = Kind::Square;
-      break;
-    case Op::Div:
-      k = Kind::Div;
-      break;
-    case Op::CDiv:
-      k = Kind::CDiv, in.gamma = node.c;
-      break;
-    case Op::DivC:
-      k = Kind::DivC, in.gamma = node.c;
-      break;
-    case Op::Sqrt:
-      k = Kind::Sqrt;
-      break;
-    case Op::Exp:
-      k = Kind::Exp;
-      break;
-    case Op::Log:
-      k = Kind::Log;
-      break;
-    case Op::PowC:
-      k = Kind::PowC, in.gamma = node.c;
-      break;
-    case Op::Sin:
-      k = Kind::Sin;
-      break;
-    case Op::Cos:
-      k = Kind::Cos;
-      break;
-    }
+    kind[static_cast<std::size_t>(n)] = kindOf[static_cast<std::size_t>(node.op)];
+    in = {n, node.a, node.b >= 0 ? node.b : node.a, 1, 0, node.op == Op::MulC ? 0 : node.c};
+    if (node.op == Op::Add) in.beta = 1;
+    if (node.op == Op::Sub) in.beta = -1;
+    if (node.op == Op::Neg || node.op == Op::CSub) in.alpha = -1;
+    if (node.op == Op::MulC) in.alpha = node.c;
   }
 
   // list scheduling into runs of one kind: a node is ready once the operands whose coefficient of the

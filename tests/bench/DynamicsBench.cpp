@@ -96,8 +96,8 @@ struct AccurateCase {
   double E0 = model->integrals(x0.data())[0];
 };
 
-// Everhart 15 at a fixed step to t = 1000: state.range(0) steps per 10 time units, state.range(1) corrector sweeps
-// at most
+// Everhart 15 at a fixed step to t = 1000: state.range(0) steps per 10 time units, state.range(1) corrector
+// sweeps at most
 void AccurateChaplygin_rollviz(benchmark::State& state) {
   const AccurateCase c;
   const Model* m = c.model.get();
