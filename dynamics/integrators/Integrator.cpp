@@ -5,6 +5,7 @@
 #include "dynamics/integrators/Merson.h"
 #include "dynamics/integrators/Rk4.h"
 #include "dynamics/integrators/Taylor.h"
+#include "dynamics/integrators/Verner9.h"
 
 #include <cmath>
 #include <sstream>
@@ -68,6 +69,7 @@ const IntegratorRegistry& IntegratorRegistry::builtin() {
     r.add(Merson::entry());
     r.add(Everhart::entry());
     r.add(Taylor::entry());
+    r.add(Verner9::entry());
     return r;
   }();
   return registry;

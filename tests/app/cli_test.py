@@ -272,7 +272,7 @@ class Cli(unittest.TestCase):
         # the Taylor method through the scene's integrator section: the same map points as Everhart's small steps
         hh = os.path.join(SRC, "scenes", "henon_heiles.json")
         points = {}
-        for method in ("taylor", "everhart"):
+        for method in ("taylor", "everhart", "verner9"):
             out = self.path(method + ".csv")
             extra = ["--set", "integrator.step=0.01"] if method == "everhart" else []
             r = run("poincare", hh, "--points", "10", "--set", "initial.map=[0.1,0.2]", "--set",
@@ -281,10 +281,14 @@ class Cli(unittest.TestCase):
             with open(out) as f:
                 points[method] = [[float(v) for v in row[:3]] for row in list(csv.reader(f))[1:]]
         self.assertEqual(len(points["taylor"]), 10)
-        for a, b in zip(points["taylor"], points["everhart"]):
-            for u, v in zip(a, b):
-                self.assertAlmostEqual(u, v, delta=1e-9)
-        self.assertIn("taylor", run("list", "integrators").stdout)
+        self.assertEqual(len(points["verner9"]), 10)
+        for method in ("taylor", "verner9"):  # crossings located on the series / on Verner's interpolant
+            for a, b in zip(points[method], points["everhart"]):
+                for u, v in zip(a, b):
+                    self.assertAlmostEqual(u, v, delta=1e-9, msg=method)
+        listed = run("list", "integrators").stdout
+        self.assertIn("taylor", listed)
+        self.assertIn("verner9", listed)
         # the tangent vectors of the Lyapunov exponents are not the model's field: a clear refusal
         self.assertBadInput(run("lyapunov", hh, "--time", "10", "--set", "integrator.method=taylor"), "taylor")
         self.assertBadInput(run("poincare", hh, "--set", "integrator.method=taylor", "--set",

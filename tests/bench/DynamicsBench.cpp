@@ -6,6 +6,7 @@
 #include "dynamics/integrators/Merson.h"
 #include "dynamics/integrators/Rk4.h"
 #include "dynamics/integrators/Taylor.h"
+#include "dynamics/integrators/Verner9.h"
 
 #include <benchmark/benchmark.h>
 #include <boost/numeric/odeint.hpp>
@@ -154,6 +155,12 @@ void Chaplygin_taylor(benchmark::State& state) {
   adaptiveToThousand(state, [&] { return std::make_unique<Taylor>(tolerance, 0); });
 }
 
+// Verner's 9(8) pair at a tolerance (state.range(0) = -log10 tolerance), to t = 1000
+void Chaplygin_verner9(benchmark::State& state) {
+  const double tolerance = std::pow(10.0, -static_cast<double>(state.range(0)));
+  adaptiveToThousand(state, [&] { return std::make_unique<Verner9>(tolerance, 0.1); });
+}
+
 // odeint's runge_kutta_fehlberg78, controlled, at tolerance 10^-state.range(0)
 void Chaplygin_odeint(benchmark::State& state) {
   const AccurateCase c;
@@ -212,6 +219,7 @@ void Steps(benchmark::State& state, const std::string& method) {
   if (method == "everhart15") integ = std::make_unique<Everhart>(0.2, 15, 12);
   if (method == "everhart27") integ = std::make_unique<Everhart>(0.5, 27, 12);
   if (method == "taylor") integ = std::make_unique<Taylor>(1e-15, 0);
+  if (method == "verner9") integ = std::make_unique<Verner9>(1e-13, 0.1);
   integ->start(*m, 0, x0);
   for (auto _ : state)
     integ->step();
@@ -234,6 +242,10 @@ BENCHMARK(AccurateChaplygin_rollviz)
     ->Unit(benchmark::kMillisecond)
     ->ArgsProduct({{10, 20}, {6, 8, 12}});
 BENCHMARK(Chaplygin_taylor)->Name("AccurateChaplygin/rollviz_taylor")->Unit(benchmark::kMillisecond)->Arg(12);
+BENCHMARK(Chaplygin_verner9)
+    ->Name("AccurateChaplygin/rollviz_verner9")
+    ->Unit(benchmark::kMillisecond)
+    ->Arg(13);
 BENCHMARK(AccurateChaplygin_odeint)->Name("AccurateChaplygin/odeint")->Unit(benchmark::kMillisecond);
 // the same motion near 1e-15: RKF78 at its smallest useful tolerances beside Everhart fixed and adaptive
 BENCHMARK(AccurateChaplygin_rollviz)
@@ -254,9 +266,15 @@ BENCHMARK(Chaplygin_taylor)
     ->Unit(benchmark::kMillisecond)
     ->Arg(15)
     ->Arg(16);
+BENCHMARK(Chaplygin_verner9)
+    ->Name("PreciseChaplygin/rollviz_verner9")
+    ->Unit(benchmark::kMillisecond)
+    ->Arg(15)
+    ->Arg(16);
 BENCHMARK(Chaplygin_odeint)->Name("PreciseChaplygin/odeint")->Unit(benchmark::kMillisecond)->Arg(15)->Arg(16);
 BENCHMARK_CAPTURE(Steps, rk4, std::string("rk4"));
 BENCHMARK_CAPTURE(Steps, merson, std::string("merson"));
 BENCHMARK_CAPTURE(Steps, everhart15, std::string("everhart15"));
 BENCHMARK_CAPTURE(Steps, everhart27, std::string("everhart27"));
 BENCHMARK_CAPTURE(Steps, taylor, std::string("taylor"));
+BENCHMARK_CAPTURE(Steps, verner9, std::string("verner9"));

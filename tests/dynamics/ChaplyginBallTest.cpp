@@ -7,6 +7,7 @@
 #include "dynamics/integrators/Everhart.h"
 #include "dynamics/integrators/Rk4.h"
 #include "dynamics/integrators/Taylor.h"
+#include "dynamics/integrators/Verner9.h"
 #include "dynamics/kinematics/AndoyerDeprit.h"
 #include "dynamics/models/BodyState.h"
 #include "tests/dynamics/TestSupport.h"
@@ -167,7 +168,7 @@ TEST(ChaplyginBall, RejectsImpossibleInertiaMassAndRadius) {
 namespace rv {
 namespace {
 
-TEST(ChaplyginBall, EverhartAndTaylorConserveAllFourIntegralsToTwelveDigitsOverAThousand) {
+TEST(ChaplyginBall, EverhartTaylorAndVernerConserveAllFourIntegralsToTwelveDigitsOverAThousand) {
   // two parameter sets: the default scene's, and a heavier ball with a larger, oblique gyrostat
   const std::vector<std::pair<std::unique_ptr<Model>, std::vector<double>>> cases = [] {
     std::vector<std::pair<std::unique_ptr<Model>, std::vector<double>>> c;
@@ -194,7 +195,8 @@ TEST(ChaplyginBall, EverhartAndTaylorConserveAllFourIntegralsToTwelveDigitsOverA
     const std::vector<std::pair<std::string, std::function<std::unique_ptr<Integrator>()>>> methods = {
         {"everhart", [] { return std::make_unique<Everhart>(0.1, 15, 12); }},
         {"everhart adaptive", [] { return std::make_unique<Everhart>(0.1, 15, 12, 1e-9); }},
-        {"taylor", [] { return std::make_unique<Taylor>(1e-15, 0); }}};
+        {"taylor", [] { return std::make_unique<Taylor>(1e-15, 0); }},
+        {"verner9", [] { return std::make_unique<Verner9>(1e-14, 0.1); }}};
     for (const auto& [name, make] : methods) {
       const auto e = make();
       e->start(*model, 0, x0);

@@ -5,6 +5,7 @@
 #include "dynamics/integrators/Everhart.h"
 #include "dynamics/integrators/Merson.h"
 #include "dynamics/integrators/Rk4.h"
+#include "dynamics/integrators/Verner9.h"
 #include "tests/dynamics/TestModels.h"
 #include "tests/dynamics/TestSupport.h"
 
@@ -270,6 +271,98 @@ TEST(Merson, ReachingTheMinimumStepIsAnError) {
     EXPECT_NE(std::string(e.what()).find("minimum"), std::string::npos);
   }
   EXPECT_THROW(Merson(0.1, 1e-8, 1.0, 0.5), InputError);
+}
+
+// Verner's 9(8) pair: the order of the formula with the step pinned (a wrong digit in one of the 16 stages'
+// coefficients drops it), and the interpolant's: x0 + h sum b_s(theta) K_s must give the step's end at
+// theta = 1 (its polynomials sum to the weights) and be of order 8 inside the step (local error ~ h^9; its
+// four extra stages test the rest of the tables).
+TEST(IntegratorOrder, Verner9WithAFixedStepIsNinth) {
+  // Verner chose the pair for its small leading error: down to rounding (5e-14 at h = 0.2) the slope is
+  // still above 9 (10.9 at h = 0.5 -> 0.4, 10.4 at 0.4 -> 0.2): at least ninth, and no eighth-order term
+  const auto make = [](double h) { return std::make_unique<Verner9>(1.0, h, true); };
+  const double order = measuredOrder(make, 0.4, 0.2, 8.0);
+  EXPECT_GT(order, 9.0);
+  EXPECT_LT(order, 11.5);
+}
+
+TEST(Verner9, TheInterpolantEndsOnTheStepAndIsOfOrderEight) {
+  Pendulum m;
+  Eigen::VectorXd x0(3), at(3), exact(3);
+  x0 << 1.2, 0.3, 0.0;
+  Everhart reference(0.001, 27, 30);
+  const auto midError = [&](double h, double theta) {
+    Verner9 v(1.0, h, true);
+    v.start(m, 0, x0);
+    v.step();
+    v.interpolate(v.time(), at);
+    EXPECT_LT((at - v.state()).norm(), 1e-15) << "h = " << h;
+    v.interpolate(0, at);
+    EXPECT_EQ(at, x0);
+    reference.start(m, 0, x0);
+    while (reference.time() < theta * h)
+      reference.step();
+    reference.interpolate(theta * h, exact);
+    v.interpolate(theta * h, at);
+    EXPECT_EQ(v.denseEvaluations(), 4);
+    return (at - exact).norm();
+  };
+  for (const double theta : {0.3, 0.5, 0.8}) {
+    const double e1 = midError(0.8, theta), e2 = midError(0.4, theta);
+    std::printf("  theta %.1f: h 0.8 -> %.3e, h 0.4 -> %.3e\n", theta, e1, e2);
+    // local error ~ h^9 (measured 9.7-10.8 at these steps, as the pair's own slope is above 9)
+    EXPECT_GT(std::log(e1 / e2) / std::log(2.0), 8.7) << "theta " << theta;
+    EXPECT_LT(std::log(e1 / e2) / std::log(2.0), 11.5) << "theta " << theta;
+    EXPECT_LT(e1, 1e-8) << "theta " << theta;
+  }
+}
+
+// The adaptive step: the error falls with the tolerance at the rate of the order against the steps taken,
+// a first step far too long is redone, and near the pendulum's separatrix the steps follow its time scale.
+TEST(Verner9, AdaptiveStepMeetsTheToleranceAndFollowsTheTimeScale) {
+  Pendulum m;
+  Eigen::VectorXd x0(3), x(3), exact(3);
+  x0 << 1.2, 0.3, 0.0;
+  Everhart reference(0.01, 27, 30);
+  const Eigen::VectorXd end = solveFixed(reference, m, 0.01, 40.0);
+  const auto run = [&](double tolerance) {
+    Verner9 v(tolerance, 0.1);
+    EXPECT_FALSE(v.fixedStep());
+    v.start(m, 0, x0);
+    long steps = 0;
+    while (v.time() < 40)
+      v.step(), ++steps;
+    v.interpolate(40, x);
+    return std::pair<double, double>((x - end).norm(), static_cast<double>(steps));
+  };
+  const auto [e1, n1] = run(1e-8);
+  const auto [e2, n2] = run(1e-11);
+  std::printf("  tolerance 1e-8: %.0f steps -> %.3e, 1e-11: %.0f steps -> %.3e\n", n1, e1, n2, e2);
+  EXPECT_LT(e1, 100 * 1e-8);
+  EXPECT_LT(e2, 100 * 1e-11);
+  EXPECT_NEAR(std::log(e1 / e2) / std::log(n2 / n1), 9.0, 2.5);
+
+  x0 << 3.1, 0.0, 0.0; // released near the top: slow there, fast through the bottom
+  Verner9 adaptive(1e-12, 50.0);
+  adaptive.start(m, 0, x0);
+  double shortest = 1e300, longest = 0;
+  while (adaptive.time() < 30) {
+    adaptive.step();
+    const double h = adaptive.time() - adaptive.previousTime();
+    shortest = std::min(shortest, h), longest = std::max(longest, h);
+  }
+  EXPECT_GE(adaptive.rejectedSteps(), 1);
+  EXPECT_GT(longest / shortest, 1.8); // a fixed step: 1 (measured 2.0: the error is relative above |q| = 1)
+  Everhart fine(0.005, 27, 40);
+  fine.start(m, 0, x0);
+  while (fine.time() < 30 - 1e-12)
+    fine.step();
+  adaptive.interpolate(30, x), fine.interpolate(30, exact);
+  std::printf("  near the separatrix: steps %.3g..%.3g, error at t = 30 %.3e\n", shortest, longest,
+              (x - exact).norm());
+  EXPECT_LT((x - exact).norm(), 1e-8);
+  EXPECT_THROW(Verner9(0, 0.1), InputError);
+  EXPECT_THROW(Verner9(1e-10, -1), InputError);
 }
 
 } // namespace
