@@ -273,10 +273,10 @@ TEST(Merson, ReachingTheMinimumStepIsAnError) {
   EXPECT_THROW(Merson(0.1, 1e-8, 1.0, 0.5), InputError);
 }
 
-// Verner's 9(8) pair: the order of the formula with the step pinned (a wrong digit in one of the 16 stages'
-// coefficients drops it), and the interpolant's: x0 + h sum b_s(theta) K_s must give the step's end at
-// theta = 1 (its polynomials sum to the weights) and be of order 8 inside the step (local error ~ h^9; its
-// four extra stages test the rest of the tables).
+// Verner's 9(8) pair: the order of the formula with the step pinned (a wrong digit among the first ten of
+// any of the 16 stages' coefficients drops it), and the interpolant's: x0 + h sum b_s(theta) K_s must give
+// the step's end at theta = 1 (its polynomials sum to the weights) and be of order 8 inside the step (local
+// error ~ h^9; its four extra stages test the rest of the tables).
 TEST(IntegratorOrder, Verner9WithAFixedStepIsNinth) {
   // Verner chose the pair for its small leading error: down to rounding (5e-14 at h = 0.2) the slope is
   // still above 9 (10.9 at h = 0.5 -> 0.4, 10.4 at 0.4 -> 0.2): at least ninth, and no eighth-order term
