@@ -337,8 +337,7 @@ template <int N> void Everhart::stepWith() {
     }
     // what the predictor missed, carried into the next prediction (not from the first step's constant guess)
     if (havePrevious_) correction_ = F_ - predicted_;
-    // x1 = x0 + h sum_j b_j F_j, with compensated (Kahan) summation across steps
-    xPrev_ = x_;
+    // x1 = x0 + h sum_j b_j F_j, with compensated (Kahan) summation across steps.
     // The increment as f(x0) plus the weighted differences F_j - F_0: the weights of f(x0) add up to 1 by
     // construction. With sum_j b_j F_j instead, the stored b_j summed to 1 + 1.4e-17 and every step moved the
     // state that much too far along its chord: a bias that made the energy drift linearly (Brouwer's law
@@ -346,13 +345,8 @@ template <int N> void Everhart::stepWith() {
     sum_ = F_.col(0);
     for (int j = 1; j < N; ++j)
       sum_ += b_[j] * (F_.col(j) - F_.col(0));
-    y_ = h * sum_ - compensation_;
-    sum_ = x_ + y_;
-    compensation_ = (sum_ - x_) - y_;
-    x_ = sum_;
-    tPrev_ = t_;
-    t_ = tPrev_ + h;
-    checkFinite();
+    sum_ *= h;
+    advanceCompensated(h, sum_, compensation_);
     evaluate(x_, f1_);
     havePrevious_ = true;
     lastStep_ = h_;

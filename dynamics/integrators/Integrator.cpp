@@ -50,6 +50,19 @@ void Integrator::checkFinite() const {
   requireFinite(x_, t_, "the solution");
 }
 
+void Integrator::advanceCompensated(double h, const Eigen::VectorXd& increment,
+                                    Eigen::VectorXd& compensation) {
+  xPrev_ = x_;
+  tPrev_ = t_;
+  for (Eigen::Index i = 0; i < x_.size(); ++i) {
+    const double y = increment[i] - compensation[i], sum = x_[i] + y;
+    compensation[i] = (sum - x_[i]) - y;
+    x_[i] = sum;
+  }
+  t_ = tPrev_ + h;
+  checkFinite();
+}
+
 void Integrator::hermite(double t, const Eigen::VectorXd& fPrev, const Eigen::VectorXd& f,
                          Eigen::VectorXd& out) const {
   const double h = t_ - tPrev_;

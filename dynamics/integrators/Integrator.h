@@ -51,6 +51,10 @@ protected:
   }
   /// Throws ComputationError if x_ holds a NaN or an infinity.
   void checkFinite() const;
+  /// Ends a step of signed length h: x_ += increment with compensated (Kahan) summation, `compensation`
+  /// carrying what each addition lost into the next step (the rounding of long runs then grows like
+  /// sqrt(steps)); the step's start kept in xPrev_/tPrev_, then checkFinite().
+  void advanceCompensated(double h, const Eigen::VectorXd& increment, Eigen::VectorXd& compensation);
   /// Cubic Hermite interpolation on the last step from the states and derivatives at both ends.
   void hermite(double t, const Eigen::VectorXd& fPrev, const Eigen::VectorXd& f, Eigen::VectorXd& out) const;
 

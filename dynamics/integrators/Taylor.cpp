@@ -125,17 +125,8 @@ void Taylor::step() {
   for (int k = order_ - 1; k >= 1; --k)
     increment_ = increment_ * h + X_.col(k);
   increment_ *= h;
-  xPrev_ = x_;
-  tPrev_ = t_;
-  // compensated (Kahan) summation of the update: the rounding of long runs grows like sqrt(steps)
-  for (Eigen::Index i = 0; i < x_.size(); ++i) {
-    const double y = increment_[i] - compensation_[i], sum = x_[i] + y;
-    compensation_[i] = (sum - x_[i]) - y;
-    x_[i] = sum;
-  }
-  t_ = tPrev_ + h;
   lastStep_ = h;
-  checkFinite();
+  advanceCompensated(h, increment_, compensation_);
 }
 
 void Taylor::interpolate(double t, Eigen::VectorXd& out) const {

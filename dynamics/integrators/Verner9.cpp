@@ -315,15 +315,7 @@ void Verner9::step() {
                                       h_, t_, tolerance_));
       continue;
     }
-    // x1 = x0 + h sum_j b_j K_j, with compensated (Kahan) summation across steps
-    xPrev_ = x_;
-    y_ = sum_ - compensation_;
-    sum_ = x_ + y_;
-    compensation_ = (sum_ - x_) - y_;
-    x_ = sum_;
-    tPrev_ = t_;
-    t_ = tPrev_ + h;
-    checkFinite();
+    advanceCompensated(h, sum_, compensation_); // x1 = x0 + h sum_j b_j K_j
     evaluate(x_, f1_);
     K_.col(kEnd) = f1_; // stage 17 of the interpolant
     denseReady_ = false;

@@ -53,7 +53,7 @@ private:
   mutable bool denseReady_ = false;                     ///< stages 18..21 of the last step are in K_
   mutable Eigen::MatrixXd K_;                           ///< the stages of the last step (dim x kDenseStages)
   mutable Eigen::VectorXd work_;                        ///< the interpolant's stage arguments
-  Eigen::VectorXd y_, error_, sum_, compensation_, f1_; ///< sum_: the increment, then the new state
+  Eigen::VectorXd y_, error_, sum_, compensation_, f1_; ///< sum_: the step's increment
 };
 
 } // namespace rv

@@ -39,6 +39,17 @@ Eigen::VectorXd solveFixed(Integrator& integ, const Model& m, double h, double T
   return integ.state();
 }
 
+// steps until time T: the shortest and the longest step taken
+std::pair<double, double> stepRangeUntil(Integrator& integ, double T) {
+  double shortest = 1e300, longest = 0;
+  while (integ.time() < T) {
+    integ.step();
+    const double h = integ.time() - integ.previousTime();
+    shortest = std::min(shortest, h), longest = std::max(longest, h);
+  }
+  return {shortest, longest};
+}
+
 double measuredOrder(const std::function<std::unique_ptr<Integrator>(double)>& make, double h1, double h2,
                      double T) {
   Pendulum m;
@@ -133,12 +144,7 @@ TEST(Everhart, AdaptiveStepRejectsAFirstStepTooLongAndFollowsTheTimeScale) {
   x0 << 3.1, 0.0, 0.0; // released near the top: q'' = -sin q
   Everhart adaptive(50.0, 15, 40, 1e-9);
   adaptive.start(m, 0, x0);
-  double shortest = 1e300, longest = 0;
-  while (adaptive.time() < 30) {
-    adaptive.step();
-    const double h = adaptive.time() - adaptive.previousTime();
-    shortest = std::min(shortest, h), longest = std::max(longest, h);
-  }
+  const auto [shortest, longest] = stepRangeUntil(adaptive, 30);
   EXPECT_GE(adaptive.rejectedSteps(), 1);
   EXPECT_GT(longest / shortest, 3.0);
   Everhart fine(0.005, 27, 40); // the reference: small fixed steps of the highest order
@@ -345,12 +351,7 @@ TEST(Verner9, AdaptiveStepMeetsTheToleranceAndFollowsTheTimeScale) {
   x0 << 3.1, 0.0, 0.0; // released near the top: slow there, fast through the bottom
   Verner9 adaptive(1e-12, 50.0);
   adaptive.start(m, 0, x0);
-  double shortest = 1e300, longest = 0;
-  while (adaptive.time() < 30) {
-    adaptive.step();
-    const double h = adaptive.time() - adaptive.previousTime();
-    shortest = std::min(shortest, h), longest = std::max(longest, h);
-  }
+  const auto [shortest, longest] = stepRangeUntil(adaptive, 30);
   EXPECT_GE(adaptive.rejectedSteps(), 1);
   EXPECT_GT(longest / shortest, 1.8); // a fixed step: 1 (measured 2.0: the error is relative above |q| = 1)
   Everhart fine(0.005, 27, 40);
