@@ -1,6 +1,7 @@
 #include "dynamics/integrators/Integrator.h"
 
 #include "dynamics/core/Errors.h"
+#include "dynamics/integrators/Adams.h"
 #include "dynamics/integrators/Everhart.h"
 #include "dynamics/integrators/Merson.h"
 #include "dynamics/integrators/Rk4.h"
@@ -83,6 +84,7 @@ const IntegratorRegistry& IntegratorRegistry::builtin() {
     r.add(Everhart::entry());
     r.add(Taylor::entry());
     r.add(Verner9::entry());
+    r.add(Adams::entry());
     return r;
   }();
   return registry;

@@ -268,13 +268,17 @@ class Cli(unittest.TestCase):
         self.assertBadInput(run("spectrum", hh, "--function", "nope"), "nope")
         self.assertBadInput(run("poincare", hh, "--set", "poincare.section=nope"), "poincare.section")
 
-    def test_taylor_integrator(self):
-        # the Taylor method through the scene's integrator section: the same map points as Everhart's small steps
+    def test_high_order_integrators(self):
+        # the Taylor method, Verner's pair and Adams PECE through the scene's integrator section: the same map
+        # points as Everhart's small steps
         hh = os.path.join(SRC, "scenes", "henon_heiles.json")
         points = {}
-        for method in ("taylor", "everhart", "verner9"):
+        # (the scene's integrator.order, 15, is Everhart's: beyond Adams' 14, so its order is set too)
+        adams = ["--set", "integrator.step=0.02", "--set", "integrator.order=12"]
+        steps = {"everhart": ["--set", "integrator.step=0.01"], "adams": adams}
+        for method in ("taylor", "everhart", "verner9", "adams"):
             out = self.path(method + ".csv")
-            extra = ["--set", "integrator.step=0.01"] if method == "everhart" else []
+            extra = steps.get(method, [])
             r = run("poincare", hh, "--points", "10", "--set", "initial.map=[0.1,0.2]", "--set",
                     "integrator.method=" + method, *extra, "-o", out)
             self.assertEqual(r.returncode, 0, r.stderr)
@@ -282,13 +286,22 @@ class Cli(unittest.TestCase):
                 points[method] = [[float(v) for v in row[:3]] for row in list(csv.reader(f))[1:]]
         self.assertEqual(len(points["taylor"]), 10)
         self.assertEqual(len(points["verner9"]), 10)
-        for method in ("taylor", "verner9"):  # crossings located on the series / on Verner's interpolant
+        self.assertEqual(len(points["adams"]), 10)
+        # crossings located on the series / on Verner's interpolant / on the integrated Adams polynomial
+        for method in ("taylor", "verner9", "adams"):
             for a, b in zip(points[method], points["everhart"]):
                 for u, v in zip(a, b):
                     self.assertAlmostEqual(u, v, delta=1e-9, msg=method)
         listed = run("list", "integrators").stdout
         self.assertIn("taylor", listed)
         self.assertIn("verner9", listed)
+        self.assertIn("adams", listed)
+        # Adams integrates the tangent vectors too (its starting values come from Verner's pair)
+        r = run("lyapunov", hh, "--time", "50", "--set", "integrator.method=adams", *adams, "--json")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertEqual(len(json.loads(r.stdout)["exponents"]), 4)
+        self.assertBadInput(run("poincare", hh, "--set", "integrator.method=adams", "--set",
+                                "integrator.order=15"), "integrator.order")
         # the tangent vectors of the Lyapunov exponents are not the model's field: a clear refusal
         self.assertBadInput(run("lyapunov", hh, "--time", "10", "--set", "integrator.method=taylor"), "taylor")
         self.assertBadInput(run("poincare", hh, "--set", "integrator.method=taylor", "--set",

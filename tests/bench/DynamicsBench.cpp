@@ -2,6 +2,7 @@
 // and Boost.Odeint side by side on the same right-hand side (<Case>/rollviz vs <Case>/odeint). Run: cmake
 // --preset bench && cmake --build --preset bench && build/bench/tests/bench/bench_dynamics
 #include "dynamics/core/ModelRegistry.h"
+#include "dynamics/integrators/Adams.h"
 #include "dynamics/integrators/Everhart.h"
 #include "dynamics/integrators/Merson.h"
 #include "dynamics/integrators/Rk4.h"
@@ -161,6 +162,12 @@ void Chaplygin_verner9(benchmark::State& state) {
   adaptiveToThousand(state, [&] { return std::make_unique<Verner9>(tolerance, 0.1); });
 }
 
+// Adams PECE of order state.range(0) at the constant step state.range(1) / 1000, to t = 1000
+void Chaplygin_adams(benchmark::State& state) {
+  const double h = static_cast<double>(state.range(1)) / 1000;
+  adaptiveToThousand(state, [&] { return std::make_unique<Adams>(h, static_cast<int>(state.range(0))); });
+}
+
 // odeint's runge_kutta_fehlberg78, controlled, at tolerance 10^-state.range(0)
 void Chaplygin_odeint(benchmark::State& state) {
   const AccurateCase c;
@@ -178,6 +185,32 @@ void Chaplygin_odeint(benchmark::State& state) {
     odeint::integrate_adaptive(
         odeint::make_controlled(tolerance, tolerance, odeint::runge_kutta_fehlberg78<std::vector<double>>()),
         sys, x, 0.0, 1000.0, 0.1);
+    err = std::abs(m->integrals(x.data())[0] - c.E0) / c.E0;
+    evals = count;
+  }
+  state.counters["energy_error"] = err;
+  state.counters["rhs_evaluations"] = static_cast<double>(evals);
+}
+
+// odeint's adams_bashforth_moulton<8> (its highest order, PECE) at the constant step 1 / state.range(0),
+// started with RKF78 steps: the multistep peer of `adams`
+void Chaplygin_odeintAbm8(benchmark::State& state) {
+  const AccurateCase c;
+  const Model* m = c.model.get();
+  const double h = 1.0 / static_cast<double>(state.range(0));
+  double err = 0;
+  long evals = 0;
+  for (auto _ : state) {
+    std::vector<double> x(c.x0.data(), c.x0.data() + c.x0.size());
+    long count = 0;
+    auto sys = [&](const std::vector<double>& y, std::vector<double>& dy, double) {
+      ++count;
+      m->rhs(y.data(), dy.data());
+    };
+    odeint::adams_bashforth_moulton<8, std::vector<double>> abm;
+    double t = 0; // initialize() advances it over the starting steps
+    abm.initialize(odeint::runge_kutta_fehlberg78<std::vector<double>>(), sys, x, t, h);
+    odeint::integrate_n_steps(abm, sys, x, t, h, std::lround((1000 - t) / h));
     err = std::abs(m->integrals(x.data())[0] - c.E0) / c.E0;
     evals = count;
   }
@@ -220,6 +253,7 @@ void Steps(benchmark::State& state, const std::string& method) {
   if (method == "everhart27") integ = std::make_unique<Everhart>(0.5, 27, 12);
   if (method == "taylor") integ = std::make_unique<Taylor>(1e-15, 0);
   if (method == "verner9") integ = std::make_unique<Verner9>(1e-13, 0.1);
+  if (method == "adams") integ = std::make_unique<Adams>(0.05, 13);
   integ->start(*m, 0, x0);
   for (auto _ : state)
     integ->step();
@@ -246,6 +280,11 @@ BENCHMARK(Chaplygin_verner9)
     ->Name("AccurateChaplygin/rollviz_verner9")
     ->Unit(benchmark::kMillisecond)
     ->Arg(13);
+BENCHMARK(Chaplygin_adams)
+    ->Name("AccurateChaplygin/rollviz_adams")
+    ->Unit(benchmark::kMillisecond)
+    ->Args({12, 60})
+    ->Args({11, 50});
 BENCHMARK(AccurateChaplygin_odeint)->Name("AccurateChaplygin/odeint")->Unit(benchmark::kMillisecond);
 // the same motion near 1e-15: RKF78 at its smallest useful tolerances beside Everhart fixed and adaptive
 BENCHMARK(AccurateChaplygin_rollviz)
@@ -271,6 +310,16 @@ BENCHMARK(Chaplygin_verner9)
     ->Unit(benchmark::kMillisecond)
     ->Arg(15)
     ->Arg(16);
+BENCHMARK(Chaplygin_adams)
+    ->Name("PreciseChaplygin/rollviz_adams")
+    ->Unit(benchmark::kMillisecond)
+    ->Args({13, 50})
+    ->Args({13, 45});
+BENCHMARK(Chaplygin_odeintAbm8)
+    ->Name("PreciseChaplygin/odeint_abm8")
+    ->Unit(benchmark::kMillisecond)
+    ->Arg(40)
+    ->Arg(80);
 BENCHMARK(Chaplygin_odeint)->Name("PreciseChaplygin/odeint")->Unit(benchmark::kMillisecond)->Arg(15)->Arg(16);
 BENCHMARK_CAPTURE(Steps, rk4, std::string("rk4"));
 BENCHMARK_CAPTURE(Steps, merson, std::string("merson"));
@@ -278,3 +327,4 @@ BENCHMARK_CAPTURE(Steps, everhart15, std::string("everhart15"));
 BENCHMARK_CAPTURE(Steps, everhart27, std::string("everhart27"));
 BENCHMARK_CAPTURE(Steps, taylor, std::string("taylor"));
 BENCHMARK_CAPTURE(Steps, verner9, std::string("verner9"));
+BENCHMARK_CAPTURE(Steps, adams, std::string("adams"));

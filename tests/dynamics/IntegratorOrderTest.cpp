@@ -2,6 +2,7 @@
 // test/numeric approach): the error at t = T falls by 2^p when the step is halved.
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/ModelWithField.h"
+#include "dynamics/integrators/Adams.h"
 #include "dynamics/integrators/Everhart.h"
 #include "dynamics/integrators/Merson.h"
 #include "dynamics/integrators/Rk4.h"
@@ -11,6 +12,7 @@
 
 #include <cmath>
 #include <gtest/gtest.h>
+#include <tuple>
 
 namespace rv {
 namespace {
@@ -364,6 +366,98 @@ TEST(Verner9, AdaptiveStepMeetsTheToleranceAndFollowsTheTimeScale) {
   EXPECT_LT((x - exact).norm(), 1e-8);
   EXPECT_THROW(Verner9(0, 0.1), InputError);
   EXPECT_THROW(Verner9(1e-10, -1), InputError);
+}
+
+// Adams-Bashforth-Moulton PECE: order k + 1 from the last k derivatives, measured at five orders where
+// the slope has settled (pre-asymptotic it is steeper, at rounding flat; the high orders' stability region
+// also bounds the step: order 13 is unstable on this pendulum above h ~ 0.1, order 17 even at 0.03). A
+// corrector that is not the predictor plus h gamma_k nabla^k f leaves the predictor's order k; a wrong
+// gamma_j lower still.
+TEST(IntegratorOrder, AdamsIsOfItsOrder) {
+  // measured 2.0, 3.9, 7.9, 10.7, 12.2 (order 13 approaches from below down to rounding)
+  for (const auto& [order, h1, h2, atLeast] : {std::tuple{2, 0.05, 0.025, 1.9},
+                                               {4, 0.05, 0.025, 3.7},
+                                               {8, 0.025, 0.0125, 7.6},
+                                               {11, 0.04, 0.032, 10.4},
+                                               {13, 0.05, 0.04, 11.9}}) {
+    const auto make = [order](double h) { return std::make_unique<Adams>(h, order); };
+    const double measured = measuredOrder(make, h1, h2, 8.0);
+    std::printf("  order %d: measured %.2f\n", order, measured);
+    EXPECT_GT(measured, atLeast) << "order " << order;
+    EXPECT_LT(measured, order + 1.0) << "order " << order;
+  }
+}
+
+// The dense output: exact at the step's end, and inside a step the integrated polynomial through the last k
+// derivatives, of order k + 1 -- checked on the first PECE step and among the starting values (where it is
+// the polynomial through the starting values' derivatives).
+TEST(Adams, TheInterpolantEndsOnTheStepAndHasTheMethodsOrder) {
+  Pendulum m;
+  Eigen::VectorXd x0(3), at(3), exact(3);
+  x0 << 1.2, 0.3, 0.0;
+  constexpr int kOrder = 8;
+  const auto error = [&](double h, int steps, double theta) {
+    Adams a(h, kOrder);
+    a.start(m, 0, x0);
+    for (int i = 0; i < steps; ++i)
+      a.step();
+    a.interpolate(a.time(), at);
+    EXPECT_EQ(at, a.state());
+    const double t = a.previousTime() + theta * h;
+    Everhart reference(0.001, 27, 30);
+    reference.start(m, 0, x0);
+    while (reference.time() < t)
+      reference.step();
+    reference.interpolate(t, exact);
+    a.interpolate(t, at);
+    return (at - exact).norm();
+  };
+  for (const int steps : {3, kOrder}) // among the starting values; the first PECE step
+    for (const double theta : {0.0, 0.3, 0.7}) {
+      const double e1 = error(0.2, steps, theta), e2 = error(0.1, steps, theta);
+      const double slope = std::log(e1 / e2) / std::log(2.0);
+      std::printf("  step %d theta %.1f: h 0.2 -> %.3e, h 0.1 -> %.3e (slope %.2f)\n", steps, theta, e1, e2,
+                  slope);
+      // measured 7.2-7.8 (a cubic Hermite there: 4)
+      EXPECT_GT(slope, kOrder - 1.0) << "step " << steps << " theta " << theta;
+      EXPECT_LT(e1, 1e-5) << "step " << steps << " theta " << theta;
+    }
+}
+
+// Integrated forward and back, the motion returns to its start (the method is its own starter both ways);
+// a step far outside the stability region is reported, not returned as numbers; bad settings name the field.
+TEST(Adams, RunsBackwardStopsOnBlowUpAndRefusesBadSettings) {
+  Pendulum m;
+  Eigen::VectorXd x0(3);
+  x0 << 1.2, 0.3, 0.0;
+  Adams forward(0.05, 13);
+  forward.start(m, 0, x0);
+  for (int i = 0; i < 400; ++i)
+    forward.step();
+  Adams backward(0.05, 13);
+  backward.start(m, forward.time(), forward.state(), -1);
+  for (int i = 0; i < 400; ++i)
+    backward.step();
+  EXPECT_NEAR(backward.time(), 0, 1e-12);
+  EXPECT_LT((backward.state() - x0).norm(), 1e-11);
+  EXPECT_EQ(forward.evaluations() > 2 * 400, true);
+
+  // order 13 went unstable on the pendulum above h ~ 0.1 (the order test); at 0.5 on the oscillator a
+  // parasitic root grows until the state is no longer finite
+  test::CoupledOscillator oscillator;
+  Adams tooLong(0.5, 13);
+  tooLong.start(oscillator, 0, test::CoupledOscillator::exact(0));
+  try {
+    for (int i = 0; i < 20000; ++i)
+      tooLong.step();
+    ADD_FAILURE() << "a step of 0.5 at order 13 should blow up";
+  } catch (const ComputationError& e) {
+    EXPECT_NE(std::string(e.what()).find("stopped being finite"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(Adams(0.1, 1), InputError);
+  EXPECT_THROW(Adams(0.1, Adams::kMaxOrder + 1), InputError);
+  EXPECT_THROW(Adams(0, 13), InputError);
+  EXPECT_THROW(Adams(-0.1, 13), InputError);
 }
 
 } // namespace

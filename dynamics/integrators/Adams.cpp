@@ -1,0 +1,227 @@
+#include "dynamics/integrators/Adams.h"
+
+#include "dynamics/core/Errors.h"
+#include "dynamics/integrators/Verner9.h"
+
+#include <cmath>
+#include <string>
+#include <type_traits>
+
+namespace rv {
+
+namespace {
+// The two passes over the differences, a block of W components at a time so that the sums stay in registers
+// across the k differences (a pass per difference would load and store them k times: most of a step's
+// arithmetic cost). D is dim x k, column-major.
+
+// P: increment = h sum_j gamma_j D_j, sum = sum_j D_j, predicted = x + increment, on [i0, i0 + W)
+template <int W>
+void predictBlock(const double* D, Eigen::Index n, int k, const double* gamma, double h, const double* x,
+                  Eigen::Index i0, double* increment, double* sum, double* predicted) {
+  // fixed-size arrays: packed arithmetic held in registers (scalar arrays were spilled to the stack)
+  using Block = Eigen::Array<double, W, 1>;
+  Block a = Block::Zero(), s = Block::Zero();
+  for (int j = 0; j < k; ++j) {
+    const Eigen::Map<const Block> d(D + j * n + i0);
+    a += gamma[j] * d;
+    s += d;
+  }
+  a *= h;
+  Eigen::Map<Block>(increment + i0) = a;
+  Eigen::Map<Block>(sum + i0) = s;
+  Eigen::Map<Block>(predicted + i0) = Eigen::Map<const Block>(x + i0) + a;
+}
+
+// the differences moved to the new derivative f: D_0 = f, D_j = D_(j-1) (new) - D_(j-1) (old), on [i0, i0 +
+// W)
+template <int W> void shiftBlock(double* D, Eigen::Index n, int k, const double* f, Eigen::Index i0) {
+  using Block = Eigen::Array<double, W, 1>;
+  Block c = Eigen::Map<const Block>(f + i0);
+  for (int j = 0; j < k; ++j) {
+    Eigen::Map<Block> d(D + j * n + i0);
+    const Block old = d;
+    d = c;
+    c -= old;
+  }
+}
+
+// calls block<W>(i0) over [0, n): blocks of 8, then 4, then single components
+template <class Block> void inBlocks(Eigen::Index n, Block&& block) {
+  Eigen::Index i0 = 0;
+  for (; i0 + 8 <= n; i0 += 8)
+    block(std::integral_constant<int, 8>{}, i0);
+  for (; i0 + 4 <= n; i0 += 4)
+    block(std::integral_constant<int, 4>{}, i0);
+  for (; i0 < n; ++i0)
+    block(std::integral_constant<int, 1>{}, i0);
+}
+} // namespace
+
+const ParameterTable& Adams::parameterTable() {
+  static const ParameterTable table{
+      {.id = "order",
+       .label = "Order",
+       .defaultValue = 12,
+       .min = 2,
+       .max = kMaxOrder,
+       .description = "order of the corrector; the predictor uses the last order - 1 derivatives (the "
+                      "higher the order, the shorter the longest stable step)",
+       .integer = true},
+      {.id = "step",
+       .label = "Step",
+       .defaultValue = 0.025,
+       .min = 1e-12,
+       .max = 1e3,
+       .description = "constant integration step"},
+  };
+  return table;
+}
+
+IntegratorEntry Adams::entry() {
+  return {"adams",
+          "Adams-Bashforth-Moulton predictor-corrector (PECE), constant step, two evaluations a step",
+          "Hairer, Norsett, Wanner, Solving ODE I, §III.1; Shampine and Gordon (1975)", &parameterTable(),
+          [](const ParameterValues& p) -> std::unique_ptr<Integrator> {
+            return std::make_unique<Adams>(p["step"], static_cast<int>(p["order"]));
+          }};
+}
+
+Adams::Adams(double step, int order) : h_(step), k_(order - 1) {
+  if (!(step > 0) || !std::isfinite(step)) throw InputError("integrator.step: must be positive");
+  if (order < 2 || order > kMaxOrder)
+    throw InputError("integrator.order: between 2 and " + std::to_string(kMaxOrder) +
+                     " for the adams method");
+  // gamma_j = 1 - sum_{i<j} gamma_i / (j + 1 - i) (HNW §III.1: the coefficients of -t / ((1 - t) ln(1 - t))),
+  // in long double: the subtractions cancel
+  std::array<long double, kMaxOrder> gamma{};
+  for (int j = 0; j <= k_; ++j) {
+    long double s = 0;
+    for (int i = 0; i < j; ++i)
+      s += gamma[i] / (j + 1 - i);
+    gamma[j] = 1 - s;
+    gamma_[j] = static_cast<double>(gamma[j]);
+  }
+  // binom(u + j - 1, j) = binom(u + j - 2, j - 1) (u + j - 1) / j, as polynomials in u, then integrated
+  std::array<std::array<long double, kMaxOrder>, kMaxOrder> poly{};
+  poly[0][0] = 1;
+  for (int j = 1; j < k_; ++j)
+    for (int m = 0; m <= j; ++m)
+      poly[j][m] = ((m > 0 ? poly[j - 1][m - 1] : 0.0L) + (j - 1) * poly[j - 1][m]) / j;
+  for (int j = 0; j < k_; ++j)
+    for (int m = 0; m <= j; ++m)
+      integrated_[j][m] = static_cast<double>(poly[j][m] / (m + 1));
+}
+
+void Adams::start(const Model& model, double t0, const Eigen::VectorXd& x0, int direction) {
+  if (model.isMap()) throw InputError(model.info().id + " is a map: it is iterated, not integrated");
+  Integrator::start(model, t0, x0, direction);
+  const auto n = x0.size();
+  D_.setZero(n, k_);
+  startStates_.resize(n, k_);
+  predicted_.resize(n), fp_.resize(n), sum_.resize(n), increment_.resize(n);
+  compensation_.setZero(n);
+  taken_ = 0;
+  // the starting values at t0 + j h, j < k: Verner's pair near rounding, read off its interpolant
+  startStates_.col(0) = x0;
+  double t = t0;
+  if (k_ > 1) {
+    Verner9 starter(1e-15, h_);
+    starter.start(model, t0, x0, direction_);
+    Eigen::VectorXd at(n);
+    for (int j = 1; j < k_; ++j) {
+      t += direction_ * h_;
+      while (direction_ * (starter.time() - t) < 0)
+        starter.step();
+      starter.interpolate(t, at);
+      startStates_.col(j) = at;
+    }
+    evaluations_ += starter.evaluations() + starter.denseEvaluations();
+  }
+  tD_ = t;
+  // their derivatives, and the backward differences at the last one: D_j = nabla^j f_{k-1}
+  Eigen::MatrixXd f(n, k_);
+  for (int j = 0; j < k_; ++j) {
+    model_->rhs(startStates_.col(j).data(), f.col(j).data());
+    ++evaluations_;
+  }
+  for (int j = 0; j < k_; ++j) {
+    D_.col(j) = f.col(k_ - 1);
+    for (int i = k_ - 1; i > j; --i)
+      f.col(i) -= f.col(i - 1);
+  }
+}
+
+void Adams::step() {
+  const double h = direction_ * h_;
+  if (taken_ + 1 < k_) { // a starting value
+    xPrev_ = x_;
+    tPrev_ = t_;
+    x_ = startStates_.col(++taken_);
+    t_ = tPrev_ + h;
+    return;
+  }
+  const Eigen::Index n = x_.size();
+  // P: the explicit formula on nabla^j f_n; the differences summed for nabla^k f at the predicted point
+  inBlocks(n, [&](auto width, Eigen::Index i0) {
+    predictBlock<decltype(width)::value>(D_.data(), n, k_, gamma_.data(), h, x_.data(), i0, increment_.data(),
+                                         sum_.data(), predicted_.data());
+  });
+  model_->rhs(predicted_.data(), fp_.data()); // E
+  ++evaluations_;
+  // C: the predictor plus h gamma_k nabla^k f^p_{n+1}, nabla^k f^p_{n+1} = f^p - sum_{j<k} nabla^j f_n
+  const double gk = h * gamma_[static_cast<std::size_t>(k_)];
+  for (Eigen::Index i = 0; i < n; ++i)
+    increment_[i] += gk * (fp_[i] - sum_[i]);
+  advanceCompensated(h, increment_, compensation_);
+  // E: f at the corrected point, and the differences moved to it
+  model_->rhs(x_.data(), fp_.data());
+  ++evaluations_;
+  inBlocks(n, [&](auto width, Eigen::Index i0) {
+    shiftBlock<decltype(width)::value>(D_.data(), n, k_, fp_.data(), i0);
+  });
+  ++taken_;
+  tD_ = t_;
+}
+
+void Adams::integratedWeights(double s, double* weights) const {
+  for (int j = 0; j < k_; ++j) {
+    const auto& c = integrated_[static_cast<std::size_t>(j)];
+    double acc = 0;
+    for (int m = j; m >= 0; --m)
+      acc = acc * s + c[static_cast<std::size_t>(m)];
+    weights[j] = acc * s;
+  }
+}
+
+void Adams::interpolate(double t, Eigen::VectorXd& out) const {
+  if (t == t_ || t_ == tPrev_) {
+    out = x_;
+    return;
+  }
+  // x(t) = x(t_) + h (int_0^s - int_0^{s_end}) p(u) du, p the polynomial through the derivatives in D_ (at
+  // tD_ + u h); s_end = 0 once the starting values are behind
+  const double h = direction_ * h_;
+  integratedWeights((t - tD_) / h, weights_.data());
+  integratedWeights((t_ - tD_) / h, weightsEnd_.data());
+  out = x_;
+  for (int j = 0; j < k_; ++j)
+    out +=
+        (h * (weights_[static_cast<std::size_t>(j)] - weightsEnd_[static_cast<std::size_t>(j)])) * D_.col(j);
+}
+
+void Adams::save(Snapshot& s) const {
+  Integrator::save(s);
+  s.put(static_cast<double>(taken_)), s.put(tD_);
+  s.put(D_), s.put(startStates_), s.put(compensation_);
+}
+
+void Adams::restore(Snapshot& s) {
+  Integrator::restore(s);
+  const auto rows = D_.rows(), cols = D_.cols();
+  taken_ = s.getLong(), tD_ = s.get();
+  s.get(D_), s.get(startStates_), s.get(compensation_);
+  if (D_.rows() != rows || D_.cols() != cols || startStates_.cols() != cols || compensation_.size() != rows)
+    throw InputError("checkpoint: the saved Adams differences have another order or dimension");
+}
+
+} // namespace rv
