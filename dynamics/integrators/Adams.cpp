@@ -1,61 +1,13 @@
 #include "dynamics/integrators/Adams.h"
 
 #include "dynamics/core/Errors.h"
+#include "dynamics/integrators/AdamsKernels.h"
 #include "dynamics/integrators/Verner9.h"
 
 #include <cmath>
 #include <string>
-#include <type_traits>
 
 namespace rv {
-
-namespace {
-// The two passes over the differences, a block of W components at a time so that the sums stay in registers
-// across the k differences (a pass per difference would load and store them k times: most of a step's
-// arithmetic cost). D is dim x k, column-major.
-
-// P: increment = h sum_j gamma_j D_j, sum = sum_j D_j, predicted = x + increment, on [i0, i0 + W)
-template <int W>
-void predictBlock(const double* D, Eigen::Index n, int k, const double* gamma, double h, const double* x,
-                  Eigen::Index i0, double* increment, double* sum, double* predicted) {
-  // fixed-size arrays: packed arithmetic held in registers (scalar arrays were spilled to the stack)
-  using Block = Eigen::Array<double, W, 1>;
-  Block a = Block::Zero(), s = Block::Zero();
-  for (int j = 0; j < k; ++j) {
-    const Eigen::Map<const Block> d(D + j * n + i0);
-    a += gamma[j] * d;
-    s += d;
-  }
-  a *= h;
-  Eigen::Map<Block>(increment + i0) = a;
-  Eigen::Map<Block>(sum + i0) = s;
-  Eigen::Map<Block>(predicted + i0) = Eigen::Map<const Block>(x + i0) + a;
-}
-
-// the differences moved to the new derivative f: D_0 = f, D_j = D_(j-1) (new) - D_(j-1) (old), on [i0, i0 +
-// W)
-template <int W> void shiftBlock(double* D, Eigen::Index n, int k, const double* f, Eigen::Index i0) {
-  using Block = Eigen::Array<double, W, 1>;
-  Block c = Eigen::Map<const Block>(f + i0);
-  for (int j = 0; j < k; ++j) {
-    Eigen::Map<Block> d(D + j * n + i0);
-    const Block old = d;
-    d = c;
-    c -= old;
-  }
-}
-
-// calls block<W>(i0) over [0, n): blocks of 8, then 4, then single components
-template <class Block> void inBlocks(Eigen::Index n, Block&& block) {
-  Eigen::Index i0 = 0;
-  for (; i0 + 8 <= n; i0 += 8)
-    block(std::integral_constant<int, 8>{}, i0);
-  for (; i0 + 4 <= n; i0 += 4)
-    block(std::integral_constant<int, 4>{}, i0);
-  for (; i0 < n; ++i0)
-    block(std::integral_constant<int, 1>{}, i0);
-}
-} // namespace
 
 const ParameterTable& Adams::parameterTable() {
   static const ParameterTable table{
@@ -162,10 +114,8 @@ void Adams::step() {
   }
   const Eigen::Index n = x_.size();
   // P: the explicit formula on nabla^j f_n; the differences summed for nabla^k f at the predicted point
-  inBlocks(n, [&](auto width, Eigen::Index i0) {
-    predictBlock<decltype(width)::value>(D_.data(), n, k_, gamma_.data(), h, x_.data(), i0, increment_.data(),
-                                         sum_.data(), predicted_.data());
-  });
+  adams::predict(D_.data(), n, k_, gamma_.data(), h, x_.data(), increment_.data(), sum_.data(),
+                 predicted_.data(), avx2_);
   model_->rhs(predicted_.data(), fp_.data()); // E
   ++evaluations_;
   // C: the predictor plus h gamma_k nabla^k f^p_{n+1}, nabla^k f^p_{n+1} = f^p - sum_{j<k} nabla^j f_n
@@ -176,9 +126,7 @@ void Adams::step() {
   // E: f at the corrected point, and the differences moved to it
   model_->rhs(x_.data(), fp_.data());
   ++evaluations_;
-  inBlocks(n, [&](auto width, Eigen::Index i0) {
-    shiftBlock<decltype(width)::value>(D_.data(), n, k_, fp_.data(), i0);
-  });
+  adams::shift(D_.data(), n, k_, fp_.data(), avx2_);
   ++taken_;
   tD_ = t_;
 }

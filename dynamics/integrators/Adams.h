@@ -15,6 +15,7 @@
 // (the implicit formula of order k + 1 equals the explicit one of order k plus that term, as
 // gamma_k = gamma*_0 + ... + gamma*_k).
 #pragma once
+#include "dynamics/integrators/AdamsKernels.h"
 #include "dynamics/integrators/Integrator.h"
 
 #include <array>
@@ -53,10 +54,11 @@ private:
   std::array<double, kMaxOrder> gamma_{}; ///< explicit Adams coefficients gamma_0..gamma_k
   /// integrated_[j][m]: the coefficient of s^(m+1) in int_0^s binom(u + j - 1, j) du
   std::array<std::array<double, kMaxOrder>, kMaxOrder> integrated_{};
-  long taken_ = 0;              ///< steps since start()
-  double tD_ = 0;               ///< the time of the newest derivative in D_
-  Eigen::MatrixXd D_;           ///< nabla^j f at tD_ (dim x k)
-  Eigen::MatrixXd startStates_; ///< the starting values (dim x k)
+  bool avx2_ = adams::avx2Available(); ///< the kernels' path (AdamsKernels.h: bit-identical either way)
+  long taken_ = 0;                     ///< steps since start()
+  double tD_ = 0;                      ///< the time of the newest derivative in D_
+  Eigen::MatrixXd D_;                  ///< nabla^j f at tD_ (dim x k)
+  Eigen::MatrixXd startStates_;        ///< the starting values (dim x k)
   Eigen::VectorXd predicted_, fp_, sum_, increment_, compensation_;
   mutable std::array<double, kMaxOrder> weights_{}, weightsEnd_{};
 };
