@@ -8,6 +8,9 @@ namespace rv {
 std::vector<double> findRoots(const std::function<double(double)>& f, double a, double b, double step,
                               double accuracy) {
   std::vector<double> roots;
+  // a step far below the range's width would scan for hours (a gyrostat of 4e5 makes chaplygin_ball's range
+  // of G that wide; the step's minimum is 1e-12): coarsen it to at most kMaxScanIntervals intervals
+  step = std::max(step, (b - a) / kMaxScanIntervals);
   double x0 = a, f0 = f(a);
   if (f0 == 0) roots.push_back(a);
   while (x0 < b) {

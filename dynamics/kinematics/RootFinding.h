@@ -6,8 +6,12 @@
 
 namespace rv {
 
-/// All sign changes of f on [a, b] found by scanning with `step`, refined to |interval| <= accuracy
-/// (relative to max(1, |x|)). Sorted ascending. A root touched without a sign change is missed.
+/// The most intervals a scan takes: a smaller step over a wider range is coarsened to (b - a) / this.
+inline constexpr double kMaxScanIntervals = 1e5;
+
+/// All sign changes of f on [a, b] found by scanning with `step` (at most kMaxScanIntervals intervals),
+/// refined to |interval| <= accuracy (relative to max(1, |x|)). Sorted ascending. A root touched without a
+/// sign change is missed, and so is a pair of roots closer than the step.
 std::vector<double> findRoots(const std::function<double(double)>& f, double a, double b, double step,
                               double accuracy);
 

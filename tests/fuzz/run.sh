@@ -15,7 +15,7 @@ for target in scene override sweep; do
   regressions=tests/fuzz/regressions/$target
   if [ -d "$regressions" ] && [ -n "$(ls -A "$regressions")" ]; then
     echo "== fuzz_$target: replaying $(ls "$regressions" | wc -l) inputs that once found bugs"
-    "$exe" -runs=0 "$regressions"/*
+    "$exe" -runs=0 -timeout=5 "$regressions"/*
   fi
   seeds=scenes
   [ "$target" != scene ] && seeds=tests/fuzz/seeds/$target
