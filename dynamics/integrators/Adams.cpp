@@ -65,7 +65,7 @@ Adams::Adams(double step, int order) : h_(step), k_(order - 1) {
 }
 
 void Adams::start(const Model& model, double t0, const Eigen::VectorXd& x0, int direction) {
-  if (model.isMap()) throw InputError(model.info().id + " is a map: it is iterated, not integrated");
+  requireFlow(model);
   Integrator::start(model, t0, x0, direction);
   const auto n = x0.size();
   D_.setZero(n, k_);

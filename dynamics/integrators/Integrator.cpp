@@ -37,6 +37,10 @@ void Integrator::restore(Snapshot& s) {
     throw InputError("checkpoint: the saved state has another dimension");
 }
 
+void Integrator::requireFlow(const Model& model) {
+  if (model.isMap()) throw InputError(model.info().id + " is a map: it is iterated, not integrated");
+}
+
 void Integrator::requireFinite(const Eigen::VectorXd& x, double t, const char* what) {
   // a NaN or an infinity anywhere makes the sum non-finite (so does a sum past 1e308: a blow-up too); one
   // vectorised reduction instead of a test per component

@@ -51,6 +51,8 @@ protected:
   }
   /// Throws ComputationError if x_ holds a NaN or an infinity.
   void checkFinite() const;
+  /// Throws InputError for a map (for the methods that only integrate flows).
+  static void requireFlow(const Model& model);
   /// Ends a step of signed length h: x_ += increment with compensated (Kahan) summation, `compensation`
   /// carrying what each addition lost into the next step (the rounding of long runs then grows like
   /// sqrt(steps)); the step's start kept in xPrev_/tPrev_, then checkFinite().

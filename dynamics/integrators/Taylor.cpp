@@ -69,7 +69,7 @@ Taylor::Taylor(double tolerance, int order, double step)
 }
 
 void Taylor::start(const Model& model, double t0, const Eigen::VectorXd& x0, int direction) {
-  if (model.isMap()) throw InputError(model.info().id + " is a map: it is iterated, not integrated");
+  requireFlow(model);
   Integrator::start(model, t0, x0, direction);
   const auto n = x0.size();
   X_.setZero(n, order_ + 1);

@@ -273,7 +273,7 @@ Verner9::Verner9(double tolerance, double step, bool fixedStep)
 }
 
 void Verner9::start(const Model& model, double t0, const Eigen::VectorXd& x0, int direction) {
-  if (model.isMap()) throw InputError(model.info().id + " is a map: it is iterated, not integrated");
+  requireFlow(model);
   Integrator::start(model, t0, x0, direction);
   const auto n = x0.size();
   K_.setZero(n, kDenseStages);

@@ -168,11 +168,11 @@ void Chaplygin_adams(benchmark::State& state) {
   adaptiveToThousand(state, [&] { return std::make_unique<Adams>(h, static_cast<int>(state.range(0))); });
 }
 
-// odeint's runge_kutta_fehlberg78, controlled, at tolerance 10^-state.range(0)
-void Chaplygin_odeint(benchmark::State& state) {
+// an odeint peer to t = 1000 from the AccurateCase start: integrate(system, x) runs it on x (the system
+// counts its evaluations); the same counters as adaptiveToThousand
+template <class Integrate> void odeintToThousand(benchmark::State& state, Integrate&& integrate) {
   const AccurateCase c;
   const Model* m = c.model.get();
-  const double tolerance = std::pow(10.0, -static_cast<double>(state.range(0)));
   double err = 0;
   long evals = 0;
   for (auto _ : state) {
@@ -182,64 +182,43 @@ void Chaplygin_odeint(benchmark::State& state) {
       ++count;
       m->rhs(y.data(), dy.data());
     };
-    odeint::integrate_adaptive(
-        odeint::make_controlled(tolerance, tolerance, odeint::runge_kutta_fehlberg78<std::vector<double>>()),
-        sys, x, 0.0, 1000.0, 0.1);
+    integrate(sys, x);
     err = std::abs(m->integrals(x.data())[0] - c.E0) / c.E0;
     evals = count;
   }
   state.counters["energy_error"] = err;
   state.counters["rhs_evaluations"] = static_cast<double>(evals);
+}
+
+// odeint's runge_kutta_fehlberg78, controlled, at a tolerance
+void rkf78ToThousand(benchmark::State& state, double tolerance) {
+  odeintToThousand(state, [&](auto& sys, std::vector<double>& x) {
+    odeint::integrate_adaptive(
+        odeint::make_controlled(tolerance, tolerance, odeint::runge_kutta_fehlberg78<std::vector<double>>()),
+        sys, x, 0.0, 1000.0, 0.1);
+  });
+}
+
+// RKF78 at tolerance 10^-state.range(0)
+void Chaplygin_odeint(benchmark::State& state) {
+  rkf78ToThousand(state, std::pow(10.0, -static_cast<double>(state.range(0))));
 }
 
 // odeint's adams_bashforth_moulton<8> (its highest order, PECE) at the constant step 1 / state.range(0),
 // started with RKF78 steps: the multistep peer of `adams`
 void Chaplygin_odeintAbm8(benchmark::State& state) {
-  const AccurateCase c;
-  const Model* m = c.model.get();
   const double h = 1.0 / static_cast<double>(state.range(0));
-  double err = 0;
-  long evals = 0;
-  for (auto _ : state) {
-    std::vector<double> x(c.x0.data(), c.x0.data() + c.x0.size());
-    long count = 0;
-    auto sys = [&](const std::vector<double>& y, std::vector<double>& dy, double) {
-      ++count;
-      m->rhs(y.data(), dy.data());
-    };
+  odeintToThousand(state, [&](auto& sys, std::vector<double>& x) {
     odeint::adams_bashforth_moulton<8, std::vector<double>> abm;
     double t = 0; // initialize() advances it over the starting steps
     abm.initialize(odeint::runge_kutta_fehlberg78<std::vector<double>>(), sys, x, t, h);
     odeint::integrate_n_steps(abm, sys, x, t, h, std::lround((1000 - t) / h));
-    err = std::abs(m->integrals(x.data())[0] - c.E0) / c.E0;
-    evals = count;
-  }
-  state.counters["energy_error"] = err;
-  state.counters["rhs_evaluations"] = static_cast<double>(evals);
+  });
 }
 
+// RKF78 at the tolerance the AccurateChaplygin case was set at
 void AccurateChaplygin_odeint(benchmark::State& state) {
-  const AccurateCase c;
-  const Model* m = c.model.get();
-  const Eigen::VectorXd& x0 = c.x0;
-  const double E0 = c.E0;
-  double err = 0;
-  long evals = 0;
-  for (auto _ : state) {
-    std::vector<double> x(x0.data(), x0.data() + x0.size());
-    long count = 0;
-    auto sys = [&](const std::vector<double>& y, std::vector<double>& dy, double) {
-      ++count;
-      m->rhs(y.data(), dy.data());
-    };
-    odeint::integrate_adaptive(
-        odeint::make_controlled(1e-13, 1e-13, odeint::runge_kutta_fehlberg78<std::vector<double>>()), sys, x,
-        0.0, 1000.0, 0.1);
-    err = std::abs(m->integrals(x.data())[0] - E0) / E0;
-    evals = count;
-  }
-  state.counters["energy_error"] = err;
-  state.counters["rhs_evaluations"] = static_cast<double>(evals);
+  rkf78ToThousand(state, 1e-13);
 }
 
 // steps per second of each integrator on chaplygin_ball
