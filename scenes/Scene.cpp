@@ -1,7 +1,7 @@
 #include "scenes/Scene.h"
 
 #include "dynamics/core/Errors.h"
-#include "dynamics/core/TimeSampler.h"
+#include "dynamics/integrators/TimeSampler.h"
 
 #include <array>
 #include <cmath>

@@ -5,6 +5,7 @@
 #include "dynamics/jobs/RunSpec.h"
 #include "dynamics/tools/FourierSpectrum.h"
 #include "dynamics/tools/Lyapunov.h"
+#include "dynamics/tools/Megno.h"
 #include "dynamics/tools/PlotFilter.h"
 #include "dynamics/tools/PoincareMap.h"
 #include "render/ViewOptions.h"
@@ -41,6 +42,7 @@ struct Scene {
   Eigen::VectorXd initialState;
   SectionSettings poincare;  ///< "poincare": section, value, direction, points (maxPoints), ...
   LyapunovSettings lyapunov; ///< "lyapunov"
+  MegnoSettings megno;       ///< "megno"
   SpectrumSettings spectrum; ///< "spectrum"
   PlotView plot;             ///< "plot"
   ViewOptions view;

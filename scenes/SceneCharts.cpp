@@ -10,6 +10,7 @@
 #include "render/charts/ToolCharts.h"
 #include "scenes/SceneLoader.h"
 #include "scenes/SceneTools.h"
+#include "scenes/ToolRunner.h"
 
 #include <algorithm>
 #include <cmath>
@@ -17,7 +18,7 @@
 namespace rv {
 
 std::string chartTitle(const std::string& view) {
-  for (const auto& e : ToolRegistry::builtin().entries())
+  for (const auto& e : ToolRegistry::global().entries())
     if (e.chartView == view) return e.title;
   return view;
 }
@@ -254,8 +255,7 @@ std::unique_ptr<Chart> lyapunovChart(const Scene& scene, const ChartRequest& r, 
 
 std::unique_ptr<Chart> megnoChart(const Scene& scene, const ChartRequest& r, const ToolControl& control) {
   std::unique_ptr<ChartProgress> local;
-  auto& progress =
-      progressOf<EstimatesProgress<MegnoRun>>(r, local, scene, megnoSettings(scene.tool("megno")));
+  auto& progress = progressOf<EstimatesProgress<MegnoRun>>(r, local, scene, scene.megno);
   auto& t = progress.t;
   auto& y = progress.curves;
   y.resize(1);
@@ -295,6 +295,8 @@ const std::vector<std::string>& chartViews() {
     std::vector<std::string> names;
     for (const auto& [name, build] : chartBuilders())
       names.push_back(name);
+    for (const auto& e : ToolRegistry::global().entries()) // the views of the tools that run by themselves
+      if (runnableToolOfView(e.chartView) == &e) names.push_back(e.chartView);
     return names;
   }();
   return v;
@@ -310,6 +312,10 @@ std::unique_ptr<Chart> sceneChart(const Scene& scene, const std::string& view, c
         plane->setTitle(chartTitle(view) + (diagram.empty() ? "" : " " + diagram));
       return chart;
     }
+  if (const ToolEntry* tool = runnableToolOfView(view)) {
+    const ToolResult result = runTool(*tool, scene, control);
+    return toolResultChart(*tool, scene, result);
+  }
   std::string known;
   for (const auto& v : chartViews())
     known += " " + v;

@@ -298,7 +298,7 @@ void applyOverrides(json& doc, const std::vector<SceneOverride>& overrides) {
         continue;
       }
       if (!doc.contains("problem") || !doc["problem"].is_string()) continue; // reported by validation
-      const ModelEntry& entry = ModelRegistry::builtin().get(doc["problem"].get<std::string>());
+      const ModelEntry& entry = ModelRegistry::global().get(doc["problem"].get<std::string>());
       if (entry.info->parameters.find(o.key) < 0) {
         std::string known;
         for (const auto& s : entry.info->parameters.specs())
@@ -325,7 +325,7 @@ void applyOverrides(json& doc, const std::vector<SceneOverride>& overrides) {
       // the old method's settings do not apply to the new one: keep only the keys the new method knows
       const IntegratorEntry* entry = nullptr;
       try {
-        entry = &IntegratorRegistry::builtin().get(value.get<std::string>());
+        entry = &IntegratorRegistry::global().get(value.get<std::string>());
       } catch (const InputError&) {
         continue; // reported by validation, naming the field
       }
@@ -348,13 +348,18 @@ SceneOverride parseOverride(const std::string& text) {
   return {text.substr(0, eq), text.substr(eq + 1)};
 }
 
+const std::set<std::string>& sceneKeys() {
+  static const std::set<std::string> keys{"problem", "parameters", "integrator",  "initial",
+                                          "view",    "title",      "description", "results"};
+  return keys;
+}
+
 Scene sceneFromJson(json doc, const std::string& source, const std::vector<SceneOverride>& overrides) {
   const Where root{source, ""};
   requireObject(doc, root);
   applyOverrides(doc, overrides);
   for (const auto& [key, value] : doc.items()) {
-    static const std::set<std::string> known{"problem", "parameters", "integrator",  "initial",
-                                             "view",    "title",      "description", "results"};
+    const auto& known = sceneKeys();
     if (!known.count(key) && !findToolSection(key)) {
       std::string list;
       for (const auto& k : known)
@@ -370,7 +375,7 @@ Scene sceneFromJson(json doc, const std::string& source, const std::vector<Scene
   scene.source = source;
   const std::string problem = text(doc["problem"], root / "problem");
   try {
-    scene.modelEntry = &ModelRegistry::builtin().get(problem);
+    scene.modelEntry = &ModelRegistry::global().get(problem);
   } catch (const InputError& e) {
     (root / "problem").fail(e.what());
   }
@@ -388,7 +393,7 @@ Scene sceneFromJson(json doc, const std::string& source, const std::vector<Scene
   const json integ = doc.contains("integrator") ? requireObject(doc["integrator"], wi) : json::object();
   const std::string method = integ.contains("method") ? text(integ["method"], wi / "method") : "rk4";
   try {
-    scene.integratorEntry = &IntegratorRegistry::builtin().get(method);
+    scene.integratorEntry = &IntegratorRegistry::global().get(method);
   } catch (const InputError& e) {
     (wi / "method").fail(e.what());
   }
@@ -404,6 +409,7 @@ Scene sceneFromJson(json doc, const std::string& source, const std::vector<Scene
   readToolSections(doc, root, scene);
   scene.poincare = poincareSettings(scene.tool("poincare"), scene.poincare.observable);
   scene.lyapunov = lyapunovSettings(scene.tool("lyapunov"));
+  scene.megno = megnoSettings(scene.tool("megno"));
   scene.spectrum = spectrumSettings(scene.tool("spectrum"), scene.spectrum.function);
   applyPlotTable(scene.tool("plot"), scene.plot);
   if (!scene.poincare.observable.empty() && !scene.model->isMap() &&

@@ -4,6 +4,7 @@
 #include "scenes/Scene.h"
 
 #include <istream>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,9 @@ struct SceneOverride {
 
 /// Parses "KEY=VALUE"; throws InputError naming the flag when there is no '='.
 SceneOverride parseOverride(const std::string& text);
+
+/// The top-level keys of a scene besides the tools' settings sections (ToolRegistry.h toolSections()).
+const std::set<std::string>& sceneKeys();
 
 /// Parses a scene's JSON; InputError "source:path: ..." when it is malformed or writes a key twice in one
 /// object.

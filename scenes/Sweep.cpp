@@ -8,6 +8,7 @@
 #include "scenes/JsonFields.h"
 #include "scenes/SceneLoader.h"
 #include "scenes/SceneTools.h"
+#include "scenes/ToolRunner.h"
 
 #include <chrono>
 #include <cmath>
@@ -67,8 +68,7 @@ MegnoEstimate megnoEstimate(const Scene& scene, const ToolControl& control) {
   const RunSpec spec = scene.runSpec();
   const Model& model = *scene.model;
   MegnoRun run(
-      model, [&] { return spec.makeIntegrator(model); }, scene.initialState,
-      megnoSettings(scene.tool("megno")));
+      model, [&] { return spec.makeIntegrator(model); }, scene.initialState, scene.megno);
   if (!run.run({}, control)) throw Stopped{};
   return run.result().last;
 }
@@ -229,6 +229,23 @@ std::vector<SweepQuantity> makeQuantities() {
                  return v;
                },
                /*needsMap=*/true, /*cloud=*/true});
+  // the numbers of every tool that runs through scenes/ToolRunner.h (a module's too): "TOOL.OUTPUT"
+  for (const auto& tool : ToolRegistry::global().entries()) {
+    if (!findToolRunner(tool.id)) continue;
+    for (const auto& out : tool.outputs) {
+      if (!out.quantity) continue;
+      const std::string id = tool.id + "." + out.name;
+      q.push_back({id, tool.id, out.description, single(id),
+                   [&tool, name = out.name](const SweepSpec&, const Scene& s, const ToolControl& c) {
+                     const ToolResult r = runTool(tool, s, c);
+                     if (r.stopped) throw Stopped{};
+                     const auto& v = r.fields.at(name);
+                     if (!v.is_number())
+                       throw ComputationError(tool.id + " gave no number for " + name + ": " + v.dump());
+                     return std::vector<double>{v.get<double>()};
+                   }});
+    }
+  }
   return q;
 }
 
@@ -359,7 +376,7 @@ SweepSpec sweepFromJson(json doc, const std::string& source) {
       known += " " + q.id + (q.id.back() == '.' ? "NAME" : "");
     (root / "quantity").fail("unknown quantity '" + quantity + "' (known:" + known + ")");
   }
-  if (!spec.quantity->tool.empty() && !ToolRegistry::builtin().find(spec.quantity->tool))
+  if (!spec.quantity->tool.empty() && !ToolRegistry::global().find(spec.quantity->tool))
     (root / "quantity").fail("the tool " + spec.quantity->tool + " is not registered");
   if (!spec.quantityName.empty() && spec.base.model->findObservable(spec.quantityName) < 0)
     (root / "quantity")
@@ -479,12 +496,12 @@ std::string SweepSpec::axisLabel(std::size_t a) const {
   return axis.id;
 }
 
-std::vector<std::string> sweepCsvHeader(const SweepSpec& spec) {
+std::vector<std::string> sweepCsvHeader(const SweepSpec& spec, bool timing) {
   std::vector<std::string> h;
   for (const auto& a : spec.axes)
     h.push_back(a.id);
   h.insert(h.end(), spec.columns.begin(), spec.columns.end());
-  h.emplace_back("seconds");
+  if (timing) h.emplace_back("seconds");
   h.emplace_back("status");
   return h;
 }
@@ -507,10 +524,12 @@ SweepChartData sweepChartData(const SweepSpec& spec) {
 std::vector<double> readSweepCsv(const SweepSpec& spec, const std::string& path, const std::string& what) {
   std::ifstream in(path);
   if (!in) throw InputError(what + " " + path + ": cannot open");
-  std::string line, expected;
+  std::string line, expected, timed;
   for (const auto& h : sweepCsvHeader(spec))
     expected += (expected.empty() ? "" : ",") + h;
-  if (!std::getline(in, line) || line != expected)
+  for (const auto& h : sweepCsvHeader(spec, true))
+    timed += (timed.empty() ? "" : ",") + h;
+  if (!std::getline(in, line) || (line != expected && line != timed))
     throw InputError(what + " " + path + ": not the CSV of this sweep (expected the header " + expected +
                      ")");
   const std::size_t first = spec.axes.size(), n = spec.columns.size();
@@ -536,13 +555,13 @@ std::vector<double> readSweepCsv(const SweepSpec& spec, const std::string& path,
   return values;
 }
 
-std::string sweepCsvRow(const SweepSpec& spec, long index, const SweepRecord& r) {
+std::string sweepCsvRow(const SweepSpec& spec, long index, const SweepRecord& r, bool timing) {
   std::string row;
   for (double v : spec.axisValues(index))
     row += fmt::format("{:.17g},", v);
   for (double v : r.values)
     row += fmt::format("{:.17g},", v);
-  row += fmt::format("{:.6g},", r.seconds);
+  if (timing) row += fmt::format("{:.6g},", r.seconds);
   row += r.ok ? "ok" : csvField("failed: " + r.reason);
   return row;
 }

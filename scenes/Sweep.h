@@ -79,15 +79,17 @@ Scene sweepPointScene(const SweepSpec& spec, long index);
 /// Computes grid point `index`; never throws: a point that fails is a record with ok = false and the reason.
 SweepRecord evaluateSweepPoint(const SweepSpec& spec, long index, const ToolControl& control);
 
-/// The CSV header: the axes, the quantity's columns, seconds, status.
-std::vector<std::string> sweepCsvHeader(const SweepSpec& spec);
+/// The CSV header: the axes, the quantity's columns, seconds (with `timing`: what each point cost, the one
+/// column that differs between runs), status. Without it the CSV of a sweep is the same file on any number of
+/// threads and ranks.
+std::vector<std::string> sweepCsvHeader(const SweepSpec& spec, bool timing = false);
 /// The chart's description of the sweep (axes, ranges, columns), without values.
 SweepChartData sweepChartData(const SweepSpec& spec);
-/// The values of a finished sweep's CSV (written by `rollviz sweep` from this sweep file): InputError naming
-/// `what` (e.g. "--csv") when its header or rows do not match the sweep.
+/// The values of a finished sweep's CSV (written by `rollviz sweep` from this sweep file, with or without the
+/// seconds column): InputError naming `what` (e.g. "--csv") when its header or rows do not match the sweep.
 std::vector<double> readSweepCsv(const SweepSpec& spec, const std::string& path, const std::string& what);
 
 /// One CSV row of a point (status "ok" or "failed: reason", quoted).
-std::string sweepCsvRow(const SweepSpec& spec, long index, const SweepRecord& record);
+std::string sweepCsvRow(const SweepSpec& spec, long index, const SweepRecord& record, bool timing = false);
 
 } // namespace rv

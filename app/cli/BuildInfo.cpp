@@ -1,6 +1,7 @@
 #include "app/cli/BuildInfo.h"
 
 #include "render/video/Mp4Writer.h"
+#include "scenes/ModuleLoader.h"
 
 #include <Eigen/Core>
 #include <fmt/core.h>
@@ -16,18 +17,47 @@
 namespace rv {
 
 std::vector<Fact> buildFacts() {
-  return {{"rollviz", ROLLVIZ_VERSION},
-          {"build", fmt::format("{}, {} {}", ROLLVIZ_BUILD_TYPE,
+  std::vector<Fact> facts{
+      {"rollviz", ROLLVIZ_VERSION},
+      {"build", fmt::format("{}, {} {}", ROLLVIZ_BUILD_TYPE,
 #if defined(__clang__)
-                                "clang",
+                            "clang",
 #else
-                                "g++",
+                            "g++",
 #endif
-                                __VERSION__)},
-          {"VTK", vtkVersion::GetVTKVersion()},
-          {"Eigen", fmt::format("{}.{}.{}", EIGEN_WORLD_VERSION, EIGEN_MAJOR_VERSION, EIGEN_MINOR_VERSION)},
-          {"libav", libavVersions()},
-          {"fmt", fmt::format("{}.{}.{}", FMT_VERSION / 10000, FMT_VERSION / 100 % 100, FMT_VERSION % 100)}};
+                            __VERSION__)},
+      {"VTK", vtkVersion::GetVTKVersion()},
+      {"Eigen", fmt::format("{}.{}.{}", EIGEN_WORLD_VERSION, EIGEN_MAJOR_VERSION, EIGEN_MINOR_VERSION)},
+      {"libav", libavVersions()},
+      {"fmt", fmt::format("{}.{}.{}", FMT_VERSION / 10000, FMT_VERSION / 100 % 100, FMT_VERSION % 100)},
+      {"module stamp", moduleStamp()}};
+  for (const auto& f : moduleFacts())
+    facts.push_back(f);
+  return facts;
+}
+
+std::vector<Fact> moduleFacts() {
+  std::vector<Fact> facts;
+  const auto list = [](const std::vector<std::string>& ids) {
+    std::string s;
+    for (const auto& id : ids)
+      s += (s.empty() ? "" : ", ") + id;
+    return s;
+  };
+  for (const auto& m : loadedModules()) {
+    std::string added;
+    for (const auto& [kind, ids] : {std::pair{"problems", &m.models}, std::pair{"tools", &m.tools},
+                                    std::pair{"integrators", &m.integrators}})
+      if (!ids->empty()) added += fmt::format("{}{}: {}", added.empty() ? "" : "; ", kind, list(*ids));
+    facts.push_back({"module", m.path + (added.empty() ? " (added nothing)" : " (" + added + ")")});
+  }
+  if (loadedModules().empty()) {
+    std::string where;
+    for (const auto& d : moduleSearchPath())
+      where += (where.empty() ? "" : ":") + d;
+    facts.push_back({"modules", "none loaded (searched " + where + ")"});
+  }
+  return facts;
 }
 
 std::vector<Fact> rendererFacts(const RendererInfo& info) {

@@ -6,6 +6,7 @@
 #include "dynamics/tools/ToolRegistry.h"
 
 #include "render/context/HeadlessContext.h"
+#include "scenes/ModuleLoader.h"
 
 #include <cstdlib>
 #include <filesystem>
@@ -50,6 +51,19 @@ const std::map<std::string, ToolCommandBuilder>& toolCommandBuilders() {
 }
 
 namespace {
+// the files of every `--module FILE` / `--module=FILE` before the subcommand (CLI11 parses later)
+std::vector<std::string> moduleArguments(int argc, char** argv) {
+  std::vector<std::string> files;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--module" && i + 1 < argc)
+      files.push_back(argv[++i]);
+    else if (a.rfind("--module=", 0) == 0)
+      files.push_back(a.substr(9));
+  }
+  return files;
+}
+
 // With no EGL at all, `rollviz` runs the same command as `rollviz-osmesa` from its own folder (OSMesa cannot
 // share a process with GLVND's GL: stack/README.md). Outputs are written to temporary names and renamed, so
 // nothing the first attempt began is left; the environment variable tells the second why, and stops a loop.
@@ -68,15 +82,32 @@ void handOverToOsMesa(char** argv, const char* why) {
 } // namespace
 
 int runCli(int argc, char** argv, const GuiLauncher& gui) {
+  // modules first: the commands, problems and integrators they add must exist before the command line is
+  // built
+  try {
+    loadModules(moduleArguments(argc, argv),
+                [](const std::string& w) { fmt::print(stderr, "rollviz: warning: {}\n", w); });
+  } catch (const InputError& e) {
+    fmt::print(stderr, "rollviz: --module {}\n", e.what());
+    return 2;
+  }
   CLI::App app{"rollviz: bodies rolling without slipping, and the tools of nonlinear dynamics"};
   app.require_subcommand(0, 1);
+  std::vector<std::string> modules; // read above; declared so that --help lists it and parsing accepts it
+  app.add_option("--module", modules,
+                 "load a module (a shared library built with the SDK, docs/modules.md) before anything else; "
+                 "repeatable. Also loaded: those in ROLLVIZ_MODULE_PATH and ~/.local/lib/rollviz/modules")
+      ->type_name("FILE");
   std::vector<Command> commands{
       addListCommand(app),   addDescribeCommand(app), addDescribeToolCommand(app), addIntegrateCommand(app),
       addRenderCommand(app), addVideoCommand(app),    addChartCommand(app),        addInfoCommand(app)};
-  for (const auto& tool : ToolRegistry::builtin().entries())
-    if (!tool.command.empty())
-      commands.push_back(
-          toolCommandBuilders().at(tool.command)(app.add_subcommand(tool.command, tool.commandHelp)));
+  for (const auto& tool : ToolRegistry::global().entries()) {
+    if (tool.command.empty()) continue;
+    auto* cmd = app.add_subcommand(tool.command, tool.commandHelp);
+    const auto builder = toolCommandBuilders().find(tool.command);
+    commands.push_back(builder != toolCommandBuilders().end() ? builder->second(cmd)
+                                                              : addRegisteredToolCommand(cmd, tool));
+  }
   GuiOptions guiOptions;
   if (gui) {
     auto* cmd = app.add_subcommand("gui", "open the GUI on a scene (the default with no arguments)");

@@ -62,6 +62,9 @@ Command addSurfaceCommand(CLI::App* cmd);
 Command addRamCommand(CLI::App* cmd);
 Command addDiagramCommand(CLI::App* cmd);
 Command addSweepCommand(CLI::App* cmd);
+/// The subcommand of a tool that runs through scenes/ToolRunner.h (a module's tool): SCENE, --set, a flag
+/// per setting of its section (--KEY), --json (its fields), -o (its table as CSV).
+Command addRegisteredToolCommand(CLI::App* cmd, const ToolEntry& tool);
 
 /// Draws a sweep's chart into a PNG (`rollviz sweep --png`, `rollviz chart --view sweep`).
 void writePngChart(const SweepChartData& data, const std::string& path, const std::string& size);

@@ -61,20 +61,20 @@ Command addListCommand(CLI::App& app) {
   return {cmd, [whatPtr] {
             const std::string& what = *whatPtr;
             if (what == "problems")
-              for (const auto& e : ModelRegistry::builtin().entries())
+              for (const auto& e : ModelRegistry::global().entries())
                 fmt::print("{}\n", e.info->id);
             else if (what == "integrators")
-              for (const auto& e : IntegratorRegistry::builtin().entries())
+              for (const auto& e : IntegratorRegistry::global().entries())
                 fmt::print("{:<10} {}\n", e.id, e.title);
             else if (what == "quantities")
               for (const auto& q : sweepQuantities())
                 fmt::print("{:<20} {}: {}\n", quantityName(q), toolOf(q), q.description);
             else if (what == "tools") {
               // the manual's tree: a child indented under its parent
-              const auto& tools = ToolRegistry::builtin().entries();
+              const auto& tools = ToolRegistry::global().entries();
               const auto depth = [&](const ToolEntry& e) {
                 int d = 0;
-                for (const ToolEntry* p = &e; !p->parent.empty(); p = &ToolRegistry::builtin().get(p->parent))
+                for (const ToolEntry* p = &e; !p->parent.empty(); p = &ToolRegistry::global().get(p->parent))
                   ++d;
                 return d;
               };
@@ -102,7 +102,7 @@ Command addDescribeToolCommand(CLI::App& app) {
   cmd->add_option("tool", *idPtr, "tool id (rollviz list tools)")->required();
   return {
       cmd, [idPtr] {
-        const ToolEntry& e = ToolRegistry::builtin().get(*idPtr);
+        const ToolEntry& e = ToolRegistry::global().get(*idPtr);
         fmt::print("{}\n  {}\n  {}\n  reference: {}\n", e.id, e.title, e.description, e.reference);
         fmt::print("  in the tool tree under: {}\n", e.parent.empty() ? "(the top)" : e.parent);
         fmt::print("  computation: {}\n", e.computation);
@@ -140,7 +140,7 @@ Command addDescribeCommand(CLI::App& app) {
   cmd->add_option("problem", *idPtr, "problem id (rollviz list problems)")->required();
   return {cmd, [idPtr] {
             const std::string& id = *idPtr;
-            const ModelEntry& entry = ModelRegistry::builtin().get(id);
+            const ModelEntry& entry = ModelRegistry::global().get(id);
             const ModelInfo& info = *entry.info;
             const auto model = entry.create(ParameterValues(info.parameters));
             fmt::print("{}\n  {}\n  reference: {}\n\nparameters (id, default, range, meaning):\n", info.id,
@@ -164,7 +164,7 @@ Command addDescribeCommand(CLI::App& app) {
             for (const auto& o : model->observables())
               fmt::print("  {:<10} {}\n", o.id, o.description);
             fmt::print("\nintegrators (scene \"integrator\" section, or --set integrator.ID=VALUE):\n");
-            for (const auto& e : IntegratorRegistry::builtin().entries()) {
+            for (const auto& e : IntegratorRegistry::global().entries()) {
               fmt::print(" {}: {}\n", e.id, e.title);
               printParameters(*e.parameters);
             }
@@ -184,8 +184,12 @@ Command addInfoCommand(CLI::App& app) {
             const char* eglFailure = std::getenv(kEglUnavailableVariable);
             if (*json) {
               nlohmann::ordered_json j;
+              j["modules"] = nlohmann::ordered_json::array();
               for (const auto& f : buildFacts())
-                j[f.name] = f.value;
+                if (f.name == "module")
+                  j["modules"].push_back(f.value);
+                else if (f.name != "modules")
+                  j[f.name] = f.value;
               j["renderer"] = {{"backend", r.backend},  {"context", r.context},   {"devices", r.devices},
                                {"vendor", r.vendor},    {"renderer", r.renderer}, {"version", r.version},
                                {"software", r.software}};

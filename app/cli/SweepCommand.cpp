@@ -33,6 +33,7 @@ namespace {
 struct SweepOptions {
   std::string sweep, output, png, size = "900x700", checkpoint;
   int threads = 0;
+  bool timing = false;
 };
 
 std::string duration(double seconds) {
@@ -82,19 +83,19 @@ void writeVti(const SweepSpec& spec, const SweepStore& store, const std::string&
   writeImageVti(path, image);
 }
 
-void writeCsv(const SweepSpec& spec, const SweepStore& store, const std::string& path,
+void writeCsv(const SweepSpec& spec, const SweepStore& store, const std::string& path, bool timing,
               const RecordSeen& seen) {
   AtomicFile csv(path, "-o");
   std::FILE* f = std::fopen(csv.tempPath().c_str(), "w");
   if (!f) throw InputError("-o " + path + ": cannot write");
   std::string line;
-  for (const auto& h : sweepCsvHeader(spec))
+  for (const auto& h : sweepCsvHeader(spec, timing))
     line += (line.empty() ? "" : ",") + h;
   std::fprintf(f, "%s\n", line.c_str());
   for (long i = 0; i < spec.points(); ++i) {
     const SweepRecord r = store.read(i);
     seen(r);
-    std::fprintf(f, "%s\n", sweepCsvRow(spec, i, r).c_str());
+    std::fprintf(f, "%s\n", sweepCsvRow(spec, i, r, timing).c_str());
   }
   const bool ok = std::fflush(f) == 0 && ::fsync(fileno(f)) == 0;
   std::fclose(f);
@@ -111,7 +112,7 @@ void writeResults(const SweepSpec& spec, const SweepStore& store, const SweepOpt
   if (hasExtension(o.output, ".vti"))
     writeVti(spec, store, o.output, seen);
   else
-    writeCsv(spec, store, o.output, seen);
+    writeCsv(spec, store, o.output, o.timing, seen);
   if (png) writePngChart(data, o.png, o.size);
 }
 
@@ -246,9 +247,11 @@ Command addSweepCommand(CLI::App* cmd) {
   cmd->add_option("sweep", o->sweep, "sweep file (JSON: scene, axes, quantity, set, options)")->required();
   cmd->add_option(
          "-o,--output", o->output,
-         "CSV file: the axes, the quantity's columns, seconds, status; a .vti file is image data for "
-         "ParaView (the axes as x, y; the columns and seconds as point data)")
+         "CSV file: the axes, the quantity's columns, status (the same file on any threads and ranks); a "
+         ".vti file is image data for ParaView (the axes as x, y; the columns and seconds as point data)")
       ->required();
+  cmd->add_flag("--timing", o->timing,
+                "add the CSV column seconds: what each point cost (the one column that differs between runs)");
   cmd->add_option("--png", o->png, "also draw the chart into this PNG");
   cmd->add_option("--size", o->size, "chart size WIDTHxHEIGHT")->capture_default_str();
   cmd->add_option("--threads", o->threads,

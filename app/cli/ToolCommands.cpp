@@ -9,6 +9,7 @@
 #include "dynamics/io/AtomicFile.h"
 #include "dynamics/tools/Megno.h"
 #include "render/export/VtkXmlFiles.h"
+#include "scenes/ToolRunner.h"
 
 #include <cmath>
 #include <cstdio>
@@ -177,7 +178,7 @@ Command addMegnoCommand(CLI::App* cmd) {
   addCheckpointOption(cmd, o->checkpoint);
   return {cmd, [o] {
             const Scene scene = o->scene.load();
-            MegnoSettings s = megnoSettings(scene.tool("megno"));
+            MegnoSettings s = scene.megno;
             if (o->time < 0 || !std::isfinite(o->time)) throw InputError("--time: must be positive");
             if (o->time > 0) s.maxTime = o->time;
             const RunSpec spec = scene.runSpec();
@@ -239,6 +240,59 @@ Command addSpectrumCommand(CLI::App* cmd) {
               printPeaks(s.function, r);
             }
             return interrupted() ? 130 : 0;
+          }};
+}
+
+Command addRegisteredToolCommand(CLI::App* cmd, const ToolEntry& tool) {
+  struct Options {
+    SceneArgs scene;
+    std::string output;
+    bool json = false;
+    std::map<std::string, std::string> settings; // --KEY of the settings table, by key
+  };
+  auto o = std::make_shared<Options>();
+  addSceneArgs(cmd, o->scene);
+  const ToolSection* section = findToolSection(tool.section);
+  if (section)
+    for (const auto& p : section->table->specs())
+      cmd->add_option("--" + p.id, o->settings[p.id],
+                      p.description + " (default: the scene's " + tool.section + "." + p.id + ")");
+  std::string fields;
+  for (const auto& out : tool.outputs)
+    fields += (fields.empty() ? "" : ", ") + out.name;
+  cmd->add_flag("--json", o->json, "print one JSON object: " + fields);
+  cmd->add_option("-o,--output", o->output, "CSV file: the tool's table (.csv)");
+  return {cmd, [o, &tool, section] {
+            std::vector<std::string> sets = o->scene.sets;
+            for (const auto& [key, value] : o->settings)
+              if (!value.empty()) sets.push_back(section->key + "." + key + "=" + value);
+            SceneArgs args{o->scene.scene, sets};
+            if (!o->output.empty() && !hasExtension(o->output, ".csv"))
+              throw InputError("-o " + o->output + ": unsupported format (supported: .csv)");
+            const Scene scene = args.load();
+            std::unique_ptr<Output> out;
+            if (!o->output.empty()) out = std::make_unique<Output>(o->output);
+            Progress progress(tool.id);
+            const ToolResult r = runTool(tool, scene, interruptibleControl(progress));
+            if (out) {
+              const auto& t = r.table;
+              for (std::size_t c = 0; c < t.names.size(); ++c)
+                std::fprintf(out->get(), "%s%s", c ? "," : "", t.names[c].c_str());
+              std::fprintf(out->get(), "\n");
+              for (long k = 0; k < t.rows(); ++k)
+                for (std::size_t c = 0; c < t.names.size(); ++c)
+                  std::fprintf(out->get(), "%.17g%s", t.values[c][static_cast<std::size_t>(k)],
+                               c + 1 < t.names.size() ? "," : "\n");
+              out->commit();
+            }
+            if (o->json)
+              fmt::print("{}\n", toolResultJson(r).dump());
+            else if (!out)
+              for (const auto& [name, value] : r.fields.items())
+                fmt::print("{} = {}\n", name,
+                           value.is_number_float() ? fmt::format("{:.10g}", value.get<double>())
+                                                   : value.dump());
+            return r.stopped || interrupted() ? 130 : 0;
           }};
 }
 

@@ -36,7 +36,7 @@ ControlPanel::ControlPanel(QWidget* parent) : QWidget(parent) {
   toolTree_ = new QTreeWidget;
   toolTree_->setHeaderLabels({"tool", "what it does"});
   std::map<std::string, QTreeWidgetItem*> items; // a parent comes before its children in the registry
-  for (const auto& e : ToolRegistry::builtin().entries()) {
+  for (const auto& e : ToolRegistry::global().entries()) {
     QTreeWidgetItem* parent = e.parent.empty() ? nullptr : items.at(e.parent);
     auto* it = parent ? new QTreeWidgetItem(parent) : new QTreeWidgetItem(toolTree_);
     it->setText(0, QString::fromStdString(e.title));
@@ -101,7 +101,7 @@ void ControlPanel::setScene(const Scene& scene) {
   };
   auto* problems = new QComboBox;
   problems->setObjectName("problem_choice");
-  for (const auto& e : ModelRegistry::builtin().entries()) {
+  for (const auto& e : ModelRegistry::global().entries()) {
     problems->addItem(QString::fromStdString(e.info->id));
     problems->setItemData(problems->count() - 1, QString::fromStdString(e.info->title), Qt::ToolTipRole);
   }
@@ -117,7 +117,7 @@ void ControlPanel::setScene(const Scene& scene) {
   if (!scene.model->isMap()) { // an explicit map is iterated: no method to choose
     methodBox_ = new QComboBox;
     methodBox_->setObjectName("method_choice");
-    for (const auto& e : IntegratorRegistry::builtin().entries()) {
+    for (const auto& e : IntegratorRegistry::global().entries()) {
       methodBox_->addItem(QString::fromStdString(e.id));
       methodBox_->setItemData(methodBox_->count() - 1,
                               QString::fromStdString(e.title + " (" + e.reference + ")"), Qt::ToolTipRole);
@@ -154,7 +154,7 @@ void ControlPanel::setScene(const Scene& scene) {
 
 bool ControlPanel::chooseMethod(const std::string& id) {
   const IntegratorEntry* entry = nullptr;
-  for (const auto& e : IntegratorRegistry::builtin().entries())
+  for (const auto& e : IntegratorRegistry::global().entries())
     if (e.id == id) entry = &e;
   if (!entry || !scene_ || !methodScroll_) return false;
   if (id == method_) return true;

@@ -673,7 +673,7 @@ void MainWindow::createTool(const std::string& id) {
   if (const auto it = onTheMap.find(id); it != onTheMap.end())
     it->second();
   else
-    openChart(ToolRegistry::builtin().get(id).chartView);
+    openChart(ToolRegistry::global().get(id).chartView);
 }
 
 void MainWindow::diagramDialog() {

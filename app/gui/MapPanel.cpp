@@ -760,7 +760,7 @@ Rgb MapPanel::megnoColour(double megno) {
 
 void MapPanel::startMegno(Series& s) {
   if (s.megnoJob) return;
-  auto task = std::make_unique<MegnoTask>(s.task->spec(), megnoSettings(scene_->tool("megno")));
+  auto task = std::make_unique<MegnoTask>(s.task->spec(), scene_->megno);
   s.megno = task.get();
   s.megnoJob = &jobs_.add(std::move(task), s.job);
   s.megnoJob->start();

@@ -13,6 +13,7 @@
 #include "render/context/HeadlessContext.h"
 #include "render/export/VtkXmlFiles.h"
 #include "render/video/VideoExport.h"
+#include "scenes/ModuleLoader.h"
 #include "scenes/SceneCharts.h"
 
 #include <cmath>
@@ -237,7 +238,7 @@ pyb::array_t<unsigned char> chart(const Scene& shared, const std::string& view, 
 }
 
 pyb::dict describeProblem(const std::string& id) {
-  const ModelEntry& entry = ModelRegistry::builtin().get(id);
+  const ModelEntry& entry = ModelRegistry::global().get(id);
   const ModelInfo& info = *entry.info;
   const auto model = entry.create(ParameterValues(info.parameters));
   pyb::dict d;
@@ -269,6 +270,25 @@ PYBIND11_MODULE(_rollviz, m) {
   using namespace rv::py;
   namespace pyb = pybind11;
   m.doc() = "rollviz: bodies rolling without slipping, and the tools of nonlinear dynamics (C++ core)";
+  // the modules of ROLLVIZ_MODULE_PATH and ~/.local/lib/rollviz/modules, before the package builds its
+  // methods
+  loadModules({}, [](const std::string& w) {
+    pyb::print("rollviz: warning:", w, pyb::arg("file") = pyb::module_::import("sys").attr("stderr"));
+  });
+  m.def(
+      "modules",
+      [] {
+        pyb::list out;
+        for (const auto& mod : loadedModules()) {
+          pyb::dict d;
+          d["path"] = mod.path, d["problems"] = mod.models, d["tools"] = mod.tools;
+          d["integrators"] = mod.integrators;
+          out.append(d);
+        }
+        return out;
+      },
+      "The modules loaded (ROLLVIZ_MODULE_PATH, ~/.local/lib/rollviz/modules): path, problems, tools, "
+      "integrators each added.");
 
   static pyb::exception<ComputationError> computationError(m, "ComputationError", PyExc_RuntimeError);
   // by value: pybind11 takes a plain function pointer of this signature
@@ -286,7 +306,7 @@ PYBIND11_MODULE(_rollviz, m) {
       "problems",
       [] {
         pyb::list out;
-        for (const auto& e : ModelRegistry::builtin().entries()) {
+        for (const auto& e : ModelRegistry::global().entries()) {
           pyb::dict d;
           d["id"] = e.info->id, d["title"] = e.info->title;
           out.append(d);
@@ -301,7 +321,7 @@ PYBIND11_MODULE(_rollviz, m) {
       "integrators",
       [] {
         pyb::list out;
-        for (const auto& e : IntegratorRegistry::builtin().entries()) {
+        for (const auto& e : IntegratorRegistry::global().entries()) {
           pyb::dict d;
           d["id"] = e.id, d["title"] = e.title;
           d["parameters"] = describeTable(*e.parameters);
@@ -317,7 +337,7 @@ PYBIND11_MODULE(_rollviz, m) {
                            "tool settings (rollviz's scene file).");
   scene
       .def(pyb::init([](const std::string& problem, const pyb::kwargs& kw) {
-             ModelRegistry::builtin().get(problem); // ValueError listing the problems
+             ModelRegistry::global().get(problem); // ValueError listing the problems
              return loadScene(defaultScenePath(problem), overridesOf(kw));
            }),
            pyb::arg("problem"),

@@ -13,6 +13,7 @@
 #include "dynamics/tools/ToolSettings.h"
 #include "scenes/SceneTools.h"
 #include "scenes/Sweep.h"
+#include "scenes/ToolRunner.h"
 
 #include <cmath>
 #include <filesystem>
@@ -114,8 +115,7 @@ pyb::object megno(Call& c) {
     const RunSpec spec = c.scene.runSpec();
     const Model& model = *c.scene.model;
     MegnoRun run(
-        model, [&] { return spec.makeIntegrator(model); }, c.scene.initialState,
-        megnoSettings(c.scene.tool("megno")));
+        model, [&] { return spec.makeIntegrator(model); }, c.scene.initialState, c.scene.megno);
     run.run(
         [&](const MegnoEstimate& e) {
           t.push_back(e.time), y.push_back(e.y), mean.push_back(e.megno), fli.push_back(e.fli);
@@ -477,7 +477,7 @@ const std::map<std::string, Runner>& runners() {
 std::vector<std::string> sectionsOf(const ToolEntry& tool) {
   std::vector<std::string> out;
   for (const ToolEntry* t = &tool; t;
-       t = t->parent.empty() ? nullptr : &ToolRegistry::builtin().get(t->parent))
+       t = t->parent.empty() ? nullptr : &ToolRegistry::global().get(t->parent))
     if (!t->section.empty() && std::find(out.begin(), out.end(), t->section) == out.end())
       out.push_back(t->section);
   for (const auto& s : tool.alsoSections)
@@ -511,14 +511,35 @@ SceneOverride placeKeyword(const Scene& scene, const ToolEntry& tool, const std:
   throw InputError(valueError ? *valueError : *firstError);
 }
 
+// a tool that runs through scenes/ToolRunner.h: its fields, and its table's columns as arrays
+pyb::object registeredTool(const ToolEntry& tool, Call& c) {
+  ToolResult r;
+  runJob(c.progress, [&](const ToolControl& control) { r = rv::runTool(tool, c.scene, control); });
+  pyb::dict d = pyb::module_::import("json").attr("loads")(toolResultJson(r).dump());
+  for (std::size_t k = 0; k < r.table.names.size(); ++k)
+    if (!d.contains(r.table.names[k].c_str()))
+      d[r.table.names[k].c_str()] = toArray(std::vector<double>(r.table.values[k]));
+  return d;
+}
+
+// the Python call of a tool: written here, or the generic one of a tool with a runner
+const Runner* runnerOf(const ToolEntry& tool) {
+  if (const auto it = runners().find(tool.id); it != runners().end()) return &it->second;
+  if (!findToolRunner(tool.id)) return nullptr;
+  static std::map<std::string, Runner> generic;
+  auto [it, fresh] = generic.try_emplace(tool.id);
+  if (fresh) it->second.run = [&tool](Call& c) { return registeredTool(tool, c); };
+  return &it->second;
+}
+
 pyb::object runTool(const Scene& scene, const std::string& id, const pyb::object& progress,
                     const pyb::kwargs& kw) {
-  const ToolEntry& tool = ToolRegistry::builtin().get(id);
-  const auto it = runners().find(id);
-  if (it == runners().end())
+  const ToolEntry& tool = ToolRegistry::global().get(id);
+  const Runner* found = runnerOf(tool);
+  if (!found)
     throw InputError(id + ": not a tool of a scene" +
                      (id == "sweep" ? " (rollviz.sweep(path) runs a sweep file)" : ""));
-  const Runner& runner = it->second;
+  const Runner& runner = *found;
   Call call{scene, {}, progress};
   std::vector<SceneOverride> overrides;
   for (const auto& [k, v] : kw) {
@@ -551,9 +572,11 @@ pyb::dict toolDict(const ToolEntry& e) {
   d["sweep_quantities"] = quantities;
   std::vector<std::string> sections = sectionsOf(e);
   d["sections"] = sections;
-  const auto it = runners().find(e.id);
-  d["arguments"] = it == runners().end() ? std::vector<std::string>{} : it->second.args;
-  d["arguments_help"] = it == runners().end() ? std::string() : it->second.help;
+  const Runner* runner = runnerOf(e);
+  d["arguments"] = runner ? runner->args : std::vector<std::string>{};
+  d["arguments_help"] = runner ? runner->help : std::string();
+  d["origin"] = e.origin;
+  d["runner"] = findToolRunner(e.id) != nullptr; // runs through scenes/ToolRunner.h (every front end derived)
   return d;
 }
 
@@ -618,7 +641,7 @@ pyb::object sweep(const std::string& path, int threads, const pyb::object& progr
 void bindTools(pyb::module_& m, pyb::class_<Scene>& scene) {
   m.def("_tools", [] {
     pyb::list out;
-    for (const auto& e : ToolRegistry::builtin().entries())
+    for (const auto& e : ToolRegistry::global().entries())
       out.append(toolDict(e));
     return out;
   });

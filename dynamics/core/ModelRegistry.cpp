@@ -4,8 +4,8 @@
 
 namespace rv {
 
-const ModelRegistry& ModelRegistry::builtin() {
-  static const ModelRegistry registry = [] {
+ModelRegistry& ModelRegistry::mutableGlobal() {
+  static ModelRegistry registry = [] {
     ModelRegistry r;
     registerBuiltinModels(r);
     return r;
@@ -13,8 +13,24 @@ const ModelRegistry& ModelRegistry::builtin() {
   return registry;
 }
 
+const ModelRegistry& ModelRegistry::global() {
+  return mutableGlobal();
+}
+
 void ModelRegistry::add(ModelEntry entry) {
+  if (const ModelEntry* e = find(entry.info->id))
+    throw InputError(alreadyRegistered("problem", entry.info->id, e->origin));
   entries_.push_back(std::move(entry));
+}
+
+const ModelEntry* ModelRegistry::find(const std::string& id) const {
+  for (const auto& e : entries_)
+    if (e.info->id == id) return &e;
+  return nullptr;
+}
+
+std::string alreadyRegistered(const std::string& kind, const std::string& id, const std::string& origin) {
+  return kind + " '" + id + "' is already registered by " + (origin.empty() ? "rollviz itself" : origin);
 }
 
 const ModelEntry& ModelRegistry::get(const std::string& id) const {

@@ -1,6 +1,7 @@
 #include "dynamics/integrators/Integrator.h"
 
 #include "dynamics/core/Errors.h"
+#include "dynamics/core/ModelRegistry.h"
 #include "dynamics/integrators/Adams.h"
 #include "dynamics/integrators/Everhart.h"
 #include "dynamics/integrators/Merson.h"
@@ -80,8 +81,24 @@ void Integrator::hermite(double t, const Eigen::VectorXd& fPrev, const Eigen::Ve
         ((s3 - s2) * h) * f;
 }
 
-const IntegratorRegistry& IntegratorRegistry::builtin() {
-  static const IntegratorRegistry registry = [] {
+const IntegratorRegistry& IntegratorRegistry::global() {
+  return mutableGlobal();
+}
+
+void IntegratorRegistry::add(IntegratorEntry entry) {
+  if (const IntegratorEntry* e = find(entry.id))
+    throw InputError(alreadyRegistered("integrator", entry.id, e->origin));
+  entries_.push_back(std::move(entry));
+}
+
+const IntegratorEntry* IntegratorRegistry::find(const std::string& id) const {
+  for (const auto& e : entries_)
+    if (e.id == id) return &e;
+  return nullptr;
+}
+
+IntegratorRegistry& IntegratorRegistry::mutableGlobal() {
+  static IntegratorRegistry registry = [] {
     IntegratorRegistry r;
     r.add(Rk4::entry());
     r.add(Merson::entry());

@@ -67,6 +67,10 @@ protected:
   Eigen::VectorXd x_, xPrev_;
 };
 
+/// Makes a fresh integrator of a run's method and settings: what tools that restart integrations take
+/// (RunSpec::makeIntegrator, dynamics/jobs/RunSpec.h).
+using IntegratorFactory = std::function<std::unique_ptr<Integrator>()>;
+
 /// A registered method: its parameter table and a factory.
 struct IntegratorEntry {
   std::string id;        ///< "rk4", "merson", "everhart"
@@ -75,13 +79,21 @@ struct IntegratorEntry {
   const ParameterTable* parameters;
   /// Builds the integrator; throws InputError naming the parameter when values are inconsistent.
   std::function<std::unique_ptr<Integrator>(const ParameterValues&)> create;
+  /// Where it comes from: "" for rollviz's own, else the module file that registered it.
+  std::string origin = {};
 };
 
 /// All integration methods by name.
 class IntegratorRegistry {
 public:
-  static const IntegratorRegistry& builtin();
-  void add(IntegratorEntry entry) { entries_.push_back(std::move(entry)); }
+  /// Every method: the built-in ones and those the loaded modules added (scenes/ModuleLoader.h).
+  static const IntegratorRegistry& global();
+  /// The same registry, for the module loader to add to (before any other use).
+  static IntegratorRegistry& mutableGlobal();
+  /// Adds an entry; throws InputError naming both origins when the id is taken.
+  void add(IntegratorEntry entry);
+  /// The entry with this id, or nullptr.
+  const IntegratorEntry* find(const std::string& id) const;
   /// The entry with this id; throws InputError listing the known ids when there is none.
   const IntegratorEntry& get(const std::string& id) const;
   const std::vector<IntegratorEntry>& entries() const { return entries_; }

@@ -46,8 +46,6 @@ struct LyapunovResult {
   bool stopped = false; ///< stopped by request before maxTime
 };
 
-using IntegratorFactory = std::function<std::unique_ptr<Integrator>()>;
-
 class TangentSystem;
 
 /// The algorithm as a resumable computation: run() goes on from where a stop left it.

@@ -1,7 +1,7 @@
 #include "dynamics/tools/PlotFilter.h"
 
 #include "dynamics/core/Errors.h"
-#include "dynamics/core/TimeSampler.h"
+#include "dynamics/integrators/TimeSampler.h"
 
 #include <algorithm>
 #include <cmath>

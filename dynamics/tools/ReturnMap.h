@@ -11,7 +11,7 @@
 // Holmes, Nonlinear Oscillations (1983) §1.5; Parker & Chua, Practical Numerical Algorithms for Chaotic
 // Systems (1989) ch. 5).
 #pragma once
-#include "dynamics/tools/Lyapunov.h"
+#include "dynamics/integrators/Integrator.h"
 #include "dynamics/tools/PoincareMap.h"
 
 #include <Eigen/Core>

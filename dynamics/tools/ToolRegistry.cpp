@@ -2,6 +2,7 @@
 #include "dynamics/tools/VideoSettings.h"
 
 #include "dynamics/core/Errors.h"
+#include "dynamics/core/ModelRegistry.h"
 #include "dynamics/tools/FourierSpectrum.h"
 #include "dynamics/tools/Megno.h"
 #include "dynamics/tools/PlotFilter.h"
@@ -10,8 +11,9 @@
 
 namespace rv {
 
-const std::vector<ToolSection>& toolSections() {
-  static const std::vector<ToolSection> s{
+namespace {
+std::vector<ToolSection>& sections() {
+  static std::vector<ToolSection> s{
       {"poincare", "Poincaré map", &poincareTable(), "section"},
       {"spectrum", "Fourier spectrum", &spectrumTable(), "function"},
       {"fixedpoint", "Fixed point finding", &fixedPointTable()},
@@ -26,6 +28,17 @@ const std::vector<ToolSection>& toolSections() {
   };
   return s;
 }
+} // namespace
+
+const std::vector<ToolSection>& toolSections() {
+  return sections();
+}
+
+void addToolSection(ToolSection section) {
+  if (const ToolSection* s = findToolSection(section.key))
+    throw InputError(alreadyRegistered("settings section", section.key, s->origin));
+  sections().push_back(std::move(section));
+}
 
 const ToolSection* findToolSection(const std::string& key) {
   for (const auto& s : toolSections())
@@ -33,8 +46,22 @@ const ToolSection* findToolSection(const std::string& key) {
   return nullptr;
 }
 
-const ToolRegistry& ToolRegistry::builtin() {
-  static const ToolRegistry r = [] {
+const ToolRegistry& ToolRegistry::global() {
+  return mutableGlobal();
+}
+
+void ToolRegistry::add(ToolEntry entry) {
+  if (const ToolEntry* e = find(entry.id)) throw InputError(alreadyRegistered("tool", entry.id, e->origin));
+  if (!entry.command.empty())
+    for (const auto& e : entries_)
+      if (e.command == entry.command) throw InputError(alreadyRegistered("command", entry.command, e.origin));
+  if (!entry.parent.empty() && !find(entry.parent))
+    throw InputError("tool '" + entry.id + "': its parent '" + entry.parent + "' is not registered");
+  entries_.push_back(std::move(entry));
+}
+
+ToolRegistry& ToolRegistry::mutableGlobal() {
+  static ToolRegistry r = [] {
     ToolRegistry t;
     const auto add = [&t](ToolEntry e) { t.entries_.push_back(std::move(e)); };
     add({.id = "poincare",

@@ -20,12 +20,16 @@ struct ToolSection {
   /// The section's text setting that names one of the model's observables ("section" of the Poincare map,
   /// "function" of the spectrum), chosen in the GUI beside the table; "" when it has none.
   std::string observableKey = {};
+  /// Where it comes from: "" for rollviz's own, else the module file that registered it.
+  std::string origin = {};
 };
 
 /// One field of a tool's output (a CSV column or a JSON field).
 struct ToolOutput {
   std::string name;
   std::string description;
+  /// A number a sweep can chart as the quantity "TOOL.NAME" (a tool that runs through scenes/ToolRunner.h).
+  bool quantity = false;
 };
 
 /// A registered tool.
@@ -46,12 +50,20 @@ struct ToolEntry {
   std::vector<std::string> alsoSections = {};
   /// Settings kept outside scenes (a sweep file's "options"), or nullptr.
   const ParameterTable* options = nullptr;
+  /// Where it comes from: "" for rollviz's own, else the module file that registered it.
+  std::string origin = {};
 };
 
 /// All tools, in the order of the manual's tree (a parent before its children).
 class ToolRegistry {
 public:
-  static const ToolRegistry& builtin();
+  /// Every tool: rollviz's own and those the loaded modules added (scenes/ModuleLoader.h).
+  static const ToolRegistry& global();
+  /// The same registry, for the module loader to add to (before any other use).
+  static ToolRegistry& mutableGlobal();
+  /// Adds an entry (its parent, when it names one, must be registered); throws InputError naming both origins
+  /// when the id or the command is taken.
+  void add(ToolEntry entry);
   const std::vector<ToolEntry>& entries() const { return entries_; }
   /// The entry with this id, or nullptr.
   const ToolEntry* find(const std::string& id) const;
@@ -66,5 +78,7 @@ private:
 const std::vector<ToolSection>& toolSections();
 /// The section with this scene key, or nullptr.
 const ToolSection* findToolSection(const std::string& key);
+/// Adds a module's settings section (before any scene is loaded); InputError when the key is taken.
+void addToolSection(ToolSection section);
 
 } // namespace rv

@@ -21,13 +21,13 @@ using namespace rv;
 namespace odeint = boost::numeric::odeint;
 
 std::unique_ptr<Model> make(const std::string& id) {
-  const auto& e = ModelRegistry::builtin().get(id);
+  const auto& e = ModelRegistry::global().get(id);
   return e.create(ParameterValues(e.info->parameters));
 }
 
 // the default scene's start of chaplygin_ball: map point (0.5, 0.2) at E = 0.5, c = 0.3, K = (0.2, 0.1, 0.3)
 std::unique_ptr<Model> chaplygin() {
-  const auto& e = ModelRegistry::builtin().get("chaplygin_ball");
+  const auto& e = ModelRegistry::global().get("chaplygin_ball");
   ParameterValues p(e.info->parameters);
   p.set("K1", 0.2), p.set("K2", 0.1), p.set("K3", 0.3);
   return e.create(p);

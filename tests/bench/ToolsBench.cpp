@@ -28,7 +28,7 @@ using namespace rv;
 
 std::unique_ptr<Model> make(const std::string& id,
                             std::initializer_list<std::pair<const char*, double>> set = {}) {
-  const auto& e = ModelRegistry::builtin().get(id);
+  const auto& e = ModelRegistry::global().get(id);
   ParameterValues p(e.info->parameters);
   for (const auto& [k, v] : set)
     p.set(k, v);
@@ -263,7 +263,7 @@ void JobThroughput(benchmark::State& state) {
     JobTree tree;
     std::vector<PoincareTask*> tasks;
     for (int j = 0; j < jobs; ++j) {
-      RunSpec s(ModelRegistry::builtin().get("henon_heiles"), IntegratorRegistry::builtin().get("everhart"));
+      RunSpec s(ModelRegistry::global().get("henon_heiles"), IntegratorRegistry::global().get("everhart"));
       s.integratorParameters.set("step", 0.05);
       s.initialState = s.makeModel()->stateFromMap({0.1 + 0.01 * j, 0.1}, {}, "bench");
       auto task = std::make_unique<PoincareTask>(s, SectionSettings{.maxPoints = 0});

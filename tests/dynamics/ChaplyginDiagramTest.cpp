@@ -45,7 +45,7 @@ const Case kZeroK2HugeC{"K2 = 0, c = 2", {1.2, 1.5, 2.1}, 1.0, 1.0, {0.3, 0.0, 0
 const Case kScene{"scene", {1.0, 1.4, 1.9}, 1.0, 1.0, {0.2, 0.1, 0.3}, 0.3}; // scenes/chaplygin_ball.json
 
 std::unique_ptr<Model> makeBall(const Case& k, double diagramN = 1.0, double energy = 0.5) {
-  const ModelEntry& e = ModelRegistry::builtin().get("chaplygin_ball");
+  const ModelEntry& e = ModelRegistry::global().get("chaplygin_ball");
   ParameterValues p(e.info->parameters);
   const char* names[3][2] = {{"I1", "K1"}, {"I2", "K2"}, {"I3", "K3"}};
   for (int i = 0; i < 3; ++i)

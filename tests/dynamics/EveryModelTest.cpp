@@ -32,7 +32,7 @@ Eigen::VectorXd genericState(const Model& m) {
 }
 
 TEST_P(EveryModel, JacobianMatchesFiniteDifferencesAndObservablesEvaluate) {
-  const auto& entry = ModelRegistry::builtin().get(GetParam());
+  const auto& entry = ModelRegistry::global().get(GetParam());
   const auto m = entry.create(ParameterValues(entry.info->parameters));
   const int n = m->dimension();
   const Eigen::VectorXd x = genericState(*m);
@@ -80,7 +80,7 @@ TEST_P(EveryModel, JacobianMatchesFiniteDifferencesAndObservablesEvaluate) {
 // with small Everhart steps of another formulation (interpolation polynomials of the right-hand side),
 // including inside a step (the series as dense output), and a step back returns to the start.
 TEST_P(EveryModel, TaylorExpandsTheFieldWithNoCodeOfItsOwn) {
-  const auto& entry = ModelRegistry::builtin().get(GetParam());
+  const auto& entry = ModelRegistry::global().get(GetParam());
   const auto m = entry.create(ParameterValues(entry.info->parameters));
   Taylor taylor(1e-15, 0);
   if (m->isMap()) {
@@ -124,7 +124,7 @@ TEST_P(EveryModel, TaylorExpandsTheFieldWithNoCodeOfItsOwn) {
 // Lyapunov spectra with rk4 take the fused path (the tangent equations compiled into the steps): it must take
 // the very steps the rk4 integrator takes on the variational system, for every number of vectors.
 TEST_P(EveryModel, FusedTangentStepsAreTheRk4IntegratorsSteps) {
-  const auto& entry = ModelRegistry::builtin().get(GetParam());
+  const auto& entry = ModelRegistry::global().get(GetParam());
   const auto m = entry.create(ParameterValues(entry.info->parameters));
   const int c = m->info().coreDimension;
   for (int k = 1; k <= c; ++k) {
@@ -159,7 +159,7 @@ INSTANTIATE_TEST_SUITE_P(Registry, EveryModel,
 
 TEST(EveryModel, TheListAboveIsTheRegistry) {
   std::vector<std::string> ids;
-  for (const auto& e : ModelRegistry::builtin().entries())
+  for (const auto& e : ModelRegistry::global().entries())
     ids.push_back(e.info->id);
   EXPECT_EQ(ids, (std::vector<std::string>{"paraboloid_on_plane", "ellipsoid_on_plane", "ball_on_ellipsoid",
                                            "ball_on_paraboloid", "chaplygin_ball", "lorenz", "henon_heiles",

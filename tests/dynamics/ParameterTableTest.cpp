@@ -26,7 +26,7 @@ TEST(ParameterTable, RejectsUnknownIdsAndOutOfRangeValuesByName) {
 }
 
 TEST(ModelRegistry, HasTheContractIdsAndUnknownIdsListTheKnownOnes) {
-  const auto& r = ModelRegistry::builtin();
+  const auto& r = ModelRegistry::global();
   EXPECT_EQ(r.get("chaplygin_ball").info->id, "chaplygin_ball");
   EXPECT_EQ(r.get("lorenz").info->id, "lorenz");
   try {
@@ -38,7 +38,7 @@ TEST(ModelRegistry, HasTheContractIdsAndUnknownIdsListTheKnownOnes) {
 }
 
 TEST(ModelRegistry, EveryModelsDefaultsBuildAndItsObservablesEvaluate) {
-  for (const auto& e : ModelRegistry::builtin().entries()) {
+  for (const auto& e : ModelRegistry::global().entries()) {
     const auto m = e.create(ParameterValues(e.info->parameters));
     EXPECT_EQ(m->dimension(), static_cast<int>(e.info->stateNames.size()));
     EXPECT_GE(m->findObservable("t"), 0) << e.info->id;

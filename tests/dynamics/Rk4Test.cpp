@@ -3,7 +3,7 @@
 #include "dynamics/integrators/Rk4.h"
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/ModelWithField.h"
-#include "dynamics/core/TimeSampler.h"
+#include "dynamics/integrators/TimeSampler.h"
 #include "dynamics/integrators/Everhart.h"
 #include "dynamics/integrators/Merson.h"
 #include "tests/dynamics/TestModels.h"

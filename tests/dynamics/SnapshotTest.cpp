@@ -25,9 +25,9 @@ std::unique_ptr<Integrator> make(const IntegratorEntry& e) {
 TEST(Snapshot, EveryIntegratorResumesBitIdentically) {
   const auto m = test::makeModel("henon_heiles", {});
   std::vector<std::pair<const IntegratorEntry*, bool>> cases; // every method, and Everhart's adaptive step
-  for (const auto& e : IntegratorRegistry::builtin().entries())
+  for (const auto& e : IntegratorRegistry::global().entries())
     cases.emplace_back(&e, false);
-  cases.emplace_back(&IntegratorRegistry::builtin().get("everhart"), true);
+  cases.emplace_back(&IntegratorRegistry::global().get("everhart"), true);
   for (const auto& [entry, adaptive] : cases) {
     const IntegratorEntry& e = *entry;
     SCOPED_TRACE(e.id + (adaptive ? " adaptive" : ""));
@@ -62,7 +62,7 @@ TEST(Snapshot, EveryIntegratorResumesBitIdentically) {
 TEST(Snapshot, RestoringTheWrongKindOfStateIsAnInputError) {
   const auto m3 = test::makeModel("lorenz", {});
   const auto m4 = test::makeModel("henon_heiles", {});
-  const auto& rk4 = IntegratorRegistry::builtin().get("rk4");
+  const auto& rk4 = IntegratorRegistry::global().get("rk4");
   auto a = make(rk4);
   a->start(*m3, 0, Eigen::VectorXd::Ones(3));
   Snapshot saved;
@@ -77,7 +77,7 @@ TEST(Snapshot, RestoringTheWrongKindOfStateIsAnInputError) {
 
 TEST(Snapshot, PoincareMapResumesBetweenStepsBitIdentically) {
   const auto m = test::makeModel("henon_heiles", {});
-  const auto& everhart = IntegratorRegistry::builtin().get("everhart");
+  const auto& everhart = IntegratorRegistry::global().get("everhart");
   SectionSettings s; // the model's default section
   const auto build = [&] {
     auto integ = make(everhart);
@@ -124,7 +124,7 @@ TEST(Snapshot, LyapunovRunResumesBitIdentically) {
     // of 5000 steps (h = 1e-3) have one inside them
     s.interval = tangent ? 5 : 0.5;
     s.maxTime = 60;
-    const auto factory = [] { return make(IntegratorRegistry::builtin().get("rk4")); };
+    const auto factory = [] { return make(IntegratorRegistry::global().get("rk4")); };
     const LyapunovResult whole = lyapunovExponents(*m, factory, x0, s);
     // stopped in the middle of an interval, saved, restored into a fresh run
     LyapunovRun first(*m, factory, x0, s);

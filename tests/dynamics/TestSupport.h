@@ -18,7 +18,7 @@ inline double tol(double t) {
 /// A model by id with some parameters changed from their defaults.
 inline std::unique_ptr<Model> makeModel(const std::string& id,
                                         std::initializer_list<std::pair<const char*, double>> set) {
-  const ModelEntry& e = ModelRegistry::builtin().get(id);
+  const ModelEntry& e = ModelRegistry::global().get(id);
   ParameterValues p(e.info->parameters);
   for (const auto& [k, v] : set)
     p.set(k, v);

@@ -167,7 +167,7 @@ private slots:
   }
 
   void actsOnTheSelectedJob() {
-    RunSpec spec(ModelRegistry::builtin().get("henon_heiles"), IntegratorRegistry::builtin().get("everhart"));
+    RunSpec spec(ModelRegistry::global().get("henon_heiles"), IntegratorRegistry::global().get("everhart"));
     spec.initialState = spec.makeModel()->stateFromMap({0.1, 0.1}, {}, "test");
     JobTree jobs;
     Job& trajectory = jobs.add(std::make_unique<PoincareTask>(spec, SectionSettings{.maxPoints = 0}));

@@ -19,7 +19,7 @@ using test::waitFor;
 
 MapTaskSpec spec(const char* model, std::initializer_list<std::pair<const char*, double>> params,
                  Eigen::VectorXd guess) {
-  MapTaskSpec s{RunSpec(ModelRegistry::builtin().get(model), IntegratorRegistry::builtin().get("everhart"))};
+  MapTaskSpec s{RunSpec(ModelRegistry::global().get(model), IntegratorRegistry::global().get("everhart"))};
   for (const auto& [k, v] : params)
     s.run.modelParameters.set(k, v);
   s.run.integratorParameters.set("step", 0.05);

@@ -22,7 +22,7 @@ namespace {
 using namespace std::chrono_literals;
 
 RunSpec henonHeiles(double energy = 0.125) {
-  RunSpec s(ModelRegistry::builtin().get("henon_heiles"), IntegratorRegistry::builtin().get("everhart"));
+  RunSpec s(ModelRegistry::global().get("henon_heiles"), IntegratorRegistry::global().get("everhart"));
   s.modelParameters.set("energy", energy);
   s.integratorParameters.set("step", 0.05);
   s.initialState = s.makeModel()->stateFromMap({0.1, 0.1}, {}, "t");
@@ -387,7 +387,7 @@ TEST(PoincareTask, MemoryStaysBoundedWhileAMapStreamsTenMillionPoints) {
 #else
   const long n = 10000000;
 #endif
-  RunSpec spec(ModelRegistry::builtin().get("standard_map"), IntegratorRegistry::builtin().get("rk4"));
+  RunSpec spec(ModelRegistry::global().get("standard_map"), IntegratorRegistry::global().get("rk4"));
   spec.modelParameters.set("K", 0.9);
   spec.initialState = Eigen::Vector2d(3.0, 0.7);
   SectionSettings settings;

@@ -13,7 +13,7 @@ namespace rv {
 namespace {
 
 std::unique_ptr<Model> lorenz() {
-  const auto& e = ModelRegistry::builtin().get("lorenz");
+  const auto& e = ModelRegistry::global().get("lorenz");
   return e.create(ParameterValues(e.info->parameters));
 }
 

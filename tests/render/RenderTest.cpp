@@ -1,6 +1,6 @@
 // Headless render tests, built twice: against the EGL backend and against OSMesa. Both compare with the same
 // baselines, so passing both also shows that the backends agree.
-#include "dynamics/core/TimeSampler.h"
+#include "dynamics/integrators/TimeSampler.h"
 #include "render/Snapshot.h"
 #include "render/VisualScene.h"
 #include "render/context/HeadlessContext.h"

@@ -8,18 +8,19 @@
     r = s.lyapunov(time=1000)                # r.exponents, r.converged, r.t, r.history
     img = s.render(size=(640, 480), time=5)  # H x W x 3 uint8
 
-Every registered tool (rollviz.tools()) is a Scene method; its keyword arguments are the settings of its
+Every registered tool (rollviz.tools()) is a Scene method, those of the modules loaded at import
+(rollviz.modules(): ROLLVIZ_MODULE_PATH, ~/.local/lib/rollviz/modules; docs/modules.md) too; its keyword arguments are the settings of its
 scene section (s.megno(time=1e4) sets megno.time for that call), of the sections of the tools it hangs under
 (s.continuation(guess=[...]) is fixedpoint.guess), or any dotted scene key. Bad input raises ValueError with
 the command line's message, a failed computation rollviz.ComputationError; long calls release the GIL, take
 progress=callable(fraction) and stop on Ctrl-C with KeyboardInterrupt.
 """
 
-from ._rollviz import ComputationError, Scene, describe, integrators, problems, scenes_directory, sweep
+from ._rollviz import ComputationError, Scene, describe, integrators, modules, problems, scenes_directory, sweep
 from ._rollviz import _tools
 
-__all__ = ["ComputationError", "Result", "Scene", "describe", "integrators", "problems", "scenes_directory",
-           "sweep", "tools"]
+__all__ = ["ComputationError", "Result", "Scene", "describe", "integrators", "modules", "problems",
+           "scenes_directory", "sweep", "tools"]
 
 
 class Result(dict):

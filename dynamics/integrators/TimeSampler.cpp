@@ -1,4 +1,4 @@
-#include "dynamics/core/TimeSampler.h"
+#include "dynamics/integrators/TimeSampler.h"
 
 namespace rv {
 
