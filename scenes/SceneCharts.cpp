@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fmt/core.h>
 
 namespace rv {
 
@@ -271,6 +272,24 @@ std::unique_ptr<Chart> surfaceChart(const Scene& scene, const ChartRequest& r, c
 
 std::unique_ptr<Chart> ramChart(const Scene& scene, const ChartRequest& r, const ToolControl& control) {
   return gridChart(scene, r, MapGrid::Kind::AllowedRegion, control);
+}
+
+// a tool that runs through ToolRunner.h: its own chart, or its table's columns against the first
+std::unique_ptr<Chart> toolResultChart(const ToolEntry& tool, const Scene& scene, const ToolResult& result) {
+  if (const ToolRunner* runner = findToolRunner(tool.id); runner && runner->chart)
+    return runner->chart(scene, result);
+  const auto& t = result.table;
+  if (t.names.size() < 2) throw InputError("tool '" + tool.id + "' has no table to draw");
+  auto chart = std::make_unique<PoincareChart>(t.names[0], tool.title);
+  std::vector<std::vector<double>> ys(t.values.begin() + 1, t.values.end());
+  std::vector<std::string> names(t.names.begin() + 1, t.names.end());
+  drawCurves(*chart, t.values[0], ys, {}, names);
+  std::string title = tool.title;
+  for (const auto& o : tool.outputs)
+    if (o.quantity && result.fields.contains(o.name) && result.fields[o.name].is_number())
+      title += fmt::format("  {} = {:.6g}", o.name, result.fields[o.name].get<double>());
+  chart->setTitle(title);
+  return chart;
 }
 
 const std::vector<std::pair<std::string, ChartBuilder>>& chartBuilders() {

@@ -1,8 +1,6 @@
 #include "scenes/ToolRunner.h"
 
 #include "dynamics/core/Errors.h"
-#include "render/charts/PoincareChart.h"
-#include "render/charts/ToolCharts.h"
 
 #include <fmt/core.h>
 #include <map>
@@ -50,23 +48,6 @@ nlohmann::json toolResultJson(const ToolResult& result) {
   nlohmann::json j = result.fields;
   if (result.stopped) j["stopped"] = true;
   return j;
-}
-
-std::unique_ptr<Chart> toolResultChart(const ToolEntry& tool, const Scene& scene, const ToolResult& result) {
-  if (const ToolRunner* runner = findToolRunner(tool.id); runner && runner->chart)
-    return runner->chart(scene, result);
-  const auto& t = result.table;
-  if (t.names.size() < 2) throw InputError("tool '" + tool.id + "' has no table to draw");
-  auto chart = std::make_unique<PoincareChart>(t.names[0], tool.title);
-  std::vector<std::vector<double>> ys(t.values.begin() + 1, t.values.end());
-  std::vector<std::string> names(t.names.begin() + 1, t.names.end());
-  drawCurves(*chart, t.values[0], ys, {}, names);
-  std::string title = tool.title;
-  for (const auto& o : tool.outputs)
-    if (o.quantity && result.fields.contains(o.name) && result.fields[o.name].is_number())
-      title += fmt::format("  {} = {:.6g}", o.name, result.fields[o.name].get<double>());
-  chart->setTitle(title);
-  return chart;
 }
 
 } // namespace rv

@@ -34,7 +34,8 @@ struct ToolRunner {
   /// reports control.progress. Throws InputError for settings it cannot use, ComputationError when the
   /// computation fails, and returns with `stopped` set when stopped.
   std::function<ToolResult(const Scene&, const ToolControl&)> run;
-  /// Draws a result; empty: the table's columns against its first (drawCurves), titled with the fields.
+  /// Draws a result; empty: the table's columns against its first, titled with the quantities
+  /// (SceneCharts.cpp draws both; this file stays free of VTK code, so the fuzzers link it).
   std::function<std::unique_ptr<Chart>(const Scene&, const ToolResult&)> chart = {};
 };
 
@@ -52,8 +53,5 @@ ToolResult runTool(const ToolEntry& tool, const Scene& scene, const ToolControl&
 
 /// The result as one JSON object: the fields, and "stopped" when the run was stopped.
 nlohmann::json toolResultJson(const ToolResult& result);
-
-/// The chart of a result: the runner's own, or the default (the table's columns against its first).
-std::unique_ptr<Chart> toolResultChart(const ToolEntry& tool, const Scene& scene, const ToolResult& result);
 
 } // namespace rv
