@@ -57,9 +57,12 @@ public:
 #define ROLLVIZ_MODULE_REGISTER_SYMBOL "rollviz_module_register"
 
 /// Defines a module's entry point; the body fills `registrar` (an rv::ModuleRegistrar&).
+// the argument names a parameter, so it cannot be parenthesised
+// NOLINTBEGIN(bugprone-macro-parentheses)
 #define ROLLVIZ_MODULE(registrar)                                                                            \
   extern "C" __attribute__((visibility("default"))) const char* rollviz_module_stamp() {                     \
     return ROLLVIZ_ABI_STAMP;                                                                                \
   }                                                                                                          \
   extern "C" __attribute__((visibility("default"))) void rollviz_module_register(                            \
       ::rv::ModuleRegistrar& registrar)
+// NOLINTEND(bugprone-macro-parentheses)
