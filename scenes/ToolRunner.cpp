@@ -2,6 +2,7 @@
 
 #include "dynamics/core/Errors.h"
 
+#include <algorithm>
 #include <fmt/core.h>
 #include <map>
 
