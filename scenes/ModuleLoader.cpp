@@ -27,49 +27,41 @@ std::string realPath(const std::string& path) {
   return ec ? path : p.string();
 }
 
-// everything the module registers, checked against the registries and itself before any of it is added
+// everything the module registers, added first to copies of the registries (so their own refusals apply,
+// among the module's parts too) before any of it is added for real
 void check(const ModuleRegistrar& r, const std::string& path) {
-  std::set<std::string> models, integrators, tools, commands, sections;
-  const auto taken = [&](std::set<std::string>& mine, const std::string& kind, const std::string& id,
-                         const std::string* otherOrigin) {
-    if (id.empty()) throw InputError(path + ": registers a " + kind + " with no id");
-    if (!mine.insert(id).second) throw InputError(path + ": registers the " + kind + " '" + id + "' twice");
-    if (otherOrigin) throw InputError(path + ": " + alreadyRegistered(kind, id, *otherOrigin));
-  };
-  for (const auto& m : r.models) {
-    if (!m.info || !m.create)
-      throw InputError(path + ": registers a model without its description or factory");
-    const ModelEntry* e = ModelRegistry::global().find(m.info->id);
-    taken(models, "problem", m.info->id, e ? &e->origin : nullptr);
-  }
-  for (const auto& i : r.integrators) {
-    if (!i.parameters || !i.create)
-      throw InputError(path + ": registers the integrator '" + i.id + "' without its parameters or factory");
-    const IntegratorEntry* e = IntegratorRegistry::global().find(i.id);
-    taken(integrators, "integrator", i.id, e ? &e->origin : nullptr);
-  }
-  for (const auto& t : r.tools) {
-    const ToolEntry* e = ToolRegistry::global().find(t.entry.id);
-    taken(tools, "tool", t.entry.id, e ? &e->origin : nullptr);
-    if (!t.entry.command.empty()) {
-      const ToolEntry* c = nullptr;
-      for (const auto& o : ToolRegistry::global().entries())
-        if (o.command == t.entry.command) c = &o;
-      taken(commands, "command", t.entry.command, c ? &c->origin : nullptr);
+  try {
+    ModelRegistry models = ModelRegistry::global();
+    for (ModelEntry m : r.models) {
+      if (!m.info || !m.create) throw InputError("registers a model without its description or factory");
+      m.origin = path;
+      models.add(std::move(m));
     }
-    if (t.settings) {
-      // the scene's own keys cannot be a tool's section either
-      if (sceneKeys().count(t.entry.section))
-        throw InputError(path + ": the tool '" + t.entry.id + "' takes the scene key '" + t.entry.section +
+    IntegratorRegistry integrators = IntegratorRegistry::global();
+    for (IntegratorEntry i : r.integrators) {
+      if (!i.parameters || !i.create)
+        throw InputError("registers the integrator '" + i.id + "' without its parameters or factory");
+      i.origin = path;
+      integrators.add(std::move(i));
+    }
+    ToolRegistry tools = ToolRegistry::global();
+    std::set<std::string> sections;
+    for (const auto& t : r.tools) {
+      ToolEntry e = t.entry;
+      e.origin = path;
+      tools.add(std::move(e));
+      if (!t.runner.run) throw InputError("the tool '" + t.entry.id + "' has no run function");
+      if (!t.settings) continue;
+      const std::string& key = t.entry.section;
+      if (sceneKeys().count(key)) // the scene's own keys cannot be a tool's section either
+        throw InputError("the tool '" + t.entry.id + "' takes the scene key '" + key +
                          "' as its settings section");
-      const ToolSection* s = findToolSection(t.entry.section);
-      taken(sections, "settings section", t.entry.section, s ? &s->origin : nullptr);
+      if (const ToolSection* s = findToolSection(key))
+        throw InputError(alreadyRegistered("settings section", key, s->origin));
+      if (!sections.insert(key).second) throw InputError(alreadyRegistered("settings section", key, path));
     }
-    if (!t.entry.parent.empty() && !ToolRegistry::global().find(t.entry.parent) &&
-        !tools.count(t.entry.parent))
-      throw InputError(path + ": the tool '" + t.entry.id + "' hangs under '" + t.entry.parent +
-                       "', which is not registered");
-    if (!t.runner.run) throw InputError(path + ": the tool '" + t.entry.id + "' has no run function");
+  } catch (const InputError& e) {
+    throw InputError(path + ": " + e.what());
   }
 }
 

@@ -14,7 +14,7 @@ struct Fact {
 
 /// The version, the build and the libraries this executable was built with, and the modules it loaded.
 std::vector<Fact> buildFacts();
-/// One "module" line per loaded module (its file and what it added), or "modules: none loaded (searched ...)".
+/// A "module" line per loaded module (its file and what it added), or "modules: none loaded (searched ...)".
 std::vector<Fact> moduleFacts();
 
 /// The headless renderer: backend, how the context was made, the EGL devices on offer,

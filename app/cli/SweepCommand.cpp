@@ -250,8 +250,9 @@ Command addSweepCommand(CLI::App* cmd) {
          "CSV file: the axes, the quantity's columns, status (the same file on any threads and ranks); a "
          ".vti file is image data for ParaView (the axes as x, y; the columns and seconds as point data)")
       ->required();
-  cmd->add_flag("--timing", o->timing,
-                "add the CSV column seconds: what each point cost (the one column that differs between runs)");
+  cmd->add_flag(
+      "--timing", o->timing,
+      "add the CSV column seconds: what each point cost (the one column that differs between runs)");
   cmd->add_option("--png", o->png, "also draw the chart into this PNG");
   cmd->add_option("--size", o->size, "chart size WIDTHxHEIGHT")->capture_default_str();
   cmd->add_option("--threads", o->threads,

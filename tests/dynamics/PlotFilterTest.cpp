@@ -1,8 +1,8 @@
 // The 2D / 3D plot filters' sampling (manual §2.4.1-2): output when the condition has changed by the period.
 #include "dynamics/tools/PlotFilter.h"
 #include "dynamics/core/Errors.h"
-#include "dynamics/integrators/TimeSampler.h"
 #include "dynamics/integrators/Everhart.h"
+#include "dynamics/integrators/TimeSampler.h"
 #include "tests/dynamics/TestSupport.h"
 
 #include <cmath>

@@ -3,9 +3,9 @@
 #include "dynamics/integrators/Rk4.h"
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/ModelWithField.h"
-#include "dynamics/integrators/TimeSampler.h"
 #include "dynamics/integrators/Everhart.h"
 #include "dynamics/integrators/Merson.h"
+#include "dynamics/integrators/TimeSampler.h"
 #include "tests/dynamics/TestModels.h"
 #include "tests/dynamics/TestSupport.h"
 

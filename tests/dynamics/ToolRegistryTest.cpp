@@ -34,18 +34,22 @@ TEST(Registries, RefuseATakenIdAndNameWhoHasIt) {
   rk4.origin = "/m/libfirst.so";
   integrators.add(rk4);
   EXPECT_EQ(integrators.find("rk4")->origin, "/m/libfirst.so");
-  EXPECT_EQ(refusal([&] { integrators.add(rk4); }), "integrator 'rk4' is already registered by /m/libfirst.so");
+  EXPECT_EQ(refusal([&] { integrators.add(rk4); }),
+            "integrator 'rk4' is already registered by /m/libfirst.so");
 
   ToolRegistry tools;
   ToolEntry orphan{.id = "orphan", .title = "t", .parent = "nowhere"};
-  EXPECT_NE(refusal([&] { tools.add(orphan); }).find("its parent 'nowhere' is not registered"), std::string::npos);
+  EXPECT_NE(refusal([&] { tools.add(orphan); }).find("its parent 'nowhere' is not registered"),
+            std::string::npos);
   ToolEntry a{.id = "a", .title = "A", .command = "run-a"}, b{.id = "b", .title = "B", .command = "run-a"};
   tools.add(a);
   EXPECT_EQ(refusal([&] { tools.add(a); }), "tool 'a' is already registered by rollviz itself");
   EXPECT_EQ(refusal([&] { tools.add(b); }), "command 'run-a' is already registered by rollviz itself");
 
   static const ParameterTable table{{.id = "n", .label = "n", .defaultValue = 1}};
-  EXPECT_EQ(refusal([&] { addToolSection({"poincare", "P", &table}); }),
+  EXPECT_EQ(refusal([&] {
+              addToolSection({"poincare", "P", &table});
+            }),
             "settings section 'poincare' is already registered by rollviz itself");
 }
 

@@ -104,8 +104,7 @@ TEST(Sweep, GridOrderAndAxisValues) {
   EXPECT_EQ(s.axisValues(0), (std::vector<double>{5, 5}));
   EXPECT_EQ(s.axisValues(5), (std::vector<double>{30, 5})); // the first axis fastest, ending exactly at max
   EXPECT_EQ(s.axisValues(7), (std::vector<double>{10, 10}));
-  EXPECT_EQ(sweepCsvHeader(s),
-            (std::vector<std::string>{"rho", "sigma", "lyapunov.max", "status"}));
+  EXPECT_EQ(sweepCsvHeader(s), (std::vector<std::string>{"rho", "sigma", "lyapunov.max", "status"}));
   EXPECT_EQ(sweepCsvHeader(s, true),
             (std::vector<std::string>{"rho", "sigma", "lyapunov.max", "seconds", "status"}));
   const Scene p = sweepPointScene(s, 7);
