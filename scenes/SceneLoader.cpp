@@ -1,6 +1,7 @@
 #include "scenes/SceneLoader.h"
 
 #include "scenes/JsonFields.h"
+#include "scenes/ModelFile.h"
 
 #include "dynamics/core/Errors.h"
 #include "dynamics/tools/ToolSettings.h"
@@ -280,7 +281,7 @@ void readToolSections(const json& doc, const Where& root, Scene& scene) {
 }
 
 // `--set`: a plain key is a model parameter, a dotted key a path into the document
-void applyOverrides(json& doc, const std::vector<SceneOverride>& overrides) {
+void applyOverrides(json& doc, const std::vector<SceneOverride>& overrides, const std::string& source) {
   for (const auto& o : overrides) {
     const std::string flag = "--set " + o.key;
     json value = json::parse(o.value, nullptr, false);
@@ -297,8 +298,9 @@ void applyOverrides(json& doc, const std::vector<SceneOverride>& overrides) {
         doc["problem"] = value;
         continue;
       }
-      if (!doc.contains("problem") || !doc["problem"].is_string()) continue; // reported by validation
-      const ModelEntry& entry = ModelRegistry::global().get(doc["problem"].get<std::string>());
+      if (!doc.contains("model") && (!doc.contains("problem") || !doc["problem"].is_string()))
+        continue; // reported by validation
+      const ModelEntry& entry = sceneModelEntry(doc, source);
       if (entry.info->parameters.find(o.key) < 0) {
         std::string known;
         for (const auto& s : entry.info->parameters.specs())
@@ -349,15 +351,15 @@ SceneOverride parseOverride(const std::string& text) {
 }
 
 const std::set<std::string>& sceneKeys() {
-  static const std::set<std::string> keys{"problem", "parameters", "integrator",  "initial",
-                                          "view",    "title",      "description", "results"};
+  static const std::set<std::string> keys{"problem", "model", "parameters",  "integrator", "initial",
+                                          "view",    "title", "description", "results"};
   return keys;
 }
 
 Scene sceneFromJson(json doc, const std::string& source, const std::vector<SceneOverride>& overrides) {
   const Where root{source, ""};
   requireObject(doc, root);
-  applyOverrides(doc, overrides);
+  applyOverrides(doc, overrides, source);
   for (const auto& [key, value] : doc.items()) {
     const auto& known = sceneKeys();
     if (!known.count(key) && !findToolSection(key)) {
@@ -369,16 +371,10 @@ Scene sceneFromJson(json doc, const std::string& source, const std::vector<Scene
       (root / key).fail("unknown key (known:" + list + ")");
     }
   }
-  if (!doc.contains("problem")) root.fail("missing \"problem\"");
-
   Scene scene;
   scene.source = source;
-  const std::string problem = text(doc["problem"], root / "problem");
-  try {
-    scene.modelEntry = &ModelRegistry::global().get(problem);
-  } catch (const InputError& e) {
-    (root / "problem").fail(e.what());
-  }
+  scene.modelEntry = &sceneModelEntry(doc, source);
+  const std::string& problem = scene.modelEntry->info->id;
 
   ParameterValues params(scene.modelEntry->info->parameters);
   if (doc.contains("parameters"))

@@ -6,6 +6,7 @@
 #include "dynamics/core/ModelRegistry.h"
 #include "dynamics/integrators/Integrator.h"
 #include "dynamics/tools/ToolSettings.h"
+#include "scenes/ModelFile.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -137,10 +138,11 @@ Command addDescribeCommand(CLI::App& app) {
   auto* cmd =
       app.add_subcommand("describe", "parameters, state variables, observables, integrals of a problem");
   auto idPtr = std::make_shared<std::string>();
-  cmd->add_option("problem", *idPtr, "problem id (rollviz list problems)")->required();
+  cmd->add_option("problem", *idPtr, "problem id (rollviz list problems) or a model file (docs/models.md)")
+      ->required();
   return {cmd, [idPtr] {
             const std::string& id = *idPtr;
-            const ModelEntry& entry = ModelRegistry::global().get(id);
+            const ModelEntry& entry = modelEntryByName(id);
             const ModelInfo& info = *entry.info;
             const auto model = entry.create(ParameterValues(info.parameters));
             fmt::print("{}\n  {}\n  reference: {}\n\nparameters (id, default, range, meaning):\n", info.id,

@@ -105,6 +105,11 @@ void ControlPanel::setScene(const Scene& scene) {
     problems->addItem(QString::fromStdString(e.info->id));
     problems->setItemData(problems->count() - 1, QString::fromStdString(e.info->title), Qt::ToolTipRole);
   }
+  if (problems->findText(QString::fromStdString(scene.model->info().id)) < 0) { // a model file's own model
+    problems->addItem(QString::fromStdString(scene.model->info().id));
+    problems->setItemData(problems->count() - 1, QString::fromStdString(scene.model->info().title),
+                          Qt::ToolTipRole);
+  }
   problems->setCurrentText(QString::fromStdString(scene.model->info().id));
   problems->setToolTip("the problem: choosing another opens its default scene");
   connect(problems, &QComboBox::activated, this, [this, problems](int i) {

@@ -13,10 +13,12 @@
 #include "render/context/HeadlessContext.h"
 #include "render/export/VtkXmlFiles.h"
 #include "render/video/VideoExport.h"
+#include "scenes/ModelFile.h"
 #include "scenes/ModuleLoader.h"
 #include "scenes/SceneCharts.h"
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <vtkRenderWindow.h>
 
@@ -237,8 +239,7 @@ pyb::array_t<unsigned char> chart(const Scene& shared, const std::string& view, 
   return toPicture(std::move(image));
 }
 
-pyb::dict describeProblem(const std::string& id) {
-  const ModelEntry& entry = ModelRegistry::global().get(id);
+pyb::dict describeEntry(const ModelEntry& entry) {
   const ModelInfo& info = *entry.info;
   const auto model = entry.create(ParameterValues(info.parameters));
   pyb::dict d;
@@ -259,6 +260,32 @@ pyb::dict describeProblem(const std::string& id) {
   }
   d["observables"] = obs;
   return d;
+}
+
+pyb::dict describeProblem(const std::string& idOrPath) {
+  return describeEntry(modelEntryByName(idOrPath));
+}
+
+/// A model written as equations (scenes/ModelFile.h), for Python: the entry and how a scene names it.
+struct PyModel {
+  const ModelEntry* entry;
+  std::string path;           ///< the model file, or ""
+  nlohmann::json inlineModel; ///< the object, for a model made from a dict
+  /// A scene document on this model: the file named, or the object inline.
+  nlohmann::json sceneDocument() const {
+    nlohmann::json doc;
+    if (path.empty())
+      doc["model"] = inlineModel;
+    else
+      doc["problem"] = path;
+    doc["initial"] = {{"state", nlohmann::json::object()}};
+    return doc;
+  }
+};
+
+nlohmann::json jsonOf(const pyb::handle& object) {
+  const auto dumps = pyb::module_::import("json").attr("dumps");
+  return nlohmann::json::parse(dumps(object).cast<std::string>());
 }
 
 } // namespace
@@ -332,6 +359,31 @@ PYBIND11_MODULE(_rollviz, m) {
       "The integrators: a list of {id, title, parameters}.");
   m.def("scenes_directory", &scenesDirectory, "The folder of the shipped scene files.");
 
+  pyb::class_<PyModel>(
+      m, "Model",
+      "A system written as equations (docs/models.md): Model.load(path) or Model(dict), then "
+      "Scene(model, **set). Every tool works on it.")
+      .def(pyb::init([](const pyb::dict& d) {
+             const nlohmann::json j = jsonOf(d);
+             return PyModel{&modelEntryFromJson(j, "<Model>"), "", j};
+           }),
+           pyb::arg("model"), "A model from a dict with the content of a model file.")
+      .def_static(
+          "load",
+          [](const std::string& path) {
+            const std::string absolute = std::filesystem::absolute(path).string();
+            return PyModel{&modelFileEntry(absolute), absolute, {}};
+          },
+          pyb::arg("path"), "Loads a model file.")
+      .def_property_readonly("id", [](const PyModel& m) { return m.entry->info->id; })
+      .def_property_readonly("path", [](const PyModel& m) { return m.path; })
+      .def(
+          "describe", [](const PyModel& m) { return describeEntry(*m.entry); },
+          "Its parameters, state, integrals, map coordinates and observables (as rollviz.describe).")
+      .def("__repr__", [](const PyModel& m) {
+        return "<rollviz.Model " + m.entry->info->id + (m.path.empty() ? "" : " from " + m.path) + ">";
+      });
+
   pyb::class_<Scene> scene(m, "Scene",
                            "A validated scene: a problem, its parameters, method, initial state and "
                            "tool settings (rollviz's scene file).");
@@ -342,6 +394,13 @@ PYBIND11_MODULE(_rollviz, m) {
            }),
            pyb::arg("problem"),
            "The shipped scene of a problem (scenes/<problem>.json) with parameters or dotted scene keys set.")
+      .def(pyb::init([](const PyModel& model, const pyb::kwargs& kw) {
+             return sceneFromJson(model.sceneDocument(),
+                                  model.path.empty() ? "<Model>" : model.path + ".scene", overridesOf(kw));
+           }),
+           pyb::arg("model"),
+           "A scene on a model written as equations; give its initial state as **{'initial.state': {...}} "
+           "(or set 'initial.map').")
       .def_static(
           "load",
           [](const std::string& path, const pyb::kwargs& kw) { return loadScene(path, overridesOf(kw)); },

@@ -1,6 +1,7 @@
 #include "dynamics/integrators/Integrator.h"
 
 #include "dynamics/core/Errors.h"
+#include "dynamics/core/ExplainsNonFinite.h"
 #include "dynamics/core/ModelRegistry.h"
 #include "dynamics/integrators/Adams.h"
 #include "dynamics/integrators/Everhart.h"
@@ -53,7 +54,17 @@ void Integrator::requireFinite(const Eigen::VectorXd& x, double t, const char* w
 }
 
 void Integrator::checkFinite() const {
-  requireFinite(x_, t_, "the solution");
+  if (std::isfinite(x_.sum())) return;
+  try {
+    requireFinite(x_, t_, "the solution");
+  } catch (const ComputationError& e) {
+    // a model written as equations names the expression that went non-finite at the step's start
+    const auto* explains = dynamic_cast<const ExplainsNonFinite*>(model_);
+    const std::string cause =
+        explains && xPrev_.size() == x_.size() ? explains->nonFiniteCause(xPrev_.data()) : "";
+    if (cause.empty()) throw;
+    throw ComputationError(std::string(e.what()) + "; " + cause);
+  }
 }
 
 void Integrator::advanceCompensated(double h, const Eigen::VectorXd& increment,

@@ -2,6 +2,8 @@
 
     import rollviz
     s = rollviz.Scene.load("scenes/chaplygin_ball.json")      # or rollviz.Scene("chaplygin_ball", energy=0.4)
+    m = rollviz.Model.load("examples/models/lorenz.json")      # a system written as equations (docs/models.md)
+    s = rollviz.Scene(m, rho=28, **{"initial.state": {"x": 1, "y": 1, "z": 1}})
     s.set(energy=0.4, **{"integrator.method": "everhart"})
     t, X = s.integrate(time=100, every=0.1, columns=["t", "E", "M1"])
     P = s.poincare(points=2000)              # map coordinates, t, sheet per row
@@ -16,10 +18,10 @@ the command line's message, a failed computation rollviz.ComputationError; long 
 progress=callable(fraction) and stop on Ctrl-C with KeyboardInterrupt.
 """
 
-from ._rollviz import ComputationError, Scene, describe, integrators, modules, problems, scenes_directory, sweep
+from ._rollviz import ComputationError, Model, Scene, describe, integrators, modules, problems, scenes_directory, sweep
 from ._rollviz import _tools
 
-__all__ = ["ComputationError", "Result", "Scene", "describe", "integrators", "modules", "problems",
+__all__ = ["ComputationError", "Model", "Result", "Scene", "describe", "integrators", "modules", "problems",
            "scenes_directory", "sweep", "tools"]
 
 

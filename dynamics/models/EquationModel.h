@@ -1,0 +1,138 @@
+// EquationModel.h -- a model written as equations (a model file, scenes/ModelFile.h): the texts parsed and
+// checked once (EquationSystem), then, for each set of parameter values, lowered to scalar programs with the
+// parameters folded in (EquationModel): the right-hand side, its exact derivatives by forward mode, the
+// Taylor recording, the integrals, the measure, the observables, the completion of states and map points,
+// and the body's pose. A flow that reads the time `t` gets a last state component `time` with d time/dt = 1
+// (the autonomous extension), so every tool applies unchanged.
+#pragma once
+#include "dynamics/core/ExplainsNonFinite.h"
+#include "dynamics/core/Model.h"
+#include "dynamics/expr/Expression.h"
+#include "dynamics/expr/Graph.h"
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace rv {
+
+/// The text of one expression and where it stands in its file (a JSON path such as "equations.x").
+struct ExprText {
+  std::string text;
+  std::string where;
+};
+
+/// Everything a model file declares, with the texts not yet parsed.
+struct EquationModelSpec {
+  /// id, title, reference, parameters, stateNames, kind, mapCoordinates, section; the rest is derived.
+  ModelInfo info;
+  /// Vectors made of state components (name, component names): usable in expressions and as equation keys.
+  std::vector<std::pair<std::string, std::vector<std::string>>> vectors;
+  /// Intermediate definitions (name, expression), in any order: each may use the ones it needs.
+  std::vector<std::pair<std::string, ExprText>> definitions;
+  /// d(variable)/dt of a flow or the next value of a map, by state variable or state vector name.
+  std::vector<std::pair<std::string, ExprText>> equations;
+  struct ObservableText {
+    std::string id, description;
+    ExprText value;
+    bool angle = false;    ///< an angle (sections on it are crossed where sin(value - v0) = 0)
+    bool integral = false; ///< a first integral (conserved; listed in info.integralNames)
+  };
+  std::vector<ObservableText> observables;
+  std::optional<ExprText> measure; ///< density of an invariant measure
+  /// Default values of state variables a scene does not give, from the ones it gives (in this order).
+  std::vector<std::pair<std::string, ExprText>> completion;
+  /// A stroboscopic section: the period T of a time section (the observable "strobe" = 2 pi t / T).
+  std::optional<ExprText> strobePeriod;
+
+  /// How a map point (coordinates named info.mapCoordinates) becomes a state.
+  struct MapCompletion {
+    std::vector<std::string> symbols; ///< the coordinates' names in the expressions below
+    /// Every state variable as an expression of the symbols, `section` (the section's value) and, when
+    /// `unknown` is set, the unknown: solved so that the observable `integral` equals `value`.
+    std::vector<std::pair<std::string, ExprText>> state;
+    std::string unknown;
+    ExprText from, to, step; ///< the range scanned for roots in the unknown, and the scan step
+    std::string integral;
+    ExprText value;
+    double accuracy = 1e-15;
+  };
+  std::optional<MapCompletion> map;
+
+  /// The body drawn in the 3D view.
+  struct View {
+    BodyShape shape = BodyShape::None;
+    std::optional<ExprText> semiAxes; ///< ellipsoid: a 3-vector; ball: the radius
+    std::optional<ExprText> centre;   ///< the body's geometric centre in its frame (from the pose's centre)
+    std::optional<ExprText> p, q, height;
+    ExprText rotation; ///< body -> world, a 3x3 matrix of the state
+    ExprText position; ///< the pose's centre in the world
+    ExprText contact;  ///< the contact point in the world
+  };
+  std::optional<View> view;
+  std::string source; ///< the file, for messages
+};
+
+/// A checked model: the spec with every expression parsed, names and shapes verified (at the default
+/// parameter values). Shared by every instance.
+class EquationSystem : public std::enable_shared_from_this<EquationSystem> {
+public:
+  /// Parses and checks every expression (lowering them at the default parameter values); throws InputError
+  /// "WHERE: column C: what is wrong".
+  static std::shared_ptr<const EquationSystem> build(EquationModelSpec spec);
+  const EquationModelSpec& spec() const { return spec_; }
+  /// The model's constant description (with integralNames, hasMeasure, coreDimension and the time
+  /// component filled in).
+  const ModelInfo& info() const { return info_; }
+  bool nonAutonomous() const { return nonAutonomous_; }
+  /// Parsed expressions by their `where`.
+  const expr::Expression& parsed(const std::string& where) const;
+  std::unique_ptr<Model> create(const ParameterValues& params) const;
+
+private:
+  explicit EquationSystem(EquationModelSpec spec);
+  EquationModelSpec spec_;
+  ModelInfo info_;
+  bool nonAutonomous_ = false;
+  std::vector<std::pair<std::string, expr::Expression>> parsed_;
+};
+
+/// The programs of one system at fixed parameter values. Its input slots are the state then the time.
+class EquationModel final : public Model, public ExplainsNonFinite {
+public:
+  EquationModel(std::shared_ptr<const EquationSystem> system, const ParameterValues& params);
+
+  void rhs(const double* x, double* dx) const override;
+  void jacobian(const double* x, double* jac) const override;
+  void coreJacobian(const double* x, double* jac) const override;
+  void tangentRhs(const double* x, const double* V, int k, double* dx, double* dV) const override;
+  void recordField(taylor::Tape& tape, const double* x) const override;
+  Eigen::VectorXd integrals(const double* x) const override;
+  double measureDensity(const double* x) const override;
+  std::optional<BodyPose> pose(const double* x) const override;
+  std::optional<BodyGeometry> geometry() const override { return geometry_; }
+  Eigen::VectorXd stateFromNamed(const std::map<std::string, double>& named,
+                                 const std::string& context) const override;
+  Eigen::VectorXd stateFromMap(const std::vector<double>& point, const MapPointSpec& spec,
+                               const std::string& context) const override;
+  int sheetOf(const Eigen::VectorXd& x, const MapPointSpec& spec) const override;
+  std::string nonFiniteCause(const double* x) const override;
+
+  /// The field's program (for tests and the code generator).
+  const expr::Program& field() const { return field_; }
+
+private:
+  /// Roots of the map completion's unknown at a point; `state` (when given) the state on root `root`.
+  std::vector<double> completionRoots(const std::vector<double>& point, double section,
+                                      Eigen::VectorXd* state, int root) const;
+  std::shared_ptr<const EquationSystem> system_;
+  expr::Graph graph_;
+  expr::Program field_, integrals_, measure_, pose_, map_;
+  std::vector<std::pair<int, expr::Program>> completion_; // state index, its default
+  std::optional<BodyGeometry> geometry_;
+  int unknownObservable_ = -1; // the observable holding the map completion's unknown, if any
+};
+
+} // namespace rv

@@ -1,0 +1,404 @@
+// Models written as equations (examples/models): each built-in model written as a file gives the built-in
+// model's field, exact Jacobian, integrals, measure, map completion, trajectories, Poincare points, fixed
+// points and multipliers; every error of a model file names the file, the JSON path, the column and what is
+// wrong; a blow-up names the expression that went non-finite.
+#include "scenes/ModelFile.h"
+#include "dynamics/core/Errors.h"
+#include "dynamics/expr/Expression.h"
+#include "dynamics/integrators/Integrator.h"
+#include "dynamics/tools/FixedPoint.h"
+#include "dynamics/tools/Lyapunov.h"
+#include "scenes/SceneLoader.h"
+
+#include <Eigen/LU>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <numbers>
+
+namespace rv {
+namespace {
+
+using nlohmann::json;
+
+std::string examples(const std::string& file) {
+  const char* root = std::getenv("ROLLVIZ_SOURCE_DIR");
+  return std::string(root ? root : ".") + "/examples/models/" + file;
+}
+
+struct Pair {
+  std::unique_ptr<Model> builtin, file;
+};
+
+Pair pairOf(const std::string& id, const std::string& file, const std::map<std::string, double>& set = {}) {
+  const ModelEntry& b = ModelRegistry::global().get(id);
+  const ModelEntry& f = modelFileEntry(examples(file));
+  ParameterValues pb(b.info->parameters), pf(f.info->parameters);
+  for (const auto& [k, v] : set) {
+    pb.set(k, v);
+    pf.set(k, v);
+  }
+  return {b.create(pb), f.create(pf)};
+}
+
+std::unique_ptr<Integrator> verner(double tolerance) {
+  const IntegratorEntry& e = IntegratorRegistry::global().get("verner9");
+  ParameterValues p(*e.parameters);
+  p.set("tolerance", tolerance);
+  return e.create(p);
+}
+
+/// The largest difference of the states over [0, T], sampled at every unit of time.
+double trajectoryDifference(const Model& a, const Model& b, const Eigen::VectorXd& x0, double T) {
+  auto ia = verner(1e-13), ib = verner(1e-13);
+  ia->start(a, 0, x0);
+  ib->start(b, 0, x0);
+  double worst = 0;
+  Eigen::VectorXd ya(x0.size()), yb(x0.size());
+  for (double t = 1; t <= T; t += 1) {
+    while (ia->time() < t)
+      ia->step();
+    while (ib->time() < t)
+      ib->step();
+    ia->interpolate(t, ya);
+    ib->interpolate(t, yb);
+    worst = std::max(worst, (ya - yb).cwiseAbs().maxCoeff());
+  }
+  return worst;
+}
+
+/// Field, Jacobian (exact: forward mode against Eigen's AutoDiff of the built-in), tangent products,
+/// integrals and measure at a state.
+void expectSameField(const Model& a, const Model& b, const Eigen::VectorXd& x) {
+  const int n = a.dimension();
+  ASSERT_EQ(n, b.dimension());
+  ASSERT_EQ(a.info().coreDimension, b.info().coreDimension);
+  Eigen::VectorXd fa(n), fb(n);
+  a.rhs(x.data(), fa.data());
+  b.rhs(x.data(), fb.data());
+  EXPECT_LT((fa - fb).cwiseAbs().maxCoeff(), 1e-13 * (1 + fa.cwiseAbs().maxCoeff())) << fa.transpose() << "\n"
+                                                                                     << fb.transpose();
+  Eigen::MatrixXd ja(n, n), jb(n, n);
+  a.jacobian(x.data(), ja.data());
+  b.jacobian(x.data(), jb.data());
+  EXPECT_LT((ja - jb).cwiseAbs().maxCoeff(), 1e-12 * (1 + ja.cwiseAbs().maxCoeff()));
+  const int m = a.info().coreDimension, k = 2;
+  Eigen::MatrixXd V = Eigen::MatrixXd::Random(m, k), dVa(m, k), dVb(m, k);
+  a.tangentRhs(x.data(), V.data(), k, fa.data(), dVa.data());
+  b.tangentRhs(x.data(), V.data(), k, fb.data(), dVb.data());
+  EXPECT_LT((dVa - dVb).cwiseAbs().maxCoeff(), 1e-12 * (1 + dVa.cwiseAbs().maxCoeff()));
+  const Eigen::VectorXd ia = a.integrals(x.data()), ib = b.integrals(x.data());
+  ASSERT_EQ(ia.size(), ib.size());
+  if (ia.size() > 0) {
+    EXPECT_LT((ia - ib).cwiseAbs().maxCoeff(), 1e-13 * (1 + ia.cwiseAbs().maxCoeff()));
+  }
+  EXPECT_NEAR(a.measureDensity(x.data()), b.measureDensity(x.data()), 1e-13);
+  for (const auto& o : a.observables()) { // every observable the file also has agrees
+    const int i = b.findObservable(o.id);
+    if (i < 0) continue;
+    const double va = o.value(0.5, x.data()),
+                 vb = b.observables()[static_cast<std::size_t>(i)].value(0.5, x.data());
+    EXPECT_NEAR(va, vb, 1e-12 * (1 + std::abs(va))) << o.id;
+  }
+}
+
+Eigen::VectorXd named(const Model& m, const std::map<std::string, double>& values) {
+  return m.stateFromNamed(values, "initial.state");
+}
+
+TEST(ModelFile, LorenzFollowsTheBuiltInModel) {
+  const Pair p = pairOf("lorenz", "lorenz.json");
+  const Eigen::VectorXd x = named(*p.builtin, {{"x", 1}, {"y", 1}, {"z", 1}});
+  EXPECT_EQ(x, named(*p.file, {{"x", 1}, {"y", 1}, {"z", 1}}));
+  expectSameField(*p.builtin, *p.file, Eigen::Vector3d(1.5, -2, 20));
+  // chaotic: over the time before rounding is amplified past 1e-10
+  EXPECT_LT(trajectoryDifference(*p.builtin, *p.file, x, 10), 1e-8);
+}
+
+TEST(ModelFile, HenonHeilesFollowsTheBuiltInModelWithItsMapAndFixedPoint) {
+  const Pair p = pairOf("henon_heiles", "henon_heiles.json", {{"energy", 0.08}});
+  const std::map<std::string, double> s{{"x", 0}, {"y", 0.1}, {"px", 0.35}, {"py", 0.1}};
+  const Eigen::VectorXd x = named(*p.builtin, s);
+  expectSameField(*p.builtin, *p.file, x);
+  EXPECT_LT(trajectoryDifference(*p.builtin, *p.file, x, 100), 1e-10);
+  // the map completion: px > 0 solved from the energy
+  const MapPointSpec on{.sectionValue = 0, .root = 1};
+  const Eigen::VectorXd a = p.builtin->stateFromMap({0.1, 0.05}, on, "m"),
+                        b = p.file->stateFromMap({0.1, 0.05}, on, "m");
+  EXPECT_LT((a - b).cwiseAbs().maxCoeff(), 1e-13);
+  EXPECT_THROW(p.file->stateFromMap({0.5, 0.5}, on, "m"), InputError); // outside the allowed region
+  // the same Poincare map: a fixed point (the central periodic orbit) and its multipliers
+  SectionSettings section;
+  const IntegratorFactory make = [] { return verner(1e-13); };
+  const ReturnMap ma(*p.builtin, make, section), mb(*p.file, make, section);
+  FixedPointSettings fs;
+  fs.accuracy = 1e-12;
+  const auto ra = findFixedPoint(ma, Eigen::Vector2d(0.03, 0.0), fs);
+  const auto rb = findFixedPoint(mb, Eigen::Vector2d(0.03, 0.0), fs);
+  EXPECT_LT((ra.point - rb.point).cwiseAbs().maxCoeff(), 1e-9);
+  ASSERT_EQ(ra.multipliers.size(), rb.multipliers.size());
+  for (std::size_t i = 0; i < ra.multipliers.size(); ++i)
+    EXPECT_LT(std::abs(ra.multipliers[i] - rb.multipliers[i]), 1e-8);
+  const Eigen::Vector2d start(0.1, 0.05);
+  EXPECT_LT((ma(start) - mb(start)).cwiseAbs().maxCoeff(), 1e-9);
+}
+
+TEST(ModelFile, ChaplyginBallFollowsTheBuiltInModel) {
+  const Pair p = pairOf("chaplygin_ball", "chaplygin_ball.json", {{"K1", 0.1}, {"K3", -0.2}});
+  const std::map<std::string, double> s{{"M1", 0.3},     {"M2", 0.5},     {"M3", 0.4},
+                                        {"gamma1", 0.0}, {"gamma2", 0.6}, {"gamma3", 0.8}};
+  const Eigen::VectorXd x = named(*p.builtin, s);
+  EXPECT_LT((x - named(*p.file, s)).cwiseAbs().maxCoeff(), 1e-15); // alpha, beta completed alike
+  expectSameField(*p.builtin, *p.file, x);
+  EXPECT_LT(trajectoryDifference(*p.builtin, *p.file, x, 50), 1e-8);
+  const MapPointSpec on{.sectionValue = 0.3, .root = 1};
+  const Eigen::VectorXd a = p.builtin->stateFromMap({0.5, 0.2}, on, "m"),
+                        b = p.file->stateFromMap({0.5, 0.2}, on, "m");
+  EXPECT_LT((a - b).cwiseAbs().maxCoeff(), 1e-12);
+  ASSERT_TRUE(p.file->pose(x.data()));
+  EXPECT_LT((p.builtin->pose(x.data())->rotation - p.file->pose(x.data())->rotation).norm(), 1e-15);
+  EXPECT_EQ(p.file->geometry()->shape, BodyShape::Ball);
+}
+
+TEST(ModelFile, RattlebackFollowsTheBuiltInModel) {
+  const Pair p = pairOf("ellipsoid_on_plane", "ellipsoid_on_plane.json",
+                        {{"B11", 0.1}, {"B12", 0.02}, {"B22", 0.05}, {"energy", 5}});
+  const std::map<std::string, double> s{{"M1", 0.1},      {"M2", 0.05},     {"M3", 0.3},
+                                        {"gamma1", 0.05}, {"gamma2", 0.05}, {"gamma3", std::sqrt(1 - 0.005)}};
+  const Eigen::VectorXd x = named(*p.builtin, s);
+  expectSameField(*p.builtin, *p.file, x);
+  EXPECT_LT(trajectoryDifference(*p.builtin, *p.file, x, 50), 1e-8);
+  const MapPointSpec on{.sectionValue = 0.2, .root = 1};
+  const Eigen::VectorXd a = p.builtin->stateFromMap({0.5, 0.2, 0.9}, on, "m"),
+                        b = p.file->stateFromMap({0.5, 0.2, 0.9}, on, "m");
+  EXPECT_LT((a - b).cwiseAbs().maxCoeff(), 1e-12);
+  const auto pa = p.builtin->pose(x.data()), pb = p.file->pose(x.data());
+  ASSERT_TRUE(pa && pb);
+  EXPECT_LT((pa->center - pb->center).norm() + (pa->contact - pb->contact).norm(), 1e-14);
+  EXPECT_LT((p.builtin->geometry()->semiAxes - p.file->geometry()->semiAxes).norm(), 1e-15);
+}
+
+TEST(ModelFile, TaylorIntegratorExpandsAModelFile) {
+  const Pair p = pairOf("lorenz", "lorenz.json");
+  const IntegratorEntry& e = IntegratorRegistry::global().get("taylor");
+  ParameterValues v(*e.parameters);
+  auto ta = e.create(v), tb = e.create(v);
+  const Eigen::Vector3d x(1, 1, 1);
+  ta->start(*p.builtin, 0, x);
+  tb->start(*p.file, 0, x);
+  for (int i = 0; i < 50; ++i) {
+    ta->step();
+    tb->step();
+  }
+  EXPECT_NEAR(ta->time(), tb->time(), 1e-12);
+  EXPECT_LT((ta->state() - tb->state()).cwiseAbs().maxCoeff(), 1e-9);
+}
+
+TEST(ModelFile, LyapunovSpectrumOfTheLorenzFileSumsToTheTrace) {
+  const ModelEntry& f = modelFileEntry(examples("lorenz.json"));
+  const auto m = f.create(ParameterValues(f.info->parameters));
+  LyapunovSettings s;
+  s.maxTime = 300;
+  s.count = 3;
+  const auto r = lyapunovExponents(
+      *m, [] { return verner(1e-10); }, Eigen::Vector3d(1, 1, 1), s);
+  double sum = 0;
+  for (double e : r.last.exponents)
+    sum += e;
+  EXPECT_NEAR(sum, -(10 + 1 + 8.0 / 3.0), 1e-6);
+  EXPECT_NEAR(*std::max_element(r.last.exponents.begin(), r.last.exponents.end()), 0.906, 0.1);
+}
+
+TEST(ModelFile, DuffingStroboscopicFixedPointIsTheHarmonicBalanceResponse) {
+  // x'' + delta x' + alpha x + beta x^3 = gamma cos(omega t) at small forcing: the periodic response is
+  // x = a cos(omega t) + b sin(omega t) up to a third harmonic of order beta r^3 / (4 (9 omega^2 - alpha))
+  const double delta = 0.1, alpha = 1, beta = 0.2, gamma = 0.01, omega = 1.2;
+  const ModelEntry& e = modelFileEntry(examples("duffing.json"));
+  ParameterValues p(e.info->parameters);
+  p.set("delta", delta), p.set("alpha", alpha), p.set("beta", beta), p.set("gamma", gamma),
+      p.set("omega", omega);
+  const auto m = e.create(p);
+  // first-order harmonic balance, solved by Newton's method on (a, b)
+  Eigen::Vector2d ab(gamma / (alpha - omega * omega), 0);
+  for (int i = 0; i < 50; ++i) {
+    const double a = ab[0], b = ab[1], r2 = a * a + b * b, k = alpha - omega * omega;
+    const Eigen::Vector2d F(k * a + delta * omega * b + 0.75 * beta * r2 * a - gamma,
+                            k * b - delta * omega * a + 0.75 * beta * r2 * b);
+    Eigen::Matrix2d J;
+    J << k + 0.75 * beta * (r2 + 2 * a * a), delta * omega + 1.5 * beta * a * b,
+        -delta * omega + 1.5 * beta * a * b, k + 0.75 * beta * (r2 + 2 * b * b);
+    ab -= J.inverse() * F;
+  }
+  const ReturnMap map(
+      *m, [] { return verner(1e-13); }, SectionSettings{});
+  FixedPointSettings fs;
+  fs.accuracy = 1e-13;
+  const auto r = findFixedPoint(map, Eigen::Vector2d(0, 0), fs);
+  EXPECT_NEAR(r.point[0], ab[0], 2e-6);
+  EXPECT_NEAR(r.point[1], omega * ab[1], 2e-6);
+  // damped: both multipliers inside the unit circle, their product exp(-delta T) (Liouville)
+  const double product = std::abs(r.multipliers[0] * r.multipliers[1]);
+  EXPECT_NEAR(product, std::exp(-delta * 2 * std::numbers::pi / omega), 1e-8);
+}
+
+TEST(ModelFile, ChaplyginSleighGoesStraightWithTheSpeedOfItsEnergy) {
+  // Borisov & Mamaev (2009): omega -> 0 and v -> sqrt(2 E / m) for a > 0; the energy is conserved
+  const ModelEntry& e = modelFileEntry(examples("chaplygin_sleigh.json"));
+  const auto m = e.create(ParameterValues(e.info->parameters));
+  EXPECT_EQ(m->info().coreDimension, 2);
+  EXPECT_FALSE(m->hasInvariantMeasure());
+  const Eigen::VectorXd x0 =
+      m->stateFromNamed({{"v", 0.1}, {"omega", 2}, {"x", 0}, {"y", 0}, {"theta", 0}}, "s");
+  const double E0 = m->integrals(x0.data())[0];
+  auto integ = verner(1e-12);
+  integ->start(*m, 0, x0);
+  while (integ->time() < 60)
+    integ->step();
+  const Eigen::VectorXd& x = integ->state();
+  EXPECT_NEAR(m->integrals(x.data())[0], E0, 1e-12);
+  EXPECT_NEAR(x[0], std::sqrt(2 * E0 / 1.0), 1e-9);
+  EXPECT_NEAR(x[1], 0, 1e-9);
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// errors
+
+std::string errorOf(const json& model) {
+  try {
+    modelEntryFromJson(model, "m.json");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+json lorenz() {
+  std::ifstream in(examples("lorenz.json"));
+  json j = json::parse(in);
+  j["id"] = "lorenz_test_copy";
+  return j;
+}
+
+json withX(const std::string& equation) {
+  json j = lorenz();
+  j["equations"]["x"] = equation;
+  return j;
+}
+
+void expectError(const json& model, const std::vector<std::string>& parts) {
+  const std::string e = errorOf(model);
+  for (const auto& part : parts)
+    EXPECT_NE(e.find(part), std::string::npos) << "'" << part << "' not in: " << e;
+}
+
+TEST(ModelFileErrors, NameTheFileThePathTheColumnAndWhatIsWrong) {
+  expectError(withX("sigmma*(y - x)"),
+              {"m.json:equations.x: column 1: unknown name 'sigmma'", "did you mean 'sigma'"});
+  expectError(withX("x);system(\"id\");("), {"m.json:equations.x: column 2:"});
+  expectError(withX("sigma*((y - x)"), {"equations.x: column", "')'"});
+  expectError(withX("1e999*(y - x)"), {"column 1:", "1e999", "out of the range"});
+  expectError(withX("sin(x, y)"), {"'sin' takes 1 argument, got 2"});
+  expectError(withX("cross(x, y)"), {"argument 1 of 'cross' must be a 3-vector, got a scalar"});
+  expectError(withX("[x, y, z]"), {"equations.x: the equation of a scalar must be a scalar, not a 3-vector"});
+  expectError(withX("x y"), {"column 3: unexpected 'y' after a complete expression"});
+  expectError(withX("2x"), {"column 2: a name cannot follow the number '2'"});
+  expectError(withX(std::string(100000, '(') + "x" + std::string(100000, ')')), {"nested more than"});
+  expectError(withX(std::string(11 << 20, '1')), {"characters long"});
+  std::string sum = "x";
+  for (int i = 0; i < 200000; ++i) // a long (generated) equation is wide, not deep: it is accepted
+    sum += "+x";
+  EXPECT_EQ(errorOf(withX(sum)), "(no error)");
+
+  json j = lorenz();
+  j["definitions"] = {{"a", "b + 1"}, {"b", "2*a"}};
+  j["equations"]["x"] = "a";
+  expectError(j, {"refer to each other in a circle", "a -> b -> a"});
+  j = lorenz();
+  j["equations"].erase("z");
+  expectError(j, {"m.json:equations: the state variable 'z' has no equation"});
+  j = lorenz();
+  j["definitions"] = {{"rho", "1"}};
+  expectError(j, {"definitions.rho: the name 'rho' is defined twice"});
+  j = lorenz();
+  j["id"] = "lorenz";
+  expectError(j, {"m.json:id: the id 'lorenz' is taken by a built-in model"});
+  j = lorenz();
+  j["parameters"]["sigma"] = "ten";
+  expectError(j, {"m.json:parameters.sigma: expected an object"});
+  j = lorenz();
+  j["equations"]["w"] = "1";
+  expectError(j, {"m.json:equations.w: 'w' is not a state variable or vector"});
+}
+
+TEST(ModelFileErrors, ABlowUpNamesTheExpressionThatWentNonFinite) {
+  json scene = {{"model", lorenz()}, {"initial", {{"state", {{"x", 1e300}, {"y", -1e300}, {"z", 1e300}}}}}};
+  const Scene s = sceneFromJson(scene, "blow.json");
+  auto integrator = s.startIntegrator();
+  try {
+    for (int i = 0; i < 100; ++i)
+      integrator->step();
+    ADD_FAILURE() << "no error";
+  } catch (const ComputationError& e) {
+    EXPECT_NE(std::string(e.what()).find("stopped being finite"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("equations."), std::string::npos) << e.what();
+  }
+}
+
+TEST(ModelFileErrors, ASquareRootOfANegativeNumberInsideAStepIsNamed) {
+  const json model = json::parse(R"json({"id": "sqrt_test", "state": ["x"], "equations": {"x": "-sqrt(x)"
+}
+})json");
+  const json scene = {{"model", model}, {"initial", {{"state", {{"x", 1}}}}}, {"integrator", {{"method", "rk4"}, {"step", 0.3}}}};
+const Scene s = sceneFromJson(scene, "sqrt.json");
+auto integrator = s.startIntegrator();
+try {
+  for (int i = 0; i < 100; ++i)
+    integrator->step();
+  ADD_FAILURE() << "no error";
+} catch (const ComputationError& e) {
+  EXPECT_NE(std::string(e.what()).find("equations.x: 'sqrt' of -"), std::string::npos) << e.what();
+}
+}
+
+TEST(ModelFile, ScenesNameAModelFileRelativeToThemselves) {
+  const Scene s = sceneFromJson(json::parse(R"({"problem": "lorenz.json", "parameters": {"rho": 20},
+      "initial": {"state": {"x": 1, "y": 2, "z": 3}}})"),
+                                examples("scene.json"));
+  EXPECT_EQ(s.model->info().id, "lorenz_equations");
+  EXPECT_EQ(s.model->parameters()["rho"], 20);
+  EXPECT_EQ(s.initialState, Eigen::Vector3d(1, 2, 3));
+  // --set of a model file's parameter
+  const Scene t = sceneFromJson(s.document, examples("scene.json"), {{"sigma", "12"}});
+  EXPECT_EQ(t.model->parameters()["sigma"], 12);
+}
+
+TEST(ModelFile, AForcedFlowGetsItsTimeAndAStroboscopicSection) {
+  const json duffing = json::parse(R"json({
+    "id": "forced_test", "parameters": {"omega": 1.2},
+    "state": ["x", "v"],
+    "equations": {"x": "v", "v": "-x + 0.1*cos(omega*t)"},
+    "section": {"time": "2*pi/omega"}})json");
+  const ModelEntry& e = modelEntryFromJson(duffing, "d.json");
+  EXPECT_EQ(e.info->stateNames.back(), "time");
+  EXPECT_EQ(e.info->section, "strobe");
+  const auto m = e.create(ParameterValues(e.info->parameters));
+  const Eigen::VectorXd x = m->stateFromNamed({{"x", 0}, {"v", 0}}, "initial.state");
+  ASSERT_EQ(x.size(), 3);
+  // the linear forced oscillator's periodic response: x = F cos(omega t) / (1 - omega^2)
+  const double amplitude = 0.1 / (1 - 1.2 * 1.2);
+  Eigen::Vector3d start(amplitude, 0, 0);
+  auto integ = verner(1e-13);
+  integ->start(*m, 0, start);
+  const double T = 2 * std::numbers::pi / 1.2;
+  while (integ->time() < T)
+    integ->step();
+  Eigen::VectorXd y(3);
+  integ->interpolate(T, y);
+  EXPECT_NEAR(y[0], amplitude, 1e-10);
+  EXPECT_NEAR(y[1], 0, 1e-10);
+  EXPECT_NEAR(y[2], T, 1e-12);
+}
+
+} // namespace
+} // namespace rv
