@@ -3,14 +3,18 @@
 #include "dynamics/core/Errors.h"
 #include "dynamics/models/EquationModel.h"
 #include "scenes/JsonFields.h"
+#include "scenes/ModelCompiler.h"
 #include "scenes/SceneLoader.h"
 
+#include <atomic>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <list>
 #include <mutex>
 #include <sstream>
+#include <thread>
 
 namespace rv {
 
@@ -274,6 +278,17 @@ std::list<Loaded>& loaded() { // a list: entries never move (scenes keep pointer
   return l;
 }
 
+struct Compilation {
+  std::once_flag once;
+  std::mutex mutex;
+  CompiledModelFactory factory; // set when the compiled library is loaded
+};
+
+std::atomic<ModelCompilation>& compilationPolicy() {
+  static std::atomic<ModelCompilation> when{ModelCompilation::OnFirstUse};
+  return when;
+}
+
 const ModelEntry& entryOf(const std::string& key, const std::string& file, const json& doc,
                           const ordered_json* ordered, const std::string& source) {
   const std::lock_guard lock(loadedMutex());
@@ -289,7 +304,30 @@ const ModelEntry& entryOf(const std::string& key, const std::string& file, const
   Loaded& l = loaded().emplace_back(Loaded{key, file, system, {}});
   l.entry.info = &system->info();
   l.entry.origin = file.empty() ? source : file;
-  l.entry.create = [system](const ParameterValues& p) { return system->create(p); };
+  // compiled on the first instance (ModelCompiler.h), interpreted when that is off, not ready or fails
+  auto compilation = std::make_shared<Compilation>();
+  l.entry.create = [system, compilation](const ParameterValues& p) -> std::unique_ptr<Model> {
+    const ModelCompilation when =
+        compileModelsByDefault() ? compilationPolicy().load() : ModelCompilation::Off;
+    if (when != ModelCompilation::Off) {
+      std::call_once(compilation->once, [&] {
+        const auto compile = [system, compilation] {
+          auto factory = compiledModel(system, [](const std::string& note) {
+            std::fputs(("rollviz: " + note + "\n").c_str(), stderr);
+          });
+          const std::lock_guard lock(compilation->mutex);
+          compilation->factory = std::move(factory);
+        };
+        if (when == ModelCompilation::InBackground)
+          std::thread(compile).detach(); // owns what it uses; an exit before it ends abandons it harmlessly
+        else
+          compile();
+      });
+      const std::lock_guard lock(compilation->mutex);
+      if (compilation->factory) return compilation->factory(p);
+    }
+    return system->create(p);
+  };
   return l.entry;
 }
 
@@ -377,6 +415,17 @@ std::string modelFileOf(const ModelEntry& entry) {
   for (const Loaded& l : loaded())
     if (&l.entry == &entry) return l.file;
   return {};
+}
+
+void setModelCompilation(ModelCompilation when) {
+  compilationPolicy() = when;
+}
+
+std::shared_ptr<const EquationSystem> equationSystemOf(const ModelEntry& entry) {
+  const std::lock_guard lock(loadedMutex());
+  for (const Loaded& l : loaded())
+    if (&l.entry == &entry) return l.system;
+  return nullptr;
 }
 
 } // namespace rv

@@ -4,7 +4,9 @@
 // path, relative to the scene); one function resolves both for every front end.
 #pragma once
 #include "dynamics/core/ModelRegistry.h"
+#include "dynamics/models/EquationModel.h"
 
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -35,5 +37,14 @@ std::vector<const ModelEntry*> loadedModelFiles();
 
 /// The file a model-file entry came from ("" for a registered model or an inline one).
 std::string modelFileOf(const ModelEntry& entry);
+
+/// When a model file's field is compiled to native code (ModelCompiler.h): on its first instance, which waits
+/// for the compiler (the command line, Python); in the background, instances made before it is ready
+/// running interpreted (the GUI, whose thread never waits); or never. ROLLVIZ_COMPILE_MODELS=0 means never.
+enum class ModelCompilation { OnFirstUse, InBackground, Off };
+void setModelCompilation(ModelCompilation when);
+
+/// The checked system behind a model-file entry (null for a registered model).
+std::shared_ptr<const EquationSystem> equationSystemOf(const ModelEntry& entry);
 
 } // namespace rv

@@ -1,6 +1,7 @@
 #include "app/cli/BuildInfo.h"
 
 #include "render/video/Mp4Writer.h"
+#include "scenes/ModelCompiler.h"
 #include "scenes/ModuleLoader.h"
 
 #include <Eigen/Core>
@@ -31,6 +32,13 @@ std::vector<Fact> buildFacts() {
       {"libav", libavVersions()},
       {"fmt", fmt::format("{}.{}.{}", FMT_VERSION / 10000, FMT_VERSION / 100 % 100, FMT_VERSION % 100)},
       {"module stamp", moduleStamp()}};
+  std::string compiler;
+  const bool compiles = modelCompilationAvailable(&compiler);
+  facts.push_back(
+      {"model files", compiles ? (compileModelsByDefault() ? "compiled to native code on first use ("
+                                                           : "interpreted (ROLLVIZ_COMPILE_MODELS=0; ") +
+                                     compiler + ")"
+                               : "interpreted only: " + compiler});
   for (const auto& f : moduleFacts())
     facts.push_back(f);
   return facts;

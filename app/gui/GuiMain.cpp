@@ -3,6 +3,7 @@
 #include "app/gui/MainWindow.h"
 #include "app/gui/MapPanel.h"
 #include "app/gui/QtVtkWidget.h"
+#include "scenes/ModelFile.h"
 #include "scenes/SceneLoader.h"
 
 #include <QApplication>
@@ -33,6 +34,8 @@ int runGui(int argc, char** argv, const GuiOptions& options) {
   if (!qEnvironmentVariableIsSet("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "xcb");
   QSurfaceFormat::setDefaultFormat(QtVtkWidget::defaultFormat());
   QApplication app(argc, argv);
+  setModelCompilation(
+      ModelCompilation::InBackground); // model files: the GUI thread never waits for a compiler
   QApplication::setOrganizationName("rollviz");
   QApplication::setApplicationName("rollviz");
 

@@ -63,12 +63,12 @@ const char* opName(Op op) {
   return "?";
 }
 
-namespace detail {
-void notExpandable(Op op) {
-  throw InputError(std::string("the taylor integrator cannot expand ") + opName(op) +
+namespace fn {
+void notExpandable(const char* function) {
+  throw InputError(std::string("the taylor integrator cannot expand ") + function +
                    " (its series recurrence is not implemented): choose another integrator");
 }
-} // namespace detail
+} // namespace fn
 
 namespace {
 bool commutative(Op op) {
@@ -182,9 +182,15 @@ Program::Program(const Graph& graph, const std::vector<int>& outputs) {
 }
 
 void Program::evaluate(const double* in, double* out) const {
-  thread_local std::vector<double> reg;
-  reg.resize(code_.size());
-  run<double>(in, reg.data());
+  constexpr std::size_t kOnStack = 256; // most fields: no thread-local lookup, no heap
+  double stack[kOnStack];
+  thread_local std::vector<double> heap;
+  double* reg = stack;
+  if (code_.size() > kOnStack) {
+    heap.resize(code_.size());
+    reg = heap.data();
+  }
+  run<double>(in, reg);
   for (std::size_t i = 0; i < outputs_.size(); ++i)
     out[i] = reg[static_cast<std::size_t>(outputs_[i])];
 }
@@ -275,7 +281,7 @@ void Program::derivatives(const double* in, const double* seed, int seeded, int 
       fa = 1 - v * v;
       break;
     case Op::Abs:
-      fa = detail::sign(a);
+      fa = fn::sign(a);
       break;
     case Op::Sign:
       continue;

@@ -8,6 +8,7 @@
 #pragma once
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/TaylorTape.h"
+#include "dynamics/expr/Functions.h"
 
 #include <cmath>
 #include <cstdint>
@@ -120,30 +121,8 @@ private:
   int inputsUsed_ = 0;
 };
 
-namespace detail {
-[[noreturn]] void notExpandable(Op op);
-inline double sign(double x) {
-  return x > 0 ? 1.0 : (x < 0 ? -1.0 : 0.0);
-}
-/// Elementary functions on a recording scalar, written with those the Taylor tape expands.
-inline taylor::Var tanOf(const taylor::Var& x) {
-  return sin(x) / cos(x);
-}
-inline taylor::Var sinhOf(const taylor::Var& x) {
-  return (exp(x) - exp(-x)) * 0.5;
-}
-inline taylor::Var coshOf(const taylor::Var& x) {
-  return (exp(x) + exp(-x)) * 0.5;
-}
-inline taylor::Var tanhOf(const taylor::Var& x) {
-  const taylor::Var e = exp(x * 2.0);
-  return (e - 1.0) / (e + 1.0);
-}
-} // namespace detail
-
 template <class S> void Program::run(const S* in, S* reg) const {
-  constexpr bool plain = std::is_same_v<S, double>;
-  using std::abs, std::exp, std::log, std::sqrt, std::sin, std::cos, std::pow;
+  using std::exp, std::log, std::sqrt, std::sin, std::cos, std::pow;
   for (std::size_t i = 0; i < code_.size(); ++i) {
     const Instr& k = code_[i];
     const auto A = [&]() -> const S& { return reg[k.a]; };
@@ -175,10 +154,7 @@ template <class S> void Program::run(const S* in, S* reg) const {
       r = pow(A(), k.c);
       break;
     case Op::Pow:
-      if constexpr (plain)
-        r = std::pow(A(), B());
-      else
-        r = exp(B() * log(A()));
+      r = fn::power(A(), B());
       break;
     case Op::Sqrt:
       r = sqrt(A());
@@ -195,80 +171,42 @@ template <class S> void Program::run(const S* in, S* reg) const {
     case Op::Cos:
       r = cos(A());
       break;
-    default:
-      if constexpr (plain) {
-        const double a = A(), b = k.b >= 0 ? B() : 0.0;
-        switch (k.op) {
-        case Op::Tan:
-          r = std::tan(a);
-          break;
-        case Op::Asin:
-          r = std::asin(a);
-          break;
-        case Op::Acos:
-          r = std::acos(a);
-          break;
-        case Op::Atan:
-          r = std::atan(a);
-          break;
-        case Op::Atan2:
-          r = std::atan2(a, b);
-          break;
-        case Op::Sinh:
-          r = std::sinh(a);
-          break;
-        case Op::Cosh:
-          r = std::cosh(a);
-          break;
-        case Op::Tanh:
-          r = std::tanh(a);
-          break;
-        case Op::Abs:
-          r = std::abs(a);
-          break;
-        case Op::Sign:
-          r = detail::sign(a);
-          break;
-        case Op::Min:
-          r = std::fmin(a, b);
-          break;
-        case Op::Max:
-          r = std::fmax(a, b);
-          break;
-        default:
-          break;
-        }
-      } else {
-        switch (k.op) {
-        case Op::Tan:
-          r = detail::tanOf(A());
-          break;
-        case Op::Sinh:
-          r = detail::sinhOf(A());
-          break;
-        case Op::Cosh:
-          r = detail::coshOf(A());
-          break;
-        case Op::Tanh:
-          r = detail::tanhOf(A());
-          break;
-        // piecewise: expanded on the branch of the recorded state (the tape is marked as branching)
-        case Op::Abs:
-          r = valueOf(A()) < 0 ? -A() : A();
-          break;
-        case Op::Sign:
-          r = S(detail::sign(valueOf(A())));
-          break;
-        case Op::Min:
-          r = valueOf(A()) <= valueOf(B()) ? A() : B();
-          break;
-        case Op::Max:
-          r = valueOf(A()) >= valueOf(B()) ? A() : B();
-          break;
-        default:
-          detail::notExpandable(k.op);
-        }
-      }
+    case Op::Tan:
+      r = fn::tan(A());
+      break;
+    case Op::Asin:
+      r = fn::asin(A());
+      break;
+    case Op::Acos:
+      r = fn::acos(A());
+      break;
+    case Op::Atan:
+      r = fn::atan(A());
+      break;
+    case Op::Atan2:
+      r = fn::atan2(A(), B());
+      break;
+    case Op::Sinh:
+      r = fn::sinh(A());
+      break;
+    case Op::Cosh:
+      r = fn::cosh(A());
+      break;
+    case Op::Tanh:
+      r = fn::tanh(A());
+      break;
+    case Op::Abs:
+      r = fn::abs(A());
+      break;
+    case Op::Sign:
+      r = fn::sign(A());
+      break;
+    case Op::Min:
+      r = fn::min(A(), B());
+      break;
+    case Op::Max:
+      r = fn::max(A(), B());
+      break;
     }
   }
 }

@@ -7,6 +7,10 @@
 namespace rv::expr {
 namespace {
 
+constexpr std::size_t idx(int i) {
+  return Value::idx(i);
+}
+
 const std::map<std::string, Op>& scalarFunctions() {
   static const std::map<std::string, Op> f{
       {"sin", Op::Sin},   {"cos", Op::Cos},   {"tan", Op::Tan},   {"asin", Op::Asin}, {"acos", Op::Acos},
@@ -120,9 +124,7 @@ Value Lowering::inverse(const Value& m, int column) {
   const auto mul = [&](int a, int b) { return g_.make(Op::Mul, a, b); };
   const auto sub = [&](int a, int b) { return g_.make(Op::Sub, a, b); };
   Value r{m.rows, m.cols, std::vector<int>(m.n.size())};
-  const auto set = [&](int i, int j, int v) {
-    r.n[static_cast<std::size_t>(i * r.cols + j)] = g_.make(Op::Div, v, det);
-  };
+  const auto set = [&](int i, int j, int v) { r.n[idx(i * r.cols + j)] = g_.make(Op::Div, v, det); };
   if (m.rows == 1) {
     set(0, 0, g_.constant(1));
   } else if (m.rows == 2) {
@@ -224,7 +226,7 @@ Value Lowering::call(const Expression& e, const Node& n) {
     const int size = static_cast<int>(d.size());
     Value r{size, size, std::vector<int>(d.size() * d.size(), g_.constant(0))};
     for (int i = 0; i < size; ++i)
-      r.n[static_cast<std::size_t>(i * size + i)] = d[static_cast<std::size_t>(i)];
+      r.n[idx(i * size + i)] = d[idx(i)];
     return r;
   }
   if (n.name == "identity") {
@@ -236,7 +238,7 @@ Value Lowering::call(const Expression& e, const Node& n) {
     if (size < 2) throw ExprError(n.column, "identity(n) needs n >= 2");
     Value r{size, size, std::vector<int>(static_cast<std::size_t>(size * size), g_.constant(0))};
     for (int i = 0; i < size; ++i)
-      r.n[static_cast<std::size_t>(i * size + i)] = g_.constant(1);
+      r.n[idx(i * size + i)] = g_.constant(1);
     return r;
   }
   if (n.name == "dot") {

@@ -20,7 +20,9 @@ struct Value {
   bool scalar() const { return rows == 1 && cols == 1; }
   bool vector() const { return cols == 1 && rows > 1; }
   bool matrix() const { return cols > 1; }
-  int at(int i, int j) const { return n[static_cast<std::size_t>(i * cols + j)]; }
+  int at(int i, int j) const { return n[idx(i * cols + j)]; }
+  /// An index as the containers take it (from int arithmetic that cannot be negative here).
+  static constexpr std::size_t idx(int i) { return static_cast<std::size_t>(i); }
   static Value of(int node) { return {1, 1, {node}}; }
 };
 

@@ -20,7 +20,12 @@ using expr::Expression;
 using expr::Graph;
 using expr::Value;
 
-constexpr const char* kTime = "time"; // the state component of a non-autonomous flow's autonomous extension
+constexpr const char* kTime = "time";
+
+/// An index as the containers take it (from int arithmetic that cannot be negative here).
+constexpr std::size_t idx(int i) {
+  return static_cast<std::size_t>(i);
+} // the state component of a non-autonomous flow's autonomous extension
 
 bool identifier(const std::string& s) {
   if (s.empty() || !(std::isalpha(static_cast<unsigned char>(s[0])) != 0 || s[0] == '_')) return false;
@@ -55,14 +60,14 @@ public:
     const Expression& e = system_.parsed(text.where);
     expr::Lowering lowering(
         graph_, [this](const std::string& name, int column) { return resolve(name, column); }, known_);
-    const Value v = at(text.where, [&] { return lowering.lower(e); });
+    Value v = at(text.where, [&] { return lowering.lower(e); });
     origins_.pop_back(); // the nodes made next belong to the expression that used this one
     if (!origins_.empty()) graph_.setOrigin(origins_.back());
     return v;
   }
   /// lower() that requires a shape: rows x cols (cols 1: a vector; rows = cols = 1: a scalar).
   Value lower(const ExprText& text, int rows, int cols, const std::string& what) {
-    const Value v = lower(text);
+    Value v = lower(text);
     if (v.rows != rows || v.cols != cols)
       throw InputError(text.where + ": " + what + " must be " + expr::shapeName(Value{rows, cols, {}}) +
                        ", not " + expr::shapeName(v));
@@ -100,7 +105,7 @@ private:
 
 /// The base names of the model's own state: each component an input slot, the vectors, `t`, the parameters
 /// as constants (folded into the programs).
-std::map<std::string, Value> stateNames(const EquationSystem& system, Graph& g, const ParameterValues& p,
+std::map<std::string, Value> stateNames(const EquationSystem& system, Graph& g, const ParameterValues* p,
                                         const std::vector<int>& stateNodes, int timeNode) {
   std::map<std::string, Value> base;
   const auto& names = system.info().stateNames;
@@ -113,10 +118,47 @@ std::map<std::string, Value> stateNames(const EquationSystem& system, Graph& g, 
     base[name] = v;
   }
   base["t"] = Value::of(timeNode);
-  const auto& specs = p.table().specs();
+  // the parameters' values folded in, or (p null) input slots after the state and the time, for the
+  // generated code that takes them at run time
+  const auto& specs = system.info().parameters.specs();
+  const int first = static_cast<int>(names.size()) + 1;
   for (std::size_t i = 0; i < specs.size(); ++i)
-    base[specs[i].id] = Value::of(g.constant(p.values()[i]));
+    base[specs[i].id] = Value::of(p ? g.constant(p->values()[i]) : g.input(first + static_cast<int>(i)));
   return base;
+}
+
+/// Input slots 0..n-1: the state.
+std::vector<int> stateInputs(Graph& g, int n) {
+  std::vector<int> state;
+  state.reserve(idx(n));
+  for (int i = 0; i < n; ++i)
+    state.push_back(g.input(i));
+  return state;
+}
+
+/// The right-hand side's nodes, one per state component, in a scope of the state's names.
+std::vector<int> fieldNodes(const EquationSystem& sys, Graph& g, Scope& scope) {
+  const auto& spec = sys.spec();
+  const auto& names = sys.info().stateNames;
+  std::vector<int> field(names.size(), -1);
+  const auto index = [&](const std::string& name) {
+    return static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin());
+  };
+  for (const auto& equation : spec.equations) { // no structured binding: the lambda below captures the key
+    const std::string& key = equation.first;
+    const ExprText& text = equation.second;
+    const auto vec =
+        std::find_if(spec.vectors.begin(), spec.vectors.end(), [&](const auto& v) { return v.first == key; });
+    if (vec == spec.vectors.end()) {
+      field[index(key)] = scope.lower(text, 1, 1, "the equation of a scalar").n[0];
+      continue;
+    }
+    const Value v = scope.lower(text, static_cast<int>(vec->second.size()), 1, "the equation of a vector");
+    for (std::size_t c = 0; c < vec->second.size(); ++c)
+      field[index(vec->second[c])] = v.n[c];
+  }
+  if (sys.nonAutonomous()) field.back() = g.constant(1);
+  return field;
 }
 
 } // namespace
@@ -187,7 +229,9 @@ EquationSystem::EquationSystem(EquationModelSpec spec) : spec_(std::move(spec)),
 
   // one equation per state variable
   std::map<std::string, std::string> equationOf;
-  for (const auto& [key, text] : spec_.equations) {
+  for (const auto& equation : spec_.equations) { // no structured binding: the lambdas below capture the key
+    const std::string& key = equation.first;
+    const ExprText& text = equation.second;
     std::vector<std::string> targets;
     const auto vec = std::find_if(spec_.vectors.begin(), spec_.vectors.end(),
                                   [&](const auto& v) { return v.first == key; });
@@ -318,6 +362,15 @@ std::unique_ptr<Model> EquationSystem::create(const ParameterValues& params) con
   return std::make_unique<EquationModel>(shared_from_this(), params);
 }
 
+expr::Program EquationSystem::parametricField() const {
+  Graph g;
+  const int n = static_cast<int>(info_.stateNames.size());
+  const std::vector<int> state = stateInputs(g, n);
+  const int time = nonAutonomous_ ? state.back() : g.input(n);
+  Scope scope(*this, g, stateNames(*this, g, nullptr, state, time));
+  return {g, fieldNodes(*this, g, scope)};
+}
+
 std::shared_ptr<const EquationSystem> EquationSystem::build(EquationModelSpec spec) {
   std::shared_ptr<const EquationSystem> system(new EquationSystem(std::move(spec)));
   (void)system->create(ParameterValues(system->info().parameters)); // every expression lowered and checked
@@ -333,30 +386,16 @@ EquationModel::EquationModel(std::shared_ptr<const EquationSystem> system, const
   const EquationModelSpec& spec = sys.spec();
   const auto& names = info_->stateNames;
   const int n = dimension();
-  std::vector<int> state;
-  for (int i = 0; i < n; ++i)
-    state.push_back(graph_.input(i));
+  const std::vector<int> state = stateInputs(graph_, n);
   const int timeNode = sys.nonAutonomous() ? state.back() : graph_.input(n);
-  Scope scope(sys, graph_, stateNames(sys, graph_, params, state, timeNode));
+  Scope scope(sys, graph_, stateNames(sys, graph_, &params, state, timeNode));
 
   // the field
-  std::vector<int> field(static_cast<std::size_t>(n), -1);
+  field_ = expr::Program(graph_, fieldNodes(sys, graph_, scope));
+  if (field_.inputsUsed() > n) throw std::logic_error(info_->id + ": the field reads the time slot");
   const auto index = [&](const std::string& name) {
     return static_cast<int>(std::find(names.begin(), names.end(), name) - names.begin());
   };
-  for (const auto& [key, text] : spec.equations) {
-    const auto vec =
-        std::find_if(spec.vectors.begin(), spec.vectors.end(), [&](const auto& v) { return v.first == key; });
-    if (vec == spec.vectors.end()) {
-      field[static_cast<std::size_t>(index(key))] = scope.lower(text, 1, 1, "the equation of a scalar").n[0];
-      continue;
-    }
-    const Value v = scope.lower(text, static_cast<int>(vec->second.size()), 1, "the equation of a vector");
-    for (std::size_t c = 0; c < vec->second.size(); ++c)
-      field[static_cast<std::size_t>(index(vec->second[c]))] = v.n[c];
-  }
-  if (sys.nonAutonomous()) field.back() = graph_.constant(1);
-  field_ = expr::Program(graph_, field);
 
   // observables (t and the state first, as every model has them)
   addObservable("t", "time", [](double t, const double*) { return t; });
@@ -442,7 +481,7 @@ EquationModel::EquationModel(std::shared_ptr<const EquationSystem> system, const
       // the observable evaluated on the completed state, minus the value it must have
       Scope onState(
           sys, graph_,
-          stateNames(sys, graph_, params, st, sys.nonAutonomous() ? st.back() : graph_.constant(0)));
+          stateNames(sys, graph_, &params, st, sys.nonAutonomous() ? st.back() : graph_.constant(0)));
       const auto obs = std::find_if(spec.observables.begin(), spec.observables.end(),
                                     [&](const auto& o) { return o.id == m.integral; });
       const int value = onState.lower(obs->value).n[0];
@@ -514,48 +553,50 @@ thread_local std::vector<double> lastNonFinite;
 
 void EquationModel::rhs(const double* x, double* dx) const {
   const int n = dimension();
-  const double* in = withTime(x, n, 0);
-  field_.evaluate(in, dx);
+  field_.evaluate(x, dx); // the field reads the state only (a non-autonomous flow's t is its last component)
   double sum = 0, inputs = 0;
   for (int i = 0; i < n; ++i)
     sum += dx[i], inputs += x[i];
-  if (!std::isfinite(sum) && std::isfinite(inputs)) lastNonFinite.assign(in, in + n + 1); // where it began
+  if (!std::isfinite(sum) && std::isfinite(inputs)) { // where it began
+    lastNonFinite.assign(x, x + n);
+    lastNonFinite.push_back(0);
+  }
 }
 
 void EquationModel::jacobian(const double* x, double* jac) const {
   const int n = dimension();
   thread_local std::vector<double> seed, value;
-  seed.assign(static_cast<std::size_t>(n * n), 0.0);
+  seed.assign(idx(n * n), 0.0);
   for (int i = 0; i < n; ++i)
-    seed[static_cast<std::size_t>(i * n + i)] = 1;
+    seed[idx(i * n + i)] = 1;
   value.resize(static_cast<std::size_t>(n));
-  field_.derivatives(withTime(x, n, 0), seed.data(), n, n, value.data(), jac);
+  field_.derivatives(x, seed.data(), n, n, value.data(), jac);
 }
 
 void EquationModel::coreJacobian(const double* x, double* jac) const {
   const int n = dimension(), m = info_->coreDimension;
   thread_local std::vector<double> seed, value, full;
-  seed.assign(static_cast<std::size_t>(m * m), 0.0);
+  seed.assign(idx(m * m), 0.0);
   for (int i = 0; i < m; ++i)
-    seed[static_cast<std::size_t>(i * m + i)] = 1;
+    seed[idx(i * m + i)] = 1;
   value.resize(static_cast<std::size_t>(n));
-  full.resize(static_cast<std::size_t>(n * m));
-  field_.derivatives(withTime(x, n, 0), seed.data(), m, m, value.data(), full.data());
+  full.resize(idx(n * m));
+  field_.derivatives(x, seed.data(), m, m, value.data(), full.data());
   std::copy_n(full.data(), m * m, jac); // the first m outputs' rows
 }
 
 void EquationModel::tangentRhs(const double* x, const double* V, int k, double* dx, double* dV) const {
   const int n = dimension(), m = info_->coreDimension;
   thread_local std::vector<double> seed, der;
-  seed.resize(static_cast<std::size_t>(m * k));
+  seed.resize(idx(m * k));
   for (int c = 0; c < k; ++c) // V holds k columns of m; the seeds are per input slot
     for (int i = 0; i < m; ++i)
-      seed[static_cast<std::size_t>(i * k + c)] = V[c * m + i];
-  der.resize(static_cast<std::size_t>(n * k));
-  field_.derivatives(withTime(x, n, 0), seed.data(), m, k, dx, der.data());
+      seed[idx(i * k + c)] = V[c * m + i];
+  der.resize(idx(n * k));
+  field_.derivatives(x, seed.data(), m, k, dx, der.data());
   for (int c = 0; c < k; ++c)
     for (int i = 0; i < m; ++i)
-      dV[c * m + i] = der[static_cast<std::size_t>(i * k + c)];
+      dV[c * m + i] = der[idx(i * k + c)];
 }
 
 void EquationModel::recordField(taylor::Tape& tape, const double* x) const {
@@ -631,8 +672,7 @@ std::vector<double> EquationModel::completionRoots(const std::vector<double>& po
     return {};
   }
   map_.evaluate(in.data(), out.data());
-  const double from = out[static_cast<std::size_t>(n + 1)], to = out[static_cast<std::size_t>(n + 2)],
-               step = out[static_cast<std::size_t>(n + 3)];
+  const double from = out[idx(n + 1)], to = out[idx(n + 2)], step = out[idx(n + 3)];
   const auto residual = [&](double u) {
     in[static_cast<std::size_t>(k)] = u;
     map_.evaluate(in.data(), out.data());

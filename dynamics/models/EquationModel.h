@@ -89,7 +89,11 @@ public:
   bool nonAutonomous() const { return nonAutonomous_; }
   /// Parsed expressions by their `where`.
   const expr::Expression& parsed(const std::string& where) const;
+  /// The interpreted model at these parameter values.
   std::unique_ptr<Model> create(const ParameterValues& params) const;
+  /// The right-hand side with the parameters as inputs: slots 0..n-1 the state, n the time, n + 1 + k
+  /// parameter k (what the generated C++ computes, ModelCode.h).
+  expr::Program parametricField() const;
 
 private:
   explicit EquationSystem(EquationModelSpec spec);

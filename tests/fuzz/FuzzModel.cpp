@@ -13,6 +13,12 @@
 #include <sstream>
 #include <string>
 
+// interpreted: a compiler run per input would be slow and fill the cache of compiled models
+extern "C" int LLVMFuzzerInitialize(int*, char***) {
+  rv::setModelCompilation(rv::ModelCompilation::Off);
+  return 0;
+}
+
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   std::istringstream in(std::string(reinterpret_cast<const char*>(data), size));
   try {

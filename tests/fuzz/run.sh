@@ -7,6 +7,7 @@ set -euo pipefail
 cd "$(dirname "$0")/../.."
 seconds=${1:-30}
 findings=build/fuzz/findings
+export ROLLVIZ_COMPILE_MODELS=0 # model files found by the fuzzers run interpreted (no compiler per input)
 mkdir -p "$findings"
 for target in scene override sweep model; do
   exe=build/fuzz/tests/fuzz/fuzz_$target

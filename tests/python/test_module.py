@@ -267,3 +267,31 @@ def test_every_tool_runs_from_python():
     tree = sm.bifurcation_tree(guess=[np.pi, 0], parameter="K", to=4.5, step=0.05, levels=1)
     assert tree.rows.shape[1] == len(tree.columns)
     assert tree.doublings and abs(tree.doublings[0].parameter - 4) < 1e-6
+
+
+def test_a_model_file_from_python_equals_the_cli(tmp_path, monkeypatch):
+    # interpreted here (the compiled path has its own tests): the same numbers as `rollviz integrate` on the file
+    monkeypatch.setenv("ROLLVIZ_COMPILE_MODELS", "0")
+    path = os.path.join(SOURCE, "examples", "models", "henon_heiles.json")
+    scene = tmp_path / "hh.json"
+    scene.write_text('{"problem": "%s", "parameters": {"energy": 0.1}, "initial": {"map": [0.1, 0.05]}}' % path)
+    out = tmp_path / "cli.csv"
+    cli("integrate", scene, "--time", 3, "--every", 1, "--columns", "t,x,y,px,py,E", "-o", out)
+    header, expected = read_csv(out)
+    m = rollviz.Model.load(path)
+    assert m.id == "henon_heiles_equations" and m.path == path
+    assert [p["id"] for p in m.describe()["parameters"]] == ["energy"]
+    t, X = rollviz.Scene(m, energy=0.1, **{"initial.map": [0.1, 0.05]}).integrate(time=3, every=1, columns=header)
+    assert np.array_equal(X, expected)
+    # a dict with the same content is the same model; a bad expression is a ValueError naming the place
+    import json
+    with open(path) as f:
+        content = json.load(f)
+    content["id"] = "hh_from_a_dict"
+    t2, X2 = rollviz.Scene(rollviz.Model(content), energy=0.1, **{"initial.map": [0.1, 0.05]}).integrate(
+        time=3, every=1, columns=header)
+    assert np.array_equal(X2, expected)
+    content["id"] = "hh_broken"
+    content["equations"]["px"] = "-x - 2*x*yy"
+    with pytest.raises(ValueError, match=r"equations.px: column 10: unknown name 'yy'"):
+        rollviz.Model(content)

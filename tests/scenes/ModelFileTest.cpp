@@ -8,6 +8,7 @@
 #include "dynamics/integrators/Integrator.h"
 #include "dynamics/tools/FixedPoint.h"
 #include "dynamics/tools/Lyapunov.h"
+#include "scenes/ModelCompiler.h"
 #include "scenes/SceneLoader.h"
 
 #include <Eigen/LU>
@@ -261,6 +262,58 @@ TEST(ModelFile, ChaplyginSleighGoesStraightWithTheSpeedOfItsEnergy) {
   EXPECT_NEAR(x[1], 0, 1e-9);
 }
 
+// The compiled path: the generated C++ built and loaded (ModelCompiler.h) gives the built-in model's numbers,
+// with the built-in machinery (fixed-size AutoDiff, the fused RK4 of tangent vectors, the Taylor recording).
+std::unique_ptr<Model> compiled(const std::string& file, const std::map<std::string, double>& set = {}) {
+  const ModelEntry& e = modelFileEntry(examples(file));
+  std::string notes;
+  const auto factory = compiledModel(equationSystemOf(e), [&](const std::string& n) { notes += n + "\n"; });
+  if (!factory) {
+    std::string why;
+    if (!modelCompilationAvailable(&why)) return nullptr; // no compiler here: said by the caller
+    ADD_FAILURE() << notes;
+    return nullptr;
+  }
+  ParameterValues p(e.info->parameters);
+  for (const auto& [k, v] : set)
+    p.set(k, v);
+  return factory(p);
+}
+
+TEST(ModelFileCompiled, LorenzAndTheChaplyginBallCompiledFollowTheBuiltInModels) {
+  std::string why;
+  if (!modelCompilationAvailable(&why)) GTEST_SKIP() << why;
+  {
+    const auto file = compiled("lorenz.json");
+    ASSERT_TRUE(file);
+    const auto builtin = ModelRegistry::global().get("lorenz").create(
+        ParameterValues(ModelRegistry::global().get("lorenz").info->parameters));
+    expectSameField(*builtin, *file, Eigen::Vector3d(1.5, -2, 20));
+    EXPECT_LT(trajectoryDifference(*builtin, *file, Eigen::Vector3d(1, 1, 1), 10), 1e-8);
+    const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
+    Eigen::VectorXd x = Eigen::Vector3d(1, 1, 1), V = Eigen::Map<const Eigen::VectorXd>(identity.data(), 9);
+    EXPECT_TRUE(file->tangentRk4(x.data(), V.data(), 3, 1e-3, 10)); // the fused path of Lyapunov spectra
+  }
+  const std::map<std::string, double> set{{"K1", 0.1}, {"K3", -0.2}};
+  const auto file = compiled("chaplygin_ball.json", set);
+  ASSERT_TRUE(file);
+  const ModelEntry& b = ModelRegistry::global().get("chaplygin_ball");
+  ParameterValues p(b.info->parameters);
+  for (const auto& [k, v] : set)
+    p.set(k, v);
+  const auto builtin = b.create(p);
+  const std::map<std::string, double> s{{"M1", 0.3},     {"M2", 0.5},     {"M3", 0.4},
+                                        {"gamma1", 0.0}, {"gamma2", 0.6}, {"gamma3", 0.8}};
+  const Eigen::VectorXd x = builtin->stateFromNamed(s, "s");
+  expectSameField(*builtin, *file, x);
+  EXPECT_LT(trajectoryDifference(*builtin, *file, x, 50), 1e-8);
+  const MapPointSpec on{.sectionValue = 0.3, .root = 1};
+  EXPECT_LT((builtin->stateFromMap({0.5, 0.2}, on, "m") - file->stateFromMap({0.5, 0.2}, on, "m"))
+                .cwiseAbs()
+                .maxCoeff(),
+            1e-12);
+}
+
 // ---------------------------------------------------------------------------------------------------------
 // errors
 
@@ -331,34 +384,32 @@ TEST(ModelFileErrors, NameTheFileThePathTheColumnAndWhatIsWrong) {
   expectError(j, {"m.json:equations.w: 'w' is not a state variable or vector"});
 }
 
-TEST(ModelFileErrors, ABlowUpNamesTheExpressionThatWentNonFinite) {
-  json scene = {{"model", lorenz()}, {"initial", {{"state", {{"x", 1e300}, {"y", -1e300}, {"z", 1e300}}}}}};
+/// The message of the computation error that ends a scene's integration ("" when none comes in 100 steps).
+std::string blowUp(const json& scene) {
   const Scene s = sceneFromJson(scene, "blow.json");
   auto integrator = s.startIntegrator();
   try {
     for (int i = 0; i < 100; ++i)
       integrator->step();
-    ADD_FAILURE() << "no error";
   } catch (const ComputationError& e) {
-    EXPECT_NE(std::string(e.what()).find("stopped being finite"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("equations."), std::string::npos) << e.what();
+    return e.what();
   }
+  return "";
+}
+
+TEST(ModelFileErrors, ABlowUpNamesTheExpressionThatWentNonFinite) {
+  const std::string e =
+      blowUp({{"model", lorenz()}, {"initial", {{"state", {{"x", 1e300}, {"y", -1e300}, {"z", 1e300}}}}}});
+  EXPECT_NE(e.find("stopped being finite"), std::string::npos) << e;
+  EXPECT_NE(e.find("equations."), std::string::npos) << e;
 }
 
 TEST(ModelFileErrors, ASquareRootOfANegativeNumberInsideAStepIsNamed) {
-  const json model = json::parse(R"json({"id": "sqrt_test", "state": ["x"], "equations": {"x": "-sqrt(x)"
-}
-})json");
-  const json scene = {{"model", model}, {"initial", {{"state", {{"x", 1}}}}}, {"integrator", {{"method", "rk4"}, {"step", 0.3}}}};
-const Scene s = sceneFromJson(scene, "sqrt.json");
-auto integrator = s.startIntegrator();
-try {
-  for (int i = 0; i < 100; ++i)
-    integrator->step();
-  ADD_FAILURE() << "no error";
-} catch (const ComputationError& e) {
-  EXPECT_NE(std::string(e.what()).find("equations.x: 'sqrt' of -"), std::string::npos) << e.what();
-}
+  const json model = {{"id", "sqrt_test"}, {"state", {"x"}}, {"equations", {{"x", "-sqrt(x)"}}}};
+  const std::string e = blowUp({{"model", model},
+                                {"initial", {{"state", {{"x", 1}}}}},
+                                {"integrator", {{"method", "rk4"}, {"step", 0.3}}}});
+EXPECT_NE(e.find("equations.x: 'sqrt' of -"), std::string::npos) << e;
 }
 
 TEST(ModelFile, ScenesNameAModelFileRelativeToThemselves) {
