@@ -35,7 +35,7 @@ public:
     onlyKeys(doc_, root,
              {"id", "title", "reference", "description", "kind", "parameters", "state", "vectors",
               "definitions", "equations", "observables", "integrals", "measure", "section", "complete", "map",
-              "view"});
+              "view", "initial"});
     EquationModelSpec s;
     s.source = source_;
     ModelInfo& info = s.info;
@@ -267,6 +267,7 @@ struct Loaded {
   std::string file; // "" for an inline model
   std::shared_ptr<const EquationSystem> system;
   ModelEntry entry;
+  json initial; // the file's default start, or null
 };
 
 std::mutex& loadedMutex() {
@@ -301,7 +302,7 @@ const ModelEntry& entryOf(const std::string& key, const std::string& file, const
   } catch (const InputError& e) {
     throw InputError(source + ":" + e.what());
   }
-  Loaded& l = loaded().emplace_back(Loaded{key, file, system, {}});
+  Loaded& l = loaded().emplace_back(Loaded{key, file, system, {}, doc.value("initial", json())});
   l.entry.info = &system->info();
   l.entry.origin = file.empty() ? source : file;
   // compiled on the first instance (ModelCompiler.h), interpreted when that is off, not ready or fails
@@ -419,6 +420,13 @@ std::string modelFileOf(const ModelEntry& entry) {
 
 void setModelCompilation(ModelCompilation when) {
   compilationPolicy() = when;
+}
+
+json modelFileInitial(const ModelEntry& entry) {
+  const std::lock_guard lock(loadedMutex());
+  for (const Loaded& l : loaded())
+    if (&l.entry == &entry) return l.initial;
+  return nullptr;
 }
 
 std::shared_ptr<const EquationSystem> equationSystemOf(const ModelEntry& entry) {

@@ -44,6 +44,10 @@ std::string modelFileOf(const ModelEntry& entry);
 enum class ModelCompilation { OnFirstUse, InBackground, Off };
 void setModelCompilation(ModelCompilation when);
 
+/// A model file's "initial" (as a scene's: {"state": {...}} or {"map": [...]}), the start of a scene that
+/// gives none; null when it has none (or for a registered model).
+nlohmann::json modelFileInitial(const ModelEntry& entry);
+
 /// The checked system behind a model-file entry (null for a registered model).
 std::shared_ptr<const EquationSystem> equationSystemOf(const ModelEntry& entry);
 

@@ -412,8 +412,15 @@ Scene sceneFromJson(json doc, const std::string& source, const std::vector<Scene
       scene.model->findObservable(scene.poincare.observable) < 0)
     (root / "poincare" / "section")
         .fail("unknown observable '" + scene.poincare.observable + "' of " + problem);
-  if (!doc.contains("initial")) root.fail("missing \"initial\" (a map point or a state)");
-  scene.initialState = readInitial(doc["initial"], root / "initial", *scene.model, scene.poincare);
+  if (doc.contains("initial")) {
+    scene.initialState = readInitial(doc["initial"], root / "initial", *scene.model, scene.poincare);
+  } else if (const json initial = modelFileInitial(*scene.modelEntry); !initial.is_null()) {
+    // a model file's own start (what opening the file in the GUI shows)
+    scene.initialState =
+        readInitial(initial, Where{scene.modelEntry->origin, "initial"}, *scene.model, scene.poincare);
+  } else {
+    root.fail("missing \"initial\" (a map point or a state)");
+  }
   if (doc.contains("view")) scene.view = readView(doc["view"], root / "view");
   if (doc.contains("results")) { // the GUI's Results kept with the scene: lines of text
     const json& r = doc["results"];

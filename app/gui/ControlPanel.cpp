@@ -3,6 +3,7 @@
 #include "app/gui/ParameterForm.h"
 #include "dynamics/core/ModelRegistry.h"
 #include "dynamics/tools/ToolSettings.h"
+#include "scenes/ModelFile.h"
 
 #include <QComboBox>
 #include <QPushButton>
@@ -105,7 +106,14 @@ void ControlPanel::setScene(const Scene& scene) {
     problems->addItem(QString::fromStdString(e.info->id));
     problems->setItemData(problems->count() - 1, QString::fromStdString(e.info->title), Qt::ToolTipRole);
   }
-  if (problems->findText(QString::fromStdString(scene.model->info().id)) < 0) { // a model file's own model
+  for (const ModelEntry* e : loadedModelFiles()) // the model files opened so far join the list
+    if (!modelFileOf(*e).empty() && problems->findText(QString::fromStdString(e->info->id)) < 0) {
+      problems->addItem(QString::fromStdString(e->info->id));
+      problems->setItemData(problems->count() - 1,
+                            QString::fromStdString(e->info->title + " (" + modelFileOf(*e) + ")"),
+                            Qt::ToolTipRole);
+    }
+  if (problems->findText(QString::fromStdString(scene.model->info().id)) < 0) { // an inline model
     problems->addItem(QString::fromStdString(scene.model->info().id));
     problems->setItemData(problems->count() - 1, QString::fromStdString(scene.model->info().title),
                           Qt::ToolTipRole);

@@ -18,6 +18,7 @@
 #include "dynamics/tools/ToolRegistry.h"
 #include "render/video/ScreenRecorder.h"
 #include "render/video/VideoExport.h"
+#include "scenes/ModelFile.h"
 #include "scenes/SceneCharts.h"
 #include "scenes/SceneLoader.h"
 
@@ -216,6 +217,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 
   auto* file = menuBar()->addMenu("&File");
   file->addAction("Open scene…", this, &MainWindow::openDialog);
+  file->addAction("Open model…", this, [this] {
+    const QString path = QFileDialog::getOpenFileName(this, "Open a model file (docs/models.md)", QString(),
+                                                      "Model files (*.json)");
+    if (!path.isEmpty()) openModel(path);
+  });
   file->addAction("Save scene as…", this, &MainWindow::saveDialog)->setShortcut(QKeySequence::SaveAs);
   file->addAction("Open sweep…", this,
                   [this] {
@@ -376,6 +382,42 @@ bool MainWindow::openScene(const QString& path) {
   return true;
 }
 
+bool MainWindow::openModel(const QString& path) {
+  const QString file = QFileInfo(path).absoluteFilePath();
+  std::unique_ptr<Scene> scene;
+  try {
+    scene = std::make_unique<Scene>(sceneFromJson({{"problem", file.toStdString()}}, file.toStdString()));
+  } catch (const std::exception& e) {
+    QMessageBox::warning(this, "rollviz", QString("Cannot open the model:\n%1").arg(e.what()));
+    return false;
+  }
+  edits_ = {};
+  editedAxes_ = false;
+  useScene(std::move(scene), file);
+  return true;
+}
+
+void MainWindow::reloadModel() {
+  if (!scene_) return;
+  const QString file = QString::fromStdString(modelFileOf(*scene_->modelEntry));
+  if (file.isEmpty()) return;
+  const std::size_t jobs = map_->addedJobs().size();
+  std::unique_ptr<Scene> scene;
+  try {
+    scene = std::make_unique<Scene>(sceneFromJson(scene_->document, scene_->source));
+  } catch (const std::exception& e) { // kept running on the old model: the file is being edited
+    results_->appendPlainText(
+        QString("%1 changed but cannot be read; the model running is the one before:\n%2")
+            .arg(QFileInfo(file).fileName(), e.what()));
+    return;
+  }
+  useScene(std::move(scene), scenePath_);
+  results_->appendPlainText(
+      QString("%1 changed: the model was reloaded%2")
+          .arg(QFileInfo(file).fileName(),
+               jobs ? QString("; the %1 job(s) of the old model were stopped").arg(jobs) : QString()));
+}
+
 bool MainWindow::chooseProblem(const std::string& id) {
   const std::size_t tools = map_->addedJobs().size(); // (the scene's own trajectory comes back with it)
   if (tools > 0 &&
@@ -392,6 +434,10 @@ bool MainWindow::chooseProblem(const std::string& id) {
       chooser->setCurrentText(QString::fromStdString(scene_->model->info().id));
     return false;
   }
+  if (!ModelRegistry::global().find(id)) // a model file's model: the newest file of that id
+    for (const ModelEntry* e : loadedModelFiles())
+      if (e->info->id == id && !modelFileOf(*e).empty())
+        return openModel(QString::fromStdString(modelFileOf(*e)));
   return openScene(QString::fromStdString(defaultScenePath(id)));
 }
 
@@ -428,8 +474,25 @@ void MainWindow::useScene(std::unique_ptr<Scene> scene, const QString& path) {
                      .arg(QFileInfo(path).fileName(), QString::fromStdString(scene_->model->info().id)));
   map_->setScene(*scene_);
   control_->setScene(*scene_);
+  watchModelFile();
   restart();
   if (apexWindow_ && apexWindow_->isVisible()) openApexWindow();
+}
+
+void MainWindow::watchModelFile() {
+  if (!modelWatcher_) {
+    modelWatcher_ = new QFileSystemWatcher(this);
+    modelReload_.setSingleShot(true);
+    modelReload_.setInterval(300); // an editor's save is often several writes
+    connect(&modelReload_, &QTimer::timeout, this, &MainWindow::reloadModel);
+    connect(modelWatcher_, &QFileSystemWatcher::fileChanged, this, [this](const QString& path) {
+      if (!modelWatcher_->files().contains(path)) modelWatcher_->addPath(path); // replaced, not rewritten
+      modelReload_.start();
+    });
+  }
+  if (!modelWatcher_->files().isEmpty()) modelWatcher_->removePaths(modelWatcher_->files());
+  const std::string file = modelFileOf(*scene_->modelEntry);
+  if (!file.empty()) modelWatcher_->addPath(QString::fromStdString(file));
 }
 
 void MainWindow::restart() {

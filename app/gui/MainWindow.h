@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include <QElapsedTimer>
+#include <QFileSystemWatcher>
 #include <QMainWindow>
 #include <QPointer>
 #include <QStandardPaths>
@@ -46,6 +47,9 @@ public:
   ~MainWindow() override;
   /// Loads a scene file and starts it; on failure shows why and keeps the current scene.
   bool openScene(const QString& path);
+  /// Opens a model file (docs/models.md) at its own "initial"; its model joins the problem list, and saving
+  /// the file while it is open reloads it (the old model's jobs are stopped; the Results dock says so).
+  bool openModel(const QString& path);
   /// Another problem chosen in the control panel: opens its default scene, after asking when the map window's
   /// tools (which belong to the current problem) would be deleted. False when the user keeps the problem.
   bool chooseProblem(const std::string& id);
@@ -147,6 +151,10 @@ protected:
   void dropEvent(QDropEvent* e) override;
 
 private:
+  /// The model file changed on disk: the scene runs again on the file's new content.
+  void reloadModel();
+  /// Watches the open scene's model file, if it has one.
+  void watchModelFile();
   void tick();
   /// The scene's document with the settings panel's edits written in (what Save and Record use).
   nlohmann::json documentWithEdits() const;
@@ -196,7 +204,9 @@ private:
   QTimer timer_;
   QElapsedTimer clock_;
   QString scenePath_;
-  QString method_; ///< the integrator and its settings, for the status bar
+  QFileSystemWatcher* modelWatcher_ = nullptr; ///< the open scene's model file, when it has one
+  QTimer modelReload_;                         ///< a burst of writes to it reloads it once
+  QString method_;                             ///< the integrator and its settings, for the status bar
   // destroyed in reverse order: the stream's thread stops before the scene it integrates goes away
   std::unique_ptr<Scene> scene_;
   std::unique_ptr<VisualScene> visual_;

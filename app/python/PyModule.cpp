@@ -271,18 +271,14 @@ struct PyModel {
   const ModelEntry* entry;
   std::string path;           ///< the model file, or ""
   nlohmann::json inlineModel; ///< the object, for a model made from a dict
-  /// A scene document on this model: the file named, or the object inline; an empty initial state unless the
-  /// keywords give one (then the message names what is missing).
-  nlohmann::json sceneDocument(const pyb::kwargs& kw) const {
+  /// A scene document on this model: the file named, or the object inline (its start, when the keywords give
+  /// none, is the model file's "initial").
+  nlohmann::json sceneDocument() const {
     nlohmann::json doc;
     if (path.empty())
       doc["model"] = inlineModel;
     else
       doc["problem"] = path;
-    bool initial = false;
-    for (const auto& [k, v] : kw)
-      initial = initial || pyb::str(k).cast<std::string>().rfind("initial", 0) == 0;
-    if (!initial) doc["initial"] = {{"state", nlohmann::json::object()}};
     return doc;
   }
 };
@@ -399,7 +395,7 @@ PYBIND11_MODULE(_rollviz, m) {
            pyb::arg("problem"),
            "The shipped scene of a problem (scenes/<problem>.json) with parameters or dotted scene keys set.")
       .def(pyb::init([](const PyModel& model, const pyb::kwargs& kw) {
-             return sceneFromJson(model.sceneDocument(kw),
+             return sceneFromJson(model.sceneDocument(),
                                   model.path.empty() ? "<Model>" : model.path + ".scene", overridesOf(kw));
            }),
            pyb::arg("model"),

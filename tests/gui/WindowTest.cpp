@@ -19,6 +19,7 @@
 #include "dynamics/jobs/PoincareTask.h"
 #include "render/charts/PoincareChart.h"
 #include "render/context/HeadlessContext.h"
+#include "scenes/ModelFile.h"
 #include "scenes/SceneLoader.h"
 #include <vtkGenericOpenGLRenderWindow.h>
 
@@ -27,6 +28,7 @@
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
+#include <QFile>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -1129,6 +1131,42 @@ private slots:
     QTest::qWait(200);
     QVERIFY(keep(lyapunov->grab().toImage(), "window_chart_lyapunov.png"));
     lyapunov->close();
+  }
+
+  // File > Open model...: a model file runs at its own "initial", joins the problem list, and saving it while
+  // it is open reloads it (a broken save keeps the model running and says why)
+  void aModelFileOpensAndReloadsWhenSaved() {
+    setModelCompilation(ModelCompilation::Off); // the compiled path has its own tests
+    const QString copy = dir_.filePath("lorenz_copy.json");
+    QFile::remove(copy);
+    QVERIFY(QFile::copy(QString(qgetenv("ROLLVIZ_SOURCE_DIR")) + "/examples/models/lorenz.json", copy));
+    QFile::setPermissions(copy, QFile::ReadOwner | QFile::WriteOwner);
+    QVERIFY(window_->openModel(copy));
+    QVERIFY(window_->windowTitle().contains("lorenz_equations"));
+    QCOMPARE(window_->scene()->initialState, Eigen::Vector3d(1, 1, 1));
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::DeferredDelete); // the old scene's panel goes
+    auto* chooser = window_->findChild<QComboBox*>("problem_choice");
+    QVERIFY(chooser && chooser->findText("lorenz_equations") >= 0);
+    QTRY_VERIFY_WITH_TIMEOUT(window_->shownTime() > 0.1, 10000);
+    const auto rewrite = [&](const QByteArray& from, const QByteArray& to) {
+      QFile f(copy);
+      QVERIFY(f.open(QIODevice::ReadOnly));
+      QByteArray text = f.readAll();
+      f.close();
+      QVERIFY(text.contains(from));
+      text.replace(from, to);
+      QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+      f.write(text);
+    };
+    rewrite("\"default\": 28", "\"default\": 20");
+    QTRY_VERIFY_WITH_TIMEOUT(window_->results().contains("lorenz_copy.json changed: the model was reloaded"),
+                             15000);
+    QCOMPARE(window_->scene()->model->parameters()["rho"], 20.0);
+    rewrite("sigma*(y - x)", "sigma*(y - x");
+    QTRY_VERIFY_WITH_TIMEOUT(window_->results().contains("lorenz_copy.json changed but cannot be read"),
+                             15000);
+    QCOMPARE(window_->scene()->model->parameters()["rho"], 20.0); // the model before goes on
+    setModelCompilation(ModelCompilation::OnFirstUse);
   }
 
   void cleanupTestCase() { delete window_; }
