@@ -144,7 +144,10 @@ Command addDescribeCommand(CLI::App& app) {
             const std::string& id = *idPtr;
             const ModelEntry& entry = modelEntryByName(id);
             const ModelInfo& info = *entry.info;
-            const auto model = entry.create(ParameterValues(info.parameters));
+            // a model file is described interpreted: nothing is compiled just to list its contents
+            const auto system = equationSystemOf(entry);
+            const auto model = system ? system->create(ParameterValues(info.parameters))
+                                      : entry.create(ParameterValues(info.parameters));
             fmt::print("{}\n  {}\n  reference: {}\n\nparameters (id, default, range, meaning):\n", info.id,
                        info.title, info.reference);
             printParameters(info.parameters);
