@@ -10,6 +10,7 @@
 #include "dynamics/tools/Lyapunov.h"
 #include "scenes/ModelCompiler.h"
 #include "scenes/SceneLoader.h"
+#include "tests/dynamics/TestSupport.h"
 
 #include <Eigen/LU>
 #include <cmath>
@@ -294,6 +295,21 @@ TEST(ModelFileCompiled, LorenzAndTheChaplyginBallCompiledFollowTheBuiltInModels)
     Eigen::VectorXd x = Eigen::Vector3d(1, 1, 1), V = Eigen::Map<const Eigen::VectorXd>(identity.data(), 9);
     EXPECT_TRUE(file->tangentRk4(x.data(), V.data(), 3, 1e-3, 10)); // the fused path of Lyapunov spectra
   }
+  { // the Poincare map of the compiled Henon-Heiles file: the built-in model's fixed point and multipliers
+    const auto file = compiled("henon_heiles.json", {{"energy", 0.08}});
+    ASSERT_TRUE(file);
+    const auto builtin = test::makeModel("henon_heiles", {{"energy", 0.08}});
+    const IntegratorFactory make = [] { return verner(1e-13); };
+    const ReturnMap ma(*builtin, make, SectionSettings{}), mb(*file, make, SectionSettings{});
+    FixedPointSettings fs;
+    fs.accuracy = 1e-12;
+    const auto ra = findFixedPoint(ma, Eigen::Vector2d(0.03, 0.0), fs);
+    const auto rb = findFixedPoint(mb, Eigen::Vector2d(0.03, 0.0), fs);
+    EXPECT_LT((ra.point - rb.point).cwiseAbs().maxCoeff(), 1e-9);
+    ASSERT_EQ(ra.multipliers.size(), rb.multipliers.size());
+    for (std::size_t i = 0; i < ra.multipliers.size(); ++i)
+      EXPECT_LT(std::abs(ra.multipliers[i] - rb.multipliers[i]), 1e-8);
+  }
   const std::map<std::string, double> set{{"K1", 0.1}, {"K3", -0.2}};
   const auto file = compiled("chaplygin_ball.json", set);
   ASSERT_TRUE(file);
@@ -409,7 +425,7 @@ TEST(ModelFileErrors, ASquareRootOfANegativeNumberInsideAStepIsNamed) {
   const std::string e = blowUp({{"model", model},
                                 {"initial", {{"state", {{"x", 1}}}}},
                                 {"integrator", {{"method", "rk4"}, {"step", 0.3}}}});
-EXPECT_NE(e.find("equations.x: 'sqrt' of -"), std::string::npos) << e;
+  EXPECT_NE(e.find("equations.x: 'sqrt' of -"), std::string::npos) << e;
 }
 
 TEST(ModelFile, ScenesNameAModelFileRelativeToThemselves) {
