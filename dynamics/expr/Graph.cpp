@@ -165,18 +165,29 @@ Program::Program(const Graph& graph, const std::vector<int>& outputs) {
     if (g.a >= 0) used[static_cast<std::size_t>(g.a)] = 1;
     if (g.b >= 0) used[static_cast<std::size_t>(g.b)] = 1;
   }
-  for (int n = 0; n < graph.size(); ++n) {
-    if (!used[static_cast<std::size_t>(n)]) continue;
-    const GraphNode& g = graph.at(n);
-    reg[static_cast<std::size_t>(n)] = static_cast<int>(code_.size());
-    if (g.op == Op::Input) {
-      code_.push_back({g.op, g.a, -1, 0, g.origin});
-      inputsUsed_ = std::max(inputsUsed_, g.a + 1);
-    } else {
-      code_.push_back({g.op, g.a >= 0 ? reg[static_cast<std::size_t>(g.a)] : -1,
-                       g.b >= 0 ? reg[static_cast<std::size_t>(g.b)] : -1, g.c, g.origin});
+  // constants first, then inputs, then the operations (all in graph order, so operands still come first):
+  // evaluate() copies the first two blocks instead of dispatching on them
+  for (const int pass : {0, 1, 2})
+    for (int n = 0; n < graph.size(); ++n) {
+      if (!used[static_cast<std::size_t>(n)]) continue;
+      const GraphNode& g = graph.at(n);
+      if ((pass == 0) != (g.op == Op::Const) || (pass == 1) != (g.op == Op::Input)) continue;
+      reg[static_cast<std::size_t>(n)] = static_cast<int>(code_.size());
+      if (g.op == Op::Const) {
+        constants_.push_back(g.c);
+        code_.push_back({g.op, -1, -1, g.c, g.origin});
+      } else if (g.op == Op::Input) {
+        code_.push_back({g.op, g.a, -1, 0, g.origin});
+        inputsUsed_ = std::max(inputsUsed_, g.a + 1);
+      } else {
+        code_.push_back({g.op, g.a >= 0 ? reg[static_cast<std::size_t>(g.a)] : -1,
+                         g.b >= 0 ? reg[static_cast<std::size_t>(g.b)] : -1, g.c, g.origin});
+      }
     }
-  }
+  firstOperation_ = 0;
+  while (firstOperation_ < code_.size() &&
+         (code_[firstOperation_].op == Op::Const || code_[firstOperation_].op == Op::Input))
+    ++firstOperation_;
   for (int o : outputs)
     outputs_.push_back(reg[static_cast<std::size_t>(o)]);
 }
@@ -190,7 +201,10 @@ void Program::evaluate(const double* in, double* out) const {
     heap.resize(code_.size());
     reg = heap.data();
   }
-  run<double>(in, reg);
+  std::copy(constants_.begin(), constants_.end(), reg);
+  for (std::size_t i = constants_.size(); i < firstOperation_; ++i)
+    reg[i] = in[code_[i].a];
+  run<double>(in, reg, firstOperation_);
   for (std::size_t i = 0; i < outputs_.size(); ++i)
     out[i] = reg[static_cast<std::size_t>(outputs_[i])];
 }
@@ -199,10 +213,13 @@ void Program::derivatives(const double* in, const double* seed, int seeded, int 
                           double* dOut) const {
   thread_local std::vector<double> val, der;
   val.resize(code_.size());
-  run<double>(in, val.data());
+  std::copy(constants_.begin(), constants_.end(), val.begin());
+  for (std::size_t i = constants_.size(); i < firstOperation_; ++i)
+    val[i] = in[code_[i].a];
+  run<double>(in, val.data(), firstOperation_);
   const std::size_t K = static_cast<std::size_t>(k);
-  der.assign(code_.size() * K, 0.0);
-  for (std::size_t i = 0; i < code_.size(); ++i) {
+  der.assign(code_.size() * K, 0.0); // constants have none
+  for (std::size_t i = constants_.size(); i < code_.size(); ++i) {
     const Instr& c = code_[i];
     double* d = der.data() + i * K;
     const double* da = c.a >= 0 ? der.data() + static_cast<std::size_t>(c.a) * K : nullptr;

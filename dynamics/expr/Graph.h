@@ -103,8 +103,9 @@ public:
   /// Highest input slot read, plus one.
   int inputsUsed() const { return inputsUsed_; }
 
-  /// Registers from the inputs; S is double or taylor::Var.
-  template <class S> void run(const S* in, S* reg) const;
+  /// Registers from the inputs, from instruction `first` on (the ones before already in `reg`); S is double,
+  /// an AutoDiff scalar or taylor::Var.
+  template <class S> void run(const S* in, S* reg, std::size_t first = 0) const;
   /// Outputs into out[0..outputs().size()).
   void evaluate(const double* in, double* out) const;
   /// Values and derivatives along k directions: seed[slot * k + c] is d(input slot)/d(direction c) (slots
@@ -115,15 +116,17 @@ public:
   std::string firstNonFinite(const double* in, const std::vector<std::string>& origins) const;
 
 private:
-  friend class Graph; // folds a constant operation through a three-instruction program
-  std::vector<Instr> code_;
+  friend class Graph;       // folds a constant operation through a three-instruction program
+  std::vector<Instr> code_; // constants, then inputs, then operations
+  std::vector<double> constants_;
+  std::size_t firstOperation_ = 0;
   std::vector<int> outputs_;
   int inputsUsed_ = 0;
 };
 
-template <class S> void Program::run(const S* in, S* reg) const {
+template <class S> void Program::run(const S* in, S* reg, std::size_t first) const {
   using std::exp, std::log, std::sqrt, std::sin, std::cos, std::pow;
-  for (std::size_t i = 0; i < code_.size(); ++i) {
+  for (std::size_t i = first; i < code_.size(); ++i) {
     const Instr& k = code_[i];
     const auto A = [&]() -> const S& { return reg[k.a]; };
     const auto B = [&]() -> const S& { return reg[k.b]; };
