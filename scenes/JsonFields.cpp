@@ -3,10 +3,28 @@
 #include "dynamics/core/Errors.h"
 
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 
 namespace rv {
 
 using nlohmann::json;
+
+std::string readInputFile(const std::string& path, const std::string& what) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) throw InputError(path + ": is a folder, not a " + what);
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+    throw InputError(path + ": cannot open the " + what + " (" +
+                     (fs::exists(path, ec) ? "not readable" : "no such file") + ")");
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  std::string content = buffer.str();
+  if (content.empty()) throw InputError(path + ": the " + what + " is empty");
+  return content;
+}
 
 void Where::fail(const std::string& reason) const {
   throw InputError(str() + ": " + reason);

@@ -26,6 +26,9 @@ std::string text(const nlohmann::json& j, const Where& w);
 bool boolean(const nlohmann::json& j, const Where& w);
 /// Fails naming the first key of `j` that is not in `keys`.
 void onlyKeys(const nlohmann::json& j, const Where& w, std::initializer_list<const char*> keys);
+/// The whole text of one of the project's input files; InputError "PATH: is a folder, not a WHAT", "cannot
+/// open the WHAT (no such file | not readable)" or "the WHAT is empty" (WHAT: "scene file", "model file").
+std::string readInputFile(const std::string& path, const std::string& what);
 /// Fills a parameter table's values from a JSON object, skipping the keys in `skip`; a choice takes its name
 /// (or true/false for no/yes).
 void readParameters(const nlohmann::json& j, const Where& w, ParameterValues& values,

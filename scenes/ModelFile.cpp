@@ -9,7 +9,6 @@
 #include <atomic>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <functional>
 #include <list>
 #include <mutex>
@@ -290,6 +289,15 @@ std::atomic<ModelCompilation>& compilationPolicy() {
   return when;
 }
 
+/// What was loaded for a model entry, or null (a registered model). Entries never move or change once loaded:
+/// only the walk over the list needs the lock.
+const Loaded* loadedOf(const ModelEntry& entry) {
+  const std::lock_guard lock(loadedMutex());
+  for (const Loaded& l : loaded())
+    if (&l.entry == &entry) return &l;
+  return nullptr;
+}
+
 const ModelEntry& entryOf(const std::string& key, const std::string& file, const json& doc,
                           const ordered_json* ordered, const std::string& source) {
   const std::lock_guard lock(loadedMutex());
@@ -336,19 +344,11 @@ const ModelEntry& entryOf(const std::string& key, const std::string& file, const
 
 const ModelEntry& modelFileEntry(const std::string& path) {
   namespace fs = std::filesystem;
-  std::error_code ec;
-  if (fs::is_directory(path, ec)) throw InputError(path + ": is a folder, not a model file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-    throw InputError(path + ": cannot open the model file (" +
-                     (fs::exists(path, ec) ? "not readable" : "no such file") + ")");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  const std::string content = buffer.str();
-  if (content.empty()) throw InputError(path + ": the model file is empty");
+  const std::string content = readInputFile(path, "model file");
   std::istringstream strict(content);
   const json doc = parseSceneJson(strict, path); // syntax errors and keys written twice, with line numbers
   const ordered_json ordered = ordered_json::parse(content);
+  std::error_code ec;
   const std::string canonical = fs::weakly_canonical(path, ec).string();
   return entryOf(canonical + "\n" + content, canonical, doc, &ordered, path);
 }
@@ -412,10 +412,8 @@ std::vector<const ModelEntry*> loadedModelFiles() {
 }
 
 std::string modelFileOf(const ModelEntry& entry) {
-  const std::lock_guard lock(loadedMutex());
-  for (const Loaded& l : loaded())
-    if (&l.entry == &entry) return l.file;
-  return {};
+  const Loaded* l = loadedOf(entry);
+  return l ? l->file : std::string();
 }
 
 void setModelCompilation(ModelCompilation when) {
@@ -423,17 +421,13 @@ void setModelCompilation(ModelCompilation when) {
 }
 
 json modelFileInitial(const ModelEntry& entry) {
-  const std::lock_guard lock(loadedMutex());
-  for (const Loaded& l : loaded())
-    if (&l.entry == &entry) return l.initial;
-  return nullptr;
+  const Loaded* l = loadedOf(entry);
+  return l ? l->initial : json();
 }
 
 std::shared_ptr<const EquationSystem> equationSystemOf(const ModelEntry& entry) {
-  const std::lock_guard lock(loadedMutex());
-  for (const Loaded& l : loaded())
-    if (&l.entry == &entry) return l.system;
-  return nullptr;
+  const Loaded* l = loadedOf(entry);
+  return l ? l->system : nullptr;
 }
 
 } // namespace rv

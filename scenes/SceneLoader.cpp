@@ -11,7 +11,6 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <set>
 #include <sstream>
 
@@ -493,14 +492,7 @@ nlohmann::json parseSceneJson(std::istream& in, const std::string& source) {
 }
 
 Scene loadScene(const std::string& path, const std::vector<SceneOverride>& overrides) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  if (fs::is_directory(path, ec)) throw InputError(path + ": is a folder, not a scene file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-    throw InputError(path + ": cannot open the scene file (" +
-                     (fs::exists(path, ec) ? "not readable" : "no such file") + ")");
-  if (in.peek() == std::ifstream::traits_type::eof()) throw InputError(path + ": the scene file is empty");
+  std::istringstream in(readInputFile(path, "scene file"));
   return sceneFromJson(parseSceneJson(in, path), path, overrides);
 }
 

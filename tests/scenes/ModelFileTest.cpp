@@ -105,6 +105,21 @@ void expectSameField(const Model& a, const Model& b, const Eigen::VectorXd& x) {
   }
 }
 
+/// The fixed point of the default Poincare map found from `guess` on both models: the same point (1e-9) and
+/// multipliers (1e-8).
+void expectSameFixedPoint(const Model& a, const Model& b, const Eigen::VectorXd& guess) {
+  const IntegratorFactory make = [] { return verner(1e-13); };
+  const ReturnMap ma(a, make, SectionSettings{}), mb(b, make, SectionSettings{});
+  FixedPointSettings fs;
+  fs.accuracy = 1e-12;
+  const auto ra = findFixedPoint(ma, guess, fs);
+  const auto rb = findFixedPoint(mb, guess, fs);
+  EXPECT_LT((ra.point - rb.point).cwiseAbs().maxCoeff(), 1e-9);
+  ASSERT_EQ(ra.multipliers.size(), rb.multipliers.size());
+  for (std::size_t i = 0; i < ra.multipliers.size(); ++i)
+    EXPECT_LT(std::abs(ra.multipliers[i] - rb.multipliers[i]), 1e-8);
+}
+
 Eigen::VectorXd named(const Model& m, const std::map<std::string, double>& values) {
   return m.stateFromNamed(values, "initial.state");
 }
@@ -131,17 +146,9 @@ TEST(ModelFile, HenonHeilesFollowsTheBuiltInModelWithItsMapAndFixedPoint) {
   EXPECT_LT((a - b).cwiseAbs().maxCoeff(), 1e-13);
   EXPECT_THROW(p.file->stateFromMap({0.5, 0.5}, on, "m"), InputError); // outside the allowed region
   // the same Poincare map: a fixed point (the central periodic orbit) and its multipliers
-  SectionSettings section;
+  expectSameFixedPoint(*p.builtin, *p.file, Eigen::Vector2d(0.03, 0.0));
   const IntegratorFactory make = [] { return verner(1e-13); };
-  const ReturnMap ma(*p.builtin, make, section), mb(*p.file, make, section);
-  FixedPointSettings fs;
-  fs.accuracy = 1e-12;
-  const auto ra = findFixedPoint(ma, Eigen::Vector2d(0.03, 0.0), fs);
-  const auto rb = findFixedPoint(mb, Eigen::Vector2d(0.03, 0.0), fs);
-  EXPECT_LT((ra.point - rb.point).cwiseAbs().maxCoeff(), 1e-9);
-  ASSERT_EQ(ra.multipliers.size(), rb.multipliers.size());
-  for (std::size_t i = 0; i < ra.multipliers.size(); ++i)
-    EXPECT_LT(std::abs(ra.multipliers[i] - rb.multipliers[i]), 1e-8);
+  const ReturnMap ma(*p.builtin, make, SectionSettings{}), mb(*p.file, make, SectionSettings{});
   const Eigen::Vector2d start(0.1, 0.05);
   EXPECT_LT((ma(start) - mb(start)).cwiseAbs().maxCoeff(), 1e-9);
 }
@@ -298,17 +305,8 @@ TEST(ModelFileCompiled, LorenzAndTheChaplyginBallCompiledFollowTheBuiltInModels)
   { // the Poincare map of the compiled Henon-Heiles file: the built-in model's fixed point and multipliers
     const auto file = compiled("henon_heiles.json", {{"energy", 0.08}});
     ASSERT_TRUE(file);
-    const auto builtin = test::makeModel("henon_heiles", {{"energy", 0.08}});
-    const IntegratorFactory make = [] { return verner(1e-13); };
-    const ReturnMap ma(*builtin, make, SectionSettings{}), mb(*file, make, SectionSettings{});
-    FixedPointSettings fs;
-    fs.accuracy = 1e-12;
-    const auto ra = findFixedPoint(ma, Eigen::Vector2d(0.03, 0.0), fs);
-    const auto rb = findFixedPoint(mb, Eigen::Vector2d(0.03, 0.0), fs);
-    EXPECT_LT((ra.point - rb.point).cwiseAbs().maxCoeff(), 1e-9);
-    ASSERT_EQ(ra.multipliers.size(), rb.multipliers.size());
-    for (std::size_t i = 0; i < ra.multipliers.size(); ++i)
-      EXPECT_LT(std::abs(ra.multipliers[i] - rb.multipliers[i]), 1e-8);
+    expectSameFixedPoint(*test::makeModel("henon_heiles", {{"energy", 0.08}}), *file,
+                         Eigen::Vector2d(0.03, 0.0));
   }
   const std::map<std::string, double> set{{"K1", 0.1}, {"K3", -0.2}};
   const auto file = compiled("chaplygin_ball.json", set);
