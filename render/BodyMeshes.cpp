@@ -1,15 +1,26 @@
 #include "render/BodyMeshes.h"
 
+#include "dynamics/core/BodyShapes.h"
+#include "dynamics/core/Errors.h"
+
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <functional>
-#include <numbers>
+#include <string>
+#include <vtkAlgorithm.h>
 #include <vtkCellArray.h>
 #include <vtkFloatArray.h>
+#include <vtkOBJReader.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataNormals.h>
+#include <vtkSTLReader.h>
+#include <vtkTransform.h>
+#include <vtkTransformPolyDataFilter.h>
+#include <vtkTriangleFilter.h>
 
 namespace rv {
 
@@ -55,6 +66,49 @@ vtkSmartPointer<vtkPolyData> makeSurfaceMesh(const SupportSurface& surface) {
       128, 64, [&](double u, double v) { return surface.point(u, v); }, 8, 4);
 }
 
+vtkSmartPointer<vtkPolyData> readBodyMesh(const BodyMeshFile& file) {
+  std::string ext = std::filesystem::path(file.path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  vtkSmartPointer<vtkAlgorithm> reader;
+  if (ext == ".stl") {
+    auto stl = vtkSmartPointer<vtkSTLReader>::New();
+    stl->SetFileName(file.path.c_str());
+    reader = stl;
+  } else if (ext == ".obj") {
+    auto obj = vtkSmartPointer<vtkOBJReader>::New();
+    obj->SetFileName(file.path.c_str());
+    reader = obj;
+  } else {
+    throw InputError(file.path + ": a mesh is an STL or OBJ file (.stl, .obj)");
+  }
+  if (!std::filesystem::is_regular_file(file.path)) throw InputError(file.path + ": no such mesh file");
+  vtkNew<vtkTriangleFilter> triangles; // OBJ faces may be polygons
+  triangles->SetInputConnection(reader->GetOutputPort());
+  vtkNew<vtkTransform> scale;
+  scale->Scale(file.scale, file.scale, file.scale);
+  vtkNew<vtkTransformPolyDataFilter> scaled;
+  scaled->SetTransform(scale);
+  scaled->SetInputConnection(triangles->GetOutputPort());
+  vtkNew<vtkPolyDataNormals> normals;
+  normals->SetInputConnection(scaled->GetOutputPort());
+  normals->SetFeatureAngle(50); // sharp edges stay sharp
+  normals->Update();
+  vtkSmartPointer<vtkPolyData> out = normals->GetOutput();
+  if (out->GetNumberOfPolys() == 0)
+    throw InputError(file.path + ": the mesh holds no triangles (not a readable " + ext.substr(1) +
+                     " file?)");
+  return out;
+}
+
+BodyGeometry boundingGeometry(vtkPolyData* mesh) {
+  double b[6];
+  mesh->GetBounds(b);
+  BodyGeometry g{.shape = BodyShape::Ellipsoid};
+  g.centre = {(b[0] + b[1]) / 2, (b[2] + b[3]) / 2, (b[4] + b[5]) / 2};
+  g.semiAxes = {(b[1] - b[0]) / 2, (b[3] - b[2]) / 2, (b[5] - b[4]) / 2};
+  return g;
+}
+
 double bodySize(const BodyGeometry& g) {
   switch (g.shape) {
   case BodyShape::Ball:
@@ -76,21 +130,9 @@ struct BodySurface {
 };
 
 BodySurface bodySurface(const BodyGeometry& g) {
-  constexpr double pi = std::numbers::pi;
-  if (g.shape == BodyShape::Ball || g.shape == BodyShape::Ellipsoid)
-    return {96, 48, [g](double u, double v) {
-              const double lon = 2 * pi * u, lat = pi * (v - 0.5);
-              return Eigen::Vector3d(g.centre[0] + g.semiAxes[0] * std::cos(lat) * std::cos(lon),
-                                     g.centre[1] + g.semiAxes[1] * std::cos(lat) * std::sin(lon),
-                                     g.centre[2] + g.semiAxes[2] * std::sin(lat));
-            }};
-  if (g.shape == BodyShape::Paraboloid) // r3 = vertex + (r1^2 / p + r2^2 / q) / 2, up to `height`
-    return {96, 32, [g](double u, double v) {
-              const double lon = 2 * pi * u, s = v * std::sqrt(g.height); // s^2 = height above the vertex
-              return Eigen::Vector3d(g.centre[0] + std::sqrt(2 * g.p) * s * std::cos(lon),
-                                     g.centre[1] + std::sqrt(2 * g.q) * s * std::sin(lon),
-                                     g.centre[2] + s * s);
-            }};
+  const auto point = [g](double u, double v) { return shapePoint(g, u, v); };
+  if (g.shape == BodyShape::Ball || g.shape == BodyShape::Ellipsoid) return {96, 48, point};
+  if (g.shape == BodyShape::Paraboloid) return {96, 32, point};
   return {};
 }
 } // namespace

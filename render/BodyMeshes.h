@@ -1,6 +1,7 @@
 // BodyMeshes.h -- surfaces of the rolling bodies in their own frame, with texture coordinates (longitude,
 // latitude) so that one pattern shows their turning: ball, ellipsoid, paraboloid.
 #pragma once
+#include "dynamics/core/BodyShapes.h"
 #include "dynamics/core/Model.h"
 
 #include <vtkSmartPointer.h>
@@ -19,6 +20,13 @@ vtkSmartPointer<vtkPolyData> makeBodyGridLines(const BodyGeometry& geometry, int
 
 /// The fixed surface as a grid of (u, v) in [0, 1]^2, textured with a repeating pattern (8 x 4 repeats).
 vtkSmartPointer<vtkPolyData> makeSurfaceMesh(const SupportSurface& surface);
+
+/// A body's mesh read from its file by VTK's STL or OBJ reader, its coordinates scaled, with normals for
+/// smooth shading. Throws InputError naming the file when it holds no triangles.
+vtkSmartPointer<vtkPolyData> readBodyMesh(const BodyMeshFile& file);
+
+/// The ellipsoid of a mesh's bounding box (centre, half-extents): the size and axes the view gives it.
+BodyGeometry boundingGeometry(vtkPolyData* mesh);
 
 /// A length that sets the scene's scale: the largest half-extent of the body.
 double bodySize(const BodyGeometry& geometry);

@@ -18,6 +18,7 @@
 #include <numbers>
 #include <vtkCamera.h>
 #include <vtkLightKit.h>
+#include <vtkPolyData.h>
 #include <vtkPropCollection.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
@@ -50,7 +51,13 @@ VisualScene::VisualScene(const Model& model, const ViewOptions& options, const E
 
   const auto pose = model.pose(x0.data());
   const long cap = options.maxTracePoints;
-  const auto geometry = model.geometry();
+  auto geometry = model.geometry();
+  vtkSmartPointer<vtkPolyData> mesh; // a body drawn from a file: its box sets the sizes and axes
+  if (const auto* drawn = dynamic_cast<const DrawnFromMesh*>(&model))
+    if (const auto file = drawn->bodyMesh()) {
+      mesh = readBodyMesh(*file);
+      geometry = boundingGeometry(mesh);
+    }
   std::array<double, 3> lo{}, hi{}; // where the scene axes go unless the scene gives their range
   if (geometry && pose && options.kind == ViewKind::Apex) {
     scale_ = 1; // the unit sphere
@@ -86,12 +93,14 @@ VisualScene::VisualScene(const Model& model, const ViewOptions& options, const E
     }
   } else if (geometry && pose) {
     scale_ = bodySize(*geometry);
-    if (const auto support = model.support())
-      add(std::make_unique<SurfaceObject>("surface", *support));
-    else
+    if (const auto support = model.support()) {
+      auto surface = std::make_unique<SurfaceObject>("surface", *support);
+      surface->hideTheFarSide(pose->contact, pose->center);
+      add(std::move(surface));
+    } else
       add(std::make_unique<PlaneObject>("plane", scale_, 40 * scale_));
     add(std::make_unique<ContactTraceObject>("trace", ContactTraceObject::On::Support, scale_, cap));
-    add(std::make_unique<BodyObject>(geometry->shape == BodyShape::Ball ? "ball" : "body", *geometry));
+    add(std::make_unique<BodyObject>(geometry->shape == BodyShape::Ball ? "ball" : "body", *geometry, mesh));
     add(std::make_unique<ContactTraceObject>("body_trace", ContactTraceObject::On::Body, scale_, cap));
     add(std::make_unique<BodyAxesObject>("axes", *geometry, scale_));
     const Eigen::Vector3d c = pose->contact;

@@ -6,7 +6,9 @@
 #include "scenes/ModelCompiler.h"
 #include "scenes/SceneLoader.h"
 
+#include <algorithm>
 #include <atomic>
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <functional>
@@ -224,36 +226,83 @@ private:
     s.map = std::move(m);
   }
 
+  /// A drawn shape: `key` names it ("none" and `extra` allowed besides), its sizes are the object's keys.
+  EquationModelSpec::Shape readShape(const json& j, const Where& w, const char* key,
+                                     const std::vector<std::pair<std::string, BodyShape>>& names) {
+    EquationModelSpec::Shape shape;
+    const std::string name = j.contains(key) ? text(j[key], w / key) : names.front().first;
+    std::string expected;
+    bool found = false;
+    for (const auto& [n, kind] : names) {
+      expected += (expected.empty() ? "\"" : ", \"") + n + "\"";
+      if (n == name) shape.shape = kind, found = true;
+    }
+    if (!found) (w / key).fail("expected one of " + expected);
+    const auto optional = [&](const char* k) -> std::optional<ExprText> {
+      if (!j.contains(k)) return std::nullopt;
+      return exprText(j[k], w / k);
+    };
+    shape.semiAxes = shape.shape == BodyShape::Ball ? optional("radius") : optional("semi_axes");
+    shape.centre = optional("centre");
+    shape.p = optional("p");
+    shape.q = optional("q");
+    shape.height = optional("height");
+    return shape;
+  }
+
   void readView(EquationModelSpec& s, const Where& w) {
     const json& j = requireObject(doc_["view"], w);
-    onlyKeys(
-        j, w,
-        {"body", "radius", "semi_axes", "centre", "p", "q", "height", "rotation", "position", "contact"});
+    onlyKeys(j, w,
+             {"body", "radius", "semi_axes", "centre", "p", "q", "height", "mesh", "scale", "support",
+              "rotation", "position", "contact", "normal"});
     EquationModelSpec::View v;
-    const std::string body = j.contains("body") ? text(j["body"], w / "body") : "none";
-    if (body == "ball")
-      v.shape = BodyShape::Ball;
-    else if (body == "ellipsoid")
-      v.shape = BodyShape::Ellipsoid;
-    else if (body == "paraboloid")
-      v.shape = BodyShape::Paraboloid;
-    else if (body != "none")
-      (w / "body").fail("expected \"ball\", \"ellipsoid\", \"paraboloid\" or \"none\"");
-    const auto optional = [&](const char* key) -> std::optional<ExprText> {
-      if (!j.contains(key)) return std::nullopt;
-      return exprText(j[key], w / key);
-    };
-    v.semiAxes = v.shape == BodyShape::Ball ? optional("radius") : optional("semi_axes");
-    v.centre = optional("centre");
-    v.p = optional("p");
-    v.q = optional("q");
-    v.height = optional("height");
+    v.body = readShape(j, w, "body",
+                       {{"none", BodyShape::None},
+                        {"ball", BodyShape::Ball},
+                        {"ellipsoid", BodyShape::Ellipsoid},
+                        {"paraboloid", BodyShape::Paraboloid},
+                        {"mesh", BodyShape::None}});
+    const bool mesh = j.contains("body") && j["body"] == "mesh";
+    if (mesh != j.contains("mesh"))
+      (w / (mesh ? "body" : "mesh")).fail("a mesh body names its file in \"mesh\" (with \"body\": \"mesh\")");
+    if (mesh) v.mesh = meshFile(j["mesh"], w / "mesh");
+    if (j.contains("scale")) v.meshScale = exprText(j["scale"], w / "scale");
+    if (j.contains("support")) {
+      const Where ws = w / "support";
+      const json& support = requireObject(j["support"], ws);
+      onlyKeys(support, ws, {"surface", "radius", "semi_axes", "centre", "p", "q", "height"});
+      v.support = readShape(support, ws, "surface",
+                            {{"plane", BodyShape::None},
+                             {"sphere", BodyShape::Ball},
+                             {"ellipsoid", BodyShape::Ellipsoid},
+                             {"paraboloid", BodyShape::Paraboloid}});
+    }
     for (const char* key : {"rotation", "position", "contact"})
       if (!j.contains(key)) w.fail(std::string("missing \"") + key + "\" (an expression of the state)");
     v.rotation = exprText(j["rotation"], w / "rotation");
     v.position = exprText(j["position"], w / "position");
     v.contact = exprText(j["contact"], w / "contact");
+    if (j.contains("normal")) v.normal = exprText(j["normal"], w / "normal");
     s.view = std::move(v);
+  }
+
+  /// A mesh file's absolute path: relative to the model file's folder (an inline model's: its scene's).
+  std::string meshFile(const json& j, const Where& w) const {
+    namespace fs = std::filesystem;
+    fs::path file(text(j, w));
+    std::string ext = file.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (ext != ".stl" && ext != ".obj")
+      w.fail("a mesh is an STL or OBJ file (.stl, .obj), not '" + ext + "'");
+    if (file.is_relative() && !source_.empty() && source_[0] != '<') {
+      std::string model = source_;
+      if (const auto colon = model.rfind(":model"); colon != std::string::npos && colon + 6 == model.size())
+        model.resize(colon);
+      file = fs::path(model).parent_path() / file;
+    }
+    std::error_code ec;
+    if (!fs::is_regular_file(file, ec)) w.fail("no such mesh file: " + file.string());
+    return fs::absolute(file, ec).lexically_normal().string();
   }
 
   const json& doc_;
@@ -283,6 +332,18 @@ struct Compilation {
   std::mutex mutex;
   CompiledModelFactory factory; // set when the compiled library is loaded
 };
+
+std::mutex& notesMutex() {
+  static std::mutex m;
+  return m;
+}
+
+std::function<void(const std::string&)>& compilationNotes() {
+  static std::function<void(const std::string&)> notes = [](const std::string& note) {
+    std::fputs(("rollviz: " + note + "\n").c_str(), stderr);
+  };
+  return notes;
+}
 
 std::atomic<ModelCompilation>& compilationPolicy() {
   static std::atomic<ModelCompilation> when{ModelCompilation::OnFirstUse};
@@ -320,10 +381,14 @@ const ModelEntry& entryOf(const std::string& key, const std::string& file, const
         compileModelsByDefault() ? compilationPolicy().load() : ModelCompilation::Off;
     if (when != ModelCompilation::Off) {
       std::call_once(compilation->once, [&] {
-        const auto compile = [system, compilation] {
-          auto factory = compiledModel(system, [](const std::string& note) {
-            std::fputs(("rollviz: " + note + "\n").c_str(), stderr);
-          });
+        const auto compile = [system, compilation, when] {
+          const auto note = [](const std::string& text) {
+            const std::lock_guard lock(notesMutex());
+            compilationNotes()(text);
+          };
+          auto factory = compiledModel(system, note);
+          if (factory && when == ModelCompilation::InBackground)
+            note("runs of '" + system->info().id + "' started from now use its native code");
           const std::lock_guard lock(compilation->mutex);
           compilation->factory = std::move(factory);
         };
@@ -354,7 +419,8 @@ const ModelEntry& modelFileEntry(const std::string& path) {
 }
 
 const ModelEntry& modelEntryFromJson(const json& model, const std::string& source) {
-  return entryOf("inline\n" + model.dump(), "", model, nullptr, source);
+  // the source is part of the key: a mesh file is found relative to it
+  return entryOf("inline\n" + source + "\n" + model.dump(), "", model, nullptr, source);
 }
 
 bool namesModelFile(const std::string& problem) {
@@ -397,6 +463,21 @@ const ModelEntry& sceneModelEntry(const json& scene, const std::string& source) 
   }
 }
 
+nlohmann::json sceneMovedTo(nlohmann::json scene, const std::string& source, const std::string& destination) {
+  namespace fs = std::filesystem;
+  if (!scene.contains("problem") || !scene["problem"].is_string() || source.empty() || source[0] == '<')
+    return scene;
+  const std::string problem = scene["problem"];
+  const fs::path file(problem);
+  if (!file.is_relative() || ModelRegistry::global().find(problem) || !namesModelFile(problem)) return scene;
+  std::error_code ec;
+  const fs::path model = fs::absolute(fs::path(source).parent_path() / file, ec).lexically_normal();
+  const fs::path folder = fs::absolute(fs::path(destination), ec).parent_path();
+  const fs::path relative = model.lexically_relative(folder);
+  scene["problem"] = (relative.empty() ? model : relative).generic_string();
+  return scene;
+}
+
 const ModelEntry& modelEntryByName(const std::string& idOrPath) {
   if (ModelRegistry::global().find(idOrPath) || !namesModelFile(idOrPath))
     return ModelRegistry::global().get(idOrPath);
@@ -414,6 +495,11 @@ std::vector<const ModelEntry*> loadedModelFiles() {
 std::string modelFileOf(const ModelEntry& entry) {
   const Loaded* l = loadedOf(entry);
   return l ? l->file : std::string();
+}
+
+void setModelCompilationNotes(std::function<void(const std::string&)> notes) {
+  const std::lock_guard lock(notesMutex());
+  compilationNotes() = std::move(notes);
 }
 
 void setModelCompilation(ModelCompilation when) {

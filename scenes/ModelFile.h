@@ -6,6 +6,7 @@
 #include "dynamics/core/ModelRegistry.h"
 #include "dynamics/models/EquationModel.h"
 
+#include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -29,6 +30,10 @@ bool namesModelFile(const std::string& problem);
 /// folder of `source`), or a registered id. Throws InputError naming the field.
 const ModelEntry& sceneModelEntry(const nlohmann::json& scene, const std::string& source);
 
+/// The scene read from `source` as it must be written to `destination`: a model file its "problem" names
+/// relative to the old folder is named relative to the new one (absolute when they share no root).
+nlohmann::json sceneMovedTo(nlohmann::json scene, const std::string& source, const std::string& destination);
+
 /// A registered model or a model file by path: what `rollviz describe` and Python take.
 const ModelEntry& modelEntryByName(const std::string& idOrPath);
 
@@ -43,6 +48,10 @@ std::string modelFileOf(const ModelEntry& entry);
 /// running interpreted (the GUI, whose thread never waits); or never. ROLLVIZ_COMPILE_MODELS=0 means never.
 enum class ModelCompilation { OnFirstUse, InBackground, Off };
 void setModelCompilation(ModelCompilation when);
+
+/// Where the notes of model compilation go (compiling, compiled in N s, why a model runs interpreted): stderr
+/// unless set (the GUI shows them). Called on the compiling thread.
+void setModelCompilationNotes(std::function<void(const std::string&)> notes);
 
 /// A model file's "initial" (as a scene's: {"state": {...}} or {"map": [...]}), the start of a scene that
 /// gives none; null when it has none (or for a registered model).

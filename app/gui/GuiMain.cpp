@@ -41,6 +41,13 @@ int runGui(int argc, char** argv, const GuiOptions& options) {
 
   MainWindow window;
   window.show();
+  // a model compiling in the background says so, and when it is ready, in the window (and on stderr)
+  setModelCompilationNotes([&window](const std::string& note) {
+    std::fprintf(stderr, "rollviz: %s\n", note.c_str());
+    QMetaObject::invokeMethod(
+        &window, [&window, text = QString::fromStdString(note)] { window.report(text, 8000); },
+        Qt::QueuedConnection);
+  });
   QString scene = QString::fromStdString(options.scene);
   if (scene.isEmpty()) {
     const QString last = QSettings().value("lastScene").toString();
@@ -67,7 +74,10 @@ int runGui(int argc, char** argv, const GuiOptions& options) {
       std::fflush(stdout);
       app.quit();
     });
-  return app.exec();
+  const int status = app.exec();
+  setModelCompilationNotes(
+      [](const std::string& note) { std::fprintf(stderr, "rollviz: %s\n", note.c_str()); });
+  return status;
 }
 
 } // namespace rv

@@ -863,7 +863,7 @@ void MainWindow::saveDialog() {
 
 bool MainWindow::saveSceneTo(const QString& path, QString* why) {
   if (!scene_) return false;
-  const nlohmann::json doc = documentWithEdits();
+  const nlohmann::json doc = sceneMovedTo(documentWithEdits(), scene_->source, path.toStdString());
   try {
     AtomicFile file(path.toStdString(), "scene");
     std::ofstream out(file.tempPath());

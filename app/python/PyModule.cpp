@@ -458,7 +458,7 @@ PYBIND11_MODULE(_rollviz, m) {
             AtomicFile file(path, "path");
             {
               std::ofstream out(file.tempPath());
-              out << s.document.dump(2) << "\n";
+              out << sceneMovedTo(s.document, s.source, path).dump(2) << "\n";
               if (!out) throw ComputationError("cannot write " + path);
             }
             file.commit();

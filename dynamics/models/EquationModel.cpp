@@ -220,10 +220,13 @@ EquationSystem::EquationSystem(EquationModelSpec spec) : spec_(std::move(spec)),
         parse(*t);
   }
   if (spec_.view) {
-    for (const auto* t :
-         {&spec_.view->semiAxes, &spec_.view->centre, &spec_.view->p, &spec_.view->q, &spec_.view->height})
+    const auto& v = *spec_.view;
+    for (const EquationModelSpec::Shape* shape : {&v.body, &v.support})
+      for (const auto* t : {&shape->semiAxes, &shape->centre, &shape->p, &shape->q, &shape->height})
+        if (*t) parse(**t);
+    for (const auto* t : {&v.meshScale, &v.normal})
       if (*t) parse(**t);
-    for (const ExprText* t : {&spec_.view->rotation, &spec_.view->position, &spec_.view->contact})
+    for (const ExprText* t : {&v.rotation, &v.position, &v.contact})
       parse(*t);
   }
 
@@ -505,6 +508,11 @@ EquationModel::EquationModel(std::shared_ptr<const EquationSystem> system, const
     pose.insert(pose.end(), R.n.begin(), R.n.end());
     pose.insert(pose.end(), c.n.begin(), c.n.end());
     pose.insert(pose.end(), p.n.begin(), p.n.end());
+    if (v.normal) {
+      const Value n = scope.lower(*v.normal, 3, 1, "the normal");
+      pose.insert(pose.end(), n.n.begin(), n.n.end());
+      poseHasNormal_ = true;
+    }
     pose_ = expr::Program(graph_, pose);
     const auto constant = [&](const std::optional<ExprText>& t, int rows, const char* what, double fallback) {
       std::vector<double> out(static_cast<std::size_t>(rows), fallback);
@@ -518,20 +526,27 @@ EquationModel::EquationModel(std::shared_ptr<const EquationSystem> system, const
       }
       return out;
     };
-    BodyGeometry g{.shape = v.shape};
-    if (v.shape == BodyShape::Ball) {
-      g.semiAxes = Eigen::Vector3d::Constant(constant(v.semiAxes, 1, "the radius", 1)[0]);
-    } else if (v.shape == BodyShape::Ellipsoid) {
-      const auto a = constant(v.semiAxes, 3, "the semi-axes", 1);
-      g.semiAxes = {a[0], a[1], a[2]};
-    } else if (v.shape == BodyShape::Paraboloid) {
-      g.p = constant(v.p, 1, "p", 1)[0];
-      g.q = constant(v.q, 1, "q", 1)[0];
-      g.height = constant(v.height, 1, "the height", 1)[0];
-    }
-    const auto centre = constant(v.centre, 3, "the centre", 0);
-    g.centre = {centre[0], centre[1], centre[2]};
-    geometry_ = g;
+    const auto geometryOf = [&](const EquationModelSpec::Shape& shape) {
+      BodyGeometry g{.shape = shape.shape};
+      if (shape.shape == BodyShape::Ball) {
+        g.semiAxes = Eigen::Vector3d::Constant(constant(shape.semiAxes, 1, "the radius", 1)[0]);
+      } else if (shape.shape == BodyShape::Ellipsoid) {
+        const auto a = constant(shape.semiAxes, 3, "the semi-axes", 1);
+        g.semiAxes = {a[0], a[1], a[2]};
+      } else if (shape.shape == BodyShape::Paraboloid) {
+        g.p = constant(shape.p, 1, "p", 1)[0];
+        g.q = constant(shape.q, 1, "q", 1)[0];
+        g.height = constant(shape.height, 1, "the height", 1)[0];
+      }
+      const auto centre = constant(shape.centre, 3, "the centre", 0);
+      g.centre = {centre[0], centre[1], centre[2]};
+      return g;
+    };
+    geometry_ = geometryOf(v.body);
+    if (v.support.shape != BodyShape::None) support_ = geometryOf(v.support);
+    if (support_ && support_->shape != BodyShape::Paraboloid && v.support.height) // a bowl: the lower part
+      supportCap_ = constant(v.support.height, 1, "the height", 1)[0];
+    if (!v.mesh.empty()) mesh_ = BodyMeshFile{v.mesh, constant(v.meshScale, 1, "the mesh's scale", 1)[0]};
   }
 }
 
@@ -626,7 +641,7 @@ double EquationModel::measureDensity(const double* x) const {
 
 std::optional<BodyPose> EquationModel::pose(const double* x) const {
   if (pose_.outputs().empty()) return std::nullopt;
-  double out[15];
+  double out[18];
   pose_.evaluate(withTime(x, dimension(), 0), out);
   BodyPose p;
   for (int i = 0; i < 3; ++i)
@@ -634,7 +649,24 @@ std::optional<BodyPose> EquationModel::pose(const double* x) const {
       p.rotation(i, j) = out[i * 3 + j];
   p.center = {out[9], out[10], out[11]};
   p.contact = {out[12], out[13], out[14]};
+  if (poseHasNormal_)
+    p.supportNormal = Eigen::Vector3d(out[15], out[16], out[17]).normalized();
+  else if (support_) { // the surface's normal at the contact, on the body's side
+    p.supportNormal = shapeNormal(*support_, p.contact);
+    if (p.supportNormal.dot(p.center - p.contact) < 0) p.supportNormal = -p.supportNormal;
+  }
   return p;
+}
+
+std::optional<SupportSurface> EquationModel::support() const {
+  if (!support_) return std::nullopt;
+  // a sphere or ellipsoid with a height is drawn from its lowest point up to that height (a bowl a body
+  // inside it is seen in)
+  const double pi = std::numbers::pi,
+               top = supportCap_ ? std::asin(std::clamp(*supportCap_ / support_->semiAxes[2] - 1, -1.0, 1.0))
+                                 : pi / 2,
+               upTo = (top + pi / 2) / pi;
+  return SupportSurface{[g = *support_, upTo](double u, double v) { return shapePoint(g, u, v * upTo); }};
 }
 
 Eigen::VectorXd EquationModel::stateFromNamed(const std::map<std::string, double>& named,

@@ -5,6 +5,7 @@
 // and the body's pose. A flow that reads the time `t` gets a last state component `time` with d time/dt = 1
 // (the autonomous extension), so every tool applies unchanged.
 #pragma once
+#include "dynamics/core/BodyShapes.h"
 #include "dynamics/core/ExplainsNonFinite.h"
 #include "dynamics/core/Model.h"
 #include "dynamics/expr/Expression.h"
@@ -61,15 +62,23 @@ struct EquationModelSpec {
   };
   std::optional<MapCompletion> map;
 
-  /// The body drawn in the 3D view.
-  struct View {
+  /// A drawn shape whose sizes are expressions of the parameters.
+  struct Shape {
     BodyShape shape = BodyShape::None;
     std::optional<ExprText> semiAxes; ///< ellipsoid: a 3-vector; ball: the radius
-    std::optional<ExprText> centre;   ///< the body's geometric centre in its frame (from the pose's centre)
+    std::optional<ExprText> centre;   ///< body: its centre in its frame; support: in the world
     std::optional<ExprText> p, q, height;
-    ExprText rotation; ///< body -> world, a 3x3 matrix of the state
-    ExprText position; ///< the pose's centre in the world
-    ExprText contact;  ///< the contact point in the world
+  };
+  /// The body drawn in the 3D view and what it rolls on.
+  struct View {
+    Shape body;
+    std::string mesh;                  ///< or a mesh file (STL, OBJ) for the body: its absolute path
+    std::optional<ExprText> meshScale; ///< the mesh's coordinates are multiplied by it
+    Shape support;                     ///< the fixed surface (None: the plane z = 0)
+    ExprText rotation;                 ///< body -> world, a 3x3 matrix of the state
+    ExprText position;                 ///< the pose's centre in the world
+    ExprText contact;                  ///< the contact point in the world
+    std::optional<ExprText> normal;    ///< the support's normal at the contact (else from its shape)
   };
   std::optional<View> view;
   std::string source; ///< the file, for messages
@@ -104,7 +113,7 @@ private:
 };
 
 /// The programs of one system at fixed parameter values. Its input slots are the state then the time.
-class EquationModel final : public Model, public ExplainsNonFinite {
+class EquationModel final : public Model, public ExplainsNonFinite, public DrawnFromMesh {
 public:
   EquationModel(std::shared_ptr<const EquationSystem> system, const ParameterValues& params);
 
@@ -117,6 +126,8 @@ public:
   double measureDensity(const double* x) const override;
   std::optional<BodyPose> pose(const double* x) const override;
   std::optional<BodyGeometry> geometry() const override { return geometry_; }
+  std::optional<SupportSurface> support() const override;
+  std::optional<BodyMeshFile> bodyMesh() const override { return mesh_; }
   Eigen::VectorXd stateFromNamed(const std::map<std::string, double>& named,
                                  const std::string& context) const override;
   Eigen::VectorXd stateFromMap(const std::vector<double>& point, const MapPointSpec& spec,
@@ -136,6 +147,10 @@ private:
   expr::Program field_, integrals_, measure_, pose_, map_;
   std::vector<std::pair<int, expr::Program>> completion_; // state index, its default
   std::optional<BodyGeometry> geometry_;
+  std::optional<BodyGeometry> support_; // the fixed surface, when not the plane
+  std::optional<double> supportCap_;    // a sphere or ellipsoid drawn up to this height above its bottom
+  std::optional<BodyMeshFile> mesh_;
+  bool poseHasNormal_ = false; // the pose program's last three outputs are the normal
   int unknownObservable_ = -1; // the observable holding the map completion's unknown, if any
 };
 

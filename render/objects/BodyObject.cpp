@@ -5,6 +5,7 @@
 
 #include <vtkActor.h>
 #include <vtkMatrix4x4.h>
+#include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
@@ -14,10 +15,12 @@
 
 namespace rv {
 
-BodyObject::BodyObject(std::string name, const BodyGeometry& geometry)
+BodyObject::BodyObject(std::string name, const BodyGeometry& geometry, vtkSmartPointer<vtkPolyData> mesh)
     : VisualObject(std::move(name)), size_(bodySize(geometry)) {
   vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputData(makeBodyMesh(geometry));
+  const vtkSmartPointer<vtkPolyData> surface = mesh ? mesh : makeBodyMesh(geometry);
+  textured_ = surface->GetPointData()->GetTCoords() != nullptr; // a mesh file may have none
+  mapper->SetInputData(surface);
   body_ = vtkSmartPointer<vtkActor>::New();
   body_->SetMapper(mapper);
   body_->GetProperty()->SetSpecular(0.35);
@@ -25,9 +28,10 @@ BodyObject::BodyObject(std::string name, const BodyGeometry& geometry)
   body_->GetProperty()->BackfaceCullingOff(); // an open paraboloid shows its inside
 
   vtkNew<vtkPolyDataMapper> gridMapper;
-  gridMapper->SetInputData(makeBodyGridLines(geometry));
+  gridMapper->SetInputData(mesh ? mesh : makeBodyGridLines(geometry));
   grid_ = vtkSmartPointer<vtkActor>::New();
   grid_->SetMapper(gridMapper);
+  if (mesh) grid_->GetProperty()->SetRepresentationToWireframe();
   grid_->GetProperty()->SetLineWidth(1.5);
   grid_->GetProperty()->LightingOff();
 
@@ -53,7 +57,7 @@ void BodyObject::attach(vtkRenderer* renderer) {
 
 void BodyObject::apply(const ObjectOptions& o) {
   const Rgb color = o.color.value_or(Rgb{0.19, 0.44, 1.0});
-  body_->SetTexture(textureFor(o, [&] { return makeBallTexture(color); }));
+  body_->SetTexture(textured_ ? textureFor(o, [&] { return makeBallTexture(color); }) : nullptr);
   const Rgb base = body_->GetTexture() ? Rgb{1, 1, 1} : color; // a texture carries the colour itself
   body_->GetProperty()->SetColor(base[0], base[1], base[2]);
   shadow_->SetVisibility(o.enabled);

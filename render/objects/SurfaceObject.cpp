@@ -3,7 +3,10 @@
 #include "render/BodyMeshes.h"
 #include "render/Textures.h"
 
+#include <Eigen/Geometry>
+#include <limits>
 #include <vtkActor.h>
+#include <vtkIdList.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
@@ -14,12 +17,38 @@ namespace rv {
 
 SurfaceObject::SurfaceObject(std::string name, const SupportSurface& surface)
     : VisualObject(std::move(name)) {
+  mesh_ = makeSurfaceMesh(surface);
   vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputData(makeSurfaceMesh(surface));
+  mapper->SetInputData(mesh_);
   actor_ = vtkSmartPointer<vtkActor>::New();
   actor_->SetMapper(mapper);
   actor_->GetProperty()->BackfaceCullingOff();
   actor_->GetProperty()->SetSpecular(0.2);
+}
+
+void SurfaceObject::hideTheFarSide(const Eigen::Vector3d& contact, const Eigen::Vector3d& centre) {
+  double b[6];
+  mesh_->GetBounds(b);
+  const Eigen::Vector3d middle((b[0] + b[1]) / 2, (b[2] + b[3]) / 2, (b[4] + b[5]) / 2);
+  if ((middle - contact).dot(centre - contact) <= 0) return; // a body outside it: all of it stays drawn
+  // the triangle nearest the contact: which way its winding faces, towards the body or away
+  double best = std::numeric_limits<double>::infinity();
+  Eigen::Vector3d facing = Eigen::Vector3d::Zero();
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < mesh_->GetNumberOfCells(); ++c) {
+    mesh_->GetCellPoints(c, ids);
+    if (ids->GetNumberOfIds() < 3) continue;
+    Eigen::Vector3d p[3];
+    for (int k = 0; k < 3; ++k)
+      mesh_->GetPoint(ids->GetId(k), p[k].data());
+    const Eigen::Vector3d normal = (p[1] - p[0]).cross(p[2] - p[0]);
+    const double d = ((p[0] + p[1] + p[2]) / 3 - contact).squaredNorm();
+    if (normal.squaredNorm() > 0 && d < best) best = d, facing = normal;
+  }
+  if (facing.dot(centre - contact) > 0)
+    actor_->GetProperty()->BackfaceCullingOn();
+  else
+    actor_->GetProperty()->FrontfaceCullingOn();
 }
 
 void SurfaceObject::attach(vtkRenderer* renderer) {

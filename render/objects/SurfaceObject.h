@@ -8,17 +8,23 @@
 #include <vtkSmartPointer.h>
 
 class vtkActor;
+class vtkPolyData;
 
 namespace rv {
 
 class SurfaceObject final : public VisualObject {
 public:
   SurfaceObject(std::string name, const SupportSurface& surface);
+  /// When the body (centred at `centre`, touching the surface at `contact`) rolls inside the surface, leaves
+  /// out the faces that look away from it: a camera outside a bowl sees the body rolling in it. A body
+  /// outside the surface keeps it whole.
+  void hideTheFarSide(const Eigen::Vector3d& contact, const Eigen::Vector3d& centre);
   void attach(vtkRenderer* renderer) override;
   void apply(const ObjectOptions& options) override;
 
 private:
   vtkSmartPointer<vtkActor> actor_;
+  vtkSmartPointer<vtkPolyData> mesh_;
 };
 
 } // namespace rv

@@ -179,6 +179,19 @@ class Cli(unittest.TestCase):
         self.assertBadInput(run("render", SCENE, "-o", big, "--scale", "2", "--transparent"), "--transparent")
         self.assertBadInput(run("render", SCENE, "-o", big, "--set", "view.axes.style=cube"), "view.axes.style")
 
+    def test_every_example_model_scene_renders(self):
+        # the model files of examples/models with their scenes: each draws a real picture (interpreted here;
+        # the compiled path is tests/scenes/ModelFileTest.cpp's)
+        models = os.path.join(SRC, "examples", "models")
+        scenes = sorted(n for n in os.listdir(models) if n.endswith(".scene.json"))
+        self.assertGreaterEqual(len(scenes), 7)
+        for name in scenes:
+            out = self.path(name + ".png")
+            r = run("render", os.path.join(models, name), "-o", out, "--size", "320x240", "--time", "1",
+                    env={"ROLLVIZ_COMPILE_MODELS": "0"})
+            self.assertEqual(r.returncode, 0, name + ": " + r.stderr)
+            self.assertTrue(varied(pixels(out)[1]), name)
+
     def test_a_video_frame_shows_the_state_at_its_time(self):
         # frame k of a video is the state at t = k * speed / fps: frame 15 at 10 fps matches a still at t = 1.5
         # (H.264 noise aside) and not one at t = 1.2

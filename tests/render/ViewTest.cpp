@@ -11,6 +11,7 @@
 #include "render/objects/SceneAxesObject.h"
 #include "render/video/Mp4Writer.h"
 #include "render/video/ScreenRecorder.h"
+#include "scenes/ModelFile.h"
 #include "tests/render/ImageCompare.h"
 #include "tests/render/Play.h"
 #include <Eigen/LU>
@@ -18,6 +19,7 @@
 #include <array>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <gtest/gtest.h>
 #include <numbers>
 #include <tuple>
@@ -630,6 +632,56 @@ TEST(BodyFrameView, TheBodyStandsStillOnScreen) {
   };
   EXPECT_LT(test::compareImages(at(2, "body"), at(4, "body")).meanAbs, 3.0);
   EXPECT_GT(test::compareImages(at(2, "absolute"), at(4, "absolute")).meanAbs, 15.0);
+}
+
+// a model written as equations draws its body from a mesh file (an OBJ cube) on the fixed surface its view
+// names (a sphere): the surface and the body are on the picture, and a file that holds no mesh is refused
+// with its name
+TEST(ModelFileView, AMeshBodyOnASphere) {
+  const auto dir = std::filesystem::temp_directory_path() / ownName("mesh_view");
+  std::filesystem::create_directories(dir);
+  {
+    std::ofstream obj(dir / "cube.obj");
+    obj << "v -1 -1 -1\nv 1 -1 -1\nv 1 1 -1\nv -1 1 -1\nv -1 -1 1\nv 1 -1 1\nv 1 1 1\nv -1 1 1\n"
+           "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
+    std::ofstream(dir / "broken.stl") << "solid nothing\nendsolid nothing\n";
+  }
+  nlohmann::json model = nlohmann::json::parse(R"json({
+    "id": "cube_on_a_sphere", "parameters": {"R": 2, "s": 0.4}, "state": ["phi"], "equations": {"phi": "1"},
+    "view": {"body": "mesh", "mesh": "cube.obj", "scale": "s",
+             "support": {"surface": "sphere", "radius": "R"},
+             "rotation": "[[cos(phi), 0, -sin(phi)], [0, 1, 0], [sin(phi), 0, cos(phi)]]",
+             "position": "(R + s) * [cos(phi), 0, sin(phi)]", "contact": "R * [cos(phi), 0, sin(phi)]"}})json");
+  const std::string source = (dir / "model.json").string();
+  const ModelEntry& entry = modelEntryFromJson(model, source);
+  const auto m = entry.create(ParameterValues(entry.info->parameters));
+  const Eigen::VectorXd x0 = Eigen::VectorXd::Constant(1, 1.2);
+  VisualScene visual(*m, ViewOptions{}, x0);
+  ASSERT_NE(visual.find("surface"), nullptr);
+  ASSERT_EQ(visual.find("plane"), nullptr);
+  const Image drawn = renderPlayed(visual);
+  if (const char* out = std::getenv("ROLLVIZ_TEST_OUTPUT"))
+    writePng(drawn, std::string(out) + "/mesh_on_sphere.png");
+  ObjectOptions hidden = visual.options().object("body");
+  hidden.enabled = false;
+  visual.setOptions("body", hidden);
+  const Image withoutBody = renderPlayed(visual);
+  EXPECT_GT(test::pixelsChanged(withoutBody, drawn, 20), 500); // the cube is there
+  ObjectOptions noSurface = visual.options().object("surface");
+  noSurface.enabled = false;
+  visual.setOptions("surface", noSurface);
+  EXPECT_GT(test::pixelsChanged(renderPlayed(visual), withoutBody, 20), 5000); // and the sphere
+  model["view"]["mesh"] = "broken.stl";
+  const ModelEntry& broken = modelEntryFromJson(model, source);
+  const auto b = broken.create(ParameterValues(broken.info->parameters));
+  try {
+    VisualScene refused(*b, ViewOptions{}, x0);
+    ADD_FAILURE() << "a file with no mesh was drawn";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("broken.stl: the mesh holds no triangles"), std::string::npos)
+        << e.what();
+  }
+  std::filesystem::remove_all(dir);
 }
 
 } // namespace

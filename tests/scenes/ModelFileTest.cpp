@@ -3,6 +3,7 @@
 // points and multipliers; every error of a model file names the file, the JSON path, the column and what is
 // wrong; a blow-up names the expression that went non-finite.
 #include "scenes/ModelFile.h"
+#include "dynamics/core/BodyShapes.h"
 #include "dynamics/core/Errors.h"
 #include "dynamics/expr/Expression.h"
 #include "dynamics/integrators/Integrator.h"
@@ -15,9 +16,11 @@
 #include <Eigen/LU>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
 #include <numbers>
+#include <unistd.h>
 
 namespace rv {
 namespace {
@@ -170,22 +173,28 @@ TEST(ModelFile, ChaplyginBallFollowsTheBuiltInModel) {
   EXPECT_EQ(p.file->geometry()->shape, BodyShape::Ball);
 }
 
-TEST(ModelFile, RattlebackFollowsTheBuiltInModel) {
-  const Pair p = pairOf("ellipsoid_on_plane", "ellipsoid_on_plane.json",
-                        {{"B11", 0.1}, {"B12", 0.02}, {"B22", 0.05}, {"energy", 5}});
+const std::map<std::string, double> rattleback{{"B11", 0.1}, {"B12", 0.02}, {"B22", 0.05}, {"energy", 5}};
+
+/// The file's rattleback against the built-in one: field, trajectory, map completion, pose and geometry.
+void expectTheBuiltInRattleback(const Model& builtin, const Model& file) {
   const std::map<std::string, double> s{{"M1", 0.1},      {"M2", 0.05},     {"M3", 0.3},
                                         {"gamma1", 0.05}, {"gamma2", 0.05}, {"gamma3", std::sqrt(1 - 0.005)}};
-  const Eigen::VectorXd x = named(*p.builtin, s);
-  expectSameField(*p.builtin, *p.file, x);
-  EXPECT_LT(trajectoryDifference(*p.builtin, *p.file, x, 50), 1e-8);
+  const Eigen::VectorXd x = named(builtin, s);
+  expectSameField(builtin, file, x);
+  EXPECT_LT(trajectoryDifference(builtin, file, x, 50), 1e-8);
   const MapPointSpec on{.sectionValue = 0.2, .root = 1};
-  const Eigen::VectorXd a = p.builtin->stateFromMap({0.5, 0.2, 0.9}, on, "m"),
-                        b = p.file->stateFromMap({0.5, 0.2, 0.9}, on, "m");
+  const Eigen::VectorXd a = builtin.stateFromMap({0.5, 0.2, 0.9}, on, "m"),
+                        b = file.stateFromMap({0.5, 0.2, 0.9}, on, "m");
   EXPECT_LT((a - b).cwiseAbs().maxCoeff(), 1e-12);
-  const auto pa = p.builtin->pose(x.data()), pb = p.file->pose(x.data());
+  const auto pa = builtin.pose(x.data()), pb = file.pose(x.data());
   ASSERT_TRUE(pa && pb);
   EXPECT_LT((pa->center - pb->center).norm() + (pa->contact - pb->contact).norm(), 1e-14);
-  EXPECT_LT((p.builtin->geometry()->semiAxes - p.file->geometry()->semiAxes).norm(), 1e-15);
+  EXPECT_LT((builtin.geometry()->semiAxes - file.geometry()->semiAxes).norm(), 1e-15);
+}
+
+TEST(ModelFile, RattlebackFollowsTheBuiltInModel) {
+  const Pair p = pairOf("ellipsoid_on_plane", "ellipsoid_on_plane.json", rattleback);
+  expectTheBuiltInRattleback(*p.builtin, *p.file);
 }
 
 TEST(ModelFile, TaylorIntegratorExpandsAModelFile) {
@@ -219,15 +228,15 @@ TEST(ModelFile, LyapunovSpectrumOfTheLorenzFileSumsToTheTrace) {
   EXPECT_NEAR(*std::max_element(r.last.exponents.begin(), r.last.exponents.end()), 0.906, 0.1);
 }
 
-TEST(ModelFile, DuffingStroboscopicFixedPointIsTheHarmonicBalanceResponse) {
-  // x'' + delta x' + alpha x + beta x^3 = gamma cos(omega t) at small forcing: the periodic response is
-  // x = a cos(omega t) + b sin(omega t) up to a third harmonic of order beta r^3 / (4 (9 omega^2 - alpha))
-  const double delta = 0.1, alpha = 1, beta = 0.2, gamma = 0.01, omega = 1.2;
-  const ModelEntry& e = modelFileEntry(examples("duffing.json"));
-  ParameterValues p(e.info->parameters);
-  p.set("delta", delta), p.set("alpha", alpha), p.set("beta", beta), p.set("gamma", gamma),
-      p.set("omega", omega);
-  const auto m = e.create(p);
+// x'' + delta x' + alpha x + beta x^3 = gamma cos(omega t) at small forcing: the periodic response is
+// x = a cos(omega t) + b sin(omega t) up to a third harmonic of order beta r^3 / (4 (9 omega^2 - alpha))
+const std::map<std::string, double> duffing{
+    {"delta", 0.1}, {"alpha", 1}, {"beta", 0.2}, {"gamma", 0.01}, {"omega", 1.2}};
+
+/// The stroboscopic map's fixed point is the harmonic balance's response, its multipliers those of Liouville.
+void expectHarmonicBalance(const Model& m) {
+  const double delta = duffing.at("delta"), alpha = duffing.at("alpha"), beta = duffing.at("beta"),
+               gamma = duffing.at("gamma"), omega = duffing.at("omega");
   // first-order harmonic balance, solved by Newton's method on (a, b)
   Eigen::Vector2d ab(gamma / (alpha - omega * omega), 0);
   for (int i = 0; i < 50; ++i) {
@@ -240,7 +249,7 @@ TEST(ModelFile, DuffingStroboscopicFixedPointIsTheHarmonicBalanceResponse) {
     ab -= J.inverse() * F;
   }
   const ReturnMap map(
-      *m, [] { return verner(1e-13); }, SectionSettings{});
+      m, [] { return verner(1e-13); }, SectionSettings{});
   FixedPointSettings fs;
   fs.accuracy = 1e-13;
   const auto r = findFixedPoint(map, Eigen::Vector2d(0, 0), fs);
@@ -249,6 +258,14 @@ TEST(ModelFile, DuffingStroboscopicFixedPointIsTheHarmonicBalanceResponse) {
   // damped: both multipliers inside the unit circle, their product exp(-delta T) (Liouville)
   const double product = std::abs(r.multipliers[0] * r.multipliers[1]);
   EXPECT_NEAR(product, std::exp(-delta * 2 * std::numbers::pi / omega), 1e-8);
+}
+
+TEST(ModelFile, DuffingStroboscopicFixedPointIsTheHarmonicBalanceResponse) {
+  const ModelEntry& e = modelFileEntry(examples("duffing.json"));
+  ParameterValues p(e.info->parameters);
+  for (const auto& [k, v] : duffing)
+    p.set(k, v);
+  expectHarmonicBalance(*e.create(p));
 }
 
 TEST(ModelFile, ChaplyginSleighGoesStraightWithTheSpeedOfItsEnergy) {
@@ -268,6 +285,44 @@ TEST(ModelFile, ChaplyginSleighGoesStraightWithTheSpeedOfItsEnergy) {
   EXPECT_NEAR(m->integrals(x.data())[0], E0, 1e-12);
   EXPECT_NEAR(x[0], std::sqrt(2 * E0 / 1.0), 1e-9);
   EXPECT_NEAR(x[1], 0, 1e-9);
+}
+
+TEST(ModelFile, ABallInASphericalBowlKeepsItsIntegralsAndSwingsWithTheRollingPeriod) {
+  const ModelEntry& e = modelFileEntry(examples("ball_in_spherical_bowl.json"));
+  const auto m = e.create(ParameterValues(e.info->parameters));
+  EXPECT_EQ(m->info().coreDimension, 6); // the ball's axes do not act back on (w, n)
+  const Eigen::VectorXd x0 = m->stateFromNamed(
+      modelFileInitial(e).at("state").get<std::map<std::string, double>>(), "initial.state");
+  const Eigen::VectorXd I0 = m->integrals(x0.data());
+  auto integ = verner(1e-13);
+  integ->start(*m, 0, x0);
+  while (integ->time() < 50)
+    integ->step();
+  EXPECT_LT((m->integrals(integ->state().data()) - I0).cwiseAbs().maxCoeff(), 1e-10);
+  // the ball's axes stay orthonormal, and the contact point does not move: v_C = b n x w
+  const Eigen::VectorXd& x = integ->state();
+  Eigen::Matrix3d R;
+  R << x.segment<3>(6), x.segment<3>(9), x.segment<3>(12);
+  EXPECT_LT((R.transpose() * R - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff(), 1e-10);
+  // small swings at the bottom: n1 = theta cos(w0 t) with w0^2 = g / ((a - b)(1 + k)) (Routh §241) -- a
+  // sliding bead would have 1 for 1 + k
+  const double a = 1, b = 0.2, k = 0.4, g = 9.81, theta = 1e-3, w0 = std::sqrt(g / ((a - b) * (1 + k)));
+  Eigen::VectorXd y0 = Eigen::VectorXd::Zero(15);
+  y0.segment<3>(3) << std::sin(theta), 0, -std::cos(theta);
+  y0[6] = y0[10] = y0[14] = 1;
+  auto swing = verner(1e-13);
+  swing->start(*m, 0, y0);
+  while (swing->time() < 10)
+    swing->step();
+  Eigen::VectorXd y(15);
+  swing->interpolate(10, y);
+  EXPECT_NEAR(y[3], theta * std::cos(w0 * 10), 1e-8);
+  // drawn inside its bowl: the support is the sphere's lower half, the normal at the contact points inwards
+  ASSERT_TRUE(m->support());
+  EXPECT_NEAR(m->support()->point(0.2, 1)[2], 0, 1e-12);
+  EXPECT_NEAR(m->support()->point(0.2, 0)[2], -1, 1e-12);
+  const auto pose = m->pose(x0.data());
+  EXPECT_LT((pose->supportNormal + x0.segment<3>(3)).norm(), 1e-14);
 }
 
 // The compiled path: the generated C++ built and loaded (ModelCompiler.h) gives the built-in model's numbers,
@@ -326,6 +381,140 @@ TEST(ModelFileCompiled, LorenzAndTheChaplyginBallCompiledFollowTheBuiltInModels)
                 .cwiseAbs()
                 .maxCoeff(),
             1e-12);
+}
+
+TEST(ModelFileCompiled, TheRattlebackAndDuffingCompiledGiveTheInterpretedAnswers) {
+  std::string why;
+  if (!modelCompilationAvailable(&why)) GTEST_SKIP() << why;
+  const auto file = compiled("ellipsoid_on_plane.json", rattleback);
+  ASSERT_TRUE(file);
+  expectTheBuiltInRattleback(*pairOf("ellipsoid_on_plane", "ellipsoid_on_plane.json", rattleback).builtin,
+                             *file);
+  const auto forced = compiled("duffing.json", duffing);
+  ASSERT_TRUE(forced);
+  expectHarmonicBalance(*forced);
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// the view: a body drawn from a mesh file, rolling on a fixed surface other than the plane
+
+/// A folder of this test with a cube (half-side 1) as an OBJ file.
+std::filesystem::path meshFolder() {
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("rollviz_mesh_test_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  std::ofstream obj(dir / "cube.obj");
+  obj << "v -1 -1 -1\nv 1 -1 -1\nv 1 1 -1\nv -1 1 -1\nv -1 -1 1\nv 1 -1 1\nv 1 1 1\nv -1 1 1\n"
+         "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
+  return dir;
+}
+
+/// A cube carried round a sphere of radius R (its centre at c, the cube's centre at distance d from it)
+/// in the plane x-z: a kinematic model, enough to check what the view makes of it.
+json cubeOnASphere(const std::string& d) {
+  return json{{"id", "cube_on_sphere"},
+              {"parameters", {{"R", 2.0}, {"s", 0.25}}},
+              {"state", {"phi"}},
+              {"equations", {{"phi", "1"}}},
+              {"definitions", {{"c", "[0.5, 0, -1]"}, {"n", "[cos(phi), 0, sin(phi)]"}}},
+              {"view",
+               {{"body", "mesh"},
+                {"mesh", "cube.obj"},
+                {"scale", "s"},
+                {"support", {{"surface", "sphere"}, {"radius", "R"}, {"centre", "[0.5, 0, -1]"}}},
+                {"rotation", "identity(3)"},
+                {"position", "c + (" + d + ") * n"},
+                {"contact", "c + R * n"}}}};
+}
+
+TEST(ModelFile, AViewDrawsAMeshOnAFixedSurface) {
+  const auto dir = meshFolder();
+  const std::string source = (dir / "m.json").string();
+  const ModelEntry& outside = modelEntryFromJson(cubeOnASphere("R + s"), source);
+  const auto m = outside.create(ParameterValues(outside.info->parameters));
+  const auto* drawn = dynamic_cast<const DrawnFromMesh*>(m.get());
+  ASSERT_NE(drawn, nullptr);
+  ASSERT_TRUE(drawn->bodyMesh());
+  EXPECT_EQ(drawn->bodyMesh()->path, (dir / "cube.obj").string()); // relative to the model's file
+  EXPECT_EQ(drawn->bodyMesh()->scale, 0.25);
+  const auto support = m->support();
+  ASSERT_TRUE(support);
+  const Eigen::Vector3d c(0.5, 0, -1);
+  for (double u : {0.0, 0.3, 0.71})
+    for (double v : {0.1, 0.5, 0.9})
+      EXPECT_NEAR((support->point(u, v) - c).norm(), 2.0, 1e-14);
+  // the support's normal at the contact points to the body: out of the sphere for a body outside it, in for
+  // one inside
+  const double phi = 0.7;
+  const Eigen::Vector3d n(std::cos(phi), 0, std::sin(phi));
+  const auto pose = m->pose(&phi);
+  ASSERT_TRUE(pose);
+  EXPECT_LT((pose->supportNormal - n).norm(), 1e-14);
+  EXPECT_LT((pose->contact - (c + 2 * n)).norm(), 1e-14);
+  const ModelEntry& inside = modelEntryFromJson(cubeOnASphere("R - s"), source);
+  const auto in = inside.create(ParameterValues(inside.info->parameters));
+  EXPECT_LT((in->pose(&phi)->supportNormal + n).norm(), 1e-14);
+  // a normal given as an expression is taken as it is (normalised)
+  json given = cubeOnASphere("R + s");
+  given["view"]["normal"] = "[0, 0, 2]";
+  const ModelEntry& withNormal = modelEntryFromJson(given, source);
+  EXPECT_LT((withNormal.create(ParameterValues(withNormal.info->parameters))->pose(&phi)->supportNormal -
+             Eigen::Vector3d::UnitZ())
+                .norm(),
+            1e-15);
+  // a paraboloid bowl: its points on r3 = c3 + (r1^2 / p + r2^2 / q) / 2 up to its height
+  json bowl = cubeOnASphere("R + s");
+  bowl["view"]["support"] =
+      json{{"surface", "paraboloid"}, {"p", "2"}, {"q", "0.5"}, {"height", "3"}, {"centre", "[0, 0, 1]"}};
+  const ModelEntry& b = modelEntryFromJson(bowl, source);
+  const auto bs = b.create(ParameterValues(b.info->parameters))->support();
+  ASSERT_TRUE(bs);
+  for (double u : {0.0, 0.3, 0.71})
+    for (double v : {0.1, 0.5, 1.0}) {
+      const Eigen::Vector3d q = bs->point(u, v);
+      EXPECT_NEAR(q[2], 1 + (q[0] * q[0] / 2 + q[1] * q[1] / 0.5) / 2, 1e-13);
+      EXPECT_LE(q[2], 4 + 1e-13);
+    }
+  // and compiled, the same view
+  std::string why;
+  if (!modelCompilationAvailable(&why)) return;
+  const auto factory = compiledModel(equationSystemOf(outside), [](const std::string&) {});
+  ASSERT_TRUE(factory);
+  const auto fast = factory(ParameterValues(outside.info->parameters));
+  const auto* fastDrawn = dynamic_cast<const DrawnFromMesh*>(fast.get());
+  ASSERT_TRUE(fastDrawn && fastDrawn->bodyMesh());
+  EXPECT_EQ(fastDrawn->bodyMesh()->path, drawn->bodyMesh()->path);
+  ASSERT_TRUE(fast->support());
+  EXPECT_LT((fast->support()->point(0.3, 0.4) - support->point(0.3, 0.4)).norm(), 1e-15);
+  EXPECT_LT((fast->pose(&phi)->supportNormal - n).norm(), 1e-14);
+}
+
+TEST(ModelFileErrors, AViewsMeshAndSupportAreChecked) {
+  const auto dir = meshFolder();
+  const std::string source = (dir / "m.json").string();
+  const auto errorIn = [&](const json& model) {
+    try {
+      modelEntryFromJson(model, source);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(no error)");
+  };
+  json m = cubeOnASphere("R + s");
+  m["view"]["mesh"] = "cube.ply";
+  EXPECT_NE(errorIn(m).find("view.mesh: a mesh is an STL or OBJ file"), std::string::npos) << errorIn(m);
+  m["view"]["mesh"] = "missing.obj";
+  EXPECT_NE(errorIn(m).find("view.mesh: no such mesh file"), std::string::npos) << errorIn(m);
+  m["view"].erase("mesh");
+  EXPECT_NE(errorIn(m).find("view.body: a mesh body names its file"), std::string::npos) << errorIn(m);
+  m = cubeOnASphere("R + s");
+  m["view"]["support"]["surface"] = "cone";
+  EXPECT_NE(errorIn(m).find("view.support.surface: expected one of \"plane\", \"sphere\""), std::string::npos)
+      << errorIn(m);
+  m = cubeOnASphere("R + s");
+  m["view"]["support"]["radius"] = "R * phi";
+  EXPECT_NE(errorIn(m).find("must not depend on the state"), std::string::npos) << errorIn(m);
+  std::filesystem::remove_all(dir);
 }
 
 // ---------------------------------------------------------------------------------------------------------
@@ -436,6 +625,17 @@ TEST(ModelFile, ScenesNameAModelFileRelativeToThemselves) {
   // --set of a model file's parameter
   const Scene t = sceneFromJson(s.document, examples("scene.json"), {{"sigma", "12"}});
   EXPECT_EQ(t.model->parameters()["sigma"], 12);
+}
+
+TEST(ModelFile, ASceneSavedElsewhereStillNamesItsModelFile) {
+  const json scene{{"problem", "models/lorenz.json"}, {"parameters", {{"rho", 20}}}};
+  EXPECT_EQ(sceneMovedTo(scene, "/a/b/scene.json", "/a/c/copy.json")["problem"], "../b/models/lorenz.json");
+  EXPECT_EQ(sceneMovedTo(scene, "/a/b/scene.json", "/a/b/models/copy.json")["problem"], "lorenz.json");
+  EXPECT_EQ(sceneMovedTo(scene, "/a/b/scene.json", "/a/b/copy.json"), scene);
+  const json builtin{{"problem", "lorenz"}};
+  EXPECT_EQ(sceneMovedTo(builtin, "/a/b/scene.json", "/c/copy.json"), builtin);
+  const json absolute{{"problem", "/m/lorenz.json"}};
+  EXPECT_EQ(sceneMovedTo(absolute, "/a/b/scene.json", "/c/copy.json"), absolute);
 }
 
 TEST(ModelFile, AForcedFlowGetsItsTimeAndAStroboscopicSection) {

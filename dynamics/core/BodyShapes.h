@@ -1,0 +1,36 @@
+// BodyShapes.h -- the surfaces of the drawn shapes (ball, ellipsoid, paraboloid) as functions of two
+// parameters, and their normals: one definition for the body meshes (render/BodyMeshes.cpp) and for the fixed
+// surfaces a body written as equations rolls on (dynamics/models/EquationModel.cpp). Also the capability of a
+// model whose body is drawn from a mesh file.
+#pragma once
+#include "dynamics/core/Model.h"
+
+#include <optional>
+#include <string>
+
+namespace rv {
+
+/// A point of the shape's surface: u in [0, 1] the longitude (periodic), v in [0, 1] from the south pole to
+/// the north pole (ball, ellipsoid) or from the vertex to `height` above it (paraboloid). Zero for None.
+Eigen::Vector3d shapePoint(const BodyGeometry& g, double u, double v);
+
+/// The unit normal of the shape's surface at (or, for a point off it, for the level surface through) x,
+/// pointing out of the ellipsoid or up out of the paraboloid's bowl. e_z for None (the plane).
+Eigen::Vector3d shapeNormal(const BodyGeometry& g, const Eigen::Vector3d& x);
+
+/// A mesh file (STL or OBJ) a body is drawn from, in its own frame relative to the pose's centre.
+struct BodyMeshFile {
+  std::string path; ///< absolute, or relative to the working folder
+  double scale = 1; ///< the mesh's coordinates are multiplied by it
+};
+
+/// A capability of some models (those written as equations whose view names a mesh), found by dynamic_cast
+/// from a Model: the render layer reads the file and draws it instead of the geometry's shape.
+class DrawnFromMesh {
+public:
+  virtual ~DrawnFromMesh() = default;
+  /// The body's mesh; nullopt when it has none.
+  virtual std::optional<BodyMeshFile> bodyMesh() const = 0;
+};
+
+} // namespace rv
