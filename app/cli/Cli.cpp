@@ -8,6 +8,8 @@
 #include "render/context/HeadlessContext.h"
 #include "scenes/ModuleLoader.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cstdlib>
 #include <filesystem>
 #include <fmt/core.h>
@@ -28,6 +30,21 @@ void addSceneArgs(CLI::App* cmd, SceneArgs& args) {
       ->type_name("ID=VALUE")
       ->take_all()
       ->allow_extra_args(false);
+}
+
+CLI::Validator writesOneOf(std::vector<std::string> extensions) {
+  std::string list;
+  for (const auto& e : extensions)
+    list += (list.empty() ? "" : ", ") + e;
+  return CLI::Validator(
+      [extensions, list](std::string& path) -> std::string {
+        std::string ext = std::filesystem::path(path).extension().string();
+        std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+        for (const auto& e : extensions)
+          if (ext == e) return {};
+        return path + ": unsupported format '" + ext + "' (the extension names it; supported: " + list + ")";
+      },
+      "FILE (" + list + ")");
 }
 
 std::pair<int, int> parseSize(const std::string& text) {

@@ -25,6 +25,11 @@ struct SceneArgs {
 /// Adds the SCENE positional and --set to a subcommand.
 void addSceneArgs(CLI::App* cmd, SceneArgs& args);
 
+/// A check of an output option: the file's extension (any case) is one of `extensions` (".csv", ".png",
+/// ...), else the command line is refused (exit 2) naming the option and listing the supported ones -- an
+/// output's format follows its extension, and nothing is written under a name of another format.
+CLI::Validator writesOneOf(std::vector<std::string> extensions);
+
 /// Parses "WxH"; InputError naming --size otherwise.
 std::pair<int, int> parseSize(const std::string& text);
 
@@ -66,7 +71,9 @@ Command addSweepCommand(CLI::App* cmd);
 /// per setting of its section (--KEY), --json (its fields), -o (its table as CSV).
 Command addRegisteredToolCommand(CLI::App* cmd, const ToolEntry& tool);
 
-/// Draws a sweep's chart into a PNG (`rollviz sweep --png`, `rollviz chart --view sweep`).
-void writePngChart(const SweepChartData& data, const std::string& path, const std::string& size);
+/// Draws a sweep's chart into a PNG (`rollviz sweep --png`, `rollviz chart --view sweep`); `what` names the
+/// option in messages.
+void writePngChart(const SweepChartData& data, const std::string& path, const std::string& size,
+                   const std::string& what);
 
 } // namespace rv

@@ -99,7 +99,8 @@ void addContinueArgs(CLI::App* cmd, ContinueArgs& a) {
   cmd->add_option("--param", a.param, "the model parameter to continue in (default: continuation.parameter)");
   cmd->add_option("--to", a.to, "finite value of the parameter (default: continuation.to)");
   cmd->add_option("--step", a.step, "signed step of the parameter (default: continuation.step)");
-  cmd->add_option("-o,--output", a.output, "CSV file (default: standard output)");
+  cmd->add_option("-o,--output", a.output, "CSV file (default: standard output)")
+      ->check(writesOneOf({".csv"}));
   cmd->add_flag("--json", a.json, "print a JSON summary on standard output");
 }
 
@@ -158,7 +159,8 @@ void addGridArgs(CLI::App* cmd, GridArgs& a, bool ram) {
   cmd->add_option("--step", a.step, "grid step along every axis (default: grid.step_x, step_y, step_z)");
   cmd->add_option("--threads", a.threads, "number of threads (default: grid.threads)");
   cmd->add_option("-o,--output", a.output,
-                  "CSV file (default: standard output); a .vti file is image data for ParaView");
+                  "CSV file (default: standard output); a .vti file is image data for ParaView")
+      ->check(writesOneOf({".csv", ".vti"}));
   addCheckpointOption(cmd, a.checkpoint);
   if (ram)
     cmd->add_option("--level", a.level,
@@ -412,7 +414,8 @@ Command addSeparatrixCommand(CLI::App* cmd) {
   addMapArgs(cmd, *a);
   cmd->add_option("--branch", *branches, "branches 1-4, comma-separated (default: separatrix.branch; 'all')");
   cmd->add_option("-o,--output", *output,
-                  "CSV file: branch, coordinates, parameter (default: standard output)");
+                  "CSV file: branch, coordinates, parameter (default: standard output)")
+      ->check(writesOneOf({".csv"}));
   return {cmd, [a, branches, output] {
             const auto s = setUp(*a);
             const ReturnMap map = s->map();
@@ -486,7 +489,8 @@ Command addDiagramCommand(CLI::App* cmd) {
   cmd->add_option("--max", (*range)[1], "largest value of the branch parameter");
   cmd->add_option("--step", (*range)[2], "step of the branch parameter");
   cmd->add_option("-o,--output", *output,
-                  "CSV file: branch, parameter, the two axes (default: standard output)");
+                  "CSV file: branch, parameter, the two axes (default: standard output)")
+      ->check(writesOneOf({".csv"}));
   cmd->add_flag("--json", *json, "print the diagrams, branches and the scene's point as JSON instead");
   return {cmd, [scene, id, branch, output, range, json] {
             const Scene sc = scene->load();

@@ -29,9 +29,10 @@ Command addIntegrateCommand(CLI::App& app) {
   cmd->add_option("--every", o->every, "output period (rows at t = 0, every, 2 every, ...)")->required();
   cmd->add_option("--columns", o->columns, "observables, comma separated (rollviz describe PROBLEM)");
   cmd->add_option(
-      "-o,--output", o->output,
-      "CSV file (default: standard output); a .vtp file is a polyline for ParaView through the first "
-      "three columns, every column as point data");
+         "-o,--output", o->output,
+         "CSV file (default: standard output); a .vtp file is a polyline for ParaView through the first "
+         "three columns, every column as point data")
+      ->check(writesOneOf({".csv", ".vtp"}));
   return {cmd, [o] {
             const double time = o->time, every = o->every;
             const std::string &columns = o->columns, &output = o->output;

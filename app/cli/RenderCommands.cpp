@@ -45,6 +45,7 @@ Command addRenderCommand(CLI::App& app) {
   addSceneArgs(cmd, o->scene);
   cmd->add_option("-o,--output", o->output,
                   "PNG file; a .vtm file is the view's pieces (bodies, plane, traces) for ParaView")
+      ->check(writesOneOf({".png", ".vtm"}))
       ->required();
   cmd->add_option("--size", o->size, "picture size WIDTHxHEIGHT")->capture_default_str();
   cmd->add_option("--time", o->time, "simulation time to show (the trace covers [0, time])")
@@ -88,7 +89,7 @@ Command addChartCommand(CLI::App& app) {
       ->check(CLI::IsMember(views));
   cmd->add_option("--csv", o->csv,
                   "--view sweep: the CSV `rollviz sweep` wrote (the positional is the sweep file)");
-  cmd->add_option("-o,--output", o->output, "PNG file")->required();
+  cmd->add_option("-o,--output", o->output, "PNG file")->check(writesOneOf({".png"}))->required();
   cmd->add_option("--size", o->size, "picture size WIDTHxHEIGHT")->capture_default_str();
   cmd->add_option("--points", o->points, "Poincare points to compute (default: the scene's poincare.points)");
   cmd->add_option(
@@ -104,7 +105,7 @@ Command addChartCommand(CLI::App& app) {
               checkWritable(o->output, "-o");
               SweepChartData data = sweepChartData(spec);
               data.values = readSweepCsv(spec, o->csv, "--csv");
-              writePngChart(data, o->output, o->size);
+              writePngChart(data, o->output, o->size, "-o");
               return 0;
             }
             if (!o->csv.empty()) throw InputError("--csv: only with --view sweep");
@@ -124,7 +125,7 @@ Command addVideoCommand(CLI::App& app) {
   auto* cmd = app.add_subcommand("video", "record the 3D view of a scene into an MP4 (H.264)");
   auto o = std::make_shared<VideoOptions>();
   addSceneArgs(cmd, o->scene);
-  cmd->add_option("-o,--output", o->output, "MP4 file")->required();
+  cmd->add_option("-o,--output", o->output, "MP4 file")->check(writesOneOf({".mp4"}))->required();
   auto* duration =
       cmd->add_option("--duration", o->duration, "seconds of video (default: the scene's video.duration)");
   auto* fps = cmd->add_option("--fps", o->fps, "frames per second (default: the scene's video.fps)");

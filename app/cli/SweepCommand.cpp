@@ -46,12 +46,13 @@ std::string duration(double seconds) {
 
 } // namespace
 
-void writePngChart(const SweepChartData& data, const std::string& path, const std::string& size) {
+void writePngChart(const SweepChartData& data, const std::string& path, const std::string& size,
+                   const std::string& what) {
   const auto [w, h] = parseSize(size);
   const auto chart = makeSweepChart(data);
   auto ctx = createHeadlessContext(w, h);
   chart->attach(ctx->window());
-  writePng(ctx->window(), path, "--png");
+  writePng(ctx->window(), path, what);
 }
 
 namespace {
@@ -113,7 +114,7 @@ void writeResults(const SweepSpec& spec, const SweepStore& store, const SweepOpt
     writeVti(spec, store, o.output, seen);
   else
     writeCsv(spec, store, o.output, o.timing, seen);
-  if (png) writePngChart(data, o.png, o.size);
+  if (png) writePngChart(data, o.png, o.size, "--png");
 }
 
 int runSweep(const SweepOptions& o) {
@@ -249,11 +250,12 @@ Command addSweepCommand(CLI::App* cmd) {
          "-o,--output", o->output,
          "CSV file: the axes, the quantity's columns, status (the same file on any threads and ranks); a "
          ".vti file is image data for ParaView (the axes as x, y; the columns and seconds as point data)")
+      ->check(writesOneOf({".csv", ".vti"}))
       ->required();
   cmd->add_flag(
       "--timing", o->timing,
       "add the CSV column seconds: what each point cost (the one column that differs between runs)");
-  cmd->add_option("--png", o->png, "also draw the chart into this PNG");
+  cmd->add_option("--png", o->png, "also draw the chart into this PNG")->check(writesOneOf({".png"}));
   cmd->add_option("--size", o->size, "chart size WIDTHxHEIGHT")->capture_default_str();
   cmd->add_option("--threads", o->threads,
                   "computing threads (default: every core; under mpirun, 1 per rank)");

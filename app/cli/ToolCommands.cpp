@@ -64,9 +64,10 @@ Command addPoincareCommand(CLI::App* cmd) {
   addSceneArgs(cmd, o->scene);
   cmd->add_option("--points", o->points, "how many points (default: the scene's poincare.points)");
   cmd->add_option(
-      "-o,--output", o->output,
-      "CSV file: the map coordinates, t, sheet (default: standard output); a .vtp file is a point "
-      "cloud for ParaView with the same columns as point data");
+         "-o,--output", o->output,
+         "CSV file: the map coordinates, t, sheet (default: standard output); a .vtp file is a point "
+         "cloud for ParaView with the same columns as point data")
+      ->check(writesOneOf({".csv", ".vtp"}));
   addCheckpointOption(cmd, o->checkpoint);
   return {cmd, [o] {
             if (o->points < 0) throw InputError("--points: must be positive");
@@ -215,7 +216,7 @@ Command addSpectrumCommand(CLI::App* cmd) {
   addSceneArgs(cmd, o->scene);
   cmd->add_option("--function", o->function, "observable to expand (default: the scene's spectrum.function)");
   cmd->add_option("--samples", o->samples, "number of iterations (integration steps) sampled");
-  cmd->add_option("-o,--output", o->output, "CSV file: frequency, amplitude");
+  cmd->add_option("-o,--output", o->output, "CSV file: frequency, amplitude")->check(writesOneOf({".csv"}));
   cmd->add_flag("--json", o->json, "print the peaks as one JSON object");
   return {cmd, [o] {
             const Scene scene = o->scene.load();
@@ -261,7 +262,8 @@ Command addRegisteredToolCommand(CLI::App* cmd, const ToolEntry& tool) {
   for (const auto& out : tool.outputs)
     fields += (fields.empty() ? "" : ", ") + out.name;
   cmd->add_flag("--json", o->json, "print one JSON object: " + fields);
-  cmd->add_option("-o,--output", o->output, "CSV file: the tool's table (.csv)");
+  cmd->add_option("-o,--output", o->output, "CSV file: the tool's table (.csv)")
+      ->check(writesOneOf({".csv"}));
   return {cmd, [o, &tool, section] {
             std::vector<std::string> sets = o->scene.sets;
             for (const auto& [key, value] : o->settings)

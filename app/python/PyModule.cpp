@@ -167,6 +167,8 @@ void snapshot(const Scene& shared, const std::string& path, const pyb::handle& s
   // a copy: another Python thread may set() the scene while this runs without the GIL
   const Scene scene = shared; // NOLINT(performance-unnecessary-copy-initialization)
   const auto [w, h] = pictureSize(size, "size");
+  if (!hasExtension(path, ".png"))
+    throw InputError("path " + path + ": a snapshot is a PNG (.png); export_view writes .vtm");
   checkWritable(path, "path");
   pyb::gil_scoped_release release;
   const auto shown = playedTo(scene, time);
@@ -200,6 +202,7 @@ long video(const Scene& shared, const std::string& path, const pyb::object& dura
   VideoSpec spec = videoSpec(scene.tool("video"), speed > 0 ? speed : scene.view.speed, given);
   spec.path = path;
   spec.encoder.codec = encoder;
+  if (!hasExtension(path, ".mp4")) throw InputError("path " + path + ": a video is an MP4 file (.mp4)");
   checkWritable(path, "path");
   long frames = 0;
   runJob(progress, [&](const ToolControl& control) {

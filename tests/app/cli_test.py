@@ -192,6 +192,19 @@ class Cli(unittest.TestCase):
             self.assertEqual(r.returncode, 0, name + ": " + r.stderr)
             self.assertTrue(varied(pixels(out)[1]), name)
 
+    def test_every_output_format_follows_its_extension(self):
+        hh = os.path.join(SRC, "scenes", "henon_heiles.json")
+        # an output's format follows its extension: any other is bad input, and nothing is written
+        for cmd, name, supported in (
+                (["chart", hh, "--view", "lyapunov"], "fig.svg", ".png"),
+                (["chart", hh], "fig", ".png"),
+                (["render", hh], "view.svg", ".png, .vtm"),
+                (["video", hh], "film.avi", ".mp4"),
+                (["integrate", hh, "--time", "1", "--every", "1"], "x.txt", ".csv, .vtp"),
+                (["poincare", hh, "--points", "3"], "p.dat", ".csv, .vtp")):
+            self.assertBadInput(run(*cmd, "-o", self.path(name)), name, supported)
+            self.assertFalse(os.path.exists(self.path(name)), name)
+
     def test_a_video_frame_shows_the_state_at_its_time(self):
         # frame k of a video is the state at t = k * speed / fps: frame 15 at 10 fps matches a still at t = 1.5
         # (H.264 noise aside) and not one at t = 1.2

@@ -224,6 +224,13 @@ def test_chart_and_video(tmp_path):
     s = rollviz.Scene.load(scene_path("henon_map.json"))
     img = s.chart("poincare", size=(200, 160), points=500)
     assert img.shape == (160, 200, 3) and img.std() > 5
+    # a file's format follows its extension: another is refused, nothing written
+    with pytest.raises(ValueError, match=r"\.mp4"):
+        s.video(str(tmp_path / "v.avi"), duration=0.2, fps=10, size=(96, 64))
+    assert not (tmp_path / "v.avi").exists()
+    with pytest.raises(ValueError, match=r"\.png"):
+        rollviz.Scene.load(scene_path("chaplygin_ball.json")).snapshot(str(tmp_path / "s.jpg"), size=(64, 48))
+    assert not (tmp_path / "s.jpg").exists()
     out = tmp_path / "v.mp4"
     frames = rollviz.Scene.load(scene_path("chaplygin_ball.json")).video(str(out), duration=0.4, fps=10,
                                                                          size=(96, 64))
