@@ -32,7 +32,7 @@ void addSceneArgs(CLI::App* cmd, SceneArgs& args) {
       ->allow_extra_args(false);
 }
 
-CLI::Validator writesOneOf(std::vector<std::string> extensions) {
+CLI::Validator writesOneOf(const std::vector<std::string>& extensions) {
   std::string list;
   for (const auto& e : extensions)
     list += (list.empty() ? "" : ", ") + e;

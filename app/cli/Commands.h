@@ -28,7 +28,7 @@ void addSceneArgs(CLI::App* cmd, SceneArgs& args);
 /// A check of an output option: the file's extension (any case) is one of `extensions` (".csv", ".png",
 /// ...), else the command line is refused (exit 2) naming the option and listing the supported ones -- an
 /// output's format follows its extension, and nothing is written under a name of another format.
-CLI::Validator writesOneOf(std::vector<std::string> extensions);
+CLI::Validator writesOneOf(const std::vector<std::string>& extensions);
 
 /// Parses "WxH"; InputError naming --size otherwise.
 std::pair<int, int> parseSize(const std::string& text);

@@ -15,7 +15,8 @@
 
 namespace rv {
 
-BodyObject::BodyObject(std::string name, const BodyGeometry& geometry, vtkSmartPointer<vtkPolyData> mesh)
+BodyObject::BodyObject(std::string name, const BodyGeometry& geometry,
+                       const vtkSmartPointer<vtkPolyData>& mesh)
     : VisualObject(std::move(name)), size_(bodySize(geometry)) {
   vtkNew<vtkPolyDataMapper> mapper;
   const vtkSmartPointer<vtkPolyData> surface = mesh ? mesh : makeBodyMesh(geometry);

@@ -16,7 +16,8 @@ namespace rv {
 class BodyObject final : public VisualObject {
 public:
   /// The geometry's shape, or `mesh` (in the body's frame) when given: then the "grid" style is its edges.
-  BodyObject(std::string name, const BodyGeometry& geometry, vtkSmartPointer<vtkPolyData> mesh = nullptr);
+  BodyObject(std::string name, const BodyGeometry& geometry,
+             const vtkSmartPointer<vtkPolyData>& mesh = nullptr);
   void attach(vtkRenderer* renderer) override;
   void apply(const ObjectOptions& options) override;
   void show(const FrameState& s) override;
