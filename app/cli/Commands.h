@@ -71,9 +71,9 @@ Command addSweepCommand(CLI::App* cmd);
 /// per setting of its section (--KEY), --json (its fields), -o (its table as CSV).
 Command addRegisteredToolCommand(CLI::App* cmd, const ToolEntry& tool);
 
-/// Draws a sweep's chart into a PNG (`rollviz sweep --png`, `rollviz chart --view sweep`); `what` names the
-/// option in messages.
-void writePngChart(const SweepChartData& data, const std::string& path, const std::string& size,
-                   const std::string& what);
+/// Draws a sweep's chart into a PNG, SVG or PDF by the extension (`rollviz sweep --png`, `rollviz chart
+/// --view sweep`); `what` names the option in messages.
+void writeChartFigure(const SweepChartData& data, const std::string& path, const std::string& size,
+                      const std::string& what);
 
 } // namespace rv

@@ -8,6 +8,7 @@
 #include "render/VisualScene.h"
 #include "render/charts/PoincareChart.h"
 #include "render/context/HeadlessContext.h"
+#include "render/export/Figure.h"
 #include "render/export/VtkXmlFiles.h"
 #include "render/video/VideoExport.h"
 #include "scenes/SceneCharts.h"
@@ -76,7 +77,8 @@ Command addRenderCommand(CLI::App& app) {
 }
 
 Command addChartCommand(CLI::App& app) {
-  auto* cmd = app.add_subcommand("chart", "draw a view of a scene's tool output as a chart into a PNG");
+  auto* cmd =
+      app.add_subcommand("chart", "draw a view of a scene's tool output as a chart into a PNG, SVG or PDF");
   auto o = std::make_shared<ChartOptions>();
   addSceneArgs(cmd, o->scene);
   static const std::vector<std::string> views = [] {
@@ -89,7 +91,9 @@ Command addChartCommand(CLI::App& app) {
       ->check(CLI::IsMember(views));
   cmd->add_option("--csv", o->csv,
                   "--view sweep: the CSV `rollviz sweep` wrote (the positional is the sweep file)");
-  cmd->add_option("-o,--output", o->output, "PNG file")->check(writesOneOf({".png"}))->required();
+  cmd->add_option("-o,--output", o->output, "figure: PNG, or SVG or PDF (vectors, text as text)")
+      ->check(writesOneOf(figureExtensions()))
+      ->required();
   cmd->add_option("--size", o->size, "picture size WIDTHxHEIGHT")->capture_default_str();
   cmd->add_option("--points", o->points, "Poincare points to compute (default: the scene's poincare.points)");
   cmd->add_option(
@@ -105,7 +109,7 @@ Command addChartCommand(CLI::App& app) {
               checkWritable(o->output, "-o");
               SweepChartData data = sweepChartData(spec);
               data.values = readSweepCsv(spec, o->csv, "--csv");
-              writePngChart(data, o->output, o->size, "-o");
+              writeChartFigure(data, o->output, o->size, "-o");
               return 0;
             }
             if (!o->csv.empty()) throw InputError("--csv: only with --view sweep");
@@ -116,7 +120,7 @@ Command addChartCommand(CLI::App& app) {
                 sceneChart(scene, o->view, interruptibleControl(progress), o->points, o->diagram);
             auto ctx = createHeadlessContext(w, h);
             chart->attach(ctx->window());
-            writePng(ctx->window(), o->output, "-o");
+            writeFigure(ctx->window(), o->output, "-o");
             return interrupted() ? 130 : 0;
           }};
 }

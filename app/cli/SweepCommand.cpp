@@ -11,6 +11,7 @@
 #include "render/Snapshot.h"
 #include "render/charts/SweepChart.h"
 #include "render/context/HeadlessContext.h"
+#include "render/export/Figure.h"
 #include "render/export/VtkXmlFiles.h"
 #include "scenes/Sweep.h"
 
@@ -46,13 +47,13 @@ std::string duration(double seconds) {
 
 } // namespace
 
-void writePngChart(const SweepChartData& data, const std::string& path, const std::string& size,
-                   const std::string& what) {
+void writeChartFigure(const SweepChartData& data, const std::string& path, const std::string& size,
+                      const std::string& what) {
   const auto [w, h] = parseSize(size);
   const auto chart = makeSweepChart(data);
   auto ctx = createHeadlessContext(w, h);
   chart->attach(ctx->window());
-  writePng(ctx->window(), path, what);
+  writeFigure(ctx->window(), path, what);
 }
 
 namespace {
@@ -114,7 +115,7 @@ void writeResults(const SweepSpec& spec, const SweepStore& store, const SweepOpt
     writeVti(spec, store, o.output, seen);
   else
     writeCsv(spec, store, o.output, o.timing, seen);
-  if (png) writePngChart(data, o.png, o.size, "--png");
+  if (png) writeChartFigure(data, o.png, o.size, "--png");
 }
 
 int runSweep(const SweepOptions& o) {
@@ -255,7 +256,8 @@ Command addSweepCommand(CLI::App* cmd) {
   cmd->add_flag(
       "--timing", o->timing,
       "add the CSV column seconds: what each point cost (the one column that differs between runs)");
-  cmd->add_option("--png", o->png, "also draw the chart into this PNG")->check(writesOneOf({".png"}));
+  cmd->add_option("--png", o->png, "also draw the chart into this figure: PNG, or SVG or PDF (vectors)")
+      ->check(writesOneOf(figureExtensions()));
   cmd->add_option("--size", o->size, "chart size WIDTHxHEIGHT")->capture_default_str();
   cmd->add_option("--threads", o->threads,
                   "computing threads (default: every core; under mpirun, 1 per rank)");

@@ -1,9 +1,12 @@
 #include "app/gui/FilterWindow.h"
 
 #include "app/gui/QtVtkWidget.h"
+#include "dynamics/core/Errors.h"
 #include "dynamics/io/AtomicFile.h"
+#include "render/export/Figure.h"
 
 #include <QFileDialog>
+#include <QFileInfo>
 #include <QLabel>
 #include <QProgressBar>
 #include <QPushButton>
@@ -12,6 +15,20 @@
 #include <fstream>
 
 namespace rv {
+
+namespace {
+/// A save dialog for a figure (and `extra` filters): the name gets the chosen filter's extension when it has
+/// none of its own.
+QString askFigurePath(QWidget* parent, const QString& title, const QString& name, const QString& extra) {
+  QString filters = "PNG picture (*.png);;SVG vector figure (*.svg);;PDF vector figure (*.pdf)";
+  if (!extra.isEmpty()) filters += ";;" + extra;
+  QString chosen;
+  const QString path = QFileDialog::getSaveFileName(parent, title, name + ".png", filters, &chosen);
+  if (path.isEmpty() || !QFileInfo(path).suffix().isEmpty()) return path;
+  const auto star = chosen.indexOf("*."), close = chosen.indexOf(')', star);
+  return star < 0 ? path : path + chosen.mid(star + 1, close - star - 1);
+}
+} // namespace
 
 FilterWindow::FilterWindow(const QString& title, const QString& fileName, QWidget* parent)
     : QWidget(parent, Qt::Window), fileName_(fileName) {
@@ -29,11 +46,12 @@ FilterWindow::FilterWindow(const QString& title, const QString& fileName, QWidge
   status_ = new QLabel(this);
   status_->setWordWrap(true);
   status_->setTextInteractionFlags(Qt::TextSelectableByMouse); // a result or a reason can be copied
-  auto* save = save_ = new QPushButton("Save PNG…", this);
-  save->setObjectName("save_png");
+  auto* save = save_ = new QPushButton("Save figure…", this);
+  save->setObjectName("save_figure");
+  save->setToolTip("PNG (the pixels), or SVG or PDF (vectors, text as text: for papers)");
   connect(save, &QPushButton::clicked, this, [this] {
-    const QString path = QFileDialog::getSaveFileName(this, "Save chart", fileName_ + ".png", "PNG (*.png)");
-    if (!path.isEmpty() && !savePng(path)) setStatus("cannot write " + path);
+    const QString path = askFigurePath(this, "Save chart", fileName_, {});
+    if (!path.isEmpty()) saveFigure(path);
   });
   auto* csv = csv_ = new QPushButton("Save CSV…", this);
   csv->setObjectName("save_csv");
@@ -124,14 +142,36 @@ void FilterWindow::setSavable(bool savable, const QString& why) {
   }
 }
 
+bool saveChartFigure(QtVtkWidget* view, const QString& path, QString* why) {
+  try {
+    if (figureFormat(path.toStdString(), "file") == FigureFormat::Png) {
+      if (view->grabFramebuffer().save(path, "PNG")) return true;
+      throw ComputationError("cannot write " + path.toStdString());
+    }
+    view->makeCurrent(); // the exporter draws the chart again, in the widget's context
+    try {
+      writeFigure(view->renderWindow(), path.toStdString(), "file");
+    } catch (...) {
+      view->doneCurrent();
+      throw;
+    }
+    view->doneCurrent();
+    view->update();
+    return true;
+  } catch (const std::exception& e) {
+    if (why) *why = QString::fromStdString(e.what());
+    return false;
+  }
+}
+
 void exportChartDialog(QWidget* parent, QtVtkWidget* view, const Chart& chart, const QString& name,
                        const std::function<void(const QString&)>& failed) {
-  const QString path = QFileDialog::getSaveFileName(parent, "Export chart", name + ".png",
-                                                    "PNG picture (*.png);;CSV data (*.csv)");
+  const QString path = askFigurePath(parent, "Export chart", name, "CSV data (*.csv)");
   if (path.isEmpty()) return;
+  QString why = "cannot write " + path;
   const bool ok = path.endsWith(".csv", Qt::CaseInsensitive) ? saveChartCsv(chart, path)
-                                                             : view->grabFramebuffer().save(path, "PNG");
-  if (!ok) failed("cannot write " + path);
+                                                             : saveChartFigure(view, path, &why);
+  if (!ok) failed(why);
 }
 
 bool FilterWindow::saveCsv(const QString& path) {
@@ -139,8 +179,11 @@ bool FilterWindow::saveCsv(const QString& path) {
   return c && saveChartCsv(*c, path);
 }
 
-bool FilterWindow::savePng(const QString& path) {
-  return view_->grabFramebuffer().save(path, "PNG");
+bool FilterWindow::saveFigure(const QString& path) {
+  QString why;
+  if (saveChartFigure(view_, path, &why)) return true;
+  setStatus(why);
+  return false;
 }
 
 } // namespace rv

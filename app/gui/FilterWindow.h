@@ -1,6 +1,7 @@
-// FilterWindow.h -- what every filter window (manual §2.4) has: a chart view, a status line and Save PNG /
-// Save CSV of the chart as drawn. The windows differ in where their chart comes from: computed whole on a
-// worker thread (ChartWindow) or fed live by the running tools (PlotWindow, MultipliersWindow).
+// FilterWindow.h -- what every filter window (manual §2.4) has: a chart view, a status line and Save figure
+// (PNG, SVG, PDF) / Save CSV of the chart as drawn. The windows differ in where their chart comes from:
+// computed whole on a worker thread (ChartWindow) or fed live by the running tools (PlotWindow,
+// MultipliersWindow).
 #pragma once
 #include "render/charts/Chart.h"
 
@@ -19,8 +20,12 @@ class QtVtkWidget;
 
 /// Writes a chart's data as CSV through a temporary name; false when it cannot.
 bool saveChartCsv(const Chart& chart, const QString& path);
-/// Asks for a file name and saves the view as PNG or the chart as CSV (by the name's extension); says why it
-/// could not in `failed`.
+/// Saves the chart as drawn in `view` as a figure in the format the name's extension names: PNG (the pixels),
+/// SVG or PDF (vectors, text as text: render/export/Figure.h). False, with the reason in `why`, when it
+/// cannot.
+bool saveChartFigure(QtVtkWidget* view, const QString& path, QString* why);
+/// Asks for a file name and saves the view as PNG, SVG or PDF or the chart as CSV (by the name's extension);
+/// says why it could not in `failed`.
 void exportChartDialog(QWidget* parent, QtVtkWidget* view, const Chart& chart, const QString& name,
                        const std::function<void(const QString&)>& failed);
 
@@ -30,8 +35,9 @@ public:
   /// `fileName`: the suggested name of saved files, without extension.
   FilterWindow(const QString& title, const QString& fileName, QWidget* parent);
   QtVtkWidget* view() const { return view_; }
-  /// Writes the chart as drawn to a PNG; false when it cannot.
-  bool savePng(const QString& path);
+  /// Writes the chart as drawn to a PNG, SVG or PDF (by the extension); false, the reason in the status line,
+  /// when it cannot.
+  bool saveFigure(const QString& path);
   /// Writes the chart's data as CSV (through a temporary name); false when it cannot or nothing is drawn yet.
   bool saveCsv(const QString& path);
 
@@ -47,7 +53,7 @@ protected:
   void showPlaceholder(const QString& text);
   /// The chart view again.
   void showView();
-  /// Save PNG / Save CSV enabled or not (`why` their tooltip when not).
+  /// Save figure / Save CSV enabled or not (`why` their tooltip when not).
   void setSavable(bool savable, const QString& why = {});
   /// The row under the chart, for a window's own controls (left of the save buttons).
   QHBoxLayout* bar() const { return bar_; }

@@ -600,7 +600,15 @@ QString MainWindow::askWhereToWrite(const QString& title, QStandardPaths::Standa
           .arg(scene_ ? QString::fromStdString(scene_->model->info().id) : QString("rollviz"))
           .arg(shownTime_, 0, 'f', 2)
           .arg(extension);
-  return QFileDialog::getSaveFileName(this, title, QDir(folder).filePath(name), filter);
+  const QString path = QFileDialog::getSaveFileName(this, title, QDir(folder).filePath(name), filter);
+  // the file's format is the one its extension names: none gets ours, another is refused
+  const QString suffix = QFileInfo(path).suffix();
+  if (path.isEmpty() || suffix.compare(extension, Qt::CaseInsensitive) == 0) return path;
+  if (suffix.isEmpty()) return path + "." + extension;
+  QMessageBox::warning(this, "rollviz",
+                       QString("%1: unsupported format '.%2' (the extension names it; supported: .%3)")
+                           .arg(path, suffix, extension));
+  return {};
 }
 
 void MainWindow::snapshot() {

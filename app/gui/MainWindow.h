@@ -137,7 +137,8 @@ public slots:
   void openDialog();
   void saveDialog();
   void recordDialog();
-  /// A file dialog proposing `<problem>-t<time>.<extension>` in the user's `where` folder; empty: cancelled.
+  /// A file dialog proposing `<problem>-t<time>.<extension>` in the user's `where` folder; a name without an
+  /// extension gets it, one with another is refused (said in a message box); empty: cancelled or refused.
   QString askWhereToWrite(const QString& title, QStandardPaths::StandardLocation where,
                           const QString& extension, const QString& filter);
 

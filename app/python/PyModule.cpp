@@ -11,6 +11,7 @@
 #include "render/Snapshot.h"
 #include "render/VisualScene.h"
 #include "render/context/HeadlessContext.h"
+#include "render/export/Figure.h"
 #include "render/export/VtkXmlFiles.h"
 #include "render/video/VideoExport.h"
 #include "scenes/ModelFile.h"
@@ -220,7 +221,8 @@ long video(const Scene& shared, const std::string& path, const pyb::object& dura
 }
 
 pyb::array_t<unsigned char> chart(const Scene& shared, const std::string& view, const pyb::handle& size,
-                                  long points, const std::string& diagram, const pyb::object& progress) {
+                                  long points, const std::string& diagram, const pyb::object& path,
+                                  const pyb::object& progress) {
   // a copy: another Python thread may set() the scene while this runs without the GIL
   const Scene scene = shared; // NOLINT(performance-unnecessary-copy-initialization)
   const auto picture = pictureSize(size, "size");
@@ -232,12 +234,18 @@ pyb::array_t<unsigned char> chart(const Scene& shared, const std::string& view, 
       known += " " + v;
     throw InputError("view " + view + ": not a chart (known:" + known + ")");
   }
+  const std::string file = path.is_none() ? std::string() : path.cast<std::string>();
+  if (!file.empty()) {
+    figureFormat(file, "path");
+    checkWritable(file, "path");
+  }
   Image image;
   runJob(progress, [&](const ToolControl& control) {
     const auto c = sceneChart(scene, view, control, points, diagram);
     auto ctx = createHeadlessContext(w, h);
     c->attach(ctx->window());
     image = capture(ctx->window());
+    if (!file.empty()) writeFigure(ctx->window(), file, "path");
   });
   return toPicture(std::move(image));
 }
@@ -492,8 +500,10 @@ PYBIND11_MODULE(_rollviz, m) {
            "video "
            "section (with its crf and preset), speed 0 to its view.speed. Returns frames.")
       .def("chart", &chart, pyb::arg("view") = "poincare", pyb::arg("size") = std::pair<int, int>{800, 800},
-           pyb::arg("points") = 0, pyb::arg("diagram") = "", pyb::kw_only(),
+           pyb::arg("points") = 0, pyb::arg("diagram") = "", pyb::kw_only(), pyb::arg("path") = pyb::none(),
            pyb::arg("progress") = pyb::none(),
-           "A chart of the scene (rollviz chart --view VIEW) as an H x W x 3 uint8 array.");
+           "A chart of the scene (rollviz chart --view VIEW) as an H x W x 3 uint8 array; with path, also "
+           "written as a figure in the format its extension names (.png, or .svg or .pdf: vectors, text as "
+           "text).");
   bindTools(m, scene);
 }

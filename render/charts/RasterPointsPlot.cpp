@@ -9,6 +9,7 @@
 #include <vtkMatrix3x3.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
+#include <vtkOpenGLGL2PSHelper.h>
 #include <vtkPen.h>
 #include <vtkPointData.h>
 #include <vtkPoints2D.h>
@@ -28,6 +29,15 @@ bool RasterPointsPlot::Paint(vtkContext2D* painter) {
   if (!this->Visible || n == 0 || coloured || bad || !scene ||
       (this->MarkerStyle != vtkPlotPoints::CIRCLE && this->MarkerStyle != vtkPlotPoints::SQUARE))
     return vtkPlotPoints::Paint(painter);
+  // a vector figure (GL2PS): its SVG cannot hold the raster picture, and a marker drawn as a point is a small
+  // circle there (a wedge path is seven times the bytes): 10^5 points stay a few MB
+  if (auto* gl2ps = vtkOpenGLGL2PSHelper::GetInstance();
+      gl2ps && gl2ps->GetActiveState() != vtkOpenGLGL2PSHelper::Inactive) {
+    painter->GetPen()->SetColor(this->Pen->GetColor());
+    painter->GetPen()->SetWidth(std::max(1.0f, this->MarkerSize));
+    painter->DrawPoints(static_cast<float*>(this->Points->GetVoidPointer(0)), static_cast<int>(n));
+    return true;
+  }
   const int w = scene->GetViewWidth(), h = scene->GetViewHeight();
   if (w <= 0 || h <= 0) return vtkPlotPoints::Paint(painter);
 

@@ -2,7 +2,8 @@
 // single textured quad. Software GL (llvmpipe) pays ~0.8 us of setup per point sprite: the ~6·10^4 markers a
 // Poincaré map of 10^6 points keeps after thinning cost ~50 ms a frame in a 320 x 400 map window as sprites,
 // a few ms as a raster. Markers are crisp: a square, or a disk of the marker's diameter. Points coloured by
-// scalars, or with other marker styles, are drawn by vtkPlotPoints.
+// scalars, or with other marker styles, or into a vector figure (render/export/Figure.h), are drawn by
+// vtkPlotPoints.
 #pragma once
 #include <vtkImageData.h>
 #include <vtkNew.h>

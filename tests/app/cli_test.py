@@ -192,12 +192,42 @@ class Cli(unittest.TestCase):
             self.assertEqual(r.returncode, 0, name + ": " + r.stderr)
             self.assertTrue(varied(pixels(out)[1]), name)
 
-    def test_every_output_format_follows_its_extension(self):
+    def test_charts_as_vector_figures_and_every_format_by_its_extension(self):
+        import xml.etree.ElementTree as ET
         hh = os.path.join(SRC, "scenes", "henon_heiles.json")
+        png, svg, pdf = self.path("l.png"), self.path("l.svg"), self.path("l.pdf")
+        for out in (png, svg, pdf):
+            r = run("chart", hh, "--view", "lyapunov", "--set", "lyapunov.time=50", "-o", out, "--size", "640x480")
+            self.assertEqual(r.returncode, 0, out + ": " + r.stderr)
+        # the SVG is XML whose text is text: the title and the axes' titles
+        root = ET.parse(svg).getroot()
+        texts = [t.strip() for e in root.iter() if e.tag.endswith("text") for t in e.itertext() if t.strip()]
+        self.assertIn("Lyapunov exponents", texts)
+        self.assertIn("t", texts)
+        # the SVG (librsvg) and the PDF (poppler) draw the PNG's picture: not blank, the same dark strokes (axes,
+        # text, curves) where the PNG has them, within a tolerance
+        subprocess.run(["pdftoppm", "-png", "-r", "72", "-singlefile", pdf, self.path("from_pdf")], check=True)
+        subprocess.run(["rsvg-convert", "-b", "white", "-w", "640", "-h", "480", svg, "-o", self.path("from_svg.png")], check=True)
+        size, a = pixels(png)
+        for name in ("from_pdf.png", "from_svg.png"):
+            size2, b = pixels(self.path(name))
+            self.assertEqual(size, size2, name)
+            self.assertTrue(varied(b), name)
+            w, h = size
+            dark = lambda px: [sum(px[y * w + x][0] < 128 for y in range(h)) for x in range(w)]
+            da, db = dark(a), dark(b)
+            self.assertGreater(sum(db), 0.5 * sum(da), name)
+            self.assertLess(sum(abs(p - q) for p, q in zip(da, db)), 0.6 * sum(da), name + ": strokes elsewhere")
+        # a Poincare map of many points stays a usable vector figure
+        map_svg = self.path("map.svg")
+        r = run("chart", hh, "--view", "poincare", "--points", "20000", "-o", map_svg)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertLess(os.path.getsize(map_svg), 10e6)
+        ET.parse(map_svg)
         # an output's format follows its extension: any other is bad input, and nothing is written
         for cmd, name, supported in (
-                (["chart", hh, "--view", "lyapunov"], "fig.svg", ".png"),
-                (["chart", hh], "fig", ".png"),
+                (["chart", hh, "--view", "lyapunov"], "fig.jpg", ".png, .svg, .pdf"),
+                (["chart", hh], "fig", ".png, .svg, .pdf"),
                 (["render", hh], "view.svg", ".png, .vtm"),
                 (["video", hh], "film.avi", ".mp4"),
                 (["integrate", hh, "--time", "1", "--every", "1"], "x.txt", ".csv, .vtp"),

@@ -1102,7 +1102,7 @@ private slots:
     QVERIFY2(!spectrum->failure().contains("--view"), qPrintable(spectrum->failure()));
     QVERIFY2(spectrum->failure().contains("control panel"), qPrintable(spectrum->failure()));
     QVERIFY(spectrum->placeholder().contains(spectrum->failure()));
-    QVERIFY(!spectrum->findChild<QPushButton*>("save_png")->isEnabled());
+    QVERIFY(!spectrum->findChild<QPushButton*>("save_figure")->isEnabled());
     QVERIFY(!spectrum->findChild<QPushButton*>("save_csv")->isEnabled());
     QTest::qWait(100);
     QVERIFY(keep(spectrum->grab().toImage(), "window_chart_failed.png"));
@@ -1117,7 +1117,7 @@ private slots:
     QVERIFY(done.wait(60000));
     QVERIFY2(lyapunov->ready(), qPrintable(lyapunov->failure()));
     QVERIFY(lyapunov->placeholder().isEmpty());
-    QVERIFY(lyapunov->findChild<QPushButton*>("save_png")->isEnabled());
+    QVERIFY(lyapunov->findChild<QPushButton*>("save_figure")->isEnabled());
     auto* plane = dynamic_cast<PoincareChart*>(lyapunov->drawn().get());
     QVERIFY(plane);
     QVERIFY(plane->chart()->GetShowLegend());
@@ -1130,6 +1130,22 @@ private slots:
     QCOMPARE(QString::fromStdString(plane->chart()->GetTitle()), QString("Lyapunov exponents"));
     QTest::qWait(200);
     QVERIFY(keep(lyapunov->grab().toImage(), "window_chart_lyapunov.png"));
+    // Save figure: SVG and PDF by the extension, the chart's text as text; another extension is refused
+    QTemporaryDir figures;
+    QVERIFY(lyapunov->saveFigure(figures.filePath("lyapunov.svg")));
+    QFile svg(figures.filePath("lyapunov.svg"));
+    QVERIFY(svg.open(QIODevice::ReadOnly));
+    const QByteArray text = svg.readAll();
+    QVERIFY(text.contains("<svg"));
+    QVERIFY(text.contains("Lyapunov exponents"));
+    QVERIFY(lyapunov->saveFigure(figures.filePath("lyapunov.pdf")));
+    QFile pdf(figures.filePath("lyapunov.pdf"));
+    QVERIFY(pdf.open(QIODevice::ReadOnly));
+    QVERIFY(pdf.read(5) == "%PDF-");
+    QVERIFY(!lyapunov->saveFigure(figures.filePath("lyapunov.jpg")));
+    QVERIFY(!QFile::exists(figures.filePath("lyapunov.jpg")));
+    QVERIFY(lyapunov->isVisible()); // and the window still draws
+    QVERIFY(keep(lyapunov->grab().toImage(), "window_chart_lyapunov_after_export.png"));
     lyapunov->close();
   }
 

@@ -224,6 +224,16 @@ def test_chart_and_video(tmp_path):
     s = rollviz.Scene.load(scene_path("henon_map.json"))
     img = s.chart("poincare", size=(200, 160), points=500)
     assert img.shape == (160, 200, 3) and img.std() > 5
+    # written as a figure in the format its extension names: SVG with the text as text, PDF; another is refused
+    svg, pdf = tmp_path / "map.svg", tmp_path / "map.pdf"
+    again = s.chart("poincare", size=(200, 160), points=500, path=str(svg))
+    assert again.shape == img.shape
+    assert b"<svg" in svg.read_bytes()
+    s.chart("poincare", size=(200, 160), points=500, path=str(pdf))
+    assert pdf.read_bytes()[:5] == b"%PDF-"
+    with pytest.raises(ValueError, match=r"map\.jpg.*\.png, \.svg, \.pdf"):
+        s.chart("poincare", size=(200, 160), points=500, path=str(tmp_path / "map.jpg"))
+    assert not (tmp_path / "map.jpg").exists()
     # a file's format follows its extension: another is refused, nothing written
     with pytest.raises(ValueError, match=r"\.mp4"):
         s.video(str(tmp_path / "v.avi"), duration=0.2, fps=10, size=(96, 64))
