@@ -23,7 +23,7 @@ QString askFigurePath(QWidget* parent, const QString& title, const QString& name
   QString filters = "PNG picture (*.png);;SVG vector figure (*.svg);;PDF vector figure (*.pdf)";
   if (!extra.isEmpty()) filters += ";;" + extra;
   QString chosen;
-  const QString path = QFileDialog::getSaveFileName(parent, title, name + ".png", filters, &chosen);
+  QString path = QFileDialog::getSaveFileName(parent, title, name + ".png", filters, &chosen);
   if (path.isEmpty() || !QFileInfo(path).suffix().isEmpty()) return path;
   const auto star = chosen.indexOf("*."), close = chosen.indexOf(')', star);
   return star < 0 ? path : path + chosen.mid(star + 1, close - star - 1);

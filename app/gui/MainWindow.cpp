@@ -600,7 +600,7 @@ QString MainWindow::askWhereToWrite(const QString& title, QStandardPaths::Standa
           .arg(scene_ ? QString::fromStdString(scene_->model->info().id) : QString("rollviz"))
           .arg(shownTime_, 0, 'f', 2)
           .arg(extension);
-  const QString path = QFileDialog::getSaveFileName(this, title, QDir(folder).filePath(name), filter);
+  QString path = QFileDialog::getSaveFileName(this, title, QDir(folder).filePath(name), filter);
   // the file's format is the one its extension names: none gets ours, another is refused
   const QString suffix = QFileInfo(path).suffix();
   if (path.isEmpty() || suffix.compare(extension, Qt::CaseInsensitive) == 0) return path;
