@@ -228,7 +228,22 @@ void VisualScene::show(double t, const Eigen::VectorXd& x) {
     std::snprintf(text, sizeof text, "t = %9.3f", t);
   }
   overlay_->SetInput(text);
-  if (!pose) placeCamera();
+  if (!pose && cameraAsPlaced()) placeCamera(); // the growing curve framed, until the user takes the camera
+}
+
+namespace {
+std::array<double, 10> cameraState(vtkCamera* cam) {
+  std::array<double, 10> s{};
+  cam->GetPosition(&s[0]);
+  cam->GetFocalPoint(&s[3]);
+  cam->GetViewUp(&s[6]);
+  s[9] = cam->GetViewAngle();
+  return s;
+}
+} // namespace
+
+bool VisualScene::cameraAsPlaced() const {
+  return cameraState(renderer_->GetActiveCamera()) == placed_;
 }
 
 void VisualScene::clear() {
@@ -257,6 +272,7 @@ void VisualScene::placeCamera() {
     cam->SetPosition(dist * dir[0], dist * dir[1], dist * dir[2]);
     cam->SetViewAngle(30);
     renderer_->ResetCameraClippingRange();
+    placed_ = cameraState(cam);
     return;
   }
   if (!model_.geometry()) {
@@ -264,6 +280,7 @@ void VisualScene::placeCamera() {
     cam->SetFocalPoint(0, 0, 0);
     cam->SetPosition(dir[0], dir[1], dir[2]);
     renderer_->ResetCamera();
+    placed_ = cameraState(cam);
     return;
   }
   // a ball is framed with room for its trace; an elongated body's size is its longest half-axis already
@@ -283,6 +300,7 @@ void VisualScene::placeCamera() {
   cam->SetPosition(eye[0], eye[1], eye[2]);
   cam->SetViewAngle(30);
   renderer_->ResetCameraClippingRange();
+  placed_ = cameraState(cam);
 }
 
 } // namespace rv

@@ -6,6 +6,7 @@
 #include "render/ViewOptions.h"
 #include "render/objects/VisualObject.h"
 
+#include <array>
 #include <map>
 #include <memory>
 #include <vector>
@@ -47,13 +48,17 @@ public:
   std::optional<double> energyError() const { return energyError_; }
   /// Forgets traces and the energy reference (a new run).
   void clear();
-  /// Puts the camera back to its default placement around the current state.
+  /// Puts the camera back to its default placement around the current state. In a phase-space view it then
+  /// frames the growing curve at every frame, until the user turns, moves or zooms it: from then on the
+  /// camera is the user's (playing or not) until the next reset.
   void resetCamera();
   /// The apex view's key to its colours, a line per axis (red, green, blue); empty in other views.
   const std::vector<std::string>& colourKey() const { return keyLines_; }
 
 private:
   void placeCamera();
+  /// The camera is where placeCamera last left it (the user has not turned, moved or zoomed it since).
+  bool cameraAsPlaced() const;
   const Model& model_;
   ViewOptions options_;
   double scale_ = 1;     ///< size of the body (ball radius), or of the initial state
@@ -62,6 +67,7 @@ private:
   bool haveEnergy0_ = false;
   std::optional<double> energyError_;
   Eigen::Vector3d focus_ = Eigen::Vector3d::Zero();
+  std::array<double, 10> placed_{}; ///< the camera placeCamera left: position, focal point, view up, angle
   vtkSmartPointer<vtkRenderer> renderer_;
   vtkSmartPointer<vtkTextActor> overlay_;
   std::vector<std::string> keyLines_;

@@ -24,6 +24,7 @@
 #include <numbers>
 #include <tuple>
 #include <unistd.h>
+#include <vtkCamera.h>
 #include <vtkImageData.h>
 #include <vtkPNGReader.h>
 #include <vtkPolyData.h>
@@ -632,6 +633,43 @@ TEST(BodyFrameView, TheBodyStandsStillOnScreen) {
   };
   EXPECT_LT(test::compareImages(at(2, "body"), at(4, "body")).meanAbs, 3.0);
   EXPECT_GT(test::compareImages(at(2, "absolute"), at(4, "absolute")).meanAbs, 15.0);
+}
+
+// in a phase-space view the camera frames the growing curve until the user takes it: turned by hand, it stays
+// where the user put it while the run goes on (playing), and a reset gives the framing back
+TEST(Camera, TheUserKeepsTheCameraInAPhaseSpaceView) {
+  const auto p = play("lorenz", 2.0);
+  vtkCamera* cam = p->visual->renderer()->GetActiveCamera();
+  double framed[3];
+  cam->GetPosition(framed);
+  p->visual->show(2.5, p->x + Eigen::Vector3d(30, 30, 30)); // the curve grows: framed again
+  double grown[3];
+  cam->GetPosition(grown);
+  EXPECT_GT(std::abs(grown[0] - framed[0]) + std::abs(grown[1] - framed[1]) + std::abs(grown[2] - framed[2]),
+            1e-6);
+  cam->Azimuth(40); // the user turns it
+  cam->Zoom(1.5);
+  double mine[3], focal[3];
+  cam->GetPosition(mine);
+  cam->GetFocalPoint(focal);
+  p->visual->show(3.0, p->x + Eigen::Vector3d(-40, 60, 80));
+  double after[3], focalAfter[3];
+  cam->GetPosition(after);
+  cam->GetFocalPoint(focalAfter);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_EQ(after[i], mine[i]);
+    EXPECT_EQ(focalAfter[i], focal[i]);
+  }
+  p->visual->resetCamera(); // framed again, and followed again
+  double reset[3];
+  cam->GetPosition(reset);
+  EXPECT_GT(std::abs(reset[0] - mine[0]) + std::abs(reset[1] - mine[1]) + std::abs(reset[2] - mine[2]), 1e-6);
+  p->visual->show(3.5, p->x + Eigen::Vector3d(100, 100, 100));
+  double followed[3];
+  cam->GetPosition(followed);
+  EXPECT_GT(std::abs(followed[0] - reset[0]) + std::abs(followed[1] - reset[1]) +
+                std::abs(followed[2] - reset[2]),
+            1e-6);
 }
 
 // a model written as equations draws its body from a mesh file (an OBJ cube) on the fixed surface its view
