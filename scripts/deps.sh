@@ -10,7 +10,8 @@ BUILD_PKGS=(cmake g++ pkg-config ninja-build ccache
   libopenmpi-dev openmpi-bin pybind11-dev python3-dev)
 TEST_PKGS=(libgtest-dev libgmock-dev libbenchmark-dev libboost-dev
   xvfb xauth xdotool x11-apps ffmpeg python3 python3-numpy python3-pil python3-pytest python3-vtk9 python3-matplotlib
-  clang-14 libfuzzer-14-dev clang-tidy poppler-utils librsvg2-bin)
+  clang-14 libfuzzer-14-dev clang-tidy poppler-utils librsvg2-bin
+  python3-sphinx python3-myst-parser)
 want=("${BUILD_PKGS[@]}")
 [ "${1:-build}" = test ] && want+=("${TEST_PKGS[@]}")
 missing=()

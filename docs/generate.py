@@ -1,0 +1,42 @@
+#!/usr/bin/env python3
+"""Copies the guide's pages into OUT and adds the reference pages generated from the program itself:
+command-line.md from `rollviz --help` and every subcommand's help. Usage: generate.py DOCS_DIR OUT_DIR ROLLVIZ"""
+import os
+import re
+import shutil
+import subprocess
+import sys
+
+docs, out, rollviz = sys.argv[1], sys.argv[2], sys.argv[3]
+if os.path.isdir(out):
+    shutil.rmtree(out)
+shutil.copytree(docs, out, ignore=shutil.ignore_patterns("generate.py", "__pycache__"))
+
+env = dict(os.environ)
+env.pop("DISPLAY", None)
+
+
+def help_of(*args):
+    r = subprocess.run([rollviz, *args, "--help"], capture_output=True, text=True, env=env, timeout=60)
+    if r.returncode != 0:
+        sys.exit(f"generate.py: `rollviz {' '.join(args)} --help` failed: {r.stderr}")
+    return r.stdout.replace(rollviz, "rollviz")
+
+
+top = help_of()
+commands = []
+for line in top.split("Subcommands:", 1)[1].splitlines():
+    m = re.match(r"^  (\S+)\s+(.*)$", line)
+    if m:
+        commands.append((m.group(1), m.group(2)))
+if not commands:
+    sys.exit("generate.py: no subcommands in `rollviz --help`")
+
+with open(os.path.join(out, "command-line.md"), "w") as f:
+    f.write("# The command line\n\n")
+    f.write("Generated from the program's own help (`rollviz --help`, `rollviz COMMAND --help`) when the guide "
+            "is built, so it is the help of the build it documents. Exit status: 0 done, 1 a computation failed "
+            "(the reason on standard error), 2 bad input (naming the file, field or flag), 130 interrupted.\n\n")
+    f.write("```text\n" + top.rstrip() + "\n```\n\n")
+    for name, summary in commands:
+        f.write(f"## {name}\n\n{summary}\n\n```text\n{help_of(name).rstrip()}\n```\n\n")
