@@ -1,5 +1,7 @@
 #include "app/gui/ToolManager.h"
 
+#include "app/gui/ChartWindow.h"
+
 #include "dynamics/jobs/JobTree.h"
 
 #include <QColorDialog>
@@ -108,8 +110,18 @@ void ToolManager::refresh() {
     it->setText(0, QString::number(j->id()));
     it->setText(1, QString::fromStdString(j->task().name()));
     QString status = toString(j->status());
-    if (j->status() == Job::Status::Failed) status += ": " + QString::fromStdString(j->error());
+    if (j->status() == Job::Status::Failed) {
+      const QString why = inGuiWords(j->error());
+      status += ": " + why;
+      if (failuresSaid_.insert(j->id()).second) // every outcome reaches the Results dock, a failure with why
+        emit message(QString("tool %1 (%2) failed: %3")
+                         .arg(j->id())
+                         .arg(QString::fromStdString(j->task().name()), why));
+    } else {
+      failuresSaid_.erase(j->id());
+    }
     it->setText(2, status);
+    it->setToolTip(2, status); // whole, where the column cuts it
     it->setText(3, QString("%1%").arg(static_cast<int>(100 * j->progress())));
     const QString description = QString::fromStdString(j->task().describe()); // their fixed settings
     it->setText(5, description);

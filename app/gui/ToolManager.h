@@ -11,6 +11,7 @@
 #include <functional>
 #include <map>
 #include <optional>
+#include <set>
 
 class QPushButton;
 class QTreeWidget;
@@ -89,6 +90,7 @@ private:
   /// the buttons by object name, with their tooltips when enabled
   std::map<QString, std::pair<QPushButton*, QString>> buttons_;
   QTimer* timer_;
+  std::set<int> failuresSaid_; ///< failed jobs whose reason went to the Results dock (once per failure)
 };
 
 } // namespace rv

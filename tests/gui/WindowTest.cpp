@@ -1102,6 +1102,9 @@ private slots:
     QVERIFY2(!spectrum->failure().contains("--view"), qPrintable(spectrum->failure()));
     QVERIFY2(spectrum->failure().contains("control panel"), qPrintable(spectrum->failure()));
     QVERIFY(spectrum->placeholder().contains(spectrum->failure()));
+    // the failure and its reason reach the Results dock, numbered as in the tool manager
+    QTRY_VERIFY_WITH_TIMEOUT(
+        window_->results().contains("failed: ") && window_->results().contains(spectrum->failure()), 10000);
     QVERIFY(!spectrum->findChild<QPushButton*>("save_figure")->isEnabled());
     QVERIFY(!spectrum->findChild<QPushButton*>("save_csv")->isEnabled());
     QTest::qWait(100);
