@@ -16,6 +16,7 @@
 #include "dynamics/io/AtomicFile.h"
 #include "dynamics/jobs/PoincareTask.h"
 #include "dynamics/tools/ToolRegistry.h"
+#include "render/charts/PoincareChart.h"
 #include "render/video/ScreenRecorder.h"
 #include "render/video/VideoExport.h"
 #include "scenes/ModelFile.h"
@@ -53,9 +54,26 @@
 #include <fstream>
 #include <functional>
 #include <map>
+#include <vtkChartXY.h>
+#include <vtkPlot.h>
 #include <vtkRenderer.h>
 
 namespace rv {
+
+namespace {
+/// The numbers a chart's legend names ("L1 = 0.091", "<Y> = 2.01", ...), joined; empty when it names none.
+QString numbersOf(const Chart& chart) {
+  const auto* plane = dynamic_cast<const PoincareChart*>(&chart);
+  if (!plane) return {};
+  QStringList named;
+  for (vtkIdType i = 0; i < plane->chart()->GetNumberOfPlots(); ++i) {
+    vtkPlot* plot = plane->chart()->GetPlot(i);
+    const QString label = QString::fromStdString(plot->GetLabel());
+    if (plot->GetLegendVisibility() && label.contains(" = ")) named << label;
+  }
+  return named.join(", ");
+}
+} // namespace
 
 // A recording takes the pictures the 3D view paints (QtVtkWidget's frame tap) with their wall-clock times;
 // ScreenRecorder encodes them on its own thread.
@@ -769,6 +787,12 @@ ChartWindow* MainWindow::openChart(const std::string& view, const std::string& d
   // with the control panel's values as they stand (Apply not needed for a chart)
   auto* w = new ChartWindow(map_->jobs(), control_->editedDocument(), scene_->source, view, this, diagram);
   w->setAttribute(Qt::WA_DeleteOnClose);
+  // every outcome in the Results dock: the numbers a finished chart shows (its failures: the tool manager)
+  connect(w, &ChartWindow::finished, this, [this, w, view] {
+    if (!w->ready() || !w->failure().isEmpty()) return;
+    if (const QString numbers = numbersOf(*w->drawn()); !numbers.isEmpty())
+      report(QString::fromStdString(chartTitle(view)) + ": " + numbers, 8000);
+  });
   w->show();
   if (view == "bifurcation") map_->addDiagramWindow(w); // the map's trajectories are points on it
   return w;

@@ -1131,6 +1131,8 @@ private slots:
     QCOMPARE(labels.size(), 4); // Henon-Heiles: four exponents
     QVERIFY2(labels.front().startsWith("L1 = "), qPrintable(labels.join(" | ")));
     QCOMPARE(QString::fromStdString(plane->chart()->GetTitle()), QString("Lyapunov exponents"));
+    // and the exponents, with their names, reach the Results dock
+    QTRY_VERIFY_WITH_TIMEOUT(window_->results().contains(labels.front()), 10000);
     QTest::qWait(200);
     QVERIFY(keep(lyapunov->grab().toImage(), "window_chart_lyapunov.png"));
     // Save figure: SVG and PDF by the extension, the chart's text as text; another extension is refused
