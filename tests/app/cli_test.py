@@ -234,6 +234,15 @@ class Cli(unittest.TestCase):
                 (["poincare", hh, "--points", "3"], "p.dat", ".csv, .vtp")):
             self.assertBadInput(run(*cmd, "-o", self.path(name)), name, supported)
             self.assertFalse(os.path.exists(self.path(name)), name)
+        # a chart drawn as a picture of cells (a sweep over two axes) is PNG only: said before the sweep runs
+        sweep = self.path("two.json")
+        with open(sweep, "w") as f:
+            json.dump({"scene": os.path.join(SRC, "scenes", "henon_map.json"), "quantity": "lyapunov.max",
+                       "axes": [{"id": "a", "min": 1.0, "max": 1.4, "count": 2},
+                                {"id": "b", "min": 0.2, "max": 0.3, "count": 2}]}, f)
+        self.assertBadInput(run("sweep", sweep, "-o", self.path("two.csv"), "--png", self.path("two.svg")),
+                            "two.svg", "picture of cells", ".png")
+        self.assertFalse(os.path.exists(self.path("two.csv")) or os.path.exists(self.path("two.svg")))
 
     def test_a_video_frame_shows_the_state_at_its_time(self):
         # frame k of a video is the state at t = k * speed / fps: frame 15 at 10 fps matches a still at t = 1.5
