@@ -793,6 +793,11 @@ ChartWindow* MainWindow::openChart(const std::string& view, const std::string& d
     if (const QString numbers = numbersOf(*w->drawn()); !numbers.isEmpty())
       report(QString::fromStdString(chartTitle(view)) + ": " + numbers, 8000);
   });
+  // cascaded from the main window's corner, not every window on one spot
+  int open = 0;
+  for (const ChartWindow* other : findChildren<ChartWindow*>())
+    open += other != w && other->isVisible();
+  w->move(frameGeometry().topLeft() + QPoint(40 + 32 * (open % 10), 60 + 32 * (open % 10)));
   w->show();
   if (view == "bifurcation") map_->addDiagramWindow(w); // the map's trajectories are points on it
   return w;

@@ -267,6 +267,19 @@ private slots:
     QVERIFY(window_->openScene(QString::fromStdString(defaultScenePath("chaplygin_ball")))); // for the next
   }
 
+  // chart windows open cascaded, not on one spot
+  void chartWindowsOpenCascaded() {
+    nlohmann::json doc = loadScene(defaultScenePath("henon_heiles")).document;
+    doc["lyapunov"] = {{"time", 20}, {"output_period", 2}};
+    QVERIFY(window_->runDocument(doc));
+    ChartWindow* first = window_->openChart("lyapunov");
+    ChartWindow* second = window_->openChart("lyapunov");
+    QTRY_VERIFY_WITH_TIMEOUT(first->ready() && second->ready(), 60000);
+    QCOMPARE(second->pos() - first->pos(), QPoint(32, 32));
+    first->close();
+    second->close();
+  }
+
   // every chart is a job of the tool manager (issue: one path for every long computation): a surface
   // computation is listed with its progress, stops, continues and ends with the chart of an uninterrupted run
   void chartComputationsAreJobsOfTheToolManager() {
