@@ -43,11 +43,13 @@ ParameterForm::ParameterForm(const ParameterTable& table, QWidget* parent) : QWi
       editor = box;
     } else if (s.integer) {
       auto* box = new QSpinBox(this);
+      box->setKeyboardTracking(false); // a value is taken when committed, never half-typed
       box->setRange(static_cast<int>(std::max(s.min, -2e9)), static_cast<int>(std::min(s.max, 2e9)));
       connect(box, &QSpinBox::valueChanged, this, [this, i = editors_.size()] { touch(i); });
       editor = box;
     } else {
       auto* box = new NumberBox(this); // parameters such as accuracies span many decades
+      box->setKeyboardTracking(false); // "1e400" typed is not "1e4" taken on the way
       box->setRange(std::max(s.min, -1e12), std::min(s.max, 1e12));
       box->setSingleStep(
           s.defaultValue != 0 ? std::pow(10.0, std::floor(std::log10(std::abs(s.defaultValue)))) / 10 : 0.1);

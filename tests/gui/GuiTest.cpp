@@ -95,6 +95,15 @@ private slots:
     const QString said = refused.first().at(0).toString();
     QVERIFY2(said.contains("-5 must lie in [0, inf]") && said.endsWith("kept 2.5"), qPrintable(said));
     QVERIFY(form->problem("I1").isEmpty());
+    // validated when committed, not on each keystroke: typing 1e400 never takes the 1e4 met on the way
+    line->selectAll();
+    QTest::keyClicks(line, "1e400");
+    QCOMPARE(box->value(), kept);
+    QTest::keyClick(line, Qt::Key_Return);
+    QCOMPARE(box->value(), kept);
+    QCOMPARE(refused.size(), 2);
+    const QString again = refused.at(1).at(0).toString();
+    QVERIFY2(again.contains("1e400") && again.endsWith("kept 2.5"), qPrintable(again));
   }
 
   void editsBecomeTheSceneDocument() {

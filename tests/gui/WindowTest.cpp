@@ -34,6 +34,7 @@
 #include <QMessageBox>
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>
+#include <QPointer>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -276,8 +277,10 @@ private slots:
     ChartWindow* second = window_->openChart("lyapunov");
     QTRY_VERIFY_WITH_TIMEOUT(first->ready() && second->ready(), 60000);
     QCOMPARE(second->pos() - first->pos(), QPoint(32, 32));
+    QPointer<ChartWindow> a(first), b(second);
     first->close();
     second->close();
+    QTRY_VERIFY_WITH_TIMEOUT(!a && !b, 10000); // gone, with their jobs, before the next test
   }
 
   // every chart is a job of the tool manager (issue: one path for every long computation): a surface
