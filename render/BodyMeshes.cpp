@@ -2,9 +2,9 @@
 
 #include "dynamics/core/BodyShapes.h"
 #include "dynamics/core/Errors.h"
+#include "render/export/VtkXmlFiles.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <functional>
@@ -67,14 +67,13 @@ vtkSmartPointer<vtkPolyData> makeSurfaceMesh(const SupportSurface& surface) {
 }
 
 vtkSmartPointer<vtkPolyData> readBodyMesh(const BodyMeshFile& file) {
-  std::string ext = std::filesystem::path(file.path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
   vtkSmartPointer<vtkAlgorithm> reader;
-  if (ext == ".stl") {
+  const bool stlFile = hasExtension(file.path, ".stl");
+  if (stlFile) {
     auto stl = vtkSmartPointer<vtkSTLReader>::New();
     stl->SetFileName(file.path.c_str());
     reader = stl;
-  } else if (ext == ".obj") {
+  } else if (hasExtension(file.path, ".obj")) {
     auto obj = vtkSmartPointer<vtkOBJReader>::New();
     obj->SetFileName(file.path.c_str());
     reader = obj;
@@ -95,8 +94,8 @@ vtkSmartPointer<vtkPolyData> readBodyMesh(const BodyMeshFile& file) {
   normals->Update();
   vtkSmartPointer<vtkPolyData> out = normals->GetOutput();
   if (out->GetNumberOfPolys() == 0)
-    throw InputError(file.path + ": the mesh holds no triangles (not a readable " + ext.substr(1) +
-                     " file?)");
+    throw InputError(file.path + ": the mesh holds no triangles (not a readable " +
+                     (stlFile ? "STL" : "OBJ") + " file?)");
   return out;
 }
 

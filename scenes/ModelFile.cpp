@@ -338,10 +338,12 @@ std::mutex& notesMutex() {
   return m;
 }
 
+void noteOnStderr(const std::string& note) {
+  std::fputs(("rollviz: " + note + "\n").c_str(), stderr);
+}
+
 std::function<void(const std::string&)>& compilationNotes() {
-  static std::function<void(const std::string&)> notes = [](const std::string& note) {
-    std::fputs(("rollviz: " + note + "\n").c_str(), stderr);
-  };
+  static std::function<void(const std::string&)> notes = noteOnStderr;
   return notes;
 }
 
@@ -499,7 +501,7 @@ std::string modelFileOf(const ModelEntry& entry) {
 
 void setModelCompilationNotes(std::function<void(const std::string&)> notes) {
   const std::lock_guard lock(notesMutex());
-  compilationNotes() = std::move(notes);
+  compilationNotes() = notes ? std::move(notes) : noteOnStderr;
 }
 
 void setModelCompilation(ModelCompilation when) {

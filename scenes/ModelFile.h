@@ -50,7 +50,7 @@ enum class ModelCompilation { OnFirstUse, InBackground, Off };
 void setModelCompilation(ModelCompilation when);
 
 /// Where the notes of model compilation go (compiling, compiled in N s, why a model runs interpreted): stderr
-/// unless set (the GUI shows them). Called on the compiling thread.
+/// unless set (the GUI shows them); an empty function puts stderr back. Called on the compiling thread.
 void setModelCompilationNotes(std::function<void(const std::string&)> notes);
 
 /// A model file's "initial" (as a scene's: {"state": {...}} or {"map": [...]}), the start of a scene that

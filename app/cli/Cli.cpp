@@ -6,10 +6,9 @@
 #include "dynamics/tools/ToolRegistry.h"
 
 #include "render/context/HeadlessContext.h"
+#include "render/export/VtkXmlFiles.h"
 #include "scenes/ModuleLoader.h"
 
-#include <algorithm>
-#include <cctype>
 #include <cstdlib>
 #include <filesystem>
 #include <fmt/core.h>
@@ -38,11 +37,10 @@ CLI::Validator writesOneOf(const std::vector<std::string>& extensions) {
     list += (list.empty() ? "" : ", ") + e;
   return CLI::Validator(
       [extensions, list](std::string& path) -> std::string {
-        std::string ext = std::filesystem::path(path).extension().string();
-        std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
         for (const auto& e : extensions)
-          if (ext == e) return {};
-        return path + ": unsupported format '" + ext + "' (the extension names it; supported: " + list + ")";
+          if (hasExtension(path, e)) return {};
+        return path + ": unsupported format '" + std::filesystem::path(path).extension().string() +
+               "' (the extension names it; supported: " + list + ")";
       },
       "FILE (" + list + ")");
 }

@@ -75,8 +75,7 @@ int runGui(int argc, char** argv, const GuiOptions& options) {
       app.quit();
     });
   const int status = app.exec();
-  setModelCompilationNotes(
-      [](const std::string& note) { std::fprintf(stderr, "rollviz: %s\n", note.c_str()); });
+  setModelCompilationNotes({}); // stderr again: the window goes
   return status;
 }
 

@@ -24,8 +24,8 @@ FigureFormat figureFormat(const std::string& path, const std::string& what);
 /// `options` apply to PNG (a scale, a transparent background); a vector figure has the window's size. The
 /// window's GL context must be current (headless windows are; a GUI widget makes its own current first).
 /// InputError naming `what` for an unsupported extension, a path that cannot be written, or a vector format
-/// for a chart drawn as a picture of cells (a 2-D sweep: GL2PS cannot carry it); ComputationError when writing
-/// fails.
+/// for a chart drawn as a picture of cells (a 2-D sweep: GL2PS cannot carry it); ComputationError when
+/// writing fails.
 void writeFigure(vtkRenderWindow* window, const std::string& path, const std::string& what = "-o",
                  const SnapshotOptions& options = {});
 
