@@ -1,6 +1,7 @@
 #include "scenes/ModuleLoader.h"
 
 #include "dynamics/core/Errors.h"
+#include "scenes/BuiltinTools.h"
 #include "scenes/Module.h"
 #include "scenes/SceneLoader.h"
 
@@ -140,6 +141,7 @@ void loadModule(const std::string& given) {
 }
 
 void loadModules(const std::vector<std::string>& files, const ModuleWarning& warn) {
+  registerBuiltinTools(); // rollviz's own runnable tools first: a module's are checked against them
   static bool searched = false;
   if (!searched) {
     searched = true;

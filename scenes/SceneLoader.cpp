@@ -1,4 +1,5 @@
 #include "scenes/SceneLoader.h"
+#include "scenes/SectionTextKeys.h"
 
 #include "scenes/JsonFields.h"
 #include "scenes/ModelFile.h"
@@ -208,6 +209,7 @@ struct TextKey {
   const char* section;
   const char* misplaced;
   void (*read)(const json& j, const Where& w, Scene& scene);
+  const char* description = ""; ///< for the flag `--KEY` of a tool's generic command (SectionTextKeys.h)
 };
 const TextKey textKeys[] = {
     {"section", "poincare", "",
@@ -226,6 +228,14 @@ const TextKey textKeys[] = {
      }},
     {"to", "continuation", "belongs to the \"continuation\" section",
      [](const json& j, const Where& w, Scene& scene) { scene.continuationTo = number(j, w); }},
+    {"second_parameter", "bifurcation_curve", "belongs to the \"bifurcation_curve\" section",
+     // read where it is used (scenes/BuiltinTools.cpp), from the document; checked here
+     [](const json& j, const Where& w, Scene& scene) {
+       const std::string id = text(j, w);
+       if (scene.model->info().parameters.find(id) < 0)
+         w.fail("not a parameter of " + scene.model->info().id);
+     },
+     "the second parameter of the curve (the first is continuation.parameter)"},
     {"function", "spectrum", "",
      [](const json& j, const Where& w, Scene& scene) { scene.spectrum.function = text(j, w); }},
     {"x", "plot", "",
@@ -503,6 +513,13 @@ std::string scenesDirectory() {
 
 std::string defaultScenePath(const std::string& problemId) {
   return (std::filesystem::path(scenesDirectory()) / (problemId + ".json")).string();
+}
+
+std::vector<SectionTextKey> sectionTextKeys(const std::string& section) {
+  std::vector<SectionTextKey> keys;
+  for (const auto& t : textKeys)
+    if (section == t.section && *t.description) keys.push_back({t.key, t.description});
+  return keys;
 }
 
 } // namespace rv

@@ -37,9 +37,11 @@ ToolResult runTool(const ToolEntry& tool, const Scene& scene, const ToolControl&
   const ToolRunner* runner = findToolRunner(tool.id);
   if (!runner) throw InputError("tool '" + tool.id + "' cannot run on a scene by itself");
   ToolResult r = runner->run(scene, control);
+  // an output named in angle brackets ("<map coordinates>") stands for columns named by the scene: not
+  // checked
   if (!r.stopped)
     for (const auto& o : tool.outputs)
-      if (!r.fields.contains(o.name) &&
+      if (o.name.rfind('<', 0) != 0 && !r.fields.contains(o.name) &&
           std::find(r.table.names.begin(), r.table.names.end(), o.name) == r.table.names.end())
         throw ComputationError(fmt::format("tool '{}' did not produce its output '{}'", tool.id, o.name));
   return r;

@@ -91,14 +91,16 @@ struct ContinueArgs {
   MapArgs map;
   std::string param, output;
   double to = NAN, step = NAN;
-  bool json = false;
+  bool json = false, arclength = false;
 };
 
 void addContinueArgs(CLI::App* cmd, ContinueArgs& a) {
   addMapArgs(cmd, a.map);
   cmd->add_option("--param", a.param, "the model parameter to continue in (default: continuation.parameter)");
   cmd->add_option("--to", a.to, "finite value of the parameter (default: continuation.to)");
-  cmd->add_option("--step", a.step, "signed step of the parameter (default: continuation.step)");
+  cmd->add_option("--step", a.step,
+                  "signed step of the parameter; with --arclength the longest step along the family "
+                  "(default: continuation.step)");
   cmd->add_option("-o,--output", a.output, "CSV file (default: standard output)")
       ->check(writesOneOf({".csv"}));
   cmd->add_flag("--json", a.json, "print a JSON summary on standard output");
@@ -299,8 +301,11 @@ Command addFixedPointCommand(CLI::App* cmd) {
 Command addContinueCommand(CLI::App* cmd) {
   auto a = std::make_shared<ContinueArgs>();
   addContinueArgs(cmd, *a);
+  cmd->add_flag("--arclength", a->arclength,
+                "pseudo-arclength continuation, which passes folds (continuation.method = arclength)");
   return {
       cmd, [a] {
+        if (a->arclength) a->map.scene.sets.emplace_back("continuation.method=arclength");
         const auto s = setUp(a->map, true, continuationOverrides(*a));
         const ContinuationSettings c = s->continuation();
         const auto run = s->continuationRun();
@@ -338,12 +343,17 @@ Command addContinueCommand(CLI::App* cmd) {
           nlohmann::json ch = nlohmann::json::array();
           for (const auto& t : cont.changes())
             ch.push_back(changeJson(t));
-          fmt::print("{}\n",
-                     nlohmann::json{{"parameter", c.parameter},
-                                    {"points", cont.points().size()},
-                                    {"last", cont.points().empty() ? 0.0 : cont.points().back().parameter},
-                                    {"changes", ch}}
-                         .dump());
+          fmt::print(
+              "{}\n",
+              nlohmann::json{{"parameter", c.parameter},
+                             {"method", c.method == ContinuationMethod::Arclength ? "arclength" : "natural"},
+                             {"points", cont.points().size()},
+                             {"last", cont.points().empty() ? 0.0 : cont.points().back().parameter},
+                             {"changes", ch},
+                             {"end", cont.end()}}
+                  .dump());
+        } else if (c.method == ContinuationMethod::Arclength && done) {
+          fmt::print(changes, "the family ends: {}\n", cont.end());
         }
         return done ? 0 : 130;
       }};

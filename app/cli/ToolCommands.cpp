@@ -9,6 +9,7 @@
 #include "dynamics/io/AtomicFile.h"
 #include "dynamics/tools/Megno.h"
 #include "render/export/VtkXmlFiles.h"
+#include "scenes/SectionTextKeys.h"
 #include "scenes/ToolRunner.h"
 
 #include <cmath>
@@ -254,10 +255,14 @@ Command addRegisteredToolCommand(CLI::App* cmd, const ToolEntry& tool) {
   auto o = std::make_shared<Options>();
   addSceneArgs(cmd, o->scene);
   const ToolSection* section = findToolSection(tool.section);
-  if (section)
+  if (section) {
     for (const auto& p : section->table->specs())
       cmd->add_option("--" + p.id, o->settings[p.id],
                       p.description + " (default: the scene's " + tool.section + "." + p.id + ")");
+    for (const auto& t : sectionTextKeys(section->key))
+      cmd->add_option("--" + t.key, o->settings[t.key],
+                      t.description + " (default: the scene's " + tool.section + "." + t.key + ")");
+  }
   std::string fields;
   for (const auto& out : tool.outputs)
     fields += (fields.empty() ? "" : ", ") + out.name;

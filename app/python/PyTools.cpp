@@ -249,6 +249,7 @@ pyb::object continuation(Call& c) {
   d["types"] = types;
   d["changes"] = changes;
   d["failure"] = failure;
+  d["end"] = failure.empty() ? run->end() : failure; // why the family ends
   return d;
 }
 

@@ -44,6 +44,7 @@ BifurcationTreeResult bifurcationTree(
   BifurcationTreeResult& result = partial ? *partial : local;
   ContinuationSettings cs = s.continuation;
   cs.stopAtTypeChange = true;
+  cs.method = ContinuationMethod::Natural; // each family up to its doubling: the parameter goes one way
   cs.bifurcationAccuracy = s.bifurcationAccuracy;
   SectionSettings sec = section;
   double p0 = start, region = s.regionSize;

@@ -97,6 +97,21 @@ FixedPointType classifyFixedPoint(const std::vector<std::complex<double>>& m, do
   return T::Elliptic;
 }
 
+FixedPointResult fixedPointAt(const ReturnMap& map, const Eigen::VectorXd& x, const FixedPointSettings& s,
+                              const ToolControl& control) {
+  const long evaluationsBefore = map.evaluations();
+  const Linearization lin = map.linearize(x, s.derivatives, control);
+  FixedPointResult r;
+  r.point = map.alignTo(x, lin.image);
+  r.residual = map.difference(lin.image, x).norm();
+  r.jacobian = lin.jacobian;
+  r.multipliers = multipliersOf(r.jacobian);
+  r.type = classifyFixedPoint(r.multipliers, s.typeTolerance);
+  r.evaluations = map.evaluations() - evaluationsBefore;
+  r.path.push_back({x, r.residual});
+  return r;
+}
+
 FixedPointResult findFixedPoint(const ReturnMap& map, const Eigen::VectorXd& guess,
                                 const FixedPointSettings& s, const ToolControl& control,
                                 const std::function<void(const SearchPoint&)>& onPoint) {

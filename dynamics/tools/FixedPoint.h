@@ -76,6 +76,12 @@ FixedPointType classifyFixedPoint(const std::vector<std::complex<double>>& multi
 /// Eigenvalues of a square matrix, sorted by decreasing modulus (then by imaginary part).
 std::vector<std::complex<double>> multipliersOf(const Eigen::MatrixXd& jacobian);
 
+/// A point already solved for (by a corrector that has the parameters among its unknowns): its image, the
+/// multipliers and type at x as it is -- no Newton step, which at a fold would slide x along the direction
+/// where Map^n(x) - x is flat.
+FixedPointResult fixedPointAt(const ReturnMap& map, const Eigen::VectorXd& x,
+                              const FixedPointSettings& settings, const ToolControl& control = {});
+
 /// Searches a fixed point of `map` from `guess`. `onPoint` sees every point of the search path. Throws
 /// ComputationError when the search does not converge in maxIterations (or leaves the region of allowed
 /// motion), InputError for inconsistent settings, Stopped when asked to stop.

@@ -20,6 +20,7 @@ std::vector<ToolSection>& sections() {
       {"continuation", "Fixed point continuation", &continuationTable()},
       {"separatrix", "Separatrix", &separatrixTable()},
       {"bifurcation_tree", "Bifurcating tree", &bifurcationTreeTable()},
+      {"bifurcation_curve", "Bifurcation curve", &bifurcationCurveTable()},
       {"grid", "Surface |Map(x) - x| and region of allowed motion", &gridTable()},
       {"lyapunov", "Lyapunov exponents", &lyapunovTable()},
       {"megno", "MEGNO and FLI", &megnoTable()},
@@ -203,6 +204,31 @@ ToolRegistry& ToolRegistry::mutableGlobal() {
          .reference = "manual §2.3.7",
          .computation =
              "dynamics/tools/BifurcationTree.h (bifurcationTree); as a job dynamics/jobs/FixedPointTasks.h",
+         .alsoSections = {"continuation"}});
+    add({.id = "bifurcation_curve",
+         .title = "Bifurcation curve",
+         .parent = "continuation",
+         .description =
+             "the curve of a fold, period doubling or Neimark-Sacker point of the continued family in "
+             "the plane of continuation.parameter and bifurcation_curve.second_parameter (a chart "
+             "window)",
+         .section = "bifurcation_curve",
+         .command = "bifurcation-curve",
+         .commandHelp =
+             "continue the fixed point to its first fold, period doubling or Neimark-Sacker point and "
+             "follow that bifurcation in two parameters: the curve as CSV, where it meets others",
+         .chartView = "bifurcation_curve",
+         .outputs = {{"<first>, <second>", "CSV: a point of the curve in the parameter plane"},
+                     {"<map coordinates>", "CSV: the fixed point there"},
+                     {"kind", "the bifurcation followed"},
+                     {"parameters", "the two parameters' ids"},
+                     {"start", "the bifurcation the curve starts from: parameter values and point"},
+                     {"points", "how many points the curve has"},
+                     {"events", "where the curve meets another: what, parameter values, point, multipliers"},
+                     {"end", "how each way of the curve ended (the box, a closed curve, ...)"}},
+         .reference = "Kuznetsov, Elements of Applied Bifurcation Theory (2004) §10.3; Govaerts (2000) ch. 4",
+         .computation =
+             "dynamics/tools/BifurcationCurve.h (bifurcationCurve); runner scenes/BuiltinTools.cpp",
          .alsoSections = {"continuation"}});
     add({.id = "surface",
          .title = "Surface |Map(x) - x|",

@@ -89,7 +89,27 @@ const ParameterTable& fixedPointTable() {
 const ParameterTable& continuationTable() {
   const ContinuationSettings d;
   static const ParameterTable t{
-      {.id = "step", .label = "Step", .defaultValue = d.step, .description = "signed step of the parameter"},
+      {.id = "method",
+       .label = "Method",
+       .defaultValue = static_cast<double>(d.method),
+       .min = 0,
+       .max = 1,
+       .description = "natural: the parameter stepped (the manual's; stops where the family turns back); "
+                      "arclength: pseudo-arclength, the parameter one of the unknowns (passes folds)",
+       .integer = true,
+       .choices = {"natural", "arclength"}},
+      {.id = "step",
+       .label = "Step",
+       .defaultValue = d.step,
+       .description = "signed step of the parameter (arclength: the longest step along the family, its sign "
+                      "the parameter's first direction)"},
+      {.id = "points",
+       .label = "Maximal number of points",
+       .defaultValue = static_cast<double>(d.maxPoints),
+       .min = 2,
+       .max = 1e7,
+       .description = "arclength: the family ends after this many points (a closed family would not end)",
+       .integer = true},
       {.id = "extrapolation",
        .label = "Extrapolation factor",
        .defaultValue = d.extrapolation,
@@ -204,6 +224,66 @@ const ParameterTable& bifurcationTreeTable() {
   return t;
 }
 
+const ParameterTable& bifurcationCurveTable() {
+  const BifurcationCurveSettings d;
+  constexpr double none = 1e300; // an open side of the box
+  static const ParameterTable t{
+      {.id = "kind",
+       .label = "Bifurcation",
+       .defaultValue = static_cast<double>(d.kind),
+       .min = 0,
+       .max = 2,
+       .description =
+           "the curve followed: where a multiplier is +1 (fold), -1 (period doubling) or a complex pair "
+           "is on the unit circle (Neimark-Sacker); the start is the first such point of the "
+           "continuation",
+       .integer = true,
+       .choices = {"fold", "period_doubling", "neimark_sacker"}},
+      {.id = "step",
+       .label = "Step",
+       .defaultValue = d.step,
+       .min = 1e-300,
+       .max = 1e300,
+       .description = "the longest step along the curve in (point, first parameter, second parameter)"},
+      {.id = "points",
+       .label = "Maximal number of points",
+       .defaultValue = static_cast<double>(d.maxPoints),
+       .min = 1,
+       .max = 1e7,
+       .description = "each way from the start",
+       .integer = true},
+      {.id = "first_min",
+       .label = "Least first parameter",
+       .defaultValue = -none,
+       .description = "the box of the parameter plane the curve is followed in (1e300: open)"},
+      {.id = "first_max", .label = "Largest first parameter", .defaultValue = none, .description = "the box"},
+      {.id = "second_min",
+       .label = "Least second parameter",
+       .defaultValue = -none,
+       .description = "the box"},
+      {.id = "second_max",
+       .label = "Largest second parameter",
+       .defaultValue = none,
+       .description = "the box"},
+  };
+  return t;
+}
+
+BifurcationCurveSettings bifurcationCurveSettings(const ParameterValues& v,
+                                                  const FixedPointSettings& search) {
+  BifurcationCurveSettings c;
+  const std::string kind = v.choice("kind");
+  c.kind = kind == "fold"              ? CurveKind::Fold
+           : kind == "period_doubling" ? CurveKind::PeriodDoubling
+                                       : CurveKind::NeimarkSacker;
+  c.step = v["step"];
+  c.maxPoints = static_cast<long>(v["points"]);
+  c.firstMin = v["first_min"], c.firstMax = v["first_max"];
+  c.secondMin = v["second_min"], c.secondMax = v["second_max"];
+  c.search = search;
+  return c;
+}
+
 const ParameterTable& gridTable() {
   const GridSettings d;
   static const ParameterTable t{
@@ -282,7 +362,9 @@ FixedPointSettings fixedPointSettings(const ParameterValues& v) {
 
 ContinuationSettings continuationSettings(const ParameterValues& v, const FixedPointSettings& search) {
   ContinuationSettings c;
+  c.method = v.choice("method") == "arclength" ? ContinuationMethod::Arclength : ContinuationMethod::Natural;
   c.step = v["step"];
+  c.maxPoints = static_cast<long>(v["points"]);
   c.extrapolation = v["extrapolation"];
   c.stopAtTypeChange = v.choice("stop_at_type_change") == "yes";
   c.bifurcationAccuracy = v["bifurcation_accuracy"];

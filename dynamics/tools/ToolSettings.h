@@ -2,6 +2,7 @@
 // as parameter tables: scene sections ("fixedpoint", "continuation", "separatrix", "bifurcation_tree",
 // "grid"), `--set SECTION.ID=VALUE` and the GUI's fields all come from these declarations.
 #pragma once
+#include "dynamics/tools/BifurcationCurve.h"
 #include "dynamics/tools/BifurcationTree.h"
 #include "dynamics/tools/MapGrid.h"
 #include "dynamics/tools/Separatrix.h"
@@ -14,6 +15,9 @@ const ParameterTable& fixedPointTable();
 const ParameterTable& continuationTable();
 const ParameterTable& separatrixTable();
 const ParameterTable& bifurcationTreeTable();
+/// "bifurcation_curve": which curve, its steps and box (its second parameter is the section's text key
+/// "second_parameter", the first continuation.parameter).
+const ParameterTable& bifurcationCurveTable();
 const ParameterTable& gridTable();
 /// A sweep file's "options" (scenes/Sweep.h): time, statistic, orbit points, the order search... (one
 /// declaration, shown by `rollviz describe-tool sweep`).
@@ -24,6 +28,8 @@ FixedPointSettings fixedPointSettings(const ParameterValues& v);
 ContinuationSettings continuationSettings(const ParameterValues& v, const FixedPointSettings& search);
 SeparatrixSettings separatrixSettings(const ParameterValues& v, const FixedPointSettings& search);
 BifurcationTreeSettings bifurcationTreeSettings(const ParameterValues& v, const ContinuationSettings& c);
+/// The numeric part (the two parameters' ids come from the scene's strings).
+BifurcationCurveSettings bifurcationCurveSettings(const ParameterValues& v, const FixedPointSettings& search);
 /// The grid's threads, steps, section and the chart's ranges x_min ... y_max (a command's flags override
 /// them).
 GridSettings gridSettings(const ParameterValues& v);

@@ -450,6 +450,80 @@ class Cli(unittest.TestCase):
                                 "--param", "Q", "--to", "1"), "--param", "Q")
         self.assertFalse(os.path.exists(self.path("bad.csv")))
 
+    def test_continue_by_arclength_passes_the_henon_fold(self):
+        # x' = 1 - a x^2 + y, y' = b x: the family of x = 1 / (1 - b) at a = 0 turns back at the fold
+        # a = -(1 - b)^2 / 4 (b = 0.3: -0.1225), where natural continuation stops
+        henon = os.path.join(SRC, "scenes", "henon_map.json")
+        args = [henon, "--set", "a=0", "--guess", "1.4285714285714286,0.42857142857142855", "--param", "a",
+                "--to", "-0.5", "--step", "-0.01"]
+        natural = run("continue", *args, "-o", self.path("n.csv"))
+        self.assertEqual(natural.returncode, 1, natural.stderr)
+        self.assertIn("continuation.method = arclength", natural.stderr)
+        out = self.path("a.csv")
+        r = run("continue", *args, "--arclength", "--set", "continuation.points=200", "--json", "-o", out)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        j = json.loads(r.stdout)
+        self.assertEqual(j["method"], "arclength")
+        self.assertEqual(len(j["changes"]), 1)
+        fold = j["changes"][0]
+        self.assertEqual(fold["kind"], "fold")
+        self.assertAlmostEqual(fold["parameter"], -0.1225, delta=1e-9)
+        self.assertAlmostEqual(fold["point"][0], 2 / 0.7, delta=1e-6)
+        self.assertIn("200 points", j["end"])
+        rows = list(csv.DictReader(open(out)))
+        self.assertEqual(len(rows), 200)
+        for row in rows:  # every point a fixed point of its a, on both sides of the fold
+            a, x = float(row["a"]), float(row["x"])
+            self.assertAlmostEqual(a * x * x + 0.7 * x - 1, 0, delta=1e-9 * max(1, x * x))
+        self.assertGreater(max(float(row["x"]) for row in rows), 2 / 0.7 + 0.3)  # the other root
+        text = run("continue", *args, "--arclength", "--set", "continuation.points=200")
+        self.assertIn("fold at a = -0.1225", text.stderr)
+        self.assertIn("the family ends: 200 points", text.stderr)
+
+    def test_bifurcation_curve_of_the_henon_period_doubling(self):
+        # the doubling of the point born at the fold: a = 3 (1 - b)^2 / 4, x = 2 / (3 (1 - b)); along it the other
+        # multiplier is b, -1 at b = -1 (a 1:2 resonance)
+        henon = os.path.join(SRC, "scenes", "henon_map.json")
+        out = self.path("curve.csv")
+        args = [henon, "--set", "fixedpoint.guess=[0.63,0.19]", "--set", "continuation.parameter=a",
+                "--set", "continuation.to=0",
+                "--set", "continuation.step=-0.05", "--second_parameter", "b", "--kind", "period_doubling",
+                "--second_min", "-1.05", "--second_max", "0.5"]
+        r = run("bifurcation-curve", *args, "--json", "-o", out)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        j = json.loads(r.stdout)
+        self.assertEqual(j["kind"], "period doubling")
+        self.assertEqual(j["parameters"], ["a", "b"])
+        self.assertAlmostEqual(j["start"]["a"], 0.3675, delta=1e-9)
+        rows = list(csv.DictReader(open(out)))
+        self.assertEqual(len(rows), j["points"])
+        self.assertEqual(list(rows[0].keys()), ["a", "b", "x", "y"])
+        for row in rows:
+            a, b = float(row["a"]), float(row["b"])
+            self.assertAlmostEqual(a, 0.75 * (1 - b) ** 2, delta=1e-8)
+            self.assertAlmostEqual(float(row["x"]), 2 / (3 * (1 - b)), delta=1e-8)
+        self.assertEqual(sorted([float(rows[0]["b"]), float(rows[-1]["b"])]), [-1.05, 0.5])
+        self.assertEqual(len(j["events"]), 1)
+        self.assertIn("1:2 resonance", j["events"][0]["what"])
+        self.assertAlmostEqual(j["events"][0]["b"], -1, delta=1e-8)
+        # the chart of the curve (the same settings as scene keys), and the inputs it refuses
+        sets = ["fixedpoint.guess=[0.63,0.19]", "continuation.parameter=a", "continuation.to=0",
+                "continuation.step=-0.05", "bifurcation_curve.second_parameter=b",
+                "bifurcation_curve.kind=period_doubling", "bifurcation_curve.second_min=-1.05",
+                "bifurcation_curve.second_max=0.5"]
+        png = self.path("curve.png")
+        c = run("chart", henon, "--view", "bifurcation_curve", *sum([["--set", x] for x in sets], []), "-o", png)
+        self.assertEqual(c.returncode, 0, c.stderr)
+        self.assertGreater(os.path.getsize(png), 1000)
+        base = [henon, "--set", "fixedpoint.guess=[0.63,0.19]", "--set", "continuation.parameter=a",
+                "--set", "continuation.to=0",
+                "--set", "continuation.step=-0.05"]
+        self.assertBadInput(run("bifurcation-curve", *base), "bifurcation_curve.second_parameter")
+        self.assertBadInput(run("bifurcation-curve", *base, "--second_parameter", "c"), "not a parameter")
+        none = run("bifurcation-curve", *base, "--second_parameter", "b", "--kind", "neimark_sacker")
+        self.assertEqual(none.returncode, 1, none.stderr)
+        self.assertIn("finds no Neimark-Sacker point", none.stderr)
+
     def test_bifurcation_tree_of_the_area_preserving_henon_map(self):
         r = run("bifurcation-tree", os.path.join(SRC, "scenes", "henon_map.json"), "--set", "b=-1",
                 "--set", "a=2", "--guess", "0.4,-0.4", "--param", "a", "--to", "4.2", "--step", "0.05",

@@ -4,6 +4,7 @@
 #include "dynamics/tools/FixedPoint.h"
 #include "dynamics/core/Errors.h"
 #include "dynamics/integrators/Everhart.h"
+#include "dynamics/tools/BifurcationCurve.h"
 #include "dynamics/tools/BifurcationTree.h"
 #include "tests/dynamics/TestSupport.h"
 
@@ -191,6 +192,195 @@ TEST(Continuation, StopsAtTypeChangeAndRejectsAWrongDirection) {
   EXPECT_NEAR(c.points().back().parameter, 4.1, 1e-12);
   s.step = -0.1;
   EXPECT_THROW(Continuation(at, everhart(), order(1), 3.0, Eigen::Vector2d(3.1, 0), s), InputError);
+}
+
+// The Henon map x' = 1 - a x^2 + y, y' = b x has its fixed points on a x^2 + (1 - b) x - 1 = 0, y = b x: two
+// for a > -(1 - b)^2 / 4, born in a fold there at x = 2 / (1 - b) (multipliers 1 and -b); the one that exists
+// at a = 0 doubles at a = 3 (1 - b)^2 / 4.
+ContinuationSettings henonFamily(double to, double step, ContinuationMethod method) {
+  ContinuationSettings s;
+  s.parameter = "a";
+  s.to = to;
+  s.step = step;
+  s.method = method;
+  return s;
+}
+Continuation::ModelAt henonAt(double b) {
+  return [b](double a) { return test::makeModel("henon_map", {{"a", a}, {"b", b}}); };
+}
+
+TEST(Continuation, ArclengthPassesTheHenonFoldAndLocatesIt) {
+  for (const double b : {0.3, -1.0}) {
+    SCOPED_TRACE(b);
+    const double fold = -(1 - b) * (1 - b) / 4;
+    ContinuationSettings s = henonFamily(-2, -0.05, ContinuationMethod::Arclength);
+    s.maxPoints = 120;
+    const double x0 = 1 / (1 - b); // the point at a = 0
+    Continuation c(henonAt(b), everhart(), order(1), 0.0, Eigen::Vector2d(x0, b * x0), s);
+    ASSERT_TRUE(c.run({}));
+    // every point is a fixed point of its a; the family goes down to the fold, then up on the other root
+    double lowest = 0;
+    bool turned = false;
+    for (std::size_t i = 0; i < c.points().size(); ++i) {
+      const auto& p = c.points()[i];
+      const double a = p.parameter, x = p.fixedPoint.point[0];
+      EXPECT_NEAR(a * x * x + (1 - b) * x - 1, 0, 1e-9 * std::max(1.0, x * x)) << i;
+      EXPECT_NEAR(p.fixedPoint.point[1], b * x, 1e-9 * std::max(1.0, std::abs(x))) << i;
+      EXPECT_GE(a, fold - 1e-12) << i;
+      if (i > 0 && a > c.points()[i - 1].parameter) turned = true;
+      if (turned) {
+        EXPECT_GT(x, 2 / (1 - b)) << "the other root after the fold, at " << i;
+      }
+      lowest = std::min(lowest, a);
+    }
+    EXPECT_TRUE(turned);
+    EXPECT_LT(lowest, fold + 0.01);
+    ASSERT_EQ(c.changes().size(), 1u);
+    const TypeChange& t = c.changes()[0];
+    EXPECT_EQ(t.kind, TypeChange::Kind::Fold);
+    EXPECT_NEAR(t.parameter, fold, 1e-9);
+    EXPECT_NEAR(t.at.fixedPoint.point[0], 2 / (1 - b), 1e-6);
+    // a multiplier +1 there: the other is -b (both +1 at b = -1)
+    const auto& m = t.at.fixedPoint.multipliers;
+    const double nearOne = std::min(std::abs(m[0] - 1.0), std::abs(m[1] - 1.0));
+    EXPECT_LT(nearOne, 1e-4);
+    EXPECT_NEAR((m[0] * m[1]).real(), -b, 1e-9);
+    EXPECT_EQ(describe(t, "a").substr(0, 10), "fold at a ");
+    EXPECT_NE(c.end().find("120 points"), std::string::npos) << c.end();
+    // b = 0.3: a saddle meets a stable node; b = -1 (area-preserving): a saddle meets an elliptic point
+    EXPECT_EQ(t.from, b > 0 ? FixedPointType::StableNode : FixedPointType::Elliptic);
+    EXPECT_EQ(t.to, FixedPointType::Hyperbolic);
+  }
+}
+
+TEST(Continuation, NaturalStopsAtTheHenonFoldWhereArclengthGoesOn) {
+  const double b = 0.3, x0 = 1 / (1 - b);
+  Continuation natural(henonAt(b), everhart(), order(1), 0.0, Eigen::Vector2d(x0, b * x0),
+                       henonFamily(-0.5, -0.01, ContinuationMethod::Natural));
+  EXPECT_THROW(natural.run({}), ComputationError);
+  EXPECT_LT(natural.points().back().parameter, -0.12);
+  EXPECT_GT(natural.points().back().parameter, -0.1225 - 1e-8);
+}
+
+TEST(Continuation, BothMethodsLocateTheHenonPeriodDoubling) {
+  for (const double b : {0.3, -1.0}) {
+    for (const auto method : {ContinuationMethod::Natural, ContinuationMethod::Arclength}) {
+      SCOPED_TRACE(b);
+      const double x0 = 1 / (1 - b);
+      Continuation c(henonAt(b), everhart(), order(1), 0.0, Eigen::Vector2d(x0, b * x0),
+                     henonFamily(3.5, 0.05, method));
+      ASSERT_TRUE(c.run({}));
+      ASSERT_EQ(c.changes().size(), 1u);
+      EXPECT_EQ(c.changes()[0].kind, TypeChange::Kind::MultiplierMinusOne);
+      EXPECT_NEAR(c.changes()[0].parameter, 3 * (1 - b) * (1 - b) / 4, 1e-9);
+      EXPECT_NEAR(c.points().back().parameter, 3.5, 1e-15);
+      EXPECT_NE(c.end().find("reached a = 3.5"), std::string::npos) << c.end();
+    }
+  }
+}
+
+TEST(Continuation, ArclengthReachesTheFiniteValueAlongAStraightFamily) {
+  // the standard map's centre theta = pi, p = 0 for every K: a straight family; steps of at most 0.2
+  const Continuation::ModelAt at = [](double K) { return test::makeModel("standard_map", {{"K", K}}); };
+  ContinuationSettings s;
+  s.parameter = "K";
+  s.to = 3;
+  s.step = 0.2;
+  s.method = ContinuationMethod::Arclength;
+  Continuation c(at, everhart(), order(1), 1.0, Eigen::Vector2d(3.1, 0.01), s);
+  ASSERT_TRUE(c.run({}));
+  for (const auto& p : c.points()) {
+    EXPECT_NEAR(p.fixedPoint.point[0], pi, 1e-10);
+    EXPECT_NEAR((p.fixedPoint.multipliers[0] + p.fixedPoint.multipliers[1]).real(), 2 - p.parameter, 1e-9);
+  }
+  EXPECT_NEAR(c.points().back().parameter, 3, 1e-15);
+  EXPECT_GE(c.points().size(), 11u);
+  s.maxPoints = 1;
+  EXPECT_THROW(Continuation(at, everhart(), order(1), 1.0, Eigen::Vector2d(3.1, 0.01), s), InputError);
+}
+
+TEST(Continuation, ArclengthEndsWhereTheFamilyTurnsBackToTheStartValue) {
+  // b = 0.3 from the point x = 2 at a = -0.1 down toward a = -0.5: the family turns at the fold a = -0.1225
+  // and comes back to a = -0.1 on the other root, x = 5, where it ends
+  const double b = 0.3;
+  Continuation c(henonAt(b), everhart(), order(1), -0.1, Eigen::Vector2d(2, 2 * b),
+                 henonFamily(-0.5, -0.005, ContinuationMethod::Arclength));
+  ASSERT_TRUE(c.run({}));
+  EXPECT_NEAR(c.points().back().parameter, -0.1, 1e-15);
+  EXPECT_NEAR(c.points().back().fixedPoint.point[0], 5, 1e-10);
+  EXPECT_NE(c.end().find("returned to the start value a = -0.1"), std::string::npos) << c.end();
+  ASSERT_EQ(c.changes().size(), 1u);
+  EXPECT_EQ(c.changes()[0].kind, TypeChange::Kind::Fold);
+}
+
+// The Henon map's fold and period-doubling curves in the (a, b) plane: a = -(1 - b)^2 / 4 with the point
+// x = 2 / (1 - b), and a = 3 (1 - b)^2 / 4 with x = 2 / (3 (1 - b)); along the fold curve the other
+// multiplier is -b, along the doubling curve b, so at b = -1 (area-preserving) both meet a second multiplier
+// (+1 and -1: the 1:1 and 1:2 resonances).
+TEST(BifurcationCurve, HenonFoldAndPeriodDoublingCurvesFollowTheirFormulas) {
+  const ModelAt2 at = [](double a, double b) { return test::makeModel("henon_map", {{"a", a}, {"b", b}}); };
+  for (const auto kind : {CurveKind::Fold, CurveKind::PeriodDoubling}) {
+    SCOPED_TRACE(toString(kind));
+    const bool fold = kind == CurveKind::Fold;
+    const auto aOf = [&](double b) { return (fold ? -0.25 : 0.75) * (1 - b) * (1 - b); };
+    const auto xOf = [&](double b) { return (fold ? 2.0 : 2.0 / 3) / (1 - b); };
+    BifurcationCurveSettings s;
+    s.kind = kind;
+    s.first = "a", s.second = "b";
+    s.step = 0.05;
+    s.secondMin = -1.1, s.secondMax = 0.6;
+    const double b0 = 0.3;
+    // a start slightly off the curve is corrected onto it
+    const Eigen::Vector2d guess(xOf(b0) + 0.01, b0 * xOf(b0));
+    const BifurcationCurveResult r =
+        bifurcationCurve(at, everhart(), order(1), aOf(b0) + 0.001, b0, guess, s);
+    ASSERT_GT(r.points.size(), 30u);
+    for (const auto& p : r.points) {
+      EXPECT_NEAR(p.first, aOf(p.second), 1e-8) << p.second;
+      EXPECT_NEAR(p.fixedPoint.point[0], xOf(p.second), 1e-8) << p.second;
+      EXPECT_NEAR(p.fixedPoint.point[1], p.second * xOf(p.second), 1e-8) << p.second;
+    }
+    // from one side of the box to the other, in order along the curve
+    EXPECT_NEAR(std::min(r.points.front().second, r.points.back().second), -1.1, 1e-12);
+    EXPECT_NEAR(std::max(r.points.front().second, r.points.back().second), 0.6, 1e-12);
+    EXPECT_NE(r.end.find("b = 0.6 reached"), std::string::npos) << r.end;
+    EXPECT_NE(r.end.find("b = -1.1 reached"), std::string::npos) << r.end;
+    for (std::size_t i = 1; i < r.points.size(); ++i)
+      EXPECT_LT(std::abs(r.points[i].second - r.points[i - 1].second), 0.05 + 1e-12);
+    // the second multiplier reaches +1 (fold) or -1 (doubling) at b = -1
+    ASSERT_EQ(r.events.size(), 1u);
+    const CurveEvent& e = r.events[0];
+    EXPECT_NE(e.what.find(fold ? "second multiplier +1" : "second multiplier -1"), std::string::npos)
+        << e.what;
+    EXPECT_NEAR(e.at.second, -1, 1e-8);
+    EXPECT_NEAR(e.at.first, aOf(-1), 1e-8);
+  }
+}
+
+TEST(BifurcationCurve, RefusesAStartOffAnyCurveAndBadSettings) {
+  const ModelAt2 at = [](double a, double b) { return test::makeModel("henon_map", {{"a", a}, {"b", b}}); };
+  BifurcationCurveSettings s;
+  s.first = "a", s.second = "b";
+  s.kind = CurveKind::PeriodDoubling;
+  // the Henon map's Jacobian has det = -b: at b = 0.3 no pair of multipliers has a product of 1, so there is
+  // no Neimark-Sacker curve to start on
+  s.kind = CurveKind::NeimarkSacker;
+  try {
+    bifurcationCurve(at, everhart(), order(1), 1.4, 0.3, Eigen::Vector2d(0.63, 0.19), s);
+    ADD_FAILURE() << "a Neimark-Sacker curve of the Henon map at b = 0.3";
+  } catch (const ComputationError& e) {
+    EXPECT_NE(std::string(e.what()).find("no Neimark-Sacker curve through a = 1.4, b = 0.3"),
+              std::string::npos)
+        << e.what();
+  }
+  s.kind = CurveKind::PeriodDoubling;
+  s.second = "a";
+  EXPECT_THROW(bifurcationCurve(at, everhart(), order(1), 0.3675, 0.3, Eigen::Vector2d(0.95, 0.29), s),
+               InputError);
+  s.second = "b";
+  s.step = 0;
+  EXPECT_THROW(bifurcationCurve(at, everhart(), order(1), 0.3675, 0.3, Eigen::Vector2d(0.95, 0.29), s),
+               InputError);
 }
 
 } // namespace

@@ -286,6 +286,24 @@ def test_every_tool_runs_from_python():
     assert tree.doublings and abs(tree.doublings[0].parameter - 4) < 1e-6
 
 
+def test_arclength_continuation_and_a_bifurcation_curve_from_python():
+    """The Henon map's fold, passed by arclength; its period-doubling curve a = 3 (1 - b)^2 / 4 in (a, b)."""
+    hm = rollviz.Scene.load(scene_path("henon_map.json"), a=0)
+    x0 = 1 / 0.7
+    c = hm.continuation(guess=[x0, 0.3 * x0], parameter="a", to=-0.5, step=-0.01, method="arclength", points=250)
+    assert [ch["kind"] for ch in c.changes] == ["fold"]
+    assert abs(c.changes[0]["parameter"] + 0.1225) < 1e-9
+    assert "250 points" in c.end and c.parameter_values.size == 250
+    hm = rollviz.Scene.load(scene_path("henon_map.json"))
+    # a plain keyword is the tool's own setting first (step, points), then its parents' (parameter, to, guess)
+    r = hm.bifurcation_curve(guess=[0.63, 0.19], parameter="a", to=0, second_parameter="b", kind="period_doubling",
+                             second_min=-0.5, second_max=0.5, **{"continuation.step": -0.05})
+    assert r["kind"] == "period doubling" and r["parameters"] == ["a", "b"]
+    assert r["a"].size == r["points"] > 10
+    assert np.max(np.abs(r["a"] - 0.75 * (1 - r["b"]) ** 2)) < 1e-8
+    assert np.max(np.abs(r["x"] - 2 / (3 * (1 - r["b"])))) < 1e-8
+
+
 def test_a_model_file_from_python_equals_the_cli(tmp_path, monkeypatch):
     # interpreted here (the compiled path has its own tests): the same numbers as `rollviz integrate` on the file
     monkeypatch.setenv("ROLLVIZ_COMPILE_MODELS", "0")

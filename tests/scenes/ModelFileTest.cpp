@@ -7,6 +7,7 @@
 #include "dynamics/core/Errors.h"
 #include "dynamics/expr/Expression.h"
 #include "dynamics/integrators/Integrator.h"
+#include "dynamics/tools/Continuation.h"
 #include "dynamics/tools/FixedPoint.h"
 #include "dynamics/tools/Lyapunov.h"
 #include "scenes/ModelCompiler.h"
@@ -663,6 +664,52 @@ TEST(ModelFile, AForcedFlowGetsItsTimeAndAStroboscopicSection) {
   EXPECT_NEAR(y[0], amplitude, 1e-10);
   EXPECT_NEAR(y[1], 0, 1e-10);
   EXPECT_NEAR(y[2], T, 1e-12);
+}
+
+} // namespace
+} // namespace rv
+
+namespace rv {
+namespace {
+
+// The delayed logistic map x' = r x (1 - y), y' = x (a map written as a model file): its fixed point
+// x = y = 1 - 1/r has D = [[1, 1 - r], [1, 0]], det D = r - 1, trace 1 -- a focus for r > 5/4 whose pair of
+// multipliers crosses the unit circle at r = 2 (Neimark-Sacker; Kuznetsov 2004, §4.6).
+TEST(ModelFile, ContinuationLocatesTheNeimarkSackerPointOfTheDelayedLogisticMap) {
+  const ModelEntry& e = modelEntryFromJson(nlohmann::json::parse(R"json({
+    "id": "delayed_logistic", "title": "delayed logistic map", "kind": "map",
+    "parameters": { "r": { "default": 1.5, "min": 0 } },
+    "state": ["x", "y"],
+    "equations": { "x": "r*x*(1 - y)", "y": "x" },
+    "map": { "coordinates": ["x", "y"], "state": { "x": "x", "y": "y" } },
+    "initial": { "map": [0.3, 0.3] }
+  })json"),
+                                           "delayed_logistic.json");
+  const Continuation::ModelAt at = [&e](double r) {
+    ParameterValues p(e.info->parameters);
+    p.set("r", r);
+    return e.create(p);
+  };
+  for (const auto method : {ContinuationMethod::Natural, ContinuationMethod::Arclength}) {
+    ContinuationSettings s;
+    s.parameter = "r";
+    s.to = 2.3;
+    s.step = 0.05;
+    s.method = method;
+    SectionSettings section;
+    Continuation c(
+        at, [] { return verner(1e-13); }, section, 1.5, Eigen::Vector2d(0.3, 0.3), s);
+    ASSERT_TRUE(c.run({}));
+    for (const auto& p : c.points())
+      EXPECT_NEAR(p.fixedPoint.point[0], 1 - 1 / p.parameter, 1e-10);
+    ASSERT_EQ(c.changes().size(), 1u);
+    const TypeChange& t = c.changes()[0];
+    EXPECT_EQ(t.kind, TypeChange::Kind::NeimarkSacker);
+    EXPECT_EQ(t.from, FixedPointType::StableFocus);
+    EXPECT_EQ(t.to, FixedPointType::UnstableFocus);
+    EXPECT_NEAR(t.parameter, 2, 1e-9);
+    EXPECT_NEAR(std::abs(t.at.fixedPoint.multipliers[0]), 1, 1e-8);
+  }
 }
 
 } // namespace

@@ -202,7 +202,8 @@ std::string otherValue(const ParameterSpec& p) {
   if (!p.choices.empty())
     return "\"" + p.choices[(static_cast<std::size_t>(p.defaultValue) + 1) % p.choices.size()] + "\"";
   double v = p.defaultValue + 1;
-  if (v > p.max || v == p.defaultValue) v = p.defaultValue > 0 ? p.defaultValue / 2 : p.defaultValue - 1;
+  // (a default of +-1e300, an open side, is not moved by adding 1: halve it)
+  if (v > p.max || v == p.defaultValue) v = p.defaultValue != 0 ? p.defaultValue / 2 : p.defaultValue - 1;
   if (p.integer) v = std::round(v);
   return nlohmann::json(v).dump();
 }

@@ -1,0 +1,155 @@
+// BuiltinTools.cpp -- the runners of rollviz's own tools that run through scenes/ToolRunner.h, registered in
+// one place: every front end (CLI command, Python method, GUI Tools tab and chart window, sweep quantities,
+// describe-tool) is derived from the entry and its runner, as for a module's tools.
+#include "scenes/BuiltinTools.h"
+
+#include "dynamics/core/Errors.h"
+#include "dynamics/core/Format.h"
+#include "render/charts/ToolCharts.h"
+#include "scenes/SceneTools.h"
+#include "scenes/ToolRunner.h"
+
+#include <mutex>
+
+namespace rv {
+
+namespace {
+
+bool startsCurve(const TypeChange& change, CurveKind kind) {
+  switch (kind) {
+  case CurveKind::Fold:
+    return change.kind == TypeChange::Kind::Fold || change.kind == TypeChange::Kind::MultiplierPlusOne;
+  case CurveKind::PeriodDoubling:
+    return change.kind == TypeChange::Kind::MultiplierMinusOne;
+  case CurveKind::NeimarkSacker:
+    return change.kind == TypeChange::Kind::NeimarkSacker;
+  }
+  return false;
+}
+
+nlohmann::json multipliersJson(const std::vector<std::complex<double>>& m) {
+  nlohmann::json j = nlohmann::json::array();
+  for (auto z : m)
+    j.push_back({z.real(), z.imag()});
+  return j;
+}
+
+std::vector<double> toVector(const Eigen::VectorXd& x) {
+  return {x.data(), x.data() + x.size()};
+}
+
+// The curve of the first fold / period doubling / Neimark-Sacker point of the scene's continuation, in the
+// plane of continuation.parameter and bifurcation_curve.second_parameter.
+ToolResult runBifurcationCurve(const Scene& scene, const ToolControl& control) {
+  const SceneMap s(scene);
+  const ContinuationSettings c = s.continuation();
+  BifurcationCurveSettings cs = bifurcationCurveSettings(scene.tool("bifurcation_curve"), s.search());
+  cs.first = c.parameter;
+  cs.eventAccuracy = c.bifurcationAccuracy;
+  const auto& doc = scene.document;
+  if (doc.contains("bifurcation_curve") && doc["bifurcation_curve"].contains("second_parameter"))
+    cs.second = doc["bifurcation_curve"]["second_parameter"].get<std::string>();
+  if (cs.second.empty())
+    throw InputError("bifurcation_curve.second_parameter: give the curve's second parameter (the first is "
+                     "continuation.parameter, " +
+                     c.parameter + ")");
+  if (cs.second == cs.first)
+    throw InputError("bifurcation_curve.second_parameter: " + cs.second +
+                     " is the continued parameter already; give another");
+
+  // the start: the first such bifurcation along the continuation
+  ToolResult result;
+  const auto continuation = s.continuationRun();
+  std::string failure;
+  try {
+    if (!continuation->run(control)) {
+      result.stopped = true;
+      return result;
+    }
+  } catch (const ComputationError& e) {
+    failure = e.what(); // a family that ends may still have passed the bifurcation
+  }
+  const TypeChange* found = nullptr;
+  for (const auto& t : continuation->changes())
+    if (!found && startsCurve(t, cs.kind)) found = &t;
+  if (!found) {
+    std::string seen;
+    for (const auto& t : continuation->changes())
+      seen += (seen.empty() ? "" : "; ") + describe(t, c.parameter);
+    throw ComputationError(format("bifurcation_curve: the continuation in %s finds no %s point%s%s%s",
+                                  c.parameter.c_str(), toString(cs.kind),
+                                  seen.empty() ? "" : (" (it finds: " + seen + ")").c_str(),
+                                  failure.empty() ? "" : "; it ends: ", failure.c_str()));
+  }
+
+  const RunSpec& spec = s.spec();
+  const ModelAt2 modelAt = [entry = spec.model, values = spec.modelParameters, first = cs.first,
+                            second = cs.second](double p, double q) {
+    ParameterValues v = values;
+    v.set(first, p, "bifurcation curve in " + first);
+    v.set(second, q, "bifurcation curve in " + second);
+    return entry->create(v);
+  };
+  const double q0 = spec.modelParameters[cs.second];
+  BifurcationCurveResult r;
+  try {
+    bifurcationCurve(modelAt, s.integrators(), s.section(), found->parameter, q0, found->at.fixedPoint.point,
+                     cs, control, {}, &r);
+  } catch (const Stopped&) {
+    result.stopped = true;
+  }
+
+  const ReturnMap map = s.map();
+  result.table.names = {cs.first, cs.second};
+  for (const auto& n : map.coordinateNames())
+    result.table.names.push_back(n);
+  for (const auto& p : r.points) {
+    std::vector<double> row{p.first, p.second};
+    for (double x : toVector(p.fixedPoint.point))
+      row.push_back(x);
+    result.table.addRow(row);
+  }
+  nlohmann::json events = nlohmann::json::array();
+  for (const auto& e : r.events)
+    events.push_back({{"what", e.what},
+                      {cs.first, e.at.first},
+                      {cs.second, e.at.second},
+                      {"point", toVector(e.at.fixedPoint.point)},
+                      {"multipliers", multipliersJson(e.at.fixedPoint.multipliers)}});
+  result.fields = {{"kind", toString(cs.kind)},
+                   {"parameters", {cs.first, cs.second}},
+                   {"start",
+                    {{cs.first, found->parameter},
+                     {cs.second, q0},
+                     {"point", toVector(found->at.fixedPoint.point)},
+                     {"found", describe(*found, c.parameter)}}},
+                   {"points", r.points.size()},
+                   {"events", events},
+                   {"end", r.end}};
+  return result;
+}
+
+// the curve in its parameter plane, its meeting points marked
+std::unique_ptr<Chart> bifurcationCurveChart(const Scene&, const ToolResult& r) {
+  const auto& t = r.table;
+  if (t.names.size() < 2) throw ComputationError("bifurcation_curve: no curve to draw");
+  auto chart = std::make_unique<PoincareChart>(t.names[0], t.names[1]);
+  std::vector<std::array<double, 2>> marks;
+  for (const auto& e : r.fields.value("events", nlohmann::json::array()))
+    marks.push_back({e[t.names[0]].get<double>(), e[t.names[1]].get<double>()});
+  drawCurves(*chart, t.values[0], {t.values[1]}, marks);
+  chart->setTitle(format("%s curve in (%s, %s)", r.fields.value("kind", std::string()).c_str(),
+                         t.names[0].c_str(), t.names[1].c_str()));
+  return chart;
+}
+
+} // namespace
+
+void registerBuiltinTools() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    addToolRunner("bifurcation_curve", {runBifurcationCurve, bifurcationCurveChart});
+  });
+}
+
+} // namespace rv
