@@ -91,7 +91,7 @@ struct ContinueArgs {
   MapArgs map;
   std::string param, output;
   double to = NAN, step = NAN;
-  bool json = false, arclength = false;
+  bool json = false, arclength = false, doubled = false;
 };
 
 void addContinueArgs(CLI::App* cmd, ContinueArgs& a) {
@@ -303,9 +303,14 @@ Command addContinueCommand(CLI::App* cmd) {
   addContinueArgs(cmd, *a);
   cmd->add_flag("--arclength", a->arclength,
                 "pseudo-arclength continuation, which passes folds (continuation.method = arclength)");
+  cmd->add_flag(
+      "--doubled", a->doubled,
+      "branch switching: write the family of doubled order born at the first period doubling instead, "
+      "continued to the end of [start, --to] on its side (continuation.switch = 1)");
   return {
       cmd, [a] {
         if (a->arclength) a->map.scene.sets.emplace_back("continuation.method=arclength");
+        if (a->doubled) a->map.scene.sets.emplace_back("continuation.switch=1");
         const auto s = setUp(a->map, true, continuationOverrides(*a));
         const ContinuationSettings c = s->continuation();
         const auto run = s->continuationRun();
@@ -321,9 +326,14 @@ Command addContinueCommand(CLI::App* cmd) {
           done = cont.run(
               interruptibleControl(progress),
               [&](const ContinuationPoint& p) {
-                if (!headed)
+                if (!headed) {
                   std::fprintf(out.get(), "%s\n",
                                continuationHeader(c.parameter, map, p.fixedPoint.multipliers.size()).c_str());
+                  if (cont.doubled() && !a->json)
+                    fmt::print(changes,
+                               "the family of order {} born at the period doubling starts at {} = {:.12g}\n",
+                               2 * s->section().order, c.parameter, p.parameter);
+                }
                 headed = true;
                 printContinuationPoint(out.get(), p);
               },
@@ -331,7 +341,7 @@ Command addContinueCommand(CLI::App* cmd) {
                 if (!a->json) fmt::print(changes, "{}\n", describe(t, c.parameter));
               });
         } catch (const ComputationError& e) {
-          if (cont.points().empty()) throw;
+          if (cont.points().empty() || (c.switchAt > 0 && !cont.doubled())) throw;
           failure = e.what(); // the family up to here is a result: keep it, and say why it ends
         }
         out.commit();
@@ -339,21 +349,29 @@ Command addContinueCommand(CLI::App* cmd) {
           fmt::print(stderr, "rollviz: failed: {}\n", failure);
           return 1;
         }
-        if (a->json) {
+        const auto summary = [&](const Continuation& family) {
           nlohmann::json ch = nlohmann::json::array();
-          for (const auto& t : cont.changes())
+          for (const auto& t : family.changes())
             ch.push_back(changeJson(t));
-          fmt::print(
-              "{}\n",
-              nlohmann::json{{"parameter", c.parameter},
-                             {"method", c.method == ContinuationMethod::Arclength ? "arclength" : "natural"},
-                             {"points", cont.points().size()},
-                             {"last", cont.points().empty() ? 0.0 : cont.points().back().parameter},
-                             {"changes", ch},
-                             {"end", cont.end()}}
-                  .dump());
-        } else if (c.method == ContinuationMethod::Arclength && done) {
-          fmt::print(changes, "the family ends: {}\n", cont.end());
+          return nlohmann::json{
+              {"parameter", c.parameter},
+              {"method", c.method == ContinuationMethod::Arclength ? "arclength" : "natural"},
+              {"points", family.points().size()},
+              {"last", family.points().empty() ? 0.0 : family.points().back().parameter},
+              {"changes", ch},
+              {"end", family.end()}};
+        };
+        const Continuation& result = cont.doubled() ? *cont.doubled() : cont;
+        if (a->json) {
+          nlohmann::json j = summary(cont);
+          if (cont.doubled()) {
+            j["doubled"] = summary(result);
+            j["doubled"]["order"] = 2 * s->section().order;
+            j["doubled"]["first"] = result.points().front().parameter;
+          }
+          fmt::print("{}\n", j.dump());
+        } else if (done && (c.method == ContinuationMethod::Arclength || cont.doubled())) {
+          fmt::print(changes, "the family ends: {}\n", result.end());
         }
         return done ? 0 : 130;
       }};

@@ -207,26 +207,14 @@ pyb::dict changeDict(const TypeChange& t, const std::string& parameter) {
   return d;
 }
 
-pyb::object continuation(Call& c) {
-  const auto s = sceneMap(c);
-  const ContinuationSettings cs = s->continuation();
-  const auto run = s->continuationRun();
-  std::string failure;
-  runJob(c.progress, [&](const ToolControl& control) {
-    try {
-      run->run(
-          control, [](const ContinuationPoint&) {}, [](const TypeChange&) {});
-    } catch (const ComputationError& e) {
-      if (run->points().empty()) throw;
-      failure = e.what(); // the family up to here is a result: keep it, and say why it ends
-    }
-  });
-  const ReturnMap map = s->map();
+// a family's points, multipliers, types and changes as a dict
+pyb::dict familyDict(const Continuation& family, const ContinuationSettings& cs, const ReturnMap& map,
+                     const std::string& failure) {
   std::vector<double> param, points, residual;
   std::vector<std::complex<double>> multipliers;
   std::vector<std::string> types;
   std::size_t m = 0;
-  for (const auto& p : run->points()) {
+  for (const auto& p : family.points()) {
     param.push_back(p.parameter);
     const auto x = toVector(p.fixedPoint.point);
     points.insert(points.end(), x.begin(), x.end());
@@ -236,7 +224,7 @@ pyb::object continuation(Call& c) {
     types.emplace_back(toString(p.fixedPoint.type));
   }
   pyb::list changes;
-  for (const auto& t : run->changes())
+  for (const auto& t : family.changes())
     changes.append(changeDict(t, cs.parameter));
   const auto n = static_cast<pyb::ssize_t>(param.size());
   pyb::dict d;
@@ -249,7 +237,31 @@ pyb::object continuation(Call& c) {
   d["types"] = types;
   d["changes"] = changes;
   d["failure"] = failure;
-  d["end"] = failure.empty() ? run->end() : failure; // why the family ends
+  d["end"] = failure.empty() ? family.end() : failure; // why the family ends
+  return d;
+}
+
+pyb::object continuation(Call& c) {
+  const auto s = sceneMap(c);
+  const ContinuationSettings cs = s->continuation();
+  const auto run = s->continuationRun();
+  std::string failure;
+  runJob(c.progress, [&](const ToolControl& control) {
+    try {
+      run->run(control);
+    } catch (const ComputationError& e) {
+      if (run->points().empty() || (cs.switchAt > 0 && !run->doubled())) throw;
+      failure = e.what(); // the family up to here is a result: keep it, and say why it ends
+    }
+  });
+  if (!run->doubled()) return familyDict(*run, cs, s->map(), failure);
+  // switched (continuation.switch): the family of doubled order, its parent under "parent"
+  SectionSettings twice = s->section();
+  twice.order *= 2;
+  const ReturnMap map(*s->scene().model, s->integrators(), twice);
+  pyb::dict d = familyDict(*run->doubled(), cs, map, failure);
+  d["order"] = twice.order;
+  d["parent"] = familyDict(*run, cs, s->map(), "");
   return d;
 }
 

@@ -18,20 +18,6 @@ std::vector<double> BifurcationTreeResult::ratios() const {
   return r;
 }
 
-namespace {
-
-// the real eigenvector of the multiplier nearest -1
-Eigen::VectorXd flipDirection(const Eigen::MatrixXd& J) {
-  Eigen::EigenSolver<Eigen::MatrixXd> es(J);
-  Eigen::Index best = 0;
-  for (Eigen::Index i = 1; i < J.rows(); ++i)
-    if (std::abs(es.eigenvalues()[i] + 1.0) < std::abs(es.eigenvalues()[best] + 1.0)) best = i;
-  Eigen::VectorXd v = es.eigenvectors().col(best).real();
-  return v / v.norm();
-}
-
-} // namespace
-
 BifurcationTreeResult bifurcationTree(
     const Continuation::ModelAt& modelAt, const IntegratorFactory& make, const SectionSettings& section,
     double start, const Eigen::VectorXd& guess, const BifurcationTreeSettings& s, const ToolControl& control,
@@ -45,6 +31,7 @@ BifurcationTreeResult bifurcationTree(
   ContinuationSettings cs = s.continuation;
   cs.stopAtTypeChange = true;
   cs.method = ContinuationMethod::Natural; // each family up to its doubling: the parameter goes one way
+  cs.switchAt = 0;                         // the tree switches by itself
   cs.bifurcationAccuracy = s.bifurcationAccuracy;
   SectionSettings sec = section;
   double p0 = start, region = s.regionSize;

@@ -3,6 +3,7 @@
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/Format.h"
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/LU>
 #include <Eigen/SVD>
 #include <algorithm>
@@ -66,6 +67,15 @@ std::pair<double, double> bifurcationTests(const std::vector<std::complex<double
   for (std::size_t i = 0; i < m.size(); ++i)
     if (i != skip) minus *= m[i] + 1.0, plus *= m[i] - 1.0;
   return {minus.real(), plus.real()};
+}
+
+Eigen::VectorXd flipDirection(const Eigen::MatrixXd& J) {
+  Eigen::EigenSolver<Eigen::MatrixXd> es(J);
+  Eigen::Index best = 0;
+  for (Eigen::Index i = 1; i < J.rows(); ++i)
+    if (std::abs(es.eigenvalues()[i] + 1.0) < std::abs(es.eigenvalues()[best] + 1.0)) best = i;
+  Eigen::VectorXd v = es.eigenvectors().col(best).real();
+  return v / v.norm();
 }
 
 Continuation::Continuation(ModelAt modelAt, IntegratorFactory makeIntegrator, SectionSettings section,
@@ -331,6 +341,77 @@ bool Continuation::arclengthStep(const ToolControl& control) {
   return true;
 }
 
+std::unique_ptr<Continuation> Continuation::doubledFamily(const TypeChange& doubling, double distance,
+                                                          ContinuationSettings settings,
+                                                          const ToolControl& control) const {
+  if (doubling.kind != TypeChange::Kind::MultiplierMinusOne)
+    throw InputError("branch switching: the change at " + s_.parameter + " = " +
+                     std::to_string(doubling.parameter) + " is no period doubling (" +
+                     toString(doubling.kind) + ")");
+  if (!(distance > 0)) throw InputError("branch switching: the distance must be positive");
+  SectionSettings doubled = section_;
+  doubled.order *= 2;
+  settings.parameter = s_.parameter;
+  settings.minimalOrder = true;
+  const double pStar = doubling.parameter, lo = std::min(start_, s_.to), hi = std::max(start_, s_.to);
+  // a probe of order 2n at the doubling: its corrector, with the parameter among the unknowns, finds the
+  // doubled family on the plane through the point across the flip direction
+  ContinuationSettings probeSettings = settings;
+  probeSettings.to = pStar + std::abs(settings.step);
+  probeSettings.step = std::abs(settings.step);
+  const Continuation probe(modelAt_, make_, doubled, pStar, doubling.at.fixedPoint.point, probeSettings);
+  const int k = probe.unknowns();
+  const Eigen::VectorXd v = flipDirection(doubling.at.fixedPoint.jacobian.topLeftCorner(k, k));
+  Eigen::VectorXd base(k + 1), normal = Eigen::VectorXd::Zero(k + 1);
+  base.head(k) = doubling.at.fixedPoint.point.head(k);
+  base[k] = pStar;
+  normal.head(k) = v;
+  std::optional<ContinuationPoint> first;
+  std::string why;
+  for (const double f : {1.0, 0.5, 2.0, 0.25, 4.0}) {
+    try {
+      const double d = f * distance;
+      ContinuationPoint p =
+          probe.correct(base + d * normal, base, normal, d, s_.search.maxIterations, control).point;
+      // the point of order 2n must not be the parent itself (of order n)
+      const auto model = modelAt_(p.parameter);
+      const ReturnMap parent(*model, make_, section_);
+      if (parent.difference(parent(p.fixedPoint.point, control), p.fixedPoint.point).norm() <=
+          100 * s_.search.accuracy)
+        throw ComputationError("the point found is of order " + std::to_string(section_.order));
+      first = std::move(p);
+      break;
+    } catch (const ComputationError& e) {
+      why = e.what();
+    } catch (const InputError& e) {
+      why = e.what();
+    }
+  }
+  if (!first)
+    throw ComputationError(
+        format("no point of order %d near the period doubling at %s = %.12g within %g of its "
+               "point along the flip direction (%s)",
+               doubled.order, s_.parameter.c_str(), pStar, 4 * distance, why.c_str()));
+  // continued to the end of the window on the side where it lives
+  const double p0 = first->parameter;
+  settings.to = p0 >= pStar ? hi : lo;
+  if (std::abs(settings.to - p0) <= 1e-12 * std::max(1.0, std::abs(p0)))
+    throw ComputationError(
+        format("the family of order %d born at %s = %.12g lies outside %s in [%.12g, %.12g]", doubled.order,
+               s_.parameter.c_str(), pStar, s_.parameter.c_str(), lo, hi));
+  settings.step = std::copysign(std::abs(settings.step), settings.to - p0);
+  auto family =
+      std::make_unique<Continuation>(modelAt_, make_, doubled, p0, first->fixedPoint.point, settings);
+  family->points_.push_back(*first);
+  if (settings.method == ContinuationMethod::Arclength) {
+    // onward: away from the parent, along the flip direction
+    const Eigen::VectorXd u = family->unknownsOf(*first);
+    const double side = normal.dot(family->arcDifference(u, base)) >= 0 ? 1 : -1;
+    family->arc_.push_back({u, family->tangentAt(u, side * normal, control)});
+  }
+  return family;
+}
+
 // ---- locating a change between two points ----
 
 TypeChange Continuation::locate(std::size_t ia, std::size_t ib, bool fold, const ToolControl& control) const {
@@ -441,6 +522,29 @@ bool Continuation::noteChanges(const std::function<void(const TypeChange&)>& onC
 bool Continuation::run(const ToolControl& control,
                        const std::function<void(const ContinuationPoint&)>& onPoint,
                        const std::function<void(const TypeChange&)>& onChange) {
+  if (doubled_) return doubled_->run(control, onPoint, onChange);
+  // switching: this family's points are not the result, its changes are (they say where the switch is)
+  if (!runFamily(control, s_.switchAt > 0 ? std::function<void(const ContinuationPoint&)>() : onPoint,
+                 onChange))
+    return false;
+  if (s_.switchAt <= 0) return true;
+  std::vector<const TypeChange*> doublings;
+  for (const auto& t : changes_)
+    if (t.kind == TypeChange::Kind::MultiplierMinusOne) doublings.push_back(&t);
+  if (static_cast<int>(doublings.size()) < s_.switchAt)
+    throw ComputationError(format("continuation.switch = %d: the family in %s has %d period doubling%s (%s)",
+                                  s_.switchAt, s_.parameter.c_str(), static_cast<int>(doublings.size()),
+                                  doublings.size() == 1 ? "" : "s", end_.c_str()));
+  ContinuationSettings next = s_;
+  next.switchAt = 0;
+  doubled_ =
+      doubledFamily(*doublings[static_cast<std::size_t>(s_.switchAt - 1)], s_.switchDistance, next, control);
+  return doubled_->run(control, onPoint, onChange);
+}
+
+bool Continuation::runFamily(const ToolControl& control,
+                             const std::function<void(const ContinuationPoint&)>& onPoint,
+                             const std::function<void(const TypeChange&)>& onChange) {
   if (finished_) return true;
   const bool arclength = s_.method == ContinuationMethod::Arclength;
   const auto reportProgress = [&](double p) {
@@ -457,7 +561,10 @@ bool Continuation::run(const ToolControl& control,
         along[unknowns()] = s_.step > 0 ? 1 : -1;
         arc_.push_back({unknownsOf(points_.back()), tangentAt(unknownsOf(points_.back()), along, control)});
       }
-      if (onPoint) onPoint(points_.back());
+    }
+    if (!firstReported_) { // the start, found above or given (doubledFamily)
+      firstReported_ = true;
+      if (onPoint) onPoint(points_.front());
     }
     while (true) {
       const ContinuationPoint& last = points_.back();

@@ -30,7 +30,12 @@ struct ContinuationSettings {
   /// the parameter's initial direction.
   double step = 0.01;
   ContinuationMethod method = ContinuationMethod::Natural;
-  long maxPoints = 10000;   ///< the family ends after this many points (a closed family never ends otherwise)
+  long maxPoints = 10000; ///< the family ends after this many points (a closed family never ends otherwise)
+  /// Branch switching: 0 follows the family itself; k >= 1 follows, once it ends, the family of doubled order
+  /// born at its k-th located period doubling instead (its points are the ones reported; see doubledFamily),
+  /// the first point `switchDistance` from the doubling along the flip direction.
+  int switchAt = 0;
+  double switchDistance = 0.05;
   double extrapolation = 1; ///< d
   bool stopAtTypeChange = false;
   double bifurcationAccuracy = 1e-10; ///< of the parameter value of a located type change
@@ -72,6 +77,10 @@ std::pair<double, double> bifurcationTests(const std::vector<std::complex<double
 /// a complex pair crosses the unit circle (and where two real multipliers pass a product of 1).
 double neimarkSackerTest(const std::vector<std::complex<double>>& multipliers, double tolerance);
 
+/// The real unit eigenvector of the multiplier nearest -1 of a fixed point's derivative: the direction in
+/// which the points of doubled order leave it at a period doubling.
+Eigen::VectorXd flipDirection(const Eigen::MatrixXd& jacobian);
+
 class Continuation {
 public:
   /// The model at a value of the parameter (throws InputError outside its range).
@@ -88,8 +97,19 @@ public:
            const std::function<void(const TypeChange&)>& onChange = {});
 
   const std::vector<ContinuationPoint>& points() const { return points_; }
+  /// The family of doubled order it switched to (settings.switchAt), once it has; nullptr before.
+  const Continuation* doubled() const { return doubled_.get(); }
   const std::vector<TypeChange>& changes() const { return changes_; }
   const ContinuationSettings& settings() const { return s_; }
+  /// Branch switching: the family of order 2n born at `doubling`, a located period doubling of this family.
+  /// Its first point is found at `distance` from the doubling's point along flipDirection, the parameter free
+  /// (so super- and subcritical doublings alike: Kuznetsov 2004, §10.3.3); it is then continued with
+  /// `settings` (method, step, accuracy) to the end of this family's window [start, finite value] on the side
+  /// where it lives; natural continuation accepts only points of minimal order 2n. ComputationError when no
+  /// such point is found (nor at 2, 4 times or a half, a quarter of the distance).
+  std::unique_ptr<Continuation> doubledFamily(const TypeChange& doubling, double distance,
+                                              ContinuationSettings settings,
+                                              const ToolControl& control) const;
   /// Why the family ended ("reached a = 2", "turned back past the start value ...", ...); empty while
   /// running.
   const std::string& end() const { return end_; }
@@ -128,6 +148,9 @@ private:
   /// completing into states (the edge of the region of allowed motion) or complete ever faster (a singular
   /// point of the section's coordinates).
   std::string whyItEnds(const ToolControl& control) const;
+  /// The family itself, up to its end (run() without the switch).
+  bool runFamily(const ToolControl& control, const std::function<void(const ContinuationPoint&)>& onPoint,
+                 const std::function<void(const TypeChange&)>& onChange);
   /// One arclength step from the last point; false when the family ended (end_ says why).
   bool arclengthStep(const ToolControl& control);
   /// Locates the change between consecutive points a and b (indices into points_).
@@ -145,10 +168,11 @@ private:
   std::unique_ptr<ReturnMap> shape_; ///< which coordinates are angles, for differences
   std::vector<ContinuationPoint> points_;
   std::vector<TypeChange> changes_;
-  std::vector<ArcPoint> arc_;    ///< arclength: parallel to points_
-  double arcStep_ = 0;           ///< arclength: the current step
-  std::size_t lastDefinite_ = 0; ///< the last point whose type is not parabolic (between types)
-  bool finished_ = false;
+  std::vector<ArcPoint> arc_;             ///< arclength: parallel to points_
+  std::unique_ptr<Continuation> doubled_; ///< settings.switchAt: the family switched to
+  double arcStep_ = 0;                    ///< arclength: the current step
+  std::size_t lastDefinite_ = 0;          ///< the last point whose type is not parabolic (between types)
+  bool finished_ = false, firstReported_ = false;
   std::string end_;
   double progress_ = 0;
 };

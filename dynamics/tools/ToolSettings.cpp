@@ -124,6 +124,21 @@ const ParameterTable& continuationTable() {
        .description = "stop the continuation where the type of the point changes",
        .integer = true,
        .choices = {"no", "yes"}},
+      {.id = "switch",
+       .label = "Switch at doubling",
+       .defaultValue = static_cast<double>(d.switchAt),
+       .min = 0,
+       .max = 1000,
+       .description = "0: the family itself; k: the family of doubled order born at its k-th period doubling "
+                      "(branch switching), continued to the end of [start, to] on its side",
+       .integer = true},
+      {.id = "switch_distance",
+       .label = "Switch distance",
+       .defaultValue = d.switchDistance,
+       .min = 1e-300,
+       .max = 1e300,
+       .description = "how far from the doubling the first point of doubled order is sought, along the flip "
+                      "direction"},
       {.id = "bifurcation_accuracy",
        .label = "Accuracy of bifurcation value",
        .defaultValue = d.bifurcationAccuracy,
@@ -365,6 +380,8 @@ ContinuationSettings continuationSettings(const ParameterValues& v, const FixedP
   c.method = v.choice("method") == "arclength" ? ContinuationMethod::Arclength : ContinuationMethod::Natural;
   c.step = v["step"];
   c.maxPoints = static_cast<long>(v["points"]);
+  c.switchAt = static_cast<int>(v["switch"]);
+  c.switchDistance = v["switch_distance"];
   c.extrapolation = v["extrapolation"];
   c.stopAtTypeChange = v.choice("stop_at_type_change") == "yes";
   c.bifurcationAccuracy = v["bifurcation_accuracy"];

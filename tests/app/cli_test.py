@@ -480,6 +480,35 @@ class Cli(unittest.TestCase):
         self.assertIn("fold at a = -0.1225", text.stderr)
         self.assertIn("the family ends: 200 points", text.stderr)
 
+    def test_continue_switches_to_the_doubled_family(self):
+        # Henon, b = 0.3: the point doubles at a = 0.3675 going down from 1.4; its 2-cycle (x1 + x2 = (1 - b) / a,
+        # x1 x2 = ((1 - b)^2 - a) / a^2) lives above and doubles in turn at a = (1 - b)^2 + (1 + b)^2 / 4
+        henon = os.path.join(SRC, "scenes", "henon_map.json")
+        out = self.path("d.csv")
+        r = run("continue", henon, "--guess", "0.63,0.19", "--param", "a", "--to", "0", "--step", "-0.05",
+                "--doubled", "--json", "-o", out)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        j = json.loads(r.stdout)
+        self.assertAlmostEqual(j["changes"][0]["parameter"], 0.3675, delta=1e-9)
+        d = j["doubled"]
+        self.assertEqual(d["order"], 2)
+        self.assertLess(d["first"], 0.3675 + 0.01)
+        self.assertAlmostEqual(d["last"], 1.4, delta=1e-12)
+        self.assertIn(0.9125, [round(c["parameter"], 9) for c in d["changes"] if c["kind"] == "multiplier -1"])
+        rows = list(csv.DictReader(open(out)))
+        self.assertEqual(len(rows), d["points"])
+        for row in rows:
+            a, x = float(row["a"]), float(row["x"])
+            self.assertAlmostEqual(x * x - 0.7 / a * x + (0.49 - a) / a ** 2, 0, delta=1e-9)
+        text = run("continue", henon, "--guess", "0.63,0.19", "--param", "a", "--to", "0", "--step", "-0.05",
+                   "--doubled")
+        self.assertIn("(multiplier -1)", text.stderr)
+        self.assertIn("the family of order 2 born at the period doubling starts at a = 0.3", text.stderr)
+        none = run("continue", henon, "--guess", "0.63,0.19", "--param", "a", "--to", "1", "--step", "-0.05",
+                   "--doubled")
+        self.assertEqual(none.returncode, 1, none.stderr)
+        self.assertIn("continuation.switch = 1: the family in a has 0 period doublings", none.stderr)
+
     def test_bifurcation_curve_of_the_henon_period_doubling(self):
         # the doubling of the point born at the fold: a = 3 (1 - b)^2 / 4, x = 2 / (3 (1 - b)); along it the other
         # multiplier is b, -1 at b = -1 (a 1:2 resonance)

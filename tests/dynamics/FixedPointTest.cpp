@@ -279,6 +279,40 @@ TEST(Continuation, BothMethodsLocateTheHenonPeriodDoubling) {
   }
 }
 
+TEST(Continuation, TheDoubledFamilyStartsAtALocatedPeriodDoubling) {
+  // Henon, b = 0.3: continued down from a = 1.4, the point doubles at a = 3 (1 - b)^2 / 4; its 2-cycle
+  // (x1, x2) has x1 + x2 = (1 - b) / a, x1 x2 = ((1 - b)^2 - a) / a^2 and lives at larger a, so the doubled
+  // family is continued back up to the parent's start
+  const double b = 0.3;
+  for (const auto method : {ContinuationMethod::Natural, ContinuationMethod::Arclength}) {
+    Continuation parent(henonAt(b), everhart(), order(1), 1.4, Eigen::Vector2d(0.63, 0.19),
+                        henonFamily(0, -0.05, method));
+    ASSERT_TRUE(parent.run({}));
+    ASSERT_EQ(parent.changes().size(), 1u);
+    const auto doubled = parent.doubledFamily(parent.changes()[0], 0.05, henonFamily(0, 0.05, method), {});
+    std::size_t reported = 0;
+    ASSERT_TRUE(doubled->run({}, [&](const ContinuationPoint&) { ++reported; }));
+    EXPECT_EQ(reported, doubled->points().size());
+    EXPECT_GT(doubled->points().size(), 15u);
+    EXPECT_LT(doubled->points().front().parameter, 0.3675 + 0.01);
+    EXPECT_NEAR(doubled->points().back().parameter, 1.4, 1e-12);
+    for (const auto& p : doubled->points()) {
+      const double a = p.parameter, x = p.fixedPoint.point[0], sum = (1 - b) / a;
+      EXPECT_NEAR(x * x - sum * x + ((1 - b) * (1 - b) - a) / (a * a), 0, 1e-9) << a;
+      EXPECT_NEAR(p.fixedPoint.point[1], b * (sum - x), 1e-9) << a;
+      EXPECT_GT(std::abs(x - (sum - x)), 1e-3) << "not the parent at " << a;
+    }
+    // the 2-cycle (D Map^2: trace 4 a^2 x1 x2 + 2 b, det b^2) doubles in turn where 1 + trace + det = 0, at
+    // a = (1 - b)^2 + (1 + b)^2 / 4 = 0.9125
+    std::vector<double> doublings;
+    for (const auto& c : doubled->changes())
+      if (c.kind == TypeChange::Kind::MultiplierMinusOne) doublings.push_back(c.parameter);
+    ASSERT_EQ(doublings.size(), 1u);
+    EXPECT_NEAR(doublings[0], 0.9125, 1e-8);
+    EXPECT_THROW(parent.doubledFamily(parent.changes()[0], -1, henonFamily(0, 0.05, method), {}), InputError);
+  }
+}
+
 TEST(Continuation, ArclengthReachesTheFiniteValueAlongAStraightFamily) {
   // the standard map's centre theta = pi, p = 0 for every K: a straight family; steps of at most 0.2
   const Continuation::ModelAt at = [](double K) { return test::makeModel("standard_map", {{"K", K}}); };

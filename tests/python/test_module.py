@@ -295,6 +295,10 @@ def test_arclength_continuation_and_a_bifurcation_curve_from_python():
     assert abs(c.changes[0]["parameter"] + 0.1225) < 1e-9
     assert "250 points" in c.end and c.parameter_values.size == 250
     hm = rollviz.Scene.load(scene_path("henon_map.json"))
+    d = hm.continuation(guess=[0.63, 0.19], parameter="a", to=0, step=-0.05, switch=1)  # branch switching
+    assert d.order == 2 and abs(d.parent.changes[0].parameter - 0.3675) < 1e-9
+    a, x = d.parameter_values, d.points[:, 0]
+    assert np.max(np.abs(x * x - 0.7 / a * x + (0.49 - a) / a ** 2)) < 1e-9 and abs(a[-1] - 1.4) < 1e-12
     # a plain keyword is the tool's own setting first (step, points), then its parents' (parameter, to, guess)
     r = hm.bifurcation_curve(guess=[0.63, 0.19], parameter="a", to=0, second_parameter="b", kind="period_doubling",
                              second_min=-0.5, second_max=0.5, **{"continuation.step": -0.05})
