@@ -217,3 +217,88 @@ TEST(ChaplyginBall, EverhartTaylorVernerAndAdamsConserveAllFourIntegralsToTwelve
 
 } // namespace
 } // namespace rv
+
+#include "dynamics/tools/Continuation.h"
+
+namespace rv {
+namespace {
+
+// The shipped scene's elliptic point (scenes/chaplygin_ball.json) continued up in K1 stops near K1 = 0.66648
+// by either method (issue 41). What happens there: every orbit keeps G = |M + K| (n = G^2 is an integral),
+// and along this family G falls to |c| = 0.3 -- M + K turns vertical, where the Andoyer-Deprit node angle g
+// is undefined: the section g = 0 and its coordinates (l, L/G) are singular (the pole of the chart). The
+// orbits close onto the steady rotation with M + K vertical and the family ends there; it is no fold (the
+// multipliers stay on the unit circle near -1, far from +1). This test pins that down from the numbers along
+// the family.
+TEST(ChaplyginBall, TheShippedFixedPointsFamilyInK1EndsAtThePoleOfTheSectionNotAtAFold) {
+  const Continuation::ModelAt at = [](double k1) {
+    return test::makeModel("chaplygin_ball", {{"energy", 0.5},
+                                              {"c", 0.3},
+                                              {"I1", 1.0},
+                                              {"I2", 1.4},
+                                              {"I3", 1.9},
+                                              {"m", 1.0},
+                                              {"R", 1.0},
+                                              {"K1", k1},
+                                              {"K2", 0.1},
+                                              {"K3", 0.3}});
+  };
+  SectionSettings section;
+  section.observable = "g";
+  ContinuationSettings s;
+  s.parameter = "K1";
+  s.to = 0.7;
+  s.step = 0.002;
+  s.method = ContinuationMethod::Arclength;
+  const IntegratorFactory verner = [] { return std::make_unique<Verner9>(1e-13, 0.1); };
+  Continuation c(at, verner, section, 0.66, Eigen::Vector2d(-1.6661, 0.1045), s);
+  std::string failure;
+  try {
+    c.run({});
+  } catch (const ComputationError& e) {
+    failure = e.what();
+  }
+  ASSERT_FALSE(failure.empty()) << "the family went on to K1 = " << c.points().back().parameter;
+  EXPECT_NE(failure.find("not a fold"), std::string::npos) << failure;
+  const double end = c.points().back().parameter;
+  EXPECT_GT(end, 0.6664);
+  EXPECT_LT(end, 0.6667);
+  double lastG = 1e9;
+  for (std::size_t i = 0; i < c.points().size(); i += 10) {
+    const auto& p = c.points()[i];
+    // elliptic all along, the multipliers far from +1
+    for (const auto& m : p.fixedPoint.multipliers) {
+      EXPECT_NEAR(std::abs(m), 1, 1e-6) << p.parameter;
+      EXPECT_GT(std::abs(m - 1.0), 1.9) << p.parameter;
+    }
+    // G of the point's state (constant along its orbit) falls toward |c|
+    const auto model = at(p.parameter);
+    const ReturnMap map(*model, verner, section);
+    const Eigen::VectorXd x = map.stateOf(p.fixedPoint.point);
+    const double G = (x.head<3>() + Eigen::Vector3d(p.parameter, 0.1, 0.3)).norm();
+    EXPECT_LT(G, lastG) << p.parameter;
+    lastG = G;
+  }
+  const auto stateAt = [&](std::size_t i) {
+    const auto& p = c.points()[i];
+    const auto m = at(p.parameter);
+    return ReturnMap(*m, verner, section).stateOf(p.fixedPoint.point);
+  };
+  const auto gOf = [&](std::size_t i) {
+    return (stateAt(i).head<3>() + Eigen::Vector3d(c.points()[i].parameter, 0.1, 0.3)).norm();
+  };
+  const std::size_t last = c.points().size() - 1, before = last - 10;
+  const double G = gOf(last);
+  EXPECT_LT(G - 0.3, 1e-3); // G -> |c|
+  // G falls linearly in K1 there: it reaches |c| just past where the family was given up
+  const double reaches = end + (G - 0.3) * (end - c.points()[before].parameter) / (gOf(before) - G);
+  EXPECT_GT(reaches, end);
+  EXPECT_LT(reaches, end + 5e-4);
+  const auto model = at(end);
+  const Eigen::VectorXd x = stateAt(last);
+  EXPECT_GT(model->observables()[static_cast<std::size_t>(model->findObservable("H/G"))].value(0, x.data()),
+            0.998); // H/G -> 1: M + K nearly vertical
+}
+
+} // namespace
+} // namespace rv
