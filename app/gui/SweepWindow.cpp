@@ -1,12 +1,15 @@
 #include "app/gui/SweepWindow.h"
 
 #include "app/gui/QtVtkWidget.h"
+#include "dynamics/core/Errors.h"
 #include "scenes/SceneLoader.h"
 #include "scenes/SweepTask.h"
+#include "scenes/ToolTask.h"
 
 #include <QEvent>
 #include <QHBoxLayout>
 #include <QMouseEvent>
+#include <QPushButton>
 #include <QTimer>
 #include <cmath>
 
@@ -26,13 +29,90 @@ SweepWindow::SweepWindow(JobTree& jobs, SweepSpec spec, QWidget* parent)
   job.start();
   view()->installEventFilter(this);
   view()->setToolTip("click a cell: open that point's scene in the main window");
+  if (spec_.axes.size() == 2) {
+    curveButton_ = new QPushButton("Bifurcation curve", this);
+    curveButton_->setObjectName("bifurcationCurve");
+    curveButton_->setCheckable(true);
+    curveButton_->setToolTip(
+        "then click a cell: its fixed point is continued in the first axis' parameter to its "
+        "bifurcation_curve.kind (fold, period doubling, Neimark-Sacker), which is followed "
+        "in the chart's two parameters and drawn over it");
+    bar()->insertWidget(0, curveButton_);
+  }
   auto* timer = new QTimer(this); // the job only stores its results; the window reads them
   connect(timer, &QTimer::timeout, this, &SweepWindow::poll);
   timer->start(250);
 }
 
 SweepWindow::~SweepWindow() {
+  if (Job* j = curveJob()) jobs_.remove(*j);
   if (Job* j = job()) jobs_.remove(*j);
+}
+
+Job* SweepWindow::curveJob() const {
+  return curveJobId_ < 0 ? nullptr : jobs_.find(curveJobId_);
+}
+
+void SweepWindow::startCurve(long index) {
+  if (curveButton_) curveButton_->setChecked(false);
+  if (spec_.axes.size() != 2 || curveJob()) return;
+  const SweepAxis &ax = spec_.axes[0], &ay = spec_.axes[1];
+  try {
+    if (ax.mapCoordinate >= 0 || ay.mapCoordinate >= 0 || ax.id.find('.') != std::string::npos ||
+        ay.id.find('.') != std::string::npos)
+      throw InputError("a bifurcation curve lies in a plane of two model parameters; these axes are " +
+                       ax.id + " and " + ay.id);
+    const nlohmann::json base = sweepPointScene(spec_, index).document;
+    const double here = spec_.axisValues(index)[0];
+    // toward the farther end of the first axis first, then toward the other
+    std::vector<double> ends{ax.max, ax.min};
+    if (std::abs(ax.min - here) > std::abs(ax.max - here)) std::swap(ends[0], ends[1]);
+    std::vector<nlohmann::json> documents;
+    for (const double to : ends) {
+      if (to == here) continue;
+      nlohmann::json d = base;
+      d["continuation"]["parameter"] = ax.id;
+      d["continuation"]["to"] = to;
+      d["continuation"]["step"] = (to - here) / 50;
+      auto& c = d["bifurcation_curve"];
+      c["second_parameter"] = ay.id;
+      c["first_min"] = ax.min, c["first_max"] = ax.max, c["second_min"] = ay.min, c["second_max"] = ay.max;
+      documents.push_back(std::move(d));
+    }
+    Job& job = jobs_.add(std::make_unique<ToolTask>("bifurcation_curve", std::move(documents),
+                                                    "grid point " + std::to_string(index) + " of the sweep"));
+    curveJobId_ = job.id();
+    job.start();
+    setStatus(QString("following the bifurcation curve from %1 = %2, %3 = %4…")
+                  .arg(QString::fromStdString(ax.id))
+                  .arg(here)
+                  .arg(QString::fromStdString(ay.id))
+                  .arg(spec_.axisValues(index)[1]));
+  } catch (const std::exception& e) {
+    setStatus(QString("no bifurcation curve: %1").arg(e.what()));
+  }
+}
+
+void SweepWindow::takeCurve() {
+  Job* j = curveJob();
+  if (!j || j->status() == Job::Status::Running || j->status() == Job::Status::Ready) return;
+  const auto& task = static_cast<const ToolTask&>(j->task());
+  if (const auto r = task.result(); r && r->table.names.size() >= 2) {
+    overlays_.push_back(
+        {r->fields.value("kind", std::string("bifurcation")), r->table.values[0], r->table.values[1]});
+    redraw_ = true;
+    std::string events;
+    for (const auto& e : r->fields.value("events", nlohmann::json::array()))
+      events += "; " + e.value("what", std::string());
+    setStatus(QString::fromStdString(r->fields.value("kind", std::string()) +
+                                     " curve: " + std::to_string(r->table.rows()) + " points" + events));
+  } else {
+    setStatus(QString::fromStdString(j->status() == Job::Status::Failed
+                                         ? "no bifurcation curve: " + j->error()
+                                         : "the bifurcation curve was stopped"));
+  }
+  jobs_.remove(*j);
+  curveJobId_ = -1;
 }
 
 Job* SweepWindow::job() const {
@@ -78,7 +158,12 @@ bool SweepWindow::eventFilter(QObject* watched, QEvent* event) {
   if (watched == view() && event->type() == QEvent::MouseButtonPress && chart_) {
     auto* e = static_cast<QMouseEvent*>(event);
     if (e->button() == Qt::LeftButton) {
-      if (const long i = pointUnder(e->position()); i >= 0) openPoint(i);
+      if (const long i = pointUnder(e->position()); i >= 0) {
+        if (curveButton_ && curveButton_->isChecked())
+          startCurve(i);
+        else
+          openPoint(i);
+      }
       return true;
     }
   }
@@ -86,6 +171,7 @@ bool SweepWindow::eventFilter(QObject* watched, QEvent* event) {
 }
 
 void SweepWindow::poll() {
+  takeCurve();
   Job* j = job();
   const Job::Status status = j ? j->status() : Job::Status::Failed;
   const bool running = status == Job::Status::Running;
@@ -102,9 +188,12 @@ void SweepWindow::poll() {
     read_.clear();
     done_ = -1;
   }
-  if (done != done_) { // new points: draw again (a chart is never attached to a view that drew another)
+  if (done != done_ || redraw_) { // new points or curves: draw again (a chart is never attached to a view
+                                  // that drew another)
     done_ = done;
+    redraw_ = false;
     task.updateChartData(data_, read_); // only the points done since the last time are read
+    data_.overlays = overlays_;
     if (chart_) {
       chart_.reset();
       replaceView();
@@ -115,7 +204,9 @@ void SweepWindow::poll() {
     view()->update();
   }
   const QString count = QString("%1 of %2 points").arg(done).arg(spec_.points());
-  if (running) {
+  if (curveJob()) {
+    // the curve's job says how it goes
+  } else if (running) {
     setStatus("computing… " + count);
   } else if (status != seen_) {
     setStatus(status == Job::Status::Finished ? count + "; click a cell to open its scene"

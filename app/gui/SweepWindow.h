@@ -11,6 +11,8 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
+class QPushButton;
+
 namespace rv {
 
 class SweepWindow : public FilterWindow {
@@ -29,6 +31,15 @@ public:
   /// Opens grid point `index` (emits openScene with its scene document).
   void openPoint(long index);
   const SweepSpec& spec() const { return spec_; }
+  /// A chart of two model parameters: follows the bifurcation of grid point `index`'s scene
+  /// (bifurcation_curve.kind: its fixed point continued in the first axis' parameter toward either end) in
+  /// the chart's plane as a job, and draws the curve over the chart when it is done. "Bifurcation curve" then
+  /// a click on a cell does it.
+  void startCurve(long index);
+  /// The curves drawn over the chart.
+  const std::vector<SweepOverlay>& overlays() const { return overlays_; }
+  /// The job following a curve (nullptr when none runs).
+  Job* curveJob() const;
 
 signals:
   /// A grid point's scene, to run in the main window.
@@ -47,7 +58,12 @@ private:
   int jobId_;
   long done_ = -1;
   Job::Status seen_ = Job::Status::Ready;
+  void takeCurve();
   std::shared_ptr<Chart> chart_;
+  QPushButton* curveButton_ = nullptr;
+  int curveJobId_ = -1;
+  std::vector<SweepOverlay> overlays_;
+  bool redraw_ = false;
   SweepChartData data_;    ///< what was read of the job's store
   std::vector<char> read_; ///< the points read into data_
   int generation_ = 0;     ///< of the store read (SweepTask::generation)

@@ -14,8 +14,10 @@
 #include <vtkContextView.h>
 #include <vtkDoubleArray.h>
 #include <vtkImageData.h>
+#include <vtkPlot.h>
 #include <vtkPointData.h>
 #include <vtkRenderer.h>
+#include <vtkTable.h>
 #include <vtkTextProperty.h>
 
 namespace rv {
@@ -74,6 +76,22 @@ public:
       legend->SetTitle(d.columns.empty() ? std::string() : d.columns[0]);
     chart_->SetTitle(d.title);
     chart_->GetTitleProperties()->SetFontSize(16);
+    // the curves over it, white under black so they show on every colour of the map
+    for (const auto& o : d.overlays) {
+      vtkNew<vtkTable> table;
+      vtkNew<vtkDoubleArray> xs, ys;
+      xs->SetName("x"), ys->SetName(o.name.empty() ? "curve" : o.name.c_str());
+      for (std::size_t i = 0; i < std::min(o.x.size(), o.y.size()); ++i)
+        xs->InsertNextValue(o.x[i]), ys->InsertNextValue(o.y[i]);
+      table->AddColumn(xs), table->AddColumn(ys);
+      for (const auto& [width, grey] : {std::pair{5.0f, 255}, std::pair{2.5f, 0}}) {
+        vtkPlot* line = chart_->AddPlot(vtkChart::LINE);
+        line->SetInputData(table, 0, 1);
+        line->SetColor(static_cast<unsigned char>(grey), static_cast<unsigned char>(grey),
+                       static_cast<unsigned char>(grey), 255);
+        line->SetWidth(width);
+      }
+    }
   }
   void attach(vtkRenderWindow* window) override { view_->SetRenderWindow(window); }
   bool toChart(double px, double py, double& x, double& y) const override {

@@ -9,6 +9,13 @@
 
 namespace rv {
 
+/// A curve drawn over a two-axis sweep chart, in its plane (x along the first axis): a bifurcation curve of
+/// the same two parameters.
+struct SweepOverlay {
+  std::string name;
+  std::vector<double> x, y;
+};
+
 /// What a sweep computed, in grid order (the first axis fastest).
 struct SweepChartData {
   std::string title;
@@ -19,6 +26,7 @@ struct SweepChartData {
   /// values[point * columns.size() + c]; NaN where a point failed
   std::vector<double> values;
   bool orbit = false; ///< every column is a point of an orbit diagram (drawn as a cloud over the first axis)
+  std::vector<SweepOverlay> overlays; ///< two axes: curves drawn over the map of the grid
 };
 
 /// The chart of the data's first column (every column for an orbit diagram).

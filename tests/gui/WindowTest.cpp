@@ -19,6 +19,7 @@
 #include "dynamics/jobs/PoincareTask.h"
 #include "render/charts/PoincareChart.h"
 #include "render/context/HeadlessContext.h"
+#include "scenes/BuiltinTools.h"
 #include "scenes/ModelFile.h"
 #include "scenes/SceneLoader.h"
 #include <vtkGenericOpenGLRenderWindow.h>
@@ -128,6 +129,7 @@ class MainWindowTest : public QObject {
 
 private slots:
   void initTestCase() {
+    registerBuiltinTools(); // as the application does at start (scenes/ModuleLoader.h)
     window_ = new MainWindow;
     window_->show();
     QVERIFY(QTest::qWaitForWindowExposed(window_));
@@ -366,6 +368,56 @@ private slots:
     w->close();
     QTRY_VERIFY(!window_->mapPanel()->jobs().find(id));
     QVERIFY(window_->openScene(QString::fromStdString(defaultScenePath("chaplygin_ball"))));
+  }
+
+  // a chart of regimes over two parameters: "Bifurcation curve" and a click on a cell follow that point's
+  // period doubling in the chart's plane as a job and draw the curve over the chart (Henon: a = 3 (1 - b)^2 /
+  // 4)
+  void sweepWindowDrawsABifurcationCurveOverItsChart() {
+    const QString path = dir_.filePath("henon_types.json");
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(QByteArray::fromStdString(nlohmann::json{
+        {"scene", defaultScenePath("henon_map")},
+        {"axes",
+         {{{"id", "a"}, {"min", 0.0}, {"max", 1.5}, {"count", 6}},
+          {{"id", "b"}, {"min", -0.5}, {"max", 0.5}, {"count", 5}}}},
+        {"quantity", "fixedpoint.type"},
+        {"set", {{"fixedpoint.guess", {0.63, 0.19}}, {"bifurcation_curve.kind", "period_doubling"}}}}
+                                          .dump()));
+    f.close();
+    SweepWindow* w = window_->openSweep(path);
+    QVERIFY(w);
+    QTRY_VERIFY_WITH_TIMEOUT(w->job()->status() == Job::Status::Finished, 60000);
+    QTRY_COMPARE_WITH_TIMEOUT(w->done(), 30L, 5000);
+    QTest::qWait(300);
+    (void)w->view()->grabFramebuffer(); // drawn: the chart's plot area is laid out
+    auto* button = w->findChild<QPushButton*>("bifurcationCurve");
+    QVERIFY(button);
+    button->click();
+    QVERIFY(button->isChecked());
+    // grid point 20 = (a, b) = (0.6, 0.25): up in a there is no doubling, down there is one at a = 0.421875
+    QPoint at(-1, -1);
+    for (int y = 0; y < w->view()->height() && at.x() < 0; y += 3)
+      for (int x = 0; x < w->view()->width() && at.x() < 0; x += 3)
+        if (w->pointUnder(QPointF(x, y)) == 20) at = QPoint(x, y);
+    QVERIFY2(at.x() >= 0, "no pixel over grid point 20");
+    QTest::mouseClick(w->view(), Qt::LeftButton, {}, at);
+    QVERIFY(!button->isChecked());
+    QVERIFY(w->curveJob());
+    QTRY_COMPARE_WITH_TIMEOUT(w->overlays().size(), std::size_t(1), 60000);
+    QVERIFY(!w->curveJob()); // taken and removed from the tool manager
+    const SweepOverlay& curve = w->overlays()[0];
+    QVERIFY(curve.x.size() > 10);
+    for (std::size_t i = 0; i < curve.x.size(); ++i) {
+      QVERIFY(std::abs(curve.x[i] - 0.75 * (1 - curve.y[i]) * (1 - curve.y[i])) < 1e-8);
+      QVERIFY(curve.x[i] >= -1e-12 && curve.x[i] <= 1.5 + 1e-12 && curve.y[i] >= -0.5 - 1e-12 &&
+              curve.y[i] <= 0.5 + 1e-12);
+    }
+    QTest::qWait(400);
+    QVERIFY(keep(w->grab().toImage(), "window_sweep_curve.png"));
+    QVERIFY(varied(w->view()->grabFramebuffer()));
+    w->close();
   }
 
   void apexWindowShowsTheApexes() {
