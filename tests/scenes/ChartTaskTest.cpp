@@ -104,3 +104,55 @@ INSTANTIATE_TEST_SUITE_P(Views, ChartTaskResumes,
 
 } // namespace
 } // namespace rv
+
+#include "dynamics/core/Errors.h"
+#include "scenes/BuiltinTools.h"
+#include "scenes/SceneLoader.h"
+#include "scenes/ToolTask.h"
+
+namespace rv {
+namespace {
+
+// A registered tool as a job: the first of its alternative scenes that does not fail gives the result (the
+// sweep window's bifurcation curve: toward one end of the axis, else toward the other).
+TEST(ToolTask, RunsTheFirstAlternativeThatDoesNotFail) {
+  registerBuiltinTools();
+  const auto henon = [](double to) {
+    nlohmann::json d = nlohmann::json::parse(R"json({
+      "problem": "henon_map", "parameters": {"a": 0.6, "b": 0.25}, "initial": {"map": [0.63, 0.19]},
+      "continuation": {"parameter": "a", "step": 0.02},
+      "bifurcation_curve": {"second_parameter": "b", "kind": "period_doubling", "second_min": -0.5,
+                            "second_max": 0.5, "first_min": 0, "first_max": 1.5}})json");
+    d["continuation"]["to"] = to;
+    d["continuation"]["step"] = to > 0.6 ? 0.02 : -0.02;
+    return d;
+  };
+  ToolTask task("bifurcation_curve", {henon(1.5), henon(0)}, "test");
+  EXPECT_EQ(task.used(), -1);
+  EXPECT_FALSE(task.result());
+  ASSERT_TRUE(task.run({}));
+  EXPECT_EQ(task.used(), 1); // up in a from 0.6 there is no doubling; down there is, at a = 3 (1 - b)^2 / 4
+  const auto r = task.result();
+  ASSERT_TRUE(r);
+  ASSERT_GE(r->table.names.size(), 2u);
+  EXPECT_NEAR(r->fields["start"]["a"].get<double>(), 0.75 * 0.75 * 0.75, 1e-9);
+  for (long i = 0; i < r->table.rows(); ++i) {
+    const double a = r->table.values[0][static_cast<std::size_t>(i)],
+                 b = r->table.values[1][static_cast<std::size_t>(i)];
+    EXPECT_NEAR(a, 0.75 * (1 - b) * (1 - b), 1e-8);
+  }
+  task.reset();
+  EXPECT_FALSE(task.result());
+  ToolTask none("bifurcation_curve", {henon(1.5)}, "test");
+  try {
+    none.run({});
+    ADD_FAILURE() << "a period doubling above a = 0.6";
+  } catch (const ComputationError& e) {
+    EXPECT_NE(std::string(e.what()).find("finds no period doubling point"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(ToolTask("megno", {henon(0)}, "test"), InputError); // no runner: written by hand
+  EXPECT_THROW(ToolTask("bifurcation_curve", {}, "test"), InputError);
+}
+
+} // namespace
+} // namespace rv
