@@ -6,6 +6,7 @@
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/Format.h"
 #include "render/charts/ToolCharts.h"
+#include "scenes/FixedPointJson.h"
 #include "scenes/SceneTools.h"
 #include "scenes/ToolRunner.h"
 
@@ -25,17 +26,6 @@ bool startsCurve(const TypeChange& change, CurveKind kind) {
     return change.kind == TypeChange::Kind::NeimarkSacker;
   }
   return false;
-}
-
-nlohmann::json multipliersJson(const std::vector<std::complex<double>>& m) {
-  nlohmann::json j = nlohmann::json::array();
-  for (auto z : m)
-    j.push_back({z.real(), z.imag()});
-  return j;
-}
-
-std::vector<double> toVector(const Eigen::VectorXd& x) {
-  return {x.data(), x.data() + x.size()};
 }
 
 // The curve of the first fold / period doubling / Neimark-Sacker point of the scene's continuation, in the

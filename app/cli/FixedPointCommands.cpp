@@ -9,6 +9,7 @@
 #include "dynamics/core/Errors.h"
 #include "dynamics/tools/ToolSettings.h"
 #include "render/export/VtkXmlFiles.h"
+#include "scenes/FixedPointJson.h"
 #include "scenes/SceneTools.h"
 
 #include <cmath>
@@ -68,17 +69,6 @@ std::unique_ptr<SceneMap> setUp(const MapArgs& a, bool needGuess = true, const M
   o.order = a.order, o.method = a.method;
   if (!a.guess.empty()) o.guess = parseNumbers(a.guess, "--guess");
   return std::make_unique<SceneMap>(a.scene.load(), o, needGuess);
-}
-
-nlohmann::json multipliersJson(const std::vector<std::complex<double>>& m) {
-  nlohmann::json j = nlohmann::json::array();
-  for (auto z : m)
-    j.push_back({z.real(), z.imag()});
-  return j;
-}
-
-std::vector<double> toVector(const Eigen::VectorXd& x) {
-  return {x.data(), x.data() + x.size()};
 }
 
 void printRow(FILE* f, const std::vector<double>& values, const std::string& tail = {}) {

@@ -11,6 +11,7 @@
 #include "dynamics/core/ModelRegistry.h"
 #include "dynamics/tools/Megno.h"
 #include "dynamics/tools/ToolSettings.h"
+#include "scenes/FixedPointJson.h"
 #include "scenes/SceneTools.h"
 #include "scenes/Sweep.h"
 #include "scenes/ToolRunner.h"
@@ -44,10 +45,6 @@ struct Runner {
   std::string help;              ///< what they mean (docstrings)
   std::function<pyb::object(Call&)> run;
 };
-
-std::vector<double> toVector(const Eigen::VectorXd& x) {
-  return {x.data(), x.data() + x.size()};
-}
 
 pyb::array_t<std::complex<double>> complexArray(const std::vector<std::complex<double>>& m) {
   return toArray(std::vector<std::complex<double>>(m));

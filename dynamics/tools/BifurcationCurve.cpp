@@ -1,10 +1,10 @@
 #include "dynamics/tools/BifurcationCurve.h"
+#include "dynamics/tools/Bordered.h"
 
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/Format.h"
 #include "dynamics/tools/Continuation.h"
 
-#include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -136,17 +136,9 @@ public:
 
   Eigen::VectorXd tangent(const Eigen::VectorXd& v, const Eigen::VectorXd& along,
                           const ToolControl& control) const {
-    const auto [G, DP] = system(v, control);
-    Eigen::MatrixXd M(k_ + 2, k_ + 2);
-    M.topRows(k_ + 1) = jacobian(v, DP, control);
-    M.row(k_ + 1) = along.transpose();
-    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(k_ + 2);
-    rhs[k_ + 1] = 1;
-    const Eigen::FullPivLU<Eigen::MatrixXd> lu(M);
-    if (!lu.isInvertible())
-      throw ComputationError("the curve's tangent is not defined (a singular point of the curve)");
-    Eigen::VectorXd t = lu.solve(rhs).normalized();
-    return t.dot(along) < 0 ? (-t).eval() : t;
+    const Eigen::MatrixXd DP = system(v, control).second;
+    return curveTangent(jacobian(v, DP, control), along,
+                        "the curve's tangent is not defined (a singular point of the curve)");
   }
 
   /// Newton on [F = 0, psi = 0, normal . (v - base) = sigma] from `v`.
@@ -167,16 +159,7 @@ public:
             format("the corrector did not converge in %d iterations (|Map^n(x) - x| = %.3g, "
                    "test function %.3g)",
                    iterations, G.head(k_).norm(), G[k_]));
-      Eigen::MatrixXd M(k_ + 2, k_ + 2);
-      M.topRows(k_ + 1) = jacobian(v, DP, control);
-      M.row(k_ + 1) = normal.transpose();
-      Eigen::VectorXd rhs(k_ + 2);
-      rhs.head(k_ + 1) = -G;
-      rhs[k_ + 1] = -c;
-      const Eigen::FullPivLU<Eigen::MatrixXd> lu(M);
-      if (!lu.isInvertible()) throw ComputationError("the corrector's bordered system is singular");
-      Eigen::VectorXd dv = lu.solve(rhs);
-      if (dv.norm() > s_.search.maxDistance) dv *= s_.search.maxDistance / dv.norm();
+      const Eigen::VectorXd dv = correctorStep(jacobian(v, DP, control), normal, G, c, s_.search.maxDistance);
       v += dv;
     }
   }

@@ -1,10 +1,10 @@
 #include "dynamics/tools/Continuation.h"
+#include "dynamics/tools/Bordered.h"
 
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/Format.h"
 
 #include <Eigen/Eigenvalues>
-#include <Eigen/LU>
 #include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
@@ -181,22 +181,10 @@ std::pair<Eigen::VectorXd, Eigen::MatrixXd> Continuation::residual(const Eigen::
 
 Eigen::VectorXd Continuation::tangentAt(const Eigen::VectorXd& u, const Eigen::VectorXd& along,
                                         const ToolControl& control) const {
-  const int k = unknowns();
-  const Eigen::MatrixXd J = residual(u, control).second;
-  // the null vector of J: the bordered system [J; along^T] t = (0, 1) (Allgower & Georg 1990, §2.1)
-  Eigen::MatrixXd M(k + 1, k + 1);
-  M.topRows(k) = J;
-  M.row(k) = along.transpose();
-  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(k + 1);
-  rhs[k] = 1;
-  const Eigen::FullPivLU<Eigen::MatrixXd> lu(M);
-  if (!lu.isInvertible())
-    throw ComputationError("the family's tangent is not defined (a branch point: the derivative of "
-                           "Map^n(x) - x in (x, parameter) has rank below " +
-                           std::to_string(k) + ")");
-  Eigen::VectorXd t = lu.solve(rhs);
-  t.normalize();
-  return t.dot(along) < 0 ? (-t).eval() : t;
+  return curveTangent(
+      residual(u, control).second, along,
+      "the family's tangent is not defined (a branch point: the derivative of Map^n(x) - x in "
+      "(x, parameter) loses rank)");
 }
 
 Continuation::Corrected Continuation::correct(Eigen::VectorXd u, const Eigen::VectorXd& base,
@@ -215,16 +203,7 @@ Continuation::Corrected Continuation::correct(Eigen::VectorXd u, const Eigen::Ve
     if (it >= iterations)
       throw ComputationError(format("the corrector did not converge in %d iterations (|Map^n(x) - x| = %.3g)",
                                     iterations, F.norm()));
-    Eigen::MatrixXd M(k + 1, k + 1);
-    M.topRows(k) = J;
-    M.row(k) = normal.transpose();
-    Eigen::VectorXd rhs(k + 1);
-    rhs.head(k) = -F;
-    rhs[k] = -g;
-    const Eigen::FullPivLU<Eigen::MatrixXd> lu(M);
-    if (!lu.isInvertible()) throw ComputationError("the corrector's bordered system is singular");
-    Eigen::VectorXd du = lu.solve(rhs);
-    if (du.norm() > s_.search.maxDistance) du *= s_.search.maxDistance / du.norm();
+    const Eigen::VectorXd du = correctorStep(J, normal, F, g, s_.search.maxDistance);
     u += du;
   }
 }

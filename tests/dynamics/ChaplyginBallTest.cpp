@@ -224,11 +224,11 @@ namespace rv {
 namespace {
 
 // The shipped scene's elliptic point (scenes/chaplygin_ball.json) continued up in K1 stops near K1 = 0.66648
-// by either method (issue 41). What happens there: every orbit keeps G = |M + K| (n = G^2 is an integral),
-// and along this family G falls to |c| = 0.3 -- M + K turns vertical, where the Andoyer-Deprit node angle g
-// is undefined: the section g = 0 and its coordinates (l, L/G) are singular (the pole of the chart). The
-// orbits close onto the steady rotation with M + K vertical and the family ends there; it is no fold (the
-// multipliers stay on the unit circle near -1, far from +1). This test pins that down from the numbers along
+// by either method (issue 41). Where it goes: every orbit keeps G = |M + K| (n = G^2 is an integral), and
+// along this family G falls to |c| = 0.3 -- M + K turns vertical, where the Andoyer-Deprit node angle g is
+// undefined: the section g = 0 and its coordinates (l, L/G) are singular there (the pole of the chart), and
+// two roots of the completion crowd near it, closer than the completion's scan step. It is no fold: the
+// multipliers stay on the unit circle near -1, far from +1. This test pins that down from the numbers along
 // the family.
 TEST(ChaplyginBall, TheShippedFixedPointsFamilyInK1EndsAtThePoleOfTheSectionNotAtAFold) {
   const Continuation::ModelAt at = [](double k1) {
