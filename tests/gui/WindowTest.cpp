@@ -84,6 +84,22 @@ long inked(const QImage& img) {
   return countPixels(img, [](const QColor& c) { return qGray(c.rgb()) < 200; });
 }
 
+// writes a JSON document (a sweep file) to `path`
+bool writeJson(const QString& path, const nlohmann::json& doc) {
+  QFile f(path);
+  if (!f.open(QIODevice::WriteOnly)) return false;
+  f.write(QByteArray::fromStdString(doc.dump()));
+  return true;
+}
+
+// a pixel of a sweep window's view over grid point `index`, or (-1, -1)
+QPoint pixelOver(const SweepWindow& w, long index) {
+  for (int y = 0; y < w.view()->height(); y += 3)
+    for (int x = 0; x < w.view()->width(); x += 3)
+      if (w.pointUnder(QPointF(x, y)) == index) return {x, y};
+  return {-1, -1};
+}
+
 // a window's screenshot kept as a test artifact; true when it is a real picture (not one flat colour: the
 // widgets' text and the views' drawings give dozens of colours at least)
 bool keep(const QImage& img, const QString& name) {
@@ -327,16 +343,12 @@ private slots:
   // point's scene (its initial point on the section) in the main window
   void sweepWindowFillsInAndOpensAPointsScene() {
     const QString path = dir_.filePath("hh_sweep.json");
-    QFile f(path);
-    QVERIFY(f.open(QIODevice::WriteOnly));
-    f.write(QByteArray::fromStdString(nlohmann::json{
-        {"scene", defaultScenePath("henon_heiles")},
-        {"axes",
-         {{{"id", "map.0"}, {"min", -0.2}, {"max", 0.2}, {"count", 5}},
-          {{"id", "map.1"}, {"min", -0.2}, {"max", 0.2}, {"count", 4}}}},
-        {"quantity", "megno"},
-        {"set", {{"megno.time", 100}}}}.dump()));
-    f.close();
+    QVERIFY(writeJson(path, nlohmann::json{{"scene", defaultScenePath("henon_heiles")},
+                                           {"axes",
+                                            {{{"id", "map.0"}, {"min", -0.2}, {"max", 0.2}, {"count", 5}},
+                                             {{"id", "map.1"}, {"min", -0.2}, {"max", 0.2}, {"count", 4}}}},
+                                           {"quantity", "megno"},
+                                           {"set", {{"megno.time", 100}}}}));
     SweepWindow* w = window_->openSweep(path);
     QVERIFY(w);
     Job* job = w->job();
@@ -351,10 +363,7 @@ private slots:
     QVERIFY(keep(w->grab().toImage(), "window_sweep.png"));
     QVERIFY(varied(w->view()->grabFramebuffer()));
     // the position of grid point 13 = (map.0, map.1) = (0.1, 0.0667)
-    QPoint at(-1, -1);
-    for (int y = 0; y < w->view()->height() && at.x() < 0; y += 3)
-      for (int x = 0; x < w->view()->width() && at.x() < 0; x += 3)
-        if (w->pointUnder(QPointF(x, y)) == 13) at = QPoint(x, y);
+    const QPoint at = pixelOver(*w, 13);
     QVERIFY2(at.x() >= 0, "no pixel over grid point 13");
     QTest::mouseClick(w->view(), Qt::LeftButton, {}, at);
     QTRY_VERIFY_WITH_TIMEOUT(window_->scene() && window_->scene()->model->info().id == "henon_heiles", 5000);
@@ -375,17 +384,14 @@ private slots:
   // 4)
   void sweepWindowDrawsABifurcationCurveOverItsChart() {
     const QString path = dir_.filePath("henon_types.json");
-    QFile f(path);
-    QVERIFY(f.open(QIODevice::WriteOnly));
-    f.write(QByteArray::fromStdString(nlohmann::json{
-        {"scene", defaultScenePath("henon_map")},
-        {"axes",
-         {{{"id", "a"}, {"min", 0.0}, {"max", 1.5}, {"count", 6}},
-          {{"id", "b"}, {"min", -0.5}, {"max", 0.5}, {"count", 5}}}},
-        {"quantity", "fixedpoint.type"},
-        {"set", {{"fixedpoint.guess", {0.63, 0.19}}, {"bifurcation_curve.kind", "period_doubling"}}}}
-                                          .dump()));
-    f.close();
+    QVERIFY(writeJson(path, nlohmann::json{{"scene", defaultScenePath("henon_map")},
+                                           {"axes",
+                                            {{{"id", "a"}, {"min", 0.0}, {"max", 1.5}, {"count", 6}},
+                                             {{"id", "b"}, {"min", -0.5}, {"max", 0.5}, {"count", 5}}}},
+                                           {"quantity", "fixedpoint.type"},
+                                           {"set",
+                                            {{"fixedpoint.guess", {0.63, 0.19}},
+                                             {"bifurcation_curve.kind", "period_doubling"}}}}));
     SweepWindow* w = window_->openSweep(path);
     QVERIFY(w);
     QTRY_VERIFY_WITH_TIMEOUT(w->job()->status() == Job::Status::Finished, 60000);
@@ -397,10 +403,7 @@ private slots:
     button->click();
     QVERIFY(button->isChecked());
     // grid point 20 = (a, b) = (0.6, 0.25): up in a there is no doubling, down there is one at a = 0.421875
-    QPoint at(-1, -1);
-    for (int y = 0; y < w->view()->height() && at.x() < 0; y += 3)
-      for (int x = 0; x < w->view()->width() && at.x() < 0; x += 3)
-        if (w->pointUnder(QPointF(x, y)) == 20) at = QPoint(x, y);
+    const QPoint at = pixelOver(*w, 20);
     QVERIFY2(at.x() >= 0, "no pixel over grid point 20");
     QTest::mouseClick(w->view(), Qt::LeftButton, {}, at);
     QVERIFY(!button->isChecked());
