@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
 
 namespace rv {
 
@@ -211,39 +210,32 @@ public:
     Eigen::VectorXd vLast = v0;
     double h = longest, travelled = 0;
     for (long n = 0; n < s_.maxPoints; ++n) {
-      std::optional<CurvePoint> next;
-      Eigen::VectorXd tNext;
       std::string why;
-      int spent = 0;
-      while (!next) {
-        try {
-          CurvePoint c = correct(vLast + h * t, vLast, t, h, 10, control, &spent);
-          const Eigen::VectorXd moved = difference(unknownsOf(c), vLast);
-          if (moved.norm() > 2 * h)
-            throw ComputationError(format("the corrector moved %.3g for a step of %.3g", moved.norm(), h));
-          tNext = tangent(unknownsOf(c), t, control);
-          if (tNext.dot(t) < 0.8 && h > shortest)
-            throw ComputationError("the tangent turned sharply in one step");
-          next = std::move(c);
-        } catch (const ComputationError& e) {
-          why = e.what();
-        } catch (const InputError& e) { // a parameter left its range
-          why = e.what();
-        }
-        if (next) break;
-        if (h / 2 < shortest)
-          return format("no point within a step of %.3g along the curve (%s)", h, why.c_str());
-        h /= 2;
-      }
-      const Eigen::VectorXd v = unknownsOf(*next);
+      auto step = stepAlongCurve<CurvePoint>(
+          vLast, t, h, shortest,
+          [&](const Eigen::VectorXd& predicted, const Eigen::VectorXd& base, const Eigen::VectorXd& normal,
+              double sigma) {
+            int spent = 0;
+            CurvePoint c = correct(predicted, base, normal, sigma, 10, control, &spent);
+            return std::pair{std::move(c), spent};
+          },
+          [&](const CurvePoint& c) { return unknownsOf(c); },
+          [&](const Eigen::VectorXd& v, const Eigen::VectorXd& w) { return difference(v, w); },
+          [&](const Eigen::VectorXd& v, const Eigen::VectorXd& along) { return tangent(v, along, control); },
+          why);
+      if (!step)
+        return format("no point within a step of %.3g along the curve (%s)",
+                      h * std::ldexp(1.0, -std::ilogb(h / shortest)), why.c_str());
+      CurvePoint& next = step->point;
+      const Eigen::VectorXd v = unknownsOf(next);
       // a point outside the box: the point on the side it crossed instead, and the curve ends there
-      if (!inBox(next->first, next->second)) {
+      if (!inBox(next.first, next.second)) {
         int coordinate = -1;
         double bound = 0;
-        if (next->first < s_.firstMin) coordinate = k_, bound = s_.firstMin;
-        if (next->first > s_.firstMax) coordinate = k_, bound = s_.firstMax;
-        if (next->second < s_.secondMin) coordinate = k_ + 1, bound = s_.secondMin;
-        if (next->second > s_.secondMax) coordinate = k_ + 1, bound = s_.secondMax;
+        if (next.first < s_.firstMin) coordinate = k_, bound = s_.firstMin;
+        if (next.first > s_.firstMax) coordinate = k_, bound = s_.firstMax;
+        if (next.second < s_.secondMin) coordinate = k_ + 1, bound = s_.secondMin;
+        if (next.second > s_.secondMax) coordinate = k_ + 1, bound = s_.secondMax;
         Eigen::VectorXd normal = Eigen::VectorXd::Zero(k_ + 2);
         normal[coordinate] = 1;
         const double w = (bound - vLast[coordinate]) / (v[coordinate] - vLast[coordinate]);
@@ -257,16 +249,16 @@ public:
         }
         return format("%s = %.12g reached", coordinate == k_ ? s_.first.c_str() : s_.second.c_str(), bound);
       }
-      noteEvents(last, *next, events, control);
-      out.push_back(*next);
-      if (onPoint) onPoint(*next);
+      noteEvents(last, next, events, control);
+      out.push_back(next);
+      if (onPoint) onPoint(next);
       travelled += difference(v, vLast).norm();
       // a closed curve: back near the start after going round
-      if (travelled > 4 * longest && difference(v, v0).norm() < 0.5 * h) return "the curve closes";
-      last = std::move(*next);
+      if (travelled > 4 * longest && difference(v, v0).norm() < 0.5 * step->h) return "the curve closes";
+      last = std::move(next);
       vLast = v;
-      t = tNext;
-      h = spent <= 3 ? std::min(1.5 * h, longest) : spent >= 7 ? h / 2 : h;
+      t = step->tangent;
+      h = nextStepLength(*step, longest);
       control.progress(
           std::min(1.0, static_cast<double>(out.size()) / static_cast<double>(2 * s_.maxPoints)));
     }

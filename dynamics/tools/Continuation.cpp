@@ -8,7 +8,6 @@
 #include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <optional>
 
 namespace rv {
@@ -266,36 +265,25 @@ bool Continuation::arclengthStep(const ToolControl& control) {
   const ArcPoint last = arc_.back();
   const ContinuationPoint& lastPoint = points_.back();
   const double longest = std::abs(s_.step), shortest = longest * std::ldexp(1.0, -14);
-  double h = std::min(arcStep_, longest);
-  std::optional<Corrected> next;
-  Eigen::VectorXd tangent;
   std::string why;
-  while (!next) {
-    try {
-      Corrected c = correct(last.u + h * last.tangent, last.u, last.tangent, h, 10, control);
-      const Eigen::VectorXd u = unknownsOf(c.point);
-      const Eigen::VectorXd moved = arcDifference(u, last.u);
-      // a corrector that went far, or a tangent that turned sharply, may have jumped to another family
-      if (moved.norm() > 2 * h)
-        throw ComputationError(format("the corrector moved %.3g for a step of %.3g", moved.norm(), h));
-      tangent = tangentAt(u, last.tangent, control);
-      if (tangent.dot(last.tangent) < 0.8 && h > shortest)
-        throw ComputationError(
-            format("the tangent turned by %.0f degrees in one step",
-                   std::acos(std::clamp(tangent.dot(last.tangent), -1.0, 1.0)) * 180 / std::numbers::pi));
-      next = std::move(c);
-    } catch (const ComputationError& e) {
-      why = e.what();
-    } catch (const InputError& e) { // the parameter left its range
-      why = e.what();
-    }
-    if (next) break;
-    if (h / 2 < shortest)
-      throw ComputationError(format("no point within an arclength step of %.3g (%s): %s", h, why.c_str(),
-                                    whyItEnds(control).c_str()));
-    h /= 2;
-  }
-  arcStep_ = next->iterations <= 3 ? std::min(1.5 * h, longest) : next->iterations >= 7 ? h / 2 : h;
+  const double first = std::min(arcStep_, longest);
+  auto next = stepAlongCurve<ContinuationPoint>(
+      last.u, last.tangent, first, shortest,
+      [&](const Eigen::VectorXd& predicted, const Eigen::VectorXd& base, const Eigen::VectorXd& normal,
+          double sigma) {
+        Corrected c = correct(predicted, base, normal, sigma, 10, control);
+        return std::pair{std::move(c.point), c.iterations};
+      },
+      [&](const ContinuationPoint& c) { return unknownsOf(c); },
+      [&](const Eigen::VectorXd& v, const Eigen::VectorXd& w) { return arcDifference(v, w); },
+      [&](const Eigen::VectorXd& v, const Eigen::VectorXd& along) { return tangentAt(v, along, control); },
+      why);
+  if (!next)
+    throw ComputationError(format("no point within an arclength step of %.3g (%s): %s",
+                                  first * std::ldexp(1.0, -std::ilogb(first / shortest)), why.c_str(),
+                                  whyItEnds(control).c_str()));
+  const Eigen::VectorXd& tangent = next->tangent;
+  arcStep_ = nextStepLength(*next, longest);
 
   // the window between the start value and the finite value: a point past either end is replaced by the
   // point at that end (the guess interpolated between the last two), and the family ends there

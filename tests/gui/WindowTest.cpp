@@ -396,15 +396,18 @@ private slots:
     QVERIFY(w);
     QTRY_VERIFY_WITH_TIMEOUT(w->job()->status() == Job::Status::Finished, 60000);
     QTRY_COMPARE_WITH_TIMEOUT(w->done(), 30L, 5000);
-    QTest::qWait(300);
-    (void)w->view()->grabFramebuffer(); // drawn: the chart's plot area is laid out
     auto* button = w->findChild<QPushButton*>("bifurcationCurve");
     QVERIFY(button);
     button->click();
     QVERIFY(button->isChecked());
-    // grid point 20 = (a, b) = (0.6, 0.25): up in a there is no doubling, down there is one at a = 0.421875
-    const QPoint at = pixelOver(*w, 20);
-    QVERIFY2(at.x() >= 0, "no pixel over grid point 20");
+    // grid point 20 = (a, b) = (0.6, 0.25): up in a there is no doubling, down there is one at a = 0.421875;
+    // found once the chart is drawn (its plot area laid out)
+    const auto over20 = [&] {
+      (void)w->view()->grabFramebuffer();
+      return pixelOver(*w, 20);
+    };
+    QTRY_VERIFY2_WITH_TIMEOUT(over20().x() >= 0, "no pixel over grid point 20", 10000);
+    const QPoint at = over20();
     QTest::mouseClick(w->view(), Qt::LeftButton, {}, at);
     QVERIFY(!button->isChecked());
     QVERIFY(w->curveJob());
@@ -417,9 +420,8 @@ private slots:
       QVERIFY(curve.x[i] >= -1e-12 && curve.x[i] <= 1.5 + 1e-12 && curve.y[i] >= -0.5 - 1e-12 &&
               curve.y[i] <= 0.5 + 1e-12);
     }
-    QTest::qWait(400);
+    QTRY_VERIFY_WITH_TIMEOUT(varied(w->view()->grabFramebuffer()), 10000);
     QVERIFY(keep(w->grab().toImage(), "window_sweep_curve.png"));
-    QVERIFY(varied(w->view()->grabFramebuffer()));
     w->close();
   }
 
