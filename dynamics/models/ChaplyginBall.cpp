@@ -66,7 +66,8 @@ const ModelInfo& ChaplyginBall::staticInfo() {
                .defaultValue = 1e-3,
                .min = 1e-12,
                .max = 1e6,
-               .description = "scan step in G when a map point is completed through the energy"},
+               .description =
+                   "scan step in sqrt(G^2 - c^2) when a map point is completed through the energy"},
               {.id = "root_accuracy",
                .label = "Accuracy of root finding",
                .defaultValue = 1e-15,
@@ -161,7 +162,18 @@ std::vector<double> ChaplyginBall::completionRoots(double l, double LG, double g
   // h >= |M|^2 / (2 max J), so every root has G <= sqrt(2 E max J) + |K|
   const double Gmax = std::sqrt(2 * E / Jinv_.minCoeff()) + K_.norm() + 1e-9;
   const double Gmin = std::max(std::abs(c), 1e-12);
-  return findRoots(energyGap, Gmin, Gmax, params_["root_step"], params_["root_accuracy"]);
+  // The scan runs in rho = sqrt(G^2 - c^2), the length of the horizontal part of M + K, not in G: the state
+  // is smooth in rho across the pole G = |c| (M + K vertical, where the node angle g is undefined) and only
+  // as sqrt(G - |c|) in G, so two roots near the pole that lie 5e-4 apart in G lie 7e-3 apart in rho (the
+  // Chaplygin ball's elliptic family near K1 = 0.6666, issue 41). rho increases with G: the roots keep their
+  // order, and a step in rho is never coarser in G.
+  const double c2 = Gmin * Gmin;
+  const auto gOf = [c2](double rho) { return std::sqrt(c2 + rho * rho); };
+  auto roots = findRoots([&](double rho) { return energyGap(gOf(rho)); }, 0.0, std::sqrt(Gmax * Gmax - c2),
+                         params_["root_step"], params_["root_accuracy"]);
+  for (double& r : roots)
+    r = gOf(r);
+  return roots;
 }
 
 void ChaplyginBall::stateOnSection(double l, double LG, double g0, double G, Eigen::Vector3d& M,

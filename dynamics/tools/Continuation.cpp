@@ -49,6 +49,69 @@ bool hasComplexPair(FixedPointType t) {
   return t == FixedPointType::Elliptic || t == FixedPointType::StableFocus ||
          t == FixedPointType::UnstableFocus;
 }
+/// The flow's speed in its core components at a map point's state: how far the orbit through it is from an
+/// equilibrium. Negative where the point has no state.
+double coreSpeed(const Continuation::ModelAt& modelAt, const IntegratorFactory& make,
+                 const SectionSettings& section, const ContinuationPoint& p) {
+  try {
+    const auto model = modelAt(p.parameter);
+    const ReturnMap map(*model, make, section);
+    const Eigen::VectorXd x = map.stateOf(p.fixedPoint.point);
+    Eigen::VectorXd dx(x.size());
+    model->rhs(x.data(), dx.data());
+    const int core = model->info().coreDimension > 0 ? model->info().coreDimension : model->dimension();
+    return dx.head(core).norm();
+  } catch (const std::exception&) {
+    return -1;
+  }
+}
+
+/// Whether a flow's family of periodic orbits shrinks onto an equilibrium at its end, as a Lyapunov family
+/// ends at its centre: there the orbit's size and the flow's speed along it vanish as the square root of the
+/// distance to the parameter value where the equilibrium has the orbit's integrals, |f|^2 ~ a (p* - p). Two
+/// extrapolations of |f|^2 to zero (from points at about two and four times the remaining distance) must
+/// agree. Says so with the evidence, or nothing.
+std::string shrinksOntoAnEquilibrium(const std::vector<ContinuationPoint>& points,
+                                     const Continuation::ModelAt& modelAt, const IntegratorFactory& make,
+                                     const SectionSettings& section, const std::string& parameter) {
+  const std::size_t n = points.size();
+  if (n < 4) return {};
+  // the last monotone leg in the parameter
+  const double sense = points[n - 1].parameter > points[n - 2].parameter ? 1.0 : -1.0;
+  std::size_t first = n - 1;
+  while (first > 0 && (points[first].parameter - points[first - 1].parameter) * sense > 0)
+    --first;
+  const double pEnd = points[n - 1].parameter, speedEnd = coreSpeed(modelAt, make, section, points[n - 1]);
+  if (speedEnd < 0) return {};
+  const double vEnd = speedEnd * speedEnd;
+  const auto nearest = [&](double distance) {
+    std::size_t best = first;
+    for (std::size_t i = first; i + 1 < n; ++i)
+      if (std::abs(std::abs(pEnd - points[i].parameter) - distance) <
+          std::abs(std::abs(pEnd - points[best].parameter) - distance))
+        best = i;
+    return best;
+  };
+  const auto zeroFrom = [&](std::size_t i) -> std::optional<double> {
+    const double speed = coreSpeed(modelAt, make, section, points[i]);
+    const double v = speed * speed, dp = pEnd - points[i].parameter;
+    if (speed < 0 || !(v > vEnd) || dp == 0) return std::nullopt;
+    return pEnd + vEnd * dp / (v - vEnd);
+  };
+  const double leg = std::abs(pEnd - points[first].parameter);
+  const auto rough = zeroFrom(nearest(leg / 2));
+  if (!rough) return {};
+  const double gap = std::abs(*rough - pEnd);
+  if (!(gap < leg / 4)) return {};
+  const auto twice = zeroFrom(nearest(2 * gap)), fourTimes = zeroFrom(nearest(4 * gap));
+  if (!twice || !fourTimes || std::abs(*twice - *fourTimes) > 0.2 * gap) return {};
+  return format(
+      "; the orbit shrinks onto an equilibrium: the flow's speed at the point, %.3g, falls as the "
+      "square root of the distance to %s = %.9g, where it vanishes -- the family of periodic orbits "
+      "ends there at an equilibrium with the orbit's integrals (Lyapunov's centre)",
+      speedEnd, parameter.c_str(), *twice);
+}
+
 } // namespace
 
 double neimarkSackerTest(const std::vector<std::complex<double>>& m, double tol) {
@@ -227,6 +290,8 @@ std::string Continuation::whyItEnds(const ToolControl& control) const {
     out += format("; the family turns away from %s (|dx/d%s| = %.3g)", s_.parameter.c_str(),
                   s_.parameter.c_str(), slope);
   }
+  if (!modelAt_(last.parameter)->isMap())
+    out += shrinksOntoAnEquilibrium(points_, modelAt_, make_, section_, s_.parameter);
   // how the map's points complete into states near the last one: not at all (the edge of the region of
   // allowed motion), or by a derivative that loses rank (a pole of the section's coordinates, as the origin
   // of polar coordinates: many map points, one state)
@@ -585,12 +650,15 @@ bool Continuation::runFamily(const ToolControl& control,
     return false;
   } catch (const ComputationError& e) {
     const double at = points_.empty() ? start_ : points_.back().parameter;
+    std::string hint;
+    if (!arclength && points_.size() >= 2) {
+      if (!modelAt_(at)->isMap())
+        hint = shrinksOntoAnEquilibrium(points_, modelAt_, make_, section_, s_.parameter);
+      if (hint.empty())
+        hint = " (where a family turns back in the parameter, continuation.method = arclength follows it)";
+    }
     throw ComputationError(format("continuation in %s after %s = %.10g: %s%s", s_.parameter.c_str(),
-                                  s_.parameter.c_str(), at, e.what(),
-                                  arclength || points_.size() < 2
-                                      ? ""
-                                      : " (where a family turns back in the parameter, continuation.method = "
-                                        "arclength follows it)"));
+                                  s_.parameter.c_str(), at, e.what(), hint.c_str()));
   }
   finished_ = true;
   return true;

@@ -223,14 +223,49 @@ TEST(ChaplyginBall, EverhartTaylorVernerAndAdamsConserveAllFourIntegralsToTwelve
 namespace rv {
 namespace {
 
-// The shipped scene's elliptic point (scenes/chaplygin_ball.json) continued up in K1 stops near K1 = 0.66648
-// by either method (issue 41). Where it goes: every orbit keeps G = |M + K| (n = G^2 is an integral), and
-// along this family G falls to |c| = 0.3 -- M + K turns vertical, where the Andoyer-Deprit node angle g is
-// undefined: the section g = 0 and its coordinates (l, L/G) are singular there (the pole of the chart), and
-// two roots of the completion crowd near it, closer than the completion's scan step. It is no fold: the
-// multipliers stay on the unit circle near -1, far from +1. This test pins that down from the numbers along
-// the family.
-TEST(ChaplyginBall, TheShippedFixedPointsFamilyInK1EndsAtThePoleOfTheSectionNotAtAFold) {
+// A steady rotation about the vertical of the scene's ball (I = (1, 1.4, 1.9), m = R = 1, K = (K1, 0.1,
+// 0.3)), found independently of the model's code: omega from M = J omega - D (gamma, omega) gamma by a linear
+// solve (the model uses a closed form), and Newton on (theta, phi, K1) for gamma x omega = 0 with M + K = c
+// gamma (then dM/dt = (M + K) x omega = 0 too) at the energy h. Returns (gamma, K1).
+std::pair<Eigen::Vector3d, double> steadyRotationAtEnergy(double c, double h, Eigen::Vector3d gamma,
+                                                          double k1) {
+  const Eigen::Vector3d I(1.0, 1.4, 1.9);
+  const double D = 1.0;
+  const auto unitOf = [](double th, double ph) {
+    return Eigen::Vector3d(std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph), std::cos(th));
+  };
+  const auto residual = [&](const Eigen::Vector3d& u) {
+    const Eigen::Vector3d g = unitOf(u[0], u[1]), K(u[2], 0.1, 0.3), M = c * g - K;
+    const Eigen::Matrix3d A =
+        Eigen::Matrix3d(I.asDiagonal()) + D * (Eigen::Matrix3d::Identity() - g * g.transpose());
+    const Eigen::Vector3d w = A.partialPivLu().solve(M), e = g.cross(w);
+    const Eigen::Vector3d t1 = unitOf(u[0] + M_PI / 2, u[1]), t2 = g.cross(t1);
+    return Eigen::Vector3d(e.dot(t1), e.dot(t2), 0.5 * M.dot(w) - h);
+  };
+  Eigen::Vector3d u(std::acos(gamma.normalized()[2]), std::atan2(gamma[1], gamma[0]), k1);
+  for (int it = 0; it < 30; ++it) {
+    const Eigen::Vector3d r = residual(u);
+    Eigen::Matrix3d jac;
+    for (int j = 0; j < 3; ++j) {
+      Eigen::Vector3d v = u;
+      v[j] += 1e-7;
+      jac.col(j) = (residual(v) - r) / 1e-7;
+    }
+    u -= jac.partialPivLu().solve(r);
+  }
+  EXPECT_LT(residual(u).norm(), 1e-13);
+  return {unitOf(u[0], u[1]), u[2]};
+}
+
+// The shipped scene's elliptic point (scenes/chaplygin_ball.json) continued up in K1 (issue 41). Every orbit
+// keeps G = |M + K| (G^2 is an integral) and G >= |c| by Cauchy-Schwarz, equal only where M + K = c gamma.
+// Along this family G falls to |c|: the periodic orbit shrinks onto a steady rotation about the vertical
+// (omega || gamma, M + K = c gamma) whose energy is the scene's h at K1* = 0.6665998 -- a Lyapunov family
+// ending at its centre, which the section g = 0 cannot hold (g is undefined where M + K is vertical). It is
+// no fold: the multipliers stay on the unit circle near -1. The completion scans sqrt(G^2 - c^2), where the
+// two roots near the pole stay apart (in G they crowd closer than the scan step and the family stopped at K1
+// = 0.66648). This test pins down the end against the steady rotation found independently.
+TEST(ChaplyginBall, TheShippedFixedPointsFamilyInK1ShrinksOntoASteadyRotationAboutTheVertical) {
   const Continuation::ModelAt at = [](double k1) {
     return test::makeModel("chaplygin_ball", {{"energy", 0.5},
                                               {"c", 0.3},
@@ -260,11 +295,47 @@ TEST(ChaplyginBall, TheShippedFixedPointsFamilyInK1EndsAtThePoleOfTheSectionNotA
   }
   ASSERT_FALSE(failure.empty()) << "the family went on to K1 = " << c.points().back().parameter;
   EXPECT_NE(failure.find("not a fold"), std::string::npos) << failure;
-  const double end = c.points().back().parameter;
-  EXPECT_GT(end, 0.6664);
-  EXPECT_LT(end, 0.6667);
+  const auto stateAt = [&](std::size_t i) {
+    const auto& p = c.points()[i];
+    const auto m = at(p.parameter);
+    return ReturnMap(*m, verner, section).stateOf(p.fixedPoint.point);
+  };
+  const std::size_t last = c.points().size() - 1;
+  const double end = c.points()[last].parameter;
+  const Eigen::VectorXd x = stateAt(last);
+  const auto [gamma, kStar] = steadyRotationAtEnergy(0.3, 0.5, x.segment<3>(3), end);
+  EXPECT_NEAR(kStar, 0.6666, 1e-4);
+  // followed past 0.6665, to within 1e-4 of the steady rotation
+  EXPECT_GT(end, 0.6665);
+  EXPECT_LT(end, kStar);
+  EXPECT_LT(kStar - end, 1e-4);
+  // the tool says so, and where: its extrapolation of the flow's speed to zero
+  const std::string said = "the orbit shrinks onto an equilibrium";
+  ASSERT_NE(failure.find(said), std::string::npos) << failure;
+  const std::size_t where = failure.find("K1 = ", failure.find(said));
+  ASSERT_NE(where, std::string::npos) << failure;
+  EXPECT_NEAR(std::stod(failure.substr(where + 5)), kStar, 1e-7) << failure;
+  // natural continuation with a small step gets closer, and its failure says the same, to 1e-8
+  ContinuationSettings natural = s;
+  natural.method = ContinuationMethod::Natural;
+  natural.step = 2e-4;
+  Continuation n(at, verner, section, 0.66, Eigen::Vector2d(-1.6661, 0.1045), natural);
+  std::string naturalFailure;
+  try {
+    n.run({});
+  } catch (const ComputationError& e) {
+    naturalFailure = e.what();
+  }
+  EXPECT_LT(kStar - n.points().back().parameter, 1e-5);
+  const std::size_t naturalSays = naturalFailure.find(said);
+  ASSERT_NE(naturalSays, std::string::npos) << naturalFailure;
+  EXPECT_NEAR(std::stod(naturalFailure.substr(naturalFailure.find("K1 = ", naturalSays) + 5)), kStar, 1e-8)
+      << naturalFailure;
+  // the last point's state lies near the steady rotation, and G near |c|
+  EXPECT_LT((x.segment<3>(3) - gamma).norm(), 0.05);
+  EXPECT_LT((x.head<3>() - (0.3 * gamma - Eigen::Vector3d(kStar, 0.1, 0.3))).norm(), 0.05);
   double lastG = 1e9;
-  for (std::size_t i = 0; i < c.points().size(); i += 10) {
+  for (std::size_t i = 0; i <= last; i += 10) {
     const auto& p = c.points()[i];
     // elliptic all along, the multipliers far from +1
     for (const auto& m : p.fixedPoint.multipliers) {
@@ -272,32 +343,11 @@ TEST(ChaplyginBall, TheShippedFixedPointsFamilyInK1EndsAtThePoleOfTheSectionNotA
       EXPECT_GT(std::abs(m - 1.0), 1.9) << p.parameter;
     }
     // G of the point's state (constant along its orbit) falls toward |c|
-    const auto model = at(p.parameter);
-    const ReturnMap map(*model, verner, section);
-    const Eigen::VectorXd x = map.stateOf(p.fixedPoint.point);
-    const double G = (x.head<3>() + Eigen::Vector3d(p.parameter, 0.1, 0.3)).norm();
+    const double G = (stateAt(i).head<3>() + Eigen::Vector3d(p.parameter, 0.1, 0.3)).norm();
     EXPECT_LT(G, lastG) << p.parameter;
     lastG = G;
   }
-  const auto stateAt = [&](std::size_t i) {
-    const auto& p = c.points()[i];
-    const auto m = at(p.parameter);
-    return ReturnMap(*m, verner, section).stateOf(p.fixedPoint.point);
-  };
-  const auto gOf = [&](std::size_t i) {
-    return (stateAt(i).head<3>() + Eigen::Vector3d(c.points()[i].parameter, 0.1, 0.3)).norm();
-  };
-  const std::size_t last = c.points().size() - 1, before = last - 10;
-  const double G = gOf(last);
-  EXPECT_LT(G - 0.3, 1e-3); // G -> |c|
-  // G falls linearly in K1 there: it reaches |c| just past where the family was given up
-  const double reaches = end + (G - 0.3) * (end - c.points()[before].parameter) / (gOf(before) - G);
-  EXPECT_GT(reaches, end);
-  EXPECT_LT(reaches, end + 5e-4);
-  const auto model = at(end);
-  const Eigen::VectorXd x = stateAt(last);
-  EXPECT_GT(model->observables()[static_cast<std::size_t>(model->findObservable("H/G"))].value(0, x.data()),
-            0.998); // H/G -> 1: M + K nearly vertical
+  EXPECT_LT((x.head<3>() + Eigen::Vector3d(end, 0.1, 0.3)).norm() - 0.3, 3e-4);
 }
 
 } // namespace
