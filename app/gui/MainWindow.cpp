@@ -36,6 +36,7 @@
 #include <QFileInfo>
 #include <QInputDialog>
 #include <QLabel>
+#include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
@@ -292,6 +293,20 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   auto* continuation = tools->addAction("Continue the fixed point", map_, &MapPanel::startContinuation);
   continuation->setToolTip("the family in continuation.parameter up to continuation.to (control panel)");
   continuation->setShortcut(QKeySequence("Ctrl+Shift+C"));
+  // branch switching: one entry per period doubling the last continuation located
+  auto* doubled = tools->addMenu("Follow the doubled family");
+  doubled->setToolTipsVisible(true);
+  connect(doubled, &QMenu::aboutToShow, this, [this, doubled] {
+    doubled->clear();
+    const auto& doublings = map_->locatedDoublings();
+    if (doublings.empty())
+      doubled->addAction("no period doubling located yet: continue the fixed point first")->setEnabled(false);
+    for (std::size_t k = 0; k < doublings.size(); ++k)
+      doubled
+          ->addAction("born at the " + doublings[k], map_,
+                      [this, k] { map_->followDoubledFamily(static_cast<int>(k) + 1); })
+          ->setToolTip("the family of fixed points of doubled order, continued to continuation.to");
+  });
   auto* help = menuBar()->addMenu("&Help");
   help->addAction("About rollviz…", this, [this] { (new AboutDialog(view_, this))->show(); })
       ->setToolTip("the version, the libraries and the renderers (GPU or software) behind the pictures");

@@ -361,11 +361,46 @@ void MapPanel::startSeparatrices() {
 void MapPanel::startContinuation() {
   const auto sm = sceneMap();
   if (!sm) return;
+  ContinuationSettings settings = sm->continuation();
+  startContinuationWith(settings, "continuing the scene's fixed point");
+}
+
+void MapPanel::followDoubledFamily(int k) {
+  const auto sm = sceneMap();
+  if (!sm) return;
+  if (k < 1 || k > static_cast<int>(doublings_.size())) {
+    emit message(
+        doublings_.empty()
+            ? "no period doubling located: continue the fixed point first (Tools > Continue the fixed "
+              "point)"
+            : QString("there are %1 located period doublings, not %2").arg(doublings_.size()).arg(k));
+    return;
+  }
+  ContinuationSettings settings = sm->continuation();
+  settings.switchAt = k;
+  startContinuationWith(settings, "following the family of doubled order born at the " + doublings_[k - 1]);
+}
+
+std::vector<std::pair<double, double>> MapPanel::toolPoints(int id) const {
+  std::vector<std::pair<double, double>> out;
+  for (const auto& t : tools_)
+    if (t.job->id() == id)
+      for (std::size_t i = 0; i < t.x.size(); ++i)
+        out.emplace_back(t.x[i], t.y[i]);
+  return out;
+}
+
+void MapPanel::startContinuationWith(const ContinuationSettings& settings, const QString& said) {
+  const auto sm = sceneMap();
+  if (!sm) return;
   try {
-    auto task = std::make_unique<ContinuationTask>(sm->taskSpec(), sm->continuation());
+    auto task = std::make_unique<ContinuationTask>(sm->taskSpec(), settings);
     ContinuationTask* raw = task.get();
-    const std::string parameter = sm->continuation().parameter;
-    startTool(std::move(task), {0.95, 0.55, 0.1}, [this, raw, parameter](ToolSeries& t) {
+    const std::string parameter = settings.parameter;
+    // the doublings of a family followed from the scene's point are where a later switch can start
+    const int run = settings.switchAt == 0 ? ++continuationRun_ : -1;
+    if (run > 0) doublings_.clear();
+    startTool(std::move(task), {0.95, 0.55, 0.1}, [this, raw, parameter, run](ToolSeries& t) {
       std::vector<ContinuationPoint> points;
       std::vector<TypeChange> changes;
       raw->points().take(points);
@@ -374,11 +409,17 @@ void MapPanel::startContinuation() {
         t.x.push_back(p.fixedPoint.point[0]), t.y.push_back(p.fixedPoint.point[1]);
         offerMultipliers(t, p.parameter, p.fixedPoint.multipliers);
       }
-      for (const auto& c : changes)
-        emit message(QString::fromStdString(describe(c, parameter)));
+      for (const auto& c : changes) {
+        const QString text = QString::fromStdString(describe(c, parameter));
+        if (run == continuationRun_ && c.kind == TypeChange::Kind::MultiplierMinusOne)
+          doublings_.push_back(QString("period doubling at %1 = %2")
+                                   .arg(QString::fromStdString(parameter))
+                                   .arg(c.parameter, 0, 'g', 12));
+        emit message(text);
+      }
       return !points.empty();
     });
-    emit message("continuing the scene's fixed point");
+    emit message(said);
   } catch (const InputError& e) {
     emit message(QString::fromStdString(e.what()));
   }

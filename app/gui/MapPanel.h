@@ -37,6 +37,8 @@ class PoincareTask;
 class FixedPointTask;
 class MegnoTask;
 
+struct ContinuationSettings;
+
 class MapPanel : public QWidget {
   Q_OBJECT
 public:
@@ -64,6 +66,14 @@ public:
   /// Continues the scene's fixed point (its continuation settings); the family is drawn on the map and each
   /// change of type reported.
   void startContinuation();
+  /// The period doublings the last continuation of the scene's fixed point located, in the order found, each
+  /// as "period doubling at a = ...": where followDoubledFamily(k) can switch.
+  const std::vector<QString>& locatedDoublings() const { return doublings_; }
+  /// Branch switching: continues the family of doubled order born at the k-th (1-based) located period
+  /// doubling (continuation.switch = k) as a new job; it is drawn on the map like any family.
+  void followDoubledFamily(int k);
+  /// The map points a tool's job (a family, a tree, a separatrix) has drawn so far; empty for another job.
+  std::vector<std::pair<double, double>> toolPoints(int id) const;
   /// A trajectory from a full state (the scene's initial one for the Tools tab's Create).
   void startFrom(const Eigen::VectorXd& state) { start(state); }
   /// The period-doubling tree of the scene's fixed point (bifurcation_tree section); its families drawn.
@@ -216,6 +226,10 @@ private:
     bool everyStep = false; ///< a tree: each step is output (not by the filter's period)
   };
   std::vector<ToolSeries> tools_;
+  /// Starts a continuation with these settings; `said` goes to the Results dock.
+  void startContinuationWith(const ContinuationSettings& settings, const QString& said);
+  std::vector<QString> doublings_; ///< located by the last continuation started with switch 0
+  int continuationRun_ = 0;        ///< which continuation's doublings doublings_ holds
   /// Adds a tool's job, a series on the map for its output (`pull` fetches it), and starts it.
   void startTool(std::unique_ptr<Task> task, const Rgb& colour, std::function<bool(ToolSeries&)> pull);
   /// A fixed point of a family: kept, and offered to the open multipliers filters.

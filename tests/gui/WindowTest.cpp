@@ -934,6 +934,50 @@ private slots:
     later->close();
   }
 
+  // Branch switching in the GUI (issue 41): Tools > Follow the doubled family lists the period doublings the
+  // last continuation located; an entry continues the 2-cycle born there as a new job. The Henon map
+  // x' = 1 - a x^2 + y, y' = b x doubles at a = 3 (1 - b)^2 / 4, and its 2-cycle's x solve
+  // a x^2 - (1 - b) x + (1 - b)^2 / a - 1 = 0.
+  void toolsMenuFollowsTheDoubledFamilyFromALocatedDoubling() {
+    nlohmann::json doc = loadScene(defaultScenePath("henon_map")).document;
+    doc["parameters"]["a"] = 0.2;
+    doc["fixedpoint"] = {{"guess", {1.09, 0.33}}};
+    doc["continuation"] = {{"parameter", "a"}, {"to", 0.6}, {"step", 0.02}};
+    QVERIFY(window_->runDocument(doc));
+    MapPanel* map = window_->mapPanel();
+    QMenu* menu = nullptr;
+    for (QMenu* m : window_->findChildren<QMenu*>())
+      if (m->title() == "Follow the doubled family") menu = m;
+    QVERIFY(menu);
+    emit menu->aboutToShow(); // nothing located yet: one disabled entry saying why
+    QCOMPARE(menu->actions().size(), qsizetype(1));
+    QVERIFY(!menu->actions()[0]->isEnabled());
+    map->startContinuation();
+    Job* parent = map->jobs().jobs().back();
+    QTRY_VERIFY_WITH_TIMEOUT(!parent->running(), 20000);
+    map->drain();
+    const double b = 0.3, doubling = 3 * (1 - b) * (1 - b) / 4;
+    QCOMPARE(map->locatedDoublings().size(), std::size_t(1));
+    QVERIFY(std::abs(map->locatedDoublings()[0].section('=', 1).trimmed().toDouble() - doubling) < 1e-8);
+    emit menu->aboutToShow();
+    QCOMPARE(menu->actions().size(), qsizetype(1));
+    QVERIFY(menu->actions()[0]->isEnabled());
+    QVERIFY(menu->actions()[0]->text().contains(map->locatedDoublings()[0]));
+    menu->actions()[0]->trigger();
+    Job* doubled = map->jobs().jobs().back();
+    QVERIFY(doubled != parent);
+    QTRY_VERIFY_WITH_TIMEOUT(!doubled->running(), 20000);
+    map->drain();
+    const auto points = map->toolPoints(doubled->id());
+    QVERIFY(points.size() > 2);
+    // the family ends at continuation.to: a point of the closed-form 2-cycle at a = 0.6, not the fixed point
+    const double a = 0.6, root = std::sqrt(4 * a - 3 * (1 - b) * (1 - b));
+    const double x = points.back().first;
+    QVERIFY(std::min(std::abs(x - (1 - b + root) / (2 * a)), std::abs(x - (1 - b - root) / (2 * a))) < 1e-8);
+    // y1 = b x2, and the cycle's two x sum to (1 - b) / a
+    QVERIFY(std::abs(points.back().second - b * ((1 - b) / a - x)) < 1e-8);
+  }
+
   // manual §2.4.4: on the bifurcation diagram each trajectory of the map is a point of the plane of first
   // integrals ((n, h) for the Chaplygin ball), following an edit of its energy
   void diagramWindowMarksTheTrajectories() {
