@@ -4,7 +4,8 @@
 # A Poincaré map drawn with matplotlib, the largest Lyapunov exponent against the energy, and a frame of the
 # 3D view, all from the `rollviz` module. Run it as a script (`python3 examples/chaplygin_study.py OUT_DIR`)
 # or open `chaplygin_study.ipynb` in Jupyter (the same cells). Import the module from a build tree with
-# `PYTHONPATH=build/dev/python`, or after `cmake --install`.
+# `PYTHONPATH=build/release/python` (or build/dev/python), or after `cmake --install`. `help(rollviz.Scene.lyapunov)`
+# and the guide's Python page (docs/python.md) say what every call takes and returns.
 
 # %%
 import json
@@ -26,7 +27,7 @@ scene_file = os.path.join(here, "..", "scenes", "chaplygin_ball.json")
 if not os.path.exists(scene_file):
     scene_file = os.path.join(rollviz.scenes_directory(), "chaplygin_ball.json")
 ball = rollviz.Scene.load(scene_file)
-print(ball, "parameters:", ball.parameters)
+print(ball, "parameters:", dict(ball.parameters))
 
 # %% [markdown]
 # ## The Poincaré map
@@ -37,17 +38,18 @@ fig, ax = plt.subplots(figsize=(6, 5))
 starts = [[0.5, 0.2], [-1.2, 0.1], [1.5, -0.3]]
 points = 0
 for start in starts:
-    P = ball.copy().set(**{"initial.map": start}).poincare(points=400)
+    P = ball.set(**{"initial.map": start}).poincare(points=400)  # a new scene; `ball` stays as it is
     points += len(P)
-    ax.plot(P[:, 0], P[:, 1], ".", markersize=1.5, label=f"from {start}")
-x, y = ball.map_coordinates
+    x, y = ball.map_coordinates
+    ax.plot(P[x], P[y], ".", markersize=1.5, label=f"from {start}")  # the map's points by name
 ax.set(xlabel=x, ylabel=y, title="Chaplygin ball: Poincaré map (g = 0)")
 ax.legend(loc="upper right", fontsize=7)
 fig.savefig(os.path.join(out, "poincare.png"), dpi=100)
 
 # %% [markdown]
 # ## The largest Lyapunov exponent against the energy
-# `lyapunov(count=1, time=...)`: the settings of the scene's `lyapunov` section, for this call only. The
+# `lyapunov(count=1, time=..., energy=h)`: settings of the `lyapunov` section and a model parameter, for this
+# call only (`help(rollviz.Scene.lyapunov)` lists them all). The
 # Chaplygin ball with a gyrostat is integrable (Borisov & Mamaev), so the estimate falls towards zero like
 # ln(t)/t on every energy level: a chaotic system would level off at a positive value instead.
 
@@ -55,7 +57,7 @@ fig.savefig(os.path.join(out, "poincare.png"), dpi=100)
 energies = np.linspace(0.3, 0.7, 5)
 largest = []
 for h in energies:
-    r = ball.copy().set(energy=float(h)).lyapunov(count=1, time=500)
+    r = ball.lyapunov(count=1, time=500, energy=h)
     largest.append(r.exponents[0])
 fig, ax = plt.subplots(figsize=(6, 4))
 ax.plot(energies, largest, "o-")

@@ -209,25 +209,32 @@ struct TextKey {
   const char* section;
   const char* misplaced;
   void (*read)(const json& j, const Where& w, Scene& scene);
-  const char* description = ""; ///< for the flag `--KEY` of a tool's generic command (SectionTextKeys.h)
+  const char* description = ""; ///< what it is (Python's signatures; the flag's help where `flag`)
+  const char* type = "text";    ///< text, number or numbers (SectionTextKeys.h)
+  bool flag = false;            ///< a flag `--KEY` of the tool's generic command
 };
 const TextKey textKeys[] = {
     {"section", "poincare", "",
-     [](const json& j, const Where& w, Scene& scene) { scene.poincare.observable = text(j, w); }},
+     [](const json& j, const Where& w, Scene& scene) { scene.poincare.observable = text(j, w); },
+     "the observable whose crossings of poincare.value make the section"},
     {"guess", "fixedpoint", "the guess belongs to the \"fixedpoint\" section",
      [](const json& j, const Where& w, Scene& scene) {
        if (!j.is_array()) w.fail("expected an array of numbers");
        for (std::size_t i = 0; i < j.size(); ++i)
          scene.guess.push_back(number(j[i], w / std::to_string(i)));
-     }},
+     },
+     "the starting point of the search in map coordinates (default: the scene's initial map point)",
+     "numbers"},
     {"parameter", "continuation", "belongs to the \"continuation\" section",
      [](const json& j, const Where& w, Scene& scene) {
        scene.continuationParameter = text(j, w);
        if (scene.model->info().parameters.find(scene.continuationParameter) < 0)
          w.fail("not a parameter of " + scene.model->info().id);
-     }},
+     },
+     "the model parameter to continue in"},
     {"to", "continuation", "belongs to the \"continuation\" section",
-     [](const json& j, const Where& w, Scene& scene) { scene.continuationTo = number(j, w); }},
+     [](const json& j, const Where& w, Scene& scene) { scene.continuationTo = number(j, w); },
+     "the finite value of the parameter", "number"},
     {"second_parameter", "bifurcation_curve", "belongs to the \"bifurcation_curve\" section",
      // read where it is used (scenes/BuiltinTools.cpp), from the document; checked here
      [](const json& j, const Where& w, Scene& scene) {
@@ -235,23 +242,34 @@ const TextKey textKeys[] = {
        if (scene.model->info().parameters.find(id) < 0)
          w.fail("not a parameter of " + scene.model->info().id);
      },
-     "the second parameter of the curve (the first is continuation.parameter)"},
+     "the second parameter of the curve (the first is continuation.parameter)", "text", true},
     {"function", "spectrum", "",
-     [](const json& j, const Where& w, Scene& scene) { scene.spectrum.function = text(j, w); }},
+     [](const json& j, const Where& w, Scene& scene) { scene.spectrum.function = text(j, w); },
+     "the observable whose spectrum is taken"},
     {"x", "plot", "",
-     [](const json& j, const Where& w, Scene& scene) { scene.plot.settings.axes[0] = text(j, w); }},
+     [](const json& j, const Where& w, Scene& scene) { scene.plot.settings.axes[0] = text(j, w); },
+     "the observable on the x axis"},
     {"y", "plot", "",
-     [](const json& j, const Where& w, Scene& scene) { scene.plot.settings.axes[1] = text(j, w); }},
+     [](const json& j, const Where& w, Scene& scene) { scene.plot.settings.axes[1] = text(j, w); },
+     "the observable on the y axis"},
     {"z", "plot", "",
-     [](const json& j, const Where& w, Scene& scene) { scene.plot.settings.axes.push_back(text(j, w)); }},
+     [](const json& j, const Where& w, Scene& scene) { scene.plot.settings.axes.push_back(text(j, w)); },
+     "the observable on the z axis (a 3D plot)"},
     {"condition", "plot", "",
-     [](const json& j, const Where& w, Scene& scene) { scene.plot.settings.condition = text(j, w); }},
-    {"x_min", "plot", "", readPlotRange<0>},
-    {"x_max", "plot", "", readPlotRange<1>},
-    {"y_min", "plot", "", readPlotRange<2>},
-    {"y_max", "plot", "", readPlotRange<3>},
-    {"z_min", "plot", "", readPlotRange<4>},
-    {"z_max", "plot", "", readPlotRange<5>},
+     [](const json& j, const Where& w, Scene& scene) { scene.plot.settings.condition = text(j, w); },
+     "the condition a point must meet to be plotted"},
+    {"x_min", "plot", "", readPlotRange<0>,
+     "the least value of the plot window's x axis (default: the data's)", "number"},
+    {"x_max", "plot", "", readPlotRange<1>,
+     "the largest value of the plot window's x axis (default: the data's)", "number"},
+    {"y_min", "plot", "", readPlotRange<2>,
+     "the least value of the plot window's y axis (default: the data's)", "number"},
+    {"y_max", "plot", "", readPlotRange<3>,
+     "the largest value of the plot window's y axis (default: the data's)", "number"},
+    {"z_min", "plot", "", readPlotRange<4>,
+     "the least value of the plot window's z axis (default: the data's)", "number"},
+    {"z_max", "plot", "", readPlotRange<5>,
+     "the largest value of the plot window's z axis (default: the data's)", "number"},
 };
 
 // the tool sections: numbers and choices from their tables, plus the text keys above
@@ -515,10 +533,10 @@ std::string defaultScenePath(const std::string& problemId) {
   return (std::filesystem::path(scenesDirectory()) / (problemId + ".json")).string();
 }
 
-std::vector<SectionTextKey> sectionTextKeys(const std::string& section) {
+std::vector<SectionTextKey> sectionTextKeys(const std::string& section, bool flagsOnly) {
   std::vector<SectionTextKey> keys;
   for (const auto& t : textKeys)
-    if (section == t.section && *t.description) keys.push_back({t.key, t.description});
+    if (section == t.section && (t.flag || !flagsOnly)) keys.push_back({t.key, t.description, t.type});
   return keys;
 }
 

@@ -23,8 +23,9 @@ def cells_of(text):
 
 def notebook(text):
     cells = []
-    for kind, source in cells_of(text):
-        cell = {"cell_type": kind, "metadata": {}, "source": source.splitlines(keepends=True)}
+    for number, (kind, source) in enumerate(cells_of(text)):
+        # nbformat 4.5 wants an id per cell: stable ones, so the notebook only changes with the script
+        cell = {"cell_type": kind, "id": f"cell-{number}", "metadata": {}, "source": source.splitlines(keepends=True)}
         if kind == "code":
             cell.update(execution_count=None, outputs=[])
         cells.append(cell)

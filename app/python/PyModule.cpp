@@ -14,6 +14,7 @@
 #include "render/export/Figure.h"
 #include "render/export/VtkXmlFiles.h"
 #include "render/video/VideoExport.h"
+#include "rollviz/Version.h"
 #include "scenes/ModelFile.h"
 #include "scenes/ModuleLoader.h"
 #include "scenes/SceneCharts.h"
@@ -308,6 +309,7 @@ PYBIND11_MODULE(_rollviz, m) {
   using namespace rv::py;
   namespace pyb = pybind11;
   m.doc() = "rollviz: bodies rolling without slipping, and the tools of nonlinear dynamics (C++ core)";
+  m.attr("__version__") = ROLLVIZ_VERSION_STRING;
   // the modules of ROLLVIZ_MODULE_PATH and ~/.local/lib/rollviz/modules, before the package builds its
   // methods
   loadModules({}, [](const std::string& w) {
@@ -452,6 +454,9 @@ PYBIND11_MODULE(_rollviz, m) {
                                return toArray(std::vector<double>(
                                    s.initialState.data(), s.initialState.data() + s.initialState.size()));
                              })
+      .def_property_readonly(
+          "state_names", [](const Scene& s) { return s.model->info().stateNames; },
+          "The names of the state's components, in the order of initial_state.")
       .def_property_readonly("observables",
                              [](const Scene& s) {
                                std::vector<std::string> ids;

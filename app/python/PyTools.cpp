@@ -13,6 +13,7 @@
 #include "dynamics/tools/ToolSettings.h"
 #include "scenes/FixedPointJson.h"
 #include "scenes/SceneTools.h"
+#include "scenes/SectionTextKeys.h"
 #include "scenes/Sweep.h"
 #include "scenes/ToolRunner.h"
 
@@ -582,6 +583,24 @@ pyb::dict toolDict(const ToolEntry& e) {
   d["sweep_quantities"] = quantities;
   std::vector<std::string> sections = sectionsOf(e);
   d["sections"] = sections;
+  // every keyword a call takes, section by section: the table's numbers and choices, then the text keys
+  pyb::list keywords;
+  for (const auto& s : sections) {
+    if (const ToolSection* t = findToolSection(s))
+      for (pyb::handle h : describeTable(*t->table)) {
+        pyb::dict k = pyb::reinterpret_borrow<pyb::dict>(h);
+        k["section"] = s;
+        k["type"] = k.contains("choices") ? "choice" : k["integer"].cast<bool>() ? "integer" : "number";
+        keywords.append(k);
+      }
+    for (const auto& t : sectionTextKeys(s, false)) {
+      pyb::dict k;
+      k["id"] = t.key, k["description"] = t.description, k["type"] = t.type, k["section"] = s;
+      k["default"] = pyb::none();
+      keywords.append(k);
+    }
+  }
+  d["keywords"] = keywords;
   const Runner* runner = runnerOf(e);
   d["arguments"] = runner ? runner->args : std::vector<std::string>{};
   d["arguments_help"] = runner ? runner->help : std::string();

@@ -41,3 +41,25 @@ def test_the_study_runs_headless(tmp_path):
     lam = np.array(summary["largest_lyapunov"])
     # integrable: the estimates at t = 500 are small and positive, of the order of ln(t)/t = 0.012
     assert lam.shape == (5,) and np.isfinite(lam).all() and (lam > 0).all() and (lam < 0.03).all(), lam
+
+
+def test_the_notebook_runs_in_a_jupyter_kernel(tmp_path, monkeypatch):
+    """The notebook itself, cell by cell, in a real IPython kernel (Debian's python3-nbclient and
+    python3-ipykernel): its plots come back inline and it writes what the script writes."""
+    nbformat = pytest.importorskip("nbformat")
+    nbclient = pytest.importorskip("nbclient")
+    pytest.importorskip("ipykernel")
+    monkeypatch.delenv("MPLBACKEND", raising=False)  # the kernel's own inline backend, as in Jupyter
+    monkeypatch.setenv("PYDEVD_DISABLE_FILE_VALIDATION", "1")  # the debugger's note about frozen modules
+    with open(os.path.join(SOURCE, "examples", "chaplygin_study.ipynb")) as f:
+        nb = nbformat.read(f, as_version=4)
+    client = nbclient.NotebookClient(nb, timeout=300, kernel_name="python3",
+                                     resources={"metadata": {"path": str(tmp_path)}})
+    client.execute()
+    images = [o for c in nb.cells if c.cell_type == "code" for o in c.get("outputs", [])
+              if "image/png" in o.get("data", {})]
+    assert len(images) >= 3, "the map, the exponents and the frame are shown inline"
+    errors = [o for c in nb.cells if c.cell_type == "code" for o in c.get("outputs", []) if o.output_type == "error"]
+    assert not errors, errors
+    summary = json.load(open(tmp_path / "study_output" / "summary.json"))
+    assert summary["map_points"] == 1200 and summary["frame_shape"] == [360, 480, 3]

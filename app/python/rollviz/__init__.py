@@ -4,26 +4,51 @@
     s = rollviz.Scene.load("scenes/chaplygin_ball.json")      # or rollviz.Scene("chaplygin_ball", energy=0.4)
     m = rollviz.Model.load("examples/models/lorenz.json")      # a system written as equations (docs/models.md)
     s = rollviz.Scene(m, rho=28, **{"initial.state": {"x": 1, "y": 1, "z": 1}})
-    s.set(energy=0.4, **{"integrator.method": "everhart"})
-    t, X = s.integrate(time=100, every=0.1, columns=["t", "E", "M1"])
-    P = s.poincare(points=2000)              # map coordinates, t, sheet per row
-    r = s.lyapunov(time=1000)                # r.exponents, r.converged, r.t, r.history
+    s2 = s.set(energy=0.4, **{"integrator.method": "everhart"})  # a new scene; s is unchanged
+    r = s.integrate(time=100, every=0.1, columns=["t", "E", "M1"])
+    r["E"], r.t, r.final                     # named columns, the times, the whole state at the end
+    r.to_pandas()                            # a DataFrame (pandas), r.to_xarray() a Dataset (xarray)
+    s3 = s.with_state(r.final)               # a scene that starts where the run ended
+    P = s.poincare(points=2000)              # P["l"], P["L/G"], P.t, P.sheet; np.asarray(P) the rows
+    r = s.lyapunov(time=1000, energy=0.45)   # r.exponents, r.converged, r.history["L1"]
     img = s.render(size=(640, 480), time=5)  # H x W x 3 uint8
+    g = rollviz.sweep(s, axes={"energy": np.linspace(0.3, 0.6, 31)}, quantity="lyapunov")  # g.values[...]
 
 Every registered tool (rollviz.tools()) is a Scene method, those of the modules loaded at import
-(rollviz.modules(): ROLLVIZ_MODULE_PATH, ~/.local/lib/rollviz/modules; docs/modules.md) too; its keyword arguments are the settings of its
-scene section (s.megno(time=1e4) sets megno.time for that call), of the sections of the tools it hangs under
-(s.continuation(guess=[...]) is fixedpoint.guess), or any dotted scene key. Bad input raises ValueError with
-the command line's message, a failed computation rollviz.ComputationError; long calls release the GIL, take
-progress=callable(fraction) and stop on Ctrl-C with KeyboardInterrupt.
+(rollviz.modules(): ROLLVIZ_MODULE_PATH, ~/.local/lib/rollviz/modules; docs/modules.md) too. One keyword rule
+holds for every call: a tool's setting by its name (s.megno(time=1e4) is megno.time for that call, and
+s.continuation(guess=[...]) is fixedpoint.guess: the sections of the tools it hangs under), a model parameter by
+its plain name (energy=0.4), any scene key dotted (**{"integrator.method": "verner9"}). Arguments are
+keyword-only; an unknown keyword is a TypeError naming the nearest known ones, a value of the wrong type a
+TypeError saying what was expected, a bad value a ValueError; a failed computation raises
+rollviz.ComputationError. Long calls release the GIL, take progress=callable(fraction) and stop on Ctrl-C with
+KeyboardInterrupt. A Scene is a value: set() and with_state() return new scenes, and scenes pickle (as their
+JSON), so multiprocessing, joblib and Dask can take them.
 """
 
-from ._rollviz import ComputationError, Model, Scene, describe, integrators, modules, problems, scenes_directory, sweep
+import copy as _copy
+import difflib as _difflib
+import inspect as _inspect
+import json as _json
+import math as _math
+import numbers as _numbers
+import os as _os
+import tempfile as _tempfile
+import types as _types
+import typing as _typing
+
+import numpy as _np
+
+from ._rollviz import ComputationError, Model, Scene, __version__, describe, integrators, modules, problems
+from ._rollviz import scenes_directory
 from ._rollviz import _tools
+from ._rollviz import sweep as _sweep_file
 
-__all__ = ["ComputationError", "Model", "Result", "Scene", "describe", "integrators", "modules", "problems",
-           "scenes_directory", "sweep", "tools"]
+__all__ = ["ComputationError", "Model", "Result", "Scene", "SweepResult", "Table", "Trajectory", "__version__",
+           "describe", "integrators", "modules", "problems", "scenes_directory", "sweep", "tools"]
 
+
+# ---------------------------------------------------------------------------------------------------- results
 
 class Result(dict):
     """A tool's result: a dict whose keys are also attributes (r.exponents is r["exponents"])."""
@@ -38,6 +63,113 @@ class Result(dict):
         return list(self.keys()) + list(super().__dir__())
 
 
+def _optional(module, what):
+    try:
+        return __import__(module)
+    except ImportError:
+        raise ImportError(f"{what} needs {module} (Debian: apt install python3-{module})") from None
+
+
+class Table:
+    """Named columns of equal length: t["E"] (or t.E where the name is an identifier) is a column,
+    t.columns the names in order, len(t) the rows, np.asarray(t) the rows x columns array, iterating gives the
+    names (as a dict or a DataFrame does); t.to_pandas() and t.to_xarray() give a DataFrame and a Dataset."""
+
+    _dimension = "point"
+
+    def __init__(self, columns, data):
+        data = _np.asarray(data)
+        if data.ndim != 2 or data.shape[1] != len(columns):
+            raise ValueError(f"Table: {data.shape} does not fit the columns {columns}")
+        self._columns = list(columns)
+        self._data = data
+
+    @property
+    def columns(self):
+        """The column names, in order."""
+        return list(self._columns)
+
+    @property
+    def shape(self):
+        return self._data.shape
+
+    def keys(self):
+        return self.columns
+
+    def __iter__(self):
+        return iter(self._columns)
+
+    def __len__(self):
+        return self._data.shape[0]
+
+    def __contains__(self, name):
+        return name in self._columns
+
+    def __getitem__(self, key):
+        if isinstance(key, str):
+            if key not in self._columns:
+                near = _difflib.get_close_matches(key, self._columns, n=3)
+                raise KeyError(f"{key!r}: no such column (columns: {', '.join(self._columns)}"
+                               + (f"; did you mean {', '.join(near)}?" if near else "") + ")")
+            return self._data[:, self._columns.index(key)]
+        return self._data[key]
+
+    def __getattr__(self, name):
+        if not name.startswith("_") and name in self.__dict__.get("_columns", ()):
+            return self[name]
+        raise AttributeError(name)
+
+    def __dir__(self):
+        return [c for c in self._columns if c.isidentifier()] + list(super().__dir__())
+
+    def __array__(self, dtype=None, copy=None):
+        return self._data if dtype is None else self._data.astype(dtype)
+
+    def __repr__(self):
+        return f"<rollviz.{type(self).__name__}: {len(self)} rows of {', '.join(self._columns)}>"
+
+    def to_pandas(self):
+        """The columns as a pandas DataFrame."""
+        pandas = _optional("pandas", "to_pandas()")
+        return pandas.DataFrame({c: self._data[:, k] for k, c in enumerate(self._columns)})
+
+    def to_xarray(self):
+        """The columns as an xarray Dataset of one dimension."""
+        xarray = _optional("xarray", "to_xarray()")
+        return xarray.Dataset({c: (self._dimension, self._data[:, k]) for k, c in enumerate(self._columns)})
+
+
+class Trajectory(Table):
+    """Samples of a trajectory: the named columns asked for (Table), r.t the times, r.final the whole state at
+    the last sample (named: r.final_named), which Scene.with_state takes to go on from there."""
+
+    _dimension = "t"
+
+    def __init__(self, columns, data, t, final=None, state_names=()):
+        super().__init__(columns, data)
+        self.t = _np.asarray(t)
+        self.final = None if final is None else _np.asarray(final)
+        self.final_named = None if final is None else dict(zip(state_names, (float(v) for v in final)))
+
+    def to_xarray(self):
+        """The columns as an xarray Dataset over the coordinate t."""
+        xarray = _optional("xarray", "to_xarray()")
+        return xarray.Dataset({c: ("t", self._data[:, k]) for k, c in enumerate(self._columns) if c != "t"},
+                              coords={"t": self.t})
+
+
+class SweepResult(Result):
+    """A sweep's result: values[name] an array shaped like the grid (the first axis first), axes[id] each axis'
+    coordinates, columns the flat columns as the CSV has them (first axis fastest), shape, status per point
+    (whole), seconds, quantity, complete. to_xarray() gives a Dataset over the axes."""
+
+    def to_xarray(self):
+        xarray = _optional("xarray", "to_xarray()")
+        dims = list(self.axes)
+        return xarray.Dataset({k: (dims, v) for k, v in self["values"].items()},
+                              coords={d: self.axes[d] for d in dims})
+
+
 def _wrap(value):
     if isinstance(value, dict):
         return Result({k: _wrap(v) for k, v in value.items()})
@@ -46,49 +178,380 @@ def _wrap(value):
     return value
 
 
+def _shaped(tool_id, scene, value):
+    """A tool's raw result with names: point sets as Tables, histories as Tables."""
+    if tool_id == "poincare":
+        return Table(list(scene.map_coordinates) + ["t", "sheet"], value)
+    if not isinstance(value, dict):
+        return _wrap(value)
+    r = _wrap(value)
+    if tool_id == "lyapunov" and "history" in r and "t" in r:
+        history = _np.asarray(r.pop("t"))[:, None]
+        k = _np.asarray(r["history"]).reshape(len(history), -1)
+        r["history"] = Table(["t"] + [f"L{i + 1}" for i in range(k.shape[1])], _np.hstack([history, k]))
+    elif isinstance(r.get("history"), dict):
+        h = r["history"]
+        names = ["t"] + [n for n in h if n != "t"] if "t" in h else list(h)
+        r["history"] = Table(names, _np.column_stack([_np.asarray(h[n], dtype=float) for n in names]))
+    return r
+
+
+# ------------------------------------------------------------------------------------------ the keyword rule
+
+_NUMBER = (_numbers.Real,)
+
+
+def _check_type(call, name, kind, value, choices=None):
+    """A keyword's value against what it takes: TypeError for the wrong type, ValueError for NaN or a choice
+    not offered."""
+    def number(v):
+        return isinstance(v, _numbers.Real) and not isinstance(v, bool)
+
+    if kind in ("number", "integer"):
+        if not number(value):
+            raise TypeError(f"{call}: {name} takes a number, not {type(value).__name__} ({value!r})")
+        if _math.isnan(value):
+            raise ValueError(f"{call}: {name} must be a number, got nan")
+        if kind == "integer" and not float(value).is_integer():
+            raise TypeError(f"{call}: {name} takes an integer, not {value!r}")
+    elif kind == "choice":
+        if not isinstance(value, str):
+            raise TypeError(f"{call}: {name} takes one of {', '.join(choices)} (a str), not {value!r}")
+        if value not in choices:
+            raise ValueError(f"{call}: {name} = {value!r} is not one of {', '.join(choices)}")
+    elif kind == "text":
+        if not isinstance(value, str):
+            raise TypeError(f"{call}: {name} takes a str, not {type(value).__name__} ({value!r})")
+    elif kind == "numbers":
+        if isinstance(value, (str, bytes)) or not all(number(v) for v in _np.ravel(_np.asarray(value, object))):
+            raise TypeError(f"{call}: {name} takes a sequence of numbers, not {value!r}")
+
+
+def _plain(value):
+    """A value as the scene loader reads it (NumPy scalars and arrays as Python's)."""
+    if isinstance(value, _np.ndarray):
+        return value.tolist()
+    if isinstance(value, _np.generic):
+        return value.item()
+    if isinstance(value, (list, tuple)):
+        return [_plain(v) for v in value]
+    if isinstance(value, dict):
+        return {k: _plain(v) for k, v in value.items()}
+    return value
+
+
+def _unknown(call, key, known, what):
+    near = _difflib.get_close_matches(key, known, n=3, cutoff=0.6)
+    return TypeError(f"{call} got an unexpected keyword argument {key!r}"
+                     + (f" (did you mean {', '.join(near)}?" if near else " (")
+                     + (" " if near else "") + f"{what})")
+
+
+def _model_parameter_keys(scene, call, kw):
+    """Plain model parameters and dotted keys as set() takes them; TypeError for anything else."""
+    out = {}
+    parameters = scene.parameters
+    for key, value in kw.items():
+        if "." in key:
+            if key == "initial.state" and not isinstance(value, dict):
+                value = dict(zip(scene.state_names, _plain(_np.ravel(_np.asarray(value, float)))))
+            out[key] = _plain(value)
+        elif key in parameters:
+            _check_type(call, key, "number", value)
+            out[key] = _plain(value)
+        else:
+            raise _unknown(call, key, list(parameters),
+                           f"takes the parameters of {scene.problem} ({', '.join(parameters)}) and dotted scene "
+                           "keys such as **{'integrator.method': 'verner9'}")
+    return out
+
+
+# ------------------------------------------------------------------------------------------ scenes as values
+
+_cpp_set = Scene.set
+_cpp_parameters = Scene.parameters
+_cpp_integrate = Scene.integrate
+_cpp_render = Scene.render
+_cpp_snapshot = Scene.snapshot
+_cpp_video = Scene.video
+
+
+def _set(self, **settings):
+    """A new scene with model parameters (energy=0.4) and dotted scene keys (**{"integrator.method":
+    "everhart"}, **{"initial.state": array or {name: value}}) set, as --set does; this scene is unchanged.
+    TypeError for an unknown keyword (naming the nearest), ValueError for a bad value."""
+    new = self.copy()
+    keys = _model_parameter_keys(self, "set()", settings)
+    if "initial.state" in keys:  # a state replaces the scene's map point or state
+        return _from_document(self, _with_initial(self, {"state": keys.pop("initial.state")}), keys)
+    if "initial.map" in keys:
+        return _from_document(self, _with_initial(self, {"map": keys.pop("initial.map")}), keys)
+    _cpp_set(new, **keys)
+    return new
+
+
+def _with_initial(scene, initial):
+    doc = _json.loads(scene.to_json())
+    kept = {k: v for k, v in doc.get("initial", {}).items() if k not in ("map", "state", "root")}
+    doc["initial"] = {**kept, **initial}
+    return doc
+
+
+def _from_document(scene, doc, keys=None):
+    new = Scene.from_json(_json.dumps(doc), scene.source)
+    if keys:
+        _cpp_set(new, **keys)
+    return new
+
+
+def _with_state(self, state, **settings):
+    """A new scene that starts from `state`: an array of the state's components (Scene.state_names, as
+    Trajectory.final) or a mapping {name: value}; other keywords as for set()."""
+    if not isinstance(state, dict):
+        values = _np.ravel(_np.asarray(state, dtype=float))
+        if len(values) != len(self.state_names):
+            raise ValueError(f"with_state(): {len(values)} values for the {len(self.state_names)} components of "
+                             f"{self.problem}'s state ({', '.join(self.state_names)})")
+        state = dict(zip(self.state_names, values))
+    return _set(self, **{"initial.state": {k: float(v) for k, v in state.items()}}, **settings)
+
+
+def _integrate(self, time, every, columns=None, *, progress=None, **settings):
+    """Integrates and samples observables at t = 0, every, 2 every, ... up to time (rollviz integrate).
+    columns: observable ids, a list or one name (default: all). Other keywords: model parameters and dotted
+    scene keys for this call (as set()). Returns a Trajectory: r["E"] a column, r.t the times, np.asarray(r)
+    the rows, r.final the whole state at the last sample (Scene.with_state(r.final) goes on from there)."""
+    scene = _set(self, **settings) if settings else self
+    if isinstance(columns, str):
+        columns = [columns]
+    if columns is not None and not all(isinstance(c, str) for c in columns):
+        raise TypeError(f"integrate(): columns takes observable names (str), not {columns!r}")
+    names = list(columns) if columns is not None else list(scene.observables)
+    # the state's components ride along as columns (each is an observable): the last row is the final state
+    t, X = _cpp_integrate(scene, time, every, names + list(scene.state_names), progress=progress)
+    final = X[-1, len(names):] if len(t) else None
+    return Trajectory(names, _np.ascontiguousarray(X[:, :len(names)]), t, final, scene.state_names)
+
+
+def _picture_size(call, size):
+    if (not isinstance(size, (tuple, list)) or len(size) != 2
+            or not all(isinstance(v, _numbers.Integral) and not isinstance(v, bool) and v > 0 for v in size)):
+        raise TypeError(f"{call}: size takes (width, height), two positive ints, not {size!r}")
+    return (int(size[0]), int(size[1]))
+
+
+def _render(self, size=(640, 480), time=10.0, *, transparent=False, **settings):
+    """The 3D view at `time` (the trace covers [0, time]) as an H x W x 3 uint8 array, rendered headless as
+    rollviz render draws it. Other keywords: model parameters and dotted scene keys for this call."""
+    scene = _set(self, **settings) if settings else self
+    return _cpp_render(scene, _picture_size("render()", size), time, 1, transparent)
+
+
+def _snapshot(self, path, size=(1280, 720), time=10.0, *, transparent=False, **settings):
+    """Writes the 3D view at `time` as a PNG (rollviz render -o PATH). Other keywords as for set()."""
+    scene = _set(self, **settings) if settings else self
+    return _cpp_snapshot(scene, _os.fspath(path), _picture_size("snapshot()", size), time, 1, transparent)
+
+
+_VIDEO_ENCODERS = ("libx264", "mpeg4")  # what render/video/Mp4Writer configures: H.264, or MPEG-4 Part 2
+
+
+def _video(self, path, duration=None, fps=None, size=None, speed=0.0, encoder="libx264", *, progress=None,
+           **settings):
+    """Records the 3D view into an MP4 (rollviz video); duration, fps and size default to the scene's video
+    section, speed 0 to its view.speed; encoder libx264 (H.264) or mpeg4. Returns the number of frames."""
+    path = _os.fspath(path)
+    if not path.lower().endswith(".mp4"):
+        raise ValueError(f"video(): {path}: a video is written as MP4 (.mp4); "
+                         f"'{_os.path.splitext(path)[1] or path}' is not supported")
+    if encoder not in _VIDEO_ENCODERS:
+        raise ValueError(f"video(): encoder {encoder!r} is not supported (supported: {', '.join(_VIDEO_ENCODERS)})")
+    if size is not None:
+        size = _picture_size("video()", size)
+    scene = _set(self, **settings) if settings else self
+    return _cpp_video(scene, path, duration, fps, size, speed, encoder, progress=progress)
+
+
+Scene.set = _set
+Scene.with_state = _with_state
+Scene.integrate = _integrate
+Scene.render = _render
+Scene.snapshot = _snapshot
+Scene.video = _video
+Scene.parameters = property(lambda self: _types.MappingProxyType(_cpp_parameters.fget(self)),
+                            doc="The model parameters' values (read-only: set() returns a scene with others).")
+Scene.__copy__ = lambda self: self.copy()
+Scene.__deepcopy__ = lambda self, memo: self.copy()
+Scene.__reduce__ = lambda self: (_scene_from_json, (self.to_json(), self.source))
+
+
+def _scene_from_json(text, source):
+    """What a pickled scene is rebuilt with (its JSON and where it was read from)."""
+    return Scene.from_json(text, source)
+
+
+# ------------------------------------------------------------------------------------------------ the tools
+
 def tools():
-    """The registered tools in the order of the manual's tree: id, title, parent, settings, outputs, ..."""
+    """The registered tools in the order of the manual's tree: id, title, parent, settings, keywords (every
+    setting a call takes, section by section), outputs, ..."""
     return [_wrap(t) for t in _tools()]
+
+
+_ANNOTATIONS = {"number": float, "integer": int, "text": str, "numbers": _typing.Sequence[float]}
+
+
+def _keywords(tool):
+    """The tool's keywords, each once (the first section that has it wins, as the scene loader places it)."""
+    seen, out = set(), []
+    for k in tool["keywords"]:
+        if k["id"] not in seen:
+            seen.add(k["id"])
+            out.append(k)
+    return out
+
+
+def _default(k):
+    d = k["default"]
+    return int(d) if k["type"] == "integer" and d is not None else d
 
 
 def _settings_doc(tool):
     lines = [f"{tool['title']}: {tool['description']}.", ""]
-    if tool["settings"]:
-        lines.append(f"Keyword settings (scene section \"{tool['section']}\"; for this call only):")
-        for s in tool["settings"]:
-            lines.append(f"    {s['id']} = {s['default']!r}: {s['description']}")
-    if len(tool["sections"]) > 1:
-        lines.append("Also the settings of the sections " + ", ".join(tool["sections"][1:]) + ".")
+    keywords = _keywords(tool)
+    if keywords:
+        lines.append("Keyword settings, for this call only (omitted: the scene's value, which defaults to the one "
+                     "shown):")
+        for k in keywords:
+            kind = f"one of {', '.join(k['choices'])}" if k["type"] == "choice" else k["type"]
+            default = "" if k["default"] is None else f" = {_default(k)!r}"
+            lines.append(f"    {k['id']}{default} ({k['section']}.{k['id']}, {kind}): {k['description']}")
     if tool["arguments_help"]:
         lines.append("Arguments: " + tool["arguments_help"])
+    lines.append("Also: the model's parameters by name (energy=0.4) and dotted scene keys, for this call.")
     lines.append("progress: None or a callable taking the fraction done.")
+    if tool["outputs"]:
+        lines.append("")
+        lines.append("Returns:" + (" a Table of the map's points (the map coordinates, t, sheet)"
+                                   if tool["id"] == "poincare" else " a Result (a dict whose keys are attributes):"))
+        for name, description in tool["outputs"]:
+            lines.append(f"    {name}: {description}")
     if tool["reference"]:
         lines.append(f"Reference: {tool['reference']}")
     return "\n".join(lines)
 
 
+def _signature(tool):
+    P = _inspect.Parameter
+    params = [P("self", P.POSITIONAL_ONLY)]
+    for k in _keywords(tool):
+        annotation = (_typing.Literal[tuple(k["choices"])] if k["type"] == "choice"
+                      else _ANNOTATIONS.get(k["type"], _typing.Any))
+        if k["default"] is None:
+            annotation = _typing.Optional[annotation]
+        params.append(P(k["id"], P.KEYWORD_ONLY, default=_default(k), annotation=annotation))
+    for a in tool["arguments"]:
+        if a not in {p.name for p in params}:
+            params.append(P(a, P.KEYWORD_ONLY, default=None))
+    params.append(P("progress", P.KEYWORD_ONLY, default=None,
+                    annotation=_typing.Optional[_typing.Callable[[float], None]]))
+    params.append(P("overrides", P.VAR_KEYWORD))
+    return _inspect.Signature(params)
+
+
 def _make_method(tool):
     tool_id = tool["id"]
+    keywords = {k["id"]: k for k in _keywords(tool)}
+    arguments = set(tool["arguments"])
+    call = f"{tool_id}()"
 
-    def method(self, progress=None, **settings):
-        return _wrap(self._run(tool_id, progress=progress, **settings))
+    def method(self, *args, progress=None, **kw):
+        if args:
+            first = next(iter(keywords), "time")
+            raise TypeError(f"{call} takes keyword arguments only ({len(args)} given by position): "
+                            f"e.g. {tool_id}({first}=...)")
+        settings, parameters = {}, {}
+        for key, value in kw.items():
+            if key in arguments or "." in key:
+                settings[key] = _plain(value)
+            elif key in keywords:
+                k = keywords[key]
+                _check_type(call, key, k["type"], value, k.get("choices"))
+                settings[key] = _plain(value)
+            elif key in self.parameters:
+                parameters[key] = value
+            else:
+                raise _unknown(call, key, list(keywords) + list(arguments) + list(self.parameters),
+                               f"settings: {', '.join(keywords) or 'none'}; the parameters of {self.problem}; "
+                               "or a dotted scene key")
+        scene = _set(self, **parameters) if parameters else self
+        return _shaped(tool_id, scene, scene._run(tool_id, progress=progress, **settings))
 
     method.__name__ = tool_id
     method.__qualname__ = f"Scene.{tool_id}"
     method.__doc__ = _settings_doc(tool)
+    method.__signature__ = _signature(tool)
     return method
 
 
-# one method per registered tool that runs on a scene (a sweep runs a sweep file: rollviz.sweep)
+# one method per registered tool that runs on a scene (a sweep runs over many: rollviz.sweep)
 for _tool in _tools():
     if _tool["id"] != "sweep":
         setattr(Scene, _tool["id"], _make_method(_tool))
 del _tool
 
-_sweep = sweep
+
+# ---------------------------------------------------------------------------------------------------- sweeps
+
+def _axis(name, values):
+    """A sweep axis from evenly spaced values (np.linspace) or (min, max, count)."""
+    if isinstance(values, tuple) and len(values) == 3:
+        lo, hi, count = values
+    else:
+        v = _np.asarray(values, dtype=float).ravel()
+        if v.size < 1 or not _np.all(_np.isfinite(v)):
+            raise ValueError(f"sweep(): axes[{name!r}]: give finite values (np.linspace) or (min, max, count)")
+        lo, hi, count = float(v[0]), float(v[-1]), int(v.size)
+        if v.size > 1 and not _np.allclose(v, _np.linspace(lo, hi, v.size), rtol=0, atol=1e-12 * max(1, abs(hi))):
+            raise ValueError(f"sweep(): axes[{name!r}]: the values must be evenly spaced (a sweep's axis is min, "
+                             "max, count: np.linspace)")
+    return {"id": name, "min": float(lo), "max": float(hi), "count": int(count)}
 
 
-def sweep(path, threads=0, progress=None):  # noqa: F811 -- the same call, its result as a Result
-    """Runs a sweep file (rollviz sweep) on threads; see docs/sweeps.md. Returns a Result: columns (the
-    axes and the quantity's columns as arrays, the first axis fastest), shape, seconds, status."""
-    return _wrap(_sweep(path, threads, progress=progress))
+def sweep(scene, axes=None, quantity=None, threads=0, progress=None, **settings):
+    """A quantity over a grid of points (rollviz sweep; docs/sweeps.md), on threads. Either a sweep file's path,
+    or a Scene with axes={"energy": np.linspace(0.3, 0.6, 31), "map.0": (-0.4, 0.4, 41)} (model parameters,
+    "map.0"/"map.1" for the start's map coordinates, dotted scene keys; evenly spaced values or (min, max,
+    count)) and quantity ("lyapunov", "megno", "fixedpoint.type", ...: rollviz.tools()' sweep_quantities);
+    further keywords are set on every point (energy=0.125, **{"megno.time": 400}). Returns a SweepResult:
+    values[name] shaped like the grid (the first axis first), axes[id] the coordinates, to_xarray()."""
+    if isinstance(scene, (str, _os.PathLike)):
+        if axes is not None or quantity is not None or settings:
+            raise TypeError("sweep(path): a sweep file holds its axes, quantity and settings")
+        return _sweep_result(_sweep_file(_os.fspath(scene), threads, progress=progress))
+    if not isinstance(scene, Scene):
+        raise TypeError(f"sweep(): give a Scene or a sweep file's path, not {type(scene).__name__}")
+    if not axes or not isinstance(axes, dict):
+        raise TypeError("sweep(scene): axes takes a dict {name: values}, one or two entries")
+    if not isinstance(quantity, str):
+        raise TypeError("sweep(scene): quantity takes the name of a sweep quantity (str), e.g. 'megno'")
+    with _tempfile.TemporaryDirectory(prefix="rollviz-sweep-") as folder:
+        scene.save(_os.path.join(folder, "scene.json"))
+        spec = {"scene": "scene.json", "axes": [_axis(k, v) for k, v in axes.items()], "quantity": quantity,
+                "set": {k: _plain(v) for k, v in settings.items()}}
+        path = _os.path.join(folder, "sweep.json")
+        with open(path, "w") as f:
+            _json.dump(spec, f)
+        return _sweep_result(_sweep_file(path, threads, progress=progress))
+
+
+def _sweep_result(raw):
+    r = SweepResult(_wrap(raw))
+    shape = list(r.shape)
+    names = list(r.columns)
+    axis_ids = names[:len(shape)]
+    # the flat columns run first axis fastest: Fortran order gives grid[i0, i1]
+    r["values"] = {k: _np.asarray(v).reshape(shape, order="F") for k, v in r.columns.items() if k not in axis_ids}
+    r["axes"] = {k: _np.asarray(r.columns[k]).reshape(shape, order="F")[
+        tuple(slice(None) if j == i else 0 for j in range(len(shape)))] for i, k in enumerate(axis_ids)}
+    return r

@@ -1,0 +1,181 @@
+"""The Python API as researchers expect it (issue 39): real signatures from the registry, one keyword rule for
+every call, named results, scenes as values (pickle, copy, multiprocessing), a trajectory to step on from,
+sweeps defined in Python, honest media calls."""
+
+import copy
+import inspect
+import multiprocessing
+import os
+import pickle
+import re
+
+import numpy as np
+import pytest
+
+from conftest import SOURCE, scene_path
+
+rollviz = pytest.importorskip("rollviz")
+
+
+def test_the_version_is_the_projects():
+    with open(os.path.join(SOURCE, "CMakeLists.txt")) as f:
+        version = re.search(r"project\(rollviz VERSION ([0-9.]+)", f.read()).group(1)
+    assert rollviz.__version__ == version
+
+
+def test_every_tool_method_has_a_signature_with_every_setting_of_its_sections():
+    for tool in rollviz.tools():
+        if tool.id == "sweep":
+            continue
+        method = getattr(rollviz.Scene, tool.id)
+        sig = inspect.signature(method)
+        params = sig.parameters
+        assert list(params)[0] == "self" and params["self"].kind == inspect.Parameter.POSITIONAL_ONLY
+        assert params["progress"].kind == inspect.Parameter.KEYWORD_ONLY and params["progress"].default is None
+        assert any(p.kind == inspect.Parameter.VAR_KEYWORD for p in params.values())
+        # every setting of every section the call takes (the tool's own and its parents'), keyword-only
+        for section in tool.sections:
+            owner = next((t for t in rollviz.tools() if t.section == section), None)
+            for setting in owner.settings if owner else []:
+                assert setting["id"] in params, (tool.id, section, setting["id"])
+        for k in tool.keywords:
+            p = params[k["id"]]
+            assert p.kind == inspect.Parameter.KEYWORD_ONLY
+            if k["type"] == "integer":
+                assert type(p.default) is int, (tool.id, k["id"], p.default)
+            assert k["id"] in method.__doc__
+        if tool.outputs:
+            assert "Returns:" in method.__doc__
+    # the text keys that no table holds are there too, where they belong
+    cont = inspect.signature(rollviz.Scene.continuation).parameters
+    assert {"guess", "parameter", "to"} <= set(cont)
+    assert "continuation.to" in rollviz.Scene.continuation.__doc__
+    lyap = inspect.signature(rollviz.Scene.lyapunov).parameters
+    assert type(lyap["count"].default) is int and lyap["count"].default == 0
+
+
+def test_one_keyword_rule_for_every_call():
+    s = rollviz.Scene.load(scene_path("henon_heiles.json"))
+    # a model parameter by its plain name in a tool's call is set() for that call
+    a = s.lyapunov(time=50, energy=0.1)
+    b = s.set(energy=0.1).lyapunov(time=50)
+    assert np.array_equal(a.exponents, b.exponents)
+    assert s.parameters["energy"] == 0.125  # the call changed nothing
+    assert not np.array_equal(a.exponents, s.lyapunov(time=50).exponents)
+    # unknown keywords: TypeError naming the nearest; positional arguments: TypeError
+    with pytest.raises(TypeError, match=r"lyapunov\(\) got an unexpected keyword argument 'tme'.*did you mean time"):
+        s.lyapunov(tme=10)
+    with pytest.raises(TypeError, match=r"did you mean energy"):
+        s.set(energi=0.1)
+    with pytest.raises(TypeError, match=r"did you mean energy"):
+        s.integrate(1, 0.5, energi=0.1)
+    with pytest.raises(TypeError, match=r"keyword arguments only"):
+        s.lyapunov(10)
+    # wrong types: TypeError saying what was expected; NaN and choices not offered: ValueError
+    with pytest.raises(TypeError, match=r"time takes a number, not str"):
+        s.lyapunov(time="long")
+    with pytest.raises(TypeError, match=r"count takes an integer"):
+        s.lyapunov(count=1.5)
+    with pytest.raises(ValueError, match=r"mode = 'fast' is not one of tangent, perturbed"):
+        s.lyapunov(mode="fast")
+    with pytest.raises(ValueError, match=r"time must be a number, got nan"):
+        s.megno(time=float("nan"))
+    with pytest.raises(TypeError, match=r"size takes \(width, height\)"):
+        s.render(size=[640, 480, 3])
+    # ints given as floats where the value is whole, NumPy numbers, one column as a str
+    assert s.megno(time=np.float64(20), **{"megno.output_period": 5}).time == 20
+    assert s.integrate(1, 0.5, "E").columns == ["E"]
+
+
+def test_results_have_names_and_convert_to_pandas_and_xarray():
+    s = rollviz.Scene.load(scene_path("chaplygin_ball.json"))
+    r = s.integrate(2, 0.5, ["t", "E", "M1"])
+    assert r.columns == ["t", "E", "M1"] and list(r) == r.columns and len(r) == 5
+    assert np.array_equal(r.E, r["E"]) and np.array_equal(r["t"], r.t)
+    with pytest.raises(KeyError, match="did you mean E"):
+        r["EE"]
+    P = rollviz.Scene.load(scene_path("henon_heiles.json")).poincare(points=20)
+    assert P.columns[-2:] == ["t", "sheet"] and np.asarray(P).shape == (20, len(P.columns))
+    m = rollviz.Scene.load(scene_path("henon_heiles.json")).megno(time=50)
+    assert m.history.columns[0] == "t" and "megno" in m.history
+    pandas = pytest.importorskip("pandas")
+    df = r.to_pandas()
+    assert isinstance(df, pandas.DataFrame) and list(df.columns) == r.columns
+    assert np.array_equal(df["M1"].to_numpy(), r["M1"])
+    xarray = pytest.importorskip("xarray")
+    ds = r.to_xarray()
+    assert isinstance(ds, xarray.Dataset) and np.array_equal(ds["E"].values, r["E"])
+    assert np.array_equal(ds.coords["t"].values, r.t)
+
+
+def test_a_scene_is_a_value():
+    s = rollviz.Scene.load(scene_path("chaplygin_ball.json"))
+    with pytest.raises(TypeError):
+        s.parameters["energy"] = 0.1  # read-only: set() gives a scene with another value
+    for other in (copy.copy(s), copy.deepcopy(s), pickle.loads(pickle.dumps(s))):
+        assert other is not s and other.to_json() == s.to_json() and other.parameters == s.parameters
+        assert np.array_equal(np.asarray(other.integrate(1, 0.5)), np.asarray(s.integrate(1, 0.5)))
+    m = rollviz.Model.load(os.path.join(SOURCE, "examples", "models", "lorenz.json"))
+    lorenz = rollviz.Scene(m, rho=28, **{"initial.state": {"x": 1, "y": 1, "z": 1}})
+    again = pickle.loads(pickle.dumps(lorenz))
+    assert np.array_equal(np.asarray(again.integrate(1, 0.5)), np.asarray(lorenz.integrate(1, 0.5)))
+
+
+def _largest_exponent(scene):
+    return float(scene.lyapunov(time=100, count=1).exponents[0])
+
+
+def test_scenes_go_through_a_multiprocessing_pool():
+    base = rollviz.Scene.load(scene_path("henon_heiles.json"))
+    scenes = [base.set(energy=e) for e in (0.08, 0.1, 0.12, 0.14)]
+    with multiprocessing.get_context("spawn").Pool(2) as pool:
+        parallel = pool.map(_largest_exponent, scenes)
+    assert parallel == [_largest_exponent(s) for s in scenes]
+
+
+def test_a_trajectory_steps_on_from_where_it_ended():
+    s = rollviz.Scene.load(scene_path("henon_heiles.json"), **{"integrator.method": "rk4", "integrator.step": 0.01})
+    whole = s.integrate(10, 0.5)
+    first = s.integrate(5, 0.5)
+    assert first.final.shape == (len(s.state_names),) and set(first.final_named) == set(s.state_names)
+    second = s.with_state(first.final).integrate(5, 0.5)
+    # the second run starts at the first's last sample: the same trajectory to the integrator's rounding (not
+    # bit for bit: the restart rounds the sample time into the step)
+    assert np.allclose(np.asarray(second)[:, 1:], np.asarray(whole)[10:, 1:], rtol=0, atol=1e-10)
+    # a mapping is a state too, and initial.state takes an array
+    named = s.with_state(first.final_named)
+    assert np.array_equal(named.initial_state, s.set(**{"initial.state": first.final}).initial_state)
+    with pytest.raises(ValueError, match="components"):
+        s.with_state([1.0, 2.0])
+
+
+def test_a_sweep_defined_in_python_equals_the_sweep_file(tmp_path):
+    sweep = tmp_path / "s.json"
+    sweep.write_text(
+        '{"scene": "%s", "axes": [{"id": "a", "min": 1.0, "max": 1.4, "count": 5}, '
+        '{"id": "b", "min": 0.2, "max": 0.3, "count": 3}], "quantity": "lyapunov.max",'
+        ' "set": {"lyapunov.time": 200}}' % scene_path("henon_map.json"))
+    from_file = rollviz.sweep(str(sweep), threads=2)
+    s = rollviz.Scene.load(scene_path("henon_map.json"))
+    r = rollviz.sweep(s, axes={"a": np.linspace(1.0, 1.4, 5), "b": (0.2, 0.3, 3)}, quantity="lyapunov.max",
+                      threads=2, **{"lyapunov.time": 200})
+    assert r.shape == [5, 3] and r.complete
+    assert np.array_equal(r.columns["lyapunov.max"], from_file.columns["lyapunov.max"])
+    grid = r["values"]["lyapunov.max"]
+    assert grid.shape == (5, 3)
+    flat = from_file.columns["lyapunov.max"]
+    for i in range(5):
+        for j in range(3):
+            assert grid[i, j] == flat[i + 5 * j]  # first axis fastest in the file
+    assert np.allclose(r.axes["a"], np.linspace(1.0, 1.4, 5)) and np.allclose(r.axes["b"], [0.2, 0.25, 0.3])
+    with pytest.raises(ValueError, match="evenly spaced"):
+        rollviz.sweep(s, axes={"a": [1.0, 1.1, 1.4]}, quantity="lyapunov.max")
+
+
+def test_media_calls_refuse_what_they_cannot_write(tmp_path):
+    s = rollviz.Scene.load(scene_path("chaplygin_ball.json"))
+    with pytest.raises(ValueError, match=r"encoder 'h265' is not supported \(supported: libx264, mpeg4\)"):
+        s.video(str(tmp_path / "v.mp4"), duration=0.2, fps=10, size=(96, 64), encoder="h265")
+    with pytest.raises(ValueError, match=r"\.mp4"):
+        s.video(str(tmp_path / "v.avi"), duration=0.2, fps=10, size=(96, 64))
+    assert not list(tmp_path.iterdir())
