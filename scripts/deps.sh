@@ -11,7 +11,7 @@ BUILD_PKGS=(cmake g++ pkg-config ninja-build ccache
 TEST_PKGS=(libgtest-dev libgmock-dev libbenchmark-dev libboost-dev
   xvfb xauth xdotool x11-apps ffmpeg python3 python3-numpy python3-pil python3-pytest python3-vtk9 python3-matplotlib
   clang-14 libfuzzer-14-dev clang-tidy poppler-utils librsvg2-bin
-  python3-sphinx python3-myst-parser python3-pandas python3-xarray python3-nbclient python3-ipykernel)
+  python3-sphinx python3-myst-parser python3-pandas python3-xarray python3-nbclient python3-ipykernel mypy)
 want=("${BUILD_PKGS[@]}")
 [ "${1:-build}" = test ] && want+=("${TEST_PKGS[@]}")
 missing=()

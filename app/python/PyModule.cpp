@@ -7,6 +7,7 @@
 #include "app/python/PyJob.h"
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/ModelRegistry.h"
+#include "dynamics/integrators/TimeSampler.h"
 #include "dynamics/io/AtomicFile.h"
 #include "render/Snapshot.h"
 #include "render/VisualScene.h"
@@ -131,6 +132,40 @@ pyb::tuple integrate(const Scene& shared, double time, double every, const pyb::
   });
   const auto n = static_cast<pyb::ssize_t>(t.size()), k = static_cast<pyb::ssize_t>(cols.size());
   return pyb::make_tuple(toArray(std::move(t)), toArray(std::move(x), {n, k}));
+}
+
+// integrate_at(times, columns, resume): the observables at given times, forward from t = 0 when they are >= 0
+// and backward when they are <= 0, from the dense output of one integration; with `resume` (what a former
+// call returned) the integration goes on from where that one's integrator stopped, bit for bit as one call.
+// Returns (X, the integrator's snapshot at the end).
+pyb::tuple integrateAt(const Scene& shared, const std::vector<double>& times,
+                       const std::vector<std::string>& ids, const pyb::object& resume,
+                       const pyb::object& progress) {
+  const Scene scene = shared; // NOLINT(performance-unnecessary-copy-initialization): see integrate
+  const bool backward = !times.empty() && times.back() < 0;
+  const std::vector<int> cols = observableColumns(*scene.model, ids, "columns");
+  const auto& obs = scene.model->observables();
+  Snapshot saved;
+  if (!resume.is_none()) saved.values = resume.cast<std::vector<double>>();
+  std::vector<double> x;
+  x.reserve(times.size() * cols.size());
+  runJob(progress, [&](const ToolControl& control) {
+    auto integrator = scene.runSpec().makeIntegrator(*scene.model);
+    integrator->start(*scene.model, 0.0, scene.initialState, backward ? -1 : +1);
+    if (!saved.values.empty()) integrator->restore(saved);
+    const double span = times.empty() ? 0 : std::abs(times.back());
+    sampleAt(*integrator, times, [&](double t, const Eigen::VectorXd& state) {
+      for (const int c : cols)
+        x.push_back(obs[static_cast<std::size_t>(c)].value(t, state.data()));
+      control.progress(span > 0 ? std::abs(t) / span : 1.0);
+      return !control.stopRequested();
+    });
+    saved = Snapshot{};
+    integrator->save(saved);
+  });
+  const auto k = static_cast<pyb::ssize_t>(cols.size());
+  const auto rows = k ? static_cast<pyb::ssize_t>(x.size()) / k : 0;
+  return pyb::make_tuple(toArray(std::move(x), {rows, k}), toArray(std::move(saved.values)));
 }
 
 // the 3D view at `time`, the traces covering [0, time] (as `rollviz render` shows it)
@@ -486,6 +521,9 @@ PYBIND11_MODULE(_rollviz, m) {
            pyb::kw_only(), pyb::arg("progress") = pyb::none(),
            "Integrates and samples observables at t = 0, every, 2 every, ... up to time (rollviz integrate): "
            "returns (t, X), X[k, j] the j-th column at t[k]. columns: observable ids (default: all).")
+      .def("_integrate_at", &integrateAt, pyb::arg("times"), pyb::arg("columns"), pyb::kw_only(),
+           pyb::arg("resume") = pyb::none(), pyb::arg("progress") = pyb::none(),
+           "The columns at the given times (one direction from t = 0): what integrate(t_eval=...) calls.")
       .def(
           "render", &render, pyb::arg("size") = std::pair<int, int>{640, 480}, pyb::arg("time") = 10.0,
           pyb::arg("scale") = 1, pyb::arg("transparent") = false,

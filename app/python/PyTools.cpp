@@ -609,30 +609,47 @@ pyb::dict toolDict(const ToolEntry& e) {
   return d;
 }
 
-// rollviz.sweep(path): the sweep on threads, its columns as arrays (rollviz sweep)
-pyb::object sweep(const std::string& path, int threads, const pyb::object& progress) {
+// rollviz.sweep(path): the sweep on threads, its columns as arrays (rollviz sweep). With a checkpoint the
+// points are kept in that file and a later call goes on from them; on Ctrl-C the KeyboardInterrupt carries
+// the points finished so far as its second argument.
+pyb::object sweep(const std::string& path, int threads, const pyb::object& progress,
+                  const pyb::object& checkpoint) {
   const SweepSpec spec = loadSweep(path);
   if (threads < 0) throw InputError("threads: must be at least 1");
   if (threads == 0) threads = static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
+  const bool kept = !checkpoint.is_none();
   const std::string storePath =
-      (std::filesystem::temp_directory_path() /
-       fmt::format("rollviz-{}-{}.sweep-part", ::getpid(), reinterpret_cast<std::uintptr_t>(&spec)))
-          .string();
+      kept ? pyb::str(checkpoint).cast<std::string>()
+           : (std::filesystem::temp_directory_path() /
+              fmt::format("rollviz-{}-{}.sweep-part", ::getpid(), reinterpret_cast<std::uintptr_t>(&spec)))
+                 .string();
   SweepStore store(storePath, spec.resolved.dump(), spec.points(), static_cast<int>(spec.columns.size()),
-                   "sweep");
+                   kept ? "checkpoint" : "sweep");
+  bool complete = false;
+  // a temporary store goes whatever happens; a checkpoint once the sweep is complete (as the CLI's)
   struct Cleanup {
     SweepStore& store;
-    ~Cleanup() { store.remove(); }
-  } cleanup{store};
+    bool always;
+    const bool& complete;
+    ~Cleanup() {
+      if (always || complete) store.remove();
+    }
+  } cleanup{store, !kept, complete};
   ChunkScheduler scheduler(store, threads, static_cast<long>(spec.options->get("chunk")));
-  bool complete = false;
-  runJob(progress, [&](const ToolControl& control) {
-    ToolControl c = control;
-    c.progress = [&](double) { control.progress(static_cast<double>(store.doneCount()) / spec.points()); };
-    complete = runSweepThreads(
-        store, scheduler, [&](long i, const ToolControl& pc) { return evaluateSweepPoint(spec, i, pc); },
-        threads, c);
-  });
+  std::optional<pyb::error_already_set> interrupted;
+  try {
+    runJob(progress, [&](const ToolControl& control) {
+      ToolControl c = control;
+      c.progress = [&](double) { control.progress(static_cast<double>(store.doneCount()) / spec.points()); };
+      complete = runSweepThreads(
+          store, scheduler, [&](long i, const ToolControl& pc) { return evaluateSweepPoint(spec, i, pc); },
+          threads, c);
+    });
+  } catch (pyb::error_already_set& e) {
+    if (!e.matches(PyExc_KeyboardInterrupt)) throw;
+    interrupted.emplace(std::move(e));
+    complete = false;
+  }
   const long n = spec.points();
   std::vector<std::vector<double>> axes(spec.axes.size()), columns(spec.columns.size());
   std::vector<double> seconds;
@@ -641,6 +658,13 @@ pyb::object sweep(const std::string& path, int threads, const pyb::object& progr
     const auto a = spec.axisValues(i);
     for (std::size_t k = 0; k < axes.size(); ++k)
       axes[k].push_back(a[k]);
+    if (!store.done(i)) {
+      for (auto& column : columns)
+        column.push_back(NAN);
+      seconds.push_back(NAN);
+      status.emplace_back("not computed");
+      continue;
+    }
     const SweepRecord r = store.read(i);
     for (std::size_t k = 0; k < columns.size(); ++k)
       columns[k].push_back(k < r.values.size() ? r.values[k] : NAN);
@@ -662,6 +686,14 @@ pyb::object sweep(const std::string& path, int threads, const pyb::object& progr
   d["shape"] = shape;
   d["quantity"] = spec.quantity->id + spec.quantityName;
   d["complete"] = complete;
+  if (interrupted) {
+    const std::string said =
+        fmt::format("the sweep was stopped with {} of {} points finished{} (they are the "
+                    "exception's second argument)",
+                    store.doneCount(), n, kept ? ", kept in the checkpoint" : "");
+    PyErr_SetObject(PyExc_KeyboardInterrupt, pyb::make_tuple(said, d).ptr());
+    throw pyb::error_already_set();
+  }
   return d;
 }
 
@@ -676,7 +708,7 @@ void bindTools(pyb::module_& m, pyb::class_<Scene>& scene) {
   });
   scene.def("_run", &runTool, pyb::arg("tool"), pyb::kw_only(), pyb::arg("progress") = pyb::none());
   m.def("sweep", &sweep, pyb::arg("path"), pyb::arg("threads") = 0, pyb::kw_only(),
-        pyb::arg("progress") = pyb::none(),
+        pyb::arg("progress") = pyb::none(), pyb::arg("checkpoint") = pyb::none(),
         "Runs a sweep file (rollviz sweep) on threads: its axes and quantity columns as arrays (first axis "
         "fastest; reshape to `shape` reversed), seconds and status per point.");
 }

@@ -252,6 +252,7 @@ template <int N> double Everhart::correct(double h) {
   using Nodes = Eigen::Matrix<double, Eigen::Dynamic, N>;
   const Eigen::Map<const Nodes> nodes(F_.data(), F_.rows(), N);
   double previousChange = 0, changeBefore = 0;
+  const Eigen::Index c = controlled(F_.rows()); // the components whose convergence counts (controlBy)
   lastIterations_ = 0;
   for (int it = 0; it < maxIterations_; ++it) {
     ++lastIterations_;
@@ -262,8 +263,8 @@ template <int N> double Everhart::correct(double h) {
       y_.noalias() = x_ + nodes.lazyProduct(a);
       model_->rhs(y_.data(), f1_.data()); // f1_ is free until the step ends
       ++evaluations_;
-      change = std::max(change, (f1_ - F_.col(j)).cwiseAbs().maxCoeff());
-      scale = std::max(scale, f1_.cwiseAbs().maxCoeff());
+      change = std::max(change, (f1_ - F_.col(j)).head(c).cwiseAbs().maxCoeff());
+      scale = std::max(scale, f1_.head(c).cwiseAbs().maxCoeff());
       F_.col(j) = f1_;
     }
     // Converged when nothing changes any more or the changes stop shrinking (rounding is all that is left),
@@ -288,8 +289,9 @@ template <int N> double Everhart::correct(double h) {
   if (tolerance_ <= 0) return 0;
   const Eigen::Matrix<double, N, 1> w = leading_;
   y_.noalias() = nodes.lazyProduct(w);
-  const double scale = nodes.cwiseAbs().maxCoeff();
-  return scale > 0 ? y_.cwiseAbs().maxCoeff() / scale : y_.cwiseAbs().maxCoeff();
+  const double scale = nodes.topRows(c).cwiseAbs().maxCoeff();
+  const double last = y_.head(c).cwiseAbs().maxCoeff();
+  return scale > 0 ? last / scale : last;
 }
 
 template <int N> void Everhart::stepWith() {

@@ -32,6 +32,10 @@ public:
 
   /// Whether the step never changes (what the Fourier spectrum needs).
   virtual bool fixedStep() const { return false; }
+  /// Steps are controlled (error estimates, a corrector's convergence) by the first `components` of the state
+  /// only; 0, the default, by all. The integrator of a tangent system set to its orbit's dimension follows
+  /// the orbit alone: the orbit does not depend on how many tangent vectors ride along.
+  void controlBy(int components) { controlled_ = components; }
 
   double time() const { return t_; }
   double previousTime() const { return tPrev_; }
@@ -59,11 +63,16 @@ protected:
   void advanceCompensated(double h, const Eigen::VectorXd& increment, Eigen::VectorXd& compensation);
   /// Cubic Hermite interpolation on the last step from the states and derivatives at both ends.
   void hermite(double t, const Eigen::VectorXd& fPrev, const Eigen::VectorXd& f, Eigen::VectorXd& out) const;
+  /// How many leading components of a state of `dimension` control the steps (controlBy).
+  Eigen::Index controlled(Eigen::Index dimension) const {
+    return controlled_ > 0 && controlled_ < dimension ? controlled_ : dimension;
+  }
 
   const Model* model_ = nullptr;
   double t_ = 0, tPrev_ = 0;
   int direction_ = +1;
   long evaluations_ = 0;
+  int controlled_ = 0;
   Eigen::VectorXd x_, xPrev_;
 };
 

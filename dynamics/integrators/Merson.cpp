@@ -72,7 +72,7 @@ void Merson::step() {
     tmp_ = x_ + (h / 2) * (k1_ - 3 * k3_ + 4 * k4_);
     evaluate(tmp_, k5_);
     err_ = (h / 30) * (2 * k1_ - 9 * k3_ + 8 * k4_ - k5_);
-    const double err = err_.lpNorm<Eigen::Infinity>();
+    const double err = err_.head(controlled(err_.size())).lpNorm<Eigen::Infinity>();
     if (!std::isfinite(err) || err > precision_) {
       ++rejected_;
       const double shrink =

@@ -108,7 +108,7 @@ double Taylor::chooseStep() const {
   double rho = std::numeric_limits<double>::infinity();
   for (int j = std::max(1, order_ - 1); j <= order_; ++j) {
     double norm = 0;
-    for (Eigen::Index i = 0; i < x_.size(); ++i)
+    for (Eigen::Index i = 0, c = controlled(x_.size()); i < c; ++i)
       norm = std::max(norm, std::abs(X_(i, j)) / std::max(1.0, std::abs(x_[i])));
     if (norm > 0) rho = std::min(rho, std::pow(1 / norm, 1.0 / j));
   }

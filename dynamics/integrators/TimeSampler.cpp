@@ -1,6 +1,24 @@
 #include "dynamics/integrators/TimeSampler.h"
+#include "dynamics/core/Errors.h"
+
+#include <cmath>
 
 namespace rv {
+
+namespace {
+
+// the state at t, at or past the integrator's current time in its direction
+void stateAt(Integrator& integrator, double t, Eigen::VectorXd& x) {
+  const int dir = integrator.direction();
+  while (dir * (integrator.time() - t) < 0)
+    integrator.step();
+  if (t == integrator.time())
+    x = integrator.state();
+  else
+    integrator.interpolate(t, x);
+}
+
+} // namespace
 
 bool sampleUniform(Integrator& integrator, double every, long count,
                    const std::function<bool(double, const Eigen::VectorXd&)>& visit) {
@@ -9,12 +27,26 @@ bool sampleUniform(Integrator& integrator, double every, long count,
   Eigen::VectorXd x(integrator.state().size());
   for (long k = 0; k < count; ++k) {
     const double t = t0 + dir * static_cast<double>(k) * every;
-    while (dir * (integrator.time() - t) < 0)
-      integrator.step();
-    if (t == integrator.time())
-      x = integrator.state();
-    else
-      integrator.interpolate(t, x);
+    stateAt(integrator, t, x);
+    if (!visit(t, x)) return false;
+  }
+  return true;
+}
+
+bool sampleAt(Integrator& integrator, const std::vector<double>& times,
+              const std::function<bool(double, const Eigen::VectorXd&)>& visit) {
+  const int dir = integrator.direction();
+  double last = integrator.previousTime(); // a resumed integrator's last step still holds its dense output
+  for (const double t : times) {
+    if (!std::isfinite(t) || dir * (t - last) < 0)
+      throw InputError("t_eval: the times must be finite and run " +
+                       std::string(dir > 0 ? "forward (ascending)" : "backward (descending)") +
+                       " from the start, one direction only");
+    last = t;
+  }
+  Eigen::VectorXd x(integrator.state().size());
+  for (const double t : times) {
+    stateAt(integrator, t, x);
     if (!visit(t, x)) return false;
   }
   return true;

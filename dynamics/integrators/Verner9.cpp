@@ -299,7 +299,7 @@ void Verner9::step() {
     // the increment h sum_j b_j K_j (sum_) and the error estimate h sum_j E_j K_j (error_)
     increments(h, K_.data(), x_.size(), sum_.data(), error_.data(), std::make_index_sequence<kStages>());
     double err = 0;
-    for (Eigen::Index i = 0; i < x_.size(); ++i) {
+    for (Eigen::Index i = 0, c = controlled(x_.size()); i < c; ++i) {
       const double scale = std::max(1.0, std::max(std::abs(x_[i]), std::abs(x_[i] + sum_[i])));
       err = std::max(err, std::abs(error_[i]) / (tolerance_ * scale));
     }

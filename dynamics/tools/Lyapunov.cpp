@@ -205,7 +205,9 @@ void LyapunovRun::project() {
 void LyapunovRun::startAll(double t0) {
   const auto fresh = [&]() -> std::unique_ptr<Integrator> {
     if (model_.isMap()) return std::make_unique<MapIteration>();
-    return make_();
+    auto integrator = make_();
+    if (tangent_) integrator->controlBy(n_); // the orbit alone: the same for any number of exponents
+    return integrator;
   };
   integs_.clear();
   if (tangent_) {
@@ -240,6 +242,7 @@ bool LyapunovRun::interval(const ToolControl& control) {
     } else {
       if (integs_.empty()) { // an interval that is not a whole number of rk4 steps (often the last one)
         integs_.push_back(make_());
+        integs_.back()->controlBy(n_);
         integs_.back()->start(*tangent_, t_, state_);
       }
       advanceTo(*integs_[0], *tangent_, t_ + step, state_, control);

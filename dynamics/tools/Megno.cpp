@@ -111,6 +111,8 @@ MegnoRun::~MegnoRun() = default;
 void MegnoRun::start() {
   if (model_.isMap()) return;
   integ_ = make_();
+  integ_->controlBy(
+      model_.dimension()); // steps follow the orbit alone, as REBOUND's IAS15 ignores variations
   integ_->start(*system_, t_, state_);
 }
 

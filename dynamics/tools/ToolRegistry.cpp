@@ -99,7 +99,8 @@ ToolRegistry& ToolRegistry::mutableGlobal() {
          .command = "lyapunov",
          .commandHelp = "Lyapunov exponents along a scene's trajectory (Benettin)",
          .chartView = "lyapunov",
-         .outputs = {{"exponents", "the estimates at the end, largest first"},
+         .outputs = {{"exponents", "the estimates at the end in Gram-Schmidt order (L1 the growth of one "
+                                   "vector, L1 + L2 of areas, ...; largest first once converged)"},
                      {"sum", "their sum (0 for a measure-preserving flow)"},
                      {"time", "the time reached"},
                      {"converged", "whether the stopping rule held"}},

@@ -140,7 +140,7 @@ def test_bad_input_raises_valueerror_with_the_cli_message():
         s.integrate(1, 0.1, ["t", "nope"])
     with pytest.raises(ValueError, match="no_such_problem"):
         rollviz.Scene("no_such_problem")
-    with pytest.raises(ValueError, match="time: must be a finite number"):
+    with pytest.raises(ValueError, match="time must be a number, got nan"):
         s.integrate(float("nan"), 0.1)
     with pytest.raises(ValueError, match="every: must be positive"):
         s.integrate(1, 0)

@@ -179,3 +179,132 @@ def test_media_calls_refuse_what_they_cannot_write(tmp_path):
     with pytest.raises(ValueError, match=r"\.mp4"):
         s.video(str(tmp_path / "v.avi"), duration=0.2, fps=10, size=(96, 64))
     assert not list(tmp_path.iterdir())
+
+
+def test_the_type_stub_checks_a_study_with_mypy(tmp_path):
+    """The stub (scripts/make_stub.py, written beside the module) lets mypy check calls: a study that is right
+    passes, a setting of the wrong type is an error naming it."""
+    pytest.importorskip("mypy")
+    import subprocess
+    import sys
+    package = os.path.dirname(os.path.dirname(rollviz.__file__))
+    assert os.path.exists(os.path.join(package, "rollviz", "__init__.pyi"))
+    good = tmp_path / "good.py"
+    good.write_text(
+        "import numpy as np\nimport rollviz\n"
+        "s = rollviz.Scene.load('scenes/henon_heiles.json').set(energy=0.1)\n"
+        "r = s.lyapunov(time=100, count=1, mode='tangent')\n"
+        "t: np.ndarray = s.integrate(1.0, 0.5, ['t', 'E']).t\n"
+        "p = s.poincare(points=10)['t']\n"
+        "g = rollviz.sweep(s, axes={'energy': np.linspace(0.08, 0.12, 3)}, quantity='megno')\n")
+    bad = tmp_path / "bad.py"
+    bad.write_text("import rollviz\n"
+                   "s = rollviz.Scene.load('scenes/henon_heiles.json')\n"
+                   "s.lyapunov(time='long', mode='fast')\n")
+    env = dict(os.environ, MYPYPATH=package)
+    run = [sys.executable, "-m", "mypy", "--no-incremental", "--cache-dir", str(tmp_path / "cache")]
+    ok = subprocess.run(run + [str(good)], capture_output=True, text=True, env=env, timeout=600)
+    assert ok.returncode == 0, ok.stdout + ok.stderr
+    wrong = subprocess.run(run + [str(bad)], capture_output=True, text=True, env=env, timeout=600)
+    assert wrong.returncode == 1, wrong.stdout
+    assert '"time"' in wrong.stdout and '"mode"' in wrong.stdout, wrong.stdout
+
+
+def test_a_sweep_keeps_its_points_in_a_checkpoint_and_goes_on_from_them(tmp_path):
+    sweep = tmp_path / "s.json"
+    sweep.write_text(
+        '{"scene": "%s", "axes": [{"id": "a", "min": 1.0, "max": 1.4, "count": 400}], "quantity": "lyapunov.max",'
+        ' "set": {"lyapunov.time": 20000}}' % scene_path("henon_map.json"))
+    whole = rollviz.sweep(str(sweep), threads=1)
+    checkpoint = tmp_path / "s.sweep-part"
+
+    def stop_early(fraction):
+        if fraction > 0.2:
+            raise RuntimeError("enough for now")
+
+    with pytest.raises(RuntimeError, match="enough for now"):
+        rollviz.sweep(str(sweep), threads=1, progress=stop_early, checkpoint=checkpoint)
+    assert checkpoint.exists()  # the finished points are kept
+    again = rollviz.sweep(str(sweep), threads=1, checkpoint=checkpoint)
+    assert again.complete and again.status == ["ok"] * 400
+    assert np.array_equal(again.columns["lyapunov.max"], whole.columns["lyapunov.max"])
+    assert not checkpoint.exists()  # removed once complete
+
+
+def test_ctrl_c_in_a_sweep_gives_the_points_finished_so_far():
+    import signal
+    import subprocess
+    import sys
+    import textwrap
+    import time
+    code = textwrap.dedent(f"""
+        import sys, rollviz
+        s = rollviz.Scene.load({scene_path('henon_map.json')!r})
+        said = [False]
+        def progress(f):
+            if f > 0 and not said[0]:
+                said[0] = True
+                print("computing", flush=True)
+        try:
+            rollviz.sweep(s, axes={{"a": (1.0, 1.4, 2000)}}, quantity="lyapunov.max", threads=1, progress=progress,
+                          **{{"lyapunov.time": 20000}})
+        except KeyboardInterrupt as e:
+            p = e.partial
+            ok = p.status.count("ok")
+            left = p.status.count("not computed")
+            assert ok + left == 2000 and ok > 0 and left > 0, (ok, left)
+            assert not p.complete and p["values"]["lyapunov.max"].shape == (2000,)
+            print("partial", ok, left, flush=True)
+            sys.exit(0)
+        sys.exit(3)
+    """)
+    p = subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE, text=True, env=os.environ.copy())
+    assert p.stdout.readline().strip() == "computing"
+    p.send_signal(signal.SIGINT)
+    out, _ = p.communicate(timeout=120)
+    assert p.returncode == 0, out
+    assert out.startswith("partial")
+
+
+def test_output_at_given_times_backward_runs_and_events():
+    s = rollviz.Scene.load(scene_path("henon_heiles.json"), **{"integrator.method": "verner9"})
+    uniform = s.integrate(5, 0.5, ["t", "x", "y", "E"])
+    # t_eval at the uniform times: the same samples of the same dense output, bit for bit
+    at = s.integrate(t_eval=[0.5 * k for k in range(11)], columns=["t", "x", "y", "E"])
+    assert np.array_equal(np.asarray(at), np.asarray(uniform)) and np.array_equal(at.t, uniform.t)
+    odd = s.integrate(t_eval=[0.3, 1.7, 4.1], columns=["t", "y"])
+    assert np.array_equal(odd["t"], [0.3, 1.7, 4.1])
+    with pytest.raises(ValueError, match="t_eval"):
+        s.integrate(t_eval=[1.0, 0.5])
+    # backward, then forward from where it ended: back at the start to the integrator's accuracy
+    back = s.integrate(-5, 0.5, ["t", "E"])
+    assert back.t[-1] == -5 and np.all(np.diff(back.t) < 0)
+    again = s.with_state(back.final).integrate(5, 0.5)
+    assert np.max(np.abs(again.final - s.initial_state)) < 1e-9
+    assert np.max(np.abs(back["E"] - back["E"][0])) < 1e-11  # the energy kept going backward
+    # events on y = 0 upward: the Poincare tool's crossings of that section, the states on it
+    r = s.integrate(30, 1.0, ["t", "x", "y", "px", "py"], events=("y", 0.0, "positive"))
+    crossings = s.poincare(section="y", value=0.0, direction="positive", points=10 ** 6, max_time=30)
+    assert len(r.events) == len(crossings) >= 3
+    assert np.array_equal(r.events.t, crossings["t"])
+    assert np.max(np.abs(r.events["y"])) < 1e-10 and np.all(r.events["t"] == r.events.t)
+
+
+def test_continuing_a_trajectory_in_two_calls_equals_one_call_bit_for_bit():
+    ids = [i["id"] for i in rollviz.integrators()]
+    assert {"rk4", "verner9", "everhart", "adams"} <= set(ids)
+    for method in ids:
+        s = rollviz.Scene.load(scene_path("chaplygin_ball.json"), **{"integrator.method": method})
+        whole = s.integrate(6, 0.5)
+        first = s.integrate(2.5, 0.5)
+        second = s.integrate(6, 0.5, after=first)
+        third = s.integrate(6, 0.5, after=s.integrate(1, 0.5))  # any split
+        assert np.array_equal(np.vstack([np.asarray(first), np.asarray(second)]), np.asarray(whole)), method
+        assert np.array_equal(np.concatenate([first.t, second.t]), whole.t), method
+        assert np.array_equal(third.final, whole.final), method
+        back = s.integrate(-3, 0.5)
+        assert np.array_equal(np.asarray(s.integrate(-6, 0.5, after=back))[-1], np.asarray(s.integrate(-6, 0.5))[-1])
+    with pytest.raises(ValueError, match="another scene"):
+        s.set(energy=0.4).integrate(6, 0.5, after=first)
+    with pytest.raises(ValueError, match="sampled every 0.5"):
+        s.integrate(6, 0.25, after=s.integrate(1, 0.5))

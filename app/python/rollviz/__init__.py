@@ -150,6 +150,8 @@ class Trajectory(Table):
         self.t = _np.asarray(t)
         self.final = None if final is None else _np.asarray(final)
         self.final_named = None if final is None else dict(zip(state_names, (float(v) for v in final)))
+        self._resume = self._scene = self._every = None  # where integrate(after=this) goes on from
+        self._next = 0
 
     def to_xarray(self):
         """The columns as an xarray Dataset over the coordinate t."""
@@ -178,10 +180,21 @@ def _wrap(value):
     return value
 
 
-def _shaped(tool_id, scene, value):
+def _plot_axes(scene, settings, width):
+    """The observables on a plot's axes: the call's settings, else the scene's plot section."""
+    section = _json.loads(scene.to_json()).get("plot", {})
+    names = [settings.get(a, settings.get("plot." + a, section.get(a))) for a in ("x", "y", "z")[:width]]
+    return names if all(isinstance(n, str) for n in names) and len(set(names)) == width else \
+        ["x", "y", "z"][:width]
+
+
+def _shaped(tool_id, scene, value, settings=None):
     """A tool's raw result with names: point sets as Tables, histories as Tables."""
-    if tool_id == "poincare":
+    if tool_id in ("poincare", "map3d"):
         return Table(list(scene.map_coordinates) + ["t", "sheet"], value)
+    if tool_id == "plot":
+        data = _np.asarray(value)
+        return Table(_plot_axes(scene, settings or {}, data.shape[1]), data)
     if not isinstance(value, dict):
         return _wrap(value)
     r = _wrap(value)
@@ -270,7 +283,6 @@ def _model_parameter_keys(scene, call, kw):
 
 _cpp_set = Scene.set
 _cpp_parameters = Scene.parameters
-_cpp_integrate = Scene.integrate
 _cpp_render = Scene.render
 _cpp_snapshot = Scene.snapshot
 _cpp_video = Scene.video
@@ -316,21 +328,81 @@ def _with_state(self, state, **settings):
     return _set(self, **{"initial.state": {k: float(v) for k, v in state.items()}}, **settings)
 
 
-def _integrate(self, time, every, columns=None, *, progress=None, **settings):
-    """Integrates and samples observables at t = 0, every, 2 every, ... up to time (rollviz integrate).
-    columns: observable ids, a list or one name (default: all). Other keywords: model parameters and dotted
-    scene keys for this call (as set()). Returns a Trajectory: r["E"] a column, r.t the times, np.asarray(r)
-    the rows, r.final the whole state at the last sample (Scene.with_state(r.final) goes on from there)."""
+def _integrate(self, time=None, every=None, columns=None, *, t_eval=None, events=None, after=None, progress=None,
+               **settings):
+    """Integrates and samples observables at t = 0, every, 2 every, ... up to time (rollviz integrate); a
+    negative time integrates backward (t = 0, -every, ...); t_eval gives the times instead (ascending from 0, or
+    descending from 0 for a backward run), from the dense output of one integration. columns: observable ids, a
+    list or one name (default: all). after=r (a Trajectory of this scene) goes on from where r ended: the
+    samples after r's last one, bit for bit what one longer call gives. events=(observable, level) or
+    (observable, level, "positive"|"negative"|"both"): the crossings of that level on the way, located on the
+    dense output as the Poincare map locates them (r.events, a Trajectory of the same columns at the crossing
+    times). Other keywords: model parameters and dotted scene keys for this call (as set()). Returns a
+    Trajectory: r["E"] a column, r.t the times, np.asarray(r) the rows, r.final the whole state at the last
+    sample (Scene.with_state(r.final) is a new scene that starts there)."""
     scene = _set(self, **settings) if settings else self
     if isinstance(columns, str):
         columns = [columns]
     if columns is not None and not all(isinstance(c, str) for c in columns):
         raise TypeError(f"integrate(): columns takes observable names (str), not {columns!r}")
     names = list(columns) if columns is not None else list(scene.observables)
+    document = scene.to_json()
+    first = 0
+    if after is not None:
+        if not isinstance(after, Trajectory) or after._resume is None:
+            raise TypeError("integrate(): after takes a Trajectory that integrate() returned")
+        if after._scene != document:
+            raise ValueError("integrate(after=r): r comes from another scene (its parameters, integrator or start "
+                             "differ); Scene.with_state(r.final) starts a new one there")
+    if t_eval is not None:
+        times = [float(v) for v in _np.asarray(t_eval, dtype=float).ravel()]
+        every = None
+    elif time is None or every is None:
+        raise TypeError("integrate(): give time and every (a sample every `every` up to `time`), or t_eval")
+    else:
+        _check_type("integrate()", "time", "number", time)
+        _check_type("integrate()", "every", "number", every)
+        if not _math.isfinite(time):
+            raise ValueError("time: must be a finite number")
+        if not (every > 0) or not _math.isfinite(every):
+            raise ValueError("every: must be positive")
+        if after is not None:
+            if after._every != every:
+                raise ValueError(f"integrate(after=r): r was sampled every {after._every}, not every {every}")
+            first = after._next
+        sign = -1.0 if time < 0 else 1.0
+        # t_k = k every, as the CLI's sampler computes them (rollviz integrate gives the same rows)
+        count = int(_math.floor(abs(time) / every * (1 + 1e-12))) + 1
+        times = [0.0 + sign * k * every for k in range(first, count)]
     # the state's components ride along as columns (each is an observable): the last row is the final state
-    t, X = _cpp_integrate(scene, time, every, names + list(scene.state_names), progress=progress)
-    final = X[-1, len(names):] if len(t) else None
-    return Trajectory(names, _np.ascontiguousarray(X[:, :len(names)]), t, final, scene.state_names)
+    X, snapshot = scene._integrate_at(times, names + list(scene.state_names),
+                                      resume=None if after is None else after._resume, progress=progress)
+    final = X[-1, len(names):] if len(times) else (None if after is None else after.final)
+    r = Trajectory(names, _np.ascontiguousarray(X[:, :len(names)]), _np.asarray(times), final, scene.state_names)
+    r._resume, r._scene, r._every, r._next = snapshot, document, every, first + len(times)
+    if events is not None:
+        r.events = _events(scene, events, times[-1] if times else 0.0, names, progress)
+    return r
+
+
+def _events(scene, events, end, names, progress):
+    """The crossings of an observable's level up to time `end`: the Poincare tool's section on that level."""
+    if not isinstance(events, (tuple, list)) or len(events) not in (2, 3) or not isinstance(events[0], str):
+        raise TypeError(f"integrate(): events takes (observable, level) or (observable, level, direction), "
+                        f"not {events!r}")
+    observable, level = events[0], events[1]
+    direction = events[2] if len(events) == 3 else "both"
+    _check_type("integrate()", "events' level", "number", level)
+    _check_type("integrate()", "events' direction", "choice", direction, ["positive", "negative", "both"])
+    section = scene.set(**{"poincare.section": observable, "poincare.value": float(level),
+                           "poincare.direction": direction, "poincare.points": 10 ** 15,
+                           "poincare.max_time": abs(end), "poincare.integrate": "backward" if end < 0 else "forward"})
+    times = [t for t in section.poincare()["t"] if abs(t) <= abs(end)]
+    if not times:
+        return Trajectory(names, _np.zeros((0, len(names))), _np.zeros(0))
+    X, _ = scene._integrate_at(times, names + list(scene.state_names), progress=progress)
+    return Trajectory(names, _np.ascontiguousarray(X[:, :len(names)]), _np.asarray(times), X[-1, len(names):],
+                      scene.state_names)
 
 
 def _picture_size(call, size):
@@ -430,10 +502,13 @@ def _settings_doc(tool):
         lines.append("Arguments: " + tool["arguments_help"])
     lines.append("Also: the model's parameters by name (energy=0.4) and dotted scene keys, for this call.")
     lines.append("progress: None or a callable taking the fraction done.")
-    if tool["outputs"]:
+    if tool["id"] == "plot":
+        lines += ["", "Returns: a Table of the plotted points, its columns named after the observables on the axes."]
+    elif tool["outputs"]:
         lines.append("")
         lines.append("Returns:" + (" a Table of the map's points (the map coordinates, t, sheet)"
-                                   if tool["id"] == "poincare" else " a Result (a dict whose keys are attributes):"))
+                                   if tool["id"] in ("poincare", "map3d") else
+                                   " a Result (a dict whose keys are attributes):"))
         for name, description in tool["outputs"]:
             lines.append(f"    {name}: {description}")
     if tool["reference"]:
@@ -485,7 +560,7 @@ def _make_method(tool):
                                f"settings: {', '.join(keywords) or 'none'}; the parameters of {self.problem}; "
                                "or a dotted scene key")
         scene = _set(self, **parameters) if parameters else self
-        return _shaped(tool_id, scene, scene._run(tool_id, progress=progress, **settings))
+        return _shaped(tool_id, scene, scene._run(tool_id, progress=progress, **settings), settings)
 
     method.__name__ = tool_id
     method.__qualname__ = f"Scene.{tool_id}"
@@ -518,17 +593,21 @@ def _axis(name, values):
     return {"id": name, "min": float(lo), "max": float(hi), "count": int(count)}
 
 
-def sweep(scene, axes=None, quantity=None, threads=0, progress=None, **settings):
+def sweep(scene, axes=None, quantity=None, threads=0, progress=None, checkpoint=None, **settings):
     """A quantity over a grid of points (rollviz sweep; docs/sweeps.md), on threads. Either a sweep file's path,
     or a Scene with axes={"energy": np.linspace(0.3, 0.6, 31), "map.0": (-0.4, 0.4, 41)} (model parameters,
     "map.0"/"map.1" for the start's map coordinates, dotted scene keys; evenly spaced values or (min, max,
     count)) and quantity ("lyapunov", "megno", "fixedpoint.type", ...: rollviz.tools()' sweep_quantities);
     further keywords are set on every point (energy=0.125, **{"megno.time": 400}). Returns a SweepResult:
-    values[name] shaped like the grid (the first axis first), axes[id] the coordinates, to_xarray()."""
+    values[name] shaped like the grid (the first axis first), axes[id] the coordinates, to_xarray().
+    checkpoint: a file that keeps the finished points (a later call with the same sweep goes on from them; removed
+    once the sweep is complete). Ctrl-C raises KeyboardInterrupt whose `partial` is a SweepResult of the points
+    finished so far (NaN and status "not computed" elsewhere)."""
+    checkpoint = None if checkpoint is None else _os.fspath(checkpoint)
     if isinstance(scene, (str, _os.PathLike)):
         if axes is not None or quantity is not None or settings:
             raise TypeError("sweep(path): a sweep file holds its axes, quantity and settings")
-        return _sweep_result(_sweep_file(_os.fspath(scene), threads, progress=progress))
+        return _run_sweep(_os.fspath(scene), threads, progress, checkpoint)
     if not isinstance(scene, Scene):
         raise TypeError(f"sweep(): give a Scene or a sweep file's path, not {type(scene).__name__}")
     if not axes or not isinstance(axes, dict):
@@ -542,7 +621,16 @@ def sweep(scene, axes=None, quantity=None, threads=0, progress=None, **settings)
         path = _os.path.join(folder, "sweep.json")
         with open(path, "w") as f:
             _json.dump(spec, f)
-        return _sweep_result(_sweep_file(path, threads, progress=progress))
+        return _run_sweep(path, threads, progress, checkpoint)
+
+
+def _run_sweep(path, threads, progress, checkpoint):
+    try:
+        return _sweep_result(_sweep_file(path, threads, progress=progress, checkpoint=checkpoint))
+    except KeyboardInterrupt as stopped:
+        if len(stopped.args) == 2 and isinstance(stopped.args[1], dict):
+            stopped.partial = _sweep_result(stopped.args[1])
+        raise
 
 
 def _sweep_result(raw):
