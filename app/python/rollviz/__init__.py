@@ -211,9 +211,6 @@ def _shaped(tool_id, scene, value, settings=None):
 
 # ------------------------------------------------------------------------------------------ the keyword rule
 
-_NUMBER = (_numbers.Real,)
-
-
 def _check_type(call, name, kind, value, choices=None):
     """A keyword's value against what it takes: TypeError for the wrong type, ValueError for NaN or a choice
     not offered."""
@@ -294,10 +291,8 @@ def _set(self, **settings):
     TypeError for an unknown keyword (naming the nearest), ValueError for a bad value."""
     new = self.copy()
     keys = _model_parameter_keys(self, "set()", settings)
-    if "initial.state" in keys:  # a state replaces the scene's map point or state
+    if "initial.state" in keys:  # a state replaces the scene's map point (and its root) or state
         return _from_document(self, _with_initial(self, {"state": keys.pop("initial.state")}), keys)
-    if "initial.map" in keys:
-        return _from_document(self, _with_initial(self, {"map": keys.pop("initial.map")}), keys)
     _cpp_set(new, **keys)
     return new
 
