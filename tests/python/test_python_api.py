@@ -78,8 +78,15 @@ def test_one_keyword_rule_for_every_call():
         s.lyapunov(count=1.5)
     with pytest.raises(ValueError, match=r"mode = 'fast' is not one of tangent, perturbed"):
         s.lyapunov(mode="fast")
-    with pytest.raises(ValueError, match=r"time must be a number, got nan"):
+    with pytest.raises(ValueError, match=r"time must be a finite number, got nan"):
         s.megno(time=float("nan"))
+    with pytest.raises(ValueError, match=r"energy must be a finite number, got inf"):
+        s.set(energy=1e400)
+    # a bad value: the scene loader's reason, in the call's words (the keyword, not the scene key)
+    with pytest.raises(ValueError, match=r"^lyapunov\(\): time: time = -1 is out of range"):
+        s.lyapunov(time=-1)
+    with pytest.raises(ValueError, match=r"^integrate\(\): energy: energy = -1 is out of range"):
+        s.integrate(1, 0.5, energy=-1)
     with pytest.raises(TypeError, match=r"size takes \(width, height\)"):
         s.render(size=[640, 480, 3])
     # ints given as floats where the value is whole, NumPy numbers, one column as a str

@@ -220,8 +220,8 @@ def _check_type(call, name, kind, value, choices=None):
     if kind in ("number", "integer"):
         if not number(value):
             raise TypeError(f"{call}: {name} takes a number, not {type(value).__name__} ({value!r})")
-        if _math.isnan(value):
-            raise ValueError(f"{call}: {name} must be a number, got nan")
+        if not _math.isfinite(value):  # a scene is JSON: no NaN, no infinity
+            raise ValueError(f"{call}: {name} must be a finite number, got {value}")
         if kind == "integer" and not float(value).is_integer():
             raise TypeError(f"{call}: {name} takes an integer, not {value!r}")
     elif kind == "choice":
@@ -257,6 +257,17 @@ def _unknown(call, key, known, what):
                      + (" " if near else "") + f"{what})")
 
 
+def _in_python_words(call, scene, places, error):
+    """The scene loader's message about a keyword's value ("scenes/x.json:lyapunov.time: ...") as the call's
+    ("lyapunov(): time: ..."); `places` maps each scene key of the call to the keyword the user wrote."""
+    text = str(error)
+    for place, keyword in places.items():
+        for prefix in (f"{scene.source}:{place}: ", f"--set {place}: "):
+            if text.startswith(prefix):
+                return ValueError(f"{call}: {keyword}: {text[len(prefix):]}")
+    return error
+
+
 def _model_parameter_keys(scene, call, kw):
     """Plain model parameters and dotted keys as set() takes them; TypeError for anything else."""
     out = {}
@@ -289,12 +300,22 @@ def _set(self, **settings):
     """A new scene with model parameters (energy=0.4) and dotted scene keys (**{"integrator.method":
     "everhart"}, **{"initial.state": array or {name: value}}) set, as --set does; this scene is unchanged.
     TypeError for an unknown keyword (naming the nearest), ValueError for a bad value."""
-    new = self.copy()
-    keys = _model_parameter_keys(self, "set()", settings)
-    if "initial.state" in keys:  # a state replaces the scene's map point (and its root) or state
-        return _from_document(self, _with_initial(self, {"state": keys.pop("initial.state")}), keys)
-    _cpp_set(new, **keys)
-    return new
+    return _set_for("set()", self, settings)
+
+
+def _set_for(call, scene, settings):
+    """set() on behalf of `call` (its messages name that call)."""
+    keys = _model_parameter_keys(scene, call, settings)
+    places = {("parameters." + k if "." not in k else k): k for k in keys}
+    places.update({k: k for k in keys if "." not in k})
+    try:
+        if "initial.state" in keys:  # a state replaces the scene's map point (and its root) or state
+            return _from_document(scene, _with_initial(scene, {"state": keys.pop("initial.state")}), keys)
+        new = scene.copy()
+        _cpp_set(new, **keys)
+        return new
+    except ValueError as e:
+        raise _in_python_words(call, scene, places, e) from None
 
 
 def _with_initial(scene, initial):
@@ -335,7 +356,7 @@ def _integrate(self, time=None, every=None, columns=None, *, t_eval=None, events
     times). Other keywords: model parameters and dotted scene keys for this call (as set()). Returns a
     Trajectory: r["E"] a column, r.t the times, np.asarray(r) the rows, r.final the whole state at the last
     sample (Scene.with_state(r.final) is a new scene that starts there)."""
-    scene = _set(self, **settings) if settings else self
+    scene = _set_for("integrate()", self, settings) if settings else self
     if isinstance(columns, str):
         columns = [columns]
     if columns is not None and not all(isinstance(c, str) for c in columns):
@@ -410,13 +431,13 @@ def _picture_size(call, size):
 def _render(self, size=(640, 480), time=10.0, *, transparent=False, **settings):
     """The 3D view at `time` (the trace covers [0, time]) as an H x W x 3 uint8 array, rendered headless as
     rollviz render draws it. Other keywords: model parameters and dotted scene keys for this call."""
-    scene = _set(self, **settings) if settings else self
+    scene = _set_for("render()", self, settings) if settings else self
     return _cpp_render(scene, _picture_size("render()", size), time, 1, transparent)
 
 
 def _snapshot(self, path, size=(1280, 720), time=10.0, *, transparent=False, **settings):
     """Writes the 3D view at `time` as a PNG (rollviz render -o PATH). Other keywords as for set()."""
-    scene = _set(self, **settings) if settings else self
+    scene = _set_for("snapshot()", self, settings) if settings else self
     return _cpp_snapshot(scene, _os.fspath(path), _picture_size("snapshot()", size), time, 1, transparent)
 
 
@@ -435,7 +456,7 @@ def _video(self, path, duration=None, fps=None, size=None, speed=0.0, encoder="l
         raise ValueError(f"video(): encoder {encoder!r} is not supported (supported: {', '.join(_VIDEO_ENCODERS)})")
     if size is not None:
         size = _picture_size("video()", size)
-    scene = _set(self, **settings) if settings else self
+    scene = _set_for("video()", self, settings) if settings else self
     return _cpp_video(scene, path, duration, fps, size, speed, encoder, progress=progress)
 
 
@@ -554,8 +575,14 @@ def _make_method(tool):
                 raise _unknown(call, key, list(keywords) + list(arguments) + list(self.parameters),
                                f"settings: {', '.join(keywords) or 'none'}; the parameters of {self.problem}; "
                                "or a dotted scene key")
-        scene = _set(self, **parameters) if parameters else self
-        return _shaped(tool_id, scene, scene._run(tool_id, progress=progress, **settings), settings)
+        scene = _set_for(call, self, parameters) if parameters else self
+        try:
+            raw = scene._run(tool_id, progress=progress, **settings)
+        except ValueError as e:
+            places = {f"{keywords[k]['section']}.{k}": k for k in settings if k in keywords}
+            places.update({k: k for k in settings if "." in k})
+            raise _in_python_words(call, scene, places, e) from None
+        return _shaped(tool_id, scene, raw, settings)
 
     method.__name__ = tool_id
     method.__qualname__ = f"Scene.{tool_id}"
