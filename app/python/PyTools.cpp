@@ -21,6 +21,7 @@
 #include <filesystem>
 #include <fmt/core.h>
 #include <map>
+#include <mutex>
 #include <optional>
 #include <thread>
 #include <unistd.h>
@@ -636,14 +637,23 @@ pyb::object sweep(const std::string& path, int threads, const pyb::object& progr
     }
   } cleanup{store, !kept, complete};
   ChunkScheduler scheduler(store, threads, static_cast<long>(spec.options->get("chunk")));
+  // a failure's whole reason for the points this call computes (the store keeps kReasonBytes of it)
+  std::mutex reasonsMutex;
+  std::map<long, std::string> reasons;
+  const auto evaluate = [&](long i, const ToolControl& pc) {
+    SweepRecord r = evaluateSweepPoint(spec, i, pc);
+    if (!r.ok && r.reason.size() > SweepStore::kReasonBytes) {
+      const std::lock_guard lock(reasonsMutex);
+      reasons[i] = r.reason;
+    }
+    return r;
+  };
   std::optional<pyb::error_already_set> interrupted;
   try {
     runJob(progress, [&](const ToolControl& control) {
       ToolControl c = control;
       c.progress = [&](double) { control.progress(static_cast<double>(store.doneCount()) / spec.points()); };
-      complete = runSweepThreads(
-          store, scheduler, [&](long i, const ToolControl& pc) { return evaluateSweepPoint(spec, i, pc); },
-          threads, c);
+      complete = runSweepThreads(store, scheduler, evaluate, threads, c);
     });
   } catch (pyb::error_already_set& e) {
     if (!e.matches(PyExc_KeyboardInterrupt)) throw;
@@ -669,7 +679,8 @@ pyb::object sweep(const std::string& path, int threads, const pyb::object& progr
     for (std::size_t k = 0; k < columns.size(); ++k)
       columns[k].push_back(k < r.values.size() ? r.values[k] : NAN);
     seconds.push_back(r.seconds);
-    status.push_back(r.ok ? "ok" : "failed: " + r.reason);
+    const auto whole = reasons.find(i);
+    status.push_back(r.ok ? "ok" : "failed: " + (whole != reasons.end() ? whole->second : r.reason));
   }
   pyb::dict values;
   for (std::size_t k = 0; k < axes.size(); ++k)

@@ -315,3 +315,13 @@ def test_continuing_a_trajectory_in_two_calls_equals_one_call_bit_for_bit():
         s.set(energy=0.4).integrate(6, 0.5, after=first)
     with pytest.raises(ValueError, match="sampled every 0.5"):
         s.integrate(6, 0.25, after=s.integrate(1, 0.5))
+
+
+def test_a_failed_points_status_is_whole():
+    """The sweep store keeps 120 bytes of a failure's reason; the points a call computes get it whole."""
+    s = rollviz.Scene.load(scene_path("chaplygin_ball.json"))
+    r = rollviz.sweep(s, axes={"K1": (0.66, 0.7, 3)}, quantity="fixedpoint.type",
+                      **{"fixedpoint.guess": [-1.6661, 0.1045], "fixedpoint.max_iterations": 2})
+    long = [x for x in r.status if len(x) > 130]
+    assert long, r.status
+    assert long[0].startswith("failed: ") and long[0].endswith("(the point lies outside the region of allowed motion))")
