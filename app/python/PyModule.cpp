@@ -103,37 +103,6 @@ pyb::array_t<unsigned char> toPicture(Image&& image) {
   return toArray(std::move(image.rgb), {h, w, 3});
 }
 
-// integrate(time, every, columns): the rows `rollviz integrate` writes, as (t, X)
-pyb::tuple integrate(const Scene& shared, double time, double every, const pyb::object& columns,
-                     const pyb::object& progress) {
-  // a copy: another Python thread may set() the scene while this runs without the GIL
-  const Scene scene = shared; // NOLINT(performance-unnecessary-copy-initialization)
-  if (!(std::isfinite(time) && time >= 0)) throw InputError("time: must be a finite number >= 0");
-  if (!(std::isfinite(every) && every > 0)) throw InputError("every: must be positive");
-  std::vector<std::string> ids;
-  if (columns.is_none())
-    for (const auto& o : scene.model->observables())
-      ids.push_back(o.id);
-  else
-    ids = columns.cast<std::vector<std::string>>();
-  const std::vector<int> cols = observableColumns(*scene.model, ids, "columns");
-  std::vector<double> t, x;
-  // room for the rows, within reason: a huge request grows as it goes instead of failing up front
-  const std::size_t rows = std::min<double>(time / every + 1, 1 << 20);
-  t.reserve(rows);
-  x.reserve(rows * cols.size());
-  runJob(progress, [&](const ToolControl& control) {
-    sampleColumns(scene, time, every, cols, [&](double tk, const std::vector<double>& row) {
-      t.push_back(tk);
-      x.insert(x.end(), row.begin(), row.end());
-      control.progress(time > 0 ? std::abs(tk) / time : 1.0);
-      return !control.stopRequested();
-    });
-  });
-  const auto n = static_cast<pyb::ssize_t>(t.size()), k = static_cast<pyb::ssize_t>(cols.size());
-  return pyb::make_tuple(toArray(std::move(t)), toArray(std::move(x), {n, k}));
-}
-
 // integrate_at(times, columns, resume): the observables at given times, forward from t = 0 when they are >= 0
 // and backward when they are <= 0, from the dense output of one integration; with `resume` (what a former
 // call returned) the integration goes on from where that one's integrator stopped, bit for bit as one call.
@@ -141,7 +110,8 @@ pyb::tuple integrate(const Scene& shared, double time, double every, const pyb::
 pyb::tuple integrateAt(const Scene& shared, const std::vector<double>& times,
                        const std::vector<std::string>& ids, const pyb::object& resume,
                        const pyb::object& progress) {
-  const Scene scene = shared; // NOLINT(performance-unnecessary-copy-initialization): see integrate
+  // a copy: another Python thread may change the scene object while this runs without the GIL
+  const Scene scene = shared; // NOLINT(performance-unnecessary-copy-initialization)
   const bool backward = !times.empty() && times.back() < 0;
   const std::vector<int> cols = observableColumns(*scene.model, ids, "columns");
   const auto& obs = scene.model->observables();
@@ -517,10 +487,6 @@ PYBIND11_MODULE(_rollviz, m) {
           pyb::arg("path"), "Writes the scene file (through a temporary name).")
       .def("__repr__",
            [](const Scene& s) { return "<rollviz.Scene " + s.model->info().id + " from " + s.source + ">"; })
-      .def("integrate", &integrate, pyb::arg("time"), pyb::arg("every"), pyb::arg("columns") = pyb::none(),
-           pyb::kw_only(), pyb::arg("progress") = pyb::none(),
-           "Integrates and samples observables at t = 0, every, 2 every, ... up to time (rollviz integrate): "
-           "returns (t, X), X[k, j] the j-th column at t[k]. columns: observable ids (default: all).")
       .def("_integrate_at", &integrateAt, pyb::arg("times"), pyb::arg("columns"), pyb::kw_only(),
            pyb::arg("resume") = pyb::none(), pyb::arg("progress") = pyb::none(),
            "The columns at the given times (one direction from t = 0): what integrate(t_eval=...) calls.")

@@ -390,12 +390,10 @@ def _integrate(self, time=None, every=None, columns=None, *, t_eval=None, events
         # t_k = k every, as the CLI's sampler computes them (rollviz integrate gives the same rows)
         count = int(_math.floor(abs(time) / every * (1 + 1e-12))) + 1
         times = [0.0 + sign * k * every for k in range(first, count)]
-    # the state's components ride along as columns (each is an observable): the last row is the final state
-    X, snapshot = scene._integrate_at(times, names + list(scene.state_names),
-                                      resume=None if after is None else after._resume, progress=progress)
-    final = X[-1, len(names):] if len(times) else (None if after is None else after.final)
-    r = Trajectory(names, _np.ascontiguousarray(X[:, :len(names)]), _np.asarray(times), final, scene.state_names)
-    r._resume, r._scene, r._every, r._next = snapshot, document, every, first + len(times)
+    r = _sampled(scene, times, names, None if after is None else after._resume, progress)
+    if not times and after is not None:
+        r.final, r.final_named = after.final, after.final_named
+    r._scene, r._every, r._next = document, every, first + len(times)
     if events is not None:
         r.events = _events(scene, events, times[-1] if times else 0.0, names, progress)
     return r
@@ -413,12 +411,17 @@ def _events(scene, events, end, names, progress):
     section = scene.set(**{"poincare.section": observable, "poincare.value": float(level),
                            "poincare.direction": direction, "poincare.points": 10 ** 15,
                            "poincare.max_time": abs(end), "poincare.integrate": "backward" if end < 0 else "forward"})
-    times = [t for t in section.poincare()["t"] if abs(t) <= abs(end)]
-    if not times:
-        return Trajectory(names, _np.zeros((0, len(names))), _np.zeros(0))
-    X, _ = scene._integrate_at(times, names + list(scene.state_names), progress=progress)
-    return Trajectory(names, _np.ascontiguousarray(X[:, :len(names)]), _np.asarray(times), X[-1, len(names):],
-                      scene.state_names)
+    return _sampled(scene, [t for t in section.poincare()["t"] if abs(t) <= abs(end)], names, None, progress)
+
+
+def _sampled(scene, times, names, resume, progress):
+    """The named columns at `times` from one integration (going on from `resume`, an integrator's snapshot). The
+    state's components ride along as columns (each is an observable): the last row gives the final state."""
+    X, snapshot = scene._integrate_at(times, names + list(scene.state_names), resume=resume, progress=progress)
+    final = X[-1, len(names):] if len(times) else None
+    r = Trajectory(names, _np.ascontiguousarray(X[:, :len(names)]), _np.asarray(times), final, scene.state_names)
+    r._resume = snapshot
+    return r
 
 
 def _picture_size(call, size):
