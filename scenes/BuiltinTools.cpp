@@ -5,11 +5,15 @@
 
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/Format.h"
+#include "dynamics/tools/FourierSpectrum.h"
+#include "dynamics/tools/Lyapunov.h"
+#include "dynamics/tools/Megno.h"
 #include "render/charts/ToolCharts.h"
 #include "scenes/FixedPointJson.h"
 #include "scenes/SceneTools.h"
 #include "scenes/ToolRunner.h"
 
+#include <algorithm>
 #include <mutex>
 
 namespace rv {
@@ -133,12 +137,180 @@ std::unique_ptr<Chart> bifurcationCurveChart(const Scene&, const ToolResult& r) 
   return chart;
 }
 
+// A run of estimates against time (dynamics/tools: MegnoRun, LyapunovRun): its fields are the last
+// estimate's, its table the history of estimates (every output period), the table's columns named at the
+// first estimate.
+template <class Run, class Estimate> class EstimatesRun : public ToolRun {
+public:
+  template <class Settings>
+  EstimatesRun(const Scene& scene, const Settings& settings)
+      : model_(scene.model), spec_(scene.runSpec()),
+        run_(
+            *model_, [this] { return spec_.makeIntegrator(*model_); }, scene.initialState, settings) {}
+  bool advance(const ToolControl& control) override {
+    return run_.run(
+        [this](const Estimate& e) {
+          if (history_.rows() && history_.values[0].back() == e.time) return; // the last may come twice
+          const std::vector<double> row = this->row(e);
+          if (history_.names.empty()) name(row.size());
+          history_.addRow(row);
+        },
+        control);
+  }
+  void save(Snapshot& state) const override {
+    run_.save(state);
+    state.put(static_cast<double>(history_.names.size()));
+    putTable(state, history_);
+  }
+  void restore(Snapshot& state) override {
+    run_.restore(state);
+    const long width = state.getLong();
+    history_ = {};
+    if (width > 0) name(static_cast<std::size_t>(width));
+    getTable(state, history_);
+  }
+
+protected:
+  /// The history's row of an estimate: t first.
+  virtual std::vector<double> row(const Estimate& e) const = 0;
+  /// The names of a row of `width` numbers.
+  virtual std::vector<std::string> columns(std::size_t width) const = 0;
+  const Run& run() const { return run_; }
+  const NamedColumns& history() const { return history_; }
+
+private:
+  void name(std::size_t width) {
+    history_.names = columns(width);
+    history_.values.resize(width);
+  }
+  std::shared_ptr<const Model> model_;
+  RunSpec spec_;
+  Run run_;
+  NamedColumns history_;
+};
+
+// MEGNO and FLI along the scene's trajectory (dynamics/tools/Megno.h)
+class MegnoToolRun final : public EstimatesRun<MegnoRun, MegnoEstimate> {
+public:
+  explicit MegnoToolRun(const Scene& scene) : EstimatesRun(scene, scene.megno) {}
+  ToolResult result() const override {
+    const MegnoEstimate& e = run().result().last;
+    ToolResult r;
+    r.fields = {
+        {"megno", e.megno}, {"megno_rate", e.megnoRate}, {"y", e.y}, {"fli", e.fli}, {"time", e.time}};
+    r.table = history();
+    return r;
+  }
+
+private:
+  std::vector<double> row(const MegnoEstimate& e) const override { return {e.time, e.megno, e.y, e.fli}; }
+  std::vector<std::string> columns(std::size_t) const override { return {"t", "megno", "y", "fli"}; }
+};
+
+// the Lyapunov exponents along the scene's trajectory (dynamics/tools/Lyapunov.h)
+class LyapunovToolRun final : public EstimatesRun<LyapunovRun, LyapunovEstimate> {
+public:
+  explicit LyapunovToolRun(const Scene& scene) : EstimatesRun(scene, scene.lyapunov) {}
+  ToolResult result() const override {
+    const LyapunovResult& l = run().result();
+    ToolResult r;
+    r.fields = {{"exponents", l.last.exponents},
+                {"max", l.last.exponents.empty() ? 0.0 : l.last.exponents.front()},
+                {"sum", l.last.sum()},
+                {"time", l.last.time},
+                {"converged", l.converged}};
+    r.table = history();
+    return r;
+  }
+
+private:
+  std::vector<double> row(const LyapunovEstimate& e) const override {
+    std::vector<double> v{e.time};
+    v.insert(v.end(), e.exponents.begin(), e.exponents.end());
+    return v;
+  }
+  std::vector<std::string> columns(std::size_t width) const override {
+    std::vector<std::string> names{"t"};
+    for (std::size_t i = 1; i < width; ++i)
+      names.push_back(format("L%zu", i));
+    return names;
+  }
+};
+
+// the Fourier spectrum of spectrum.function along the scene's trajectory (dynamics/tools/FourierSpectrum.h)
+ToolResult runSpectrum(const Scene& scene, const ToolControl& control) {
+  const SpectrumSettings& s = scene.spectrum;
+  if (s.function.empty()) throw InputError("the scene has no spectrum.function (the observable to expand)");
+  auto integ = scene.startIntegrator();
+  const SpectrumResult r = fourierSpectrum(*scene.model, *integ, s, control);
+  ToolResult out;
+  out.table.names = {"frequency", "amplitude"};
+  out.table.values = {r.frequency, r.amplitude};
+  nlohmann::json peaks = nlohmann::json::array();
+  for (const auto& p : r.peaks)
+    peaks.push_back({{"frequency", p.frequency}, {"amplitude", p.amplitude}});
+  out.fields = {{"function", s.function}, {"peaks", peaks}, {"step", r.step}, {"samples", r.samples}};
+  out.stopped = control.stopRequested();
+  return out;
+}
+
+// the amplitudes against frequency, the peaks marked, up to a little past the highest peak (the rest of a
+// smooth signal's spectrum is flat)
+std::unique_ptr<Chart> spectrumChart(const Scene&, const ToolResult& r) {
+  const auto& frequency = r.table.values.at(0);
+  const auto& amplitude = r.table.values.at(1);
+  std::vector<std::array<double, 2>> peaks;
+  double top = 0, amax = 0;
+  for (const auto& p : r.fields.at("peaks")) {
+    peaks.push_back({p["frequency"].get<double>(), p["amplitude"].get<double>()});
+    top = std::max(top, peaks.back()[0]), amax = std::max(amax, peaks.back()[1]);
+  }
+  auto chart = std::make_unique<PoincareChart>("frequency",
+                                               "amplitude of " + r.fields.at("function").get<std::string>());
+  drawCurves(*chart, frequency, {amplitude}, peaks);
+  if (top > 0 && !frequency.empty() && 2 * top < frequency.back())
+    chart->setRanges(0, 2 * top, 0, 1.05 * amax);
+  chart->setTitle("Fourier spectrum");
+  return chart;
+}
+
+// the history's curves against t, each with its last value in the legend (the number the chart is read for)
+std::unique_ptr<Chart> historyChart(const ToolResult& r, const std::string& title, const std::string& yTitle,
+                                    const std::vector<std::string>& curves) {
+  const auto& t = r.table;
+  auto chart = std::make_unique<PoincareChart>("t", yTitle);
+  std::vector<std::vector<double>> ys;
+  std::vector<std::string> names;
+  for (std::size_t c = 1; c < t.names.size(); ++c)
+    if (curves.empty() || std::find(curves.begin(), curves.end(), t.names[c]) != curves.end()) {
+      ys.push_back(t.values[c]);
+      const std::string label = t.names[c] == "megno" ? "<Y>" : t.names[c];
+      names.push_back(format("%s = %.6g", label.c_str(), t.values[c].empty() ? 0.0 : t.values[c].back()));
+    }
+  if (!t.names.empty()) drawCurves(*chart, t.values[0], ys, {}, names);
+  chart->setTitle(title);
+  return chart;
+}
+
 } // namespace
 
 void registerBuiltinTools() {
   static std::once_flag once;
   std::call_once(once, [] {
     addToolRunner("bifurcation_curve", {runBifurcationCurve, bifurcationCurveChart});
+    addToolRunner("spectrum", {runSpectrum, spectrumChart});
+    addToolRunner("lyapunov", {.chart =
+                                   [](const Scene&, const ToolResult& r) {
+                                     return historyChart(r, "Lyapunov exponents", "Lyapunov exponents", {});
+                                   },
+                               .start = [](const Scene& s) { return std::make_unique<LyapunovToolRun>(s); },
+                               .tableName = "history"});
+    addToolRunner("megno", {.chart =
+                                [](const Scene&, const ToolResult& r) {
+                                  return historyChart(r, "MEGNO and FLI", "MEGNO <Y>", {"megno"});
+                                },
+                            .start = [](const Scene& s) { return std::make_unique<MegnoToolRun>(s); },
+                            .tableName = "history"});
   });
 }
 

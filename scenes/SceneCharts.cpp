@@ -3,9 +3,6 @@
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/Format.h"
 #include "dynamics/tools/FixedPoint.h"
-#include "dynamics/tools/FourierSpectrum.h"
-#include "dynamics/tools/Lyapunov.h"
-#include "dynamics/tools/Megno.h"
 #include "dynamics/tools/ToolRegistry.h"
 #include "render/charts/ToolCharts.h"
 #include "scenes/SceneLoader.h"
@@ -42,18 +39,10 @@ struct GridProgress final : ChartProgress {
   MapGrid grid;
 };
 
-// a run of estimates against time (LyapunovRun, MegnoRun) and the curves drawn of them so far
-template <class Run> struct EstimatesProgress final : ChartProgress {
-  template <class Settings>
-  EstimatesProgress(const Scene& scene, const Settings& settings)
-      : model(scene.model), spec(scene.runSpec()),
-        run(
-            *model, [this] { return spec.makeIntegrator(*model); }, scene.initialState, settings) {}
-  std::shared_ptr<const Model> model;
-  RunSpec spec;
-  Run run;
-  std::vector<double> t;
-  std::vector<std::vector<double>> curves;
+// a run of a tool that runs through ToolRunner.h (ToolRun: a stopped one goes on)
+struct ToolRunProgress final : ChartProgress {
+  explicit ToolRunProgress(std::unique_ptr<ToolRun> r) : run(std::move(r)) {}
+  std::unique_ptr<ToolRun> run;
 };
 
 struct MapProgress final : ChartProgress {
@@ -214,58 +203,6 @@ std::unique_ptr<Chart> continuationChart(const Scene& scene, const ChartRequest&
   return chart;
 }
 
-std::unique_ptr<Chart> spectrumChart(const Scene& scene, const ChartRequest&, const ToolControl& control) {
-  if (scene.spectrum.function.empty())
-    throw InputError("--view spectrum: the scene has no spectrum.function");
-  auto integ = scene.startIntegrator();
-  const SpectrumResult r = fourierSpectrum(*scene.model, *integ, scene.spectrum, control);
-  std::vector<std::array<double, 2>> peaks;
-  for (const auto& pk : r.peaks)
-    peaks.push_back({pk.frequency, pk.amplitude});
-  auto chart = std::make_unique<PoincareChart>("frequency", "amplitude of " + scene.spectrum.function);
-  drawCurves(*chart, r.frequency, {r.amplitude}, peaks);
-  // up to a little past the highest peak: the rest of a smooth signal's spectrum is flat
-  double top = 0, amax = 0;
-  for (const auto& pk : r.peaks)
-    top = std::max(top, pk.frequency), amax = std::max(amax, pk.amplitude);
-  if (top > 0 && !r.frequency.empty() && 2 * top < r.frequency.back())
-    chart->setRanges(0, 2 * top, 0, 1.05 * amax);
-  return chart;
-}
-
-std::unique_ptr<Chart> lyapunovChart(const Scene& scene, const ChartRequest& r, const ToolControl& control) {
-  std::unique_ptr<ChartProgress> local;
-  auto& progress = progressOf<EstimatesProgress<LyapunovRun>>(r, local, scene, scene.lyapunov);
-  auto& t = progress.t;
-  auto& ex = progress.curves;
-  progress.run.run(
-      [&](const LyapunovEstimate& e) {
-        t.push_back(e.time);
-        ex.resize(e.exponents.size());
-        for (std::size_t i = 0; i < e.exponents.size(); ++i)
-          ex[i].push_back(e.exponents[i]);
-      },
-      control);
-  auto chart = std::make_unique<PoincareChart>("t", "Lyapunov exponents");
-  std::vector<std::string> names; // each exponent with its last estimate: the number the chart is read for
-  for (std::size_t i = 0; i < ex.size(); ++i)
-    names.push_back(format("L%zu = %.6g", i + 1, ex[i].empty() ? 0.0 : ex[i].back()));
-  drawCurves(*chart, t, ex, {}, names);
-  return chart;
-}
-
-std::unique_ptr<Chart> megnoChart(const Scene& scene, const ChartRequest& r, const ToolControl& control) {
-  std::unique_ptr<ChartProgress> local;
-  auto& progress = progressOf<EstimatesProgress<MegnoRun>>(r, local, scene, scene.megno);
-  auto& t = progress.t;
-  auto& y = progress.curves;
-  y.resize(1);
-  progress.run.run([&](const MegnoEstimate& e) { t.push_back(e.time), y[0].push_back(e.megno); }, control);
-  auto chart = std::make_unique<PoincareChart>("t", "MEGNO <Y>");
-  drawCurves(*chart, t, y, {}, {format("<Y> = %.6g", y[0].empty() ? 0.0 : y[0].back())});
-  return chart;
-}
-
 std::unique_ptr<Chart> surfaceChart(const Scene& scene, const ChartRequest& r, const ToolControl& control) {
   return gridChart(scene, r, MapGrid::Kind::Surface, control);
 }
@@ -299,9 +236,6 @@ const std::vector<std::pair<std::string, ChartBuilder>>& chartBuilders() {
                                                                    {"multipliers", multipliersChart},
                                                                    {"bifurcation", bifurcationChart},
                                                                    {"continuation", continuationChart},
-                                                                   {"spectrum", spectrumChart},
-                                                                   {"lyapunov", lyapunovChart},
-                                                                   {"megno", megnoChart},
                                                                    {"surface", surfaceChart},
                                                                    {"ram", ramChart}};
   return b;
@@ -332,7 +266,14 @@ std::unique_ptr<Chart> sceneChart(const Scene& scene, const std::string& view, c
       return chart;
     }
   if (const ToolEntry* tool = runnableToolOfView(view)) {
-    const ToolResult result = runTool(*tool, scene, control);
+    std::unique_ptr<ChartProgress> local;
+    std::unique_ptr<ChartProgress>& slot = progress ? *progress : local;
+    if (!dynamic_cast<ToolRunProgress*>(slot.get()))
+      slot = std::make_unique<ToolRunProgress>(startTool(*tool, scene));
+    ToolRun& run = *static_cast<ToolRunProgress&>(*slot).run;
+    const bool finished = run.advance(control);
+    ToolResult result = run.result();
+    result.stopped = !finished;
     return toolResultChart(*tool, scene, result);
   }
   std::string known;

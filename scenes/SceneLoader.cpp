@@ -245,7 +245,7 @@ const TextKey textKeys[] = {
      "the second parameter of the curve (the first is continuation.parameter)", "text", true},
     {"function", "spectrum", "",
      [](const json& j, const Where& w, Scene& scene) { scene.spectrum.function = text(j, w); },
-     "the observable whose spectrum is taken"},
+     "the observable whose spectrum is taken", "text", true},
     {"x", "plot", "",
      [](const json& j, const Where& w, Scene& scene) { scene.plot.settings.axes[0] = text(j, w); },
      "the observable on the x axis"},

@@ -2,7 +2,6 @@
 
 #include "dynamics/core/Errors.h"
 #include "dynamics/tools/FixedPoint.h"
-#include "dynamics/tools/Megno.h"
 #include "dynamics/tools/ToolRegistry.h"
 #include "dynamics/tools/ToolSettings.h"
 #include "scenes/JsonFields.h"
@@ -56,21 +55,9 @@ void integrateTo(const Scene& scene, double time, const ToolControl& control, On
 }
 
 std::vector<double> lyapunovExponents(const Scene& scene, const ToolControl& control) {
-  const RunSpec spec = scene.runSpec();
-  const Model& model = *scene.model;
-  LyapunovRun run(
-      model, [&] { return spec.makeIntegrator(model); }, scene.initialState, scene.lyapunov);
-  if (!run.run({}, control)) throw Stopped{};
-  return run.result().last.exponents;
-}
-
-MegnoEstimate megnoEstimate(const Scene& scene, const ToolControl& control) {
-  const RunSpec spec = scene.runSpec();
-  const Model& model = *scene.model;
-  MegnoRun run(
-      model, [&] { return spec.makeIntegrator(model); }, scene.initialState, scene.megno);
-  if (!run.run({}, control)) throw Stopped{};
-  return run.result().last;
+  const ToolResult r = runTool(ToolRegistry::global().get("lyapunov"), scene, control);
+  if (r.stopped) throw Stopped{};
+  return r.fields.at("exponents").get<std::vector<double>>();
 }
 
 // the smallest d dividing n with |Map^d(x) - x| small: the least period of a point of Map^n
@@ -100,10 +87,6 @@ std::vector<SweepQuantity> makeQuantities() {
   const auto single = [](const std::string& name) {
     return [name](const SweepSpec&) { return std::vector<std::string>{name}; };
   };
-  q.push_back({"lyapunov.max", "lyapunov", "the largest Lyapunov exponent at the end of lyapunov.time",
-               single("lyapunov.max"), [](const SweepSpec&, const Scene& s, const ToolControl& c) {
-                 return std::vector<double>{lyapunovExponents(s, c).front()};
-               }});
   q.push_back({"lyapunov.positive", "lyapunov",
                "how many exponents exceed options.zero (finite-time estimates of zero exponents decay like "
                "1/t)",
@@ -112,15 +95,6 @@ std::vector<SweepQuantity> makeQuantities() {
                  const auto e = lyapunovExponents(s, c);
                  return std::vector<double>{static_cast<double>(
                      std::count_if(e.begin(), e.end(), [zero](double v) { return v > zero; }))};
-               }});
-  q.push_back({"megno", "megno",
-               "<Y>, the time-averaged MEGNO at the end of megno.time (2: torus, growing: chaos)",
-               single("megno"), [](const SweepSpec&, const Scene& s, const ToolControl& c) {
-                 return std::vector<double>{megnoEstimate(s, c).megno};
-               }});
-  q.push_back({"fli", "megno", "the fast Lyapunov indicator ln |w(t)| at the end of megno.time",
-               single("fli"), [](const SweepSpec&, const Scene& s, const ToolControl& c) {
-                 return std::vector<double>{megnoEstimate(s, c).fli};
                }});
   q.push_back({"fixedpoint.type", "fixedpoint",
                "the type of the fixed point of order fixedpoint.order found from the point: " + typeCodes(),
@@ -229,12 +203,13 @@ std::vector<SweepQuantity> makeQuantities() {
                  return v;
                },
                /*needsMap=*/true, /*cloud=*/true});
-  // the numbers of every tool that runs through scenes/ToolRunner.h (a module's too): "TOOL.OUTPUT"
+  // the numbers of every tool that runs through scenes/ToolRunner.h (a module's too): "TOOL.OUTPUT" or the
+  // output's own quantity name
   for (const auto& tool : ToolRegistry::global().entries()) {
     if (!findToolRunner(tool.id)) continue;
     for (const auto& out : tool.outputs) {
       if (!out.quantity) continue;
-      const std::string id = tool.id + "." + out.name;
+      const std::string id = sweepQuantityId(tool, out);
       q.push_back({id, tool.id, out.description, single(id),
                    [&tool, name = out.name](const SweepSpec&, const Scene& s, const ToolControl& c) {
                      const ToolResult r = runTool(tool, s, c);

@@ -5,6 +5,7 @@
 // Python method, the chart view (GUI chart window, `rollviz chart`), the sweep quantities (the outputs
 // declared `quantity`), `describe-tool`. Modules add tools this way (scenes/Module.h).
 #pragma once
+#include "dynamics/core/Snapshot.h"
 #include "dynamics/tools/ToolControl.h"
 #include "dynamics/tools/ToolRegistry.h"
 #include "render/charts/Chart.h"
@@ -28,7 +29,24 @@ struct ToolResult {
   bool stopped = false;
 };
 
-/// How a tool runs on a scene and how its result is drawn.
+/// One run of a tool on a scene that can stop and go on: a stopped chart job continues it (GUI Continue),
+/// `--checkpoint` saves it and a later process restores it, to the same result bit for bit.
+class ToolRun {
+public:
+  virtual ~ToolRun() = default;
+  /// Goes on from where it stopped (the start, the first time) to the end or a stop request; true when
+  /// finished. Reports control.progress; throws ComputationError when the computation fails.
+  virtual bool advance(const ToolControl& control) = 0;
+  /// What it has computed so far: all of it once finished (`stopped` is set by the caller).
+  virtual ToolResult result() const = 0;
+  /// Saves what it needs to go on (the table so far included); restore() into a run started alike on the
+  /// same scene goes on bit-identically. A run that cannot resume throws InputError.
+  virtual void save(Snapshot& state) const = 0;
+  virtual void restore(Snapshot& state) = 0;
+};
+
+/// How a tool runs on a scene and how its result is drawn: `run` computes it at once; `start` instead begins
+/// a run that stops and goes on (ToolRun; the CLI command then offers --checkpoint). Give one of them.
 struct ToolRunner {
   /// Runs the tool on the scene (its settings: scene.tool(entry.section)); polls control.stopRequested and
   /// reports control.progress. Throws InputError for settings it cannot use, ComputationError when the
@@ -37,7 +55,22 @@ struct ToolRunner {
   /// Draws a result; empty: the table's columns against its first, titled with the quantities
   /// (SceneCharts.cpp draws both; this file stays free of VTK code, so the fuzzers link it).
   std::function<std::unique_ptr<Chart>(const Scene&, const ToolResult&)> chart = {};
+  /// Begins a resumable run on the scene (InputError for settings it cannot use).
+  std::function<std::unique_ptr<ToolRun>(const Scene&)> start = {};
+  /// The name the table goes by as one piece -- the Python result's key that holds it as one Table (e.g.
+  /// "history"); empty: each column is a key of its own.
+  std::string tableName = {};
 };
+
+/// Begins a run of tool `id` on the scene: the runner's own resumable run, or its `run` wrapped in one that
+/// computes from the start each time and cannot be saved (resumable() says which).
+std::unique_ptr<ToolRun> startTool(const ToolEntry& tool, const Scene& scene);
+/// Whether the tool's runs go on after a stop and can be saved (the runner has `start`).
+bool resumable(const ToolEntry& tool);
+
+/// A table in a Snapshot (a ToolRun's save): its names' count, then each column; getTable checks the names.
+void putTable(Snapshot& state, const NamedColumns& table);
+void getTable(Snapshot& state, NamedColumns& table);
 
 /// Binds a runner to the registered tool `id` (its chart view is the entry's chartView); InputError when the
 /// tool is not registered or already has one.
@@ -47,9 +80,15 @@ const ToolRunner* findToolRunner(const std::string& id);
 /// The registered tool whose chart view is `view` and that has a runner, or nullptr.
 const ToolEntry* runnableToolOfView(const std::string& view);
 
-/// Runs tool `id` on the scene and checks that the result holds every field its entry declares (a runner
-/// that forgets one is a ComputationError naming it, not a silent gap in some front end).
+/// A finished result holds every output the entry declares (a field or a column); else a ComputationError
+/// naming the missing one -- a runner that forgets one is not a silent gap in some front end.
+void checkToolResult(const ToolEntry& tool, const ToolResult& result);
+/// Runs tool `id` on the scene from the start to its end or a stop (startTool, then advance) and checks the
+/// result (checkToolResult).
 ToolResult runTool(const ToolEntry& tool, const Scene& scene, const ToolControl& control);
+
+/// The sweep quantity an output marked `quantity` is: its quantityName, else "TOOL.OUTPUT".
+std::string sweepQuantityId(const ToolEntry& tool, const ToolOutput& output);
 
 /// The result as one JSON object: the fields, and "stopped" when the run was stopped.
 nlohmann::json toolResultJson(const ToolResult& result);

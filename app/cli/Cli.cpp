@@ -56,12 +56,15 @@ std::pair<int, int> parseSize(const std::string& text) {
 
 const std::map<std::string, ToolCommandBuilder>& toolCommandBuilders() {
   static const std::map<std::string, ToolCommandBuilder> builders{
-      {"poincare", addPoincareCommand},     {"spectrum", addSpectrumCommand},
-      {"lyapunov", addLyapunovCommand},     {"megno", addMegnoCommand},
-      {"fixedpoint", addFixedPointCommand}, {"continue", addContinueCommand},
-      {"separatrix", addSeparatrixCommand}, {"bifurcation-tree", addBifurcationTreeCommand},
-      {"surface", addSurfaceCommand},       {"ram", addRamCommand},
-      {"diagram", addDiagramCommand},       {"sweep", addSweepCommand}};
+      {"poincare", addPoincareCommand},
+      {"fixedpoint", addFixedPointCommand},
+      {"continue", addContinueCommand},
+      {"separatrix", addSeparatrixCommand},
+      {"bifurcation-tree", addBifurcationTreeCommand},
+      {"surface", addSurfaceCommand},
+      {"ram", addRamCommand},
+      {"diagram", addDiagramCommand},
+      {"sweep", addSweepCommand}};
   return builders;
 }
 

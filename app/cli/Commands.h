@@ -56,9 +56,6 @@ using ToolCommandBuilder = Command (*)(CLI::App* cmd);
 /// By ToolEntry::command; runCli adds the subcommand of every registered tool that has one from here.
 const std::map<std::string, ToolCommandBuilder>& toolCommandBuilders();
 Command addPoincareCommand(CLI::App* cmd);
-Command addLyapunovCommand(CLI::App* cmd);
-Command addMegnoCommand(CLI::App* cmd);
-Command addSpectrumCommand(CLI::App* cmd);
 Command addFixedPointCommand(CLI::App* cmd);
 Command addContinueCommand(CLI::App* cmd);
 Command addSeparatrixCommand(CLI::App* cmd);

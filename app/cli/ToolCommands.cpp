@@ -1,17 +1,17 @@
-// ToolCommands.cpp -- `rollviz poincare`, `rollviz lyapunov`, `rollviz megno`, `rollviz spectrum`: the tools
-// of dynamics/tools run in the foreground, with progress on a terminal and Ctrl-C keeping what was computed
-// (exit 130).
+// ToolCommands.cpp -- `rollviz poincare` and the command of every tool with a runner (scenes/ToolRunner.h:
+// spectrum, lyapunov, megno, bifurcation-curve, a module's): the tools of dynamics/tools
+// run in the foreground, with progress on a terminal and Ctrl-C keeping what was computed (exit 130).
 #include "app/cli/Checkpoint.h"
 #include "app/cli/Commands.h"
 #include "app/cli/Output.h"
 #include "app/cli/Progress.h"
 #include "dynamics/core/Errors.h"
 #include "dynamics/io/AtomicFile.h"
-#include "dynamics/tools/Megno.h"
 #include "render/export/VtkXmlFiles.h"
 #include "scenes/SectionTextKeys.h"
 #include "scenes/ToolRunner.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fmt/core.h>
@@ -22,40 +22,10 @@ namespace rv {
 
 namespace {
 
-void printPeaks(const std::string& function, const SpectrumResult& r) {
-  nlohmann::json peaks = nlohmann::json::array();
-  for (const auto& p : r.peaks)
-    peaks.push_back({{"frequency", p.frequency}, {"amplitude", p.amplitude}});
-  fmt::print(
-      "{}\n",
-      nlohmann::json{{"function", function}, {"peaks", peaks}, {"step", r.step}, {"samples", r.samples}}
-          .dump());
-}
-
 struct PoincareOptions {
   SceneArgs scene;
   long points = 0;
   std::string output, checkpoint;
-};
-struct LyapunovOptions {
-  SceneArgs scene;
-  double time = 0;
-  bool json = false;
-  std::string checkpoint;
-};
-
-struct MegnoOptions {
-  SceneArgs scene;
-  double time = 0;
-  bool json = false;
-  std::string checkpoint;
-};
-
-struct SpectrumOptions {
-  SceneArgs scene;
-  std::string function, output;
-  long samples = 0;
-  bool json = false;
 };
 
 } // namespace
@@ -132,124 +102,12 @@ Command addPoincareCommand(CLI::App* cmd) {
           }};
 }
 
-Command addLyapunovCommand(CLI::App* cmd) {
-  auto o = std::make_shared<LyapunovOptions>();
-  addSceneArgs(cmd, o->scene);
-  cmd->add_option("--time", o->time, "integration time (default: the scene's lyapunov.time)");
-  cmd->add_flag("--json", o->json, "print one JSON object: exponents, sum, time, converged");
-  addCheckpointOption(cmd, o->checkpoint);
-  return {cmd, [o] {
-            const Scene scene = o->scene.load();
-            LyapunovSettings s = scene.lyapunov;
-            if (o->time < 0 || !std::isfinite(o->time)) throw InputError("--time: must be positive");
-            if (o->time > 0) s.maxTime = o->time;
-            const RunSpec spec = scene.runSpec();
-            const Model& model = *scene.model;
-            Checkpoint checkpoint(o->checkpoint, "lyapunov",
-                                  scene.document.dump() + fmt::format(" --time {}", s.maxTime));
-            LyapunovRun run(
-                model, [&] { return spec.makeIntegrator(model); }, scene.initialState, s);
-            if (auto saved = checkpoint.load()) run.restore(saved->state);
-            Progress progress("lyapunov");
-            checkpoint.run([&](const ToolControl& c) { return run.run({}, c); },
-                           [&](Snapshot& state) { run.save(state); }, interruptibleControl(progress));
-            const LyapunovResult r = run.result();
-            if (!r.stopped) checkpoint.finish();
-            if (o->json) {
-              nlohmann::json j{{"exponents", r.last.exponents},
-                               {"sum", r.last.sum()},
-                               {"time", r.last.time},
-                               {"converged", r.converged},
-                               {"stopped", r.stopped}};
-              fmt::print("{}\n", j.dump());
-            } else {
-              for (std::size_t i = 0; i < r.last.exponents.size(); ++i)
-                fmt::print("lambda{} = {:.10g}\n", i + 1, r.last.exponents[i]);
-              fmt::print("sum = {:.10g}\ntime = {:.10g}\nconverged = {}\n", r.last.sum(), r.last.time,
-                         r.converged);
-            }
-            return r.stopped ? 130 : 0;
-          }};
-}
-
-Command addMegnoCommand(CLI::App* cmd) {
-  auto o = std::make_shared<MegnoOptions>();
-  addSceneArgs(cmd, o->scene);
-  cmd->add_option("--time", o->time, "integration time (default: the scene's megno.time)");
-  cmd->add_flag("--json", o->json, "print one JSON object: megno, megno_rate, y, fli, time");
-  addCheckpointOption(cmd, o->checkpoint);
-  return {cmd, [o] {
-            const Scene scene = o->scene.load();
-            MegnoSettings s = scene.megno;
-            if (o->time < 0 || !std::isfinite(o->time)) throw InputError("--time: must be positive");
-            if (o->time > 0) s.maxTime = o->time;
-            const RunSpec spec = scene.runSpec();
-            const Model& model = *scene.model;
-            Checkpoint checkpoint(o->checkpoint, "megno",
-                                  scene.document.dump() + fmt::format(" --time {}", s.maxTime));
-            MegnoRun run(
-                model, [&] { return spec.makeIntegrator(model); }, scene.initialState, s);
-            if (auto saved = checkpoint.load()) run.restore(saved->state);
-            Progress progress("megno");
-            checkpoint.run([&](const ToolControl& c) { return run.run({}, c); },
-                           [&](Snapshot& state) { run.save(state); }, interruptibleControl(progress));
-            const MegnoResult& r = run.result();
-            if (!r.stopped) checkpoint.finish();
-            const MegnoEstimate& e = r.last;
-            if (o->json)
-              fmt::print("{}\n", nlohmann::json{{"megno", e.megno},
-                                                {"megno_rate", e.megnoRate},
-                                                {"y", e.y},
-                                                {"fli", e.fli},
-                                                {"time", e.time},
-                                                {"stopped", r.stopped}}
-                                     .dump());
-            else
-              fmt::print(
-                  "megno = {:.10g}\nmegno_rate = {:.10g}\ny = {:.10g}\nfli = {:.10g}\ntime = {:.10g}\n",
-                  e.megno, e.megnoRate, e.y, e.fli, e.time);
-            return r.stopped ? 130 : 0;
-          }};
-}
-
-Command addSpectrumCommand(CLI::App* cmd) {
-  auto o = std::make_shared<SpectrumOptions>();
-  addSceneArgs(cmd, o->scene);
-  cmd->add_option("--function", o->function, "observable to expand (default: the scene's spectrum.function)");
-  cmd->add_option("--samples", o->samples, "number of iterations (integration steps) sampled");
-  cmd->add_option("-o,--output", o->output, "CSV file: frequency, amplitude")->check(writesOneOf({".csv"}));
-  cmd->add_flag("--json", o->json, "print the peaks as one JSON object");
-  return {cmd, [o] {
-            const Scene scene = o->scene.load();
-            SpectrumSettings s = scene.spectrum;
-            if (!o->function.empty()) s.function = o->function;
-            if (s.function.empty()) throw InputError("--function: give the observable to expand");
-            if (o->samples < 0) throw InputError("--samples: must be positive");
-            if (o->samples > 0) s.samples = o->samples;
-            Output out(o->output.empty() && o->json ? "/dev/null" : o->output);
-            auto integ = scene.startIntegrator();
-            Progress progress("spectrum");
-            const SpectrumResult r = fourierSpectrum(*scene.model, *integ, s, interruptibleControl(progress));
-            if (o->output.empty() && o->json) {
-              printPeaks(s.function, r);
-              return interrupted() ? 130 : 0;
-            }
-            std::fprintf(out.get(), "frequency,amplitude\n");
-            for (std::size_t k = 0; k < r.frequency.size(); ++k)
-              std::fprintf(out.get(), "%.17g,%.17g\n", r.frequency[k], r.amplitude[k]);
-            out.commit();
-            if (o->json) {
-              printPeaks(s.function, r);
-            }
-            return interrupted() ? 130 : 0;
-          }};
-}
-
 Command addRegisteredToolCommand(CLI::App* cmd, const ToolEntry& tool) {
   struct Options {
     SceneArgs scene;
     std::string output;
     bool json = false;
+    std::string checkpoint;
     std::map<std::string, std::string> settings; // --KEY of the settings table, by key
   };
   auto o = std::make_shared<Options>();
@@ -269,6 +127,7 @@ Command addRegisteredToolCommand(CLI::App* cmd, const ToolEntry& tool) {
   cmd->add_flag("--json", o->json, "print one JSON object: " + fields);
   cmd->add_option("-o,--output", o->output, "CSV file: the tool's table (.csv)")
       ->check(writesOneOf({".csv"}));
+  if (resumable(tool)) addCheckpointOption(cmd, o->checkpoint);
   return {cmd, [o, &tool, section] {
             std::vector<std::string> sets = o->scene.sets;
             for (const auto& [key, value] : o->settings)
@@ -280,7 +139,18 @@ Command addRegisteredToolCommand(CLI::App* cmd, const ToolEntry& tool) {
             std::unique_ptr<Output> out;
             if (!o->output.empty()) out = std::make_unique<Output>(o->output);
             Progress progress(tool.id);
-            const ToolResult r = runTool(tool, scene, interruptibleControl(progress));
+            const auto run = startTool(tool, scene);
+            Checkpoint checkpoint(o->checkpoint, tool.command, scene.document.dump());
+            if (auto saved = checkpoint.load()) run->restore(saved->state);
+            const ToolControl control = interruptibleControl(progress);
+            const bool finished = checkpoint.enabled()
+                                      ? checkpoint.run([&](const ToolControl& c) { return run->advance(c); },
+                                                       [&](Snapshot& state) { run->save(state); }, control)
+                                      : run->advance(control);
+            if (finished) checkpoint.finish();
+            ToolResult r = run->result();
+            r.stopped = !finished;
+            checkToolResult(tool, r);
             if (out) {
               const auto& t = r.table;
               for (std::size_t c = 0; c < t.names.size(); ++c)
@@ -294,11 +164,19 @@ Command addRegisteredToolCommand(CLI::App* cmd, const ToolEntry& tool) {
             }
             if (o->json)
               fmt::print("{}\n", toolResultJson(r).dump());
-            else if (!out)
+            else if (!out) { // the declared outputs in their order, then any other field
+              std::vector<std::string> names;
+              for (const auto& output : tool.outputs)
+                if (r.fields.contains(output.name)) names.push_back(output.name);
               for (const auto& [name, value] : r.fields.items())
+                if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+              for (const auto& name : names) {
+                const auto& value = r.fields[name];
                 fmt::print("{} = {}\n", name,
                            value.is_number_float() ? fmt::format("{:.10g}", value.get<double>())
                                                    : value.dump());
+              }
+            }
             return r.stopped || interrupted() ? 130 : 0;
           }};
 }

@@ -9,7 +9,6 @@
 #include "app/python/PyJob.h"
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/ModelRegistry.h"
-#include "dynamics/tools/Megno.h"
 #include "dynamics/tools/ToolSettings.h"
 #include "scenes/FixedPointJson.h"
 #include "scenes/SceneTools.h"
@@ -17,6 +16,7 @@
 #include "scenes/Sweep.h"
 #include "scenes/ToolRunner.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fmt/core.h>
@@ -77,83 +77,6 @@ pyb::object poincare(Call& c) {
     }
   });
   return table(std::move(flat), width);
-}
-
-pyb::object lyapunov(Call& c) {
-  std::vector<double> times, history;
-  LyapunovResult r;
-  runJob(c.progress, [&](const ToolControl& control) {
-    const RunSpec spec = c.scene.runSpec();
-    const Model& model = *c.scene.model;
-    LyapunovRun run(
-        model, [&] { return spec.makeIntegrator(model); }, c.scene.initialState, c.scene.lyapunov);
-    run.run(
-        [&](const LyapunovEstimate& e) {
-          if (!times.empty() && times.back() == e.time) return; // the last estimate may come twice
-          times.push_back(e.time);
-          history.insert(history.end(), e.exponents.begin(), e.exponents.end());
-        },
-        control);
-    r = run.result();
-  });
-  pyb::dict d;
-  d["exponents"] = toArray(std::vector<double>(r.last.exponents));
-  d["sum"] = r.last.sum();
-  d["time"] = r.last.time;
-  d["converged"] = r.converged;
-  d["stopped"] = r.stopped;
-  d["t"] = toArray(std::move(times));
-  d["history"] = table(std::move(history), r.last.exponents.size());
-  return d;
-}
-
-pyb::object megno(Call& c) {
-  std::vector<double> t, y, mean, fli;
-  MegnoResult r;
-  runJob(c.progress, [&](const ToolControl& control) {
-    const RunSpec spec = c.scene.runSpec();
-    const Model& model = *c.scene.model;
-    MegnoRun run(
-        model, [&] { return spec.makeIntegrator(model); }, c.scene.initialState, c.scene.megno);
-    run.run(
-        [&](const MegnoEstimate& e) {
-          t.push_back(e.time), y.push_back(e.y), mean.push_back(e.megno), fli.push_back(e.fli);
-        },
-        control);
-    r = run.result();
-  });
-  pyb::dict d;
-  d["megno"] = r.last.megno;
-  d["megno_rate"] = r.last.megnoRate;
-  d["y"] = r.last.y;
-  d["fli"] = r.last.fli;
-  d["time"] = r.last.time;
-  d["stopped"] = r.stopped;
-  d["history"] =
-      pyb::dict(pyb::arg("t") = toArray(std::move(t)), pyb::arg("megno") = toArray(std::move(mean)),
-                pyb::arg("y") = toArray(std::move(y)), pyb::arg("fli") = toArray(std::move(fli)));
-  return d;
-}
-
-pyb::object spectrum(Call& c) {
-  const SpectrumSettings& s = c.scene.spectrum;
-  if (s.function.empty()) throw InputError("function: give the observable to expand");
-  SpectrumResult r;
-  runJob(c.progress, [&](const ToolControl& control) {
-    auto integ = c.scene.startIntegrator();
-    r = fourierSpectrum(*c.scene.model, *integ, s, control);
-  });
-  std::vector<double> peaks;
-  for (const auto& p : r.peaks)
-    peaks.push_back(p.frequency), peaks.push_back(p.amplitude);
-  pyb::dict d;
-  d["function"] = s.function;
-  d["frequency"] = toArray(std::move(r.frequency));
-  d["amplitude"] = toArray(std::move(r.amplitude));
-  d["peaks"] = table(std::move(peaks), 2);
-  d["step"] = r.step;
-  d["samples"] = r.samples;
-  return d;
 }
 
 pyb::dict fixedPointDict(const FixedPointResult& r, const ReturnMap& map) {
@@ -457,9 +380,6 @@ const std::map<std::string, Runner>& runners() {
   static const std::map<std::string, Runner> r{
       {"poincare", {{}, "", poincare}},
       {"map3d", {{}, "", poincare}},
-      {"spectrum", {{}, "", spectrum}},
-      {"lyapunov", {{}, "", lyapunov}},
-      {"megno", {{}, "", megno}},
       {"plot", {{}, "", plot}},
       {"fixedpoint", {{}, "", fixedpoint}},
       {"continuation", {{}, "", continuation}},
@@ -528,9 +448,19 @@ pyb::object registeredTool(const ToolEntry& tool, Call& c) {
   ToolResult r;
   runJob(c.progress, [&](const ToolControl& control) { r = rv::runTool(tool, c.scene, control); });
   pyb::dict d = pyb::module_::import("json").attr("loads")(toolResultJson(r).dump());
+  d["stopped"] = r.stopped;
+  for (const auto& [name, value] : r.fields.items()) // a list of numbers is an array (exponents)
+    if (value.is_array() && !value.empty() &&
+        std::all_of(value.begin(), value.end(), [](const auto& v) { return v.is_number(); }))
+      d[name.c_str()] = toArray(value.get<std::vector<double>>());
+  // the table as one piece under the runner's name (a dict the package makes a Table), else column by column
+  const std::string& name = findToolRunner(tool.id)->tableName;
+  pyb::dict columns;
+  pyb::dict& into = name.empty() ? d : columns;
   for (std::size_t k = 0; k < r.table.names.size(); ++k)
-    if (!d.contains(r.table.names[k].c_str()))
-      d[r.table.names[k].c_str()] = toArray(std::vector<double>(r.table.values[k]));
+    if (!into.contains(r.table.names[k].c_str()))
+      into[r.table.names[k].c_str()] = toArray(std::vector<double>(r.table.values[k]));
+  if (!name.empty()) d[name.c_str()] = columns;
   return d;
 }
 
@@ -578,6 +508,10 @@ pyb::dict toolDict(const ToolEntry& e) {
   for (const auto& o : e.outputs)
     outputs.append(pyb::make_tuple(o.name, o.description));
   d["outputs"] = outputs;
+  pyb::dict outputQuantities; // output -> the sweep quantity it is (TOOL.OUTPUT or its own name)
+  for (const auto& o : e.outputs)
+    if (o.quantity) outputQuantities[o.name.c_str()] = sweepQuantityId(e, o);
+  d["output_quantities"] = outputQuantities;
   pyb::list quantities;
   for (const auto& q : sweepQuantities())
     if (q.tool == e.id || e.options) quantities.append(q.id);
@@ -606,7 +540,9 @@ pyb::dict toolDict(const ToolEntry& e) {
   d["arguments"] = runner ? runner->args : std::vector<std::string>{};
   d["arguments_help"] = runner ? runner->help : std::string();
   d["origin"] = e.origin;
-  d["runner"] = findToolRunner(e.id) != nullptr; // runs through scenes/ToolRunner.h (every front end derived)
+  const ToolRunner* toolRunner = findToolRunner(e.id);
+  d["runner"] = toolRunner != nullptr; // runs through scenes/ToolRunner.h (every front end derived)
+  d["table"] = toolRunner ? toolRunner->tableName : std::string(); // the result's key of its table, if one
   return d;
 }
 

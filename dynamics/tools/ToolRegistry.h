@@ -30,6 +30,8 @@ struct ToolOutput {
   std::string description;
   /// A number a sweep can chart as the quantity "TOOL.NAME" (a tool that runs through scenes/ToolRunner.h).
   bool quantity = false;
+  /// The quantity's name when it is not "TOOL.NAME" (the short names sweep files used before: "megno").
+  std::string quantityName = {};
 };
 
 /// A registered tool.

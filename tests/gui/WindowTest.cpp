@@ -22,6 +22,7 @@
 #include "scenes/BuiltinTools.h"
 #include "scenes/ModelFile.h"
 #include "scenes/SceneLoader.h"
+#include "scenes/ToolRunner.h"
 #include <vtkGenericOpenGLRenderWindow.h>
 
 #include <QCheckBox>
@@ -1269,6 +1270,37 @@ private slots:
     QVERIFY(lyapunov->isVisible()); // and the window still draws
     QVERIFY(keep(lyapunov->grab().toImage(), "window_chart_lyapunov_after_export.png"));
     lyapunov->close();
+  }
+
+  // the registry's generic test in the GUI: every tool that runs through scenes/ToolRunner.h, created from
+  // the Tools tab on its example scene (scenes/tools/ID.json), draws its chart window as a job of the tool
+  // manager, and its numbers reach the Results dock
+  void everyToolWithARunnerDrawsItsChartFromTheToolsTab() {
+    const QString tools = QString(qgetenv("ROLLVIZ_SOURCE_DIR")) + "/scenes/tools/";
+    int tried = 0;
+    for (const auto& tool : ToolRegistry::global().entries()) {
+      if (!findToolRunner(tool.id) || tool.chartView.empty() || !tool.origin.empty()) continue;
+      const QString scene = tools + QString::fromStdString(tool.id) + ".json";
+      QVERIFY2(QFile::exists(scene), qPrintable("a built-in tool with a runner ships an example: " + scene));
+      QVERIFY(window_->openScene(scene));
+      const auto before = window_->findChildren<ChartWindow*>();
+      window_->createTool(tool.id);
+      ChartWindow* chart = nullptr;
+      for (auto* w : window_->findChildren<ChartWindow*>())
+        if (!before.contains(w)) chart = w;
+      QVERIFY2(chart, tool.id.c_str());
+      QVERIFY(window_->findChild<ToolManager*>());
+      QTRY_VERIFY_WITH_TIMEOUT(chart->ready() || !chart->failure().isEmpty(), 120000);
+      QVERIFY2(chart->ready(), qPrintable(QString::fromStdString(tool.id) + ": " + chart->failure()));
+      auto* plane = dynamic_cast<PoincareChart*>(chart->drawn().get());
+      QVERIFY2(plane && plane->chart()->GetNumberOfPlots() > 0, tool.id.c_str());
+      QVERIFY(chart->findChild<QPushButton*>("save_figure")->isEnabled());
+      QVERIFY(keep(chart->grab().toImage(), QString::fromStdString("window_tool_" + tool.id + ".png")));
+      chart->close();
+      QCoreApplication::sendPostedEvents(nullptr, QEvent::DeferredDelete);
+      ++tried;
+    }
+    QVERIFY(tried >= 4); // spectrum, lyapunov, megno, bifurcation_curve
   }
 
   // File > Open model...: a model file runs at its own "initial", joins the problem list, and saving it while

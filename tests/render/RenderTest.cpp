@@ -188,11 +188,18 @@ INSTANTIATE_TEST_SUITE_P(
         ChartCase{"ram",
                   "henon_heiles",
                   {"grid.x_min=-0.5", "grid.x_max=0.7", "grid.y_min=-0.5", "grid.y_max=0.5",
-                   "grid.step_x=0.01", "grid.step_y=0.01"}}),
+                   "grid.step_x=0.01", "grid.step_y=0.01"}},
+        // the Henon map's period-doubling curve a = 3 (1 - b)^2 / 4 (scenes/tools/bifurcation_curve.json)
+        ChartCase{"bifurcation_curve",
+                  "henon_map",
+                  {"a=1.4", "b=0.3", "fixedpoint.guess=[0.63,0.19]", "continuation.parameter=a",
+                   "continuation.to=0", "continuation.step=-0.05", "bifurcation_curve.second_parameter=b",
+                   "bifurcation_curve.kind=period_doubling", "bifurcation_curve.second_min=-1.05",
+                   "bifurcation_curve.second_max=0.5"}}),
     [](const auto& info) { return info.param.view; });
 
 TEST(Render, ChartViewsListIsComplete) {
-  EXPECT_EQ(chartViews().size(), 11u); // each has a baseline case above
+  EXPECT_EQ(chartViews().size(), 12u); // each has a baseline case above
 }
 
 } // namespace

@@ -12,7 +12,7 @@
     P = s.poincare(points=2000)              # P["l"], P["L/G"], P.t, P.sheet; np.asarray(P) the rows
     r = s.lyapunov(time=1000, energy=0.45)   # r.exponents, r.converged, r.history["L1"]
     img = s.render(size=(640, 480), time=5)  # H x W x 3 uint8
-    g = rollviz.sweep(s, axes={"energy": np.linspace(0.3, 0.6, 31)}, quantity="lyapunov")  # g.values[...]
+    g = rollviz.sweep(s, axes={"energy": np.linspace(0.3, 0.6, 31)}, quantity="lyapunov.max")  # g.values[...]
 
 Every registered tool (rollviz.tools()) is a Scene method, those of the modules loaded at import
 (rollviz.modules(): ROLLVIZ_MODULE_PATH, ~/.local/lib/rollviz/modules; docs/modules.md) too. One keyword rule
@@ -198,11 +198,7 @@ def _shaped(tool_id, scene, value, settings=None):
     if not isinstance(value, dict):
         return _wrap(value)
     r = _wrap(value)
-    if tool_id == "lyapunov" and "history" in r and "t" in r:
-        history = _np.asarray(r.pop("t"))[:, None]
-        k = _np.asarray(r["history"]).reshape(len(history), -1)
-        r["history"] = Table(["t"] + [f"L{i + 1}" for i in range(k.shape[1])], _np.hstack([history, k]))
-    elif isinstance(r.get("history"), dict):
+    if isinstance(r.get("history"), dict):
         h = r["history"]
         names = ["t"] + [n for n in h if n != "t"] if "t" in h else list(h)
         r["history"] = Table(names, _np.column_stack([_np.asarray(h[n], dtype=float) for n in names]))
@@ -622,7 +618,7 @@ def sweep(scene, axes=None, quantity=None, threads=0, progress=None, checkpoint=
     """A quantity over a grid of points (rollviz sweep; docs/sweeps.md), on threads. Either a sweep file's path,
     or a Scene with axes={"energy": np.linspace(0.3, 0.6, 31), "map.0": (-0.4, 0.4, 41)} (model parameters,
     "map.0"/"map.1" for the start's map coordinates, dotted scene keys; evenly spaced values or (min, max,
-    count)) and quantity ("lyapunov", "megno", "fixedpoint.type", ...: rollviz.tools()' sweep_quantities);
+    count)) and quantity ("lyapunov.max", "megno", "fixedpoint.type", ...: rollviz.tools()' sweep_quantities);
     further keywords are set on every point (energy=0.125, **{"megno.time": 400}). Returns a SweepResult:
     values[name] shaped like the grid (the first axis first), axes[id] the coordinates, to_xarray().
     checkpoint: a file that keeps the finished points (a later call with the same sweep goes on from them; removed
