@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Copies the guide's pages into OUT and adds the reference pages generated from the program itself:
-command-line.md from `rollviz --help` and every subcommand's help. Usage: generate.py DOCS_DIR OUT_DIR ROLLVIZ"""
+command-line.md from `rollviz --help` and every subcommand's help, and gallery.md with the gallery's pictures
+rendered by rollviz (scripts/make_gallery.py). Usage: generate.py DOCS_DIR OUT_DIR ROLLVIZ"""
 import os
 import re
 import shutil
@@ -40,3 +41,22 @@ with open(os.path.join(out, "command-line.md"), "w") as f:
     f.write("```text\n" + top.rstrip() + "\n```\n\n")
     for name, summary in commands:
         f.write(f"## {name}\n\n{summary}\n\n```text\n{help_of(name).rstrip()}\n```\n\n")
+
+
+# the gallery: each scene's picture rendered now, by this build
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(docs)), "scripts"))
+import make_gallery  # noqa: E402
+
+scenes = make_gallery.make(rollviz, os.path.join(out, "gallery"))
+source = os.path.dirname(os.path.abspath(docs))
+with open(os.path.join(out, "gallery.md"), "w") as f:
+    f.write("# Gallery\n\n")
+    f.write("Famous motions, ready to watch: in the GUI open them with **File > Gallery**; on the command line "
+            "`rollviz list gallery` lists them. Each picture is the 3D view at the end of the scene's "
+            "10-second video, rendered by this build when the guide was made; "
+            "`scripts/make_gallery.py ROLLVIZ OUT --videos` makes the pictures and the videos.\n\n")
+    for s in scenes:
+        rel = os.path.relpath(s["path"], source)
+        f.write(f"## {s['title']}\n\n![{s['title']}](gallery/{s['id']}.png)\n\n{s['description']}\n\n")
+        f.write(f"```sh\nrollviz gui {rel}\nrollviz video {rel} -o {s['id']}.mp4\n"
+                f"rollviz render {rel} -o {s['id']}.png --time {s['time']:g}\n```\n\n")

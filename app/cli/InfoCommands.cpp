@@ -6,6 +6,7 @@
 #include "dynamics/core/ModelRegistry.h"
 #include "dynamics/integrators/Integrator.h"
 #include "dynamics/tools/ToolSettings.h"
+#include "scenes/Gallery.h"
 #include "scenes/ModelFile.h"
 
 #include <algorithm>
@@ -54,11 +55,12 @@ void printQuantities(const ToolEntry& tool) {
 } // namespace
 
 Command addListCommand(CLI::App& app) {
-  auto* cmd = app.add_subcommand("list", "list problems, integrators or scenes");
+  auto* cmd =
+      app.add_subcommand("list", "list problems, integrators, tools, quantities, scenes or the gallery");
   auto whatPtr = std::make_shared<std::string>();
-  cmd->add_option("what", *whatPtr, "problems | integrators | tools | quantities | scenes")
+  cmd->add_option("what", *whatPtr, "problems | integrators | tools | quantities | scenes | gallery")
       ->required()
-      ->check(CLI::IsMember({"problems", "integrators", "tools", "quantities", "scenes"}));
+      ->check(CLI::IsMember({"problems", "integrators", "tools", "quantities", "scenes", "gallery"}));
   return {cmd, [whatPtr] {
             const std::string& what = *whatPtr;
             if (what == "problems")
@@ -70,6 +72,9 @@ Command addListCommand(CLI::App& app) {
             else if (what == "quantities")
               for (const auto& q : sweepQuantities())
                 fmt::print("{:<20} {}: {}\n", quantityName(q), toolOf(q), q.description);
+            else if (what == "gallery") // the scene file, its title, then what to watch
+              for (const auto& g : galleryScenes())
+                fmt::print("{}\n  {}\n  {}\n  picture at t = {:g}\n", g.path, g.title, g.description, g.time);
             else if (what == "tools") {
               // the manual's tree: a child indented under its parent
               const auto& tools = ToolRegistry::global().entries();

@@ -4,6 +4,7 @@
 #include "app/gui/ChartWindow.h"
 #include "app/gui/ControlPanel.h"
 #include "app/gui/FilterWindow.h"
+#include "app/gui/GalleryDialog.h"
 #include "app/gui/MapPanel.h"
 #include "app/gui/MultipliersWindow.h"
 #include "app/gui/PlotFilterDialog.h"
@@ -236,6 +237,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 
   auto* file = menuBar()->addMenu("&File");
   file->addAction("Open scene…", this, &MainWindow::openDialog);
+  file->addAction("Gallery…", this,
+                  [this] {
+                    GalleryDialog gallery(this, [this](const QString& path) { openScene(path); });
+                    gallery.exec();
+                  })
+      ->setToolTip("famous motions, ready to watch: the rattleback turning back, chaos in Henon-Heiles, ...");
   file->addAction("Open model…", this, [this] {
     const QString path = QFileDialog::getOpenFileName(this, "Open a model file (docs/models.md)", QString(),
                                                       "Model files (*.json)");

@@ -6,6 +6,7 @@
 #include "app/gui/ChartWindow.h"
 #include "app/gui/ControlPanel.h"
 #include "app/gui/FilterWindow.h"
+#include "app/gui/GalleryDialog.h"
 #include "app/gui/MainWindow.h"
 #include "app/gui/MapPanel.h"
 #include "app/gui/MultipliersWindow.h"
@@ -32,6 +33,7 @@
 #include <QElapsedTimer>
 #include <QFile>
 #include <QLabel>
+#include <QListWidget>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QOpenGLContext>
@@ -1270,6 +1272,34 @@ private slots:
     QVERIFY(lyapunov->isVisible()); // and the window still draws
     QVERIFY(keep(lyapunov->grab().toImage(), "window_chart_lyapunov_after_export.png"));
     lyapunov->close();
+  }
+
+  // File > Gallery: every gallery scene with its thumbnail and what to watch; Open loads the chosen one
+  void galleryOpensAFamousMotion() {
+    bool inMenu = false;
+    for (auto* action : window_->menuBar()->actions())
+      if (action->text() == "&File")
+        for (auto* item : action->menu()->actions())
+          inMenu = inMenu || item->text() == "Gallery…";
+    QVERIFY(inMenu);
+    GalleryDialog gallery(window_, [this](const QString& path) { window_->openScene(path); });
+    QListWidget* list = gallery.list();
+    QVERIFY(list->count() >= 8);
+    int rattleback = -1;
+    for (int i = 0; i < list->count(); ++i) {
+      QVERIFY2(!list->item(i)->icon().isNull(), qPrintable(list->item(i)->text())); // its thumbnail
+      QVERIFY(list->item(i)->toolTip().size() > 80);
+      if (list->item(i)->data(Qt::UserRole).toString().endsWith("/rattleback_reversal.json")) rattleback = i;
+    }
+    QVERIFY(rattleback >= 0);
+    list->setCurrentRow(rattleback);
+    QCOMPARE(gallery.findChild<QLabel*>("gallery_description")->text(), list->item(rattleback)->toolTip());
+    gallery.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&gallery));
+    QVERIFY(keep(gallery.grab().toImage(), "window_gallery.png"));
+    QVERIFY(gallery.openSelected());
+    QVERIFY2(window_->windowTitle().contains("rattleback_reversal.json"), qPrintable(window_->windowTitle()));
+    QCOMPARE(window_->scene()->model->info().id, std::string("ellipsoid_on_plane"));
   }
 
   // the registry's generic test in the GUI: every tool that runs through scenes/ToolRunner.h, created from

@@ -7,11 +7,13 @@
 #include "render/objects/BodyAxesObject.h"
 #include "render/objects/ContactTraceObject.h"
 #include "render/video/VideoExport.h"
+#include "scenes/Gallery.h"
 #include "scenes/SceneCharts.h"
 #include "scenes/SceneLoader.h"
 #include "tests/render/ImageCompare.h"
 #include "tests/render/Play.h"
 
+#include <filesystem>
 #include <gtest/gtest.h>
 #include <vtkCamera.h>
 #include <vtkRenderWindow.h>
@@ -197,6 +199,30 @@ INSTANTIATE_TEST_SUITE_P(
                    "bifurcation_curve.kind=period_doubling", "bifurcation_curve.second_min=-1.05",
                    "bifurcation_curve.second_max=0.5"}}),
     [](const auto& info) { return info.param.view; });
+
+// every gallery scene (scenes/gallery, scenes/Gallery.h) at the end of its video: drawn, not blank, as its
+// baseline -- which is also the thumbnail File > Gallery shows
+TEST(Render, EveryGallerySceneMatchesItsThumbnail) {
+  const auto gallery = galleryScenes();
+  EXPECT_GE(gallery.size(), 8u);
+  for (const auto& g : gallery) {
+    SCOPED_TRACE(g.id);
+    EXPECT_GT(g.description.size(), 80u) << "says what to watch";
+    EXPECT_GT(g.time, 0);
+    const Scene scene = loadScene(g.path);
+    VisualScene visual(*scene.model, scene.view, scene.initialState);
+    auto integrator = scene.startIntegrator();
+    Eigen::VectorXd x;
+    playTo(visual, *integrator, g.time, x);
+    auto ctx = createHeadlessContext(320, 200);
+    visual.addTo(ctx->window());
+    const Image img = capture(ctx->window());
+    ctx->window()->RemoveRenderer(visual.renderer());
+    ASSERT_TRUE(test::isVaried(img));
+    EXPECT_EQ(test::matchesBaseline(img, "gallery_" + g.id), "");
+    EXPECT_TRUE(std::filesystem::is_regular_file(galleryThumbnail(g))) << galleryThumbnail(g); // the GUI's
+  }
+}
 
 TEST(Render, ChartViewsListIsComplete) {
   EXPECT_EQ(chartViews().size(), 12u); // each has a baseline case above
