@@ -1,5 +1,6 @@
 // Commands.h -- each subcommand registers its options on the CLI11 app and runs from there.
 #pragma once
+#include "render/charts/ChartStyle.h"
 #include "scenes/SceneLoader.h"
 #include "scenes/SceneTools.h"
 #include "scenes/Sweep.h"
@@ -70,7 +71,7 @@ Command addRegisteredToolCommand(CLI::App* cmd, const ToolEntry& tool);
 
 /// Draws a sweep's chart into a PNG, SVG or PDF by the extension (`rollviz sweep --png`, `rollviz chart
 /// --view sweep`); `what` names the option in messages.
-void writeChartFigure(const SweepChartData& data, const std::string& path, const std::string& size,
-                      const std::string& what);
+void writeChartFigure(const SweepChartData& data, const std::string& path, std::pair<int, int> pixels,
+                      const std::string& what, const ChartStyle& style = {});
 
 } // namespace rv

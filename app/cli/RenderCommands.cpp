@@ -29,8 +29,10 @@ struct RenderOptions {
 };
 struct ChartOptions {
   SceneArgs scene;
-  std::string view = "poincare", output, size = "800x800", diagram, csv;
+  std::string view = "poincare", output, size = "800x800", diagram, csv, style = "screen";
   long points = 0;
+  int scale = 1;
+  CLI::Option* sizeOption = nullptr;
 };
 struct VideoOptions {
   SceneArgs scene;
@@ -94,14 +96,25 @@ Command addChartCommand(CLI::App& app) {
   cmd->add_option("-o,--output", o->output, "figure: PNG, or SVG or PDF (vectors, text as text)")
       ->check(writesOneOf(figureExtensions()))
       ->required();
-  cmd->add_option("--size", o->size, "picture size WIDTHxHEIGHT")->capture_default_str();
+  o->sizeOption = cmd->add_option("--size", o->size, "picture size WIDTHxHEIGHT")->capture_default_str();
+  cmd->add_option(
+         "--style", o->style,
+         "screen, or paper: white, black axes and text, the type and pens of a 3.5-inch journal column "
+         "at 300 dpi (1050x788 unless --size)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"screen", "paper"}));
+  cmd->add_option("--scale", o->scale,
+                  "N x the pixels with text and pens N x as large: the same figure, finer")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 8));
   cmd->add_option("--points", o->points, "Poincare points to compute (default: the scene's poincare.points)");
   cmd->add_option(
       "--diagram", o->diagram,
       "--view bifurcation: which diagram (default: the problem's first; `rollviz diagram --json` lists "
       "them)");
   return {cmd, [o] {
-            const auto [w, h] = parseSize(o->size);
+            const ChartStyle style = chartStyle(o->style, o->scale, "--style");
+            const auto [w, h] = figureSize(style, parseSize(o->size), o->sizeOption->count() > 0);
             if (o->view == "sweep") {
               if (o->csv.empty())
                 throw InputError("--csv: --view sweep draws a finished sweep's CSV: give it");
@@ -109,7 +122,7 @@ Command addChartCommand(CLI::App& app) {
               checkWritable(o->output, "-o");
               SweepChartData data = sweepChartData(spec);
               data.values = readSweepCsv(spec, o->csv, "--csv");
-              writeChartFigure(data, o->output, o->size, "-o");
+              writeChartFigure(data, o->output, {w, h}, "-o", style);
               return 0;
             }
             if (!o->csv.empty()) throw InputError("--csv: only with --view sweep");
@@ -120,6 +133,7 @@ Command addChartCommand(CLI::App& app) {
                 sceneChart(scene, o->view, interruptibleControl(progress), o->points, o->diagram);
             auto ctx = createHeadlessContext(w, h);
             chart->attach(ctx->window());
+            styleCharts(ctx->window(), style);
             writeFigure(ctx->window(), o->output, "-o");
             return interrupted() ? 130 : 0;
           }};

@@ -47,12 +47,12 @@ std::string duration(double seconds) {
 
 } // namespace
 
-void writeChartFigure(const SweepChartData& data, const std::string& path, const std::string& size,
-                      const std::string& what) {
-  const auto [w, h] = parseSize(size);
+void writeChartFigure(const SweepChartData& data, const std::string& path, std::pair<int, int> pixels,
+                      const std::string& what, const ChartStyle& style) {
   const auto chart = makeSweepChart(data);
-  auto ctx = createHeadlessContext(w, h);
+  auto ctx = createHeadlessContext(pixels.first, pixels.second);
   chart->attach(ctx->window());
+  styleCharts(ctx->window(), style);
   writeFigure(ctx->window(), path, what);
 }
 
@@ -115,7 +115,7 @@ void writeResults(const SweepSpec& spec, const SweepStore& store, const SweepOpt
     writeVti(spec, store, o.output, seen);
   else
     writeCsv(spec, store, o.output, o.timing, seen);
-  if (png) writeChartFigure(data, o.png, o.size, "--png");
+  if (png) writeChartFigure(data, o.png, parseSize(o.size), "--png");
 }
 
 int runSweep(const SweepOptions& o) {

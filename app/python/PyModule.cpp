@@ -11,6 +11,7 @@
 #include "dynamics/io/AtomicFile.h"
 #include "render/Snapshot.h"
 #include "render/VisualScene.h"
+#include "render/charts/ChartStyle.h"
 #include "render/context/HeadlessContext.h"
 #include "render/export/Figure.h"
 #include "render/export/VtkXmlFiles.h"
@@ -228,10 +229,12 @@ long video(const Scene& shared, const std::string& path, const pyb::object& dura
 
 pyb::array_t<unsigned char> chart(const Scene& shared, const std::string& view, const pyb::handle& size,
                                   long points, const std::string& diagram, const pyb::object& path,
-                                  const pyb::object& progress) {
+                                  const std::string& style, int scale, const pyb::object& progress) {
   // a copy: another Python thread may set() the scene while this runs without the GIL
   const Scene scene = shared; // NOLINT(performance-unnecessary-copy-initialization)
-  const auto picture = pictureSize(size, "size");
+  const ChartStyle dress = chartStyle(style, scale, "style");
+  const auto picture = figureSize(
+      dress, size.is_none() ? std::pair<int, int>{800, 800} : pictureSize(size, "size"), !size.is_none());
   const int w = picture.first, h = picture.second; // lambdas capture no structured bindings (clang 14)
   const auto& views = chartViews();
   if (std::find(views.begin(), views.end(), view) == views.end()) {
@@ -250,6 +253,7 @@ pyb::array_t<unsigned char> chart(const Scene& shared, const std::string& view, 
     const auto c = sceneChart(scene, view, control, points, diagram);
     auto ctx = createHeadlessContext(w, h);
     c->attach(ctx->window());
+    styleCharts(ctx->window(), dress);
     image = capture(ctx->window());
     if (!file.empty()) writeFigure(ctx->window(), file, "path");
   });
@@ -508,11 +512,13 @@ PYBIND11_MODULE(_rollviz, m) {
            "Records the 3D view into an MP4 (rollviz video); duration, fps and size default to the scene's "
            "video "
            "section (with its crf and preset), speed 0 to its view.speed. Returns frames.")
-      .def("chart", &chart, pyb::arg("view") = "poincare", pyb::arg("size") = std::pair<int, int>{800, 800},
+      .def("chart", &chart, pyb::arg("view") = "poincare", pyb::arg("size") = pyb::none(),
            pyb::arg("points") = 0, pyb::arg("diagram") = "", pyb::kw_only(), pyb::arg("path") = pyb::none(),
-           pyb::arg("progress") = pyb::none(),
+           pyb::arg("style") = "screen", pyb::arg("scale") = 1, pyb::arg("progress") = pyb::none(),
            "A chart of the scene (rollviz chart --view VIEW) as an H x W x 3 uint8 array; with path, also "
            "written as a figure in the format its extension names (.png, or .svg or .pdf: vectors, text as "
-           "text).");
+           "text). size: (width, height), default (800, 800); style 'paper': white, black axes and text, the "
+           "type of a 3.5-inch journal column at 300 dpi (1050 x 788 unless size is given); scale N: N x the "
+           "pixels with text and pens N x as large.");
   bindTools(m, scene);
 }

@@ -192,6 +192,38 @@ class Cli(unittest.TestCase):
             self.assertEqual(r.returncode, 0, name + ": " + r.stderr)
             self.assertTrue(varied(pixels(out)[1]), name)
 
+    def test_chart_scale_and_paper_style(self):
+        from PIL import Image, ImageChops, ImageFilter, ImageStat
+        import xml.etree.ElementTree as ET
+        hh = os.path.join(SRC, "scenes", "henon_heiles.json")
+        args = ["chart", hh, "--view", "lyapunov", "--set", "lyapunov.time=50"]
+        one, two = self.path("one.png"), self.path("two.png")
+        for out, extra in ((one, []), (two, ["--scale", "2"])):
+            r = run(*args, "--size", "400x300", "-o", out, *extra)
+            self.assertEqual(r.returncode, 0, r.stderr)
+        a, b = Image.open(one).convert("L"), Image.open(two).convert("L")
+        self.assertEqual(b.size, (800, 600))
+        # the same figure, finer: halved, it is the 1x picture (the same ticks, labels and layout) within what
+        # anti-aliasing moves -- blurred, a mean difference under 6 (the chart at another time differs by 8.3)
+        blur = ImageFilter.GaussianBlur(2)
+        diff = ImageStat.Stat(ImageChops.difference(a.filter(blur), b.resize(a.size, Image.BOX).filter(blur))).mean[0]
+        self.assertLess(diff, 6, diff)
+        self.assertGreater(ImageStat.Stat(a).stddev[0], 10)  # and not a blank picture
+        # the paper style: a 3.5-inch column at 300 dpi unless --size; its type sized for print
+        paper, paper_svg = self.path("paper.png"), self.path("paper.svg")
+        for out in (paper, paper_svg):
+            r = run(*args, "--style", "paper", "-o", out)
+            self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertEqual(Image.open(paper).size, (1050, 788))
+        sizes = {}
+        for e in ET.parse(paper_svg).getroot().iter():
+            text = "".join(e.itertext()).strip()
+            if e.tag.endswith("text") and text and e.get("font-size"):
+                sizes[text] = float(e.get("font-size"))
+        self.assertGreaterEqual(sizes.get("Lyapunov exponents", 0), 33, sizes)  # 8 pt or more at 300 dpi
+        self.assertBadInput(run(*args, "--style", "print", "-o", self.path("x.png")), "--style")
+        self.assertBadInput(run(*args, "--scale", "9", "-o", self.path("x.png")), "--scale")
+
     def test_charts_as_vector_figures_and_every_format_by_its_extension(self):
         import xml.etree.ElementTree as ET
         hh = os.path.join(SRC, "scenes", "henon_heiles.json")

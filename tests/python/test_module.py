@@ -246,6 +246,13 @@ def test_chart_and_video(tmp_path):
     with pytest.raises(ValueError, match=r"map\.jpg.*\.png, \.svg, \.pdf"):
         s.chart("poincare", size=(200, 160), points=500, path=str(tmp_path / "map.jpg"))
     assert not (tmp_path / "map.jpg").exists()
+    # for print: the paper style's column (1050 x 788 unless size), a scale of the pixels; others refused
+    assert s.chart("poincare", points=500, style="paper").shape == (788, 1050, 3)
+    assert s.chart("poincare", size=(200, 160), points=500, scale=2).shape == (320, 400, 3)
+    with pytest.raises(ValueError, match="screen or paper"):
+        s.chart("poincare", size=(200, 160), points=500, style="print")
+    with pytest.raises(ValueError, match="1..8"):
+        s.chart("poincare", size=(200, 160), points=500, scale=9)
     # a file's format follows its extension: another is refused, nothing written
     with pytest.raises(ValueError, match=r"\.mp4"):
         s.video(str(tmp_path / "v.avi"), duration=0.2, fps=10, size=(96, 64))

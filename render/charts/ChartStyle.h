@@ -1,0 +1,27 @@
+// ChartStyle.h -- how a chart is dressed for its figure: the screen's style, or a paper's -- white, black
+// axes and text, the sizes of a 3.5-inch journal column at 300 dpi -- at a scale (N x the pixels with text,
+// pens and markers N x as large: the same picture, finer). Applied to the 2-D charts a window draws after
+// they are attached, so every chart view gets it without knowing of it.
+#pragma once
+#include <string>
+#include <utility>
+
+class vtkRenderWindow;
+
+namespace rv {
+
+struct ChartStyle {
+  bool paper = false; ///< the print style (else the screen's)
+  int scale = 1;      ///< pixels, text and pens x scale (1..8)
+};
+
+/// The style named on a command line or in Python: "screen" or "paper"; InputError naming `what` otherwise.
+ChartStyle chartStyle(const std::string& name, int scale, const std::string& what);
+/// The figure's size in pixels: `size` (the screen style's default, or given) x scale; the paper style's
+/// default is a 3.5 x 2.6-inch column figure at 300 dpi (1050 x 788) when `sizeGiven` is false.
+std::pair<int, int> figureSize(const ChartStyle& style, std::pair<int, int> size, bool sizeGiven);
+/// Restyles every 2-D chart drawn in `window` (the charts of its context scenes): fonts, pens and markers
+/// x scale; paper: black axes, ticks and text, a faint grid, a column's type sizes.
+void styleCharts(vtkRenderWindow* window, const ChartStyle& style);
+
+} // namespace rv
