@@ -1,9 +1,12 @@
 #!/usr/bin/env python3
 """Copies the guide's pages into OUT and adds the reference pages generated from the program itself:
 command-line.md from `rollviz --help` and every subcommand's help, and gallery.md with the gallery's pictures
-rendered by rollviz (scripts/make_gallery.py). Usage: generate.py DOCS_DIR OUT_DIR ROLLVIZ"""
+rendered by rollviz (scripts/make_gallery.py); and runs every `rollviz ...` line of the tutorials' ```sh blocks in
+the page's folder, so the pictures a tutorial shows are what its commands wrote (a failing command fails the
+guide). Usage: generate.py DOCS_DIR OUT_DIR ROLLVIZ"""
 import os
 import re
+import shlex
 import shutil
 import subprocess
 import sys
@@ -60,3 +63,14 @@ with open(os.path.join(out, "gallery.md"), "w") as f:
         f.write(f"## {s['title']}\n\n![{s['title']}](gallery/{s['id']}.png)\n\n{s['description']}\n\n")
         f.write(f"```sh\nrollviz gui {rel}\nrollviz video {rel} -o {s['id']}.mp4\n"
                 f"rollviz render {rel} -o {s['id']}.png --time {s['time']:g}\n```\n\n")
+
+# the tutorials' commands, each run as written (scene paths are the project's) in the page's folder
+tutorials = os.path.join(out, "tutorials")
+for page in sorted(p for p in os.listdir(tutorials) if p.endswith(".md")):
+    with open(os.path.join(tutorials, page)) as f:
+        blocks = re.findall(r"```sh\n(.*?)```", f.read(), re.S)
+    for line in (line for block in blocks for line in block.splitlines() if line.startswith("rollviz ")):
+        args = [os.path.join(source, a) if a.startswith("scenes/") else a for a in shlex.split(line)[1:]]
+        r = subprocess.run([rollviz, *args], cwd=tutorials, capture_output=True, text=True, env=env, timeout=600)
+        if r.returncode != 0:
+            sys.exit(f"generate.py: tutorials/{page}: `{line}` failed ({r.returncode}): {r.stderr}")
