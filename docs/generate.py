@@ -15,6 +15,16 @@ docs, out, rollviz = sys.argv[1], sys.argv[2], sys.argv[3]
 if os.path.isdir(out):
     shutil.rmtree(out)
 shutil.copytree(docs, out, ignore=shutil.ignore_patterns("generate.py", "__pycache__"))
+# the pictures the pages share with the README: ../assets/readme/ in docs/ (so both read them in place on a
+# repository's page), copied into the guide and pointed at there
+shutil.copytree(os.path.join(os.path.dirname(os.path.abspath(docs)), "assets", "readme"), os.path.join(out, "_readme"))
+for name in os.listdir(out):
+    if name.endswith(".md"):
+        with open(os.path.join(out, name)) as f:
+            text = f.read()
+        if "../assets/readme/" in text:
+            with open(os.path.join(out, name), "w") as f:
+                f.write(text.replace("../assets/readme/", "_readme/"))
 
 env = dict(os.environ)
 env.pop("DISPLAY", None)
