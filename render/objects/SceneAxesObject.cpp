@@ -101,9 +101,17 @@ void SceneAxesObject::setLabelling(const std::array<double, 3>& lo, const std::a
 
 std::vector<double> SceneAxesObject::majorTicks(int i) const {
   const double a = labelLo_ ? (*labelLo_)[i] : lo_[i], b = labelHi_ ? (*labelHi_)[i] : hi_[i];
+  const double lo = std::min(a, b), hi = std::max(a, b);
+  if (!(hi > lo)) return {a};
+  // round numbers: a step of 1, 2 or 5 x 10^k giving about `tickmarks` intervals, from the first multiple in
+  // range
+  const double raw = (hi - lo) / std::max(1, axes_.tickmarks);
+  const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
+  const double r = raw / magnitude;
+  const double step = (r < 1.5 ? 1 : r < 3 ? 2 : r < 7 ? 5 : 10) * magnitude;
   std::vector<double> ticks;
-  for (int k = 0; k <= axes_.tickmarks; ++k)
-    ticks.push_back(a + (b - a) * k / axes_.tickmarks);
+  for (double k = std::ceil(lo / step - 1e-9); k * step <= hi + 1e-9 * step; k += 1)
+    ticks.push_back(std::abs(k) < 0.5 ? 0.0 : k * step);
   return ticks;
 }
 
@@ -122,20 +130,24 @@ void SceneAxesObject::rebuild() {
     a->SetPoint2(p2);
     a->SetBounds(bounds);
     a->SetRange(lo_[i], hi_[i]);
-    const double major = (hi_[i] - lo_[i]) / axes_.tickmarks;
-    const double minor = major / (axes_.subticks + 1);
-    // vtkAxisActor places ticks in world coordinates (…Start/Delta…) and numbers them in range units
-    a->SetMajorStart(i, lo_[i]);
+    // vtkAxisActor places ticks in world coordinates (…Start/Delta…) and numbers them in range units; the
+    // ticks are round numbers of the labelled range, placed where they fall in the world's
+    const auto ticks = majorTicks(i);
+    const double from = labelLo_ ? (*labelLo_)[i] : lo_[i], to = labelHi_ ? (*labelHi_)[i] : hi_[i];
+    const double toWorld = to != from ? (hi_[i] - lo_[i]) / (to - from) : 1.0;
+    const double step = ticks.size() > 1 ? ticks[1] - ticks[0] : (hi_[i] - lo_[i]);
+    const double major = step * toWorld, minor = major / (axes_.subticks + 1);
+    const double first = lo_[i] + (ticks.front() - from) * toWorld;
+    a->SetMajorStart(i, first);
     a->SetDeltaMajor(i, major);
-    a->SetMinorStart(lo_[i]);
+    a->SetMinorStart(first - std::floor((first - lo_[i]) / minor + 1e-9) * minor);
     a->SetDeltaMinor(minor);
-    a->SetMajorRangeStart(lo_[i]);
-    a->SetDeltaRangeMajor(major);
-    a->SetMinorRangeStart(lo_[i]);
-    a->SetDeltaRangeMinor(minor);
+    a->SetMajorRangeStart(ticks.front());
+    a->SetDeltaRangeMajor(step);
+    a->SetMinorRangeStart(ticks.front());
+    a->SetDeltaRangeMinor(step / (axes_.subticks + 1));
     a->SetTitle(titles_[i].c_str());
     vtkNew<vtkStringArray> labels;
-    const auto ticks = majorTicks(i);
     const double span = std::abs(ticks.back() - ticks.front());
     for (double v : ticks)
       labels->InsertNextValue(format("%.4g", std::abs(v) < 1e-12 * span ? 0.0 : v));

@@ -1,6 +1,7 @@
 // SceneAxesObject.h -- the scene's coordinate axes (manual §2.4.6: axes style none / normal / box; the axis
 // tab: ticks and subticks, range min/max, numbers of tickmarks and subticks). Three vtkAxisActor with the
-// ticks placed exactly where asked (vtkCubeAxesActor picks its own "nice" ticks), plus the box's edges.
+// ticks at round numbers (steps of 1, 2 or 5 x 10^k, about `tickmarks` intervals of the range) placed where
+// they fall, plus the box's edges.
 #pragma once
 #include "render/objects/VisualObject.h"
 
@@ -39,7 +40,8 @@ public:
   /// drawn scaled into a box).
   void setLabelling(const std::array<double, 3>& lo, const std::array<double, 3>& hi,
                     const std::array<std::string, 3>& titles);
-  /// The numbers written at the major ticks of axis i (0, 1, 2), lowest first.
+  /// The numbers written at the major ticks of axis i (0, 1, 2), lowest first: the multiples of a round step
+  /// (1, 2 or 5 x 10^k) inside the axis' range, about `tickmarks` intervals apart.
   std::vector<double> majorTicks(int axis) const;
 
 private:

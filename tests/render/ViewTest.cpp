@@ -17,6 +17,7 @@
 #include <Eigen/LU>
 
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -126,13 +127,17 @@ TEST(SceneAxes, TicksAreWhereTheRangeAndCountsPutThem) {
       {"view.axes.style=box", "view.axes.min=[0,-2,0]", "view.axes.max=[10,2,1]", "view.axes.tickmarks=5"});
   const auto* axes = dynamic_cast<const SceneAxesObject*>(p->visual->find("scene_axes"));
   ASSERT_NE(axes, nullptr);
-  const std::vector<double> x = axes->majorTicks(0), y = axes->majorTicks(1);
+  // round numbers, about five intervals: [0, 10] by 2; [-2, 2] by 1 (not by 0.8); [0, 1] by 0.2
+  const std::vector<double> x = axes->majorTicks(0), y = axes->majorTicks(1), z = axes->majorTicks(2);
   ASSERT_EQ(x.size(), 6u);
-  ASSERT_EQ(y.size(), 6u);
+  ASSERT_EQ(y.size(), 5u);
+  ASSERT_EQ(z.size(), 6u);
   for (int k = 0; k <= 5; ++k) {
     EXPECT_NEAR(x[k], 2.0 * k, 1e-12);
-    EXPECT_NEAR(y[k], -2 + 0.8 * k, 1e-12);
+    EXPECT_NEAR(z[k], 0.2 * k, 1e-12);
   }
+  for (int k = 0; k <= 4; ++k)
+    EXPECT_NEAR(y[k], -2.0 + k, 1e-12);
   // drawn: switching them off changes the picture
   const Image with = renderPlayed(*p->visual);
   AxesOptions none;
@@ -147,6 +152,13 @@ TEST(SceneAxes, TheBoxGrowsToHoldTheCurve) {
   const auto p = play("lorenz", 20.0, {"view.axes.style=box"});
   auto* axes = dynamic_cast<SceneAxesObject*>(p->visual->find("scene_axes"));
   ASSERT_NE(axes, nullptr);
+  // the box's ends are where the curve went (z up to ~48); its ticks are round numbers inside it
+  for (int i = 0; i < 3; ++i)
+    for (double t : axes->majorTicks(i)) {
+      const double step = axes->majorTicks(i)[1] - axes->majorTicks(i)[0];
+      EXPECT_NEAR(t / step, std::round(t / step), 1e-9) << "axis " << i << " tick " << t;
+      EXPECT_TRUE(step == 1 || step == 2 || step == 5 || step == 10 || step == 20) << step;
+    }
   const auto [lo, hi] = axes->range();
   EXPECT_GT(hi[2], 40.0);
   EXPECT_LT(lo[0], -15.0);
