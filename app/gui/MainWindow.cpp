@@ -52,6 +52,7 @@
 #include <QTime>
 #include <QToolBar>
 #include <QVBoxLayout>
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <functional>
@@ -481,7 +482,7 @@ bool MainWindow::chooseProblem(const std::string& id) {
   return openScene(QString::fromStdString(defaultScenePath(id)));
 }
 
-bool MainWindow::runDocument(const nlohmann::json& document) {
+bool MainWindow::runDocument(const nlohmann::json& document, const QString& origin) {
   std::unique_ptr<Scene> scene;
   try {
     scene = std::make_unique<Scene>(sceneFromJson(document, scene_ ? scene_->source : "edited scene"));
@@ -489,11 +490,11 @@ bool MainWindow::runDocument(const nlohmann::json& document) {
     QMessageBox::warning(this, "rollviz", QString("Cannot run these values:\n%1").arg(e.what()));
     return false;
   }
-  useScene(std::move(scene), scenePath_);
+  useScene(std::move(scene), scenePath_, origin);
   return true;
 }
 
-void MainWindow::useScene(std::unique_ptr<Scene> scene, const QString& path) {
+void MainWindow::useScene(std::unique_ptr<Scene> scene, const QString& path, const QString& origin) {
   stream_.reset();
   map_->stopAll(); // its jobs hold the old scene's model until setScene replaces them
   if (visual_) view_->renderWindow()->RemoveRenderer(visual_->renderer());
@@ -510,8 +511,10 @@ void MainWindow::useScene(std::unique_ptr<Scene> scene, const QString& path) {
   method_ = scene_->model->isMap() ? QString("iterated map")
                                    : run.left(run.indexOf(')') + 1); // the method and its settings
   speedBox_->setValue(scene_->view.speed);
+  // named by where it came from: its file, or (a sweep's cell) the sweep's point
   setWindowTitle(QString("rollviz — %1 (%2)")
-                     .arg(QFileInfo(path).fileName(), QString::fromStdString(scene_->model->info().id)));
+                     .arg(origin.isEmpty() ? QFileInfo(path).fileName() : origin,
+                          QString::fromStdString(scene_->model->info().id)));
   map_->setScene(*scene_);
   control_->setScene(*scene_);
   watchModelFile();
@@ -652,10 +655,13 @@ QString MainWindow::askWhereToWrite(const QString& title, QStandardPaths::Standa
 }
 
 void MainWindow::snapshot() {
+  // the view held still while the dialog is open: the picture is the instant its proposed name says
+  const bool wasPlaying = playing_;
+  if (wasPlaying) togglePlay();
   const QString path =
       askWhereToWrite("Save snapshot", QStandardPaths::PicturesLocation, "png", "PNG (*.png)");
-  if (path.isEmpty()) return;
-  if (!snapshotTo(path)) QMessageBox::warning(this, "rollviz", "Cannot write " + path);
+  if (!path.isEmpty() && !snapshotTo(path)) QMessageBox::warning(this, "rollviz", "Cannot write " + path);
+  if (wasPlaying && !playing_) togglePlay();
 }
 
 bool MainWindow::snapshotTo(const QString& path) {
@@ -829,7 +835,9 @@ SweepWindow* MainWindow::openSweep(const QString& path) {
   try {
     auto* w = new SweepWindow(map_->jobs(), loadSweep(path.toStdString()), this);
     w->setAttribute(Qt::WA_DeleteOnClose);
-    connect(w, &SweepWindow::openScene, this, [this](const nlohmann::json& doc) { runDocument(doc); });
+    const QString origin = "a point of " + QFileInfo(path).fileName();
+    connect(w, &SweepWindow::openScene, this,
+            [this, origin](const nlohmann::json& doc) { runDocument(doc, origin); });
     w->show();
     return w;
   } catch (const std::exception& e) {
@@ -952,8 +960,15 @@ void MainWindow::rememberRecent(const QString& path) {
 
 void MainWindow::fillRecentMenu() {
   recentMenu_->clear();
-  for (const QString& p : QSettings().value("recentScenes").toStringList())
-    recentMenu_->addAction(QFileInfo(p).fileName(), this, [this, p] { openScene(p); })->setToolTip(p);
+  const QStringList recent = QSettings().value("recentScenes").toStringList();
+  for (const QString& p : recent) {
+    // a name two files share says its folder too
+    const QString name = QFileInfo(p).fileName();
+    const bool shared = std::count_if(recent.begin(), recent.end(),
+                                      [&](const QString& q) { return QFileInfo(q).fileName() == name; }) > 1;
+    const QString label = shared ? QFileInfo(p).dir().dirName() + "/" + name : name;
+    recentMenu_->addAction(label, this, [this, p] { openScene(p); })->setToolTip(p);
+  }
 }
 
 QString MainWindow::savedJobsPath() {

@@ -53,8 +53,9 @@ public:
   /// Another problem chosen in the control panel: opens its default scene, after asking when the map window's
   /// tools (which belong to the current problem) would be deleted. False when the user keeps the problem.
   bool chooseProblem(const std::string& id);
-  /// Runs a scene document (the control panel's edits); on failure shows why and keeps the current scene.
-  bool runDocument(const nlohmann::json& document);
+  /// Runs a scene document (the control panel's edits; a sweep's cell, `origin` naming it in the title);
+  /// on failure shows why and keeps the current scene.
+  bool runDocument(const nlohmann::json& document, const QString& origin = {});
   /// Where the map window's running trajectories are saved when the window closes (the next start offers to
   /// continue them): running-jobs.json in the application's data folder.
   static QString savedJobsPath();
@@ -172,8 +173,9 @@ private:
   void rememberRecent(const QString& path);
   void fillRecentMenu();
   void showStatus();
-  /// Replaces the running scene (from `source`, a file or "edited").
-  void useScene(std::unique_ptr<Scene> scene, const QString& source);
+  /// Replaces the running scene (from `source`, a file or "edited"; `origin`, when given, names it in the
+  /// title instead of the file).
+  void useScene(std::unique_ptr<Scene> scene, const QString& source, const QString& origin = {});
   QtVtkWidget* view_;
   VisualizerSettings* settings_;
   QMenu* recentMenu_;

@@ -26,12 +26,16 @@
 #include "scenes/ToolRunner.h"
 #include <vtkGenericOpenGLRenderWindow.h>
 
+#include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
+#include <QDir>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
 #include <QFile>
+#include <QFileDialog>
+#include <QFileInfo>
 #include <QLabel>
 #include <QListWidget>
 #include <QMenuBar>
@@ -45,6 +49,7 @@
 #include <QStatusBar>
 #include <QTabWidget>
 #include <QTemporaryDir>
+#include <QTimer>
 #include <QTreeWidget>
 #include <QtTest>
 #include <cstdio>
@@ -184,6 +189,32 @@ private slots:
     QTest::qWait(200);
     QVERIFY(std::abs(window_->shownTime() - t0 - 1.0 / 25) < 1e-9); // speed 1: 1/25 s of simulation
     window_->togglePlay();
+  }
+
+  // File > Snapshot: the view holds still while the dialog is open, so the proposed name's time is the
+  // picture's; playing goes on afterwards
+  void snapshotHoldsTheViewStillWhileItsDialogIsOpen() {
+    if (!window_->playing()) window_->togglePlay();
+    QTRY_VERIFY_WITH_TIMEOUT(window_->shownTime() > 0.2, 20000);
+    bool stillWhileOpen = false;
+    double timeWhileOpen = -1;
+    QString proposed;
+    QTimer::singleShot(0, this, [&] {
+      QTRY_VERIFY_WITH_TIMEOUT(qobject_cast<QFileDialog*>(QApplication::activeModalWidget()), 20000);
+      auto* dialog = qobject_cast<QFileDialog*>(QApplication::activeModalWidget());
+      stillWhileOpen = !window_->playing();
+      timeWhileOpen = window_->shownTime();
+      proposed = dialog->selectedFiles().value(0);
+      dialog->selectFile(dir_.filePath(QFileInfo(proposed).fileName()));
+      static_cast<QDialog*>(dialog)->accept(); // QDialog::accept is public; QFileDialog overrides it
+    });
+    window_->snapshot();
+    QVERIFY(stillWhileOpen);
+    QVERIFY(window_->playing());
+    const QString name = QFileInfo(proposed).fileName();
+    // the name says the time the view showed (and still shows) while the dialog was open
+    QVERIFY2(name.endsWith(QString("-t%1.png").arg(timeWhileOpen, 0, 'f', 2)), qPrintable(name));
+    QVERIFY(QFile::exists(dir_.filePath(name)));
   }
 
   void snapshotWritesAPng() {
@@ -370,6 +401,9 @@ private slots:
     QVERIFY2(at.x() >= 0, "no pixel over grid point 13");
     QTest::mouseClick(w->view(), Qt::LeftButton, {}, at);
     QTRY_VERIFY_WITH_TIMEOUT(window_->scene() && window_->scene()->model->info().id == "henon_heiles", 5000);
+    // the title names the sweep's point and its problem, not the scene open before
+    QVERIFY2(window_->windowTitle() == "rollviz — a point of hh_sweep.json (henon_heiles)",
+             qPrintable(window_->windowTitle()));
     const auto point = window_->scene()->document["initial"]["map"];
     QCOMPARE(point.size(), std::size_t(2));
     QCOMPARE(point[0].get<double>(), w->spec().axisValues(13)[0]);
@@ -1272,6 +1306,25 @@ private slots:
     QVERIFY(lyapunov->isVisible()); // and the window still draws
     QVERIFY(keep(lyapunov->grab().toImage(), "window_chart_lyapunov_after_export.png"));
     lyapunov->close();
+  }
+
+  // File > Recent scenes: two files of one name are told apart by their folders
+  void recentScenesTellFilesOfOneNameApart() {
+    const QString other = dir_.filePath("copy/henon_heiles.json");
+    QVERIFY(QDir().mkpath(QFileInfo(other).absolutePath()));
+    QFile::remove(other);
+    QVERIFY(QFile::copy(QString::fromStdString(defaultScenePath("henon_heiles")), other));
+    QVERIFY(window_->openScene(other));
+    QVERIFY(window_->openScene(QString::fromStdString(defaultScenePath("henon_heiles"))));
+    QStringList labels;
+    for (auto* action : window_->menuBar()->actions())
+      if (action->text() == "&File")
+        for (auto* item : action->menu()->actions())
+          if (item->menu() && item->text() == "Recent scenes")
+            for (auto* recent : item->menu()->actions())
+              labels << recent->text();
+    QVERIFY2(labels.contains("copy/henon_heiles.json") && labels.contains("scenes/henon_heiles.json"),
+             qPrintable(labels.join(" | ")));
   }
 
   // File > Gallery: every gallery scene with its thumbnail and what to watch; Open loads the chosen one
