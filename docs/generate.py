@@ -56,6 +56,22 @@ with open(os.path.join(out, "command-line.md"), "w") as f:
         f.write(f"## {name}\n\n{summary}\n\n```text\n{help_of(name).rstrip()}\n```\n\n")
 
 
+# the problems: each one's parameters (the scene's "parameters" keys, their defaults and ranges), state, map
+# coordinates and observables, from `rollviz describe` -- the parameter tables themselves
+problems = subprocess.run([rollviz, "list", "problems"], capture_output=True, text=True, env=env,
+                          check=True).stdout.split()
+with open(os.path.join(out, "problems.md"), "w") as f:
+    f.write("# The problems\n\nGenerated from each problem's own tables (`rollviz describe PROBLEM`) when the guide "
+            "is built: the keys of a scene's `\"parameters\"` with their defaults, ranges and meaning, the state "
+            "(`\"initial\": {\"state\": ...}`), the map coordinates (`\"initial\": {\"map\": [...]}`) and the "
+            "observables a section, a plot or `--columns` can name. The tools' settings are [the tools](tools.md); "
+            "the rest of a scene file is [scene files](scenes.md).\n\n")
+    for problem in problems:
+        r = subprocess.run([rollviz, "describe", problem], capture_output=True, text=True, env=env, timeout=60)
+        if r.returncode != 0:
+            sys.exit(f"generate.py: `rollviz describe {problem}` failed: {r.stderr}")
+        f.write(f"## {problem}\n\n```text\n{r.stdout.rstrip()}\n```\n\n")
+
 # the gallery: each scene's picture rendered now, by this build
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(docs)), "scripts"))
 import make_gallery  # noqa: E402
