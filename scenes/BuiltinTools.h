@@ -5,8 +5,10 @@
 
 namespace rv {
 
-/// Binds the runners of the built-in tools that have one (bifurcation_curve, megno); idempotent and
-/// thread-safe.
+/// Binds the runners of the built-in tools that have one (bifurcation_curve, spectrum, lyapunov, megno);
+/// idempotent and thread-safe. Free of VTK (the fuzzers link it).
 void registerBuiltinTools();
+/// Binds their charts (scenes/BuiltinCharts.cpp, VTK) after their runners; idempotent and thread-safe.
+void registerBuiltinCharts();
 
 } // namespace rv

@@ -5,6 +5,7 @@
 #include "dynamics/tools/FixedPoint.h"
 #include "dynamics/tools/ToolRegistry.h"
 #include "render/charts/ToolCharts.h"
+#include "scenes/BuiltinTools.h"
 #include "scenes/SceneLoader.h"
 #include "scenes/SceneTools.h"
 #include "scenes/ToolRunner.h"
@@ -213,6 +214,7 @@ std::unique_ptr<Chart> ramChart(const Scene& scene, const ChartRequest& r, const
 
 // a tool that runs through ToolRunner.h: its own chart, or its table's columns against the first
 std::unique_ptr<Chart> toolResultChart(const ToolEntry& tool, const Scene& scene, const ToolResult& result) {
+  registerBuiltinCharts();
   if (const ToolRunner* runner = findToolRunner(tool.id); runner && runner->chart)
     return runner->chart(scene, result);
   const auto& t = result.table;

@@ -23,6 +23,13 @@ void addToolRunner(const std::string& id, ToolRunner runner) {
     throw InputError("tool '" + id + "' already has a runner");
 }
 
+void addToolChart(const std::string& id,
+                  std::function<std::unique_ptr<Chart>(const Scene&, const ToolResult&)> chart) {
+  const auto it = runners().find(id);
+  if (it == runners().end()) throw InputError("tool '" + id + "' has no runner to draw for");
+  it->second.chart = std::move(chart);
+}
+
 const ToolRunner* findToolRunner(const std::string& id) {
   registerBuiltinTools(); // rollviz's own first, whichever front end asks (once; modules add theirs later)
   const auto it = runners().find(id);

@@ -75,6 +75,10 @@ void getTable(Snapshot& state, NamedColumns& table);
 /// Binds a runner to the registered tool `id` (its chart view is the entry's chartView); InputError when the
 /// tool is not registered or already has one.
 void addToolRunner(const std::string& id, ToolRunner runner);
+/// Sets the chart of tool `id`'s runner (kept apart from the computation: rollviz's own charts are bound
+/// where VTK is linked); InputError when the tool has no runner.
+void addToolChart(const std::string& id,
+                  std::function<std::unique_ptr<Chart>(const Scene&, const ToolResult&)> chart);
 /// The runner of tool `id`, or nullptr (a tool whose front ends are written by hand).
 const ToolRunner* findToolRunner(const std::string& id);
 /// The registered tool whose chart view is `view` and that has a runner, or nullptr.

@@ -65,12 +65,6 @@ bool hasExtension(const std::string& path, const std::string& extension) {
                     [](char a, char b) { return std::tolower(a) == std::tolower(b); });
 }
 
-void NamedColumns::addRow(const std::vector<double>& row) {
-  if (values.size() < row.size()) values.resize(row.size());
-  for (std::size_t c = 0; c < row.size(); ++c)
-    values[c].push_back(row[c]);
-}
-
 void writePolyDataVtp(const std::string& path, const NamedColumns& columns, std::array<int, 3> xyz, bool line,
                       const std::string& what) {
   const vtkIdType n = columns.rows();

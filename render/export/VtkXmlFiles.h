@@ -18,8 +18,12 @@ bool hasExtension(const std::string& path, const std::string& extension);
 struct NamedColumns {
   std::vector<std::string> names;
   std::vector<std::vector<double>> values; ///< values[c][k]: column c at sample k
-  /// Appends one row (one value per column).
-  void addRow(const std::vector<double>& row);
+  /// Appends one row (one value per column). Inline: VTK-free code (the fuzzers' scenes) builds tables too.
+  void addRow(const std::vector<double>& row) {
+    if (values.size() < row.size()) values.resize(row.size());
+    for (std::size_t c = 0; c < row.size(); ++c)
+      values[c].push_back(row[c]);
+  }
   long rows() const { return values.empty() ? 0 : static_cast<long>(values[0].size()); }
 };
 

@@ -1,0 +1,85 @@
+// BuiltinCharts.cpp -- how the results of rollviz's own runnable tools (scenes/BuiltinTools.cpp) are drawn,
+// bound to their runners once, before the first chart is drawn (SceneCharts.cpp).
+#include "dynamics/core/Errors.h"
+#include "dynamics/core/Format.h"
+#include "render/charts/ToolCharts.h"
+#include "scenes/BuiltinTools.h"
+#include "scenes/ToolRunner.h"
+
+#include <algorithm>
+#include <mutex>
+
+namespace rv {
+
+namespace {
+
+// the curve in its parameter plane, its meeting points marked
+std::unique_ptr<Chart> bifurcationCurveChart(const Scene&, const ToolResult& r) {
+  const auto& t = r.table;
+  if (t.names.size() < 2) throw ComputationError("bifurcation_curve: no curve to draw");
+  auto chart = std::make_unique<PoincareChart>(t.names[0], t.names[1]);
+  std::vector<std::array<double, 2>> marks;
+  for (const auto& e : r.fields.value("events", nlohmann::json::array()))
+    marks.push_back({e[t.names[0]].get<double>(), e[t.names[1]].get<double>()});
+  drawCurves(*chart, t.values[0], {t.values[1]}, marks);
+  chart->setTitle(format("%s curve in (%s, %s)", r.fields.value("kind", std::string()).c_str(),
+                         t.names[0].c_str(), t.names[1].c_str()));
+  return chart;
+}
+
+// the amplitudes against frequency, the peaks marked, up to a little past the highest peak (the rest of a
+// smooth signal's spectrum is flat)
+std::unique_ptr<Chart> spectrumChart(const Scene&, const ToolResult& r) {
+  const auto& frequency = r.table.values.at(0);
+  const auto& amplitude = r.table.values.at(1);
+  std::vector<std::array<double, 2>> peaks;
+  double top = 0, amax = 0;
+  for (const auto& p : r.fields.at("peaks")) {
+    peaks.push_back({p["frequency"].get<double>(), p["amplitude"].get<double>()});
+    top = std::max(top, peaks.back()[0]), amax = std::max(amax, peaks.back()[1]);
+  }
+  auto chart = std::make_unique<PoincareChart>("frequency",
+                                               "amplitude of " + r.fields.at("function").get<std::string>());
+  drawCurves(*chart, frequency, {amplitude}, peaks);
+  if (top > 0 && !frequency.empty() && 2 * top < frequency.back())
+    chart->setRanges(0, 2 * top, 0, 1.05 * amax);
+  chart->setTitle("Fourier spectrum");
+  return chart;
+}
+
+// the history's curves against t, each with its last value in the legend (the number the chart is read for)
+std::unique_ptr<Chart> historyChart(const ToolResult& r, const std::string& title, const std::string& yTitle,
+                                    const std::vector<std::string>& curves) {
+  const auto& t = r.table;
+  auto chart = std::make_unique<PoincareChart>("t", yTitle);
+  std::vector<std::vector<double>> ys;
+  std::vector<std::string> names;
+  for (std::size_t c = 1; c < t.names.size(); ++c)
+    if (curves.empty() || std::find(curves.begin(), curves.end(), t.names[c]) != curves.end()) {
+      ys.push_back(t.values[c]);
+      const std::string label = t.names[c] == "megno" ? "<Y>" : t.names[c];
+      names.push_back(format("%s = %.6g", label.c_str(), t.values[c].empty() ? 0.0 : t.values[c].back()));
+    }
+  if (!t.names.empty()) drawCurves(*chart, t.values[0], ys, {}, names);
+  chart->setTitle(title);
+  return chart;
+}
+
+} // namespace
+
+void registerBuiltinCharts() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    registerBuiltinTools();
+    addToolChart("bifurcation_curve", bifurcationCurveChart);
+    addToolChart("spectrum", spectrumChart);
+    addToolChart("lyapunov", [](const Scene&, const ToolResult& r) {
+      return historyChart(r, "Lyapunov exponents", "Lyapunov exponents", {});
+    });
+    addToolChart("megno", [](const Scene&, const ToolResult& r) {
+      return historyChart(r, "MEGNO and FLI", "MEGNO <Y>", {"megno"});
+    });
+  });
+}
+
+} // namespace rv
