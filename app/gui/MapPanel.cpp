@@ -269,7 +269,8 @@ bool MapPanel::startAt(double x, double y) {
                             .root = std::max(1, scene_->poincare.root)};
     start(scene_->model->stateFromMap(mapPoint(x, y), spec, "map point"));
     series_.back().origin = QString("(%1, %2)").arg(x, 0, 'g', 6).arg(y, 0, 'g', 6);
-    emit message(QString("trajectory %1 started at (%2, %3)").arg(series_.size()).arg(x).arg(y));
+    // numbered as the tool manager numbers its jobs
+    emit message(QString("trajectory #%1 started at (%2, %3)").arg(series_.back().job->id()).arg(x).arg(y));
     return true;
   } catch (const InputError& e) {
     emit message(QString::fromStdString(e.what()));

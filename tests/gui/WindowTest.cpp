@@ -478,6 +478,8 @@ private slots:
     MapPanel* map = window_->mapPanel();
     QVERIFY(map->startAt(0.3, 0.2));
     const int id = map->jobs().jobs().back()->id();
+    // the Results dock numbers it as the tool manager does
+    QTRY_VERIFY_WITH_TIMEOUT(window_->results().contains(QString("trajectory #%1 started").arg(id)), 10000);
     window_->toolManager()->refresh();
     window_->toolManager()->select(id);
     QCOMPARE(window_->apexSource(), id);
