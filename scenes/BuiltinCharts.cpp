@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <mutex>
+#include <utility>
 
 namespace rv {
 
@@ -47,19 +48,23 @@ std::unique_ptr<Chart> spectrumChart(const Scene&, const ToolResult& r) {
   return chart;
 }
 
-// the history's curves against t, each with its last value in the legend (the number the chart is read for)
+// the history's curves against t, each with its last value in the legend (the number the chart is read for);
+// `curves` picks columns and names them in the legend (empty: every column, by its own name)
+using LegendNames = std::vector<std::pair<std::string, std::string>>; // column, its name in the legend
 std::unique_ptr<Chart> historyChart(const ToolResult& r, const std::string& title, const std::string& yTitle,
-                                    const std::vector<std::string>& curves) {
+                                    const LegendNames& curves) {
   const auto& t = r.table;
   auto chart = std::make_unique<PoincareChart>("t", yTitle);
   std::vector<std::vector<double>> ys;
   std::vector<std::string> names;
-  for (std::size_t c = 1; c < t.names.size(); ++c)
-    if (curves.empty() || std::find(curves.begin(), curves.end(), t.names[c]) != curves.end()) {
-      ys.push_back(t.values[c]);
-      const std::string label = t.names[c] == "megno" ? "<Y>" : t.names[c];
-      names.push_back(format("%s = %.6g", label.c_str(), t.values[c].empty() ? 0.0 : t.values[c].back()));
-    }
+  for (std::size_t c = 1; c < t.names.size(); ++c) {
+    const auto picked = std::find_if(curves.begin(), curves.end(),
+                                     [&](const auto& curve) { return curve.first == t.names[c]; });
+    if (!curves.empty() && picked == curves.end()) continue;
+    ys.push_back(t.values[c]);
+    const std::string& label = curves.empty() ? t.names[c] : picked->second;
+    names.push_back(format("%s = %.6g", label.c_str(), t.values[c].empty() ? 0.0 : t.values[c].back()));
+  }
   if (!t.names.empty()) drawCurves(*chart, t.values[0], ys, {}, names);
   chart->setTitle(title);
   return chart;
@@ -77,7 +82,7 @@ void registerBuiltinCharts() {
       return historyChart(r, "Lyapunov exponents", "Lyapunov exponents", {});
     });
     addToolChart("megno", [](const Scene&, const ToolResult& r) {
-      return historyChart(r, "MEGNO and FLI", "MEGNO <Y>", {"megno"});
+      return historyChart(r, "MEGNO and FLI", "MEGNO <Y>", {{"megno", "<Y>"}});
     });
   });
 }
