@@ -3,7 +3,9 @@
 command-line.md from `rollviz --help` and every subcommand's help, and gallery.md with the gallery's pictures
 rendered by rollviz (scripts/make_gallery.py); and runs every `rollviz ...` line of the tutorials' ```sh blocks in
 the page's folder, so the pictures a tutorial shows are what its commands wrote (a failing command fails the
-guide). Usage: generate.py DOCS_DIR OUT_DIR ROLLVIZ"""
+guide). Also the GUI's screenshots (scripts/make_screenshots.py), the Python API reference from the built
+module (docs/python_api.py) and the benchmarks page. Usage: generate.py DOCS_DIR OUT_DIR ROLLVIZ [PYTHON_DIR]"""
+import json
 import os
 import re
 import shlex
@@ -14,7 +16,7 @@ import sys
 docs, out, rollviz = sys.argv[1], sys.argv[2], sys.argv[3]
 if os.path.isdir(out):
     shutil.rmtree(out)
-shutil.copytree(docs, out, ignore=shutil.ignore_patterns("generate.py", "__pycache__"))
+shutil.copytree(docs, out, ignore=shutil.ignore_patterns("generate.py", "python_api.py", "__pycache__"))
 # the pictures the pages share with the README: ../assets/readme/ in docs/ (so both read them in place on a
 # repository's page), copied into the guide and pointed at there
 shutil.copytree(os.path.join(os.path.dirname(os.path.abspath(docs)), "assets", "readme"), os.path.join(out, "_readme"))
@@ -90,13 +92,95 @@ with open(os.path.join(out, "gallery.md"), "w") as f:
         f.write(f"```sh\nrollviz gui {rel}\nrollviz video {rel} -o {s['id']}.mp4\n"
                 f"rollviz render {rel} -o {s['id']}.png --time {s['time']:g}\n```\n\n")
 
-# the tutorials' commands, each run as written (scene paths are the project's) in the page's folder
+# the GUI's pictures, taken by this build (scripts/make_screenshots.py), in place of the marker on the GUI page
+import make_screenshots  # noqa: E402
+
+shots = make_screenshots.make(rollviz, source, os.path.join(out, "screenshots"))
+with open(os.path.join(out, "gui.md")) as f:
+    text = f.read()
+if "<!-- screenshots -->" not in text:
+    sys.exit("generate.py: gui.md lost its <!-- screenshots --> marker")
+figures = "".join(f"![{caption}](screenshots/{name}.png)\n\n*{caption}*\n\n" for name, caption in shots)
+with open(os.path.join(out, "gui.md"), "w") as f:
+    f.write(text.replace("<!-- screenshots -->", figures))
+
+# the Python API reference, from the module of this build (docs/python_api.py), where it was built
+python_package = sys.argv[4] if len(sys.argv) > 4 else ""
+api = os.path.join(out, "python-api.md")
+if python_package and os.path.isdir(python_package):
+    r = subprocess.run([sys.executable, os.path.join(docs, "python_api.py"), api], capture_output=True, text=True,
+                       env={**env, "PYTHONPATH": python_package, "ROLLVIZ_MODULE_PATH": ""}, timeout=120)
+    if r.returncode != 0:
+        sys.exit(f"generate.py: the Python API reference failed: {r.stderr}")
+    # the integrators' scene keys (integrator.*), from the registry's parameter tables
+    r = subprocess.run([sys.executable, "-c", "import json, rollviz; print(json.dumps(rollviz.integrators()))"],
+                       capture_output=True, text=True, check=True, env={**env, "PYTHONPATH": python_package,
+                                                                        "ROLLVIZ_MODULE_PATH": ""})
+    keys = "The keys of a scene's `\"integrator\"` section (`--set integrator.KEY=VALUE`), from each method's " \
+           "parameter table:\n\n"
+    for method in json.loads(r.stdout):
+        keys += f"### `{method['id']}`\n\n{method['title']}.\n\n| key | default | range | meaning |\n|---|---|---|---|\n"
+        for p in method["parameters"]:
+            span = " / ".join(p["choices"]) if "choices" in p else f"{p['min']:g} .. {p['max']:g}"
+            default = p["default"] if isinstance(p["default"], str) else f"{p['default']:g}"
+            keys += f"| `{p['id']}` | {default} | {span} | {p['description']} |\n"
+        keys += "\n"
+    numerics = os.path.join(out, "numerics.md")
+    with open(numerics) as f:
+        text = f.read()
+    with open(numerics, "w") as f:
+        f.write(text.replace("<!-- integrator keys -->", keys))
+    # the study in Python: the notebook's cells as a page, with the pictures its script wrote now
+    study = os.path.join(out, "tutorials", "study")
+    r = subprocess.run([sys.executable, os.path.join(source, "examples", "chaplygin_study.py"), study],
+                       capture_output=True, text=True, env={**env, "PYTHONPATH": python_package,
+                                                           "ROLLVIZ_MODULE_PATH": ""}, timeout=600)
+    if r.returncode != 0:
+        sys.exit(f"generate.py: examples/chaplygin_study.py failed: {r.stderr}")
+    with open(os.path.join(source, "examples", "chaplygin_study.ipynb")) as f:
+        cells = json.load(f)["cells"]
+    with open(os.path.join(out, "tutorials", "python-study.md"), "w") as f:
+        for cell in cells:
+            text = "".join(cell["source"]).rstrip()
+            if cell["cell_type"] == "markdown":
+                f.write(text + "\n\n")
+                continue
+            f.write("```python\n" + text + "\n```\n\n")
+            for picture in re.findall(r'savefig\(os\.path\.join\(out, "([^"]+\.png)"\)', text):
+                f.write(f"![{picture}](study/{picture})\n\n")
+        f.write("The notebook is `examples/chaplygin_study.ipynb` (`./test` runs it cell by cell in a real kernel); "
+                "the same cells as a script, `examples/chaplygin_study.py OUT_DIR`, made the pictures above when "
+                "this guide was built. Every call is in the [Python API reference](../python-api.md).\n")
+else:
+    with open(os.path.join(out, "tutorials", "python-study.md"), "w") as f:
+        f.write("# A study in Python\n\nThis build has no Python module: see `examples/chaplygin_study.ipynb`.\n")
+    with open(api, "w") as f:
+        f.write("# Python API reference\n\nThis build has no Python module (`-DROLLVIZ_PYTHON=OFF`): the reference "
+                "is generated from the module when it is built.\n")
+
+# the benchmarks' tables, as tests/bench/README.md keeps them
+with open(os.path.join(source, "tests", "bench", "README.md")) as f:
+    bench = f.read()
+with open(os.path.join(out, "benchmarks.md"), "w") as f:
+    f.write(bench.replace("# Benchmarks", "# Benchmarks\n\n(From `tests/bench/README.md`, where the benchmarks "
+                          "live.)", 1))
+
+# the commands of the tutorials and the workflow pages, each `rollviz ...` line of a ```sh block (a line ending in
+# a backslash goes on) run as written in the page's folder, the project's paths (scenes/, examples/) read from the
+# source; a comment after `#` is not part of the command
 tutorials = os.path.join(out, "tutorials")
-for page in sorted(p for p in os.listdir(tutorials) if p.endswith(".md")):
-    with open(os.path.join(tutorials, page)) as f:
+pages = [os.path.join("tutorials", p) for p in sorted(os.listdir(tutorials)) if p.endswith(".md")]
+pages += ["getting-started.md", "continuation.md", "models.md"]
+for page in pages:
+    with open(os.path.join(out, page)) as f:
         blocks = re.findall(r"```sh\n(.*?)```", f.read(), re.S)
-    for line in (line for block in blocks for line in block.splitlines() if line.startswith("rollviz ")):
-        args = [os.path.join(source, a) if a.startswith("scenes/") else a for a in shlex.split(line)[1:]]
-        r = subprocess.run([rollviz, *args], cwd=tutorials, capture_output=True, text=True, env=env, timeout=600)
-        if r.returncode != 0:
-            sys.exit(f"generate.py: tutorials/{page}: `{line}` failed ({r.returncode}): {r.stderr}")
+    for block in blocks:
+        for line in block.replace("\\\n", " ").splitlines():
+            if not line.startswith("rollviz "):
+                continue
+            args = [os.path.join(source, a) if a.startswith(("scenes/", "examples/")) else a
+                    for a in shlex.split(line, comments=True)[1:]]
+            folder = os.path.dirname(os.path.join(out, page))
+            r = subprocess.run([rollviz, *args], cwd=folder, capture_output=True, text=True, env=env, timeout=600)
+            if r.returncode != 0:
+                sys.exit(f"generate.py: {page}: `{line}` failed ({r.returncode}): {r.stderr}")

@@ -17,7 +17,7 @@ namespace {
 struct IntegrateOptions {
   SceneArgs scene;
   double time = 10, every = 0.1;
-  std::string columns = "t,E", output;
+  std::string columns, output; ///< empty: every observable (as Python's integrate)
 };
 } // namespace
 
@@ -27,7 +27,8 @@ Command addIntegrateCommand(CLI::App& app) {
   addSceneArgs(cmd, o->scene);
   cmd->add_option("--time", o->time, "how long to integrate (simulation time)")->required();
   cmd->add_option("--every", o->every, "output period (rows at t = 0, every, 2 every, ...)")->required();
-  cmd->add_option("--columns", o->columns, "observables, comma separated (rollviz describe PROBLEM)");
+  cmd->add_option("--columns", o->columns,
+                  "observables, comma separated (rollviz describe PROBLEM; default: all of them)");
   cmd->add_option(
          "-o,--output", o->output,
          "CSV file (default: standard output); a .vtp file is a polyline for ParaView through the first "
@@ -44,6 +45,9 @@ Command addIntegrateCommand(CLI::App& app) {
             std::stringstream list(columns);
             for (std::string c; std::getline(list, c, ',');)
               ids.push_back(c);
+            if (columns.empty())
+              for (const auto& observable : scene.model->observables())
+                ids.push_back(observable.id);
             const std::vector<int> cols = observableColumns(*scene.model, ids, "--columns");
             const auto& obs = scene.model->observables();
             Progress progress("integrate");

@@ -266,7 +266,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
                       exportChartDialog(this, map_->view(), map_->chart(), "map",
                                         [this](const QString& m) { report(m, 8000); });
                   })
-      ->setToolTip("the Poincaré map window as a PNG picture or its points as CSV");
+      ->setToolTip("the Poincaré map window as a figure (PNG, or SVG/PDF vectors) or its points as CSV");
   recentMenu_ = file->addMenu("Recent scenes");
   fillRecentMenu();
   file->addSeparator();
