@@ -15,6 +15,7 @@
 #include <fmt/core.h>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <numeric>
 #include <set>
 #include <sstream>
@@ -96,6 +97,7 @@ std::vector<SweepQuantity> makeQuantities() {
                  return std::vector<double>{static_cast<double>(
                      std::count_if(e.begin(), e.end(), [zero](double v) { return v > zero; }))};
                }});
+  q.back().categorical = true;
   q.push_back({"fixedpoint.type", "fixedpoint",
                "the type of the fixed point of order fixedpoint.order found from the point: " + typeCodes(),
                single("fixedpoint.type"),
@@ -106,6 +108,7 @@ std::vector<SweepQuantity> makeQuantities() {
                  return std::vector<double>{static_cast<double>(r.type)};
                },
                /*needsMap=*/true});
+  q.back().categorical = true;
   q.push_back({"fixedpoint.order", "fixedpoint",
                "the least period (1..options.max_order) of a periodic point found within options.radius of "
                "the point, and its type (as fixedpoint.type)",
@@ -135,6 +138,7 @@ std::vector<SweepQuantity> makeQuantities() {
                  throw ComputationError(fmt::format("within radius {}: {}", radius, last));
                },
                /*needsMap=*/true});
+  q.back().categorical = true;
   q.push_back(
       {"observable.", "",
        "observable.NAME: the observable's value at options.time, or its time average over [0, time] "
@@ -174,6 +178,7 @@ std::vector<SweepQuantity> makeQuantities() {
                  return std::vector<double>{std::isnan(at) ? 0.0 : 1.0, at, end};
                },
                /*needsMap=*/false, /*cloud=*/false, /*optionalName=*/true});
+  q.back().categorical = true; // refined where it reverses or not
   q.push_back({"orbit", "poincare",
                "an orbit diagram: the last options.orbit_points points (after options.transient) of the map "
                "coordinate options.coordinate, one row per grid point",
@@ -414,7 +419,21 @@ SweepSpec sweepFromJson(json doc, const std::string& source) {
     }
     spec.axes.push_back(axis);
   }
-  if (total > 1e9) wa.fail("more than 10^9 grid points");
+  // refinement: the axes become the finest grid, of which the file's grid is level 0
+  spec.refine = static_cast<int>(options->get("refine"));
+  spec.refineThreshold = options->get("refine_threshold");
+  if (spec.refine > 0) {
+    if (spec.quantity->cloud)
+      (root / "options" / "refine")
+          .fail("an orbit diagram (a cloud of points per grid point) is not refined");
+    total = 1;
+    for (auto& axis : spec.axes) {
+      if (axis.count > 1) axis.count = (axis.count - 1) * (1 << spec.refine) + 1;
+      total *= axis.count;
+    }
+  }
+  if (total > 1e9)
+    wa.fail(spec.refine ? "more than 10^9 points on the finest grid" : "more than 10^9 grid points");
   spec.columns = spec.quantity->columns(spec);
 
   spec.resolved = doc;
@@ -432,6 +451,26 @@ SweepSpec loadSweep(const std::string& path) {
     throw InputError(path + ": cannot open the sweep file (" +
                      (fs::exists(path, ec) ? "not readable" : "no such file") + ")");
   return sweepFromJson(parseSceneJson(in, path), path);
+}
+
+SweepSpec zoomSweep(const SweepSpec& spec, const std::vector<double>& bounds, const std::string& what) {
+  const std::size_t axes = spec.axes.size();
+  if (bounds.size() != 2 * axes)
+    throw InputError(fmt::format("{}: {} numbers for a sweep of {} ax{}: give min,max of each ({})", what,
+                                 bounds.size(), axes, axes == 1 ? "is" : "es",
+                                 axes == 2 ? "x0,x1,y0,y1" : "x0,x1"));
+  json doc = spec.resolved; // the scene inlined, `set` applied: the file's counts, options and quantity
+  for (std::size_t a = 0; a < axes; ++a) {
+    const double lo = bounds[2 * a], hi = bounds[2 * a + 1];
+    if (!(std::isfinite(lo) && std::isfinite(hi) && lo < hi))
+      throw InputError(fmt::format("{}: the range of {} needs finite min < max, got {}, {}", what,
+                                   spec.axes[a].id, lo, hi));
+    doc["axes"][a]["min"] = lo;
+    doc["axes"][a]["max"] = hi;
+  }
+  SweepSpec zoomed = sweepFromJson(std::move(doc), spec.source);
+  zoomed.title = spec.title;
+  return zoomed;
 }
 
 Scene sweepPointScene(const SweepSpec& spec, long index) {
@@ -496,6 +535,183 @@ SweepChartData sweepChartData(const SweepSpec& spec) {
   return d;
 }
 
+namespace {
+
+// the grid indices of a point, the first axis fastest (an axis of count 1 has index 0)
+std::vector<long> gridIndices(const SweepSpec& spec, long index) {
+  std::vector<long> k;
+  for (const auto& a : spec.axes) {
+    k.push_back(index % a.count);
+    index /= a.count;
+  }
+  return k;
+}
+
+long gridIndex(const SweepSpec& spec, const std::vector<long>& k) {
+  long index = 0;
+  for (std::size_t a = spec.axes.size(); a-- > 0;)
+    index = index * spec.axes[a].count + k[a];
+  return index;
+}
+
+// calls visit(k) for every point from `from` to `to` (per axis, inclusive) in steps of `step`
+template <class Visit>
+void forLattice(const std::vector<long>& from, const std::vector<long>& to, long step, Visit visit) {
+  std::vector<long> k = from;
+  while (true) {
+    visit(k);
+    std::size_t a = 0;
+    for (; a < k.size(); ++a) {
+      if (k[a] + step <= to[a]) {
+        k[a] += step;
+        break;
+      }
+      k[a] = from[a];
+    }
+    if (a == k.size()) return;
+  }
+}
+
+} // namespace
+
+int sweepPointLevel(const SweepSpec& spec, long index) {
+  int level = 0;
+  const auto k = gridIndices(spec, index);
+  for (std::size_t a = 0; a < k.size(); ++a) {
+    int zeros = 0; // how many times 2 divides the index (an index 0 lies on every level's lattice)
+    for (long v = k[a]; v != 0 && v % 2 == 0 && zeros < spec.refine; v /= 2)
+      ++zeros;
+    if (k[a] == 0) zeros = spec.refine;
+    level = std::max(level, spec.refine - zeros);
+  }
+  return level;
+}
+
+std::vector<char> sweepLevelPoints(const SweepSpec& spec, const SweepStore& store, int level) {
+  const long n = spec.points();
+  std::vector<char> wanted(static_cast<std::size_t>(n), 0);
+  if (level == 0) {
+    for (long i = 0; i < n; ++i)
+      wanted[static_cast<std::size_t>(i)] = sweepPointLevel(spec, i) == 0 ? 1 : 0;
+    return wanted;
+  }
+  const long cell = 1L << (spec.refine - level + 1), half = cell / 2; // the cells of level - 1, halved
+  // the quantity's range over level 0: what "differ" is measured against
+  double lo = INFINITY, hi = -INFINITY;
+  for (long i = 0; i < n; i += 1) {
+    if (sweepPointLevel(spec, i) != 0 || !store.done(i)) continue;
+    const SweepRecord r = store.read(i);
+    if (r.ok && !r.values.empty() && std::isfinite(r.values[0])) {
+      lo = std::min(lo, r.values[0]);
+      hi = std::max(hi, r.values[0]);
+    }
+  }
+  const double tolerance = hi > lo ? spec.refineThreshold * (hi - lo) : 0.0;
+  const auto differ = [&](const SweepRecord& a, const SweepRecord& b) {
+    if (a.ok != b.ok) return true;
+    if (!a.ok) return false;
+    const double x = a.values.empty() ? kNaN : a.values[0], y = b.values.empty() ? kNaN : b.values[0];
+    if (std::isnan(x) || std::isnan(y)) return std::isnan(x) != std::isnan(y);
+    return spec.quantity->categorical ? x != y : std::abs(x - y) > tolerance;
+  };
+  std::vector<long> origin(spec.axes.size(), 0), last(spec.axes.size()), cellLast(spec.axes.size());
+  for (std::size_t a = 0; a < spec.axes.size(); ++a)
+    last[a] = spec.axes[a].count > 1 ? spec.axes[a].count - 1 - cell : 0; // the last cell's origin
+  forLattice(origin, last, cell, [&](const std::vector<long>& c) {
+    // a cell of level - 1 exists where every corner is computed (its parent was halved)
+    std::vector<SweepRecord> corners;
+    std::vector<long> far(c);
+    for (std::size_t a = 0; a < c.size(); ++a)
+      far[a] = spec.axes[a].count > 1 ? c[a] + cell : c[a];
+    bool complete = true;
+    forLattice(c, far, cell, [&](const std::vector<long>& k) {
+      const long i = gridIndex(spec, k);
+      if (!store.done(i)) {
+        complete = false;
+        return;
+      }
+      corners.push_back(store.read(i));
+    });
+    if (!complete) return;
+    bool split = false;
+    for (std::size_t p = 1; p < corners.size() && !split; ++p)
+      split = differ(corners[0], corners[p]);
+    if (!split) return;
+    forLattice(c, far, half, [&](const std::vector<long>& k) {
+      const long i = gridIndex(spec, k);
+      if (!store.done(i)) wanted[static_cast<std::size_t>(i)] = 1;
+    });
+  });
+  return wanted;
+}
+
+bool runSweepLevels(const SweepSpec& spec, SweepStore& store, int workers,
+                    const std::function<bool(ChunkScheduler&)>& runLevel) {
+  const long chunk = static_cast<long>(spec.options->get("chunk"));
+  for (int level = 0; level <= spec.refine; ++level) {
+    ChunkScheduler scheduler(store, workers, chunk,
+                             spec.refine > 0 ? sweepLevelPoints(spec, store, level) : std::vector<char>{});
+    if (!runLevel(scheduler)) return false;
+  }
+  return true;
+}
+
+namespace {
+
+// the grid's values from the points computed (done(i), read(i)): see sweepGridValues
+template <class Done, class Read>
+std::vector<double> gridValues(const SweepSpec& spec, const Done& done, const Read& read) {
+  const std::size_t columns = spec.columns.size();
+  const long n = spec.points();
+  std::vector<double> values(static_cast<std::size_t>(n) * columns, kNaN);
+  const auto put = [&](long to, const SweepRecord& r) {
+    for (std::size_t c = 0; c < columns && c < r.values.size(); ++c)
+      values[static_cast<std::size_t>(to) * columns + c] = r.values[c];
+  };
+  if (spec.refine == 0) {
+    for (long i = 0; i < n; ++i)
+      if (done(i)) put(i, read(i));
+    return values;
+  }
+  // coarse to fine: each computed point paints the box of its level's half spacing around it, finer points
+  // over coarser ones
+  std::vector<std::vector<long>> byLevel(static_cast<std::size_t>(spec.refine) + 1);
+  for (long i = 0; i < n; ++i)
+    if (done(i)) byLevel[static_cast<std::size_t>(sweepPointLevel(spec, i))].push_back(i);
+  for (int level = 0; level <= spec.refine; ++level) {
+    const long reach = (1L << (spec.refine - level)) / 2;
+    for (long i : byLevel[static_cast<std::size_t>(level)]) {
+      const SweepRecord r = read(i);
+      const auto k = gridIndices(spec, i);
+      std::vector<long> from(k), to(k);
+      for (std::size_t a = 0; a < k.size(); ++a) {
+        from[a] = std::max(0L, k[a] - reach);
+        to[a] = std::min<long>(spec.axes[a].count - 1, k[a] + reach);
+      }
+      forLattice(from, to, 1, [&](const std::vector<long>& p) { put(gridIndex(spec, p), r); });
+    }
+  }
+  return values;
+}
+
+} // namespace
+
+std::vector<double> sweepGridValues(const SweepSpec& spec, const SweepStore& store) {
+  return gridValues(
+      spec, [&](long i) { return store.done(i); }, [&](long i) { return store.read(i); });
+}
+
+std::string sweepCsvRow(const SweepSpec& spec, long index, const SweepRecord& r, bool timing) {
+  std::string row;
+  for (double v : spec.axisValues(index))
+    row += fmt::format("{:.17g},", v);
+  for (double v : r.values)
+    row += fmt::format("{:.17g},", v);
+  if (timing) row += fmt::format("{:.6g},", r.seconds);
+  row += r.ok ? "ok" : csvField("failed: " + r.reason);
+  return row;
+}
+
 std::vector<double> readSweepCsv(const SweepSpec& spec, const std::string& path, const std::string& what) {
   std::ifstream in(path);
   if (!in) throw InputError(what + " " + path + ": cannot open");
@@ -510,35 +726,41 @@ std::vector<double> readSweepCsv(const SweepSpec& spec, const std::string& path,
   const std::size_t first = spec.axes.size(), n = spec.columns.size();
   std::vector<double> values;
   values.reserve(static_cast<std::size_t>(spec.points()) * n);
+  std::map<long, SweepRecord> computed; // a refined sweep's rows: its computed points, found by their axes
   long row = 0;
   for (; std::getline(in, line); ++row) {
     std::stringstream fields(line);
     std::string field;
-    for (std::size_t k = 0; k < first + n; ++k) {
+    std::vector<long> k;
+    SweepRecord record;
+    for (std::size_t c = 0; c < first + n; ++c) {
       if (!std::getline(fields, field, ','))
         throw InputError(fmt::format("{} {}:{}: too few columns", what, path, row + 2));
-      if (k < first) continue;
+      double v = kNaN;
       try {
-        values.push_back(field == "nan" ? kNaN : std::stod(field));
+        v = field == "nan" ? kNaN : std::stod(field);
       } catch (const std::exception&) {
         throw InputError(fmt::format("{} {}:{}: not a number '{}'", what, path, row + 2, field));
       }
+      if (c >= first) {
+        (spec.refine ? record.values : values).push_back(v);
+        continue;
+      }
+      const SweepAxis& axis = spec.axes[c];
+      const double at = axis.count > 1 ? (v - axis.min) / (axis.max - axis.min) * (axis.count - 1) : 0.0;
+      if (!(at > -0.5 && at < axis.count - 0.5))
+        throw InputError(
+            fmt::format("{} {}:{}: {} = {} is off the sweep's grid", what, path, row + 2, axis.id, v));
+      k.push_back(std::lround(at));
     }
+    if (spec.refine) computed[gridIndex(spec, k)] = std::move(record);
   }
+  if (spec.refine)
+    return gridValues(
+        spec, [&](long i) { return computed.count(i) > 0; }, [&](long i) { return computed.at(i); });
   if (row != spec.points())
     throw InputError(fmt::format("{} {}: {} rows, the sweep has {} points", what, path, row, spec.points()));
   return values;
-}
-
-std::string sweepCsvRow(const SweepSpec& spec, long index, const SweepRecord& r, bool timing) {
-  std::string row;
-  for (double v : spec.axisValues(index))
-    row += fmt::format("{:.17g},", v);
-  for (double v : r.values)
-    row += fmt::format("{:.17g},", v);
-  if (timing) row += fmt::format("{:.6g},", r.seconds);
-  row += r.ok ? "ok" : csvField("failed: " + r.reason);
-  return row;
 }
 
 } // namespace rv

@@ -41,6 +41,8 @@ struct SweepQuantity {
   bool needsMap = false;     ///< computed on the scene's map: a flow needs a Poincare section
   bool cloud = false;        ///< every column is a point of an orbit diagram (drawn as a cloud)
   bool optionalName = false; ///< takes ".NAME" but has a default (reversal[.NAME])
+  bool categorical =
+      false; ///< its first column is a category (a type, a count, yes/no): refined on any change
 };
 
 /// Every quantity a sweep can chart.
@@ -58,6 +60,10 @@ struct SweepSpec {
   std::string quantityName; ///< the name after the prefix (observable.NAME, reversal.NAME)
   std::shared_ptr<const ParameterValues> options;
   std::vector<std::string> columns; ///< the quantity's CSV columns
+  /// Refinement levels (options.refine): the axes hold the finest grid, (count - 1) 2^refine + 1 values, of
+  /// which the sweep computes the file's grid and then, level after level, the cells where the regimes meet.
+  int refine = 0;
+  double refineThreshold = 0; ///< options.refine_threshold
   long points() const;
   /// The grid indices of a point (the first axis fastest) and its axis values.
   std::vector<double> axisValues(long index) const;
@@ -71,6 +77,11 @@ SweepSpec loadSweep(const std::string& path);
 /// Validates a sweep document; its "scene" is a path (relative to `source`'s folder, then to the working
 /// folder) or the scene document itself.
 SweepSpec sweepFromJson(nlohmann::json document, const std::string& source);
+
+/// The same sweep over another window (a zoom into its chart): `bounds` = min, max of each axis in order, at
+/// the same counts (and refinement). InputError naming `what` (e.g. "--window") for a wrong count or an empty
+/// range.
+SweepSpec zoomSweep(const SweepSpec& spec, const std::vector<double>& bounds, const std::string& what);
 
 /// The scene of grid point `index` (what "open this point" shows): InputError when the axis values make no
 /// valid scene.
@@ -88,6 +99,24 @@ SweepChartData sweepChartData(const SweepSpec& spec);
 /// The values of a finished sweep's CSV (written by `rollviz sweep` from this sweep file, with or without the
 /// seconds column): InputError naming `what` (e.g. "--csv") when its header or rows do not match the sweep.
 std::vector<double> readSweepCsv(const SweepSpec& spec, const std::string& path, const std::string& what);
+
+/// The refinement level of a grid point: 0 on the sweep file's grid, L where it first appears at level L.
+int sweepPointLevel(const SweepSpec& spec, long index);
+/// The points level `level` computes (a flag per point; with level > 0 the points before it must be done):
+/// level 0 is the sweep file's grid; level L halves every cell of level L - 1 whose corners differ (by more
+/// than refine_threshold times the quantity's range over the grid of level 0, any change of a categorical
+/// quantity, a failed corner beside a computed one).
+std::vector<char> sweepLevelPoints(const SweepSpec& spec, const SweepStore& store, int level);
+/// Runs a sweep level after level (one level without refinement): `runLevel` computes what the scheduler
+/// hands out and says whether it finished (false: stopped, and so is the sweep). Returns whether the sweep is
+/// complete. A store with records (a checkpoint) goes on where it stopped: the levels are a function of the
+/// records.
+bool runSweepLevels(const SweepSpec& spec, SweepStore& store, int workers,
+                    const std::function<bool(ChunkScheduler&)>& runLevel);
+/// The values of every grid point (points x columns, the first axis fastest): those computed as recorded, the
+/// others of a refined sweep painted from the nearest computed point of the finest level around them (NaN
+/// where none is computed yet, or where a point failed).
+std::vector<double> sweepGridValues(const SweepSpec& spec, const SweepStore& store);
 
 /// One CSV row of a point (status "ok" or "failed: reason", quoted).
 std::string sweepCsvRow(const SweepSpec& spec, long index, const SweepRecord& record, bool timing = false);

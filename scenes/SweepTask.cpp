@@ -44,10 +44,11 @@ std::string SweepTask::describe() const {
 }
 
 bool SweepTask::run(const ToolControl& control) {
-  ChunkScheduler scheduler(*store_, threads_, static_cast<long>(spec_.options->get("chunk")));
-  return runSweepThreads(
-      *store_, scheduler, [this](long i, const ToolControl& c) { return evaluateSweepPoint(spec_, i, c); },
-      threads_, control);
+  return runSweepLevels(spec_, *store_, threads_, [&](ChunkScheduler& scheduler) {
+    return runSweepThreads(
+        *store_, scheduler, [this](long i, const ToolControl& c) { return evaluateSweepPoint(spec_, i, c); },
+        threads_, control);
+  });
 }
 
 void SweepTask::reset() {
@@ -63,6 +64,13 @@ void SweepTask::updateChartData(SweepChartData& d, std::vector<char>& read) cons
     d = sweepChartData(spec_);
     d.values.assign(points * n, std::numeric_limits<double>::quiet_NaN());
     read.assign(points, 0);
+  }
+  if (spec_.refine > 0) { // a new point repaints the cells around it: the whole grid again
+    const long done = store_->doneCount();
+    if (read[0] != 1 || lastPainted_ != done) d.values = sweepGridValues(spec_, *store_);
+    read[0] = 1;
+    lastPainted_ = done;
+    return;
   }
   for (std::size_t i = 0; i < points; ++i)
     if (!read[i] && store_->done(static_cast<long>(i))) {

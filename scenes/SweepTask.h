@@ -39,6 +39,7 @@ private:
   std::string path_;
   std::unique_ptr<SweepStore> store_;
   int generation_ = 0;
+  mutable long lastPainted_ = -1; // a refined sweep's points done when its chart was last painted
 };
 
 } // namespace rv

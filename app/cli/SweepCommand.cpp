@@ -23,6 +23,8 @@
 #include <fstream>
 #include <functional>
 #include <memory>
+#include <sstream>
+#include <stdexcept>
 #include <thread>
 #include <unistd.h>
 #include <vtkRenderWindow.h>
@@ -32,7 +34,7 @@ namespace rv {
 namespace {
 
 struct SweepOptions {
-  std::string sweep, output, png, size = "900x700", checkpoint;
+  std::string sweep, output, png, size = "900x700", checkpoint, window;
   int threads = 0;
   bool timing = false;
 };
@@ -58,13 +60,10 @@ void writeChartFigure(const SweepChartData& data, const std::string& path, std::
 
 namespace {
 
-// the CSV (and the chart's values) from the store, in grid order
-// the grid as image data: a node per point, its columns and cost as arrays (NaN where it failed)
-// Both writers read the store once, in grid order, and show each record to `seen` (the chart's values).
-using RecordSeen = std::function<void(const SweepRecord&)>;
-
-void writeVti(const SweepSpec& spec, const SweepStore& store, const std::string& path,
-              const RecordSeen& seen) {
+// the grid as image data: a node per point, its columns and cost as arrays (NaN where it failed; a refined
+// sweep's points not computed painted from the nearest computed one, their cost NaN)
+void writeVti(const SweepSpec& spec, const SweepStore& store, const std::vector<double>& values,
+              const std::string& path) {
   ImageGrid image;
   for (std::size_t a = 0; a < spec.axes.size(); ++a) {
     const SweepAxis& axis = spec.axes[a];
@@ -75,18 +74,18 @@ void writeVti(const SweepSpec& spec, const SweepStore& store, const std::string&
   }
   image.arrays.names = spec.columns;
   image.arrays.names.emplace_back("seconds");
+  const std::size_t n = spec.columns.size();
   for (long i = 0; i < spec.points(); ++i) {
-    SweepRecord r = store.read(i);
-    seen(r);
-    r.values.resize(spec.columns.size(), NAN);
-    r.values.push_back(r.seconds);
-    image.arrays.addRow(r.values);
+    const auto at = values.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(i) * n);
+    std::vector<double> row(at, at + static_cast<std::ptrdiff_t>(n));
+    row.push_back(store.done(i) ? store.read(i).seconds : NAN);
+    image.arrays.addRow(row);
   }
   writeImageVti(path, image);
 }
 
-void writeCsv(const SweepSpec& spec, const SweepStore& store, const std::string& path, bool timing,
-              const RecordSeen& seen) {
+// the CSV from the store in grid order: every point, or a refined sweep's computed points
+void writeCsv(const SweepSpec& spec, const SweepStore& store, const std::string& path, bool timing) {
   AtomicFile csv(path, "-o");
   std::FILE* f = std::fopen(csv.tempPath().c_str(), "w");
   if (!f) throw InputError("-o " + path + ": cannot write");
@@ -94,11 +93,8 @@ void writeCsv(const SweepSpec& spec, const SweepStore& store, const std::string&
   for (const auto& h : sweepCsvHeader(spec, timing))
     line += (line.empty() ? "" : ",") + h;
   std::fprintf(f, "%s\n", line.c_str());
-  for (long i = 0; i < spec.points(); ++i) {
-    const SweepRecord r = store.read(i);
-    seen(r);
-    std::fprintf(f, "%s\n", sweepCsvRow(spec, i, r, timing).c_str());
-  }
+  for (long i = 0; i < spec.points(); ++i)
+    if (store.done(i)) std::fprintf(f, "%s\n", sweepCsvRow(spec, i, store.read(i), timing).c_str());
   const bool ok = std::fflush(f) == 0 && ::fsync(fileno(f)) == 0;
   std::fclose(f);
   if (!ok) throw ComputationError(path + ": cannot write");
@@ -106,16 +102,32 @@ void writeCsv(const SweepSpec& spec, const SweepStore& store, const std::string&
 }
 
 void writeResults(const SweepSpec& spec, const SweepStore& store, const SweepOptions& o) {
-  const bool png = !o.png.empty();
+  const bool vti = hasExtension(o.output, ".vti");
   SweepChartData data = sweepChartData(spec);
-  const RecordSeen seen = [&](const SweepRecord& r) {
-    if (png) data.values.insert(data.values.end(), r.values.begin(), r.values.end());
-  };
-  if (hasExtension(o.output, ".vti"))
-    writeVti(spec, store, o.output, seen);
+  if (vti || !o.png.empty()) data.values = sweepGridValues(spec, store);
+  if (vti)
+    writeVti(spec, store, data.values, o.output);
   else
-    writeCsv(spec, store, o.output, o.timing, seen);
-  if (png) writeChartFigure(data, o.png, parseSize(o.size), "--png");
+    writeCsv(spec, store, o.output, o.timing);
+  if (!o.png.empty()) writeChartFigure(data, o.png, parseSize(o.size), "--png");
+}
+
+// the sweep file, over --window's ranges where given (a zoom into its chart)
+SweepSpec loadSweepWindow(const std::string& path, const std::string& window) {
+  SweepSpec spec = loadSweep(path);
+  if (window.empty()) return spec;
+  std::vector<double> bounds;
+  std::stringstream list(window);
+  for (std::string v; std::getline(list, v, ',');) {
+    try {
+      std::size_t used = 0;
+      bounds.push_back(std::stod(v, &used));
+      if (used != v.size()) throw std::invalid_argument(v);
+    } catch (const std::exception&) {
+      throw InputError("--window: '" + v + "' is not a number (x0,x1 or x0,x1,y0,y1)");
+    }
+  }
+  return zoomSweep(spec, bounds, "--window");
 }
 
 int runSweep(const SweepOptions& o) {
@@ -135,7 +147,9 @@ int runSweep(const SweepOptions& o) {
   const bool keep = !o.checkpoint.empty();
   if (writer) {
     try {
-      spec = loadSweep(o.sweep);
+      spec = loadSweepWindow(o.sweep, o.window);
+      if (spec->refine > 0 && remote > 0)
+        throw InputError(o.sweep + ":options.refine: a refined sweep runs on threads, not yet on MPI ranks");
       checkWritable(o.output, "-o");
       if (!o.png.empty()) {
         checkWritable(o.png, "--png");
@@ -176,7 +190,6 @@ int runSweep(const SweepOptions& o) {
 
   const long resumed = store.doneCount();
   std::atomic<long> computed{0};
-  ChunkScheduler scheduler(store, threads + remote, static_cast<long>(spec->options->get("chunk")));
   const auto evaluate = [&](long i, const ToolControl& c) {
     SweepRecord r = evaluateSweepPoint(*spec, i, c);
     ++computed;
@@ -194,7 +207,10 @@ int runSweep(const SweepOptions& o) {
     const double elapsed = std::chrono::duration<double>(clock - start).count();
     const long now = done - resumed;
     const double eta = now > 0 ? elapsed / now * (total - done) : NAN;
-    const std::string detail = fmt::format("{}/{} points, ETA {}", done, total, duration(eta));
+    // a refined sweep computes a part of its finest grid, how much is known level by level: no ETA
+    const std::string detail = spec->refine > 0
+                                   ? fmt::format("{} points of the finest grid's {}", done, total)
+                                   : fmt::format("{}/{} points, ETA {}", done, total, duration(eta));
     progress.update(static_cast<double>(done) / total, detail);
     if (!terminal && clock - logged >= std::chrono::seconds(30)) {
       logged = clock;
@@ -205,7 +221,9 @@ int runSweep(const SweepOptions& o) {
   control.stopRequested = [] { return interrupted(); };
   control.progress = [&](double) { report(); };
   double bytesPerPoint = 0;
+  bool complete = false;
   if (remote > 0) {
+    ChunkScheduler scheduler(store, threads + remote, static_cast<long>(spec->options->get("chunk")));
     // this rank computes on its threads while its main thread serves the others
     ToolControl local;
     local.stopRequested = [] { return interrupted(); };
@@ -226,17 +244,21 @@ int runSweep(const SweepOptions& o) {
         traffic.records > 0 ? static_cast<double>(traffic.bytes) / static_cast<double>(traffic.records) : 0;
     computing.join();
     if (failure) std::rethrow_exception(failure);
+    complete = store.doneCount() == spec->points();
   } else {
-    runSweepThreads(store, scheduler, evaluate, threads, control);
+    complete = runSweepLevels(*spec, store, threads, [&](ChunkScheduler& scheduler) {
+      return runSweepThreads(store, scheduler, evaluate, threads, control);
+    });
   }
-  const bool complete = store.doneCount() == spec->points();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (complete) writeResults(*spec, store, o);
   const long failed = store.failedCount();
   fmt::print(
       stderr,
-      "sweep: {} points: {} computed now, {} from the checkpoint, {} failed; {:.3g} s on {} thread{}{}{}\n",
-      spec->points(), computed.load(), resumed, failed, seconds, threads, threads == 1 ? "" : "s",
+      "sweep: {} points{}: {} computed now, {} from the checkpoint, {} failed; {:.3g} s on {} thread{}{}{}\n",
+      spec->points(),
+      spec->refine > 0 ? fmt::format(" on the finest grid ({} levels of refinement)", spec->refine) : "",
+      computed.load(), resumed, failed, seconds, threads, threads == 1 ? "" : "s",
       remote > 0 ? fmt::format(" and {} more rank{}", remote, remote == 1 ? "" : "s") : "",
       bytesPerPoint > 0 ? fmt::format(", {:.0f} bytes sent per point", bytesPerPoint) : "");
   if (!complete) {
@@ -266,6 +288,9 @@ Command addSweepCommand(CLI::App* cmd) {
   cmd->add_option("--size", o->size, "chart size WIDTHxHEIGHT")->capture_default_str();
   cmd->add_option("--threads", o->threads,
                   "computing threads (default: every core; under mpirun, 1 per rank)");
+  cmd->add_option("--window", o->window,
+                  "x0,x1[,y0,y1]: the axes' ranges instead of the sweep file's (a zoom into its chart; the "
+                  "same counts)");
   cmd->add_option("--checkpoint", o->checkpoint,
                   "keep finished points in FILE: a sweep killed and started again goes on from there");
   return {cmd, [o] { return runSweep(*o); }};

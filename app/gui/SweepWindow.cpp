@@ -10,8 +10,10 @@
 #include <QHBoxLayout>
 #include <QMouseEvent>
 #include <QPushButton>
+#include <QRubberBand>
 #include <QTimer>
 #include <cmath>
+#include <fmt/core.h>
 
 namespace rv {
 
@@ -26,9 +28,26 @@ SweepWindow::SweepWindow(JobTree& jobs, SweepSpec spec, QWidget* parent)
   });
   Job& job = jobs_.add(std::make_unique<SweepTask>(std::move(spec)));
   jobId_ = job.id();
+  history_.push_back({spec_, jobId_});
   job.start();
   view()->installEventFilter(this);
   view()->setToolTip("click a cell: open that point's scene in the main window");
+  zoomButton_ = new QPushButton("Zoom", this);
+  zoomButton_->setObjectName("zoom");
+  zoomButton_->setCheckable(true);
+  zoomButton_->setToolTip("then drag a rectangle on the chart: that window is computed at the same number of "
+                          "points (a job of the tool manager)");
+  backButton_ = new QPushButton("Back", this);
+  backButton_->setToolTip("the window before this zoom");
+  forwardButton_ = new QPushButton("Forward", this);
+  forwardButton_->setToolTip("the zoom after this one");
+  connect(backButton_, &QPushButton::clicked, this, [this] { back(); });
+  connect(forwardButton_, &QPushButton::clicked, this, [this] { forward(); });
+  bar()->insertWidget(0, forwardButton_);
+  bar()->insertWidget(0, backButton_);
+  bar()->insertWidget(0, zoomButton_);
+  band_ = new QRubberBand(QRubberBand::Rectangle, view());
+  updateZoomButtons();
   if (spec_.axes.size() == 2) {
     curveButton_ = new QPushButton("Bifurcation curve", this);
     curveButton_->setObjectName("bifurcationCurve");
@@ -46,7 +65,63 @@ SweepWindow::SweepWindow(JobTree& jobs, SweepSpec spec, QWidget* parent)
 
 SweepWindow::~SweepWindow() {
   if (Job* j = curveJob()) jobs_.remove(*j);
-  if (Job* j = job()) jobs_.remove(*j);
+  for (auto it = history_.rbegin(); it != history_.rend(); ++it) // the zooms are children of the first job
+    if (Job* j = jobs_.find(it->jobId)) jobs_.remove(*j);
+}
+
+bool SweepWindow::zoomTo(const std::vector<double>& bounds) {
+  if (zoomButton_) zoomButton_->setChecked(false);
+  try {
+    SweepSpec zoomed = zoomSweep(history_.front().spec, bounds, "zoom");
+    while (history_.size() > at_ + 1) { // a new zoom drops the ones ahead
+      if (Job* j = jobs_.find(history_.back().jobId)) jobs_.remove(*j);
+      history_.pop_back();
+    }
+    Job* parent = jobs_.find(history_.front().jobId);
+    Job& job = jobs_.add(std::make_unique<SweepTask>(zoomed), parent);
+    history_.push_back({std::move(zoomed), job.id()});
+    job.start();
+    showZoom(history_.size() - 1);
+    return true;
+  } catch (const std::exception& e) {
+    setStatus(QString("no zoom: %1").arg(e.what()));
+    return false;
+  }
+}
+
+bool SweepWindow::back() {
+  if (at_ == 0) return false;
+  showZoom(at_ - 1);
+  return true;
+}
+
+bool SweepWindow::forward() {
+  if (at_ + 1 >= history_.size()) return false;
+  showZoom(at_ + 1);
+  return true;
+}
+
+void SweepWindow::showZoom(std::size_t zoom) {
+  at_ = zoom;
+  spec_ = history_[zoom].spec;
+  jobId_ = history_[zoom].jobId;
+  read_.clear(); // the chart is read again from that job's store
+  done_ = -1;
+  generation_ = 0;
+  seen_ = Job::Status::Ready;
+  redraw_ = true;
+  std::string where;
+  for (const auto& a : spec_.axes)
+    where += fmt::format("{}{} in [{:.6g}, {:.6g}]", where.empty() ? "" : ", ", a.id, a.min, a.max);
+  setStatus(QString::fromStdString(zoom == 0 ? "the sweep file's window: " + where
+                                             : "zoom " + std::to_string(zoom) + ": " + where));
+  updateZoomButtons();
+  poll();
+}
+
+void SweepWindow::updateZoomButtons() {
+  backButton_->setEnabled(at_ > 0);
+  forwardButton_->setEnabled(at_ + 1 < history_.size());
 }
 
 Job* SweepWindow::curveJob() const {
@@ -155,6 +230,40 @@ long SweepWindow::pointUnder(const QPointF& position) const {
 }
 
 bool SweepWindow::eventFilter(QObject* watched, QEvent* event) {
+  // Zoom: press, drag (the rubber band shows the window), release
+  const auto chartAt = [this](const QPointF& p, double& x, double& y) {
+    const double dpr = view()->devicePixelRatioF();
+    return chart_ && chart_->toChart(p.x() * dpr, (view()->height() - p.y()) * dpr, x, y);
+  };
+  if (watched == view() && zoomButton_ && zoomButton_->isChecked() && chart_) {
+    auto* e = static_cast<QMouseEvent*>(event);
+    if (event->type() == QEvent::MouseButtonPress && e->button() == Qt::LeftButton) {
+      if (chartAt(e->position(), pressedAt_[0], pressedAt_[1])) {
+        pressed_ = e->position().toPoint();
+        band_->setGeometry(QRect(pressed_, QSize()));
+        band_->show();
+      }
+      return true;
+    }
+    if (event->type() == QEvent::MouseMove && band_->isVisible()) {
+      band_->setGeometry(QRect(pressed_, e->position().toPoint()).normalized());
+      return true;
+    }
+    if (event->type() == QEvent::MouseButtonRelease && band_->isVisible()) {
+      band_->hide();
+      double x = 0, y = 0;
+      if (chartAt(e->position(), x, y) && std::abs(e->position().x() - pressed_.x()) > 3) {
+        std::vector<double> bounds{std::min(x, pressedAt_[0]), std::max(x, pressedAt_[0])};
+        if (spec_.axes.size() == 2) {
+          if (std::abs(e->position().y() - pressed_.y()) <= 3) return true; // a line is no window
+          bounds.push_back(std::min(y, pressedAt_[1]));
+          bounds.push_back(std::max(y, pressedAt_[1]));
+        }
+        zoomTo(bounds);
+      }
+      return true;
+    }
+  }
   if (watched == view() && event->type() == QEvent::MouseButtonPress && chart_) {
     auto* e = static_cast<QMouseEvent*>(event);
     if (e->button() == Qt::LeftButton) {

@@ -2,6 +2,8 @@
 // manager (scenes/SweepTask: progress, stop, continue, restart, delete there) and the window fills in as its
 // points arrive; a click on a cell (or on a point of a one-axis chart) opens that grid point's scene -- its
 // parameters or its initial point -- in the main window: from the chart to the trajectory in one click.
+// "Zoom" and a rectangle dragged on the chart compute that window at the same counts as a child job (its own
+// store), shown in the same window; Back and Forward go through the zooms.
 #pragma once
 #include "app/gui/FilterWindow.h"
 #include "dynamics/jobs/JobTree.h"
@@ -12,6 +14,7 @@
 #include <vector>
 
 class QPushButton;
+class QRubberBand;
 
 namespace rv {
 
@@ -40,6 +43,15 @@ public:
   const std::vector<SweepOverlay>& overlays() const { return overlays_; }
   /// The job following a curve (nullptr when none runs).
   Job* curveJob() const;
+  /// Computes the sweep over `bounds` (min, max of each axis) as a child job and shows it; the zooms after
+  /// the one shown are dropped (as a browser's forward history). False, saying why, when the window is empty.
+  bool zoomTo(const std::vector<double>& bounds);
+  /// Shows the zoom before (Back) or after (Forward) the one shown; false where there is none.
+  bool back();
+  bool forward();
+  /// Which zoom is shown (0: the sweep file's window) and how many there are.
+  std::size_t zoomLevel() const { return at_; }
+  std::size_t zooms() const { return history_.size(); }
 
 signals:
   /// A grid point's scene, to run in the main window.
@@ -53,9 +65,21 @@ protected:
 
 private:
   void poll();
+  void showZoom(std::size_t zoom); // makes history_[zoom] the sweep shown
+  void updateZoomButtons();
+  struct Zoom {
+    SweepSpec spec;
+    int jobId;
+  };
+  std::vector<Zoom> history_; // the sweep file's window first, then each zoom
+  std::size_t at_ = 0;
   SweepSpec spec_;
   JobTree& jobs_;
   int jobId_;
+  QPushButton *zoomButton_ = nullptr, *backButton_ = nullptr, *forwardButton_ = nullptr;
+  QRubberBand* band_ = nullptr;
+  QPoint pressed_;               // where a zoom's drag began (widget coordinates)
+  double pressedAt_[2] = {0, 0}; // and there in chart coordinates
   long done_ = -1;
   Job::Status seen_ = Job::Status::Ready;
   void takeCurve();

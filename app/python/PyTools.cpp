@@ -572,7 +572,6 @@ pyb::object sweep(const std::string& path, int threads, const pyb::object& progr
       if (always || complete) store.remove();
     }
   } cleanup{store, !kept, complete};
-  ChunkScheduler scheduler(store, threads, static_cast<long>(spec.options->get("chunk")));
   // a failure's whole reason for the points this call computes (the store keeps kReasonBytes of it)
   std::mutex reasonsMutex;
   std::map<long, std::string> reasons;
@@ -589,7 +588,9 @@ pyb::object sweep(const std::string& path, int threads, const pyb::object& progr
     runJob(progress, [&](const ToolControl& control) {
       ToolControl c = control;
       c.progress = [&](double) { control.progress(static_cast<double>(store.doneCount()) / spec.points()); };
-      complete = runSweepThreads(store, scheduler, evaluate, threads, c);
+      complete = runSweepLevels(spec, store, threads, [&](ChunkScheduler& scheduler) {
+        return runSweepThreads(store, scheduler, evaluate, threads, c);
+      });
     });
   } catch (pyb::error_already_set& e) {
     if (!e.matches(PyExc_KeyboardInterrupt)) throw;
@@ -600,15 +601,18 @@ pyb::object sweep(const std::string& path, int threads, const pyb::object& progr
   std::vector<std::vector<double>> axes(spec.axes.size()), columns(spec.columns.size());
   std::vector<double> seconds;
   std::vector<std::string> status;
+  // a refined sweep's points not computed take the value of the nearest computed one (status "painted")
+  const std::vector<double> painted = spec.refine > 0 ? sweepGridValues(spec, store) : std::vector<double>{};
   for (long i = 0; i < n; ++i) {
     const auto a = spec.axisValues(i);
     for (std::size_t k = 0; k < axes.size(); ++k)
       axes[k].push_back(a[k]);
     if (!store.done(i)) {
-      for (auto& column : columns)
-        column.push_back(NAN);
+      const bool paint = !painted.empty() && complete;
+      for (std::size_t k = 0; k < columns.size(); ++k)
+        columns[k].push_back(paint ? painted[static_cast<std::size_t>(i) * columns.size() + k] : NAN);
       seconds.push_back(NAN);
-      status.emplace_back("not computed");
+      status.emplace_back(paint ? "painted" : "not computed");
       continue;
     }
     const SweepRecord r = store.read(i);

@@ -9,6 +9,7 @@
 #include <cstring>
 #include <fcntl.h>
 #include <limits>
+#include <stdexcept>
 #include <thread>
 #include <unistd.h>
 
@@ -163,21 +164,26 @@ void SweepStore::remove() {
   std::remove(path_.c_str());
 }
 
-ChunkScheduler::ChunkScheduler(const SweepStore& store, int workers, long maxChunk)
-    : store_(store), left_(store.points() - store.doneCount()), workers_(std::max(1, workers)),
-      maxChunk_(maxChunk > 0 ? maxChunk : 256) {}
+ChunkScheduler::ChunkScheduler(const SweepStore& store, int workers, long maxChunk, std::vector<char> wanted)
+    : store_(store), wanted_(std::move(wanted)), left_(0), workers_(std::max(1, workers)),
+      maxChunk_(maxChunk > 0 ? maxChunk : 256) {
+  if (!wanted_.empty() && wanted_.size() != static_cast<std::size_t>(store.points()))
+    throw std::logic_error("ChunkScheduler: one wanted flag per point");
+  for (long i = 0; i < store.points(); ++i)
+    left_ += handsOut(i) ? 1 : 0;
+}
 
 std::optional<std::pair<long, long>> ChunkScheduler::next() {
   const std::lock_guard lock(mutex_);
   if (stopped_) return std::nullopt;
-  while (cursor_ < store_.points() && store_.done(cursor_))
+  while (cursor_ < store_.points() && !handsOut(cursor_))
     ++cursor_;
   if (cursor_ >= store_.points()) return std::nullopt;
   // a quarter of each worker's share of what is left: big chunks first, single points at the end
   const long want = std::clamp(left_ / (4L * workers_), 1L, maxChunk_);
   const long begin = cursor_;
   long end = begin, taken = 0;
-  while (end < store_.points() && taken < want && !store_.done(end)) { // a chunk stops at a resumed point
+  while (end < store_.points() && taken < want && handsOut(end)) { // a chunk stops at a point not handed out
     ++end;
     ++taken;
   }
@@ -234,7 +240,7 @@ bool runSweepThreads(SweepStore& store, ChunkScheduler& scheduler,
   for (auto& t : pool)
     t.join();
   if (failure) std::rethrow_exception(failure);
-  return store.doneCount() >= store.points();
+  return !stop.load(); // everything handed out was computed (a level of a refined sweep: not every point)
 }
 
 void packRecord(std::vector<char>& out, long index, const SweepRecord& r) {

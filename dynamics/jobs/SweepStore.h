@@ -76,15 +76,20 @@ private:
 /// Hands out the points without a record in chunks [begin, end) of consecutive indices.
 class ChunkScheduler {
 public:
-  /// `workers`: how many ask at once; `maxChunk` bounds a chunk (0: automatic).
-  ChunkScheduler(const SweepStore& store, int workers, long maxChunk = 0);
+  /// `workers`: how many ask at once; `maxChunk` bounds a chunk (0: automatic). `wanted` (one flag per point;
+  /// empty: all) limits it to some points: a level of a refined sweep.
+  ChunkScheduler(const SweepStore& store, int workers, long maxChunk = 0, std::vector<char> wanted = {});
   /// The next chunk to compute, or nothing when every point is handed out (or after stop()).
   std::optional<std::pair<long, long>> next();
   /// Hands out nothing more.
   void stop();
 
 private:
+  bool handsOut(long index) const {
+    return !store_.done(index) && (wanted_.empty() || wanted_[static_cast<std::size_t>(index)]);
+  }
   const SweepStore& store_;
+  std::vector<char> wanted_;
   std::mutex mutex_;
   long cursor_ = 0, left_;
   int workers_;
@@ -95,7 +100,7 @@ private:
 /// Computes every point the scheduler hands out on `threads` threads: `evaluate(index, control)` never
 /// throws (a failure is a record with ok = false), its record is written to the store. `control` stops it
 /// (points in progress are finished or dropped, never half-written); its progress is the fraction of all
-/// points done. Returns whether every point has a record.
+/// points done. Returns whether every point the scheduler hands out has a record (false: stopped).
 bool runSweepThreads(SweepStore& store, ChunkScheduler& scheduler,
                      const std::function<SweepRecord(long, const ToolControl&)>& evaluate, int threads,
                      const ToolControl& control);

@@ -487,6 +487,24 @@ const ParameterTable& sweepOptionsTable() {
        .max = 1e9,
        .description = "the most points handed to a thread or rank at once (0: automatic)",
        .integer = true},
+      {.id = "refine",
+       .label = "Refinement levels",
+       .defaultValue = 0,
+       .min = 0,
+       .max = 8,
+       .description =
+           "detail where regimes meet: after the grid, this many times halve the cells whose corners "
+           "differ (each axis' count becomes (count - 1) 2^levels + 1 at the finest level)",
+       .integer = true},
+      {.id = "refine_threshold",
+       .label = "Refinement threshold",
+       .defaultValue = 0.05,
+       .min = 0,
+       .max = 1e300,
+       .description =
+           "refine: a cell is halved when two corners differ by more than this fraction of the "
+           "quantity's range on the grid (any change of a categorical quantity, or a failed corner "
+           "beside a computed one)"},
   };
   return t;
 }

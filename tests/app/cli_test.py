@@ -91,6 +91,11 @@ class Cli(unittest.TestCase):
                 "--columns", "t,x,y,z")
         self.assertEqual(r.returncode, 0, r.stderr)
         self.assertEqual(len(r.stdout.split()), 4)
+        # without --columns: every observable of the problem (Lorenz has no energy: the old default t,E failed)
+        r = run("integrate", os.path.join(SRC, "scenes", "lorenz.json"), "--time", "1", "--every", "0.5")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertEqual(r.stdout.split()[0], "t,x,y,z")
+        self.assertEqual(len(r.stdout.split()), 4)
 
     def test_bad_input_exits_2_naming_the_culprit_and_leaves_no_file(self):
         keep = self.path("keep.csv")
@@ -971,12 +976,62 @@ class Cli(unittest.TestCase):
                 a["count"] = 2
             if "options" in doc and "orbit_points" in doc["options"]:
                 doc["options"]["orbit_points"] = 5
+            doc.get("options", {}).pop("refine", None)  # a row per grid point (refinement: its own test)
             out = self.path(name + ".csv")
             r = run("sweep", self.sweep_file(name, doc), "-o", out, "--png", self.path(name + ".png"))
             self.assertEqual(r.returncode, 0, name + ": " + r.stderr)
             self.assertEqual(len(list(csv.reader(open(out)))), 1 + 2 ** len(doc["axes"]), name)
             self.assertTrue(varied(pixels(self.path(name + ".png"))[1]), name)
         self.assertEqual([f for f in os.listdir(self.dir) if "sweep-part" in f], [], "a temporary store was left")
+
+    def test_sweep_window_and_refinement(self):
+        henon = os.path.join(SRC, "scenes", "henon_map.json")
+        base = {"scene": henon, "quantity": "observable.x", "options": {"time": 40},
+                "axes": [{"id": "map.0", "min": -2.5, "max": 2.5, "count": 9},
+                         {"id": "map.1", "min": -2.5, "max": 2.5, "count": 9}]}
+        # --window: the same counts over another window, equal to a sweep file with those axes
+        zoom = json.loads(json.dumps(base))
+        zoom["axes"][0].update(min=-1, max=0.5)
+        zoom["axes"][1].update(min=0, max=1)
+        a, b = self.path("window.csv"), self.path("file.csv")
+        r = run("sweep", self.sweep_file("base.json", base), "-o", a, "--window", "-1,0.5,0,1")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        r = run("sweep", self.sweep_file("zoom.json", zoom), "-o", b)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertEqual(self.sweep_values(a), self.sweep_values(b))
+        self.assertEqual(len(self.sweep_values(a)), 82)
+        for bad in ("-1,0.5", "1,0,0,1", "a,b,c,d"):
+            self.assertBadInput(run("sweep", self.sweep_file("base.json", base), "-o", a, "--window", bad),
+                                "--window")
+        # refine: the grid, then the cells where the regimes meet (escape / bounded), to 4x the resolution; the
+        # CSV has the points computed, each a plain sweep's value there
+        refined = json.loads(json.dumps(base))
+        refined["options"]["refine"] = 2
+        fine = json.loads(json.dumps(base))
+        for axis in fine["axes"]:
+            axis["count"] = 33
+        rf, ff = self.sweep_file("refined.json", refined), self.sweep_file("fine.json", fine)
+        rc, fc, png, vti = self.path("refined.csv"), self.path("fine.csv"), self.path("refined.png"), \
+            self.path("refined.vti")
+        r = run("sweep", rf, "-o", rc, "--png", png)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("levels of refinement", r.stderr)
+        self.assertEqual(run("sweep", ff, "-o", fc).returncode, 0)
+        rows, every = self.sweep_values(rc), {tuple(row[:2]): row for row in self.sweep_values(fc)[1:]}
+        self.assertEqual(rows[0], ["map.0", "map.1", "observable.x", "status"])
+        self.assertGreater(len(rows) - 1, 81)
+        self.assertLess(len(rows) - 1, 33 * 33 * 3 // 4)
+        for row in rows[1:]:
+            self.assertEqual(row, every[tuple(row[:2])])
+        self.assertTrue(varied(pixels(png)[1]))
+        # the chart from the refined CSV is the sweep's own picture; .vti holds the finest grid
+        again = self.path("again.png")
+        r = run("chart", rf, "--view", "sweep", "--csv", rc, "--size", "900x700", "-o", again)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertEqual(pixels(again)[1], pixels(png)[1])
+        r = run("sweep", rf, "-o", vti)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn('WholeExtent="0 32 0 32 0 0"', open(vti, errors="replace").read())
 
     def test_gui_without_a_display_says_so(self):
         r = run("gui", SCENE, env={"WAYLAND_DISPLAY": ""})

@@ -23,6 +23,7 @@
 #include "scenes/BuiltinTools.h"
 #include "scenes/ModelFile.h"
 #include "scenes/SceneLoader.h"
+#include "scenes/SweepTask.h"
 #include "scenes/ToolRunner.h"
 #include <vtkGenericOpenGLRenderWindow.h>
 
@@ -408,11 +409,49 @@ private slots:
     QCOMPARE(point.size(), std::size_t(2));
     QCOMPARE(point[0].get<double>(), w->spec().axisValues(13)[0]);
     QCOMPARE(point[1].get<double>(), w->spec().axisValues(13)[1]);
-    // the job is the window's: another scene leaves it, closing the window deletes it
-    const int id = job->id();
+
+    // Zoom and a rectangle dragged from grid point 6 to grid point 18: that window, a child job, at the same
+    // counts; its points are a fresh sweep's over the window
+    auto* zoom = w->findChild<QPushButton*>("zoom");
+    QVERIFY(zoom);
+    zoom->click();
+    const QPoint from = pixelOver(*w, 6), to = pixelOver(*w, 18);
+    QVERIFY(from.x() >= 0 && to.x() >= 0);
+    QTest::mousePress(w->view(), Qt::LeftButton, {}, from);
+    QTest::mouseMove(w->view(), to);
+    QTest::mouseRelease(w->view(), Qt::LeftButton, {}, to);
+    QCOMPARE(w->zooms(), std::size_t(2));
+    QCOMPARE(w->zoomLevel(), std::size_t(1));
+    QVERIFY(!zoom->isChecked());
+    Job* zoomed = w->job();
+    QVERIFY(zoomed && zoomed != job && zoomed->parent() == job);
+    const SweepSpec& z = w->spec();
+    QCOMPARE(z.axes[0].count, 5);
+    QCOMPARE(z.axes[1].count, 4);
+    QVERIFY(z.axes[0].min > -0.2 && z.axes[0].max < 0.2 && z.axes[0].min < z.axes[0].max);
+    QTRY_VERIFY_WITH_TIMEOUT(zoomed->status() == Job::Status::Finished, 60000);
+    QTRY_COMPARE_WITH_TIMEOUT(w->done(), 20L, 5000);
+    const auto& store = static_cast<const SweepTask&>(zoomed->task()).store();
+    for (long i : {0L, 7L, 19L})
+      QCOMPARE(
+          store.read(i).values,
+          evaluateSweepPoint(zoomSweep(loadSweep(path.toStdString()),
+                                       {z.axes[0].min, z.axes[0].max, z.axes[1].min, z.axes[1].max}, "test"),
+                             i, {})
+              .values);
+    QVERIFY(w->back());
+    QCOMPARE(w->spec().axes[0].min, -0.2);
+    QCOMPARE(w->job(), job);
+    QVERIFY(!w->back());
+    QVERIFY(w->forward());
+    QCOMPARE(w->job(), zoomed);
+    QVERIFY(w->back());
+    // the jobs are the window's: another scene leaves them, closing the window deletes them (zooms too)
+    const int id = job->id(), zoomId = zoomed->id();
     QVERIFY(window_->mapPanel()->jobs().find(id));
     w->close();
     QTRY_VERIFY(!window_->mapPanel()->jobs().find(id));
+    QVERIFY(!window_->mapPanel()->jobs().find(zoomId));
     QVERIFY(window_->openScene(QString::fromStdString(defaultScenePath("chaplygin_ball"))));
   }
 

@@ -179,6 +179,27 @@ def test_a_sweep_defined_in_python_equals_the_sweep_file(tmp_path):
         rollviz.sweep(s, axes={"a": [1.0, 1.1, 1.4]}, quantity="lyapunov.max")
 
 
+def test_a_refined_sweep_gives_the_finest_grid_each_computed_point_a_plain_sweeps(tmp_path):
+    """options={"refine": 2}: the Henon map's basin (escape: failed) at 4x the resolution along its boundary; the
+    grid is the finest one, the points computed equal a plain sweep's there, the others painted"""
+    s = rollviz.Scene.load(scene_path("henon_map.json"))
+    axes = {"map.0": (-2.5, 2.5, 9), "map.1": (-2.5, 2.5, 9)}
+    r = rollviz.sweep(s, axes=axes, quantity="observable.x", threads=2,
+                      options={"time": 40, "refine": 2, "refine_threshold": 10})
+    assert r.shape == [33, 33] and r.complete
+    fine = rollviz.sweep(s, axes={k: (a, b, 33) for k, (a, b, _) in axes.items()}, quantity="observable.x",
+                         threads=2, options={"time": 40})
+    computed = [i for i, st in enumerate(r.status) if st != "painted"]
+    assert 81 < len(computed) < 33 * 33 // 2
+    assert "painted" in r.status
+    x, y = r.columns["observable.x"], fine.columns["observable.x"]
+    for i in computed:
+        assert r.status[i] == fine.status[i]
+        assert (np.isnan(x[i]) and np.isnan(y[i])) or x[i] == y[i]
+    with pytest.raises(TypeError, match="options takes a dict"):
+        rollviz.sweep(s, axes=axes, quantity="observable.x", options=2)
+
+
 def test_media_calls_refuse_what_they_cannot_write(tmp_path):
     s = rollviz.Scene.load(scene_path("chaplygin_ball.json"))
     with pytest.raises(ValueError, match=r"encoder 'h265' is not supported \(supported: libx264, mpeg4\)"):

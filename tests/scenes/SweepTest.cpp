@@ -7,6 +7,7 @@
 #include "scenes/SceneLoader.h"
 
 #include <Eigen/Eigenvalues>
+#include <atomic>
 #include <cmath>
 #include <gtest/gtest.h>
 
@@ -226,6 +227,93 @@ TEST(Sweep, AFailedPointSaysWhyAndTheRestGoOn) {
   EXPECT_NE(outside.reason.find("no state"), std::string::npos) << outside.reason;
   EXPECT_TRUE(std::isnan(outside.values[0]));
   EXPECT_NE(sweepCsvRow(s, 1, outside).find(",\"failed: "), std::string::npos);
+}
+
+TEST(Sweep, PointLevelsOfARefinedGrid) {
+  const SweepSpec s = sweepFromJson(sweep("henon_map", json::array({axis("map.0", -1, 1, 3)}), "observable.x",
+                                          json::object(), {{"refine", 2}, {"time", 5}}),
+                                    "sw.json");
+  ASSERT_EQ(s.points(), 9); // (3 - 1) 2^2 + 1: the finest grid
+  EXPECT_EQ(s.axisValues(4), (std::vector<double>{0.0}));
+  const std::vector<int> levels{0, 2, 1, 2, 0, 2, 1, 2, 0};
+  for (long i = 0; i < 9; ++i)
+    EXPECT_EQ(sweepPointLevel(s, i), levels[static_cast<std::size_t>(i)]) << i;
+  json bad =
+      sweep("henon_map", json::array({axis("map.0", -1, 1, 3)}), "orbit", json::object(), {{"refine", 1}});
+  EXPECT_NE(errorOf(bad).find("sw.json:options.refine:"), std::string::npos) << errorOf(bad);
+}
+
+// Runs a sweep level after level on a store in `path`; `stopAfter` points (0: never) stops it there.
+bool runRefined(const SweepSpec& s, SweepStore& store, long stopAfter = 0) {
+  std::atomic<long> evaluated{0};
+  ToolControl control;
+  control.stopRequested = [&] { return stopAfter > 0 && evaluated.load() >= stopAfter; };
+  control.progress = [](double) {};
+  return runSweepLevels(s, store, 2, [&](ChunkScheduler& scheduler) {
+    return runSweepThreads(
+        store, scheduler,
+        [&](long i, const ToolControl& c) {
+          ++evaluated;
+          return evaluateSweepPoint(s, i, c);
+        },
+        2, control);
+  });
+}
+
+// The Henon map's basin of attraction over the initial point: orbits that escape fail (their state stops
+// being finite), the others end on the attractor -- a sharp boundary between regimes.
+TEST(Sweep, RefinementComputesTheBoundaryAtTheFineResolutionAndEachPointAsADirectRun) {
+  const auto file = [](int count, int levels) {
+    return sweepFromJson(
+        sweep("henon_map", json::array({axis("map.0", -2.5, 2.5, count), axis("map.1", -2.5, 2.5, count)}),
+              "observable.x", json::object(), {{"refine", levels}, {"time", 40}}),
+        "sw.json");
+  };
+  const SweepSpec refined = file(9, 2), fine = file(33, 0);
+  ASSERT_EQ(refined.points(), fine.points());
+  const std::string dir = ::testing::TempDir();
+  SweepStore store(dir + "/refined.store", refined.resolved.dump(), refined.points(),
+                   static_cast<int>(refined.columns.size()), "test");
+  ASSERT_TRUE(runRefined(refined, store));
+  long computed = 0, failed = 0;
+  for (long i = 0; i < refined.points(); ++i) {
+    if (!store.done(i)) continue;
+    ++computed;
+    const SweepRecord r = store.read(i), direct = evaluateSweepPoint(fine, i, {});
+    failed += r.ok ? 0 : 1;
+    ASSERT_EQ(r.ok, direct.ok) << i;
+    if (r.ok) {
+      EXPECT_EQ(r.values, direct.values) << "point " << i << ": a refined cell is a direct run there";
+    }
+  }
+  // both regimes are there, and refinement computed far fewer points than the fine grid
+  EXPECT_GT(failed, 0);
+  EXPECT_LT(failed, computed);
+  EXPECT_GT(computed, 81);
+  EXPECT_LT(computed, fine.points() * 3 / 4) << computed << " of " << fine.points();
+
+  // the painted grid has the fine grid's regimes almost everywhere (escape or not), where a plain sweep at
+  // the coarse resolution misses the boundary's detail
+  const std::vector<double> painted = sweepGridValues(refined, store);
+  long agree = 0;
+  for (long i = 0; i < fine.points(); ++i)
+    agree += std::isnan(painted[static_cast<std::size_t>(i)]) == !evaluateSweepPoint(fine, i, {}).ok ? 1 : 0;
+  EXPECT_GT(agree, fine.points() * 97 / 100) << agree << " of " << fine.points();
+
+  // stopped part way and run again on its store: the same points, the same values
+  SweepStore resumed(dir + "/resumed.store", refined.resolved.dump(), refined.points(),
+                     static_cast<int>(refined.columns.size()), "test");
+  EXPECT_FALSE(runRefined(refined, resumed, 120));
+  EXPECT_LT(resumed.doneCount(), computed);
+  ASSERT_TRUE(runRefined(refined, resumed));
+  for (long i = 0; i < refined.points(); ++i) {
+    ASSERT_EQ(resumed.done(i), store.done(i)) << i;
+    if (store.done(i) && store.read(i).ok) {
+      EXPECT_EQ(resumed.read(i).values, store.read(i).values) << i;
+    }
+  }
+  store.remove();
+  resumed.remove();
 }
 
 } // namespace
