@@ -154,11 +154,6 @@ int runSweep(const SweepOptions& o) {
       if (!o.png.empty()) {
         checkWritable(o.png, "--png");
         (void)parseSize(o.size);
-        // said before the sweep runs, not after: a 2-D chart is a picture of cells (render/export/Figure.h)
-        if (spec->axes.size() == 2 && figureFormat(o.png, "--png") != FigureFormat::Png)
-          throw InputError(
-              "--png " + o.png +
-              ": a sweep over two axes is drawn as a picture of cells: write its chart as PNG (.png)");
       }
       resolved = spec->resolved.dump();
       const std::string storePath =

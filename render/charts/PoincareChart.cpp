@@ -1,6 +1,7 @@
 #include "render/charts/PoincareChart.h"
 
 #include "render/charts/RasterPointsPlot.h"
+#include "render/charts/VectorPictures.h"
 
 #include <algorithm>
 #include <cmath>
@@ -34,10 +35,10 @@ namespace rv {
 namespace {
 // A heat map's colour bar: the chart's colour legend kept just right of the plot area (the chart lays out
 // the plot area at each paint; vtkChartHistogram2D does the same for its own legend).
-class ColourBar final : public vtkColorLegend {
+class ColourBar final : public VectorColorLegend {
 public:
   static ColourBar* New();
-  vtkTypeMacro(ColourBar, vtkColorLegend);
+  vtkTypeMacro(ColourBar, VectorColorLegend);
   vtkChartXY* owner = nullptr; ///< the chart it stands beside (which owns it)
   ColourBar() { Axis->GetLabelProperties()->SetFontSize(12); }
   bool Paint(vtkContext2D* painter) override {
@@ -48,7 +49,7 @@ public:
                            static_cast<float>(p2[1] - p1[1])));
     }
     Update(); // the bar's picture of the colours (nothing calls it for an item added to a chart)
-    return vtkColorLegend::Paint(painter);
+    return VectorColorLegend::Paint(painter);
   }
 };
 vtkStandardNewMacro(ColourBar);
@@ -239,7 +240,7 @@ void PoincareChart::addImage(int nx, int ny, double x0, double dx, double y0, do
   colors->AddRGBPoint(hi, high[0], high[1], high[2]);
   colors->SetNanColor(1, 1, 1);
   colors->SetNanOpacity(0);
-  vtkNew<vtkPlotHistogram2D> plot;
+  vtkNew<CellsPlot> plot; // its cells reach vector figures
   plot->SetInputData(image);
   plot->SetTransferFunction(colors);
   plot->SetLegendVisibility(false);

@@ -1,6 +1,7 @@
 #include "render/charts/SweepChart.h"
 
 #include "render/charts/PoincareChart.h"
+#include "render/charts/VectorPictures.h"
 
 #include <algorithm>
 #include <cmath>
@@ -36,7 +37,7 @@ public:
   explicit HeatMapChart(const SweepChartData& d) : data_(d) {
     view_ = vtkSmartPointer<vtkContextView>::New();
     view_->GetRenderer()->SetBackground(1, 1, 1);
-    chart_ = vtkSmartPointer<vtkChartHistogram2D>::New();
+    chart_ = vtkSmartPointer<CellsChart>::New(); // its cells and colour bar reach vector figures
     view_->GetScene()->AddItem(chart_);
     const int nx = d.counts[0], ny = d.counts[1];
     const std::size_t stride = std::max<std::size_t>(1, d.columns.size());

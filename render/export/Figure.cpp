@@ -6,16 +6,9 @@
 
 #include <filesystem>
 #include <mutex>
-#include <vtkAbstractContextItem.h>
-#include <vtkContextActor.h>
-#include <vtkContextScene.h>
 #include <vtkGL2PSExporter.h>
 #include <vtkNew.h>
-#include <vtkPlotHistogram2D.h>
-#include <vtkPropCollection.h>
 #include <vtkRenderWindow.h>
-#include <vtkRenderer.h>
-#include <vtkRendererCollection.h>
 
 // The factories of VTK's GL2PS modules (their classes are abstract without them). Registered by hand, once,
 // rather than by listing the modules in VTK's autoinit: that would change every target's flags.
@@ -23,33 +16,6 @@ void vtkRenderingGL2PSOpenGL2_AutoInit_Construct();
 void vtkIOExportGL2PS_AutoInit_Construct();
 
 namespace rv {
-
-namespace {
-
-bool holdsAPicturePlot(vtkAbstractContextItem* item) {
-  if (vtkPlotHistogram2D::SafeDownCast(item)) return true;
-  for (vtkIdType i = 0; i < item->GetNumberOfItems(); ++i)
-    if (holdsAPicturePlot(item->GetItem(i))) return true;
-  return false;
-}
-
-/// Whether a chart of the window is drawn as a picture (a 2-D sweep's or a coloured map's cells): GL2PS
-/// cannot carry it into a vector figure, which would come out with an empty plot.
-bool drawsAPicture(vtkRenderWindow* window) {
-  auto* renderers = window->GetRenderers();
-  renderers->InitTraversal();
-  while (vtkRenderer* r = renderers->GetNextItem()) {
-    vtkCollectionSimpleIterator it;
-    r->GetViewProps()->InitTraversal(it);
-    while (vtkProp* p = r->GetViewProps()->GetNextProp(it))
-      if (auto* actor = vtkContextActor::SafeDownCast(p); actor && actor->GetScene())
-        for (unsigned i = 0; i < actor->GetScene()->GetNumberOfItems(); ++i)
-          if (holdsAPicturePlot(actor->GetScene()->GetItem(i))) return true;
-  }
-  return false;
-}
-
-} // namespace
 
 const std::vector<std::string>& figureExtensions() {
   static const std::vector<std::string> extensions{".png", ".svg", ".pdf"};
@@ -80,11 +46,6 @@ void writeFigure(vtkRenderWindow* window, const std::string& path, const std::st
     vtkRenderingGL2PSOpenGL2_AutoInit_Construct();
     vtkIOExportGL2PS_AutoInit_Construct();
   });
-  if (drawsAPicture(window))
-    throw InputError(
-        what + " " + path +
-        ": this chart is drawn as a picture of cells (a 2-D sweep, a coloured map): write it as PNG "
-        "(.png); SVG and PDF would come out without it");
   AtomicFile file(path, what);
   window->Render(); // lays the chart out at the window's size
   vtkSmartPointer<vtkGL2PSExporter> exporter =

@@ -23,9 +23,9 @@ FigureFormat figureFormat(const std::string& path, const std::string& what);
 /// Writes the chart shown in `window` to `path` in the format its extension names, through a temporary name.
 /// `options` apply to PNG (a scale, a transparent background); a vector figure has the window's size. The
 /// window's GL context must be current (headless windows are; a GUI widget makes its own current first).
-/// InputError naming `what` for an unsupported extension, a path that cannot be written, or a vector format
-/// for a chart drawn as a picture of cells (a 2-D sweep: GL2PS cannot carry it); ComputationError when
-/// writing fails.
+/// InputError naming `what` for an unsupported extension or a path that cannot be written; ComputationError
+/// when writing fails. The pictures inside charts (cells, colour bars) go into vector figures as rectangles
+/// (render/charts/VectorPictures.h).
 void writeFigure(vtkRenderWindow* window, const std::string& path, const std::string& what = "-o",
                  const SnapshotOptions& options = {});
 

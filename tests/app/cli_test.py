@@ -271,15 +271,34 @@ class Cli(unittest.TestCase):
                 (["poincare", hh, "--points", "3"], "p.dat", ".csv, .vtp")):
             self.assertBadInput(run(*cmd, "-o", self.path(name)), name, supported)
             self.assertFalse(os.path.exists(self.path(name)), name)
-        # a chart drawn as a picture of cells (a sweep over two axes) is PNG only: said before the sweep runs
+        # a chart of cells (a sweep over two axes): its cells and colour bar go into SVG and PDF as rectangles
+        # (one per run of a colour along a row), and the figures draw the PNG's picture
         sweep = self.path("two.json")
         with open(sweep, "w") as f:
             json.dump({"scene": os.path.join(SRC, "scenes", "henon_map.json"), "quantity": "lyapunov.max",
-                       "axes": [{"id": "a", "min": 1.0, "max": 1.4, "count": 2},
-                                {"id": "b", "min": 0.2, "max": 0.3, "count": 2}]}, f)
-        self.assertBadInput(run("sweep", sweep, "-o", self.path("two.csv"), "--png", self.path("two.svg")),
-                            "two.svg", "picture of cells", ".png")
-        self.assertFalse(os.path.exists(self.path("two.csv")) or os.path.exists(self.path("two.svg")))
+                       "axes": [{"id": "a", "min": 1.0, "max": 1.4, "count": 20},
+                                {"id": "b", "min": 0.2, "max": 0.3, "count": 15}]}, f)
+        two = {e: self.path("two." + e) for e in ("png", "svg", "pdf")}
+        r = run("sweep", sweep, "-o", self.path("two.csv"), "--png", two["svg"], "--size", "640x480")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        for e in ("png", "pdf"):
+            r = run("chart", sweep, "--view", "sweep", "--csv", self.path("two.csv"), "--size", "640x480", "-o", two[e])
+            self.assertEqual(r.returncode, 0, r.stderr)
+        rects = [e for e in ET.parse(two["svg"]).getroot().iter() if e.tag.endswith(("path", "polygon", "rect"))]
+        self.assertGreater(len(rects), 300 // 4, "the cells are shapes in the SVG")
+        subprocess.run(["pdftoppm", "-png", "-r", "72", "-singlefile", two["pdf"], self.path("two_pdf")], check=True)
+        subprocess.run(["rsvg-convert", "-b", "white", "-w", "640", "-h", "480", two["svg"], "-o",
+                        self.path("two_svg.png")], check=True)
+        _, a = pixels(two["png"])
+        for name in ("two_pdf.png", "two_svg.png"):
+            size2, b = pixels(self.path(name))
+            self.assertEqual(size2, (640, 480), name)
+            # the plot's cells: coloured (not grey, not white) pixels where the PNG has them
+            coloured = lambda px: [abs(p[0] - p[2]) > 40 or abs(p[1] - p[2]) > 40 for p in px]
+            ca, cb = coloured(a), coloured(b)
+            self.assertGreater(sum(ca), 0.3 * len(ca))
+            same = sum(x == y for x, y in zip(ca, cb))
+            self.assertGreater(same, 0.95 * len(ca), name + ": the cells are not where the PNG has them")
 
     def test_a_video_frame_shows_the_state_at_its_time(self):
         # frame k of a video is the state at t = k * speed / fps: frame 15 at 10 fps matches a still at t = 1.5

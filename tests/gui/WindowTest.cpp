@@ -397,6 +397,14 @@ private slots:
     QTest::qWait(300);
     QVERIFY(keep(w->grab().toImage(), "window_sweep.png"));
     QVERIFY(varied(w->view()->grabFramebuffer()));
+    // Save figure as vectors: the cells as shapes (a PDF of a picture would be a single image)
+    for (const char* name : {"sweep.svg", "sweep.pdf"}) {
+      QVERIFY2(w->saveFigure(dir_.filePath(name)), name);
+      QVERIFY(QFileInfo(dir_.filePath(name)).size() > 1000);
+    }
+    QFile svg(dir_.filePath("sweep.svg"));
+    QVERIFY(svg.open(QIODevice::ReadOnly));
+    QVERIFY(svg.readAll().count("<polygon") >= 20); // two triangles a run of cells: at least one run a row
     // the position of grid point 13 = (map.0, map.1) = (0.1, 0.0667)
     const QPoint at = pixelOver(*w, 13);
     QVERIFY2(at.x() >= 0, "no pixel over grid point 13");
