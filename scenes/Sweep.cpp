@@ -1,7 +1,9 @@
 #include "scenes/Sweep.h"
 
 #include "dynamics/core/Errors.h"
+#include "dynamics/core/Lanes.h"
 #include "dynamics/tools/FixedPoint.h"
+#include "dynamics/tools/MegnoLanes.h"
 #include "dynamics/tools/ToolRegistry.h"
 #include "dynamics/tools/ToolSettings.h"
 #include "scenes/JsonFields.h"
@@ -81,6 +83,45 @@ std::string typeCodes() {
   for (int k = 0; k <= static_cast<int>(FixedPointType::Unstable); ++k)
     codes += fmt::format("{}{} {}", k ? ", " : "", k, toString(static_cast<FixedPointType>(k)));
   return codes;
+}
+
+// MEGNO's number `name` (an output of the megno tool) at several points at once
+// (dynamics/tools/MegnoLanes.h): the points go together when they differ only in their initial state, on a
+// flow whose model has a lane kernel, integrated with rk4 -- where each lane is the scalar run bit for bit,
+// so a point's value cannot depend on the points beside it, and a sweep stays the same file on any threads,
+// ranks and resumption. (Everhart's corrector stops when every lane has converged, adams starts adaptively:
+// on lanes a point would take its neighbours' iterations.)
+auto megnoOnLanesQuantity(const std::string& name) {
+  return [name](const SweepSpec&, const std::vector<Scene>& scenes,
+                const ToolControl& control) -> std::optional<std::vector<LaneValues>> {
+    const Scene& first = scenes.front();
+    if (!megnoRunsOnLanes(*first.model)) return std::nullopt;
+    const RunSpec run = first.runSpec();
+    if (run.integrator->id != "rk4") return std::nullopt;
+    json common = first.document;
+    common.erase("initial");
+    std::vector<Eigen::VectorXd> starts;
+    for (const Scene& s : scenes) {
+      json doc = s.document;
+      doc.erase("initial");
+      if (doc != common) return std::nullopt;
+      starts.push_back(s.initialState);
+    }
+    const auto results = megnoOnLanes(
+        *first.model, [&] { return run.makeIntegrator(*first.model); }, starts, first.megno, control);
+    if (results.empty()) throw Stopped{};
+    std::vector<LaneValues> values;
+    for (const auto& r : results) {
+      const MegnoEstimate& e = r.last;
+      const double v = name == "megno"        ? e.megno
+                       : name == "megno_rate" ? e.megnoRate
+                       : name == "y"          ? e.y
+                       : name == "fli"        ? e.fli
+                                              : e.time;
+      values.push_back({{v}, r.failure});
+    }
+    return values;
+  };
 }
 
 std::vector<SweepQuantity> makeQuantities() {
@@ -224,6 +265,7 @@ std::vector<SweepQuantity> makeQuantities() {
                        throw ComputationError(tool.id + " gave no number for " + name + ": " + v.dump());
                      return std::vector<double>{v.get<double>()};
                    }});
+      if (tool.id == "megno") q.back().evaluateLanes = megnoOnLanesQuantity(out.name);
     }
   }
   return q;
@@ -419,6 +461,7 @@ SweepSpec sweepFromJson(json doc, const std::string& source) {
     }
     spec.axes.push_back(axis);
   }
+  spec.lanes = static_cast<int>(options->get("lanes"));
   // refinement: the axes become the finest grid, of which the file's grid is level 0
   spec.refine = static_cast<int>(options->get("refine"));
   spec.refineThreshold = options->get("refine_threshold");
@@ -496,6 +539,81 @@ SweepRecord evaluateSweepPoint(const SweepSpec& spec, long index, const ToolCont
   if (!r.ok) r.values.assign(spec.columns.size(), kNaN);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
+}
+
+int sweepBatch(const SweepSpec& spec) {
+  return spec.lanes == 0 && spec.quantity->evaluateLanes ? kLanes : 1;
+}
+
+std::vector<SweepRecord> evaluateSweepPoints(const SweepSpec& spec, const std::vector<long>& indices,
+                                             const ToolControl& control) {
+  std::vector<SweepRecord> records(indices.size());
+  if (sweepBatch(spec) == 1 || indices.size() < 2) {
+    for (std::size_t k = 0; k < indices.size(); ++k)
+      records[k] = evaluateSweepPoint(spec, indices[k], control);
+    return records;
+  }
+  const auto start = std::chrono::steady_clock::now();
+  // the points' scenes; one that has none is that point's failure, evaluated (and failing) alone
+  std::vector<Scene> scenes;
+  std::vector<std::size_t> batched;
+  for (std::size_t k = 0; k < indices.size(); ++k) {
+    try {
+      scenes.push_back(sweepPointScene(spec, indices[k]));
+      batched.push_back(k);
+    } catch (const std::exception&) {
+      records[k] = evaluateSweepPoint(spec, indices[k], control);
+    }
+  }
+  std::optional<std::vector<LaneValues>> lanes;
+  try {
+    if (!scenes.empty()) lanes = spec.quantity->evaluateLanes(spec, scenes, control);
+  } catch (const Stopped&) {
+    for (std::size_t k : batched)
+      records[k] = {std::vector<double>(spec.columns.size(), kNaN), 0, false, "stopped"};
+    return records;
+  } catch (const std::exception&) { // bad settings: each point says so, as alone
+    lanes.reset();
+  }
+  if (!lanes) {
+    for (std::size_t k : batched)
+      records[k] = evaluateSweepPoint(spec, indices[k], control);
+    return records;
+  }
+  const double share = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() /
+                       static_cast<double>(batched.size());
+  for (std::size_t j = 0; j < batched.size(); ++j) {
+    SweepRecord& r = records[batched[j]];
+    const LaneValues& lane = (*lanes)[j];
+    if (lane.failure) { // the reason as evaluateSweepPoint words it
+      try {
+        std::rethrow_exception(lane.failure);
+      } catch (const std::exception& e) {
+        r.ok = false;
+        r.reason = e.what();
+        if (r.reason.rfind(spec.source + ":", 0) == 0) r.reason.erase(0, spec.source.size() + 1);
+      }
+      r.values.assign(spec.columns.size(), kNaN);
+    } else {
+      r.values = lane.values;
+      r.values.resize(spec.columns.size(), kNaN);
+    }
+    r.seconds = share;
+  }
+  return records;
+}
+
+SweepSpec sweepWithOptions(const SweepSpec& spec, const json& options, const std::string& what) {
+  json doc = spec.resolved;
+  for (const auto& [key, value] : options.items())
+    doc["options"][key] = value;
+  try {
+    SweepSpec changed = sweepFromJson(std::move(doc), spec.source);
+    changed.title = spec.title;
+    return changed;
+  } catch (const InputError& e) {
+    throw InputError(what + ": " + e.what());
+  }
 }
 
 std::string SweepSpec::axisLabel(std::size_t a) const {

@@ -10,9 +10,11 @@
 #include "render/charts/SweepChart.h"
 #include "scenes/Scene.h"
 
+#include <exception>
 #include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,6 +31,12 @@ struct SweepAxis {
 
 struct SweepSpec;
 
+/// One point's outcome on a lane: its values, or the exception its evaluation threw.
+struct LaneValues {
+  std::vector<double> values;
+  std::exception_ptr failure;
+};
+
 /// A number per grid point, computed by a registered tool (ToolRegistry id `tool`).
 struct SweepQuantity {
   std::string id;          ///< as written in a sweep file; a trailing '.' takes a name ("observable.")
@@ -41,8 +49,15 @@ struct SweepQuantity {
   bool needsMap = false;     ///< computed on the scene's map: a flow needs a Poincare section
   bool cloud = false;        ///< every column is a point of an orbit diagram (drawn as a cloud)
   bool optionalName = false; ///< takes ".NAME" but has a default (reversal[.NAME])
-  bool categorical =
-      false; ///< its first column is a category (a type, a count, yes/no): refined on any change
+  /// Its first column is a category (a type, a count, yes/no): refined on any change.
+  bool categorical = false;
+  /// Its values at up to kLanes grid points' scenes at once, one per SIMD lane (dynamics/core/Lanes.h), or
+  /// nothing where these points cannot go together (another model, integrator or setting; a model without a
+  /// lane kernel): then each is evaluated alone. Per point: its values, or what its evaluation threw.
+  /// Throws Stopped when stopped. Unset for quantities that do not run on lanes.
+  std::function<std::optional<std::vector<LaneValues>>(const SweepSpec&, const std::vector<Scene>&,
+                                                       const ToolControl&)>
+      evaluateLanes;
 };
 
 /// Every quantity a sweep can chart.
@@ -64,6 +79,7 @@ struct SweepSpec {
   /// which the sweep computes the file's grid and then, level after level, the cells where the regimes meet.
   int refine = 0;
   double refineThreshold = 0; ///< options.refine_threshold
+  int lanes = 0; ///< options.lanes: 0 points on SIMD lanes where the quantity can, 1 one at a time
   long points() const;
   /// The grid indices of a point (the first axis fastest) and its axis values.
   std::vector<double> axisValues(long index) const;
@@ -82,6 +98,9 @@ SweepSpec sweepFromJson(nlohmann::json document, const std::string& source);
 /// the same counts (and refinement). InputError naming `what` (e.g. "--window") for a wrong count or an empty
 /// range.
 SweepSpec zoomSweep(const SweepSpec& spec, const std::vector<double>& bounds, const std::string& what);
+/// The same sweep with some of its options changed (e.g. {"lanes": 1}): InputError naming `what` for a bad
+/// one.
+SweepSpec sweepWithOptions(const SweepSpec& spec, const nlohmann::json& options, const std::string& what);
 
 /// The scene of grid point `index` (what "open this point" shows): InputError when the axis values make no
 /// valid scene.
@@ -89,6 +108,14 @@ Scene sweepPointScene(const SweepSpec& spec, long index);
 
 /// Computes grid point `index`; never throws: a point that fails is a record with ok = false and the reason.
 SweepRecord evaluateSweepPoint(const SweepSpec& spec, long index, const ToolControl& control);
+/// How many points evaluateSweepPoints takes at once: kLanes where the quantity runs on lanes (and
+/// options.lanes is 0), else 1.
+int sweepBatch(const SweepSpec& spec);
+/// Computes the grid points `indices` (at most sweepBatch), on SIMD lanes where they can go together, else
+/// one by one; a record per index, as evaluateSweepPoint gives (each point's seconds: its share of the
+/// batch).
+std::vector<SweepRecord> evaluateSweepPoints(const SweepSpec& spec, const std::vector<long>& indices,
+                                             const ToolControl& control);
 
 /// The CSV header: the axes, the quantity's columns, seconds (with `timing`: what each point cost, the one
 /// column that differs between runs), status. Without it the CSV of a sweep is the same file on any number of

@@ -46,8 +46,11 @@ std::string SweepTask::describe() const {
 bool SweepTask::run(const ToolControl& control) {
   return runSweepLevels(spec_, *store_, threads_, [&](ChunkScheduler& scheduler) {
     return runSweepThreads(
-        *store_, scheduler, [this](long i, const ToolControl& c) { return evaluateSweepPoint(spec_, i, c); },
-        threads_, control);
+        *store_, scheduler,
+        [this](const std::vector<long>& indices, const ToolControl& c) {
+          return evaluateSweepPoints(spec_, indices, c);
+        },
+        sweepBatch(spec_), threads_, control);
   });
 }
 

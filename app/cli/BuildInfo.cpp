@@ -1,5 +1,6 @@
 #include "app/cli/BuildInfo.h"
 
+#include "dynamics/core/Lanes.h"
 #include "render/video/Mp4Writer.h"
 #include "scenes/ModelCompiler.h"
 #include "scenes/ModuleLoader.h"
@@ -31,7 +32,9 @@ std::vector<Fact> buildFacts() {
       {"Eigen", fmt::format("{}.{}.{}", EIGEN_WORLD_VERSION, EIGEN_MAJOR_VERSION, EIGEN_MINOR_VERSION)},
       {"libav", libavVersions()},
       {"fmt", fmt::format("{}.{}.{}", FMT_VERSION / 10000, FMT_VERSION / 100 % 100, FMT_VERSION % 100)},
-      {"module stamp", moduleStamp()}};
+      {"module stamp", moduleStamp()},
+      {"SIMD lanes",
+       laneDescription() + " (sweeps of MEGNO over initial points with rk4; --lanes 1: one at a time)"}};
   std::string compiler;
   const bool compiles = modelCompilationAvailable(&compiler);
   facts.push_back(

@@ -35,6 +35,7 @@ namespace {
 
 struct SweepOptions {
   std::string sweep, output, png, size = "900x700", checkpoint, window;
+  int lanes = -1; ///< --lanes: options.lanes for this run (-1: the file's)
   int threads = 0;
   bool timing = false;
 };
@@ -148,6 +149,7 @@ int runSweep(const SweepOptions& o) {
   if (writer) {
     try {
       spec = loadSweepWindow(o.sweep, o.window);
+      if (o.lanes >= 0) spec = sweepWithOptions(*spec, {{"lanes", o.lanes}}, "--lanes");
       if (spec->refine > 0 && remote > 0)
         throw InputError(o.sweep + ":options.refine: a refined sweep runs on threads, not yet on MPI ranks");
       checkWritable(o.output, "-o");
@@ -185,10 +187,12 @@ int runSweep(const SweepOptions& o) {
 
   const long resumed = store.doneCount();
   std::atomic<long> computed{0};
-  const auto evaluate = [&](long i, const ToolControl& c) {
-    SweepRecord r = evaluateSweepPoint(*spec, i, c);
-    ++computed;
-    return r;
+  // several points at once on SIMD lanes where the quantity can (options.lanes, --lanes)
+  const int batch = sweepBatch(*spec);
+  const BatchEvaluator evaluateBatch = [&](const std::vector<long>& indices, const ToolControl& c) {
+    auto records = evaluateSweepPoints(*spec, indices, c);
+    computed += static_cast<long>(records.size());
+    return records;
   };
   Progress progress("sweep");
   const auto start = std::chrono::steady_clock::now();
@@ -225,7 +229,7 @@ int runSweep(const SweepOptions& o) {
     std::exception_ptr failure;
     std::thread computing([&] {
       try {
-        runSweepThreads(store, scheduler, evaluate, threads, local);
+        runSweepThreads(store, scheduler, evaluateBatch, batch, threads, local);
       } catch (...) {
         failure = std::current_exception();
       }
@@ -242,7 +246,7 @@ int runSweep(const SweepOptions& o) {
     complete = store.doneCount() == spec->points();
   } else {
     complete = runSweepLevels(*spec, store, threads, [&](ChunkScheduler& scheduler) {
-      return runSweepThreads(store, scheduler, evaluate, threads, control);
+      return runSweepThreads(store, scheduler, evaluateBatch, batch, threads, control);
     });
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -286,6 +290,10 @@ Command addSweepCommand(CLI::App* cmd) {
   cmd->add_option("--window", o->window,
                   "x0,x1[,y0,y1]: the axes' ranges instead of the sweep file's (a zoom into its chart; the "
                   "same counts)");
+  cmd->add_option(
+      "--lanes", o->lanes,
+      "1: one point at a time (the scalar path, for comparison); 0: several points on SIMD lanes where "
+      "the quantity can (the default; rollviz info names the width)");
   cmd->add_option("--checkpoint", o->checkpoint,
                   "keep finished points in FILE: a sweep killed and started again goes on from there");
   return {cmd, [o] { return runSweep(*o); }};

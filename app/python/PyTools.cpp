@@ -575,13 +575,14 @@ pyb::object sweep(const std::string& path, int threads, const pyb::object& progr
   // a failure's whole reason for the points this call computes (the store keeps kReasonBytes of it)
   std::mutex reasonsMutex;
   std::map<long, std::string> reasons;
-  const auto evaluate = [&](long i, const ToolControl& pc) {
-    SweepRecord r = evaluateSweepPoint(spec, i, pc);
-    if (!r.ok && r.reason.size() > SweepStore::kReasonBytes) {
-      const std::lock_guard lock(reasonsMutex);
-      reasons[i] = r.reason;
-    }
-    return r;
+  const BatchEvaluator evaluate = [&](const std::vector<long>& indices, const ToolControl& pc) {
+    auto records = evaluateSweepPoints(spec, indices, pc);
+    for (std::size_t k = 0; k < records.size(); ++k)
+      if (!records[k].ok && records[k].reason.size() > SweepStore::kReasonBytes) {
+        const std::lock_guard lock(reasonsMutex);
+        reasons[indices[k]] = records[k].reason;
+      }
+    return records;
   };
   std::optional<pyb::error_already_set> interrupted;
   try {
@@ -589,7 +590,7 @@ pyb::object sweep(const std::string& path, int threads, const pyb::object& progr
       ToolControl c = control;
       c.progress = [&](double) { control.progress(static_cast<double>(store.doneCount()) / spec.points()); };
       complete = runSweepLevels(spec, store, threads, [&](ChunkScheduler& scheduler) {
-        return runSweepThreads(store, scheduler, evaluate, threads, c);
+        return runSweepThreads(store, scheduler, evaluate, sweepBatch(spec), threads, c);
       });
     });
   } catch (pyb::error_already_set& e) {

@@ -1,6 +1,7 @@
 // ModelWithField.h -- CRTP base: a model writes its right-hand side once, as a template on the scalar
 // type, and gets rhs() in double and an exact Jacobian through Eigen's forward-mode AutoDiff.
 #pragma once
+#include "dynamics/core/LaneField.h"
 #include "dynamics/core/Model.h"
 #include "dynamics/core/TaylorTape.h"
 #include "dynamics/integrators/Rk4Scheme.h"
@@ -21,8 +22,10 @@ template <class D> double valueOf(const Eigen::AutoDiffScalar<D>& v) {
 }
 
 /// Derived must provide `template <class S> void field(const Vec<S>& x, Vec<S>& dx) const`. M is the core
-/// dimension (the leading components that evolve on their own); it must equal info().coreDimension.
-template <class Derived, int N, int M = N> class ModelWithField : public Model {
+/// dimension (the leading components that evolve on their own); it must equal info().coreDimension. A Derived
+/// whose field has no branch on a value may declare `static constexpr bool kLaneField = true`: then its field
+/// also runs on kLanes states at once (LaneField.h).
+template <class Derived, int N, int M = N> class ModelWithField : public Model, public LaneField {
 public:
   static constexpr int kDim = N;
   static constexpr int kCore = M;
@@ -77,6 +80,21 @@ public:
     return !isMap() && withFixedVectors(k, [&]<int K>() { fusedRk4<K>(x, V, h, steps); });
   }
 
+  /// f and J w at kLanes states at once, in one AVX2 register per component where the CPU has AVX2 (compiled
+  /// for it without FMA: each lane rounds as the scalar path does), else as SSE2 pairs.
+  bool laneTangentRhs(const double* x, double* out) const final {
+    if constexpr (requires { Derived::kLaneField; }) {
+      if (cpuHasAvx2())
+        laneKernelAvx2(x, out);
+      else
+        laneKernelBaseline(x, out);
+      return true;
+    } else {
+      (void)x, (void)out;
+      return false;
+    }
+  }
+
   /// Tangent vectors up to this many (and the core dimension) get code with their count fixed at compile
   /// time.
   static constexpr int kMaxFixedVectors = 6;
@@ -94,6 +112,21 @@ public:
 
 private:
   const Derived& self() const { return static_cast<const Derived&>(*this); }
+  [[gnu::target("avx2"), gnu::flatten]] void laneKernelAvx2(const double* x, double* out) const {
+    laneKernel(x, out);
+  }
+  [[gnu::flatten]] void laneKernelBaseline(const double* x, double* out) const { laneKernel(x, out); }
+  EIGEN_ALWAYS_INLINE void laneKernel(const double* x, double* out) const {
+    using J = Jet<Lanes>;
+    Vec<J> xa, fa;
+    for (int i = 0; i < N; ++i)
+      xa[i] = J(Lanes::load(x + i * kLanes), i < M ? Lanes::load(x + (N + i) * kLanes) : Lanes(0.0));
+    self().field(xa, fa);
+    for (int i = 0; i < N; ++i)
+      fa[i].v.store(out + i * kLanes);
+    for (int i = 0; i < M; ++i)
+      fa[i].d.store(out + (N + i) * kLanes);
+  }
   // calls body.template operator()<k>() when 1 <= k <= min(M, kMaxFixedVectors); false otherwise
   template <class Body> static bool withFixedVectors(int k, Body&& body) {
     return [&]<int... I>(std::integer_sequence<int, I...>) {

@@ -200,6 +200,16 @@ void ChunkScheduler::stop() {
 bool runSweepThreads(SweepStore& store, ChunkScheduler& scheduler,
                      const std::function<SweepRecord(long, const ToolControl&)>& evaluate, int threads,
                      const ToolControl& control) {
+  return runSweepThreads(
+      store, scheduler,
+      [&](const std::vector<long>& indices, const ToolControl& c) {
+        return std::vector<SweepRecord>{evaluate(indices.front(), c)};
+      },
+      1, threads, control);
+}
+
+bool runSweepThreads(SweepStore& store, ChunkScheduler& scheduler, const BatchEvaluator& evaluate, int batch,
+                     int threads, const ToolControl& control) {
   std::atomic<bool> stop{false};
   std::exception_ptr failure; // a disk failure ends the run
   std::mutex failureMutex;
@@ -211,10 +221,14 @@ bool runSweepThreads(SweepStore& store, ChunkScheduler& scheduler,
       while (!stop.load()) {
         const auto chunk = scheduler.next();
         if (!chunk) break;
-        for (long i = chunk->first; i < chunk->second && !stop.load(); ++i) {
-          SweepRecord r = evaluate(i, pointControl);
-          if (stop.load()) break; // a point cut short is dropped, not recorded
-          store.write(i, r);
+        for (long i = chunk->first; i < chunk->second && !stop.load(); i += batch) {
+          std::vector<long> indices;
+          for (long k = i; k < std::min(chunk->second, i + static_cast<long>(std::max(1, batch))); ++k)
+            indices.push_back(k);
+          const std::vector<SweepRecord> records = evaluate(indices, pointControl);
+          if (stop.load()) break; // points cut short are dropped, not recorded
+          for (std::size_t k = 0; k < indices.size(); ++k)
+            store.write(indices[k], records[k]);
         }
       }
     } catch (...) {

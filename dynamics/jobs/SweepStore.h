@@ -104,6 +104,11 @@ private:
 bool runSweepThreads(SweepStore& store, ChunkScheduler& scheduler,
                      const std::function<SweepRecord(long, const ToolControl&)>& evaluate, int threads,
                      const ToolControl& control);
+/// Computes several consecutive points at once (SIMD lanes): a record per index.
+using BatchEvaluator = std::function<std::vector<SweepRecord>(const std::vector<long>&, const ToolControl&)>;
+/// The same, `batch` consecutive points of a chunk at a time.
+bool runSweepThreads(SweepStore& store, ChunkScheduler& scheduler, const BatchEvaluator& evaluate, int batch,
+                     int threads, const ToolControl& control);
 
 /// Packs records for sending between ranks: per record the index, status, cost, values and reason.
 void packRecord(std::vector<char>& out, long index, const SweepRecord& record);

@@ -11,6 +11,7 @@ class HenonHeiles final : public ModelWithField<HenonHeiles, 4> {
 public:
   explicit HenonHeiles(const ParameterValues& params);
   static const ModelInfo& staticInfo();
+  static constexpr bool kLaneField = true; ///< no branch on a value: runs on lanes (Lanes.h)
 
   template <class S> void field(const Vec<S>& s, Vec<S>& ds) const {
     const S& x = s[0];

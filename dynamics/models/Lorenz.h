@@ -10,6 +10,7 @@ class Lorenz final : public ModelWithField<Lorenz, 3> {
 public:
   explicit Lorenz(const ParameterValues& params);
   static const ModelInfo& staticInfo();
+  static constexpr bool kLaneField = true; ///< no branch on a value: runs on lanes (Lanes.h)
 
   template <class S> void field(const Vec<S>& x, Vec<S>& dx) const {
     dx[0] = sigma_ * (x[1] - x[0]);

@@ -71,10 +71,9 @@ public:
   void rhs(const double* x, double* dx) const override {
     base_.tangentRhs(x, x + n_, 1, dx, dx + n_);
     if (base_.isMap()) return;
-    const Eigen::Map<const Eigen::VectorXd> w(x + n_, m_), dw(dx + n_, m_);
     const double tau = x[n_ + m_], a = x[n_ + m_ + 1];
     dx[n_ + m_] = 1;
-    dx[n_ + m_ + 1] = tau * w.dot(dw) / w.squaredNorm();
+    dx[n_ + m_ + 1] = megnoIntegrand(tau, x + n_, dx + n_, m_);
     dx[n_ + m_ + 2] = tau > 0 ? 2 * a / tau : 0;
   }
   void jacobian(const double*, double*) const override {
@@ -132,7 +131,7 @@ bool MegnoRun::flowInterval(const ToolControl& control) {
     integ_->interpolate(target, state_);
   t_ = target;
   sumA_ = state_[n_ + m_ + 1], sumB_ = state_[n_ + m_ + 2];
-  const double norm = state_.segment(n_, m_).norm();
+  const double norm = tangentLength(state_.data() + n_, m_);
   if (!(norm > 0) || !std::isfinite(norm)) throw ComputationError("megno: the tangent vector degenerated");
   logNorm_ += std::log(norm);
   state_.segment(n_, m_) /= norm;

@@ -16,10 +16,31 @@
 #include "dynamics/core/Snapshot.h"
 #include "dynamics/tools/Lyapunov.h"
 
+#include <cmath>
 #include <functional>
 #include <memory>
 
 namespace rv {
+
+/// dA/dt = tau (w . w') / (w . w) of the MEGNO integrals, the sums taken in index order over the m
+/// components found `stride` apart: the scalar run and the batched one (MegnoLanes.h) use this one formula,
+/// so a lane's numbers are the scalar run's bit for bit.
+inline double megnoIntegrand(double tau, const double* w, const double* dw, int m, int stride = 1) {
+  double dot = 0, squared = 0;
+  for (int i = 0; i < m; ++i) {
+    dot += w[i * stride] * dw[i * stride];
+    squared += w[i * stride] * w[i * stride];
+  }
+  return tau * dot / squared;
+}
+
+/// |w| summed in index order (as megnoIntegrand).
+inline double tangentLength(const double* w, int m, int stride = 1) {
+  double squared = 0;
+  for (int i = 0; i < m; ++i)
+    squared += w[i * stride] * w[i * stride];
+  return std::sqrt(squared);
+}
 
 struct MegnoSettings {
   double maxTime = 1000;    ///< integration time (maps: iterations)

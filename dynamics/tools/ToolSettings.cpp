@@ -487,6 +487,16 @@ const ParameterTable& sweepOptionsTable() {
        .max = 1e9,
        .description = "the most points handed to a thread or rank at once (0: automatic)",
        .integer = true},
+      {.id = "lanes",
+       .label = "Lanes",
+       .defaultValue = 0,
+       .min = 0,
+       .max = 1,
+       .description =
+           "0: points on SIMD lanes, several at once, where the quantity can (megno and its numbers "
+           "over a flow's initial points with rk4, bit for bit the points one at a time; `rollviz info` "
+           "names the width); 1: one point at a time",
+       .integer = true},
       {.id = "refine",
        .label = "Refinement levels",
        .defaultValue = 0,

@@ -1052,6 +1052,22 @@ class Cli(unittest.TestCase):
         self.assertEqual(r.returncode, 0, r.stderr)
         self.assertIn('WholeExtent="0 32 0 32 0 0"', open(vti, errors="replace").read())
 
+    def test_sweep_points_on_lanes_equal_one_at_a_time(self):
+        # MEGNO over Henon-Heiles initial points with rk4: several points at once (the default) and --lanes 1
+        # (one at a time) write the same CSV; `rollviz info` names the lanes
+        hh = self.sweep_file("hh_lanes.json", {
+            "scene": os.path.join(SRC, "scenes", "henon_heiles.json"), "quantity": "megno",
+            "axes": [{"id": "map.0", "min": -0.45, "max": 0.6, "count": 6},
+                     {"id": "map.1", "min": -0.5, "max": 0.5, "count": 5}],
+            "set": {"megno.time": 50, "integrator.method": "rk4", "integrator.step": 0.02}})
+        a, b = self.path("lanes.csv"), self.path("single.csv")
+        self.assertEqual(run("sweep", hh, "-o", a).returncode, 0)
+        r = run("sweep", hh, "-o", b, "--lanes", "1")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertEqual(self.sweep_values(a), self.sweep_values(b))
+        self.assertBadInput(run("sweep", hh, "-o", b, "--lanes", "3"), "--lanes")
+        self.assertIn("SIMD lanes", run("info").stdout)
+
     def test_gui_without_a_display_says_so(self):
         r = run("gui", SCENE, env={"WAYLAND_DISPLAY": ""})
         if "WAYLAND_DISPLAY" in os.environ:

@@ -44,6 +44,40 @@ void SweepThreads(benchmark::State& state) {
                          benchmark::Counter::kIsRate);
 }
 
+// MEGNO over initial points, one thread: several points at once on SIMD lanes (0) against one at a time (1).
+// With rk4 (h = 0.01) each lane is the scalar run bit for bit; with the scene's Everhart 15 (h = 0.05) and
+// adams (order 12, h = 0.05) a sweep runs one point at a time either way (scenes/Sweep.cpp says why): their
+// rows show that it costs nothing
+void SweepLanes(benchmark::State& state) {
+  const char* method = state.range(1) == 0 ? "everhart" : state.range(1) == 1 ? "rk4" : "adams";
+  nlohmann::json doc{{"scene", defaultScenePath("henon_heiles")},
+                     {"axes",
+                      {{{"id", "map.0"}, {"min", -0.3}, {"max", 0.3}, {"count", 8}},
+                       {{"id", "map.1"}, {"min", -0.3}, {"max", 0.3}, {"count", 8}}}},
+                     {"quantity", "megno"},
+                     {"set", {{"megno.time", 200}}},
+                     {"options", {{"lanes", state.range(0)}}}};
+  if (state.range(1) == 1) doc["set"].update({{"integrator.method", "rk4"}, {"integrator.step", 0.01}});
+  if (state.range(1) == 2)
+    doc["set"].update({{"integrator.method", "adams"}, {"integrator.step", 0.05}, {"integrator.order", 12}});
+  const SweepSpec spec = sweepFromJson(doc, "bench.json");
+  for (auto _ : state) {
+    std::filesystem::remove(storePath());
+    SweepStore store(storePath(), "bench", spec.points(), static_cast<int>(spec.columns.size()), "bench");
+    ChunkScheduler scheduler(store, 1);
+    runSweepThreads(store, scheduler,
+                    [&](const std::vector<long>& indices, const ToolControl& c) {
+                      return evaluateSweepPoints(spec, indices, c);
+                    },
+                    sweepBatch(spec), 1, {});
+    store.remove();
+  }
+  state.SetLabel(method);
+  state.counters["points/s"] =
+      benchmark::Counter(static_cast<double>(spec.points()) * static_cast<double>(state.iterations()),
+                         benchmark::Counter::kIsRate);
+}
+
 void SweepStoreWriteRead(benchmark::State& state) {
   std::filesystem::remove(storePath());
   SweepStore store(storePath(), "bench", 100000, 1, "bench");
@@ -70,5 +104,15 @@ void SweepRecordBytes(benchmark::State& state) {
 } // namespace
 
 BENCHMARK(SweepThreads)->Arg(1)->Arg(2)->Iterations(1)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(SweepLanes)
+    ->Args({1, 0})
+    ->Args({0, 0})
+    ->Args({1, 1})
+    ->Args({0, 1})
+    ->Args({1, 2})
+    ->Args({0, 2})
+    ->Iterations(1)
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(SweepStoreWriteRead);
 BENCHMARK(SweepRecordBytes);

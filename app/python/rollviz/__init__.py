@@ -614,7 +614,8 @@ def _axis(name, values):
     return {"id": name, "min": float(lo), "max": float(hi), "count": int(count)}
 
 
-def sweep(scene, axes=None, quantity=None, threads=0, progress=None, checkpoint=None, options=None, **settings):
+def sweep(scene, axes=None, quantity=None, threads=0, progress=None, checkpoint=None, options=None, lanes=None,
+          **settings):
     """A quantity over a grid of points (rollviz sweep; docs/sweeps.md), on threads. Either a sweep file's path,
     or a Scene with axes={"energy": np.linspace(0.3, 0.6, 31), "map.0": (-0.4, 0.4, 41)} (model parameters,
     "map.0"/"map.1" for the start's map coordinates, dotted scene keys; evenly spaced values or (min, max,
@@ -625,11 +626,13 @@ def sweep(scene, axes=None, quantity=None, threads=0, progress=None, checkpoint=
     once the sweep is complete). Ctrl-C raises KeyboardInterrupt whose `partial` is a SweepResult of the points
     finished so far (NaN and status "not computed" elsewhere). options: the sweep's own options (a dict, as a
     sweep file's "options": {"refine": 2} computes the grid, then twice halves the cells where the regimes meet;
-    the grid is then the finest one, its points not computed "painted" from the nearest computed one)."""
+    the grid is then the finest one, its points not computed "painted" from the nearest computed one). lanes=1
+    computes one point at a time (the scalar path; options["lanes"]), for comparison with the default, several
+    points at once on SIMD lanes where the quantity can."""
     checkpoint = None if checkpoint is None else _os.fspath(checkpoint)
     if isinstance(scene, (str, _os.PathLike)):
-        if axes is not None or quantity is not None or settings or options is not None:
-            raise TypeError("sweep(path): a sweep file holds its axes, quantity, options and settings")
+        if axes is not None or quantity is not None or settings or options is not None or lanes is not None:
+            raise TypeError("sweep(path): a sweep file holds its axes, quantity, options (lanes too) and settings")
         return _run_sweep(_os.fspath(scene), threads, progress, checkpoint)
     if not isinstance(scene, Scene):
         raise TypeError(f"sweep(): give a Scene or a sweep file's path, not {type(scene).__name__}")
@@ -643,6 +646,9 @@ def sweep(scene, axes=None, quantity=None, threads=0, progress=None, checkpoint=
         scene.save(_os.path.join(folder, "scene.json"))
         spec = {"scene": "scene.json", "axes": [_axis(k, v) for k, v in axes.items()], "quantity": quantity,
                 "set": {k: _plain(v) for k, v in settings.items()}}
+        options = dict(options or {})
+        if lanes is not None:
+            options["lanes"] = lanes
         if options:
             spec["options"] = {k: _plain(v) for k, v in options.items()}
         path = _os.path.join(folder, "sweep.json")

@@ -1,0 +1,154 @@
+#include "dynamics/tools/MegnoLanes.h"
+
+#include "dynamics/core/Errors.h"
+#include "dynamics/core/LaneField.h"
+
+#include <cmath>
+#include <string>
+
+namespace rv {
+
+namespace {
+
+struct LaneSystemInfo {
+  ModelInfo systemInfo;
+};
+
+LaneSystemInfo laneInfo(const Model& base, int dimension) {
+  LaneSystemInfo s{base.info()};
+  s.systemInfo.id = base.info().id + "+megno lanes";
+  s.systemInfo.stateNames.clear();
+  for (int i = 0; i < dimension; ++i)
+    s.systemInfo.stateNames.push_back("y" + std::to_string(i));
+  s.systemInfo.coreDimension = dimension;
+  s.systemInfo.integralNames.clear();
+  s.systemInfo.hasMeasure = false;
+  return s;
+}
+
+// kLanes MEGNO systems (MegnoRun::System) stacked component-major: y[c * kLanes + l] is component c of lane
+// l, the components x (n), w (m), tau, A, B
+class LaneSystem final : private LaneSystemInfo, public Model {
+public:
+  LaneSystem(const Model& base, const LaneField& lanes)
+      : LaneSystemInfo(laneInfo(base, kLanes * (base.dimension() + base.info().coreDimension + 3))),
+        Model(systemInfo, base.parameters()), lanes_(lanes), n_(base.dimension()),
+        m_(base.info().coreDimension) {}
+  void rhs(const double* y, double* dy) const override {
+    lanes_.laneTangentRhs(y, dy);
+    const int tau = (n_ + m_) * kLanes, a = tau + kLanes, b = a + kLanes;
+    for (int l = 0; l < kLanes; ++l) {
+      dy[tau + l] = 1;
+      dy[a + l] = megnoIntegrand(y[tau + l], y + n_ * kLanes + l, dy + n_ * kLanes + l, m_, kLanes);
+      dy[b + l] = y[tau + l] > 0 ? 2 * y[a + l] / y[tau + l] : 0;
+    }
+  }
+  void jacobian(const double*, double*) const override {
+    throw ComputationError("the Jacobian of the batched MEGNO system is not available");
+  }
+
+private:
+  const LaneField& lanes_;
+  int n_, m_;
+};
+
+const LaneField* laneField(const Model& model) {
+  const auto* lanes = dynamic_cast<const LaneField*>(&model);
+  if (!lanes || model.isMap()) return nullptr;
+  // a model whose lane kernel is missing says so by writing nothing
+  std::vector<double> probe(
+      static_cast<std::size_t>(kLanes * (model.dimension() + model.info().coreDimension)), 0.0);
+  std::vector<double> out(probe.size());
+  return lanes->laneTangentRhs(probe.data(), out.data()) ? lanes : nullptr;
+}
+
+} // namespace
+
+bool megnoRunsOnLanes(const Model& model) {
+  return laneField(model) != nullptr;
+}
+
+std::vector<MegnoLaneResult> megnoOnLanes(const Model& model, const IntegratorFactory& makeIntegrator,
+                                          const std::vector<Eigen::VectorXd>& x0s, const MegnoSettings& s,
+                                          const ToolControl& control) {
+  const LaneField* lanes = laneField(model);
+  if (!lanes) throw std::logic_error("megnoOnLanes: " + model.info().id + " has no lane kernel");
+  if (x0s.empty() || x0s.size() > static_cast<std::size_t>(kLanes))
+    throw std::logic_error("megnoOnLanes: 1 to kLanes states");
+  if (!(s.maxTime > 0) || !std::isfinite(s.maxTime)) throw InputError("megno: the time must be positive");
+  if (!(s.interval > 0)) throw InputError("megno: the interval must be positive");
+  const int n = model.dimension(), m = model.info().coreDimension, count = static_cast<int>(x0s.size());
+  const LaneSystem system(model, *lanes);
+  const int tau = (n + m) * kLanes, sumA = tau + kLanes, sumB = sumA + kLanes;
+
+  // the lanes' states: the orbits given, the last repeated into lanes left over; w as MegnoRun starts it
+  Eigen::VectorXd w0(m);
+  for (int i = 0; i < m; ++i)
+    w0[i] = 1.0 / (i + 1);
+  w0.normalize();
+  Eigen::VectorXd y = Eigen::VectorXd::Zero(system.dimension());
+  for (int l = 0; l < kLanes; ++l) {
+    const Eigen::VectorXd& x0 = x0s[static_cast<std::size_t>(std::min(l, count - 1))];
+    if (x0.size() != n) throw InputError("megno: the initial state has the wrong size");
+    for (int c = 0; c < n; ++c)
+      y[c * kLanes + l] = x0[c];
+    for (int i = 0; i < m; ++i)
+      y[(n + i) * kLanes + l] = w0[i];
+  }
+  const auto alone = [&] { // every orbit by the scalar run: each fails, or not, as it would alone
+    std::vector<MegnoLaneResult> r(static_cast<std::size_t>(count));
+    for (int l = 0; l < count; ++l) {
+      try {
+        const MegnoResult one =
+            megno(model, makeIntegrator, x0s[static_cast<std::size_t>(l)], s, {}, control);
+        if (one.stopped) return std::vector<MegnoLaneResult>{};
+        r[static_cast<std::size_t>(l)].last = one.last;
+      } catch (const ComputationError&) {
+        r[static_cast<std::size_t>(l)].failure = std::current_exception();
+      }
+    }
+    return r;
+  };
+
+  double t = 0;
+  std::vector<double> logNorm(kLanes, 0.0);
+  while (t < s.maxTime) {
+    const double target = t + std::min(s.interval, s.maxTime - t);
+    try {
+      auto integ = makeIntegrator();
+      integ->controlBy(n * kLanes); // the orbits' components alone (as MegnoRun: x, not w)
+      integ->start(system, t, y);
+      while (integ->time() < target) {
+        if (control.stopRequested()) return {};
+        integ->step();
+      }
+      if (integ->time() == target)
+        y = integ->state();
+      else
+        integ->interpolate(target, y);
+    } catch (const ComputationError&) {
+      return alone();
+    }
+    t = target;
+    for (int l = 0; l < kLanes; ++l) {
+      const double norm = tangentLength(y.data() + n * kLanes + l, m, kLanes);
+      if (!(norm > 0) || !std::isfinite(norm) || !std::isfinite(y[sumB + l])) return alone();
+      logNorm[static_cast<std::size_t>(l)] += std::log(norm);
+      for (int i = 0; i < m; ++i)
+        y[(n + i) * kLanes + l] /= norm;
+    }
+    control.progress(t / s.maxTime);
+  }
+  std::vector<MegnoLaneResult> r(static_cast<std::size_t>(count));
+  for (int l = 0; l < count; ++l) { // as MegnoRun::record
+    MegnoEstimate& e = r[static_cast<std::size_t>(l)].last;
+    e.time = t;
+    e.y = 2 * y[sumA + l] / t;
+    e.megno = y[sumB + l] / t;
+    e.megnoRate = e.megno / (t / 2);
+    e.fli = logNorm[static_cast<std::size_t>(l)];
+  }
+  return r;
+}
+
+} // namespace rv

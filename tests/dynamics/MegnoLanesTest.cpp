@@ -1,0 +1,126 @@
+// MEGNO on lanes (dynamics/tools/MegnoLanes.h): the lane kernel equals the scalar tangent right-hand side bit
+// for bit; four Henon-Heiles orbits at once with rk4 are the four scalar runs bit for bit; with Everhart
+// (whose corrector stops when every lane has converged) they agree to its accuracy on tori; orbits that blow
+// up (Henon-Heiles above the escape energy 1/6) fail in the batch as they fail alone, and the others keep
+// their scalar answers.
+#include "dynamics/tools/MegnoLanes.h"
+#include "dynamics/core/LaneField.h"
+#include "dynamics/integrators/Everhart.h"
+#include "dynamics/integrators/Rk4.h"
+#include "tests/dynamics/TestSupport.h"
+
+#include <gtest/gtest.h>
+#include <random>
+
+namespace rv {
+namespace {
+
+// a Henon-Heiles state at energy e from (y, py) on x = 0 with px > 0
+Eigen::VectorXd hhState(double e, double y, double py) {
+  Eigen::VectorXd x(4);
+  const double px2 = 2 * e - py * py - y * y + 2 * y * y * y / 3;
+  x << 0, y, std::sqrt(std::max(0.0, px2)), py;
+  return x;
+}
+
+TEST(Lanes, KernelEqualsTheScalarTangentRightHandSideBitForBit) {
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> u(-2, 2);
+  for (const char* id : {"henon_heiles", "lorenz"}) {
+    const auto model = test::makeModel(id, {});
+    const int n = model->dimension(), m = model->info().coreDimension;
+    const auto* lanes = dynamic_cast<const LaneField*>(model.get());
+    ASSERT_TRUE(lanes) << id;
+    std::vector<double> y(static_cast<std::size_t>(kLanes * (n + m))), out(y.size());
+    for (double& v : y)
+      v = u(random);
+    ASSERT_TRUE(lanes->laneTangentRhs(y.data(), out.data())) << id;
+    for (int l = 0; l < kLanes; ++l) {
+      Eigen::VectorXd x(n), w(m), dx(n), dw(m);
+      for (int c = 0; c < n; ++c)
+        x[c] = y[static_cast<std::size_t>(c * kLanes + l)];
+      for (int i = 0; i < m; ++i)
+        w[i] = y[static_cast<std::size_t>((n + i) * kLanes + l)];
+      model->tangentRhs(x.data(), w.data(), 1, dx.data(), dw.data());
+      for (int c = 0; c < n; ++c)
+        EXPECT_EQ(out[static_cast<std::size_t>(c * kLanes + l)], dx[c]) << id << " lane " << l << " f" << c;
+      for (int i = 0; i < m; ++i)
+        EXPECT_EQ(out[static_cast<std::size_t>((n + i) * kLanes + l)], dw[i])
+            << id << " lane " << l << " Jw" << i;
+    }
+  }
+  // a model whose field branches on a value has no lane kernel: the batched tools leave it to the scalar run
+  EXPECT_FALSE(megnoRunsOnLanes(*test::makeModel("chaplygin_ball", {})));
+  EXPECT_FALSE(megnoRunsOnLanes(*test::makeModel("standard_map", {})));
+  EXPECT_TRUE(megnoRunsOnLanes(*test::makeModel("henon_heiles", {})));
+}
+
+TEST(Lanes, MegnoWithRk4IsTheScalarRunBitForBit) {
+  const auto model = test::makeModel("henon_heiles", {{"energy", 0.125}});
+  const IntegratorFactory rk4 = [] { return std::make_unique<Rk4>(0.02); };
+  MegnoSettings s;
+  s.maxTime = 60, s.interval = 10, s.outputPeriod = 60;
+  // tori and chaos, and a batch of three (the last lane repeats the third)
+  const std::vector<Eigen::VectorXd> x0s{hhState(0.125, 0.1, 0.1), hhState(0.125, 0.3, 0.3),
+                                         hhState(0.125, -0.2, 0.05)};
+  const auto lanes = megnoOnLanes(*model, rk4, x0s, s);
+  ASSERT_EQ(lanes.size(), 3u);
+  for (std::size_t k = 0; k < x0s.size(); ++k) {
+    ASSERT_FALSE(lanes[k].failure);
+    const MegnoEstimate alone = megno(*model, rk4, x0s[k], s).last;
+    EXPECT_EQ(lanes[k].last.megno, alone.megno) << k;
+    EXPECT_EQ(lanes[k].last.y, alone.y) << k;
+    EXPECT_EQ(lanes[k].last.fli, alone.fli) << k;
+    EXPECT_EQ(lanes[k].last.time, alone.time) << k;
+  }
+}
+
+TEST(Lanes, MegnoWithEverhartAgreesToItsAccuracyOnTori) {
+  const auto model = test::makeModel("henon_heiles", {{"energy", 0.125}});
+  const IntegratorFactory everhart = [] { return std::make_unique<Everhart>(0.05, 15, 12); };
+  MegnoSettings s;
+  s.maxTime = 200, s.interval = 10, s.outputPeriod = 200;
+  const std::vector<Eigen::VectorXd> x0s{hhState(0.125, 0.1, 0.1), hhState(0.125, 0.0, 0.2),
+                                         hhState(0.125, -0.1, 0.0), hhState(0.125, 0.05, -0.1)};
+  const auto lanes = megnoOnLanes(*model, everhart, x0s, s);
+  for (std::size_t k = 0; k < x0s.size(); ++k) {
+    const MegnoEstimate alone = megno(*model, everhart, x0s[k], s).last;
+    std::printf("  lane %zu: <Y> %.15f alone %.15f\n", k, lanes[k].last.megno, alone.megno);
+    EXPECT_LT(alone.megno, 2.5) << k << ": a torus";
+    EXPECT_NEAR(lanes[k].last.megno, alone.megno, 1e-9) << k;
+    EXPECT_NEAR(lanes[k].last.fli, alone.fli, 1e-9) << k;
+  }
+}
+
+TEST(Lanes, AnOrbitThatBlowsUpFailsAsItWouldAloneAndTheOthersKeepTheirAnswers) {
+  // above the escape energy 1/6 an orbit leaving through a saddle runs off to infinity in finite time (the
+  // model's energy only completes map points: the states are given whole)
+  const double e = 0.3;
+  const auto model = test::makeModel("henon_heiles", {});
+  const IntegratorFactory rk4 = [] { return std::make_unique<Rk4>(0.01); };
+  MegnoSettings s;
+  s.maxTime = 40, s.interval = 5, s.outputPeriod = 40;
+  const std::vector<Eigen::VectorXd> x0s{hhState(0.1, 0.1, 0.1), hhState(e, 0.6, 0.3),
+                                         hhState(0.1, -0.2, 0.05), hhState(e, 0.0, 0.1)};
+  const auto lanes = megnoOnLanes(*model, rk4, x0s, s);
+  int failed = 0;
+  for (std::size_t k = 0; k < x0s.size(); ++k) {
+    bool aloneFails = false;
+    MegnoEstimate alone;
+    try {
+      alone = megno(*model, rk4, x0s[k], s).last;
+    } catch (const ComputationError&) {
+      aloneFails = true;
+    }
+    EXPECT_EQ(static_cast<bool>(lanes[k].failure), aloneFails) << k;
+    failed += aloneFails ? 1 : 0;
+    if (!aloneFails) {
+      EXPECT_EQ(lanes[k].last.megno, alone.megno) << k;
+    }
+  }
+  EXPECT_GE(failed, 1) << "no orbit of the batch blew up: pick others";
+  EXPECT_LT(failed, 4) << "every orbit blew up: pick others";
+}
+
+} // namespace
+} // namespace rv
