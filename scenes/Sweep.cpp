@@ -94,7 +94,17 @@ std::string typeCodes() {
 auto megnoOnLanesQuantity(const std::string& name) {
   return [name](const SweepSpec&, const std::vector<Scene>& scenes,
                 const ToolControl& control) -> std::optional<std::vector<LaneValues>> {
+    // the megno tool's outputs (scenes/BuiltinTools.cpp: MegnoToolRun::result)
+    const auto pick = [&name](const MegnoEstimate& e) -> std::optional<double> {
+      if (name == "megno") return e.megno;
+      if (name == "megno_rate") return e.megnoRate;
+      if (name == "y") return e.y;
+      if (name == "fli") return e.fli;
+      if (name == "time") return e.time;
+      return std::nullopt;
+    };
     const Scene& first = scenes.front();
+    if (!pick(MegnoEstimate{})) return std::nullopt; // an output this batch does not know: one at a time
     if (!megnoRunsOnLanes(*first.model)) return std::nullopt;
     const RunSpec run = first.runSpec();
     if (run.integrator->id != "rk4") return std::nullopt;
@@ -111,15 +121,8 @@ auto megnoOnLanesQuantity(const std::string& name) {
         *first.model, [&] { return run.makeIntegrator(*first.model); }, starts, first.megno, control);
     if (results.empty()) throw Stopped{};
     std::vector<LaneValues> values;
-    for (const auto& r : results) {
-      const MegnoEstimate& e = r.last;
-      const double v = name == "megno"        ? e.megno
-                       : name == "megno_rate" ? e.megnoRate
-                       : name == "y"          ? e.y
-                       : name == "fli"        ? e.fli
-                                              : e.time;
-      values.push_back({{v}, r.failure});
-    }
+    for (const auto& r : results)
+      values.push_back({{*pick(r.last)}, r.failure});
     return values;
   };
 }
