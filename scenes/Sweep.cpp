@@ -111,6 +111,7 @@ auto megnoOnLanesQuantity(const std::string& name) {
     json common = first.document;
     common.erase("initial");
     std::vector<Eigen::VectorXd> starts;
+    starts.reserve(scenes.size());
     for (const Scene& s : scenes) {
       json doc = s.document;
       doc.erase("initial");
@@ -121,6 +122,7 @@ auto megnoOnLanesQuantity(const std::string& name) {
         *first.model, [&] { return run.makeIntegrator(*first.model); }, starts, first.megno, control);
     if (results.empty()) throw Stopped{};
     std::vector<LaneValues> values;
+    values.reserve(results.size());
     for (const auto& r : results)
       values.push_back({{*pick(r.last)}, r.failure});
     return values;
