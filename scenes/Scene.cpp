@@ -56,4 +56,14 @@ bool sampleColumns(const Scene& scene, double time, double every, const std::vec
   });
 }
 
+bool sameMap(const Scene& a, const Scene& b) {
+  if (a.modelEntry != b.modelEntry || a.integratorEntry != b.integratorEntry) return false;
+  if (a.model->parameters().values() != b.model->parameters().values()) return false;
+  if (a.integratorParameters->values() != b.integratorParameters->values()) return false;
+  const SectionSettings &p = a.poincare, &q = b.poincare;
+  return p.observable == q.observable && p.value == q.value && p.checkDirection == q.checkDirection &&
+         p.direction == q.direction && p.accuracy == q.accuracy && p.backward == q.backward &&
+         p.manySheeted == q.manySheeted && p.root == q.root && p.order == q.order && p.maxTime == q.maxTime;
+}
+
 } // namespace rv

@@ -61,6 +61,11 @@ struct Scene {
   RunSpec runSpec() const;
 };
 
+/// Whether two scenes draw the same Poincare map: the same problem with the same parameter values, the same
+/// method with the same settings, the same section (how many points a trajectory makes aside: that only
+/// counts for the trajectories to come). What the GUI's Apply keeps the map for.
+bool sameMap(const Scene& a, const Scene& b);
+
 /// The observables named `ids` as indices into the model's observables; InputError "WHAT: unknown observable
 /// 'x' of PROBLEM (rollviz describe PROBLEM)" for a name it does not know, or when `ids` is empty.
 std::vector<int> observableColumns(const Model& model, const std::vector<std::string>& ids,

@@ -8,6 +8,7 @@
 #include "scenes/BuiltinTools.h"
 #include "scenes/SceneLoader.h"
 #include "scenes/SceneTools.h"
+#include "scenes/Session.h"
 #include "scenes/ToolRunner.h"
 
 #include <algorithm>
@@ -282,6 +283,21 @@ std::unique_ptr<Chart> sceneChart(const Scene& scene, const std::string& view, c
   for (const auto& v : chartViews())
     known += " " + v;
   throw InputError("--view " + view + ": unknown (views:" + known + ")");
+}
+
+std::unique_ptr<PoincareChart> sessionMapChart(const Session& s) {
+  const Scene scene = sceneFromJson(s.scene, s.scenePath.empty() ? "session" : s.scenePath);
+  const auto names = PoincareMap(*scene.model, scene.startIntegrator(), scene.poincare).coordinateNames();
+  auto chart = std::make_unique<PoincareChart>(names.at(0), names.size() > 1 ? names[1] : "t");
+  for (const auto& t : s.trajectories) {
+    // the range the window showed (Set range): points first..last, 1-based
+    const auto n = static_cast<long>(t.x.size());
+    const long from = std::min(n, t.first - 1), to = t.last > 0 ? std::min(n, t.last) : n;
+    const std::vector<double> x(t.x.begin() + from, t.x.begin() + std::max(from, to));
+    const std::vector<double> y(t.y.begin() + from, t.y.begin() + std::max(from, to));
+    chart->addSeries(x, y, t.colour);
+  }
+  return chart;
 }
 
 } // namespace rv

@@ -38,4 +38,9 @@ std::unique_ptr<Chart> sceneChart(const Scene& scene, const std::string& view, c
                                   long points = 0, const std::string& diagram = "",
                                   std::unique_ptr<ChartProgress>* progress = nullptr);
 
+struct Session;
+/// A saved GUI session's map (scenes/Session.h): every trajectory's shown points (its Set range) in its
+/// colour, the axes named by the session's scene; nothing is computed.
+std::unique_ptr<PoincareChart> sessionMapChart(const Session& s);
+
 } // namespace rv

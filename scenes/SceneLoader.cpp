@@ -1,5 +1,6 @@
 #include "scenes/SceneLoader.h"
 #include "scenes/SectionTextKeys.h"
+#include "scenes/Session.h"
 
 #include "scenes/JsonFields.h"
 #include "scenes/ModelFile.h"
@@ -521,7 +522,12 @@ nlohmann::json parseSceneJson(std::istream& in, const std::string& source) {
 
 Scene loadScene(const std::string& path, const std::vector<SceneOverride>& overrides) {
   std::istringstream in(readInputFile(path, "scene file"));
-  return sceneFromJson(parseSceneJson(in, path), path, overrides);
+  nlohmann::json document = parseSceneJson(in, path);
+  if (isSession(document)) { // a GUI session: its scene (relative files resolve from the scene's own file)
+    const Session session = sessionFromJson(document, path);
+    return sceneFromJson(session.scene, session.scenePath.empty() ? path : session.scenePath, overrides);
+  }
+  return sceneFromJson(std::move(document), path, overrides);
 }
 
 std::string scenesDirectory() {

@@ -27,7 +27,8 @@ const std::set<std::string>& sceneKeys();
 /// object.
 nlohmann::json parseSceneJson(std::istream& in, const std::string& source);
 
-/// Loads and validates a scene file (a folder, an unreadable or empty file: InputError naming it).
+/// Loads and validates a scene file (a folder, an unreadable or empty file: InputError naming it); a GUI
+/// session file (scenes/Session.h) gives its scene.
 Scene loadScene(const std::string& path, const std::vector<SceneOverride>& overrides = {});
 
 /// Validates a scene document; `source` names it in messages.

@@ -12,6 +12,7 @@
 #include "render/export/VtkXmlFiles.h"
 #include "render/video/VideoExport.h"
 #include "scenes/SceneCharts.h"
+#include "scenes/Session.h"
 
 #include <cmath>
 #include <fmt/core.h>
@@ -126,6 +127,19 @@ Command addChartCommand(CLI::App& app) {
               return 0;
             }
             if (!o->csv.empty()) throw InputError("--csv: only with --view sweep");
+            if (o->view == "poincare")
+              if (const auto session = readSessionIfAny(o->scene.scene)) { // the map the GUI saved
+                if (!o->scene.sets.empty() || o->points > 0)
+                  throw InputError(std::string(o->scene.sets.empty() ? "--points" : "--set") +
+                                   ": a session's map is drawn as it was saved (other views compute)");
+                checkWritable(o->output, "-o");
+                const auto chart = sessionMapChart(*session);
+                auto ctx = createHeadlessContext(w, h);
+                chart->attach(ctx->window());
+                styleCharts(ctx->window(), style);
+                writeFigure(ctx->window(), o->output, "-o");
+                return 0;
+              }
             const Scene scene = o->scene.load();
             checkWritable(o->output, "-o");
             Progress progress(o->view);

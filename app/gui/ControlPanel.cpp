@@ -2,10 +2,12 @@
 
 #include "app/gui/ParameterForm.h"
 #include "dynamics/core/ModelRegistry.h"
+#include "dynamics/tools/ToolRegistry.h"
 #include "dynamics/tools/ToolSettings.h"
 #include "scenes/ModelFile.h"
 
 #include <QComboBox>
+#include <QLabel>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QTabWidget>
@@ -13,6 +15,7 @@
 #include <QVBoxLayout>
 #include <functional>
 #include <map>
+#include <regex>
 
 namespace rv {
 
@@ -23,10 +26,18 @@ ControlPanel::ControlPanel(QWidget* parent) : QWidget(parent) {
   tabs_->setElideMode(Qt::ElideNone); // whole titles, scroll arrows when they do not fit
   tabs_->setUsesScrollButtons(true);
   layout->addWidget(tabs_, 1);
-  auto* apply = new QPushButton("Apply", this);
+  // what the problem says of the values typed (a moment of inertia that is 0, a triangle inequality broken):
+  // at once, naming the tab and the field, not first at Apply
+  objection_ = new QLabel(this);
+  objection_->setObjectName("objection");
+  objection_->setStyleSheet("color: #b00020");
+  objection_->setWordWrap(true);
+  objection_->hide();
+  layout->addWidget(objection_);
+  auto* apply = apply_ = new QPushButton("Apply", this);
   apply->setObjectName("apply");
-  apply->setToolTip("Run the scene again with these values");
   layout->addWidget(apply);
+  setPending(false);
   connect(apply, &QPushButton::clicked, this, [this] {
     if (scene_) emit this->apply(editedDocument());
   });
@@ -70,6 +81,8 @@ void ControlPanel::selectTool(const std::string& id) {
 
 void ControlPanel::setScene(const Scene& scene) {
   scene_ = &scene;
+  setPending(false); // the values shown are the scene's
+  objection_->hide();
   // the tab shown stays shown when the scene runs again (Apply on the Method tab stays there)
   const QString shown = tabs_->count() > 0 ? tabs_->tabText(tabs_->currentIndex()) : QString();
   while (tabs_->count() > 0) {
@@ -83,6 +96,10 @@ void ControlPanel::setScene(const Scene& scene) {
                        const ParameterValues& values, QComboBox* chooser = nullptr) {
     auto* form = new ParameterForm(table);
     connect(form, &ParameterForm::rejected, this, &ControlPanel::message);
+    connect(form, &ParameterForm::edited, this, [this] {
+      setPending(true);
+      checkProblem();
+    });
     form->setValues(values);
     auto* scroll = new QScrollArea;
     scroll->setWidget(form);
@@ -157,6 +174,7 @@ void ControlPanel::setScene(const Scene& scene) {
       if (section.contains(t.observableKey) && section[t.observableKey].is_string())
         chooser->setCurrentText(QString::fromStdString(section[t.observableKey].get<std::string>()));
       chooser->setToolTip(QString::fromStdString(t.observableKey + ": the observable of " + t.title));
+      connect(chooser, &QComboBox::activated, this, [this] { setPending(true); });
       observables_.emplace_back(t.key + "." + t.observableKey, chooser);
     }
     add(t.key, QString::fromStdString(t.title), *t.table, scene.tool(t.key), chooser);
@@ -176,12 +194,61 @@ bool ControlPanel::chooseMethod(const std::string& id) {
   // the scene's own values for its method, the table's defaults for another
   auto* form = new ParameterForm(*entry->parameters);
   connect(form, &ParameterForm::rejected, this, &ControlPanel::message);
+  connect(form, &ParameterForm::edited, this, [this] { setPending(true); });
+  setPending(true);
   form->setValues(id == scene_->integratorEntry->id ? *scene_->integratorParameters
                                                     : ParameterValues(*entry->parameters));
   methodScroll_->setWidget(form); // deletes the old form
   for (auto& [key, f] : forms_)
     if (key == "method") f = form;
   return true;
+}
+
+QString ControlPanel::objection() const {
+  return objection_->text();
+}
+
+void ControlPanel::checkProblem() {
+  QString said;
+  if (const ParameterForm* problem = form("problem"); problem && scene_) {
+    try {
+      scene_->modelEntry->create(problem->values()); // the problem's own checks: one definition
+    } catch (const std::exception& e) {
+      said = "Problem tab, " + QString::fromStdString(e.what()) + " (Apply refuses these values)";
+    }
+  }
+  objection_->setText(said);
+  objection_->setVisible(!said.isEmpty());
+}
+
+QString ControlPanel::inPanelWords(const std::string& error, const std::string& source) {
+  // "SOURCE:section.key: why" (the scene loader's words) -> "TAB tab, key: why"
+  std::string rest = error;
+  if (!source.empty() && rest.rfind(source + ":", 0) == 0) rest = rest.substr(source.size() + 1);
+  static const std::regex where(R"(^([a-z_]+)(?:\.([A-Za-z0-9_]+))?: (.*)$)");
+  std::smatch m;
+  if (!std::regex_match(rest, m, where)) return QString::fromStdString(error);
+  const std::string section = m[1].str();
+  std::string tab;
+  if (section == "parameters")
+    tab = "Problem";
+  else if (section == "integrator")
+    tab = "Method";
+  else if (const ToolSection* t = findToolSection(section))
+    tab = t->title;
+  else
+    return QString::fromStdString(error); // not a tab's value (the initial state, the view): as it is
+  return QString::fromStdString(tab + " tab, " + (m[2].matched ? m[2].str() + ": " : "") + m[3].str());
+}
+
+void ControlPanel::setPending(bool pending) {
+  pending_ = pending;
+  QFont font = apply_->font();
+  font.setBold(pending);
+  apply_->setFont(font);
+  apply_->setText(pending ? "Apply ●" : "Apply");
+  apply_->setToolTip(pending ? "Run the scene with the changed values (in bold): they wait for Apply"
+                             : "Run the scene again with these values");
 }
 
 nlohmann::json ControlPanel::editedDocument() const {

@@ -10,6 +10,8 @@
 #include <vector>
 
 class QComboBox;
+class QPushButton;
+class QLabel;
 class QScrollArea;
 class QTabWidget;
 
@@ -41,6 +43,15 @@ public:
   bool chooseMethod(const std::string& id);
   /// The method Apply uses.
   const std::string& method() const { return method_; }
+  /// Whether values were changed since the scene was set: they wait for Apply (which then shows bold with a
+  /// dot, and the changed fields' labels bold).
+  bool pending() const { return pending_; }
+  /// What the problem objects to in the values typed (its tab and field named; empty: nothing), shown above
+  /// Apply as soon as a value changes.
+  QString objection() const;
+  /// A scene loader's refusal ("FILE:section.key: why") in the panel's words: "TAB tab, key: why" when the
+  /// value is one of a tab's; else as it is.
+  static QString inPanelWords(const std::string& error, const std::string& source);
 
 signals:
   /// Apply was pressed: the document to run.
@@ -53,6 +64,11 @@ signals:
   void message(const QString& text);
 
 private:
+  void setPending(bool pending);
+  void checkProblem();
+  QLabel* objection_ = nullptr;
+  bool pending_ = false;
+  QPushButton* apply_ = nullptr;
   QTabWidget* tabs_;
   QTreeWidget* toolTree_;
   QWidget* toolsTab_;

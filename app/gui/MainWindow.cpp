@@ -119,6 +119,14 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     map_->editJob(job, edited);
   });
   connect(tools_, &ToolManager::restarted, map_, &MapPanel::clearOutput);
+  connect(tools_, &ToolManager::aboutToDelete, this,
+          [this](const std::vector<int>& roots) { rememberDeletedForUndo(roots); });
+  tools_->setMore([this](int id) { // as many points again as the scene gives a trajectory
+    if (!scene_ || !map_->morePoints(id, scene_->poincare.maxPoints)) return false;
+    report(QString("trajectory #%1 goes on for %2 more points").arg(id).arg(scene_->poincare.maxPoints),
+           5000);
+    return true;
+  });
   connect(tools_, &ToolManager::message, this, [this](const QString& m) { report(m, 8000); });
   connect(tools_, &ToolManager::selectedJob, map_, &MapPanel::highlightJob);
   connect(tools_, &ToolManager::selectedJob, this, [this](int id) {
@@ -159,7 +167,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   splitDockWidget(toolsDock, resultsDock, Qt::Horizontal);
   resizeDocks({toolsDock}, {220}, Qt::Vertical); // the 3D view keeps most of the height; six rows show
   resizeDocks({toolsDock, resultsDock}, {700, 500}, Qt::Horizontal);
-  connect(control_, &ControlPanel::apply, this, [this](const nlohmann::json& doc) { runDocument(doc); });
+  connect(control_, &ControlPanel::apply, this, [this](const nlohmann::json& doc) { applyDocument(doc); });
   connect(control_, &ControlPanel::create, this, [this](const std::string& id) { createTool(id); });
   connect(control_, &ControlPanel::problemChosen, this, [this](const std::string& id) { chooseProblem(id); });
   connect(control_, &ControlPanel::message, this, [this](const QString& m) { report(m, 8000); });
@@ -237,19 +245,28 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   view->addAction(toggle);
 
   auto* file = menuBar()->addMenu("&File");
-  file->addAction("Open scene…", this, &MainWindow::openDialog);
+  file->addAction("Open scene…", this, &MainWindow::openDialog)
+      ->setToolTip("a scene file, or a session saved with Save session");
   file->addAction("Gallery…", this,
                   [this] {
-                    GalleryDialog gallery(this, [this](const QString& path) { openScene(path); });
+                    GalleryDialog gallery(this, [this](const QString& path) {
+                      if (mayReplaceMap("Opening " + QFileInfo(path).fileName())) openScene(path);
+                    });
                     gallery.exec();
                   })
       ->setToolTip("famous motions, ready to watch: the rattleback turning back, chaos in Henon-Heiles, ...");
   file->addAction("Open model…", this, [this] {
     const QString path = QFileDialog::getOpenFileName(this, "Open a model file (docs/models.md)", QString(),
                                                       "Model files (*.json)");
-    if (!path.isEmpty()) openModel(path);
+    if (!path.isEmpty() && mayReplaceMap("Opening " + QFileInfo(path).fileName())) openModel(path);
   });
   file->addAction("Save scene as…", this, &MainWindow::saveDialog)->setShortcut(QKeySequence::SaveAs);
+  file->addSeparator();
+  file->addAction("Save session…", this, &MainWindow::saveSessionDialog)
+      ->setToolTip("the scene, every trajectory of the map (to go on from where it stands), the Results log "
+                   "and the layout, in one file");
+  file->addAction("Open session…", this, &MainWindow::openSessionDialog);
+  file->addSeparator();
   file->addAction("Open sweep…", this,
                   [this] {
                     const QString path = QFileDialog::getOpenFileName(
@@ -271,6 +288,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   fillRecentMenu();
   file->addSeparator();
   file->addAction("Quit", this, &QWidget::close)->setShortcut(QKeySequence::Quit);
+  auto* edit = menuBar()->addMenu("&Edit");
+  undoAction_ = edit->addAction("Undo", this, [this] {
+    if (!undo()) report("nothing to undo", 3000);
+  });
+  undoAction_->setObjectName("undo");
+  undoAction_->setShortcut(QKeySequence::Undo);
+  undoAction_->setEnabled(false);
   auto* windows = menuBar()->addMenu("&Windows");
   windows->addAction("2D plot…", this, [this] { plotDialog(2); })
       ->setToolTip("observables against each other along the 3D view's run and every trajectory of the map, "
@@ -407,6 +431,7 @@ void MainWindow::setStyleOfAll(SurfaceStyle style) {
 bool MainWindow::openScene(const QString& path) {
   std::unique_ptr<Scene> scene;
   try {
+    if (readSessionIfAny(path.toStdString())) return openSession(path); // a saved session opens whole
     scene = std::make_unique<Scene>(loadScene(path.toStdString()));
   } catch (const std::exception& e) {
     QMessageBox::warning(this, "rollviz", QString("Cannot open the scene:\n%1").arg(e.what()));
@@ -460,17 +485,7 @@ void MainWindow::reloadModel() {
 }
 
 bool MainWindow::chooseProblem(const std::string& id) {
-  const std::size_t tools = map_->addedJobs().size(); // (the scene's own trajectory comes back with it)
-  if (tools > 0 &&
-      QMessageBox::question(
-          this, "rollviz",
-          QString(
-              "Open the default scene of %1?\nThe %2 tool(s) started on the map window (trajectories, fixed "
-              "points, families) belong to %3 and will be deleted.")
-              .arg(QString::fromStdString(id))
-              .arg(tools)
-              .arg(QString::fromStdString(scene_->model->info().id)),
-          QMessageBox::Yes | QMessageBox::No, QMessageBox::No) != QMessageBox::Yes) {
+  if (!mayReplaceMap(QString("Opening the default scene of %1").arg(QString::fromStdString(id)))) {
     if (auto* chooser = control_->findChild<QComboBox*>("problem_choice")) // shows the problem that stays
       chooser->setCurrentText(QString::fromStdString(scene_->model->info().id));
     return false;
@@ -482,31 +497,58 @@ bool MainWindow::chooseProblem(const std::string& id) {
   return openScene(QString::fromStdString(defaultScenePath(id)));
 }
 
-bool MainWindow::runDocument(const nlohmann::json& document, const QString& origin) {
-  std::unique_ptr<Scene> scene;
+std::unique_ptr<Scene> MainWindow::sceneOf(const nlohmann::json& document) {
   try {
-    scene = std::make_unique<Scene>(sceneFromJson(document, scene_ ? scene_->source : "edited scene"));
+    return std::make_unique<Scene>(sceneFromJson(document, scene_ ? scene_->source : "edited scene"));
   } catch (const std::exception& e) {
-    QMessageBox::warning(this, "rollviz", QString("Cannot run these values:\n%1").arg(e.what()));
-    return false;
+    // named as the control panel shows them (its tab and field), not by the scene file's JSON path
+    QMessageBox::warning(this, "rollviz",
+                         "Cannot run these values:\n" +
+                             ControlPanel::inPanelWords(e.what(), scene_ ? scene_->source : "edited scene"));
+    return nullptr;
   }
+}
+
+bool MainWindow::runDocument(const nlohmann::json& document, const QString& origin) {
+  auto scene = sceneOf(document);
+  if (!scene) return false;
   useScene(std::move(scene), scenePath_, origin);
   return true;
 }
 
-void MainWindow::useScene(std::unique_ptr<Scene> scene, const QString& path, const QString& origin) {
+bool MainWindow::applyDocument(const nlohmann::json& document) {
+  auto scene = sceneOf(document);
+  if (!scene) return false;
+  if (scene_ && sameMap(*scene_, *scene)) {
+    useScene(std::move(scene), scenePath_, origin_, MapUse::Keep);
+    return true;
+  }
+  if (!mayReplaceMap("Apply")) return false;
+  useScene(std::move(scene), scenePath_, origin_);
+  return true;
+}
+
+void MainWindow::useScene(std::unique_ptr<Scene> scene, const QString& path, const QString& origin,
+                          MapUse mapUse) {
+  const bool keep = mapUse == MapUse::Keep && scene_;
+  // a new initial state on a kept map: its trajectory joins the others
+  const bool newStart = keep && (scene_->initialState.size() != scene->initialState.size() ||
+                                 scene_->initialState != scene->initialState);
+  if (mapUse == MapUse::Replace && scene_) rememberMapForUndo();
   stream_.reset();
-  map_->stopAll(); // its jobs hold the old scene's model until setScene replaces them
+  if (!keep) map_->stopAll(); // its jobs hold the old scene's model until setScene replaces them
   if (visual_) view_->renderWindow()->RemoveRenderer(visual_->renderer());
   visual_.reset();
   if (apex_ && apexView_) apexView_->renderWindow()->RemoveRenderer(apex_->renderer());
   apex_.reset();
   if (apexTap_) apexTap_->closed = true;
   apexTap_.reset(), apexSource_ = -1;
-  for (PlotWindow* p : map_->plotWindows()) // they read the old model's observables
-    delete p;
+  if (!keep)
+    for (PlotWindow* p : map_->plotWindows()) // they read the old model's observables
+      delete p;
   scene_ = std::move(scene);
   scenePath_ = path;
+  origin_ = origin;
   const QString run = QString::fromStdString(scene_->runSpec().describe()); // "rk4(step=0.001) problem(...)"
   method_ = scene_->model->isMap() ? QString("iterated map")
                                    : run.left(run.indexOf(')') + 1); // the method and its settings
@@ -515,7 +557,12 @@ void MainWindow::useScene(std::unique_ptr<Scene> scene, const QString& path, con
   setWindowTitle(QString("rollviz — %1 (%2)")
                      .arg(origin.isEmpty() ? QFileInfo(path).fileName() : origin,
                           QString::fromStdString(scene_->model->info().id)));
-  map_->setScene(*scene_);
+  if (keep) {
+    map_->keepScene(*scene_);
+    if (newStart) map_->startSceneTrajectory();
+  } else {
+    map_->setScene(*scene_, mapUse != MapUse::Restore);
+  }
   control_->setScene(*scene_);
   watchModelFile();
   restart();
@@ -836,8 +883,9 @@ SweepWindow* MainWindow::openSweep(const QString& path) {
     auto* w = new SweepWindow(map_->jobs(), loadSweep(path.toStdString()), this);
     w->setAttribute(Qt::WA_DeleteOnClose);
     const QString origin = "a point of " + QFileInfo(path).fileName();
-    connect(w, &SweepWindow::openScene, this,
-            [this, origin](const nlohmann::json& doc) { runDocument(doc, origin); });
+    connect(w, &SweepWindow::openScene, this, [this, origin](const nlohmann::json& doc) {
+      if (mayReplaceMap("Opening a point of the sweep")) runDocument(doc, origin);
+    });
     w->show();
     return w;
   } catch (const std::exception& e) {
@@ -919,35 +967,6 @@ void MainWindow::feedApexFromMap() {
   if (apexWindow_->isVisible()) apexView_->update();
 }
 
-void MainWindow::saveDialog() {
-  if (!scene_) return;
-  const QString path =
-      QFileDialog::getSaveFileName(this, "Save scene", QFileInfo(scenePath_).fileName(), "Scenes (*.json)");
-  QString why;
-  if (!path.isEmpty() && !saveSceneTo(path, &why))
-    QMessageBox::warning(this, "rollviz", "Cannot save the scene:\n" + why);
-}
-
-bool MainWindow::saveSceneTo(const QString& path, QString* why) {
-  if (!scene_) return false;
-  const nlohmann::json doc = sceneMovedTo(documentWithEdits(), scene_->source, path.toStdString());
-  try {
-    AtomicFile file(path.toStdString(), "scene");
-    std::ofstream out(file.tempPath());
-    out << doc.dump(2) << "\n";
-    out.close();
-    if (!out) throw std::runtime_error("cannot write " + path.toStdString());
-    file.commit();
-  } catch (const std::exception& e) {
-    report(QString("Cannot save the scene: %1").arg(e.what()), 0);
-    if (why) *why = e.what();
-    return false;
-  }
-  rememberRecent(path);
-  report("saved " + path, 5000);
-  return true;
-}
-
 void MainWindow::rememberRecent(const QString& path) {
   QStringList recent = QSettings().value("recentScenes").toStringList();
   recent.removeAll(path);
@@ -967,69 +986,13 @@ void MainWindow::fillRecentMenu() {
     const bool shared = std::count_if(recent.begin(), recent.end(),
                                       [&](const QString& q) { return QFileInfo(q).fileName() == name; }) > 1;
     const QString label = shared ? QFileInfo(p).dir().dirName() + "/" + name : name;
-    recentMenu_->addAction(label, this, [this, p] { openScene(p); })->setToolTip(p);
+    recentMenu_
+        ->addAction(label, this,
+                    [this, p] {
+                      if (mayReplaceMap("Opening " + QFileInfo(p).fileName())) openScene(p);
+                    })
+        ->setToolTip(p);
   }
-}
-
-QString MainWindow::savedJobsPath() {
-  return QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation) + "/running-jobs.json";
-}
-
-int MainWindow::saveRunningJobs() {
-  if (!scene_) return 0;
-  const nlohmann::json trajectories = map_->saveRunning();
-  if (trajectories.empty()) {
-    QFile::remove(savedJobsPath());
-    return 0;
-  }
-  const nlohmann::json saved{
-      {"scene", scenePath_.toStdString()}, {"document", scene_->document}, {"trajectories", trajectories}};
-  QDir().mkpath(QFileInfo(savedJobsPath()).absolutePath());
-  QSaveFile file(savedJobsPath()); // written whole, then renamed
-  const std::string text = saved.dump();
-  if (!file.open(QIODevice::WriteOnly) || file.write(text.data(), static_cast<qint64>(text.size())) < 0 ||
-      !file.commit())
-    return 0;
-  return static_cast<int>(trajectories.size());
-}
-
-int MainWindow::resumeSavedJobs() {
-  QFile file(savedJobsPath());
-  if (!file.open(QIODevice::ReadOnly)) return 0;
-  const QByteArray text = file.readAll();
-  file.close();
-  QFile::remove(savedJobsPath()); // offered once, whatever comes of it
-  try {
-    const nlohmann::json saved = nlohmann::json::parse(text.constData(), text.constData() + text.size());
-    const QString path = QString::fromStdString(saved.at("scene").get<std::string>());
-    useScene(std::make_unique<Scene>(sceneFromJson(saved.at("document"), path.toStdString())), path);
-    const int n = map_->resume(saved.at("trajectories"));
-    report(QString("continued %1 trajectories from the last session").arg(n), 5000);
-    return n;
-  } catch (const std::exception& e) {
-    QMessageBox::warning(this, "rollviz",
-                         QString("Cannot continue the saved trajectories:\n%1").arg(e.what()));
-    return 0;
-  }
-}
-
-void MainWindow::offerSavedJobs() {
-  QFile file(savedJobsPath());
-  if (!file.open(QIODevice::ReadOnly)) return;
-  const auto saved = nlohmann::json::parse(file.readAll().toStdString(), nullptr, false);
-  file.close();
-  const std::size_t n =
-      saved.is_object() && saved.contains("trajectories") ? saved["trajectories"].size() : 0;
-  const QString scene = saved.is_object() ? QString::fromStdString(saved.value("scene", std::string())) : "";
-  if (n == 0 ||
-      QMessageBox::question(this, "rollviz",
-                            QString("%1 trajectories of %2 were running when rollviz closed.\nContinue them?")
-                                .arg(n)
-                                .arg(QFileInfo(scene).fileName())) != QMessageBox::Yes) {
-    QFile::remove(savedJobsPath());
-    return;
-  }
-  resumeSavedJobs();
 }
 
 void MainWindow::closeEvent(QCloseEvent* e) {
@@ -1046,7 +1009,7 @@ void MainWindow::dragEnterEvent(QDragEnterEvent* e) {
 void MainWindow::dropEvent(QDropEvent* e) {
   for (const QUrl& url : e->mimeData()->urls())
     if (url.isLocalFile() && url.toLocalFile().endsWith(".json")) {
-      openScene(url.toLocalFile());
+      if (mayReplaceMap("Opening " + url.fileName())) openScene(url.toLocalFile());
       break;
     }
 }
@@ -1054,7 +1017,7 @@ void MainWindow::dropEvent(QDropEvent* e) {
 void MainWindow::openDialog() {
   const QString path = QFileDialog::getOpenFileName(
       this, "Open scene", QString::fromStdString(scenesDirectory()), "Scenes (*.json)");
-  if (!path.isEmpty()) openScene(path);
+  if (!path.isEmpty() && mayReplaceMap("Opening " + QFileInfo(path).fileName())) openScene(path);
 }
 
 } // namespace rv

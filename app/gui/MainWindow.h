@@ -5,6 +5,7 @@
 #include "dynamics/jobs/TrajectoryStream.h"
 #include "render/VisualScene.h"
 #include "scenes/Scene.h"
+#include "scenes/Session.h"
 
 #include <nlohmann/json.hpp>
 
@@ -56,6 +57,26 @@ public:
   /// Runs a scene document (the control panel's edits; a sweep's cell, `origin` naming it in the title);
   /// on failure shows why and keeps the current scene.
   bool runDocument(const nlohmann::json& document, const QString& origin = {});
+  /// Apply in the control panel: runs the edited document. The map window stays as it is when the edits
+  /// leave its map the same (sameMap: the same problem, parameters, method and section -- a new number of
+  /// points counts for the trajectories to come, a new initial state adds its trajectory); otherwise it is
+  /// replaced, after asking (mayReplaceMap). False when the document is refused or the user keeps the map.
+  bool applyDocument(const nlohmann::json& document);
+  /// Before a user's action (`action`: "Apply", "Open ...") replaces the map window: asks whether its tools
+  /// may go when the user added any (Edit > Undo brings the trajectories back); true at once when not.
+  bool mayReplaceMap(const QString& action);
+  /// Edit > Undo (Ctrl+Z): brings back what the last destructive action took -- a replaced map (its scene and
+  /// every trajectory, going on where they stood) or deleted trajectories. False when there is nothing.
+  bool undo();
+  /// What Undo would bring back, in words ("" when nothing).
+  QString undoText() const;
+  /// File > Save session: the scene as shown, every trajectory of the map (points, colour, range, the state
+  /// to go on from), the Results log and the window's layout, in one JSON file (scenes/Session.h) written
+  /// whole; false (the reason in Results and `why`) when it cannot.
+  bool saveSessionTo(const QString& path, QString* why = nullptr);
+  /// Opens a session file: its scene, its trajectories in place of the map's (those that ran go on, bit for
+  /// bit), its Results log and layout. On failure shows why and keeps what is open.
+  bool openSession(const QString& path);
   /// Where the map window's running trajectories are saved when the window closes (the next start offers to
   /// continue them): running-jobs.json in the application's data folder.
   static QString savedJobsPath();
@@ -175,7 +196,33 @@ private:
   void showStatus();
   /// Replaces the running scene (from `source`, a file or "edited"; `origin`, when given, names it in the
   /// title instead of the file).
-  void useScene(std::unique_ptr<Scene> scene, const QString& source, const QString& origin = {});
+  /// `map`: Replace the map window's content (remembered for Undo first), Keep it (the same map), or Restore:
+  /// empty it for saved trajectories the caller puts in.
+  enum class MapUse { Replace, Keep, Restore };
+  /// The scene of a document; nullptr after saying why in a message box.
+  std::unique_ptr<Scene> sceneOf(const nlohmann::json& document);
+  void useScene(std::unique_ptr<Scene> scene, const QString& source, const QString& origin = {},
+                MapUse map = MapUse::Replace);
+  /// One step of Edit > Undo: a replaced map (its scene and trajectories), or trajectories deleted.
+  struct UndoStep {
+    QString what;
+    std::optional<Session> map;
+    std::vector<SavedTrajectory> deleted;
+  };
+  std::vector<UndoStep> undo_;
+  QAction* undoAction_ = nullptr;
+  static constexpr std::size_t kUndoSteps = 20;
+  void pushUndo(UndoStep step);
+  /// The map as it stands, as an Undo step, before it is replaced.
+  void rememberMapForUndo();
+  /// The trajectories among jobs `roots` (and those under them), before Delete takes them.
+  void rememberDeletedForUndo(const std::vector<int>& roots);
+  void saveSessionDialog();
+  void openSessionDialog();
+  /// Puts a session's scene and trajectories in place (no question; with `remember`, what was open becomes an
+  /// Undo step). Throws InputError, changing nothing, for a scene that cannot be run.
+  void useSession(const Session& session, const QString& file, bool remember);
+  QString origin_; ///< what the title names as the scene's source instead of its file ("" : the file)
   QtVtkWidget* view_;
   VisualizerSettings* settings_;
   QMenu* recentMenu_;

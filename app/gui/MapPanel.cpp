@@ -108,7 +108,7 @@ std::vector<int> MapPanel::sceneJobs() const {
   return ids;
 }
 
-void MapPanel::setScene(const Scene& scene) {
+void MapPanel::setScene(const Scene& scene, bool startTrajectory) {
   // the map's tools belong to the old scene; a chart's or a sweep's job belongs to its window, which computes
   // its own scene
   for (int id : sceneJobs()) // by id: removing one removes the tools under it
@@ -135,7 +135,15 @@ void MapPanel::setScene(const Scene& scene) {
     chart_->clear();
     chart_->setTitles(axisNames_[0], axisNames_[1]);
   }
+  sceneStart_ = -1;
+  if (!startTrajectory) return;
   start(scene.initialState);
+  sceneStart_ = series_.back().job->id();
+}
+
+void MapPanel::startSceneTrajectory() {
+  if (!scene_) return;
+  start(scene_->initialState);
   sceneStart_ = series_.back().job->id();
 }
 
@@ -161,18 +169,15 @@ void MapPanel::start(const Eigen::VectorXd& state) {
 }
 
 namespace {
-nlohmann::json valuesJson(const ParameterValues& v) {
-  nlohmann::json j = nlohmann::json::object();
+std::map<std::string, double> valuesMap(const ParameterValues& v) {
+  std::map<std::string, double> m;
   for (const auto& spec : v.table().specs())
-    j[spec.id] = v[spec.id];
-  return j;
+    m[spec.id] = v[spec.id];
+  return m;
 }
-void setValues(ParameterValues& v, const nlohmann::json& j, const std::string& what) {
-  if (!j.is_object()) throw InputError(what + ": damaged");
-  for (const auto& [id, value] : j.items()) {
-    if (!value.is_number()) throw InputError(what + "." + id + ": damaged");
-    v.set(id, value.get<double>(), what + "." + id);
-  }
+void setValues(ParameterValues& v, const std::map<std::string, double>& m, const std::string& what) {
+  for (const auto& [id, value] : m)
+    v.set(id, value, what + "." + id);
 }
 } // namespace
 
@@ -196,58 +201,115 @@ std::size_t MapPanel::takePoints(Series& s, std::size_t most) {
   return taken;
 }
 
-nlohmann::json MapPanel::saveRunning() {
-  nlohmann::json out = nlohmann::json::array();
+std::vector<SavedTrajectory> MapPanel::saveTrajectories(const std::vector<int>& ids, bool onlyRunning,
+                                                        bool goOn) {
+  std::vector<SavedTrajectory> out;
   for (auto& s : series_) {
-    if (!s.job->running()) continue;
-    s.job->stop();
+    const bool wanted = ids.empty() || std::find(ids.begin(), ids.end(), s.job->id()) != ids.end();
+    const bool running = s.job->running();
+    if (!wanted || (onlyRunning && !running)) continue;
+    s.job->stop(); // (its state is read only while it does not run)
     // what was produced before the stop, drawn or not yet, is part of what is saved
     while (takePoints(s, std::numeric_limits<std::size_t>::max()) > 0) {
     }
     Snapshot state;
     s.task->save(state);
     const RunSpec& spec = s.task->spec();
-    out.push_back({{"start", std::vector<double>(spec.initialState.data(),
-                                                 spec.initialState.data() + spec.initialState.size())},
-                   {"parameters", valuesJson(spec.modelParameters)},
-                   {"integrator", valuesJson(spec.integratorParameters)},
-                   {"colour", s.colour},
-                   {"x", s.x},
-                   {"y", s.y},
-                   {"z", s.z},
-                   {"state", snapshotToJson(state)}});
+    SavedTrajectory t;
+    t.start.assign(spec.initialState.data(), spec.initialState.data() + spec.initialState.size());
+    t.parameters = valuesMap(spec.modelParameters);
+    t.integrator = valuesMap(spec.integratorParameters);
+    t.colour = s.colour;
+    t.x = s.x, t.y = s.y, t.z = s.z;
+    t.state = std::move(state.values);
+    t.running = running;
+    t.first = s.first, t.last = s.last;
+    t.origin = s.origin.toStdString();
+    out.push_back(std::move(t));
+    if (goOn && running) s.job->start();
   }
+  return out;
+}
+
+nlohmann::json MapPanel::saveRunning() {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& t : saveTrajectories({}, true, false))
+    out.push_back(toJson(t));
   return out;
 }
 
 int MapPanel::resume(const nlohmann::json& saved) {
   if (!scene_ || !saved.is_array()) return 0;
-  int n = 0;
-  for (const auto& t : saved) {
+  std::vector<SavedTrajectory> list;
+  for (std::size_t i = 0; i < saved.size(); ++i)
+    list.push_back(savedTrajectoryFromJson(saved[i], Where{"saved jobs", "[" + std::to_string(i) + "]"}));
+  return restoreTrajectories(list);
+}
+
+int MapPanel::restoreTrajectories(const std::vector<SavedTrajectory>& saved) {
+  if (!scene_) return 0;
+  // checked whole first: a list that does not fit the scene adds nothing
+  std::vector<std::unique_ptr<PoincareTask>> tasks;
+  for (std::size_t n = 0; n < saved.size(); ++n) {
+    const SavedTrajectory& t = saved[n];
     const std::string what = "saved trajectory " + std::to_string(n + 1);
     RunSpec spec = scene_->runSpec();
-    const auto start = t.at("start").get<std::vector<double>>();
-    if (static_cast<Eigen::Index>(start.size()) != spec.initialState.size())
+    if (static_cast<Eigen::Index>(t.start.size()) != spec.initialState.size())
       throw InputError(what + ": made for another problem");
     spec.initialState =
-        Eigen::Map<const Eigen::VectorXd>(start.data(), static_cast<Eigen::Index>(start.size()));
-    setValues(spec.modelParameters, t.at("parameters"), what + ".parameters");
-    setValues(spec.integratorParameters, t.at("integrator"), what + ".integrator");
+        Eigen::Map<const Eigen::VectorXd>(t.start.data(), static_cast<Eigen::Index>(t.start.size()));
+    setValues(spec.modelParameters, t.parameters, what + ".parameters");
+    setValues(spec.integratorParameters, t.integrator, what + ".integrator");
     auto task = std::make_unique<PoincareTask>(spec, scene_->poincare);
-    Snapshot state = snapshotFromJson(t.at("state"), what);
+    Snapshot state{t.state, 0};
     task->restore(state);
-    PoincareTask* raw = task.get();
-    Job& job = jobs_.add(std::move(task));
-    const Rgb colour = t.at("colour").get<Rgb>();
-    const int plot = chart_->addSeries({}, {}, colour);
-    series_.push_back({&job, raw, t.at("x").get<std::vector<double>>(), t.at("y").get<std::vector<double>>(),
-                       t.at("z").get<std::vector<double>>(), plot, colour});
-    drawSeries(series_.back());
-    feedPlots(series_.back());
-    job.start();
-    ++n;
+    tasks.push_back(std::move(task));
   }
-  return n;
+  for (std::size_t n = 0; n < saved.size(); ++n) {
+    const SavedTrajectory& t = saved[n];
+    PoincareTask* raw = tasks[n].get();
+    Job& job = jobs_.add(std::move(tasks[n]));
+    const int plot = chart_->addSeries({}, {}, t.colour);
+    series_.push_back({&job, raw, t.x, t.y, t.z, plot, t.colour});
+    Series& s = series_.back();
+    s.first = t.first, s.last = t.last;
+    s.origin = QString::fromStdString(t.origin);
+    drawSeries(s);
+    feedPlots(s);
+    if (colourByMegno_) startMegno(s);
+    // a finished one finishes again at once (its limit is reached); one the user had stopped stays so
+    if (t.running || (raw->limit() > 0 && raw->produced() >= raw->limit())) job.start();
+  }
+  return static_cast<int>(saved.size());
+}
+
+void MapPanel::keepScene(const Scene& scene) {
+  scene_ = &scene; // the trajectories run on their own copies of what defines them
+}
+
+void MapPanel::replaceTrajectories(const std::vector<SavedTrajectory>& saved) {
+  for (int id : sceneJobs())
+    if (Job* j = jobs_.find(id)) removeJob(*j);
+  sceneStart_ = -1;
+  restoreTrajectories(saved);
+  if (!series_.empty()) chart_->select(series_.back().plot);
+}
+
+bool MapPanel::morePoints(int id, long more) {
+  for (auto& s : series_)
+    if (s.job->id() == id) {
+      if (s.job->running() || s.task->limit() <= 0) return false;
+      s.job->edit([more](Task& t) { static_cast<PoincareTask&>(t).extend(more); });
+      s.job->start();
+      return true;
+    }
+  return false;
+}
+
+std::pair<std::vector<double>, std::vector<double>> MapPanel::trajectoryPoints(int id) const {
+  for (const auto& s : series_)
+    if (s.job->id() == id) return {s.x, s.y};
+  return {};
 }
 
 std::vector<double> MapPanel::mapPoint(double x, double y) const {

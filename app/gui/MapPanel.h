@@ -13,6 +13,7 @@
 #include "dynamics/jobs/PlotTap.h"
 #include "render/charts/PoincareChart.h"
 #include "scenes/Scene.h"
+#include "scenes/Session.h"
 
 #include <QPointer>
 #include <QWidget>
@@ -48,9 +49,14 @@ public:
   void setClickMode(ClickMode mode);
   ClickMode clickMode() const { return clickMode_; }
   ~MapPanel() override;
-  /// Drops every trajectory and starts one at the scene's initial state (the scene must outlive the panel's
-  /// use).
-  void setScene(const Scene& scene);
+  /// Drops every trajectory and tool of the map and, with `startTrajectory`, starts one at the scene's
+  /// initial state (the scene must outlive the panel's use).
+  void setScene(const Scene& scene, bool startTrajectory = true);
+  /// Takes a scene that defines the same map (problem, parameters, method, section): everything on the map
+  /// stays; new clicks use the new scene (e.g. its number of points).
+  void keepScene(const Scene& scene);
+  /// Starts a trajectory at the scene's initial state, the one setScene starts.
+  void startSceneTrajectory();
   /// The top-level jobs that belong to the scene (trajectories, searches, families; not the chart and sweep
   /// windows' jobs, which compute their own scene): what setScene deletes.
   std::vector<int> sceneJobs() const;
@@ -80,6 +86,18 @@ public:
   void startBifurcationTree();
   /// A fixed-point search from the scene's fixedpoint.guess.
   void searchFromGuess();
+  /// The trajectories `ids` (empty: all; with `onlyRunning`, those running), each with its points and the
+  /// state to go on from: stopped to be read, and started again with `goOn`.
+  std::vector<SavedTrajectory> saveTrajectories(const std::vector<int>& ids, bool onlyRunning, bool goOn);
+  /// Adds saved trajectories to the map under the current scene, each with its points, colour and range;
+  /// those that ran go on (bit for bit). Throws InputError, adding none, when one does not fit the scene.
+  int restoreTrajectories(const std::vector<SavedTrajectory>& saved);
+  /// Deletes every trajectory and tool of the map and puts the saved trajectories in their place (Undo, Open
+  /// session).
+  void replaceTrajectories(const std::vector<SavedTrajectory>& saved);
+  /// A finished trajectory goes on for `more` points (bit for bit one longer run); false for a job that is
+  /// not a trajectory, runs, or has no limit.
+  bool morePoints(int id, long more);
   /// The running trajectories, stopped and saved (their settings, whole state and points) to go on after a
   /// restart (MainWindow saves them when it closes); an empty array when none runs.
   nlohmann::json saveRunning();
@@ -116,6 +134,8 @@ public:
   bool setJobRange(int id, long first, long last);
   /// The points of trajectory `id` shown now (tests).
   long shownPoints(int id) const;
+  /// The map points trajectory `id` has drawn so far, x and y (empty for no trajectory).
+  std::pair<std::vector<double>, std::vector<double>> trajectoryPoints(int id) const;
   /// Colours every trajectory, those running and those to come, by its MEGNO <Y> (a MEGNO job each, under
   /// the trajectory's job, started once); off gives back their own colours.
   void setColourByMegno(bool on);

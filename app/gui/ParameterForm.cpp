@@ -101,6 +101,7 @@ ParameterForm::ParameterForm(const ParameterTable& table, QWidget* parent) : QWi
       connect(box, &QAbstractSpinBox::editingFinished, problem, &QLabel::hide);
     }
     form->addRow(label, field);
+    labels_.push_back(label);
     editors_.push_back(editor);
     problems_.push_back(problem);
   }
@@ -111,6 +112,11 @@ ParameterForm::ParameterForm(const ParameterTable& table, QWidget* parent) : QWi
 void ParameterForm::touch(std::size_t i) {
   if (blocked_) return;
   touched_[i] = true;
+  // a changed value not yet run: its label says so until Apply (or another scene) sets the values again
+  QFont bold = labels_[i]->font();
+  bold.setBold(true);
+  labels_[i]->setFont(bold);
+  labels_[i]->setProperty("pending", true);
   emit edited();
 }
 
@@ -124,6 +130,12 @@ std::vector<std::string> ParameterForm::touched() const {
 void ParameterForm::setValues(const ParameterValues& values) {
   blocked_ = true; // programmatic changes are not the user's edits
   touched_.assign(editors_.size(), false);
+  for (QLabel* l : labels_) {
+    QFont plain = l->font();
+    plain.setBold(false);
+    l->setFont(plain);
+    l->setProperty("pending", false);
+  }
   for (std::size_t i = 0; i < editors_.size(); ++i) {
     const double v = values.values()[i];
     if (auto* c = qobject_cast<QComboBox*>(editors_[i]))

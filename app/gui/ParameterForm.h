@@ -20,7 +20,8 @@ public:
   /// The values as edited.
   ParameterValues values() const;
   const ParameterTable& table() const { return table_; }
-  /// The ids of the parameters the user changed since setValues.
+  /// The ids of the parameters the user changed since setValues (their labels are bold until then: a value
+  /// that waits for Apply).
   std::vector<std::string> touched() const;
   /// The editor of parameter `id` (for tests), or nullptr.
   QWidget* editor(const std::string& id) const;
@@ -39,6 +40,7 @@ private:
   bool blocked_ = false;
   std::vector<QWidget*> editors_;
   std::vector<QLabel*> problems_;
+  std::vector<QLabel*> labels_;
   std::vector<bool> touched_;
 };
 

@@ -44,7 +44,9 @@ ToolManager::ToolManager(JobTree& jobs, std::function<void(Job&)> remove, QWidge
     connect(add(text, tip), &QPushButton::clicked, this, slot);
   };
   button("Stop", "stop the selected tool (it can continue later)", &ToolManager::stopSelected);
-  button("Start", "start the selected tool, or continue it from where it stopped",
+  button("Start",
+         "start the selected tool, or continue it from where it stopped; a finished trajectory of the map "
+         "goes on for as many points again (the control panel's poincare.points)",
          &ToolManager::continueSelected);
   button("Restart", "start the selected tool again from the beginning", &ToolManager::restartSelected);
   button(
@@ -64,7 +66,15 @@ ToolManager::ToolManager(JobTree& jobs, std::function<void(Job&)> remove, QWidge
       add("Set range…", "which of the selected trajectory's points show (from the first-th to the last-th)"),
       &QPushButton::clicked, this, [this] { rangeSelected(); });
   button("Stop all", "stop every tool", &ToolManager::stopAll);
-  button("Delete all", "stop and delete every tool", &ToolManager::deleteAll);
+  connect(
+      add("Delete all", "stop and delete every tool (asks first; Edit > Undo brings the trajectories back)"),
+      &QPushButton::clicked, this, [this] {
+        if (QMessageBox::question(this, "Delete all",
+                                  QString("Delete all %1 tools? Edit > Undo brings the trajectories back.")
+                                      .arg(jobs_.jobs().size()),
+                                  QMessageBox::Yes | QMessageBox::No, QMessageBox::No) == QMessageBox::Yes)
+          deleteAll();
+      });
   layout->addLayout(buttons);
   connect(tree_, &QTreeWidget::currentItemChanged, this, [this] {
     const Job* j = selected();
@@ -159,7 +169,11 @@ void ToolManager::updateButtons() {
   };
   const char* none = "select a tool first";
   enable("stop", running, j ? "the tool is not running" : none);
-  enable("start", j && !running && !finished, !j ? none : running ? "it runs" : "it has finished: Restart");
+  const bool more = finished && more_ && drawsPoints; // a finished trajectory goes on (more_ says if it can)
+  enable("start", j && !running && (!finished || more),
+         !j        ? none
+         : running ? "it runs"
+                   : "it has finished: Restart");
   enable("restart", j != nullptr, none);
   enable("edit", j && !running && editor_, !j ? none : "stop the tool first");
   enable("delete", j != nullptr, none);
@@ -197,7 +211,12 @@ void ToolManager::stopSelected() {
 }
 
 void ToolManager::continueSelected() {
-  if (Job* j = selected()) j->start();
+  if (Job* j = selected()) {
+    if (j->status() == Job::Status::Finished && more_)
+      more_(j->id());
+    else
+      j->start();
+  }
   refresh();
 }
 
@@ -210,7 +229,10 @@ void ToolManager::restartSelected() {
 }
 
 void ToolManager::deleteSelected() {
-  if (Job* j = selected()) remove_(*j);
+  if (Job* j = selected()) {
+    emit aboutToDelete({j->id()});
+    remove_(*j);
+  }
   refresh();
 }
 
@@ -237,6 +259,10 @@ void ToolManager::stopAll() {
 }
 
 void ToolManager::deleteAll() {
+  std::vector<int> roots;
+  for (const Job* j : jobs_.jobs())
+    if (!j->parent()) roots.push_back(j->id());
+  if (!roots.empty()) emit aboutToDelete(roots);
   for (Job* j : jobs_.jobs()) // parents first: deleting one takes its children with it
     if (jobs_.find(j->id()) == j && !j->parent()) remove_(*j);
   refresh();

@@ -12,6 +12,7 @@
 #include <map>
 #include <optional>
 #include <set>
+#include <vector>
 
 class QPushButton;
 class QTreeWidget;
@@ -48,6 +49,9 @@ public:
   /// Selects the tool the selected one hangs under (manual: Find parent).
   void selectParent();
   void setEditor(std::function<void(Job&)> editor) { editor_ = std::move(editor); }
+  /// Start on a finished trajectory of the map: `more(id)` makes it go on (set by the owner; false when it
+  /// cannot).
+  void setMore(std::function<bool(int)> more) { more_ = std::move(more); }
   /// Colour of output and Set range act on the selected job through these (set by the owner; they return
   /// false when the job has no such output).
   void setOutputActions(std::function<bool(int, const Rgb&)> colour,
@@ -75,6 +79,8 @@ signals:
   void selectedJob(int id);
   /// A job was restarted: what it drew goes.
   void restarted(int id);
+  /// Jobs `ids` (with those under them) are about to be deleted by Delete or Delete all (Undo keeps them).
+  void aboutToDelete(const std::vector<int>& ids);
 
 public:
   QTreeWidget* tree() const { return tree_; }
@@ -83,6 +89,7 @@ private:
   JobTree& jobs_;
   std::function<void(Job&)> remove_;
   std::function<void(Job&)> editor_;
+  std::function<bool(int)> more_;
   std::function<bool(int, const Rgb&)> colour_;
   std::function<bool(int, long, long)> range_;
   std::function<RowLook(int)> look_;

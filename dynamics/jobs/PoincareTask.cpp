@@ -98,6 +98,15 @@ void PoincareTask::restore(Snapshot& s) {
   produced_ = produced;
 }
 
+void PoincareTask::extend(long more) {
+  if (settings_.maxPoints <= 0 || more <= 0) return;
+  // the map rebuilt with the larger limit takes the state it stands in: the same steps as one long run
+  Snapshot s;
+  save(s);
+  settings_.maxPoints += more;
+  restore(s);
+}
+
 Eigen::VectorXd PoincareTask::lastState() const {
   return last_ ? map_->lastState() : map_->integrator().state();
 }

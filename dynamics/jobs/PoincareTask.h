@@ -43,6 +43,13 @@ public:
   /// same spec and settings goes on with the same points, bit for bit (the GUI's jobs across a restart).
   void save(Snapshot& s) const;
   void restore(Snapshot& s);
+  /// `more` points beyond the limit it has (only while the job does not run; Job::edit): a finished
+  /// trajectory goes on from where it stopped, bit for bit as if its limit had been the larger one. Nothing
+  /// changes for a trajectory without a limit.
+  void extend(long more);
+  /// The points it has produced, and how many it makes in all (0: no limit).
+  long produced() const { return produced_; }
+  long limit() const { return settings_.maxPoints; }
 
 private:
   void build(const Eigen::VectorXd& x0, double t0);

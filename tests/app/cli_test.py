@@ -440,6 +440,52 @@ class Cli(unittest.TestCase):
         self.assertBadInput(run("chart", SCENE, "--view", "nope", "-o", self.path("n.png")), "--view")
         self.assertFalse(os.path.exists(self.path("n.png")))
 
+    def test_a_gui_session_is_a_scene_and_its_saved_map_draws_headless(self):
+        # a session as File > Save session writes it (scenes/Session.h): the scene and the map's trajectories
+        import json as js
+        import math
+        with open(os.path.join(SRC, "scenes", "henon_heiles.json")) as f:
+            hh = js.load(f)
+        red = [(-0.2 + 0.05 * math.cos(k / 10), 0.05 * math.sin(k / 10)) for k in range(63)]
+        green = [(0.2 + 0.05 * math.cos(k / 10), 0.05 * math.sin(k / 10)) for k in range(63)]
+        def trajectory(points, colour):
+            return {"start": [0, 0.1, 0.1, 0.3], "parameters": {"energy": 0.125}, "integrator": {},
+                    "colour": colour, "x": [p[0] for p in points], "y": [p[1] for p in points], "z": [],
+                    "state": [], "running": False, "first": 1, "last": 0, "origin": ""}
+        session = {"rollviz_session": 1, "scene": hh, "scene_path": "", "results": "",
+                   "trajectories": [trajectory(red, [1, 0, 0]), trajectory(green, [0, 0.8, 0])]}
+        path = self.path("s.json")
+        with open(path, "w") as f:
+            js.dump(session, f)
+        out = self.path("s.png")
+        r = run("chart", path, "--view", "poincare", "-o", out, "--size", "400x400")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        (w, h), px = pixels(out)
+        def columns(test):
+            return [i % w for i, p in enumerate(px) if test(p)]
+        reds = columns(lambda p: p[0] > 180 and p[1] < 90 and p[2] < 90)
+        greens = columns(lambda p: p[1] > 150 and p[0] < 90 and p[2] < 90)
+        self.assertGreater(len(reds), 100)
+        self.assertGreater(len(greens), 100)
+        # drawn as saved, not computed: the red circle left of the green one
+        self.assertLess(max(reds), min(greens))
+        # the session is a scene for every command (its scene)
+        r = run("integrate", path, "--time", "1", "--every", "0.5", "--columns", "t,E")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertAlmostEqual(float(r.stdout.splitlines()[1].split(",")[1]), 0.125, delta=1e-12)
+        self.assertBadInput(run("chart", path, "--view", "poincare", "--points", "10", "-o", out), "--points")
+        session["rollviz_session"] = 2
+        session["trajectories"][1]["colour"] = [2, 0, 0]
+        with open(path, "w") as f:
+            js.dump(session, f)
+        self.assertBadInput(run("chart", path, "--view", "poincare", "-o", self.path("t.png")), "s.json", "format")
+        self.assertFalse(os.path.exists(self.path("t.png")))
+        session["rollviz_session"] = 1
+        with open(path, "w") as f:
+            js.dump(session, f)
+        self.assertBadInput(run("chart", path, "--view", "poincare", "-o", self.path("t.png")),
+                            "trajectories[1].colour")
+
     def test_multipliers_and_bifurcation_charts(self):
         for view in ("multipliers", "bifurcation"):
             out = self.path(view + ".png")

@@ -15,6 +15,7 @@
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSignalSpy>
@@ -112,7 +113,19 @@ private slots:
     panel.setScene(scene);
     QCOMPARE(panel.editedDocument(),
              scene.document); // nothing touched: nothing changes (1e-15 is not rounded)
+    auto* applyButton = panel.findChild<QPushButton*>("apply");
+    QVERIFY(!panel.pending() && !applyButton->font().bold());
+    const auto labelOf = [&](const char* id) { // the form's label of a field (its buddy row)
+      auto* field = panel.form("problem")->editor(id);
+      for (auto* l : panel.form("problem")->findChildren<QLabel*>())
+        if (l->toolTip() == field->toolTip()) return l;
+      return static_cast<QLabel*>(nullptr);
+    };
+    QVERIFY(labelOf("energy") && !labelOf("energy")->font().bold());
     qobject_cast<QDoubleSpinBox*>(panel.form("problem")->editor("energy"))->setValue(0.75);
+    // a changed value waits for Apply, and shows it: its label bold, Apply bold with a dot
+    QVERIFY(panel.pending() && applyButton->font().bold() && applyButton->text().contains("●"));
+    QVERIFY(labelOf("energy")->font().bold());
     qobject_cast<QComboBox*>(panel.form("fixedpoint")->editor("method"))->setCurrentText("gradient");
     QSignalSpy applied(&panel, &ControlPanel::apply);
     QTest::mouseClick(panel.findChild<QPushButton*>("apply"), Qt::LeftButton);
@@ -127,6 +140,38 @@ private slots:
     QCOMPARE(edited.model->parameters()["energy"], 0.75);
     QCOMPARE(edited.model->integrals(edited.initialState.data())[0], 0.75);
     QCOMPARE(edited.tool("fixedpoint").choice("method"), std::string("gradient"));
+    panel.setScene(edited); // run: nothing waits any more
+    QVERIFY(!panel.pending() && !applyButton->font().bold() && applyButton->text() == "Apply");
+    QVERIFY(!labelOf("energy")->font().bold());
+  }
+
+  // Issue 43, item 8: what the problem refuses (I2 = 0, the triangle inequality) is said as soon as the value
+  // is typed, naming the tab and the field; a scene loader's refusal at Apply names them too, not a JSON
+  // path.
+  void theProblemObjectsAtOnceNamingTabAndField() {
+    const Scene scene = loadScene(defaultScenePath("chaplygin_ball"));
+    ControlPanel panel;
+    panel.setScene(scene);
+    QVERIFY(panel.objection().isEmpty());
+    auto* i2 = qobject_cast<QDoubleSpinBox*>(panel.form("problem")->editor("I2"));
+    i2->setValue(0);
+    QVERIFY2(panel.objection().startsWith("Problem tab, I2") && panel.objection().contains("positive"),
+             qPrintable(panel.objection()));
+    i2->setValue(5);
+    QVERIFY2(panel.objection().contains("triangle inequality"), qPrintable(panel.objection()));
+    i2->setValue(1.4);
+    QVERIFY(panel.objection().isEmpty());
+    const QString said = ControlPanel::inPanelWords(
+        "scenes/x.json:poincare.points: points = -5 is out of range [1, 1e+15]", "scenes/x.json");
+    QVERIFY2(said.endsWith(" tab, points: points = -5 is out of range [1, 1e+15]") &&
+                 !said.contains("x.json"),
+             qPrintable(said));
+    QCOMPARE(ControlPanel::inPanelWords("scenes/x.json:parameters: I2: a moment of inertia must be positive",
+                                        "scenes/x.json"),
+             QString("Problem tab, I2: a moment of inertia must be positive"));
+    // not a tab's value: as it is
+    QCOMPARE(ControlPanel::inPanelWords("scenes/x.json:initial.map: no state there", "scenes/x.json"),
+             QString("scenes/x.json:initial.map: no state there"));
   }
 
   // manual §2.2 / §2.1: the Method tab chooses the integrator (its own parameters shown), the Problem tab the

@@ -121,6 +121,25 @@ bool keep(const QImage& img, const QString& name) {
   if (colours.size() < 40) qWarning("%s: %zu colours", qPrintable(name), colours.size());
   return colours.size() >= 40;
 }
+// waits until trajectories `ids` of the map have finished and `points` points of each are drawn
+bool finishDrawing(MapPanel* map, const std::vector<int>& ids, std::size_t points) {
+  QElapsedTimer clock;
+  clock.start();
+  while (clock.elapsed() < 120000) { // a generous deadline: the machine may be busy
+    map->drain();
+    bool done = true;
+    for (int id : ids)
+      done = done && map->trajectoryPoints(id).first.size() >= points &&
+             map->jobs().find(id)->status() == Job::Status::Finished;
+    if (done) {
+      for (int id : ids)
+        if (map->trajectoryPoints(id).first.size() != points) return false;
+      return true;
+    }
+    QTest::qWait(20);
+  }
+  return false;
+}
 // answers the next modal question box (opened by what the caller does next) with `b`
 void answerNextQuestion(QMessageBox::StandardButton b) {
   QTimer::singleShot(300, [b] {
@@ -1148,14 +1167,14 @@ private slots:
     QCOMPARE(window_->resumeSavedJobs(), 2);
     QVERIFY(!QFile::exists(MainWindow::savedJobsPath())); // offered once
     QCOMPARE(window_->scene()->model->info().id, std::string("henon_heiles"));
-    QCOMPARE(map->trajectories(), 3); // the scene's own and the two continued
+    QCOMPARE(map->trajectories(), 2); // the two continued (the scene's own among them: not started twice)
     map->drain();
     QVERIFY2(map->points() >= shown, qPrintable(QString("%1 < %2").arg(map->points()).arg(shown)));
     QTRY_VERIFY_WITH_TIMEOUT(map->points() > shown + 100, 20000); // they go on
     int running = 0;
     for (Job* j : map->jobs().jobs())
       running += j->running();
-    QCOMPARE(running, 3);
+    QCOMPARE(running, 2);
     QCOMPARE(window_->resumeSavedJobs(), 0); // nothing left
     map->stopAll();
   }
@@ -1248,6 +1267,107 @@ private slots:
     QCOMPARE(style->currentIndex(), 0);
     QCOMPARE(axes->currentIndex(), 0);
     QCOMPARE(settings->axesStyleBox()->currentIndex(), 0);
+  }
+
+  // Issue 43, item 1: Apply keeps the map when nothing that defines it changed (a new number of points counts
+  // for the next trajectories only); a change of the map asks first (No keeps everything), and Edit > Undo
+  // brings the replaced map back, every trajectory with its points.
+  void applyKeepsTheMapAndUndoBringsItBack() {
+    nlohmann::json doc = loadScene(defaultScenePath("henon_heiles")).document;
+    doc["poincare"]["points"] = 300;
+    QVERIFY(window_->runDocument(doc));
+    MapPanel* map = window_->mapPanel();
+    QVERIFY(map->startAt(0.05, 0.1));
+    QVERIFY(map->startAt(0.1, -0.1));
+    const std::vector<int> ids = map->sceneJobs();
+    QCOMPARE(ids.size(), 3u);
+    QVERIFY(finishDrawing(map, ids, 300));
+    const auto first = map->trajectoryPoints(ids[1]);
+    // Apply with nothing changed: the same jobs, nothing asked
+    QVERIFY(window_->applyDocument(window_->controlPanel()->editedDocument()));
+    QCOMPARE(map->sceneJobs(), ids);
+    // another number of points: the map stays, the next click makes that many
+    doc["poincare"]["points"] = 100;
+    QVERIFY(window_->applyDocument(doc));
+    QCOMPARE(map->sceneJobs(), ids);
+    QVERIFY(map->startAt(0.0, 0.05));
+    const int fourth = map->sceneJobs().back();
+    QVERIFY(finishDrawing(map, {fourth}, 100));
+    // another energy replaces the map: asked first
+    doc["parameters"]["energy"] = 0.1;
+    answerNextQuestion(QMessageBox::No);
+    QVERIFY(!window_->applyDocument(doc));
+    QCOMPARE(map->trajectories(), 4);
+    QCOMPARE(window_->scene()->model->parameters()["energy"], 0.125);
+    answerNextQuestion(QMessageBox::Yes);
+    QVERIFY(window_->applyDocument(doc));
+    QCOMPARE(map->trajectories(), 1);
+    QCOMPARE(window_->scene()->model->parameters()["energy"], 0.1);
+    QVERIFY2(window_->undoText().contains("4 trajectories"), qPrintable(window_->undoText()));
+    // Undo (the Edit menu's action, Ctrl+Z): the energy and the four trajectories with their points
+    auto* undo = window_->findChild<QAction*>("undo");
+    QVERIFY(undo && undo->isEnabled());
+    QCOMPARE(undo->shortcut(), QKeySequence(QKeySequence::Undo));
+    undo->trigger();
+    QCOMPARE(window_->scene()->model->parameters()["energy"], 0.125);
+    QCOMPARE(map->trajectories(), 4);
+    const std::vector<int> back = map->sceneJobs();
+    QVERIFY(map->trajectoryPoints(back[1]) == first);
+    QCOMPARE(map->trajectoryPoints(back[3]).first.size(), 100u);
+    // a deleted trajectory comes back too (Delete in the tool manager)
+    ToolManager* tools = window_->toolManager();
+    tools->refresh();
+    tools->select(back[1]);
+    tools->deleteSelected();
+    QCOMPARE(map->trajectories(), 3);
+    QVERIFY2(window_->undoText().contains("1 trajectory"), qPrintable(window_->undoText()));
+    QVERIFY(window_->undo());
+    QCOMPARE(map->trajectories(), 4);
+    QVERIFY(map->trajectoryPoints(map->sceneJobs().back()) == first);
+  }
+
+  // Issue 43, sessions: a session saved and opened (over another scene) gives the same trajectories, point
+  // for point, and the Results log; a finished trajectory then goes on with Start, bit for bit the run of the
+  // longer length; the session file is also a scene for the command line.
+  void aSessionSavedAndOpenedGoesOnBitForBit() {
+    nlohmann::json doc = loadScene(defaultScenePath("henon_heiles")).document;
+    doc["poincare"]["points"] = 300;
+    QVERIFY(window_->runDocument(doc));
+    MapPanel* map = window_->mapPanel();
+    QVERIFY(map->startAt(0.05, 0.1));
+    const std::vector<int> ids = map->sceneJobs();
+    QVERIFY(finishDrawing(map, ids, 300));
+    std::vector<std::pair<std::vector<double>, std::vector<double>>> saved;
+    for (int id : ids)
+      saved.push_back(map->trajectoryPoints(id));
+    window_->report("a line the session keeps");
+    const QString path = dir_.filePath("hh-session.json");
+    QVERIFY(window_->saveSessionTo(path));
+    QVERIFY(window_->openScene(QString::fromStdString(defaultScenePath("chaplygin_ball"))));
+    window_->findChild<QPushButton*>("clear_results")->click();
+    QVERIFY(window_->openScene(path)); // File > Open scene takes a session too
+    QCOMPARE(window_->scene()->model->info().id, std::string("henon_heiles"));
+    QVERIFY(window_->results().contains("a line the session keeps"));
+    const std::vector<int> opened = map->sceneJobs();
+    QCOMPARE(opened.size(), saved.size());
+    for (std::size_t k = 0; k < saved.size(); ++k)
+      QVERIFY(map->trajectoryPoints(opened[k]) == saved[k]);
+    // Start on the finished trajectory: 300 more points
+    ToolManager* tools = window_->toolManager();
+    QTRY_VERIFY_WITH_TIMEOUT(map->jobs().find(opened[1])->status() == Job::Status::Finished, 20000);
+    tools->refresh();
+    tools->select(opened[1]);
+    auto* start = tools->findChild<QPushButton*>("start");
+    QVERIFY2(start->isEnabled(), qPrintable(start->toolTip()));
+    start->click();
+    QVERIFY(finishDrawing(map, {opened[1]}, 600));
+    const auto continued = map->trajectoryPoints(opened[1]);
+    // the reference: one run of 600 points from the same click
+    doc["poincare"]["points"] = 600;
+    QVERIFY(window_->runDocument(doc));
+    QVERIFY(map->startAt(0.05, 0.1));
+    QVERIFY(finishDrawing(map, {map->sceneJobs().back()}, 600));
+    QVERIFY(map->trajectoryPoints(map->sceneJobs().back()) == continued);
   }
 
   // Choosing another problem asks before the map's own trajectories go; No keeps them and the problem.

@@ -463,5 +463,40 @@ TEST(PoincareTask, SavedAndRestoredItGoesOnWithTheSamePointsBitForBit) {
   EXPECT_TRUE(second.lastState() == first.lastState());
 }
 
+TEST(PoincareTask, AFinishedTrajectoryExtendedGoesOnAsOneLongerRunBitForBit) {
+  // the GUI's Start on a finished trajectory: 200 points, then 150 more == one run of 350
+  SectionSettings shortRun;
+  shortRun.maxPoints = 200;
+  JobTree tree;
+  auto owned = std::make_unique<PoincareTask>(henonHeiles(0.125), shortRun);
+  PoincareTask* task = owned.get();
+  Job& job = tree.add(std::move(owned));
+  job.start();
+  ASSERT_TRUE(waitFor([&] { return job.status() == Job::Status::Finished; }));
+  std::vector<MapPoint> got;
+  task->points().take(got);
+  ASSERT_EQ(got.size(), 200u);
+  job.start(); // finished: nothing happens
+  job.edit([](Task& t) { static_cast<PoincareTask&>(t).extend(150); });
+  EXPECT_EQ(job.status(), Job::Status::Stopped) << "an extended trajectory can be started again";
+  EXPECT_EQ(task->limit(), 350);
+  job.start();
+  ASSERT_TRUE(waitFor([&] { return job.status() == Job::Status::Finished; }));
+  std::vector<MapPoint> more;
+  task->points().take(more);
+  got.insert(got.end(), more.begin(), more.end());
+  SectionSettings longRun;
+  longRun.maxPoints = 350;
+  PoincareTask reference(henonHeiles(0.125), longRun);
+  ASSERT_TRUE(reference.run({}));
+  std::vector<MapPoint> expected;
+  reference.points().take(expected);
+  ASSERT_EQ(got.size(), expected.size());
+  for (std::size_t i = 0; i < got.size(); ++i) {
+    EXPECT_EQ(got[i].time, expected[i].time) << i;
+    EXPECT_EQ(got[i].coordinates, expected[i].coordinates) << i;
+  }
+}
+
 } // namespace
 } // namespace rv

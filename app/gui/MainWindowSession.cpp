@@ -1,0 +1,260 @@
+// MainWindowSession.cpp -- what the main window keeps of the user's work: scenes and sessions saved and
+// opened, Edit > Undo of what replaced the map or deleted trajectories, and the trajectories saved at exit.
+#include "app/gui/MainWindow.h"
+
+#include "app/gui/MapPanel.h"
+#include "dynamics/io/AtomicFile.h"
+#include "scenes/ModelFile.h"
+#include "scenes/SceneLoader.h"
+
+#include <QAction>
+#include <QDir>
+#include <QFile>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMessageBox>
+#include <QPlainTextEdit>
+#include <QSaveFile>
+#include <QSettings>
+#include <fstream>
+
+namespace rv {
+
+bool MainWindow::mayReplaceMap(const QString& action) {
+  const std::size_t added = map_->addedJobs().size(); // (the scene's own trajectory comes back with it)
+  if (added == 0) return true;
+  return QMessageBox::question(
+             this, "rollviz",
+             QString("%1 replaces the map window: the %2 tool(s) added to it (trajectories, fixed points, "
+                     "families) will be deleted.\nEdit > Undo brings the trajectories back. Go on?")
+                 .arg(action)
+                 .arg(added),
+             QMessageBox::Yes | QMessageBox::No, QMessageBox::No) == QMessageBox::Yes;
+}
+
+void MainWindow::pushUndo(UndoStep step) {
+  undo_.push_back(std::move(step));
+  if (undo_.size() > kUndoSteps) undo_.erase(undo_.begin());
+  undoAction_->setEnabled(true);
+  undoAction_->setText("Undo " + undo_.back().what);
+}
+
+QString MainWindow::undoText() const {
+  return undo_.empty() ? QString() : undo_.back().what;
+}
+
+void MainWindow::rememberMapForUndo() {
+  Session map;
+  map.scene = scene_->document;
+  map.scenePath = scenePath_.toStdString();
+  map.origin = origin_.toStdString();
+  map.trajectories = map_->saveTrajectories({}, false, false); // they stop: the map is replaced next
+  const QString name = origin_.isEmpty() ? QFileInfo(scenePath_).fileName() : origin_;
+  const QString what = QString("(back to %1 with %2 trajectories)").arg(name).arg(map.trajectories.size());
+  pushUndo({what, std::move(map), {}});
+}
+
+void MainWindow::rememberDeletedForUndo(const std::vector<int>& roots) {
+  std::vector<int> ids;
+  for (int id : roots)
+    if (Job* j = map_->jobs().find(id))
+      for (const Job* k : map_->jobs().subtree(*j))
+        ids.push_back(k->id());
+  if (ids.empty()) return;
+  auto deleted = map_->saveTrajectories(ids, false, false);
+  if (deleted.empty()) return; // no trajectory among them: nothing Undo could give back
+  const QString what =
+      QString("(delete of %1 trajector%2)").arg(deleted.size()).arg(deleted.size() > 1 ? "ies" : "y");
+  pushUndo({what, std::nullopt, std::move(deleted)});
+}
+
+bool MainWindow::undo() {
+  if (undo_.empty()) return false;
+  UndoStep step = std::move(undo_.back());
+  undo_.pop_back();
+  undoAction_->setEnabled(!undo_.empty());
+  undoAction_->setText(undo_.empty() ? QString("Undo") : "Undo " + undo_.back().what);
+  try {
+    if (step.map)
+      useSession(*step.map, QString::fromStdString(step.map->scenePath), false);
+    else
+      map_->restoreTrajectories(step.deleted);
+  } catch (const std::exception& e) {
+    report(QString("cannot undo %1: %2").arg(step.what, e.what()), 0);
+    return false;
+  }
+  report("undone: " + step.what, 5000);
+  return true;
+}
+
+void MainWindow::useSession(const Session& session, const QString& file, bool remember) {
+  const std::string source = session.scenePath.empty() ? file.toStdString() : session.scenePath;
+  auto scene = std::make_unique<Scene>(sceneFromJson(session.scene, source));
+  if (remember && scene_) rememberMapForUndo();
+  useScene(std::move(scene), QString::fromStdString(session.scenePath),
+           QString::fromStdString(session.origin), MapUse::Restore);
+  try {
+    map_->replaceTrajectories(session.trajectories);
+  } catch (const std::exception&) {
+    map_->startSceneTrajectory(); // the map is not left empty
+    throw;
+  }
+}
+
+bool MainWindow::saveSessionTo(const QString& path, QString* why) {
+  if (!scene_) return false;
+  Session session;
+  session.scene = documentWithEdits();
+  session.scenePath = scenePath_.toStdString();
+  session.origin = origin_.toStdString();
+  session.trajectories = map_->saveTrajectories({}, false, true); // running ones go on
+  session.results = results().toStdString();
+  session.gui = {{"layout", saveState().toBase64().toStdString()}};
+  try {
+    writeSession(session, path.toStdString());
+  } catch (const std::exception& e) {
+    report(QString("Cannot save the session: %1").arg(e.what()), 0);
+    if (why) *why = e.what();
+    return false;
+  }
+  rememberRecent(path);
+  report(QString("saved the session (%1 trajectories) to %2").arg(session.trajectories.size()).arg(path),
+         5000);
+  return true;
+}
+
+bool MainWindow::openSession(const QString& path) {
+  try {
+    const Session session = readSession(path.toStdString());
+    useSession(session, path, true); // what was open goes to Undo
+    results_->setPlainText(QString::fromStdString(session.results));
+    if (const auto layout = session.gui.find("layout"); layout != session.gui.end() && layout->is_string())
+      restoreState(QByteArray::fromBase64(QByteArray::fromStdString(layout->get<std::string>())));
+    rememberRecent(QFileInfo(path).absoluteFilePath());
+    report(QString("opened the session %1 (%2 trajectories)")
+               .arg(QFileInfo(path).fileName())
+               .arg(session.trajectories.size()),
+           5000);
+    return true;
+  } catch (const std::exception& e) {
+    QMessageBox::warning(this, "rollviz", QString("Cannot open the session:\n%1").arg(e.what()));
+    return false;
+  }
+}
+
+void MainWindow::saveSessionDialog() {
+  if (!scene_) return;
+  const QString proposed =
+      QFileInfo(QFileInfo(scenePath_).dir(), QFileInfo(scenePath_).completeBaseName() + "-session.json")
+          .filePath();
+  const QString path = QFileDialog::getSaveFileName(this, "Save session", proposed, "Sessions (*.json)");
+  QString why;
+  if (!path.isEmpty() && !saveSessionTo(path, &why))
+    QMessageBox::warning(this, "rollviz", "Cannot save the session:\n" + why);
+}
+
+void MainWindow::openSessionDialog() {
+  const QString path = QFileDialog::getOpenFileName(
+      this, "Open session", QFileInfo(scenePath_).absolutePath(), "Sessions (*.json)");
+  if (!path.isEmpty() && mayReplaceMap("Opening " + QFileInfo(path).fileName())) openSession(path);
+}
+
+void MainWindow::saveDialog() {
+  if (!scene_) return;
+  const QString path =
+      QFileDialog::getSaveFileName(this, "Save scene", QFileInfo(scenePath_).fileName(), "Scenes (*.json)");
+  QString why;
+  if (!path.isEmpty() && !saveSceneTo(path, &why))
+    QMessageBox::warning(this, "rollviz", "Cannot save the scene:\n" + why);
+}
+
+bool MainWindow::saveSceneTo(const QString& path, QString* why) {
+  if (!scene_) return false;
+  const nlohmann::json doc = sceneMovedTo(documentWithEdits(), scene_->source, path.toStdString());
+  try {
+    AtomicFile file(path.toStdString(), "scene");
+    std::ofstream out(file.tempPath());
+    out << doc.dump(2) << "\n";
+    out.close();
+    if (!out) throw std::runtime_error("cannot write " + path.toStdString());
+    file.commit();
+  } catch (const std::exception& e) {
+    report(QString("Cannot save the scene: %1").arg(e.what()), 0);
+    if (why) *why = e.what();
+    return false;
+  }
+  rememberRecent(path);
+  report("saved " + path, 5000);
+  return true;
+}
+
+QString MainWindow::savedJobsPath() {
+  return QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation) + "/running-jobs.json";
+}
+
+int MainWindow::saveRunningJobs() {
+  if (!scene_) return 0;
+  const nlohmann::json trajectories = map_->saveRunning();
+  if (trajectories.empty()) {
+    QFile::remove(savedJobsPath());
+    return 0;
+  }
+  const nlohmann::json saved{
+      {"scene", scenePath_.toStdString()}, {"document", scene_->document}, {"trajectories", trajectories}};
+  QDir().mkpath(QFileInfo(savedJobsPath()).absolutePath());
+  QSaveFile file(savedJobsPath()); // written whole, then renamed
+  const std::string text = saved.dump();
+  if (!file.open(QIODevice::WriteOnly) || file.write(text.data(), static_cast<qint64>(text.size())) < 0 ||
+      !file.commit())
+    return 0;
+  return static_cast<int>(trajectories.size());
+}
+
+int MainWindow::resumeSavedJobs() {
+  QFile file(savedJobsPath());
+  if (!file.open(QIODevice::ReadOnly)) return 0;
+  const QByteArray text = file.readAll();
+  file.close();
+  QFile::remove(savedJobsPath()); // offered once, whatever comes of it
+  try {
+    const nlohmann::json saved = nlohmann::json::parse(text.constData(), text.constData() + text.size());
+    const QString path = QString::fromStdString(saved.at("scene").get<std::string>());
+    // the saved trajectories in place of the scene's own (which is among them when it ran)
+    useScene(std::make_unique<Scene>(sceneFromJson(saved.at("document"), path.toStdString())), path, {},
+             MapUse::Restore);
+    int n = 0;
+    try {
+      n = map_->resume(saved.at("trajectories"));
+    } catch (const std::exception&) {
+      map_->startSceneTrajectory(); // the map is not left empty
+      throw;
+    }
+    report(QString("continued %1 trajectories from the last session").arg(n), 5000);
+    return n;
+  } catch (const std::exception& e) {
+    QMessageBox::warning(this, "rollviz",
+                         QString("Cannot continue the saved trajectories:\n%1").arg(e.what()));
+    return 0;
+  }
+}
+
+void MainWindow::offerSavedJobs() {
+  QFile file(savedJobsPath());
+  if (!file.open(QIODevice::ReadOnly)) return;
+  const auto saved = nlohmann::json::parse(file.readAll().toStdString(), nullptr, false);
+  file.close();
+  const std::size_t n =
+      saved.is_object() && saved.contains("trajectories") ? saved["trajectories"].size() : 0;
+  const QString scene = saved.is_object() ? QString::fromStdString(saved.value("scene", std::string())) : "";
+  if (n == 0 ||
+      QMessageBox::question(this, "rollviz",
+                            QString("%1 trajectories of %2 were running when rollviz closed.\nContinue them?")
+                                .arg(n)
+                                .arg(QFileInfo(scene).fileName())) != QMessageBox::Yes) {
+    QFile::remove(savedJobsPath());
+    return;
+  }
+  resumeSavedJobs();
+}
+
+} // namespace rv

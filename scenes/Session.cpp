@@ -1,0 +1,138 @@
+#include "scenes/Session.h"
+
+#include "dynamics/core/Errors.h"
+#include "dynamics/io/AtomicFile.h"
+#include "scenes/SceneLoader.h"
+#include "scenes/SnapshotJson.h"
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+
+namespace rv {
+
+namespace {
+std::vector<double> numbers(const nlohmann::json& j, const Where& w) {
+  if (!j.is_array()) w.fail("must be an array of numbers");
+  std::vector<double> v;
+  v.reserve(j.size());
+  for (std::size_t i = 0; i < j.size(); ++i)
+    v.push_back(number(j[i], w / std::to_string(i)));
+  return v;
+}
+std::map<std::string, double> namedNumbers(const nlohmann::json& j, const Where& w) {
+  requireObject(j, w);
+  std::map<std::string, double> m;
+  for (const auto& [id, value] : j.items())
+    m[id] = number(value, w / id);
+  return m;
+}
+const nlohmann::json& field(const nlohmann::json& j, const char* key, const Where& w) {
+  if (!j.contains(key)) w.fail(std::string("the field '") + key + "' is missing");
+  return j[key];
+}
+} // namespace
+
+nlohmann::json toJson(const SavedTrajectory& t) {
+  return {{"start", t.start},
+          {"parameters", t.parameters},
+          {"integrator", t.integrator},
+          {"colour", t.colour},
+          {"x", t.x},
+          {"y", t.y},
+          {"z", t.z},
+          {"state", snapshotToJson(Snapshot{t.state, 0})},
+          {"running", t.running},
+          {"first", t.first},
+          {"last", t.last},
+          {"origin", t.origin}};
+}
+
+SavedTrajectory savedTrajectoryFromJson(const nlohmann::json& j, const Where& w) {
+  requireObject(j, w);
+  SavedTrajectory t;
+  t.start = numbers(field(j, "start", w), w / "start");
+  t.parameters = namedNumbers(field(j, "parameters", w), w / "parameters");
+  t.integrator = namedNumbers(field(j, "integrator", w), w / "integrator");
+  const auto colour = numbers(field(j, "colour", w), w / "colour");
+  if (colour.size() != 3 ||
+      std::any_of(colour.begin(), colour.end(), [](double c) { return c < 0 || c > 1; }))
+    (w / "colour").fail("must be three numbers from 0 to 1 (red, green, blue)");
+  std::copy(colour.begin(), colour.end(), t.colour.begin());
+  t.x = numbers(field(j, "x", w), w / "x");
+  t.y = numbers(field(j, "y", w), w / "y");
+  t.z = numbers(field(j, "z", w), w / "z");
+  if (t.y.size() != t.x.size() || (!t.z.empty() && t.z.size() != t.x.size()))
+    w.fail("x, y (and z) must hold as many points");
+  t.state = snapshotFromJson(field(j, "state", w), (w / "state").str()).values;
+  // written by older rollviz (the jobs saved at exit): running, no range, no origin
+  t.running = j.contains("running") ? boolean(j["running"], w / "running") : true;
+  t.first = j.contains("first") ? static_cast<long>(number(j["first"], w / "first")) : 1;
+  t.last = j.contains("last") ? static_cast<long>(number(j["last"], w / "last")) : 0;
+  if (t.first < 1) (w / "first").fail("must be 1 or more");
+  t.origin = j.contains("origin") ? text(j["origin"], w / "origin") : std::string{};
+  return t;
+}
+
+bool isSession(const nlohmann::json& document) {
+  return document.is_object() && document.contains(kSessionKey);
+}
+
+nlohmann::json sessionToJson(const Session& s) {
+  nlohmann::json trajectories = nlohmann::json::array();
+  for (const auto& t : s.trajectories)
+    trajectories.push_back(toJson(t));
+  return {{kSessionKey, kSessionFormat},
+          {"scene", s.scene},
+          {"scene_path", s.scenePath},
+          {"origin", s.origin},
+          {"trajectories", trajectories},
+          {"results", s.results},
+          {"gui", s.gui}};
+}
+
+Session sessionFromJson(const nlohmann::json& j, const std::string& file) {
+  const Where w{file, ""};
+  if (!isSession(j)) w.fail(std::string("not a rollviz session (no '") + kSessionKey + "' field)");
+  const auto& version = j[kSessionKey];
+  if (!version.is_number_integer() || version.get<int>() != kSessionFormat)
+    (w / kSessionKey)
+        .fail("a session of format " + shown(version) + "; this rollviz reads format " +
+              std::to_string(kSessionFormat));
+  Session s;
+  s.scene = requireObject(field(j, "scene", w), w / "scene");
+  if (j.contains("scene_path")) s.scenePath = text(j["scene_path"], w / "scene_path");
+  if (j.contains("origin")) s.origin = text(j["origin"], w / "origin");
+  if (j.contains("results")) s.results = text(j["results"], w / "results");
+  if (j.contains("gui")) s.gui = requireObject(j["gui"], w / "gui");
+  const auto& list = field(j, "trajectories", w);
+  if (!list.is_array()) (w / "trajectories").fail("must be an array");
+  for (std::size_t i = 0; i < list.size(); ++i)
+    s.trajectories.push_back(
+        savedTrajectoryFromJson(list[i], Where{file, "trajectories[" + std::to_string(i) + "]"}));
+  return s;
+}
+
+Session readSession(const std::string& path) {
+  std::istringstream in(readInputFile(path, "session file"));
+  return sessionFromJson(parseSceneJson(in, path), path);
+}
+
+std::optional<Session> readSessionIfAny(const std::string& path) {
+  std::istringstream in(readInputFile(path, "scene file"));
+  const nlohmann::json document = parseSceneJson(in, path);
+  if (!isSession(document)) return std::nullopt;
+  return sessionFromJson(document, path);
+}
+
+void writeSession(const Session& s, const std::string& path) {
+  AtomicFile file(path, path);
+  {
+    std::ofstream out(file.tempPath());
+    out << sessionToJson(s).dump(1) << '\n';
+    if (!out) throw ComputationError("cannot write " + path);
+  }
+  file.commit();
+}
+
+} // namespace rv
