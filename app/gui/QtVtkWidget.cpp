@@ -3,7 +3,10 @@
 //    which rebinds Qt's FBO and breaks VTK's (GL error 0x506);
 // 2. chart interactor styles repaint through interactor timers: they become QTimers;
 // 3. alpha is cleared to 1 after the blit, or Qt blends the widget with what is behind it;
-// 4. VTK renders into its own FBO (no blit) and paintGL blits it into defaultFramebufferObject().
+// 4. VTK renders into its own FBO (no blit) and paintGL blits it into defaultFramebufferObject();
+// 5. re-parenting the widget into another top-level window (a dock floated or docked again) gives it a new
+//    OpenGL context: VTK's shaders, buffers, textures and FBO of the old one are released while it still
+//    exists (aboutToBeDestroyed), and made again in the new one -- else the view stays blank or garbage.
 #include "app/gui/QtVtkWidget.h"
 
 #include "render/context/HeadlessContext.h"
@@ -102,8 +105,16 @@ QtVtkWidget::QtVtkWidget(QWidget* parent)
 }
 
 QtVtkWidget::~QtVtkWidget() {
+  // ~QOpenGLWidget destroys the context after this widget's members are gone: not a signal to us then
+  if (context()) disconnect(context(), nullptr, this, nullptr);
+  releaseContext();
+}
+
+void QtVtkWidget::releaseContext() {
+  if (!context()) return;
   makeCurrent();
-  window_->Finalize();
+  window_->Finalize(); // every renderer's and prop's GL resources, and the window's FBO
+  window_->SetReadyForRendering(false);
   doneCurrent();
 }
 
@@ -142,6 +153,9 @@ void QtVtkWidget::onVtkEvent(vtkObject*, unsigned long ev, void* cd, void* call)
 }
 
 void QtVtkWidget::initializeGL() {
+  // called again with each new context (see 5.): the old one's resources are released before it goes
+  connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &QtVtkWidget::releaseContext,
+          Qt::UniqueConnection);
   window_->SetOwnContext(false);
   window_->SetForceMaximumHardwareLineWidth(1);
   window_->SetReadyForRendering(true);

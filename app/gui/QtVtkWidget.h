@@ -46,6 +46,8 @@ protected:
   void wheelEvent(QWheelEvent* e) override;
 
 private:
+  /// Releases what VTK holds in the widget's OpenGL context (it is about to be destroyed).
+  void releaseContext();
   void mouse(QMouseEvent* e, unsigned long vtkEvent);
   static void onVtkEvent(vtkObject*, unsigned long ev, void* self, void* callData);
   vtkSmartPointer<vtkGenericOpenGLRenderWindow> window_;

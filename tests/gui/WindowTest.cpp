@@ -1370,6 +1370,56 @@ private slots:
     QVERIFY(map->trajectoryPoints(map->sceneJobs().back()) == continued);
   }
 
+  // Issue 43, item 2: the map window's dock floated and docked again still draws its map (a floating dock is
+  // a new top-level window: Qt gives its OpenGL widget a new context, and VTK's resources of the old one
+  // must go with it) -- and a click on it still starts a trajectory that shows.
+  void theMapDockFloatsAndDocksAndStillDraws() {
+    nlohmann::json doc = loadScene(defaultScenePath("standard_map")).document;
+    doc["poincare"]["points"] = 3000;
+    QVERIFY(window_->runDocument(doc));
+    MapPanel* map = window_->mapPanel();
+    QVERIFY(finishDrawing(map, map->sceneJobs(), 3000));
+    auto* dock = window_->findChild<QDockWidget*>("map");
+    QVERIFY(dock);
+    // the map's picture: its points' colour (the first series') covers a good part of it
+    const Rgb c = map->shownColour(map->sceneJobs().front());
+    const auto pointsIn = [](const QImage& img, const Rgb& colour) { // pixels of the points' colour
+      const QColor want = QColor::fromRgbF(static_cast<float>(colour[0]), static_cast<float>(colour[1]),
+                                           static_cast<float>(colour[2]));
+      long n = 0;
+      for (int y = 0; y < img.height(); ++y)
+        for (int x = 0; x < img.width(); ++x) {
+          const QColor p = img.pixelColor(x, y);
+          n += std::abs(p.red() - want.red()) + std::abs(p.green() - want.green()) +
+                   std::abs(p.blue() - want.blue()) <
+               60;
+        }
+      return n;
+    };
+    const long docked = pointsIn(map->view()->grabFramebuffer(), c);
+    QVERIFY2(docked > 200, qPrintable(QString::number(docked)));
+    dock->setFloating(true);
+    dock->resize(500, 500);
+    QVERIFY(QTest::qWaitForWindowExposed(dock));
+    QTest::qWait(50);
+    const QImage floating = map->view()->grabFramebuffer();
+    QVERIFY(keep(floating, "map_floating.png"));
+    QVERIFY2(pointsIn(floating, c) > 200, qPrintable(QString::number(pointsIn(floating, c))));
+    dock->setFloating(false);
+    QVERIFY(QTest::qWaitForWindowExposed(window_));
+    QTest::qWait(50);
+    const QImage back = map->view()->grabFramebuffer();
+    QVERIFY(keep(back, "map_docked_again.png"));
+    QVERIFY2(pointsIn(back, c) > 200, qPrintable(QString::number(pointsIn(back, c))));
+    // and it still works: a new trajectory shows in its own colour
+    QVERIFY(map->startAt(1.0, 0.5));
+    QVERIFY(finishDrawing(map, {map->sceneJobs().back()}, 3000));
+    const Rgb d = map->shownColour(map->sceneJobs().back());
+    QVERIFY(d != c);
+    const long shown = pointsIn(map->view()->grabFramebuffer(), d);
+    QVERIFY2(shown > 50, qPrintable(QString::number(shown)));
+  }
+
   // Choosing another problem asks before the map's own trajectories go; No keeps them and the problem.
   void aProblemSwitchAsksBeforeDroppingTrajectories() {
     QVERIFY(window_->openScene(QString::fromStdString(defaultScenePath("standard_map"))));
