@@ -145,7 +145,7 @@ void FilterWindow::setSavable(bool savable, const QString& why) {
 bool saveChartFigure(QtVtkWidget* view, const QString& path, QString* why) {
   try {
     if (figureFormat(path.toStdString(), "file") == FigureFormat::Png) {
-      if (view->grabFramebuffer().save(path, "PNG")) return true;
+      if (savePicture(view, path)) return true; // at File > Picture size
       throw ComputationError("cannot write " + path.toStdString());
     }
     view->makeCurrent(); // the exporter draws the chart again, in the widget's context

@@ -25,6 +25,7 @@
 #include "scenes/SceneLoader.h"
 
 #include <QAction>
+#include <QActionGroup>
 #include <QCloseEvent>
 #include <QComboBox>
 #include <QDir>
@@ -37,6 +38,7 @@
 #include <QFileInfo>
 #include <QInputDialog>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -284,6 +286,41 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
                                         [this](const QString& m) { report(m, 8000); });
                   })
       ->setToolTip("the Poincaré map window as a figure (PNG, or SVG/PDF vectors) or its points as CSV");
+  // the size every saved picture of a view has (Snapshot, Export map, a chart's Save PNG): one setting
+  auto* sizes = file->addMenu("Picture size");
+  sizes->setObjectName("picture_size");
+  sizes->setToolTipsVisible(true);
+  auto* sizeGroup = new QActionGroup(sizes);
+  const auto addSize = [&](const QString& label, const QString& text) {
+    auto* a = sizes->addAction(label, this, [text] { PictureSize::setCurrent(text); });
+    a->setCheckable(true);
+    a->setData(text);
+    a->setActionGroup(sizeGroup);
+  };
+  addSize("As shown", "view");
+  addSize("2 × the view", "x2");
+  addSize("4 × the view", "x4");
+  addSize("1920 × 1080", "1920x1080");
+  addSize("3840 × 2160", "3840x2160");
+  sizes->addAction("Other size…", this, [this] {
+    bool ok = false;
+    const QString text = QInputDialog::getText(this, "Picture size", "WIDTHxHEIGHT in pixels (16 to 16384)",
+                                               QLineEdit::Normal, PictureSize::current().text, &ok);
+    if (!ok) return;
+    if (!PictureSize::valid(text.trimmed()))
+      report("Picture size: give WIDTHxHEIGHT, e.g. 2400x1600 (16 to 16384 pixels a side), not " + text,
+             8000);
+    else
+      PictureSize::setCurrent(text.trimmed());
+  });
+  connect(sizes, &QMenu::aboutToShow, this, [sizes] { // the setting ticked, whatever set it
+    const QString now = PictureSize::current().text;
+    for (QAction* a : sizes->actions())
+      if (a->isCheckable()) a->setChecked(a->data().toString() == now);
+  });
+  sizes->menuAction()->setToolTip(
+      "the size of snapshots, exported maps and saved charts: rendered offscreen at that size, whatever the "
+      "window's");
   recentMenu_ = file->addMenu("Recent scenes");
   fillRecentMenu();
   file->addSeparator();
@@ -712,11 +749,7 @@ void MainWindow::snapshot() {
 }
 
 bool MainWindow::snapshotTo(const QString& path) {
-  // through a temporary name: a failed write leaves nothing half-written
-  const QString part = path + ".part.png";
-  if (!view_->grabFramebuffer().save(part, "PNG")) return QFile::remove(part), false;
-  QFile::remove(path);
-  if (!QFile::rename(part, path)) return false;
+  if (!savePicture(view_, path)) return false; // at File > Picture size
   report("snapshot written: " + path);
   return true;
 }

@@ -11,11 +11,15 @@
 
 #include "render/context/HeadlessContext.h"
 
+#include <QFile>
+#include <QImage>
 #include <QMouseEvent>
 #include <QOffscreenSurface>
 #include <QOpenGLContext>
 #include <QOpenGLExtraFunctions>
 #include <QOpenGLFunctions>
+#include <QSettings>
+#include <QStringList>
 #include <QTimer>
 #include <QVBoxLayout>
 #include <QWheelEvent>
@@ -203,6 +207,79 @@ void QtVtkWidget::paintGL() {
   }
   st->Pop();
   if (tap_) tap_(tapped_);
+}
+
+Image QtVtkWidget::renderAt(int width, int height) {
+  makeCurrent();
+  auto* st = window_->GetState();
+  st->Reset();
+  st->Push();
+  const int* size = window_->GetSize();
+  const int w = size[0], h = size[1];
+  window_->SetSize(width, height); // VTK's own framebuffer takes that size; Qt's is not touched
+  Image picture;
+  try {
+    captureInto(window_, picture);
+  } catch (...) {
+    window_->SetSize(w, h);
+    st->Pop();
+    doneCurrent();
+    throw;
+  }
+  window_->SetSize(w, h);
+  st->Pop();
+  doneCurrent();
+  update(); // the screen's picture again, at the widget's size
+  return picture;
+}
+
+QSize PictureSize::of(const QSize& view) const {
+  if (text == "x2" || text == "x4") return view * (text == "x2" ? 2 : 4);
+  const QStringList parts = text.split('x');
+  if (parts.size() == 2 && !parts[0].isEmpty()) return {parts[0].toInt(), parts[1].toInt()};
+  return view;
+}
+
+bool PictureSize::valid(const QString& text) {
+  if (text == "view" || text == "x2" || text == "x4") return true;
+  const QStringList parts = text.split('x');
+  bool w = false, h = false;
+  const int width = parts.value(0).toInt(&w), height = parts.value(1).toInt(&h);
+  return parts.size() == 2 && w && h && width >= 16 && height >= 16 && width <= 16384 && height <= 16384;
+}
+
+PictureSize PictureSize::current() {
+  const QString text = QSettings().value("pictureSize", "view").toString();
+  return {valid(text) ? text : QString("view")};
+}
+
+void PictureSize::setCurrent(const QString& text) {
+  if (valid(text)) QSettings().setValue("pictureSize", text);
+}
+
+bool savePicture(QtVtkWidget* view, const QString& path) {
+  const qreal dpr = view->devicePixelRatioF();
+  const QSize shown(static_cast<int>(std::lround(view->width() * dpr)),
+                    static_cast<int>(std::lround(view->height() * dpr)));
+  const QSize size = PictureSize::current().of(shown);
+  QImage picture;
+  if (size == shown) {
+    picture = view->grabFramebuffer(); // what the screen shows
+  } else {
+    try {
+      const Image rendered = view->renderAt(size.width(), size.height());
+      picture = QImage(rendered.rgb.data(), rendered.width, rendered.height, rendered.width * 3,
+                       QImage::Format_RGB888)
+                    .copy(); // (owns its pixels once `rendered` goes)
+    } catch (const std::exception&) {
+      return false;
+    }
+  }
+  // through a temporary name: a failed write leaves nothing half-written
+  const QString part = path + ".part.png";
+  if (!picture.save(part, "PNG")) return QFile::remove(part), false;
+  QFile::remove(path);
+  return QFile::rename(part, path);
 }
 
 void QtVtkWidget::mousePressEvent(QMouseEvent* e) {

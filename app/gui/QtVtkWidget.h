@@ -4,6 +4,8 @@
 #include "render/Snapshot.h"
 
 #include <QOpenGLWidget>
+#include <QSize>
+#include <QString>
 #include <functional>
 #include <map>
 #include <vtkCommand.h>
@@ -32,6 +34,9 @@ public:
   /// Receives every picture painted, as shown (RGB, rows from the top); an empty function stops it. What a
   /// screen recording is made of.
   void setFrameTap(std::function<void(const Image&)> tap) { tap_ = std::move(tap); }
+  /// The view rendered offscreen at `width` x `height` pixels, whatever the widget's size (the scene fills
+  /// the frame as it would a window of that size); the widget keeps its own size and picture.
+  Image renderAt(int width, int height);
   /// Asked before a render VTK requests on its own (a chart's scene, modified, renders itself 40 ms later):
   /// false when the owner has painted the change since, and that frame would only repeat the last one.
   void setRenderWanted(std::function<bool()> wanted) { renderWanted_ = std::move(wanted); }
@@ -58,5 +63,21 @@ private:
   std::function<bool()> renderWanted_;
   Image tapped_; // reused: a frame's pixels are not reallocated on every paint
 };
+
+/// The size pictures of views are saved at (Snapshot, File > Export map, a chart's Save PNG), one setting for
+/// all, kept between runs (File > Picture size): "view" (as shown), "x2" or "x4" (times the view), or
+/// "WIDTHxHEIGHT" (e.g. 1920x1080), rendered offscreen at that size.
+struct PictureSize {
+  QString text = "view";
+  /// The pixels of a picture of a view that shows `view` pixels.
+  QSize of(const QSize& view) const;
+  /// Whether `text` is one of the forms above (a size from 16 to 16384 pixels a side).
+  static bool valid(const QString& text);
+  static PictureSize current();
+  static void setCurrent(const QString& text);
+};
+
+/// Writes the view's picture as PNG at PictureSize::current() through a temporary name; false when it cannot.
+bool savePicture(QtVtkWidget* view, const QString& path);
 
 } // namespace rv

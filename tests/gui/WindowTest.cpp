@@ -246,6 +246,30 @@ private slots:
     QVERIFY(varied(img));
   }
 
+  // Issue 43, item 7: pictures for papers, at File > Picture size, rendered offscreen whatever the window's
+  // size: a 1920 x 1080 snapshot of a smaller view, the map exported at twice its size
+  void picturesAtAChosenSizeAreRenderedOffscreen() {
+    const QSize shown = window_->view()->grabFramebuffer().size();
+    QVERIFY(shown.width() < 1920 && shown.height() < 1080);
+    PictureSize::setCurrent("1920x1080");
+    const QString path = dir_.filePath("big.png");
+    QVERIFY(window_->snapshotTo(path));
+    const QImage big(path);
+    QCOMPARE(big.size(), QSize(1920, 1080));
+    QVERIFY(varied(big));
+    QVERIFY(keep(big, "snapshot_1920x1080.png"));
+    QCOMPARE(window_->view()->grabFramebuffer().size(), shown); // the window keeps its size and picture
+    QVERIFY(varied(window_->view()->grabFramebuffer()));
+    PictureSize::setCurrent("x2");
+    const QString map = dir_.filePath("map2.png");
+    QString why;
+    QVERIFY2(saveChartFigure(window_->mapPanel()->view(), map, &why), qPrintable(why));
+    QCOMPARE(QImage(map).size(), window_->mapPanel()->view()->grabFramebuffer().size() * 2);
+    QVERIFY(keep(QImage(map), "map_x2.png"));
+    PictureSize::setCurrent("view");
+    QVERIFY(!PictureSize::valid("10x10") && !PictureSize::valid("abc") && PictureSize::valid("2400x1600"));
+  }
+
   // Record takes what the view shows from now on (the run goes on; it does not restart), and the video lasts
   // as long as the recording did, while the event loop keeps running
   void recordingKeepsWhatIsOnScreenForAsLongAsItRan() {
