@@ -5,6 +5,7 @@
 #include "dynamics/io/AtomicFile.h"
 #include "render/export/Figure.h"
 
+#include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QLabel>
@@ -23,7 +24,8 @@ QString askFigurePath(QWidget* parent, const QString& title, const QString& name
   QString filters = "PNG picture (*.png);;SVG vector figure (*.svg);;PDF vector figure (*.pdf)";
   if (!extra.isEmpty()) filters += ";;" + extra;
   QString chosen;
-  QString path = QFileDialog::getSaveFileName(parent, title, name + ".png", filters, &chosen);
+  QString path = QFileDialog::getSaveFileName(
+      parent, title, proposedPath(QStandardPaths::PicturesLocation, name + ".png"), filters, &chosen);
   if (path.isEmpty() || !QFileInfo(path).suffix().isEmpty()) return path;
   const auto star = chosen.indexOf("*."), close = chosen.indexOf(')', star);
   return star < 0 ? path : path + chosen.mid(star + 1, close - star - 1);
@@ -56,8 +58,9 @@ FilterWindow::FilterWindow(const QString& title, const QString& fileName, QWidge
   auto* csv = csv_ = new QPushButton("Save CSV…", this);
   csv->setObjectName("save_csv");
   connect(csv, &QPushButton::clicked, this, [this] {
-    const QString path =
-        QFileDialog::getSaveFileName(this, "Save chart data", fileName_ + ".csv", "CSV (*.csv)");
+    const QString path = QFileDialog::getSaveFileName(
+        this, "Save chart data", proposedPath(QStandardPaths::DocumentsLocation, fileName_ + ".csv"),
+        "CSV (*.csv)");
     if (!path.isEmpty() && !saveCsv(path)) setStatus("cannot write " + path);
   });
   auto* layout = new QVBoxLayout(this);
@@ -140,6 +143,12 @@ void FilterWindow::setSavable(bool savable, const QString& why) {
     b->setEnabled(savable);
     b->setToolTip(savable ? QString() : why);
   }
+}
+
+QString proposedPath(QStandardPaths::StandardLocation where, const QString& name) {
+  QString folder = QStandardPaths::writableLocation(where);
+  if (folder.isEmpty() || !QDir(folder).exists()) folder = QDir::homePath();
+  return QDir(folder).filePath(name);
 }
 
 bool saveChartFigure(QtVtkWidget* view, const QString& path, QString* why) {

@@ -5,6 +5,7 @@
 #pragma once
 #include "render/charts/Chart.h"
 
+#include <QStandardPaths>
 #include <QWidget>
 #include <functional>
 
@@ -17,6 +18,10 @@ class QStackedWidget;
 namespace rv {
 
 class QtVtkWidget;
+
+/// Where a save dialog proposes `name`: in the user's `where` folder (pictures, videos, documents), never the
+/// working directory (often the source tree); the home folder when that one does not exist.
+QString proposedPath(QStandardPaths::StandardLocation where, const QString& name);
 
 /// Writes a chart's data as CSV through a temporary name; false when it cannot.
 bool saveChartCsv(const Chart& chart, const QString& path);

@@ -720,14 +720,12 @@ QString MainWindow::askWhereToWrite(const QString& title, QStandardPaths::Standa
                                     const QString& extension, const QString& filter) {
   // proposed in the user's pictures or videos folder (not the working directory, often the source tree),
   // named by the problem and the time shown
-  QString folder = QStandardPaths::writableLocation(where);
-  if (folder.isEmpty() || !QDir(folder).exists()) folder = QDir::homePath();
   const QString name =
       QString("%1-t%2.%3")
           .arg(scene_ ? QString::fromStdString(scene_->model->info().id) : QString("rollviz"))
           .arg(shownTime_, 0, 'f', 2)
           .arg(extension);
-  QString path = QFileDialog::getSaveFileName(this, title, QDir(folder).filePath(name), filter);
+  QString path = QFileDialog::getSaveFileName(this, title, proposedPath(where, name), filter);
   // the file's format is the one its extension names: none gets ours, another is refused
   const QString suffix = QFileInfo(path).suffix();
   if (path.isEmpty() || suffix.compare(extension, Qt::CaseInsensitive) == 0) return path;

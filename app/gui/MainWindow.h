@@ -217,6 +217,9 @@ private:
   void rememberMapForUndo();
   /// The trajectories among jobs `roots` (and those under them), before Delete takes them.
   void rememberDeletedForUndo(const std::vector<int>& roots);
+  /// Where a save dialog proposes a scene or session file `name`: beside the open scene when its folder is
+  /// the user's, else in the documents folder (never the working directory).
+  QString besideTheScene(const QString& name) const;
   void saveSessionDialog();
   void openSessionDialog();
   /// Puts a session's scene and trajectories in place (no question; with `remember`, what was open becomes an

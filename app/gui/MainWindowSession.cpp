@@ -2,6 +2,7 @@
 // opened, Edit > Undo of what replaced the map or deleted trajectories, and the trajectories saved at exit.
 #include "app/gui/MainWindow.h"
 
+#include "app/gui/FilterWindow.h"
 #include "app/gui/MapPanel.h"
 #include "dynamics/io/AtomicFile.h"
 #include "scenes/ModelFile.h"
@@ -142,12 +143,21 @@ bool MainWindow::openSession(const QString& path) {
   }
 }
 
+QString MainWindow::besideTheScene(const QString& name) const {
+  // the scene's own folder when it is the user's (writable, not the shipped scenes); else their documents
+  const QFileInfo folder(QFileInfo(scenePath_).absolutePath());
+  const bool shipped =
+      folder.absoluteFilePath() == QFileInfo(QString::fromStdString(scenesDirectory())).absoluteFilePath();
+  if (!scenePath_.isEmpty() && folder.isDir() && folder.isWritable() && !shipped)
+    return QDir(folder.absoluteFilePath()).filePath(name);
+  return proposedPath(QStandardPaths::DocumentsLocation, name);
+}
+
 void MainWindow::saveSessionDialog() {
   if (!scene_) return;
-  const QString proposed =
-      QFileInfo(QFileInfo(scenePath_).dir(), QFileInfo(scenePath_).completeBaseName() + "-session.json")
-          .filePath();
-  const QString path = QFileDialog::getSaveFileName(this, "Save session", proposed, "Sessions (*.json)");
+  const QString path = QFileDialog::getSaveFileName(
+      this, "Save session", besideTheScene(QFileInfo(scenePath_).completeBaseName() + "-session.json"),
+      "Sessions (*.json)");
   QString why;
   if (!path.isEmpty() && !saveSessionTo(path, &why))
     QMessageBox::warning(this, "rollviz", "Cannot save the session:\n" + why);
@@ -155,14 +165,14 @@ void MainWindow::saveSessionDialog() {
 
 void MainWindow::openSessionDialog() {
   const QString path = QFileDialog::getOpenFileName(
-      this, "Open session", QFileInfo(scenePath_).absolutePath(), "Sessions (*.json)");
+      this, "Open session", QFileInfo(besideTheScene("x")).absolutePath(), "Sessions (*.json)");
   if (!path.isEmpty() && mayReplaceMap("Opening " + QFileInfo(path).fileName())) openSession(path);
 }
 
 void MainWindow::saveDialog() {
   if (!scene_) return;
-  const QString path =
-      QFileDialog::getSaveFileName(this, "Save scene", QFileInfo(scenePath_).fileName(), "Scenes (*.json)");
+  const QString path = QFileDialog::getSaveFileName(
+      this, "Save scene", besideTheScene(QFileInfo(scenePath_).fileName()), "Scenes (*.json)");
   QString why;
   if (!path.isEmpty() && !saveSceneTo(path, &why))
     QMessageBox::warning(this, "rollviz", "Cannot save the scene:\n" + why);

@@ -276,7 +276,12 @@ void ToolManager::colourSelected(std::optional<Rgb> color) {
   Job* j = selected();
   if (!j || !colour_) return;
   if (!color) {
-    const QColor c = QColorDialog::getColor(Qt::blue, this, "Colour of output");
+    // the dialog starts at the colour the trajectory has now
+    const auto now = look_ ? look_(j->id()).colour : std::nullopt;
+    const QColor start = now ? QColor::fromRgbF(static_cast<float>((*now)[0]), static_cast<float>((*now)[1]),
+                                                static_cast<float>((*now)[2]))
+                             : QColor(Qt::blue);
+    const QColor c = QColorDialog::getColor(start, this, "Colour of output");
     if (!c.isValid()) return;
     color = Rgb{c.redF(), c.greenF(), c.blueF()};
   }

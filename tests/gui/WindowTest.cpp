@@ -237,6 +237,29 @@ private slots:
     QVERIFY(QFile::exists(dir_.filePath(name)));
   }
 
+  // Save dialogs propose the user's folders, never the working directory: a shipped scene is saved to the
+  // documents folder, a user's scene beside itself
+  void saveDialogsProposeTheUsersFolders() {
+    const auto proposedBy = [&](auto open) {
+      QString proposed;
+      QTimer::singleShot(0, this, [&] {
+        QTRY_VERIFY_WITH_TIMEOUT(qobject_cast<QFileDialog*>(QApplication::activeModalWidget()), 20000);
+        auto* dialog = qobject_cast<QFileDialog*>(QApplication::activeModalWidget());
+        proposed = dialog->selectedFiles().value(0);
+        dialog->reject();
+      });
+      open();
+      return proposed;
+    };
+    QVERIFY(window_->openScene(QString::fromStdString(defaultScenePath("henon_heiles"))));
+    QCOMPARE(proposedBy([&] { window_->saveDialog(); }),
+             proposedPath(QStandardPaths::DocumentsLocation, "henon_heiles.json"));
+    const QString mine = dir_.filePath("mine.json");
+    QVERIFY(window_->saveSceneTo(mine));
+    QVERIFY(window_->openScene(mine));
+    QCOMPARE(proposedBy([&] { window_->saveDialog(); }), mine);
+  }
+
   void snapshotWritesAPng() {
     const QString path = dir_.filePath("snap.png");
     QVERIFY(window_->snapshotTo(path));
