@@ -132,6 +132,9 @@ int runCli(int argc, char** argv, const GuiLauncher& gui) {
     cmd->add_option("scene", guiOptions.scene, "scene file");
     cmd->add_option("--screenshot", guiOptions.screenshot, "save a PNG of the window before quitting");
     cmd->add_option("--quit-after", guiOptions.quitAfter, "quit after this many seconds");
+    cmd->add_option("--status-file", guiOptions.statusFile,
+                    "write the window's state there every 0.2 s; creating FILE.quit quits (as --quit-after "
+                    "does: screenshot, summary) -- for scripts that wait on conditions");
   }
 
   try {

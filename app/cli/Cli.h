@@ -11,6 +11,10 @@ struct GuiOptions {
   std::string scene;      ///< scene file; empty: the last scene, else the default one
   std::string screenshot; ///< when set: save a screenshot of the window there before quitting
   double quitAfter = 0;   ///< when > 0: quit after this many seconds (smoke tests, scripted demos)
+  /// When set: the window's state (the summary line printed at a scripted quit) is written there every 0.2 s,
+  /// and creating STATUS.quit makes it take the screenshot, print the summary and quit -- so a script waits
+  /// on what the window did, not on the clock.
+  std::string statusFile;
 };
 
 /// Starts the GUI; null where there is no GUI.

@@ -8,10 +8,12 @@
 
 #include <QApplication>
 #include <QFileInfo>
+#include <QSaveFile>
 #include <QSettings>
 #include <QTimer>
 #include <cstdio>
 #include <cstdlib>
+#include <string>
 
 namespace rv {
 
@@ -59,21 +61,44 @@ int runGui(int argc, char** argv, const GuiOptions& options) {
   // trajectories saved when rollviz last closed: offered once the window shows (not in scripted runs)
   if (options.quitAfter <= 0) QTimer::singleShot(0, &window, [&window] { window.offerSavedJobs(); });
 
-  if (options.quitAfter > 0)
-    QTimer::singleShot(static_cast<int>(options.quitAfter * 1000), &app, [&] {
-      if (!options.screenshot.empty() &&
-          !window.grab().save(QString::fromStdString(options.screenshot), "PNG"))
-        std::fprintf(stderr, "rollviz: cannot write %s\n", options.screenshot.c_str());
-      // a summary for scripted runs and tests
-      std::printf(
-          "shown t = %.6g, map trajectories = %d, map points = %ld, fixed point searches = %d, found = %d, "
-          "tool jobs = %d, jobs in the tool manager = %d, playing = %s\n",
-          window.shownTime(), window.mapPanel()->trajectories(), window.mapPanel()->points(),
-          window.mapPanel()->searches(), window.mapPanel()->fixedPointsFound(), window.mapPanel()->toolJobs(),
-          static_cast<int>(window.mapPanel()->jobs().jobs().size()), window.playing() ? "yes" : "no");
-      std::fflush(stdout);
-      app.quit();
+  // a scripted run: the summary of what the window holds (for tests), at the end and, with a status file,
+  // all along
+  const auto summary = [&window] {
+    char line[512];
+    std::snprintf(
+        line, sizeof line,
+        "shown t = %.6g, map trajectories = %d, map points = %ld, fixed point searches = %d, found = %d, "
+        "tool jobs = %d, jobs in the tool manager = %d, playing = %s\n",
+        window.shownTime(), window.mapPanel()->trajectories(), window.mapPanel()->points(),
+        window.mapPanel()->searches(), window.mapPanel()->fixedPointsFound(), window.mapPanel()->toolJobs(),
+        static_cast<int>(window.mapPanel()->jobs().jobs().size()), window.playing() ? "yes" : "no");
+    return std::string(line);
+  };
+  bool finished = false;
+  const auto finish = [&] {
+    if (finished) return;
+    finished = true;
+    if (!options.screenshot.empty() && !window.grab().save(QString::fromStdString(options.screenshot), "PNG"))
+      std::fprintf(stderr, "rollviz: cannot write %s\n", options.screenshot.c_str());
+    std::fputs(summary().c_str(), stdout);
+    std::fflush(stdout);
+    app.quit();
+  };
+  if (options.quitAfter > 0) QTimer::singleShot(static_cast<int>(options.quitAfter * 1000), &app, finish);
+  QTimer statusTimer;
+  if (!options.statusFile.empty()) {
+    const QString file = QString::fromStdString(options.statusFile);
+    QObject::connect(&statusTimer, &QTimer::timeout, &app, [&, file] {
+      if (QFileInfo::exists(file + ".quit")) return finish();
+      QSaveFile out(file); // whole lines only: written, then renamed
+      const std::string line = summary();
+      if (out.open(QIODevice::WriteOnly)) {
+        out.write(line.data(), static_cast<qint64>(line.size()));
+        out.commit();
+      }
     });
+    statusTimer.start(200);
+  }
   const int status = app.exec();
   setModelCompilationNotes({}); // stderr again: the window goes
   return status;
