@@ -375,10 +375,11 @@ std::unique_ptr<SceneMap> MapPanel::sceneMap() {
   }
 }
 
-void MapPanel::startTool(std::unique_ptr<Task> task, const Rgb& colour,
-                         std::function<bool(ToolSeries&)> pull) {
+void MapPanel::startTool(std::unique_ptr<Task> task, const Rgb& colour, std::function<bool(ToolSeries&)> pull,
+                         std::function<QString(const ToolSeries&)> ended) {
   Job& job = jobs_.add(std::move(task));
   tools_.push_back({&job, chart_->addSeries({}, {}, colour), {}, {}, std::move(pull)});
+  tools_.back().ended = std::move(ended);
   job.start();
 }
 
@@ -409,14 +410,22 @@ void MapPanel::startSeparatrices() {
     s.branch = b;
     auto task = std::make_unique<SeparatrixTask>(sm->taskSpec(), s);
     SeparatrixTask* raw = task.get();
-    startTool(std::move(task), colours[b - 1], [raw](ToolSeries& t) {
-      std::vector<std::vector<Eigen::VectorXd>> batches;
-      raw->points().take(batches);
-      for (const auto& batch : batches)
-        for (const auto& p : batch)
-          t.x.push_back(p[0]), t.y.push_back(p[1]);
-      return !batches.empty();
-    });
+    startTool(
+        std::move(task), colours[b - 1],
+        [raw](ToolSeries& t) {
+          std::vector<std::vector<Eigen::VectorXd>> batches;
+          raw->points().take(batches);
+          for (const auto& batch : batches)
+            for (const auto& p : batch)
+              t.x.push_back(p[0]), t.y.push_back(p[1]);
+          return !batches.empty();
+        },
+        [b](const ToolSeries& t) {
+          return QString("separatrix branch %1 (tool #%2) ended: %3 points")
+              .arg(b)
+              .arg(t.job->id())
+              .arg(t.x.size());
+        });
   }
   emit message("growing the separatrices of the fixed point near the scene's guess");
 }
@@ -463,25 +472,37 @@ void MapPanel::startContinuationWith(const ContinuationSettings& settings, const
     // the doublings of a family followed from the scene's point are where a later switch can start
     const int run = settings.switchAt == 0 ? ++continuationRun_ : -1;
     if (run > 0) doublings_.clear();
-    startTool(std::move(task), {0.95, 0.55, 0.1}, [this, raw, parameter, run](ToolSeries& t) {
-      std::vector<ContinuationPoint> points;
-      std::vector<TypeChange> changes;
-      raw->points().take(points);
-      raw->changes().take(changes);
-      for (const auto& p : points) {
-        t.x.push_back(p.fixedPoint.point[0]), t.y.push_back(p.fixedPoint.point[1]);
-        offerMultipliers(t, p.parameter, p.fixedPoint.multipliers);
-      }
-      for (const auto& c : changes) {
-        const QString text = QString::fromStdString(describe(c, parameter));
-        if (run == continuationRun_ && c.kind == TypeChange::Kind::MultiplierMinusOne)
-          doublings_.push_back(QString("period doubling at %1 = %2")
-                                   .arg(QString::fromStdString(parameter))
-                                   .arg(c.parameter, 0, 'g', 12));
-        emit message(text);
-      }
-      return !points.empty();
-    });
+    startTool(
+        std::move(task), {0.95, 0.55, 0.1},
+        [this, raw, parameter, run](ToolSeries& t) {
+          std::vector<ContinuationPoint> points;
+          std::vector<TypeChange> changes;
+          raw->points().take(points);
+          raw->changes().take(changes);
+          for (const auto& p : points) {
+            t.x.push_back(p.fixedPoint.point[0]), t.y.push_back(p.fixedPoint.point[1]);
+            offerMultipliers(t, p.parameter, p.fixedPoint.multipliers);
+          }
+          for (const auto& c : changes) {
+            const QString text = QString::fromStdString(describe(c, parameter));
+            if (run == continuationRun_ && c.kind == TypeChange::Kind::MultiplierMinusOne)
+              doublings_.push_back(QString("period doubling at %1 = %2")
+                                       .arg(QString::fromStdString(parameter))
+                                       .arg(c.parameter, 0, 'g', 12));
+            emit message(text);
+          }
+          return !points.empty();
+        },
+        [parameter](const ToolSeries& t) {
+          if (t.multipliers.empty())
+            return QString("continuation (tool #%1) ended with no point").arg(t.job->id());
+          return QString("continuation (tool #%1) ended: %2 fixed points, %3 from %4 to %5")
+              .arg(t.job->id())
+              .arg(t.multipliers.size())
+              .arg(QString::fromStdString(parameter))
+              .arg(t.multipliers.front().first, 0, 'g', 10)
+              .arg(t.multipliers.back().first, 0, 'g', 10);
+        });
     emit message(said);
   } catch (const InputError& e) {
     emit message(QString::fromStdString(e.what()));
@@ -496,27 +517,35 @@ void MapPanel::startBifurcationTree() {
         bifurcationTreeSettings(sm->scene().tool("bifurcation_tree"), sm->continuation());
     auto task = std::make_unique<BifurcationTreeTask>(sm->taskSpec(), settings);
     BifurcationTreeTask* raw = task.get();
-    startTool(std::move(task), {0.6, 0.2, 0.5}, [this, raw](ToolSeries& t) {
-      t.everyStep = true;
-      std::vector<TreePoint> points;
-      std::vector<PeriodDoubling> doublings;
-      raw->points().take(points);
-      raw->doublings().take(doublings);
-      for (const auto& p : points) {
-        t.x.push_back(p.point.fixedPoint.point[0]), t.y.push_back(p.point.fixedPoint.point[1]);
-        if (p.point.fixedPoint.type ==
-            FixedPointType::Elliptic) // manual §2.4.3: only the tree's elliptic branches
-          offerMultipliers(t, p.point.parameter, p.point.fixedPoint.multipliers);
-      }
-      for (const auto& d : doublings)
-        emit message(
-            QString("period doubling of the order-%1 point at %2").arg(d.order).arg(d.parameter, 0, 'g', 12));
-      std::vector<std::string> ends;
-      raw->ends().take(ends);
-      for (const auto& e : ends)
-        emit message(QString("the bifurcation tree ends: %1").arg(QString::fromStdString(e)));
-      return !points.empty();
-    });
+    startTool(
+        std::move(task), {0.6, 0.2, 0.5},
+        [this, raw](ToolSeries& t) {
+          t.everyStep = true;
+          std::vector<TreePoint> points;
+          std::vector<PeriodDoubling> doublings;
+          raw->points().take(points);
+          raw->doublings().take(doublings);
+          for (const auto& p : points) {
+            t.x.push_back(p.point.fixedPoint.point[0]), t.y.push_back(p.point.fixedPoint.point[1]);
+            if (p.point.fixedPoint.type ==
+                FixedPointType::Elliptic) // manual §2.4.3: only the tree's elliptic branches
+              offerMultipliers(t, p.point.parameter, p.point.fixedPoint.multipliers);
+          }
+          for (const auto& d : doublings)
+            emit message(QString("period doubling of the order-%1 point at %2")
+                             .arg(d.order)
+                             .arg(d.parameter, 0, 'g', 12));
+          std::vector<std::string> ends;
+          raw->ends().take(ends);
+          for (const auto& e : ends)
+            emit message(QString("the bifurcation tree ends: %1").arg(QString::fromStdString(e)));
+          return !points.empty();
+        },
+        [](const ToolSeries& t) {
+          return QString("bifurcation tree (tool #%1) ended: %2 fixed points")
+              .arg(t.job->id())
+              .arg(t.x.size());
+        });
     emit message("growing the bifurcation tree of the scene's fixed point");
   } catch (const InputError& e) {
     emit message(QString::fromStdString(e.what()));
@@ -604,11 +633,16 @@ bool MapPanel::drain() {
   for (PlotWindow* p : plotWindows())
     p->flush();
   bool changed = false;
-  for (auto& t : tools_)
+  for (auto& t : tools_) {
+    const bool finished = t.job->status() == Job::Status::Finished; // read before the last points are taken
     if (t.pull(t)) {
       chart_->setSeries(t.plot, t.x, t.y);
       changed = true;
+    } else if (finished && !t.endSaid && t.ended) { // all it made is drawn: its outcome to the Results dock
+      t.endSaid = true;
+      emit message(t.ended(t));
     }
+  }
   std::vector<SearchPoint> steps;
   for (auto& s : searches_) {
     if (s.task->path().take(steps) > 0) {
@@ -642,9 +676,16 @@ bool MapPanel::drain() {
   for (auto& s : series_) { // a MEGNO job that has ended colours its trajectory
     if (!s.megnoJob || s.megnoValue || s.megnoJob->running()) continue;
     if (s.megnoJob->status() == Job::Status::Finished) {
-      s.megnoValue = s.megno->result().last.megno;
+      const auto& last = s.megno->result().last;
+      s.megnoValue = last.megno;
       applyColour(s);
       changed = true;
+      // <Y> near 2 is a torus; on a chaotic orbit it grows like lambda t / 2 (the rate tends to lambda)
+      emit message(QString("trajectory #%1: MEGNO <Y> = %2 at t = %3, rate %4")
+                       .arg(s.job->id())
+                       .arg(last.megno, 0, 'g', 6)
+                       .arg(last.time, 0, 'g', 6)
+                       .arg(last.megnoRate, 0, 'g', 4));
     } else if (s.megnoJob->status() == Job::Status::Failed) {
       emit message(QString::fromStdString("MEGNO: " + s.megnoJob->error()));
       s.megnoValue = std::numeric_limits<double>::quiet_NaN(); // reported once; drawn in its own colour
@@ -738,7 +779,7 @@ void MapPanel::clearOutput(int id) {
     }
   for (auto& t : tools_)
     if (t.job->id() == id) {
-      t.x.clear(), t.y.clear(), t.multipliers.clear();
+      t.x.clear(), t.y.clear(), t.multipliers.clear(), t.endSaid = false;
       chart_->setSeries(t.plot, {}, {});
       for (auto& w : multiplierWindows_)
         if (w) w->forget(id), w->flush();

@@ -244,6 +244,9 @@ private:
     /// the multipliers of a family's points (continuation, tree), kept for filters opened later
     std::vector<std::pair<double, std::vector<std::complex<double>>>> multipliers;
     bool everyStep = false; ///< a tree: each step is output (not by the filter's period)
+    /// What the Results dock says once the job has finished and everything it made is drawn
+    std::function<QString(const ToolSeries&)> ended;
+    bool endSaid = false;
   };
   std::vector<ToolSeries> tools_;
   /// Starts a continuation with these settings; `said` goes to the Results dock.
@@ -251,7 +254,8 @@ private:
   std::vector<QString> doublings_; ///< located by the last continuation started with switch 0
   int continuationRun_ = 0;        ///< which continuation's doublings doublings_ holds
   /// Adds a tool's job, a series on the map for its output (`pull` fetches it), and starts it.
-  void startTool(std::unique_ptr<Task> task, const Rgb& colour, std::function<bool(ToolSeries&)> pull);
+  void startTool(std::unique_ptr<Task> task, const Rgb& colour, std::function<bool(ToolSeries&)> pull,
+                 std::function<QString(const ToolSeries&)> ended = {});
   /// A fixed point of a family: kept, and offered to the open multipliers filters.
   void offerMultipliers(ToolSeries& t, double parameter, const std::vector<std::complex<double>>& m);
   std::vector<QPointer<MultipliersWindow>> multiplierWindows_;

@@ -818,6 +818,10 @@ private slots:
       QCOMPARE(map->jobs().children(*map->jobs().find(id)).size(), std::size_t(1));
     QTRY_VERIFY_WITH_TIMEOUT(map->trajectoryMegno(ids[0]) && map->trajectoryMegno(ids[1]), 30000);
     const double torus = *map->trajectoryMegno(ids[0]), chaos = *map->trajectoryMegno(ids[1]);
+    // each <Y> is said in the Results dock with its trajectory's number
+    QVERIFY2(window_->results().contains(
+                 QString("trajectory #%1: MEGNO <Y> = %2").arg(ids[0]).arg(torus, 0, 'g', 6)),
+             qPrintable(window_->results()));
     QVERIFY2(std::abs(torus - 2) < 0.1, qPrintable(QString::number(torus)));
     QVERIFY2(chaos > 50, qPrintable(QString::number(chaos)));
     const Rgb blue = map->shownColour(ids[0]), red = map->shownColour(ids[1]);
@@ -1061,6 +1065,11 @@ private slots:
     // a window opened later gets the family computed so far
     MultipliersWindow* later = window_->openMultipliersWindow();
     QCOMPARE(later->points(), 2L * 41); // period 0: every point, K = 1.5, 1.55, ..., 3.5
+    // its outcome reaches the Results dock: how many points, over which range of the parameter
+    map->drain();
+    const QString ended =
+        QString("continuation (tool #%1) ended: 41 fixed points, K from 1.5 to 3.5").arg(job->id());
+    QTRY_VERIFY2_WITH_TIMEOUT(window_->results().contains(ended), qPrintable(window_->results()), 10000);
     QTest::qWait(200);
     QVERIFY(keep(w->grab().toImage(), "window_multipliers.png"));
     QVERIFY(inked(w->view()->grabFramebuffer()) > 2000); // the axes, the unit circle and the points
