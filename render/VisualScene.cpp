@@ -103,9 +103,11 @@ VisualScene::VisualScene(const Model& model, const ViewOptions& options, const E
     add(std::make_unique<BodyObject>(geometry->shape == BodyShape::Ball ? "ball" : "body", *geometry, mesh));
     add(std::make_unique<ContactTraceObject>("body_trace", ContactTraceObject::On::Body, scale_, cap));
     add(std::make_unique<BodyAxesObject>("axes", *geometry, scale_));
+    // a box the body stands in (they grow as it rolls away): one four body sizes wide left its edges outside
+    // the camera's frame, and the axes seemed not to be drawn at all
     const Eigen::Vector3d c = pose->contact;
-    lo = {c[0] - 4 * scale_, c[1] - 4 * scale_, 0.0},
-    hi = {c[0] + 4 * scale_, c[1] + 4 * scale_, 2.5 * scale_};
+    lo = {c[0] - 1.5 * scale_, c[1] - 1.5 * scale_, 0.0},
+    hi = {c[0] + 1.5 * scale_, c[1] + 1.5 * scale_, 2.2 * scale_};
   } else {
     scale_ = std::max(1.0, x0.head(std::min<Eigen::Index>(3, x0.size())).norm());
     add(std::make_unique<PhaseCurveObject>(model.isMap() ? "points" : "curve", scale_, cap, model.isMap()));
@@ -113,6 +115,7 @@ VisualScene::VisualScene(const Model& model, const ViewOptions& options, const E
   }
   auto axes = std::make_unique<SceneAxesObject>("scene_axes", options.axes, lo, hi);
   axes->setFollowsMotion(options.kind != ViewKind::Apex);
+  if (geometry && pose && options.kind != ViewKind::Apex) axes->setLift(6e-3 * scale_); // above the floor
   add(std::move(axes));
   show(0.0, x0);
   resetCamera();

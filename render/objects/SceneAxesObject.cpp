@@ -50,6 +50,12 @@ SceneAxesObject::SceneAxesObject(std::string name, const AxesOptions& axes,
   box_->GetProperty()->SetLighting(false);
 }
 
+void SceneAxesObject::setLift(double dz) {
+  for (auto& a : axis_)
+    a->SetPosition(0, 0, dz);
+  box_->SetPosition(0, 0, dz);
+}
+
 void SceneAxesObject::attach(vtkRenderer* renderer) {
   renderer_ = renderer;
   for (auto& a : axis_) {

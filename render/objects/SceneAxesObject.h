@@ -29,6 +29,9 @@ public:
   /// three coordinates of a phase curve (by a quarter of its size each time, so it is rebuilt seldom).
   void advance(const FrameState& s) override;
   /// Whether the box grows with the motion (not in the apex view: its box is the unit sphere's).
+  /// Draws the axes this much above where their numbers say (a body view: lines on the floor at z = 0 would
+  /// be hidden in it, as the contact trace would).
+  void setLift(double dz);
   void setFollowsMotion(bool follows) { follows_ = follows; }
   /// Back to the region the scene started in.
   void clear() override;

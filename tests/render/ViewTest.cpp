@@ -145,6 +145,21 @@ TEST(SceneAxes, TicksAreWhereTheRangeAndCountsPutThem) {
   EXPECT_GT(test::pixelsChanged(with, renderPlayed(*p->visual)), 300);
 }
 
+// In a body view the box the axes draw without a range of their own holds the body and shows in the frame
+// (it used to be four body sizes wide: its edges fell outside the camera's view, the axes seemed missing),
+// and lines at z = 0 are drawn above the floor, not hidden in it. (Switching the axes off changed 1731 pixels
+// of this picture with the old box, 2837 with this one.)
+TEST(SceneAxes, InABodyViewTheBoxAroundTheBodyIsSeen) {
+  const auto p = play("chaplygin_ball", 2.0, {"view.axes.style=box"});
+  const auto* axes = dynamic_cast<const SceneAxesObject*>(p->visual->find("scene_axes"));
+  ASSERT_NE(axes, nullptr);
+  const Image with = renderPlayed(*p->visual);
+  AxesOptions none;
+  p->visual->setAxes(none);
+  const long changed = test::pixelsChanged(with, renderPlayed(*p->visual));
+  EXPECT_GT(changed, 2400) << "the box and its numbers are in the picture: " << changed;
+}
+
 // Without a range of their own the axes hold the motion: the Lorenz attractor leaves the box its start point
 // gives (|x0| = sqrt 3) at once, and by t = 20 has reached z > 40 and |x| > 15 (its known extent); the box
 // covers every point of the curve, and Reset (clear) gives the starting box back.
