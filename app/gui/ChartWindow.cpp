@@ -38,6 +38,7 @@ ChartWindow::ChartWindow(JobTree& jobs, const nlohmann::json& document, const st
     : FilterWindow(QString::fromStdString(chartTitle(view) + (diagram.empty() ? "" : " " + diagram)),
                    QString::fromStdString(view), parent),
       viewName_(view), diagram_(diagram), jobs_(jobs) {
+  document_ = document;
   showPlaceholder("computing " + QString::fromStdString(chartTitle(view)) + "…");
   setSavable(false, "nothing to save until the chart is drawn");
   setStatus("computing…");

@@ -38,6 +38,8 @@ public:
   /// Why the computation failed (empty while running or when it succeeded).
   const QString& failure() const { return failure_; }
   const std::string& viewName() const { return viewName_; }
+  /// The scene document it computes (a session saves it to open the window again).
+  const nlohmann::json& document() const { return document_; }
   /// The bifurcation view's diagram id (empty: the problem's first).
   const std::string& diagram() const { return diagram_; }
   /// A marked point over the chart: manual §2.4.4, each trajectory of the map is a point on the plane of the
@@ -58,6 +60,7 @@ protected:
   const Chart* chart() const override { return chart_.get(); }
 
 private:
+  nlohmann::json document_;
   /// Follows the job: its progress, and its chart or failure when it ends (polled by a timer).
   void poll();
   void drawMarks();

@@ -891,7 +891,13 @@ void MainWindow::diagramDialog() {
 ChartWindow* MainWindow::openChart(const std::string& view, const std::string& diagram) {
   if (!scene_) return nullptr;
   // with the control panel's values as they stand (Apply not needed for a chart)
-  auto* w = new ChartWindow(map_->jobs(), control_->editedDocument(), scene_->source, view, this, diagram);
+  return openChartOf(control_->editedDocument(), view, diagram);
+}
+
+ChartWindow* MainWindow::openChartOf(const nlohmann::json& document, const std::string& view,
+                                     const std::string& diagram) {
+  if (!scene_) return nullptr;
+  auto* w = new ChartWindow(map_->jobs(), document, scene_->source, view, this, diagram);
   w->setAttribute(Qt::WA_DeleteOnClose);
   // every outcome in the Results dock: the numbers a finished chart shows (its failures: the tool manager)
   connect(w, &ChartWindow::finished, this, [this, w, view] {

@@ -120,6 +120,9 @@ public:
   /// Opens a filter window with a chart view of the scene (computed on a worker thread); `diagram` picks the
   /// bifurcation view's diagram (empty: the problem's first).
   ChartWindow* openChart(const std::string& view, const std::string& diagram = "");
+  /// The same for a given scene document (a session's chart windows open again with theirs).
+  ChartWindow* openChartOf(const nlohmann::json& document, const std::string& view,
+                           const std::string& diagram = "");
   /// Opens a sweep file (docs/sweeps.md) in a sweep window that runs it as a job; nullptr (and a message)
   /// when the file is bad.
   SweepWindow* openSweep(const QString& path);
@@ -220,6 +223,8 @@ private:
   /// Where a save dialog proposes a scene or session file `name`: beside the open scene when its folder is
   /// the user's, else in the documents folder (never the working directory).
   QString besideTheScene(const QString& name) const;
+  /// Opens the chart and sweep windows a session lists (gui.windows).
+  void reopenWindows(const nlohmann::json& gui);
   void saveSessionDialog();
   void openSessionDialog();
   /// Puts a session's scene and trajectories in place (no question; with `remember`, what was open becomes an

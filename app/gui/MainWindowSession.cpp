@@ -2,8 +2,10 @@
 // opened, Edit > Undo of what replaced the map or deleted trajectories, and the trajectories saved at exit.
 #include "app/gui/MainWindow.h"
 
+#include "app/gui/ChartWindow.h"
 #include "app/gui/FilterWindow.h"
 #include "app/gui/MapPanel.h"
+#include "app/gui/SweepWindow.h"
 #include "dynamics/io/AtomicFile.h"
 #include "scenes/ModelFile.h"
 #include "scenes/SceneLoader.h"
@@ -111,6 +113,15 @@ bool MainWindow::saveSessionTo(const QString& path, QString* why) {
   session.trajectories = map_->saveTrajectories({}, false, true); // running ones go on
   session.results = results().toStdString();
   session.gui = {{"layout", saveState().toBase64().toStdString()}};
+  // the chart and sweep windows open, to be opened again (a chart computes again with its document; a
+  // sweep goes on from its store)
+  nlohmann::json windows = nlohmann::json::array();
+  for (const ChartWindow* w : findChildren<ChartWindow*>())
+    if (w->isVisible())
+      windows.push_back({{"chart", w->viewName()}, {"diagram", w->diagram()}, {"document", w->document()}});
+  for (const SweepWindow* w : findChildren<SweepWindow*>())
+    if (w->isVisible()) windows.push_back({{"sweep", w->spec().source}});
+  session.gui["windows"] = windows;
   try {
     writeSession(session, path.toStdString());
   } catch (const std::exception& e) {
@@ -131,6 +142,7 @@ bool MainWindow::openSession(const QString& path) {
     results_->setPlainText(QString::fromStdString(session.results));
     if (const auto layout = session.gui.find("layout"); layout != session.gui.end() && layout->is_string())
       restoreState(QByteArray::fromBase64(QByteArray::fromStdString(layout->get<std::string>())));
+    reopenWindows(session.gui);
     rememberRecent(QFileInfo(path).absoluteFilePath());
     report(QString("opened the session %1 (%2 trajectories)")
                .arg(QFileInfo(path).fileName())
@@ -151,6 +163,18 @@ QString MainWindow::besideTheScene(const QString& name) const {
   if (!scenePath_.isEmpty() && folder.isDir() && folder.isWritable() && !shipped)
     return QDir(folder.absoluteFilePath()).filePath(name);
   return proposedPath(QStandardPaths::DocumentsLocation, name);
+}
+
+void MainWindow::reopenWindows(const nlohmann::json& gui) {
+  const auto windows = gui.find("windows");
+  if (windows == gui.end() || !windows->is_array()) return;
+  for (const auto& w : *windows) {
+    if (!w.is_object()) continue;
+    if (w.contains("chart") && w["chart"].is_string() && w.contains("document") && w["document"].is_object())
+      openChartOf(w["document"], w["chart"].get<std::string>(), w.value("diagram", std::string()));
+    else if (w.contains("sweep") && w["sweep"].is_string())
+      openSweep(QString::fromStdString(w["sweep"].get<std::string>())); // says why when it cannot
+  }
 }
 
 void MainWindow::saveSessionDialog() {

@@ -1396,13 +1396,26 @@ private slots:
     for (int id : ids)
       saved.push_back(map->trajectoryPoints(id));
     window_->report("a line the session keeps");
+    ChartWindow* chart = window_->openChart("poincare"); // an open chart window is part of the session
+    QVERIFY(chart);
+    const nlohmann::json chartDocument = chart->document();
     const QString path = dir_.filePath("hh-session.json");
     QVERIFY(window_->saveSessionTo(path));
+    chart->close();
     QVERIFY(window_->openScene(QString::fromStdString(defaultScenePath("chaplygin_ball"))));
     window_->findChild<QPushButton*>("clear_results")->click();
     QVERIFY(window_->openScene(path)); // File > Open scene takes a session too
     QCOMPARE(window_->scene()->model->info().id, std::string("henon_heiles"));
     QVERIFY(window_->results().contains("a line the session keeps"));
+    ChartWindow* again = nullptr;
+    for (ChartWindow* w : window_->findChildren<ChartWindow*>())
+      if (w->isVisible() && w->viewName() == "poincare") again = w;
+    QVERIFY(again);
+    QCOMPARE(again->document(), chartDocument);
+    QSignalSpy drawn(again, &ChartWindow::finished);
+    QVERIFY(again->ready() || drawn.wait(30000));
+    QVERIFY(again->ready());
+    again->close();
     const std::vector<int> opened = map->sceneJobs();
     QCOMPARE(opened.size(), saved.size());
     for (std::size_t k = 0; k < saved.size(); ++k)
