@@ -6,7 +6,7 @@
 // chart. "Colour by MEGNO" computes the chaos indicator <Y> of each trajectory (a MEGNO job under its
 // trajectory's, with the scene's megno settings) and colours its points by it: blue near 2 (a torus), red
 // from 8 up (chaos), hue between; 0 (a stable periodic orbit of a map) is blue too. The jobs run on their own
-// threads; this panel only draws.
+// threads; this panel only draws. The fixed-point tools on the map live in MapPanelTools.cpp.
 #pragma once
 #include "app/gui/ChartWindow.h"
 #include "dynamics/jobs/JobTree.h"
