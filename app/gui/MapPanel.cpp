@@ -438,6 +438,7 @@ bool MapPanel::drain() {
                  .arg(z.imag() < 0 ? "" : "+")
                  .arg(z.imag(), 0, 'g', 6);
       emit message(m);
+      if (r->point.size() >= 2) chart_->setSeries(s.found, {r->point[0]}, {r->point[1]});
       s.multipliers = r->multipliers; // shown in every multipliers filter, also in one opened later
       s.caption = m;
       for (auto& w : multiplierWindows_)
@@ -520,6 +521,7 @@ void MapPanel::removeJob(Job& job) {
       for (auto& w : multiplierWindows_)
         if (w) w->forget(it->job->id()), w->flush();
       chart_->setSeries(it->point, {}, {});
+      chart_->setSeries(it->found, {}, {});
       if (it->path >= 0) chart_->setSeries(it->path, {}, {});
       it = searches_.erase(it);
     } else {
@@ -563,6 +565,7 @@ void MapPanel::clearOutput(int id) {
       for (auto& w : multiplierWindows_)
         if (w) w->forget(id), w->flush();
       chart_->setSeries(s.point, {}, {});
+      chart_->setSeries(s.found, {}, {});
       if (s.path >= 0) chart_->setSeries(s.path, {}, {});
     }
   view_->update();

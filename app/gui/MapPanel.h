@@ -227,6 +227,7 @@ private:
     FixedPointTask* task;
     std::vector<double> x, y;
     int path, point;
+    int found = -1; ///< the point found, as a marker of its own
     bool reported = false;
     std::vector<std::complex<double>> multipliers; ///< of the point found (empty: none yet)
     QString caption;                               ///< the point, its type and multipliers, in words

@@ -28,6 +28,7 @@ void MapPanel::searchFixedPointAt(double x, double y) {
     const int path = chart_->addCurve({x, x}, {y, y}, red, 1.5);
     const int point = chart_->addSeries({}, {}, red);
     searches_.push_back({&job, raw, {}, {}, path, point});
+    searches_.back().found = chart_->addMarkers({}, {}, red);
     job.start();
     emit message(
         QString("searching a fixed point of order %1 from (%2, %3)").arg(sm.section().order).arg(x).arg(y));

@@ -192,6 +192,20 @@ int PoincareChart::addSeries(const std::vector<double>& x, const std::vector<dou
   return static_cast<int>(chart_->GetNumberOfPlots()) - 1;
 }
 
+int PoincareChart::addMarkers(const std::vector<double>& x, const std::vector<double>& y, const Rgb& c) {
+  vtkNew<vtkPlotPoints> points;
+  chart_->AddPlot(points);
+  points->SetLegendVisibility(!chart_->GetShowLegend()); // (setLegend names it)
+  const int index = static_cast<int>(chart_->GetNumberOfPlots()) - 1;
+  setPoints(points, index, x, y);
+  points->SetColor(static_cast<unsigned char>(255 * c[0]), static_cast<unsigned char>(255 * c[1]),
+                   static_cast<unsigned char>(255 * c[2]), 255);
+  points->SetMarkerStyle(vtkPlotPoints::CROSS);
+  points->SetMarkerSize(5 * markerSize_);
+  markers_.push_back(index);
+  return index;
+}
+
 int PoincareChart::addCurve(const std::vector<double>& x, const std::vector<double>& y, const Rgb& c,
                             float width) {
   int first = -1;
@@ -322,6 +336,7 @@ void PoincareChart::setColor(int index, const Rgb& c) {
 void PoincareChart::clear() {
   chart_->ClearPlots();
   large_.clear();
+  markers_.clear();
   for (int a : {vtkAxis::BOTTOM, vtkAxis::LEFT}) // ranges follow the next data again
     chart_->GetAxis(a)->SetBehavior(vtkAxis::AUTO);
   selected_ = -1;
@@ -402,7 +417,9 @@ bool PoincareChart::toChart(double px, double py, double& x, double& y) const {
 void PoincareChart::select(int index) {
   for (vtkIdType i = 0; i < chart_->GetNumberOfPlots(); ++i)
     if (auto* points = vtkPlotPoints::SafeDownCast(chart_->GetPlot(i)))
-      points->SetMarkerSize(i == index ? 2 * markerSize_ : markerSize_);
+      points->SetMarkerSize(std::find(markers_.begin(), markers_.end(), i) != markers_.end() ? 5 * markerSize_
+                            : i == index                                                     ? 2 * markerSize_
+                                                                                             : markerSize_);
   selected_ = index;
 }
 

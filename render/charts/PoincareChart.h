@@ -27,6 +27,9 @@ public:
   static constexpr std::size_t kThinAbove = 20000;
   /// Adds a trajectory's points (x[i], y[i]); returns its index.
   int addSeries(const std::vector<double>& x, const std::vector<double>& y, const Rgb& color);
+  /// Adds points drawn as large crosses, whatever is selected (a found fixed point: a marker of its own, not
+  /// one more trajectory's dot); setSeries fills it as any series. Returns its index.
+  int addMarkers(const std::vector<double>& x, const std::vector<double>& y, const Rgb& color);
   /// Adds a curve through (x[i], y[i]), broken where a value is NaN; returns the index of its first piece.
   int addCurve(const std::vector<double>& x, const std::vector<double>& y, const Rgb& color, float width = 2);
   /// A heat map of values on a regular grid (x fastest: values[j * nx + i] at (x0 + i dx, y0 + j dy)),
@@ -94,6 +97,7 @@ private:
   void setPoints(vtkPlot* plot, int index, const std::vector<double>& x, const std::vector<double>& y);
   std::vector<LargeSeries> large_;
   int selected_ = -1;
+  std::vector<int> markers_; ///< addMarkers' series: their size is their own
   float markerSize_ = 3;
   bool equalAspect_ = false;
 };

@@ -25,7 +25,10 @@
 #include "scenes/SceneLoader.h"
 #include "scenes/SweepTask.h"
 #include "scenes/ToolRunner.h"
+#include <vtkChartXY.h>
 #include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkPlotPoints.h>
+#include <vtkTable.h>
 
 #include <QApplication>
 #include <QCheckBox>
@@ -1258,6 +1261,18 @@ private slots:
       QVERIFY2(window->caption().contains("elliptic"), qPrintable(window->caption()));
     };
     check(w);
+    // on the map the point found has a marker of its own: one large cross at (pi, 0)
+    int crosses = 0;
+    vtkChartXY* xy = map->chart().chart();
+    for (vtkIdType i = 0; i < xy->GetNumberOfPlots(); ++i)
+      if (auto* p = vtkPlotPoints::SafeDownCast(xy->GetPlot(i));
+          p && p->GetMarkerStyle() == vtkPlotPoints::CROSS && p->GetInput() &&
+          p->GetInput()->GetNumberOfRows() == 1) {
+        ++crosses;
+        QVERIFY(std::abs(p->GetInput()->GetValue(0, 0).ToDouble() - M_PI) < 1e-8);
+        QVERIFY(std::abs(p->GetInput()->GetValue(0, 1).ToDouble()) < 1e-8);
+      }
+    QCOMPARE(crosses, 1);
     MultipliersWindow* later = window_->openMultipliersWindow();
     check(later);
     QTest::qWait(200);
