@@ -174,6 +174,14 @@ private:
   NamedColumns history_;
 };
 
+} // namespace
+
+nlohmann::json megnoFields(const MegnoEstimate& e) {
+  return {{"megno", e.megno}, {"megno_rate", e.megnoRate}, {"y", e.y}, {"fli", e.fli}, {"time", e.time}};
+}
+
+namespace {
+
 // MEGNO and FLI along the scene's trajectory (dynamics/tools/Megno.h)
 class MegnoToolRun final : public EstimatesRun<MegnoRun, MegnoEstimate> {
 public:
@@ -181,8 +189,7 @@ public:
   ToolResult result() const override {
     const MegnoEstimate& e = run().result().last;
     ToolResult r;
-    r.fields = {
-        {"megno", e.megno}, {"megno_rate", e.megnoRate}, {"y", e.y}, {"fli", e.fli}, {"time", e.time}};
+    r.fields = megnoFields(e);
     r.table = history();
     return r;
   }

@@ -2,8 +2,15 @@
 // runners are bound to their registry entries here, once, before any front end is built (findToolRunner
 // and scenes/ModuleLoader.h call it).
 #pragma once
+#include <nlohmann/json.hpp>
 
 namespace rv {
+
+struct MegnoEstimate;
+
+/// The megno tool's named outputs of an estimate (megno, megno_rate, y, fli, time): its result's fields, and
+/// what a sweep batching MEGNO on lanes reads (one definition).
+nlohmann::json megnoFields(const MegnoEstimate& e);
 
 /// Binds the runners of the built-in tools that have one (bifurcation_curve, spectrum, lyapunov, megno);
 /// idempotent and thread-safe. Free of VTK (the fuzzers link it).

@@ -49,6 +49,15 @@ std::string text(const json& j, const Where& w) {
   return j.get<std::string>();
 }
 
+std::vector<double> numbers(const nlohmann::json& j, const Where& w) {
+  if (!j.is_array()) w.fail("expected an array of numbers");
+  std::vector<double> v;
+  v.reserve(j.size());
+  for (std::size_t i = 0; i < j.size(); ++i)
+    v.push_back(number(j[i], w / std::to_string(i)));
+  return v;
+}
+
 bool boolean(const json& j, const Where& w) {
   if (!j.is_boolean()) w.fail("expected true or false, got " + shown(j));
   return j.get<bool>();

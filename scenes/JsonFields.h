@@ -24,6 +24,8 @@ const nlohmann::json& requireObject(const nlohmann::json& j, const Where& w);
 double number(const nlohmann::json& j, const Where& w);
 std::string text(const nlohmann::json& j, const Where& w);
 bool boolean(const nlohmann::json& j, const Where& w);
+/// An array of numbers ("expected an array of numbers"; an element that is not one names its index).
+std::vector<double> numbers(const nlohmann::json& j, const Where& w);
 /// Fails naming the first key of `j` that is not in `keys`.
 void onlyKeys(const nlohmann::json& j, const Where& w, std::initializer_list<const char*> keys);
 /// The whole text of one of the project's input files; InputError "PATH: is a folder, not a WHAT", "cannot

@@ -180,10 +180,7 @@ Eigen::VectorXd readInitial(const json& j, const Where& w, const Model& model,
     return model.stateFromNamed(named, ws.str());
   }
   const Where wm = w / "map";
-  if (!j["map"].is_array()) wm.fail("expected an array of numbers");
-  std::vector<double> point;
-  for (std::size_t i = 0; i < j["map"].size(); ++i)
-    point.push_back(number(j["map"][i], wm / std::to_string(i)));
+  const std::vector<double> point = numbers(j["map"], wm);
   MapPointSpec spec{.sectionValue = poincare.value};
   // a map point lies on the section; an angle section's value is its level
   if (j.contains("root")) {
@@ -220,9 +217,8 @@ const TextKey textKeys[] = {
      "the observable whose crossings of poincare.value make the section"},
     {"guess", "fixedpoint", "the guess belongs to the \"fixedpoint\" section",
      [](const json& j, const Where& w, Scene& scene) {
-       if (!j.is_array()) w.fail("expected an array of numbers");
-       for (std::size_t i = 0; i < j.size(); ++i)
-         scene.guess.push_back(number(j[i], w / std::to_string(i)));
+       const auto guess = numbers(j, w);
+       scene.guess.insert(scene.guess.end(), guess.begin(), guess.end());
      },
      "the starting point of the search in map coordinates (default: the scene's initial map point)",
      "numbers"},

@@ -12,14 +12,6 @@
 namespace rv {
 
 namespace {
-std::vector<double> numbers(const nlohmann::json& j, const Where& w) {
-  if (!j.is_array()) w.fail("must be an array of numbers");
-  std::vector<double> v;
-  v.reserve(j.size());
-  for (std::size_t i = 0; i < j.size(); ++i)
-    v.push_back(number(j[i], w / std::to_string(i)));
-  return v;
-}
 std::map<std::string, double> namedNumbers(const nlohmann::json& j, const Where& w) {
   requireObject(j, w);
   std::map<std::string, double> m;

@@ -6,6 +6,7 @@
 #include "dynamics/tools/MegnoLanes.h"
 #include "dynamics/tools/ToolRegistry.h"
 #include "dynamics/tools/ToolSettings.h"
+#include "scenes/BuiltinTools.h"
 #include "scenes/JsonFields.h"
 #include "scenes/SceneLoader.h"
 #include "scenes/SceneTools.h"
@@ -94,14 +95,12 @@ std::string typeCodes() {
 auto megnoOnLanesQuantity(const std::string& name) {
   return [name](const SweepSpec&, const std::vector<Scene>& scenes,
                 const ToolControl& control) -> std::optional<std::vector<LaneValues>> {
-    // the megno tool's outputs (scenes/BuiltinTools.cpp: MegnoToolRun::result)
+    // the megno tool's outputs, as its result names them
     const auto pick = [&name](const MegnoEstimate& e) -> std::optional<double> {
-      if (name == "megno") return e.megno;
-      if (name == "megno_rate") return e.megnoRate;
-      if (name == "y") return e.y;
-      if (name == "fli") return e.fli;
-      if (name == "time") return e.time;
-      return std::nullopt;
+      const nlohmann::json fields = megnoFields(e);
+      const auto f = fields.find(name);
+      if (f == fields.end() || !f->is_number()) return std::nullopt;
+      return f->get<double>();
     };
     const Scene& first = scenes.front();
     if (!pick(MegnoEstimate{})) return std::nullopt; // an output this batch does not know: one at a time

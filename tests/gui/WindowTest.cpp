@@ -1497,13 +1497,13 @@ private slots:
     dock->setFloating(true);
     dock->resize(500, 500);
     QVERIFY(QTest::qWaitForWindowExposed(dock));
-    QTest::qWait(50);
+    QTRY_VERIFY_WITH_TIMEOUT(pointsIn(map->view()->grabFramebuffer(), c) > 200, 10000);
     const QImage floating = map->view()->grabFramebuffer();
     QVERIFY(keep(floating, "map_floating.png"));
     QVERIFY2(pointsIn(floating, c) > 200, qPrintable(QString::number(pointsIn(floating, c))));
     dock->setFloating(false);
     QVERIFY(QTest::qWaitForWindowExposed(window_));
-    QTest::qWait(50);
+    QTRY_VERIFY_WITH_TIMEOUT(pointsIn(map->view()->grabFramebuffer(), c) > 200, 10000);
     const QImage back = map->view()->grabFramebuffer();
     QVERIFY(keep(back, "map_docked_again.png"));
     QVERIFY2(pointsIn(back, c) > 200, qPrintable(QString::number(pointsIn(back, c))));
