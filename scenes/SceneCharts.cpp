@@ -297,6 +297,17 @@ std::unique_ptr<PoincareChart> sessionMapChart(const Session& s) {
     const std::vector<double> y(t.y.begin() + from, t.y.begin() + std::max(from, to));
     chart->addSeries(x, y, t.colour);
   }
+  for (const auto& t : s.tools) {
+    if (t.found.empty()) { // a family, a separatrix branch, a tree: their points
+      chart->addSeries(t.x, t.y, t.colour);
+      continue;
+    }
+    // a search found its point: the path it took, its steps, and a cross where it ended (as the window drew
+    // it)
+    chart->addCurve(t.x, t.y, t.colour, 1.5);
+    chart->addSeries(t.x, t.y, t.colour);
+    chart->addMarkers({t.found[0]}, {t.found[1]}, t.colour);
+  }
   return chart;
 }
 

@@ -40,7 +40,7 @@ std::unique_ptr<Chart> sceneChart(const Scene& scene, const std::string& view, c
 
 struct Session;
 /// A saved GUI session's map (scenes/Session.h): every trajectory's shown points (its Set range) in its
-/// colour, the axes named by the session's scene; nothing is computed.
+/// colour, the fixed points and families its tools drew, the axes named by the scene; nothing is computed.
 std::unique_ptr<PoincareChart> sessionMapChart(const Session& s);
 
 } // namespace rv

@@ -23,6 +23,13 @@ const nlohmann::json& field(const nlohmann::json& j, const char* key, const Wher
   if (!j.contains(key)) w.fail(std::string("the field '") + key + "' is missing");
   return j[key];
 }
+Rgb colourField(const nlohmann::json& j, const Where& w) {
+  const auto colour = numbers(field(j, "colour", w), w / "colour");
+  if (colour.size() != 3 ||
+      std::any_of(colour.begin(), colour.end(), [](double c) { return c < 0 || c > 1; }))
+    (w / "colour").fail("must be three numbers from 0 to 1 (red, green, blue)");
+  return {colour[0], colour[1], colour[2]};
+}
 } // namespace
 
 nlohmann::json toJson(const SavedTrajectory& t) {
@@ -46,11 +53,7 @@ SavedTrajectory savedTrajectoryFromJson(const nlohmann::json& j, const Where& w)
   t.start = numbers(field(j, "start", w), w / "start");
   t.parameters = namedNumbers(field(j, "parameters", w), w / "parameters");
   t.integrator = namedNumbers(field(j, "integrator", w), w / "integrator");
-  const auto colour = numbers(field(j, "colour", w), w / "colour");
-  if (colour.size() != 3 ||
-      std::any_of(colour.begin(), colour.end(), [](double c) { return c < 0 || c > 1; }))
-    (w / "colour").fail("must be three numbers from 0 to 1 (red, green, blue)");
-  std::copy(colour.begin(), colour.end(), t.colour.begin());
+  t.colour = colourField(j, w);
   t.x = numbers(field(j, "x", w), w / "x");
   t.y = numbers(field(j, "y", w), w / "y");
   t.z = numbers(field(j, "z", w), w / "z");
@@ -66,6 +69,52 @@ SavedTrajectory savedTrajectoryFromJson(const nlohmann::json& j, const Where& w)
   return t;
 }
 
+nlohmann::json toJson(const SavedToolOutput& t) {
+  nlohmann::json multipliers = nlohmann::json::array();
+  for (const auto& [parameter, m] : t.multipliers) {
+    nlohmann::json values = nlohmann::json::array();
+    for (const auto& z : m)
+      values.push_back({z.real(), z.imag()});
+    multipliers.push_back({{"parameter", parameter}, {"multipliers", values}});
+  }
+  return {
+      {"name", t.name}, {"summary", t.summary}, {"colour", t.colour},          {"x", t.x},
+      {"y", t.y},       {"found", t.found},     {"fixed_points", multipliers}, {"every_step", t.everyStep}};
+}
+
+SavedToolOutput savedToolOutputFromJson(const nlohmann::json& j, const Where& w) {
+  requireObject(j, w);
+  SavedToolOutput t;
+  t.name = text(field(j, "name", w), w / "name");
+  t.summary = j.contains("summary") ? text(j["summary"], w / "summary") : std::string{};
+  t.colour = colourField(j, w);
+  t.x = numbers(field(j, "x", w), w / "x");
+  t.y = numbers(field(j, "y", w), w / "y");
+  if (t.y.size() != t.x.size()) w.fail("x and y must hold as many points");
+  if (j.contains("found")) t.found = numbers(j["found"], w / "found");
+  if (!t.found.empty() && t.found.size() != 2) (w / "found").fail("must be a point of the map: [x, y]");
+  if (j.contains("every_step")) t.everyStep = boolean(j["every_step"], w / "every_step");
+  if (j.contains("fixed_points")) {
+    const auto& list = j["fixed_points"];
+    if (!list.is_array()) (w / "fixed_points").fail("must be an array");
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      const Where at = w / ("fixed_points[" + std::to_string(i) + "]");
+      requireObject(list[i], at);
+      std::vector<std::complex<double>> m;
+      const auto& values = field(list[i], "multipliers", at);
+      if (!values.is_array()) (at / "multipliers").fail("must be an array of [re, im] pairs");
+      for (std::size_t k = 0; k < values.size(); ++k) {
+        const Where mk = at / ("multipliers[" + std::to_string(k) + "]");
+        const auto z = numbers(values[k], mk);
+        if (z.size() != 2) mk.fail("must be [re, im]");
+        m.emplace_back(z[0], z[1]);
+      }
+      t.multipliers.emplace_back(number(field(list[i], "parameter", at), at / "parameter"), std::move(m));
+    }
+  }
+  return t;
+}
+
 bool isSession(const nlohmann::json& document) {
   return document.is_object() && document.contains(kSessionKey);
 }
@@ -74,13 +123,12 @@ nlohmann::json sessionToJson(const Session& s) {
   nlohmann::json trajectories = nlohmann::json::array();
   for (const auto& t : s.trajectories)
     trajectories.push_back(toJson(t));
-  return {{kSessionKey, kSessionFormat},
-          {"scene", s.scene},
-          {"scene_path", s.scenePath},
-          {"origin", s.origin},
-          {"trajectories", trajectories},
-          {"results", s.results},
-          {"gui", s.gui}};
+  nlohmann::json tools = nlohmann::json::array();
+  for (const auto& t : s.tools)
+    tools.push_back(toJson(t));
+  return {
+      {kSessionKey, kSessionFormat},  {"scene", s.scene}, {"scene_path", s.scenePath}, {"origin", s.origin},
+      {"trajectories", trajectories}, {"tools", tools},   {"results", s.results},      {"gui", s.gui}};
 }
 
 Session sessionFromJson(const nlohmann::json& j, const std::string& file) {
@@ -102,6 +150,12 @@ Session sessionFromJson(const nlohmann::json& j, const std::string& file) {
   for (std::size_t i = 0; i < list.size(); ++i)
     s.trajectories.push_back(
         savedTrajectoryFromJson(list[i], Where{file, "trajectories[" + std::to_string(i) + "]"}));
+  if (j.contains("tools")) { // (sessions written before the tools were kept have none)
+    const auto& tools = j["tools"];
+    if (!tools.is_array()) (w / "tools").fail("must be an array");
+    for (std::size_t i = 0; i < tools.size(); ++i)
+      s.tools.push_back(savedToolOutputFromJson(tools[i], Where{file, "tools[" + std::to_string(i) + "]"}));
+  }
   return s;
 }
 

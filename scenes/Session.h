@@ -1,5 +1,6 @@
 // Session.h -- a GUI session in one JSON file: the scene, every trajectory of the map (where it starts, the
-// values it runs with, its colour, its points and the whole state to go on from, bit for bit), the Results
+// values it runs with, its colour, its points and the whole state to go on from, bit for bit), the fixed
+// points and families its tools drew (as drawn, with their multipliers), the Results
 // log and what the window keeps of its layout. The GUI writes and opens it (File > Save session / Open
 // session, Edit > Undo keeps the same record of the map); every command line command takes it where it
 // takes a scene (its scene), and `rollviz chart SESSION --view poincare` draws the saved map
@@ -8,6 +9,7 @@
 #include "render/ViewOptions.h"
 #include "scenes/JsonFields.h"
 
+#include <complex>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -29,7 +31,24 @@ struct SavedTrajectory {
   std::string origin;          ///< where a click started it, in map coordinates ("" for none)
 };
 
+/// What a fixed-point tool of the map drew (a search, a family, a separatrix branch, a bifurcation tree):
+/// kept as drawn, with the fixed points' multipliers; a session opens it as a finished record (not computed
+/// again: a family can take minutes).
+struct SavedToolOutput {
+  std::string name;    ///< the tool manager's name ("Fixed point", "Continuation", ...)
+  std::string summary; ///< its outcome in words, as the Results dock said it
+  Rgb colour{0, 0, 0};
+  std::vector<double> x, y;  ///< its points on the map (a search: the path it took)
+  std::vector<double> found; ///< a search's fixed point (map x, y); empty for none
+  /// The multipliers of its fixed points, each with the family's parameter (a search: one, parameter 0).
+  std::vector<std::pair<double, std::vector<std::complex<double>>>> multipliers;
+  bool everyStep = false; ///< a tree: the multipliers filter shows each step (not by its period)
+};
+
 nlohmann::json toJson(const SavedTrajectory& t);
+nlohmann::json toJson(const SavedToolOutput& t);
+/// InputError naming where (e.g. "session.json:tools[0].found") a field is missing or mistyped.
+SavedToolOutput savedToolOutputFromJson(const nlohmann::json& j, const Where& where);
 /// InputError naming where (e.g. "session.json:trajectories[3].x") a field is missing or mistyped.
 SavedTrajectory savedTrajectoryFromJson(const nlohmann::json& j, const Where& where);
 
@@ -38,6 +57,7 @@ struct Session {
   std::string scenePath; ///< the scene's file (relative files of the scene resolve from it; may be empty)
   std::string origin;    ///< what the window's title says the scene came from ("" : its file)
   std::vector<SavedTrajectory> trajectories;
+  std::vector<SavedToolOutput> tools;            ///< the fixed points and families drawn on the map
   std::string results;                           ///< the Results log
   nlohmann::json gui = nlohmann::json::object(); ///< the window's own (layout, ...): kept as written
 };

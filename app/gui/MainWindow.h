@@ -211,6 +211,7 @@ private:
     QString what;
     std::optional<Session> map;
     std::vector<SavedTrajectory> deleted;
+    std::vector<SavedToolOutput> deletedTools;
   };
   std::vector<UndoStep> undo_;
   QAction* undoAction_ = nullptr;
@@ -218,7 +219,7 @@ private:
   void pushUndo(UndoStep step);
   /// The map as it stands, as an Undo step, before it is replaced.
   void rememberMapForUndo();
-  /// The trajectories among jobs `roots` (and those under them), before Delete takes them.
+  /// The trajectories and tool outputs among jobs `roots` (and those under them), before Delete takes them.
   void rememberDeletedForUndo(const std::vector<int>& roots);
   /// Where a save dialog proposes a scene or session file `name`: beside the open scene when its folder is
   /// the user's, else in the documents folder (never the working directory).

@@ -29,7 +29,7 @@ bool MainWindow::mayReplaceMap(const QString& action) {
   return QMessageBox::question(
              this, "rollviz",
              QString("%1 replaces the map window: the %2 tool(s) added to it (trajectories, fixed points, "
-                     "families) will be deleted.\nEdit > Undo brings the trajectories back. Go on?")
+                     "families) will be deleted.\nEdit > Undo brings them back. Go on?")
                  .arg(action)
                  .arg(added),
              QMessageBox::Yes | QMessageBox::No, QMessageBox::No) == QMessageBox::Yes;
@@ -52,8 +52,10 @@ void MainWindow::rememberMapForUndo() {
   map.scenePath = scenePath_.toStdString();
   map.origin = origin_.toStdString();
   map.trajectories = map_->saveTrajectories({}, false, false); // they stop: the map is replaced next
+  map.tools = map_->saveToolOutputs({});
   const QString name = origin_.isEmpty() ? QFileInfo(scenePath_).fileName() : origin_;
-  const QString what = QString("(back to %1 with %2 trajectories)").arg(name).arg(map.trajectories.size());
+  QString what = QString("(back to %1 with %2 trajectories").arg(name).arg(map.trajectories.size());
+  what += map.tools.empty() ? QString(")") : QString(" and %1 tool outputs)").arg(map.tools.size());
   pushUndo({what, std::move(map), {}});
 }
 
@@ -65,10 +67,13 @@ void MainWindow::rememberDeletedForUndo(const std::vector<int>& roots) {
         ids.push_back(k->id());
   if (ids.empty()) return;
   auto deleted = map_->saveTrajectories(ids, false, false);
-  if (deleted.empty()) return; // no trajectory among them: nothing Undo could give back
-  const QString what =
-      QString("(delete of %1 trajector%2)").arg(deleted.size()).arg(deleted.size() > 1 ? "ies" : "y");
-  pushUndo({what, std::nullopt, std::move(deleted)});
+  auto tools = map_->saveToolOutputs(ids);
+  if (deleted.empty() && tools.empty()) return; // nothing drawn among them: nothing Undo could give back
+  QStringList parts;
+  if (!deleted.empty())
+    parts << QString("%1 trajector%2").arg(deleted.size()).arg(deleted.size() > 1 ? "ies" : "y");
+  if (!tools.empty()) parts << QString("%1 tool output%2").arg(tools.size()).arg(tools.size() > 1 ? "s" : "");
+  pushUndo({"(delete of " + parts.join(" and ") + ")", std::nullopt, std::move(deleted), std::move(tools)});
 }
 
 bool MainWindow::undo() {
@@ -80,8 +85,10 @@ bool MainWindow::undo() {
   try {
     if (step.map)
       useSession(*step.map, QString::fromStdString(step.map->scenePath), false);
-    else
+    else {
       map_->restoreTrajectories(step.deleted);
+      map_->restoreToolOutputs(step.deletedTools);
+    }
   } catch (const std::exception& e) {
     report(QString("cannot undo %1: %2").arg(step.what, e.what()), 0);
     return false;
@@ -97,7 +104,7 @@ void MainWindow::useSession(const Session& session, const QString& file, bool re
   useScene(std::move(scene), QString::fromStdString(session.scenePath),
            QString::fromStdString(session.origin), MapUse::Restore);
   try {
-    map_->replaceTrajectories(session.trajectories);
+    map_->replaceTrajectories(session.trajectories, session.tools);
   } catch (const std::exception&) {
     map_->startSceneTrajectory(); // the map is not left empty
     throw;
@@ -111,6 +118,7 @@ bool MainWindow::saveSessionTo(const QString& path, QString* why) {
   session.scenePath = scenePath_.toStdString();
   session.origin = origin_.toStdString();
   session.trajectories = map_->saveTrajectories({}, false, true); // running ones go on
+  session.tools = map_->saveToolOutputs({});
   session.results = results().toStdString();
   session.gui = {{"layout", saveState().toBase64().toStdString()}};
   // the chart and sweep windows open, to be opened again (a chart computes again with its document; a

@@ -287,11 +287,13 @@ void MapPanel::keepScene(const Scene& scene) {
   scene_ = &scene; // the trajectories run on their own copies of what defines them
 }
 
-void MapPanel::replaceTrajectories(const std::vector<SavedTrajectory>& saved) {
+void MapPanel::replaceTrajectories(const std::vector<SavedTrajectory>& saved,
+                                   const std::vector<SavedToolOutput>& tools) {
   for (int id : sceneJobs())
     if (Job* j = jobs_.find(id)) removeJob(*j);
   sceneStart_ = -1;
   restoreTrajectories(saved);
+  restoreToolOutputs(tools);
   if (!series_.empty()) chart_->select(series_.back().plot);
 }
 
@@ -418,14 +420,14 @@ bool MapPanel::drain() {
   }
   std::vector<SearchPoint> steps;
   for (auto& s : searches_) {
-    if (s.task->path().take(steps) > 0) {
+    if (s.task && s.task->path().take(steps) > 0) {
       for (const auto& p : steps)
         s.x.push_back(p.point[0]), s.y.push_back(p.point[1]);
       if (s.path >= 0 && s.x.size() >= 2) chart_->setSeries(s.path, s.x, s.y); // a line needs two points
       chart_->setSeries(s.point, s.x, s.y);
       changed = true;
     }
-    if (s.reported || s.job->running()) continue;
+    if (s.reported || s.job->running() || !s.task) continue; // (a record has nothing more to say)
     s.reported = true;
     if (const auto r = s.task->result()) {
       QString m = QString("fixed point (");
@@ -438,7 +440,10 @@ bool MapPanel::drain() {
                  .arg(z.imag() < 0 ? "" : "+")
                  .arg(z.imag(), 0, 'g', 6);
       emit message(m);
-      if (r->point.size() >= 2) chart_->setSeries(s.found, {r->point[0]}, {r->point[1]});
+      if (r->point.size() >= 2) {
+        s.foundAt = {r->point[0], r->point[1]};
+        chart_->setSeries(s.found, {r->point[0]}, {r->point[1]});
+      }
       s.multipliers = r->multipliers; // shown in every multipliers filter, also in one opened later
       s.caption = m;
       for (auto& w : multiplierWindows_)
@@ -561,7 +566,7 @@ void MapPanel::clearOutput(int id) {
     }
   for (auto& s : searches_)
     if (s.job->id() == id) {
-      s.x.clear(), s.y.clear(), s.reported = false, s.multipliers.clear();
+      s.x.clear(), s.y.clear(), s.reported = false, s.multipliers.clear(), s.foundAt.clear();
       for (auto& w : multiplierWindows_)
         if (w) w->forget(id), w->flush();
       chart_->setSeries(s.point, {}, {});

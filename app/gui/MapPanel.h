@@ -92,9 +92,16 @@ public:
   /// Adds saved trajectories to the map under the current scene, each with its points, colour and range;
   /// those that ran go on (bit for bit). Throws InputError, adding none, when one does not fit the scene.
   int restoreTrajectories(const std::vector<SavedTrajectory>& saved);
-  /// Deletes every trajectory and tool of the map and puts the saved trajectories in their place (Undo, Open
-  /// session).
-  void replaceTrajectories(const std::vector<SavedTrajectory>& saved);
+  /// Deletes every trajectory and tool of the map and puts the saved trajectories and tool outputs in their
+  /// place (Undo, Open session).
+  void replaceTrajectories(const std::vector<SavedTrajectory>& saved,
+                           const std::vector<SavedToolOutput>& tools = {});
+  /// What the fixed-point tools among jobs `ids` (empty: all) drew -- searches, families, separatrices,
+  /// trees -- with their multipliers and outcome (a running one: what it drew so far).
+  std::vector<SavedToolOutput> saveToolOutputs(const std::vector<int>& ids) const;
+  /// Draws saved tool outputs again, each as a finished job of the tool manager that computes nothing (a
+  /// record: its multipliers reach the filters, Delete and Undo work on it as on any tool).
+  void restoreToolOutputs(const std::vector<SavedToolOutput>& saved);
   /// A finished trajectory goes on for `more` points (bit for bit one longer run); false for a job that is
   /// not a trajectory, runs, or has no limit.
   bool morePoints(int id, long more);
@@ -224,14 +231,17 @@ private:
   static std::size_t takePoints(Series& s, std::size_t most);
   struct Search {
     Job* job;
-    FixedPointTask* task;
+    FixedPointTask* task; ///< null for a restored record
     std::vector<double> x, y;
     int path, point;
     int found = -1; ///< the point found, as a marker of its own
     bool reported = false;
     std::vector<std::complex<double>> multipliers; ///< of the point found (empty: none yet)
     QString caption;                               ///< the point, its type and multipliers, in words
+    std::vector<double> foundAt;                   ///< the point found, on the map (empty: none)
   };
+  /// The colour of a fixed-point search's path and point.
+  static constexpr Rgb kSearchColour{0.9, 0.1, 0.1};
   void start(const Eigen::VectorXd& state);
   std::vector<double> mapPoint(double x, double y) const;
   std::vector<Search> searches_;
@@ -240,6 +250,7 @@ private:
   struct ToolSeries {
     Job* job;
     int plot;
+    Rgb colour;
     std::vector<double> x, y;
     std::function<bool(ToolSeries&)> pull;
     /// the multipliers of a family's points (continuation, tree), kept for filters opened later

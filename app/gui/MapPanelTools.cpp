@@ -5,6 +5,7 @@
 #include "app/gui/MapPanel.h"
 
 #include "app/gui/MultipliersWindow.h"
+#include "app/gui/QtVtkWidget.h"
 #include "dynamics/core/Errors.h"
 #include "dynamics/jobs/FixedPointTasks.h"
 #include "dynamics/tools/ToolSettings.h"
@@ -24,11 +25,10 @@ void MapPanel::searchFixedPointAt(double x, double y) {
     auto task = std::make_unique<FixedPointTask>(sm.taskSpec());
     FixedPointTask* raw = task.get();
     Job& job = jobs_.add(std::move(task));
-    const Rgb red{0.9, 0.1, 0.1};
-    const int path = chart_->addCurve({x, x}, {y, y}, red, 1.5);
-    const int point = chart_->addSeries({}, {}, red);
+    const int path = chart_->addCurve({x, x}, {y, y}, kSearchColour, 1.5);
+    const int point = chart_->addSeries({}, {}, kSearchColour);
     searches_.push_back({&job, raw, {}, {}, path, point});
-    searches_.back().found = chart_->addMarkers({}, {}, red);
+    searches_.back().found = chart_->addMarkers({}, {}, kSearchColour);
     job.start();
     emit message(
         QString("searching a fixed point of order %1 from (%2, %3)").arg(sm.section().order).arg(x).arg(y));
@@ -53,7 +53,7 @@ std::unique_ptr<SceneMap> MapPanel::sceneMap() {
 void MapPanel::startTool(std::unique_ptr<Task> task, const Rgb& colour, std::function<bool(ToolSeries&)> pull,
                          std::function<QString(const ToolSeries&)> ended) {
   Job& job = jobs_.add(std::move(task));
-  tools_.push_back({&job, chart_->addSeries({}, {}, colour), {}, {}, std::move(pull)});
+  tools_.push_back({&job, chart_->addSeries({}, {}, colour), colour, {}, {}, std::move(pull)});
   tools_.back().ended = std::move(ended);
   job.start();
 }
@@ -238,8 +238,92 @@ void MapPanel::searchFromGuess() {
 int MapPanel::fixedPointsFound() const {
   int n = 0;
   for (const auto& s : searches_)
-    n += s.task->result().has_value();
+    n += !s.foundAt.empty();
   return n;
+}
+
+namespace {
+/// A tool's output as a session or Undo kept it: drawn already, nothing to compute.
+class RecordedTask final : public Task {
+public:
+  RecordedTask(std::string name, std::string summary)
+      : name_(std::move(name)), summary_(std::move(summary)) {}
+  std::string name() const override { return name_; }
+  std::string describe() const override { return "restored from a saved record: " + summary_; }
+  bool run(const ToolControl&) override { return true; }
+  void reset() override {}
+
+private:
+  std::string name_, summary_;
+};
+} // namespace
+
+std::vector<SavedToolOutput> MapPanel::saveToolOutputs(const std::vector<int>& ids) const {
+  const auto wanted = [&ids](const Job* j) { return ids.empty() || std::ranges::count(ids, j->id()) > 0; };
+  const auto sofar = [](const Job* j, std::size_t points) {
+    return QString("%1 (tool #%2): %3 points so far, %4 when saved")
+        .arg(QString::fromStdString(j->task().name()))
+        .arg(j->id())
+        .arg(points)
+        .arg(j->running() ? "running" : "stopped");
+  };
+  std::vector<SavedToolOutput> out;
+  for (const auto& s : searches_) {
+    if (!wanted(s.job)) continue;
+    SavedToolOutput o{s.job->task().name(), {}, kSearchColour, s.x, s.y, s.foundAt, {}, false};
+    o.summary = (s.reported ? s.caption : sofar(s.job, s.x.size())).toStdString();
+    if (s.reported && s.caption.isEmpty()) o.summary = "fixed point: " + s.job->error();
+    if (!s.multipliers.empty()) o.multipliers.emplace_back(0.0, s.multipliers);
+    out.push_back(std::move(o));
+  }
+  for (const auto& t : tools_) {
+    if (!wanted(t.job)) continue;
+    const bool ended = t.job->status() == Job::Status::Finished && t.ended;
+    out.push_back({t.job->task().name(),
+                   (ended ? t.ended(t) : sofar(t.job, t.x.size())).toStdString(),
+                   t.colour,
+                   t.x,
+                   t.y,
+                   {},
+                   t.multipliers,
+                   t.everyStep});
+  }
+  return out;
+}
+
+void MapPanel::restoreToolOutputs(const std::vector<SavedToolOutput>& saved) {
+  for (const auto& o : saved) {
+    Job& job = jobs_.add(std::make_unique<RecordedTask>(o.name, o.summary));
+    job.start(); // finishes at once: a record
+    const QString summary = QString::fromStdString(o.summary);
+    if (!o.found.empty()) { // a search that found its point: its path, its steps and the point's cross
+      Search s{&job,
+               nullptr,
+               o.x,
+               o.y,
+               chart_->addCurve(o.x, o.y, o.colour, 1.5),
+               chart_->addSeries(o.x, o.y, o.colour)};
+      s.found = chart_->addMarkers({o.found[0]}, {o.found[1]}, o.colour);
+      s.reported = true;
+      if (!o.multipliers.empty()) s.multipliers = o.multipliers.front().second;
+      s.caption = summary, s.foundAt = o.found;
+      for (auto& w : multiplierWindows_)
+        if (w && !s.multipliers.empty()) w->showFixedPoint(job.id(), s.caption, s.multipliers);
+      searches_.push_back(std::move(s));
+      continue;
+    }
+    ToolSeries t{&job, chart_->addSeries(o.x, o.y, o.colour), o.colour, o.x,
+                 o.y,  [](ToolSeries&) { return false; }};
+    t.everyStep = o.everyStep;
+    t.ended = [summary](const ToolSeries&) { return summary; };
+    t.endSaid = true; // the Results log said it when it was computed
+    for (const auto& [parameter, m] : o.multipliers)
+      offerMultipliers(t, parameter, m);
+    tools_.push_back(std::move(t));
+  }
+  for (auto& w : multiplierWindows_)
+    if (w) w->flush();
+  view_->update();
 }
 
 } // namespace rv

@@ -452,8 +452,16 @@ class Cli(unittest.TestCase):
             return {"start": [0, 0.1, 0.1, 0.3], "parameters": {"energy": 0.125}, "integrator": {},
                     "colour": colour, "x": [p[0] for p in points], "y": [p[1] for p in points], "z": [],
                     "state": [], "running": False, "first": 1, "last": 0, "origin": ""}
+        # and what the map's fixed-point tools drew: a family (blue, a vertical line between the circles) and
+        # a search's path with the point it found
+        family = {"name": "Fixed point continuation", "summary": "", "colour": [0, 0, 1],
+                  "x": [0.0] * 41, "y": [-0.1 + 0.005 * k for k in range(41)],
+                  "fixed_points": [{"parameter": 1.5, "multipliers": [[0.25, 0.97], [0.25, -0.97]]}]}
+        search = {"name": "Fixed point", "summary": "fixed point (0, 0.12): elliptic", "colour": [0.9, 0.1, 0.1],
+                  "x": [0.01, 0.0], "y": [0.13, 0.12], "found": [0.0, 0.12]}
         session = {"rollviz_session": 1, "scene": hh, "scene_path": "", "results": "",
-                   "trajectories": [trajectory(red, [1, 0, 0]), trajectory(green, [0, 0.8, 0])]}
+                   "trajectories": [trajectory(red, [1, 0, 0]), trajectory(green, [0, 0.8, 0])],
+                   "tools": [family, search]}
         path = self.path("s.json")
         with open(path, "w") as f:
             js.dump(session, f)
@@ -468,7 +476,14 @@ class Cli(unittest.TestCase):
         self.assertGreater(len(reds), 100)
         self.assertGreater(len(greens), 100)
         # drawn as saved, not computed: the red circle left of the green one
-        self.assertLess(max(reds), min(greens))
+        self.assertLess(max([c for c in reds if c < w // 2 - 20]), min(greens))
+        blues = columns(lambda p: p[2] > 180 and p[0] < 90 and p[1] < 90)
+        self.assertGreater(len(blues), 40)
+        self.assertTrue(all(abs(c - sum(blues) / len(blues)) < 6 for c in blues), "the family is one line")
+        self.assertLess(max([c for c in reds if c < w // 2 - 20]), min(blues))
+        self.assertLess(max(blues), min(greens))
+        # the search's point is drawn in the middle too (its red cross over the family's line)
+        self.assertTrue(any(abs(c - sum(blues) / len(blues)) < 10 for c in reds))
         # the session is a scene for every command (its scene)
         r = run("integrate", path, "--time", "1", "--every", "0.5", "--columns", "t,E")
         self.assertEqual(r.returncode, 0, r.stderr)
@@ -485,6 +500,11 @@ class Cli(unittest.TestCase):
             js.dump(session, f)
         self.assertBadInput(run("chart", path, "--view", "poincare", "-o", self.path("t.png")),
                             "trajectories[1].colour")
+        session["trajectories"][1]["colour"] = [0, 0.8, 0]
+        session["tools"][1]["found"] = [0.0]
+        with open(path, "w") as f:
+            js.dump(session, f)
+        self.assertBadInput(run("chart", path, "--view", "poincare", "-o", self.path("t.png")), "tools[1].found")
 
     def test_multipliers_and_bifurcation_charts(self):
         for view in ("multipliers", "bifurcation"):

@@ -1466,6 +1466,62 @@ private slots:
     QVERIFY(map->trajectoryPoints(map->sceneJobs().back()) == continued);
   }
 
+  // Issue 43: the fixed points and families found on the map are kept -- a session saved and opened draws
+  // them again as they were (points, the found point's cross, the family's multipliers for the filters),
+  // without computing, and Undo brings back a deleted one.
+  void fixedPointsAndFamiliesAreKeptBySessionsAndUndo() {
+    nlohmann::json doc = loadScene(defaultScenePath("standard_map")).document;
+    doc["parameters"]["K"] = 1.5;
+    doc["poincare"]["points"] = 300;
+    doc["fixedpoint"] = {{"guess", {3.1, 0.05}}};
+    doc["continuation"] = {{"parameter", "K"}, {"to", 2.0}, {"step", 0.05}};
+    QVERIFY(window_->runDocument(doc));
+    MapPanel* map = window_->mapPanel();
+    map->searchFixedPointAt(3.1, 0.05);
+    const Job* search = map->jobs().jobs().back();
+    map->startContinuation();
+    const Job* family = map->jobs().jobs().back();
+    QTRY_VERIFY_WITH_TIMEOUT(!search->running() && !family->running(), 30000);
+    QTRY_COMPARE_WITH_TIMEOUT(map->toolPoints(family->id()).size(), std::size_t(11), 10000); // K 1.5..2
+    QTRY_COMPARE_WITH_TIMEOUT(map->fixedPointsFound(), 1, 10000);
+    const auto familyPoints = map->toolPoints(family->id());
+    const QString path = dir_.filePath("sm-session.json");
+    QVERIFY(window_->saveSessionTo(path));
+    QVERIFY(window_->openScene(QString::fromStdString(defaultScenePath("henon_heiles"))));
+    QCOMPARE(map->fixedPointsFound(), 0);
+    QVERIFY(window_->openScene(path));
+    QCOMPARE(map->fixedPointsFound(), 1);
+    QCOMPARE(map->toolJobs(), 1);
+    int restored = -1;
+    for (int id : map->sceneJobs())
+      if (!map->toolPoints(id).empty()) restored = id;
+    QVERIFY(restored >= 0);
+    QVERIFY(map->toolPoints(restored) == familyPoints);
+    QCOMPARE(map->jobs().find(restored)->status(), Job::Status::Finished); // a record: nothing computed
+    // the filters get the restored family's multipliers: on the unit circle, real part (2 - K) / 2
+    MultipliersWindow* w = window_->openMultipliersWindow();
+    const auto& parameters = w->parameters(restored);
+    QCOMPARE(parameters.size(), std::size_t(11));
+    for (std::size_t k = 0; k < parameters.size(); ++k)
+      for (const auto& m : w->outputs(restored)[k])
+        QVERIFY(std::abs(m.real() - (2 - parameters[k]) / 2) < 1e-7);
+    w->close();
+    // deleted (tool manager) and undone: the family is back, point for point
+    ToolManager* tools = window_->toolManager();
+    tools->refresh();
+    tools->select(restored);
+    tools->deleteSelected();
+    QCOMPARE(map->toolJobs(), 0);
+    QVERIFY2(window_->undoText().contains("1 tool output"), qPrintable(window_->undoText()));
+    QVERIFY(window_->undo());
+    QCOMPARE(map->toolJobs(), 1);
+    int back = -1;
+    for (int id : map->sceneJobs())
+      if (!map->toolPoints(id).empty()) back = id;
+    QVERIFY(back >= 0 && map->toolPoints(back) == familyPoints);
+    QCOMPARE(map->fixedPointsFound(), 1);
+  }
+
   // Issue 43, item 2: the map window's dock floated and docked again still draws its map (a floating dock is
   // a new top-level window: Qt gives its OpenGL widget a new context, and VTK's resources of the old one
   // must go with it) -- and a click on it still starts a trajectory that shows.
