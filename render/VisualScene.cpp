@@ -17,6 +17,7 @@
 #include <cstdio>
 #include <numbers>
 #include <vtkCamera.h>
+#include <vtkCommand.h>
 #include <vtkLightKit.h>
 #include <vtkPolyData.h>
 #include <vtkPropCollection.h>
@@ -119,9 +120,34 @@ VisualScene::VisualScene(const Model& model, const ViewOptions& options, const E
   add(std::move(axes));
   show(0.0, x0);
   resetCamera();
+  floorObserver_ = renderer_->AddObserver(vtkCommand::StartEvent, this, &VisualScene::keepCameraAboveFloor);
 }
 
-VisualScene::~VisualScene() = default;
+VisualScene::~VisualScene() {
+  renderer_->RemoveObserver(floorObserver_);
+}
+
+void VisualScene::keepCameraAboveFloor() {
+  // a camera under the floor sees the underside of the plane (one grey sheet) and the body through it
+  if (!find("plane") || options_.kind != ViewKind::Motion || options_.lookingIn != LookingIn::Absolute)
+    return;
+  vtkCamera* cam = renderer_->GetActiveCamera();
+  double p[3], f[3];
+  cam->GetPosition(p);
+  cam->GetFocalPoint(f);
+  const double lowest = 0.05 * scale_;
+  if (p[2] >= lowest) return;
+  const Eigen::Vector3d v(p[0] - f[0], p[1] - f[1], p[2] - f[2]);
+  const double dist = v.norm();
+  if (dist <= 0) return;
+  const double sinEl = std::clamp((lowest - f[2]) / dist, -1.0, 1.0);
+  Eigen::Vector2d across = v.head<2>();
+  if (across.norm() < 1e-12 * dist) across = Eigen::Vector2d::UnitX();
+  across *= dist * std::sqrt(1 - sinEl * sinEl) / across.norm();
+  cam->SetPosition(f[0] + across[0], f[1] + across[1], f[2] + dist * sinEl);
+  cam->OrthogonalizeViewUp();
+  renderer_->ResetCameraClippingRange();
+}
 
 vtkRenderer* VisualScene::renderer() const {
   return renderer_;

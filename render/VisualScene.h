@@ -55,6 +55,11 @@ public:
   /// The apex view's key to its colours, a line per axis (red, green, blue); empty in other views.
   const std::vector<std::string>& colourKey() const { return keyLines_; }
 
+  /// In a body view over the plane, lifts a camera the user has turned below the floor back above it (the
+  /// same distance from what it looks at, the lowest elevation that keeps it 5 % of a body size above the
+  /// plane); runs before every render, whoever moved the camera.
+  void keepCameraAboveFloor();
+
 private:
   void placeCamera();
   /// The camera is where placeCamera last left it (the user has not turned, moved or zoomed it since).
@@ -73,6 +78,7 @@ private:
   std::vector<std::string> keyLines_;
   std::vector<std::unique_ptr<VisualObject>> objects_;
   std::map<std::string, std::vector<vtkProp*>> props_; ///< by object name; the objects own them
+  unsigned long floorObserver_ = 0;                    ///< the renderer's StartEvent observer
 };
 
 } // namespace rv

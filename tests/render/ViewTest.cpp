@@ -699,6 +699,32 @@ TEST(Camera, TheUserKeepsTheCameraInAPhaseSpaceView) {
             1e-6);
 }
 
+// Issue 43: the camera cannot be turned under the floor -- below the plane, the next render lifts it just
+// above (the same distance from what it looks at, the same side seen from above); a camera above the floor is
+// left exactly where it is.
+TEST(Camera, TheCameraStaysAboveTheFloor) {
+  const auto p = play("ellipsoid_on_plane", 1.0);
+  vtkCamera* cam = p->visual->renderer()->GetActiveCamera();
+  double f[3];
+  cam->GetFocalPoint(f);
+  cam->SetPosition(f[0] + 3, f[1] + 1, f[2] - 2); // turned down through the floor
+  const double dist = std::sqrt(3.0 * 3 + 1 + 2 * 2);
+  const Image below = renderPlayed(*p->visual);
+  double lifted[3];
+  cam->GetPosition(lifted);
+  EXPECT_GT(lifted[2], 0.0);
+  EXPECT_NEAR(std::hypot(lifted[0] - f[0], lifted[1] - f[1], lifted[2] - f[2]), dist, 1e-9);
+  EXPECT_NEAR(std::atan2(lifted[1] - f[1], lifted[0] - f[0]), std::atan2(1.0, 3.0), 1e-9); // the same side
+  EXPECT_TRUE(test::isVaried(below)); // the body over its floor, not the underside of the plane
+  cam->SetPosition(f[0] + 3, f[1] + 1, f[2] + 2);
+  renderPlayed(*p->visual);
+  double above[3];
+  cam->GetPosition(above);
+  EXPECT_EQ(above[0], f[0] + 3);
+  EXPECT_EQ(above[1], f[1] + 1);
+  EXPECT_EQ(above[2], f[2] + 2);
+}
+
 // a model written as equations draws its body from a mesh file (an OBJ cube) on the fixed surface its view
 // names (a sphere): the surface and the body are on the picture, and a file that holds no mesh is refused
 // with its name
