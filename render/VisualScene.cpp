@@ -131,6 +131,7 @@ void VisualScene::keepCameraAboveFloor() {
   // a camera under the floor sees the underside of the plane (one grey sheet) and the body through it
   if (!find("plane") || options_.kind != ViewKind::Motion || options_.lookingIn != LookingIn::Absolute)
     return;
+  if (options_.camera.elevation < 0) return; // the scene itself asks to look from below: its choice
   vtkCamera* cam = renderer_->GetActiveCamera();
   double p[3], f[3];
   cam->GetPosition(p);

@@ -57,7 +57,8 @@ public:
 
   /// In a body view over the plane, lifts a camera the user has turned below the floor back above it (the
   /// same distance from what it looks at, the lowest elevation that keeps it 5 % of a body size above the
-  /// plane); runs before every render, whoever moved the camera.
+  /// plane); runs before every render, whoever moved the camera -- unless the scene's own
+  /// view.camera.elevation is below the floor.
   void keepCameraAboveFloor();
 
 private:
