@@ -102,6 +102,11 @@ void PoincareChart::setLegend(int index, const std::string& name) {
   plot->SetLegendVisibility(true);
 }
 
+void PoincareChart::legendTopLeft() {
+  chart_->GetLegend()->SetHorizontalAlignment(vtkChartLegend::LEFT);
+  chart_->GetLegend()->SetVerticalAlignment(vtkChartLegend::TOP);
+}
+
 void PoincareChart::setTitles(const std::string& x, const std::string& y) {
   chart_->GetAxis(vtkAxis::BOTTOM)->SetTitle(x);
   chart_->GetAxis(vtkAxis::LEFT)->SetTitle(y);

@@ -58,6 +58,8 @@ public:
   void setTitle(const std::string& title);
   /// Names series `index` in the chart's legend (shown once a series has a name; unnamed ones are left out).
   void setLegend(int index, const std::string& name);
+  /// Puts the legend in the plot area's top left corner (the default is the top right).
+  void legendTopLeft();
   /// Removes every series.
   void clear();
   /// Map coordinates of a point of the scene (pixels from the bottom left); false outside the plot area.

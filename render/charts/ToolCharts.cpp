@@ -55,7 +55,7 @@ void drawDiagram(PoincareChart& chart, const Diagram& d, const std::vector<Diagr
         ys[k].push_back(has ? pts[k][1] : std::numeric_limits<double>::quiet_NaN());
       }
     }
-    bool any = false;
+    int first = -1; // the branch's first plot: the one its name goes to in the legend
     for (std::size_t k = 0; k < xs.size(); ++k) {
       const bool single =
           std::count_if(xs[k].begin(), xs[k].end(), [](double v) { return !std::isnan(v); }) == 1;
@@ -63,20 +63,25 @@ void drawDiagram(PoincareChart& chart, const Diagram& d, const std::vector<Diagr
         std::vector<double> x, y;
         for (std::size_t i = 0; i < xs[k].size(); ++i)
           if (!std::isnan(xs[k][i])) x.push_back(xs[k][i]), y.push_back(ys[k][i]);
-        chart.addSeries(x, y, seriesColor(colour));
-        any = true;
-      } else if (chart.addCurve(xs[k], ys[k], seriesColor(colour)) >= 0) {
-        any = true;
+        const int i = chart.addSeries(x, y, seriesColor(colour));
+        if (first < 0) first = i;
+      } else if (const int i = chart.addCurve(xs[k], ys[k], seriesColor(colour)); i >= 0 && first < 0) {
+        first = i;
       }
     }
-    if (any) ++colour;
+    if (first >= 0) {
+      chart.setLegend(first, b.id);
+      ++colour;
+    }
   }
+  chart.legendTopLeft(); // the branches rise to the right from near the origin: the top left is free
   std::vector<double> x, y;
   for (const auto& s : states)
     x.push_back(s[0]), y.push_back(s[1]);
   if (!x.empty()) {
     const int i = chart.addSeries(x, y, {0, 0, 0});
     if (auto* p = vtkPlotPoints::SafeDownCast(chart.chart()->GetPlot(i))) p->SetMarkerSize(9);
+    chart.setLegend(i, states.size() > 1 ? "the states" : "the state");
   }
 }
 

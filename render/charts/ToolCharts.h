@@ -22,7 +22,7 @@ double drawUnitCircle(PoincareChart& chart);
 void drawMultipliers(PoincareChart& chart, const std::vector<std::vector<std::complex<double>>>& steps);
 
 /// Every branch of `diagram` sampled over its default range, one colour per branch, and `states` (points of
-/// trajectories) as large black points.
+/// trajectories) as large black points; the legend names each branch by its id (sigma, tau, T0, ...).
 void drawDiagram(PoincareChart& chart, const Diagram& diagram, const std::vector<DiagramPoint>& states);
 
 /// One curve per series against a common abscissa (Lyapunov exponents against time, the spectrum), with
