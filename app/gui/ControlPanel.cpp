@@ -8,9 +8,11 @@
 
 #include <QComboBox>
 #include <QLabel>
+#include <QMenu>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QTabWidget>
+#include <QToolButton>
 #include <QTreeWidget>
 #include <QVBoxLayout>
 #include <functional>
@@ -25,6 +27,23 @@ ControlPanel::ControlPanel(QWidget* parent) : QWidget(parent) {
   tabs_->setObjectName("tabs");
   tabs_->setElideMode(Qt::ElideNone); // whole titles, scroll arrows when they do not fit
   tabs_->setUsesScrollButtons(true);
+  // every tab by name in one menu: the tool sections make more tabs than a panel's width shows
+  auto* allTabs = new QToolButton(tabs_);
+  allTabs->setObjectName("all_tabs");
+  allTabs->setText("\u2261");
+  allTabs->setToolTip("go to a tab of the panel");
+  allTabs->setPopupMode(QToolButton::InstantPopup);
+  auto* tabMenu = new QMenu(allTabs);
+  allTabs->setMenu(tabMenu);
+  connect(tabMenu, &QMenu::aboutToShow, this, [this, tabMenu] {
+    tabMenu->clear();
+    for (int i = 0; i < tabs_->count(); ++i) {
+      QAction* a = tabMenu->addAction(tabs_->tabText(i), this, [this, i] { tabs_->setCurrentIndex(i); });
+      a->setCheckable(true);
+      a->setChecked(i == tabs_->currentIndex());
+    }
+  });
+  tabs_->setCornerWidget(allTabs, Qt::TopRightCorner);
   layout->addWidget(tabs_, 1);
   // what the problem says of the values typed (a moment of inertia that is 0, a triangle inequality broken):
   // at once, naming the tab and the field, not first at Apply
@@ -54,16 +73,26 @@ ControlPanel::ControlPanel(QWidget* parent) : QWidget(parent) {
     it->setText(0, QString::fromStdString(e.title));
     it->setText(1, QString::fromStdString(e.description));
     it->setToolTip(0, QString::fromStdString(e.description + " (" + e.reference + ")"));
+    it->setToolTip(1, it->toolTip(0));
     it->setData(0, Qt::UserRole, QString::fromStdString(e.id));
     items[e.id] = it;
   }
   toolTree_->expandAll();
   toolTree_->resizeColumnToContents(0);
+  // the selected tool's whole description under the tree (its column is cut off in a narrow panel)
+  auto* about = new QLabel;
+  about->setObjectName("tool_about");
+  about->setWordWrap(true);
+  about->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  connect(toolTree_, &QTreeWidget::currentItemChanged, about, [about](QTreeWidgetItem* it) {
+    about->setText(it ? it->text(0) + ": " + it->toolTip(0) : QString());
+  });
   auto* createButton = new QPushButton("Create");
   createButton->setObjectName("create");
   createButton->setToolTip("start the selected tool on the scene (its settings: the tabs of the fixed-point "
                            "family, and the scene's sections)");
   tl->addWidget(toolTree_, 1);
+  tl->addWidget(about);
   tl->addWidget(createButton);
   const auto createSelected = [this] {
     if (const auto* it = toolTree_->currentItem())

@@ -169,6 +169,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   splitDockWidget(toolsDock, resultsDock, Qt::Horizontal);
   resizeDocks({toolsDock}, {220}, Qt::Vertical); // the 3D view keeps most of the height; six rows show
   resizeDocks({toolsDock, resultsDock}, {700, 500}, Qt::Horizontal);
+  // wide enough for the first tabs' whole titles (Problem, Method, Tools, Poincare map) and the forms' fields
+  resizeDocks({controlDock}, {400}, Qt::Horizontal);
   connect(control_, &ControlPanel::apply, this, [this](const nlohmann::json& doc) { applyDocument(doc); });
   connect(control_, &ControlPanel::create, this, [this](const std::string& id) { createTool(id); });
   connect(control_, &ControlPanel::problemChosen, this, [this](const std::string& id) { chooseProblem(id); });

@@ -10,6 +10,7 @@
 #include "dynamics/jobs/JobTree.h"
 #include "dynamics/jobs/LyapunovTask.h"
 #include "dynamics/jobs/PoincareTask.h"
+#include "dynamics/tools/ToolRegistry.h"
 #include "dynamics/tools/ToolSettings.h"
 #include "scenes/SceneLoader.h"
 
@@ -17,8 +18,11 @@
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMenu>
 #include <QPushButton>
 #include <QSignalSpy>
+#include <QTabWidget>
+#include <QToolButton>
 #include <QTreeWidget>
 #include <QtTest>
 
@@ -172,6 +176,33 @@ private slots:
     // not a tab's value: as it is
     QCOMPARE(ControlPanel::inPanelWords("scenes/x.json:initial.map: no state there", "scenes/x.json"),
              QString("scenes/x.json:initial.map: no state there"));
+  }
+
+  // Issue 43: a panel narrower than its tabs -- every tab is one menu choice away (the corner button), and
+  // the Tools tab shows the selected tool's whole description (its column is cut off in a narrow panel).
+  void everyTabIsReachableAndAToolsDescriptionIsWhole() {
+    const Scene scene = loadScene(defaultScenePath("henon_heiles"));
+    ControlPanel panel;
+    panel.setScene(scene);
+    auto* tabs = panel.findChild<QTabWidget*>("tabs");
+    auto* corner = panel.findChild<QToolButton*>("all_tabs");
+    QVERIFY(tabs && corner && tabs->count() > 5);
+    QMenu* menu = corner->menu();
+    QVERIFY(menu);
+    QMetaObject::invokeMethod(menu, "aboutToShow");
+    const QList<QAction*> actions = menu->actions();
+    QCOMPARE(actions.size(), tabs->count());
+    QCOMPARE(actions.back()->text(), tabs->tabText(tabs->count() - 1));
+    actions.back()->trigger();
+    QCOMPARE(tabs->currentIndex(), tabs->count() - 1);
+    auto* about = panel.findChild<QLabel*>("tool_about");
+    QVERIFY(about);
+    panel.selectTool("lyapunov");
+    const ToolEntry* lyapunov = ToolRegistry::global().find("lyapunov");
+    QVERIFY(lyapunov);
+    QVERIFY2(about->text().contains(QString::fromStdString(lyapunov->description)) &&
+                 about->text().contains(QString::fromStdString(lyapunov->reference)),
+             qPrintable(about->text()));
   }
 
   // manual §2.2 / §2.1: the Method tab chooses the integrator (its own parameters shown), the Problem tab the

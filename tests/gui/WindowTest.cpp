@@ -52,6 +52,8 @@
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QStatusBar>
+#include <QStyle>
+#include <QTabBar>
 #include <QTabWidget>
 #include <QTemporaryDir>
 #include <QTimer>
@@ -1696,6 +1698,22 @@ private slots:
               labels << recent->text();
     QVERIFY2(labels.contains("copy/henon_heiles.json") && labels.contains("scenes/henon_heiles.json"),
              qPrintable(labels.join(" | ")));
+  }
+
+  // Issue 43: the control panel opens wide enough for its first tabs' whole titles (it read "Poincar..." with
+  // scroll arrows over it)
+  void theControlPanelShowsItsFirstTabsWhole() {
+    QVERIFY(window_->runDocument(loadScene(defaultScenePath("henon_heiles")).document));
+    auto* tabs = window_->controlPanel()->findChild<QTabWidget*>("tabs");
+    QVERIFY(tabs);
+    QTRY_VERIFY_WITH_TIMEOUT(tabs->isVisible() && tabs->tabBar()->width() > 0, 10000);
+    QCOMPARE(tabs->tabText(3), QString("Poincaré map"));
+    const QTabBar* bar = tabs->tabBar();
+    const int arrows = 2 * bar->style()->pixelMetric(QStyle::PM_TabBarScrollButtonWidth, nullptr, bar);
+    for (int i = 0; i < 4; ++i)
+      QVERIFY2(bar->tabRect(i).right() <= bar->width() - arrows,
+               qPrintable(
+                   QString("tab %1 ends at %2 of %3").arg(i).arg(bar->tabRect(i).right()).arg(bar->width())));
   }
 
   // File > Gallery: every gallery scene with its thumbnail and what to watch; Open loads the chosen one
