@@ -288,7 +288,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
                                         [this](const QString& m) { report(m, 8000); });
                   })
       ->setToolTip("the Poincaré map window as a figure (PNG, or SVG/PDF vectors) or its points as CSV");
-  // the size every saved picture of a view has (Snapshot, Export map, a chart's Save PNG): one setting
+  // the size every saved picture of a view has (Snapshot, Record, Export map, a chart's Save PNG): one
+  // setting
   auto* sizes = file->addMenu("Picture size");
   sizes->setObjectName("picture_size");
   sizes->setToolTipsVisible(true);
@@ -320,9 +321,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     for (QAction* a : sizes->actions())
       if (a->isCheckable()) a->setChecked(a->data().toString() == now);
   });
-  sizes->menuAction()->setToolTip(
-      "the size of snapshots, exported maps and saved charts: rendered offscreen at that size, whatever the "
-      "window's");
+  sizes->menuAction()->setToolTip("the size of snapshots, recorded videos, exported maps and saved charts: "
+                                  "rendered offscreen at that size, "
+                                  "whatever the window's");
   recentMenu_ = file->addMenu("Recent scenes");
   fillRecentMenu();
   file->addSeparator();
@@ -758,11 +759,13 @@ bool MainWindow::startRecording(const QString& path, int fps) {
   if (recorder_) return false;
   auto r = std::make_unique<Recording>();
   const qreal dpr = view_->devicePixelRatioF();
+  const QSize shown(static_cast<int>(std::lround(view_->width() * dpr)),
+                    static_cast<int>(std::lround(view_->height() * dpr)));
+  const QSize size = PictureSize::current().of(shown); // File > Picture size: each frame rendered at it
   try {
     // the scene's video section: its frame rate unless one is given, its quality and preset
     const VideoSpec settings = scene_ ? videoSpec(scene_->tool("video"), 1) : VideoSpec{};
-    r->video = std::make_shared<ScreenRecorder>(path.toStdString(), static_cast<int>(view_->width() * dpr),
-                                                static_cast<int>(view_->height() * dpr),
+    r->video = std::make_shared<ScreenRecorder>(path.toStdString(), size.width(), size.height(),
                                                 fps > 0 ? fps : settings.fps, settings.encoder);
   } catch (const std::exception& e) {
     report("Cannot record: " + QString::fromUtf8(e.what()), 8000);
@@ -771,18 +774,23 @@ bool MainWindow::startRecording(const QString& path, int fps) {
   r->path = path;
   r->clock.start();
   recorder_ = std::move(r);
-  view_->setFrameTap([this](const Image& picture) {
-    if (!recorder_ || !recorder_->error.isEmpty()) return;
-    try {
-      recorder_->video->add(picture, recorder_->clock.elapsed() / 1000.0);
-    } catch (const std::exception& e) { // the disk is full, say: stop, and say why
-      recorder_->error = QString::fromUtf8(e.what());
-      QTimer::singleShot(0, this, &MainWindow::stopRecording);
-    }
-  });
+  view_->setFrameTap(
+      [this](const Image& picture) {
+        if (!recorder_ || !recorder_->error.isEmpty()) return;
+        try {
+          recorder_->video->add(picture, recorder_->clock.elapsed() / 1000.0);
+        } catch (const std::exception& e) { // the disk is full, say: stop, and say why
+          recorder_->error = QString::fromUtf8(e.what());
+          QTimer::singleShot(0, this, &MainWindow::stopRecording);
+        }
+      },
+      size == shown ? QSize() : size);
   view_->update(); // the picture on screen now is the first frame
   recordAction_->setText("Stop recording");
-  report("recording " + path + " (press Stop recording to end)");
+  report(QString("recording %1 at %2x%3 (press Stop recording to end)")
+             .arg(path)
+             .arg(size.width())
+             .arg(size.height()));
   return true;
 }
 

@@ -192,7 +192,19 @@ void QtVtkWidget::paintGL() {
   f->glClearColor(0, 0, 0, 1);
   f->glClear(GL_COLOR_BUFFER_BIT);
   f->glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  if (tap_) { // the picture as shown: Qt's framebuffer after the blit
+  if (tap_ && !tapSize_.isEmpty() && tapSize_ != QSize(dw, dh)) {
+    // the frame again, offscreen at the tap's size (VTK's framebuffer resized for it; the screen has its
+    // picture already, and the next paint renders at the widget's size again)
+    const int* size = window_->GetSize();
+    const int w = size[0], h = size[1];
+    window_->SetSize(tapSize_.width(), tapSize_.height());
+    try {
+      captureInto(window_, tapped_);
+    } catch (const std::exception&) {
+      tapped_ = Image{}; // (an empty picture: the recorder says why)
+    }
+    window_->SetSize(w, h);
+  } else if (tap_) { // the picture as shown: Qt's framebuffer after the blit
     f->glBindFramebuffer(GL_READ_FRAMEBUFFER, defaultFramebufferObject());
     tapped_.width = dw, tapped_.height = dh;
     tapped_.rgb.resize(static_cast<std::size_t>(dw) * dh * 3);

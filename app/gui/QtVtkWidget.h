@@ -31,9 +31,13 @@ public:
   static QtVtkWidget* inOwnWindow(QWidget* parent, const QString& title, int width = 560, int height = 560);
   /// OpenGL 3.2 core, no multisampling: what VTK 9.1 needs. Set as the default before QApplication.
   static QSurfaceFormat defaultFormat();
-  /// Receives every picture painted, as shown (RGB, rows from the top); an empty function stops it. What a
-  /// screen recording is made of.
-  void setFrameTap(std::function<void(const Image&)> tap) { tap_ = std::move(tap); }
+  /// Receives every picture painted (RGB, rows from the top); an empty function stops it. What a screen
+  /// recording is made of. With a `size` other than the view's, each frame is rendered again offscreen at
+  /// that size for the tap (as renderAt does); an empty size: the picture as shown.
+  void setFrameTap(std::function<void(const Image&)> tap, QSize size = {}) {
+    tap_ = std::move(tap);
+    tapSize_ = size;
+  }
   /// The view rendered offscreen at `width` x `height` pixels, whatever the widget's size (the scene fills
   /// the frame as it would a window of that size); the widget keeps its own size and picture.
   Image renderAt(int width, int height);
@@ -60,13 +64,14 @@ private:
   std::map<int, QTimer*> timers_;
   bool inPaint_ = false, skipRender_ = false;
   std::function<void(const Image&)> tap_;
+  QSize tapSize_; ///< the size the tap's pictures are rendered at (empty: as shown)
   std::function<bool()> renderWanted_;
   Image tapped_; // reused: a frame's pixels are not reallocated on every paint
 };
 
-/// The size pictures of views are saved at (Snapshot, File > Export map, a chart's Save PNG), one setting for
-/// all, kept between runs (File > Picture size): "view" (as shown), "x2" or "x4" (times the view), or
-/// "WIDTHxHEIGHT" (e.g. 1920x1080), rendered offscreen at that size.
+/// The size pictures of views are saved at (Snapshot, Record, File > Export map, a chart's Save PNG), one
+/// setting for all, kept between runs (File > Picture size): "view" (as shown), "x2" or "x4" (times the
+/// view), or "WIDTHxHEIGHT" (e.g. 1920x1080), rendered offscreen at that size.
 struct PictureSize {
   QString text = "view";
   /// The pixels of a picture of a view that shows `view` pixels.

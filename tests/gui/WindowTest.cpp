@@ -355,6 +355,32 @@ private slots:
           worst);
   }
 
+  // Issue 43, item 7: Record at File > Picture size -- each frame rendered offscreen at that size (here
+  // 1280 x 720, not the view's), the window keeping its own
+  void aRecordingAtAChosenSizeHasThatSize() {
+    if (!window_->playing()) window_->togglePlay();
+    const QSize shown = window_->view()->grabFramebuffer().size();
+    QVERIFY(shown != QSize(1280, 720));
+    PictureSize::setCurrent("1280x720");
+    const auto back = qScopeGuard([] { PictureSize::setCurrent("view"); });
+    const QString path = dir_.filePath("rec720.mp4");
+    QSignalSpy done(window_, &MainWindow::recordingFinished);
+    QVERIFY(window_->startRecording(path, 10));
+    QVERIFY(window_->results().contains("at 1280x720"));
+    const double t0 = window_->shownTime();
+    QTRY_VERIFY_WITH_TIMEOUT(window_->shownTime() > t0 + 1, 20000); // a few frames
+    window_->stopRecording();
+    QVERIFY(done.wait(30000));
+    QVERIFY2(done.first().at(0).toBool(), qPrintable(window_->results()));
+    QVERIFY(framesOf(path) >= 2);
+    const QImage picture = lastFrame(path);
+    QCOMPARE(picture.size(), QSize(1280, 720));
+    QVERIFY(varied(picture));
+    QVERIFY(keep(picture, "window_recording_1280x720.png"));
+    QCOMPARE(window_->view()->grabFramebuffer().size(), shown);
+    QVERIFY(varied(window_->view()->grabFramebuffer()));
+  }
+
   void aRecordingThatCannotBeWrittenSaysWhy() {
     QVERIFY(!window_->startRecording("/nonexistent-folder/rec.mp4"));
     QVERIFY(!window_->recording());
