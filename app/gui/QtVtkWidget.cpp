@@ -9,6 +9,8 @@
 //    exists (aboutToBeDestroyed), and made again in the new one -- else the view stays blank or garbage.
 #include "app/gui/QtVtkWidget.h"
 
+#include "render/charts/ChartStyle.h"
+
 #include "render/context/HeadlessContext.h"
 
 #include <QFile>
@@ -231,6 +233,9 @@ Image QtVtkWidget::renderAt(int width, int height) {
   window_->SetSize(width, height); // VTK's own framebuffer takes that size; Qt's is not touched
   Image picture;
   try {
+    // a chart lays itself out in the frame after a size change (the first one is drawn with the old layout,
+    // stretched): one frame to lay out, the next one kept
+    window_->Render();
     captureInto(window_, picture);
   } catch (...) {
     window_->SetSize(w, h);
@@ -279,6 +284,13 @@ bool savePicture(QtVtkWidget* view, const QString& path) {
     picture = view->grabFramebuffer(); // what the screen shows
   } else {
     try {
+      // a chart's type, pens and markers grow with the picture (2x: the same figure, finer), its ticks kept
+      const int scale = std::max(
+          1, static_cast<int>(std::lround(std::min(static_cast<double>(size.width()) / shown.width(),
+                                                   static_cast<double>(size.height()) / shown.height()))));
+      // the ticks kept are those of a render at the view's own size: one now (a save just before left none)
+      if (scale > 1) view->renderAt(shown.width(), shown.height());
+      const ScaledCharts scaled(view->renderWindow(), scale);
       const Image rendered = view->renderAt(size.width(), size.height());
       picture = QImage(rendered.rgb.data(), rendered.width, rendered.height, rendered.width * 3,
                        QImage::Format_RGB888)

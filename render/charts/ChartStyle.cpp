@@ -65,36 +65,36 @@ void dressForPaper(vtkChartXY* chart) {
   }
 }
 
-// Every pixel distance x factor: type, pens, markers, ticks, offsets, margins, borders.
-void scaleChart(vtkChartXY* chart, int factor) {
-  const auto grow = [factor](auto v) { return static_cast<decltype(v)>(std::lround(v * factor)); };
-  const auto text = [factor](vtkTextProperty* t) {
-    if (t) t->SetFontSize(t->GetFontSize() * factor);
+// Every pixel distance x factor (or / factor, `back`: exactly undoing it): type, pens, markers, ticks,
+// offsets, margins, borders.
+void scaleChart(vtkChartXY* chart, int factor, bool back = false) {
+  const auto by = [factor, back](auto v) { return static_cast<decltype(v)>(back ? v / factor : v * factor); };
+  const auto text = [&by](vtkTextProperty* t) {
+    if (t) t->SetFontSize(by(t->GetFontSize()));
   };
   text(chart->GetTitleProperties());
-  chart->SetHiddenAxisBorder(chart->GetHiddenAxisBorder() * factor);
+  chart->SetHiddenAxisBorder(by(chart->GetHiddenAxisBorder()));
   for (int a = 0; a < 4; ++a) {
     vtkAxis* axis = chart->GetAxis(a);
     text(axis->GetTitleProperties());
     text(axis->GetLabelProperties());
-    axis->GetPen()->SetWidth(axis->GetPen()->GetWidth() * static_cast<float>(factor));
-    axis->GetGridPen()->SetWidth(axis->GetGridPen()->GetWidth() * static_cast<float>(factor));
-    axis->SetTickLength(axis->GetTickLength() * static_cast<float>(factor));
-    axis->SetLabelOffset(axis->GetLabelOffset() * static_cast<float>(factor));
+    axis->GetPen()->SetWidth(by(axis->GetPen()->GetWidth()));
+    axis->GetGridPen()->SetWidth(by(axis->GetGridPen()->GetWidth()));
+    axis->SetTickLength(by(axis->GetTickLength()));
+    axis->SetLabelOffset(by(axis->GetLabelOffset()));
     int margins[2];
     axis->GetMargins(margins);
-    axis->SetMargins(margins[0] * factor, margins[1] * factor);
+    axis->SetMargins(by(margins[0]), by(margins[1]));
   }
   if (vtkChartLegend* legend = chart->GetLegend()) {
     text(legend->GetLabelProperties());
-    legend->SetSymbolWidth(grow(legend->GetSymbolWidth()));
-    legend->SetPadding(grow(legend->GetPadding()));
+    legend->SetSymbolWidth(by(legend->GetSymbolWidth()));
+    legend->SetPadding(by(legend->GetPadding()));
   }
   for (vtkIdType i = 0; i < chart->GetNumberOfPlots(); ++i) {
     vtkPlot* plot = chart->GetPlot(i);
-    if (vtkPen* pen = plot->GetPen()) pen->SetWidth(pen->GetWidth() * static_cast<float>(factor));
-    if (auto* points = vtkPlotPoints::SafeDownCast(plot))
-      points->SetMarkerSize(points->GetMarkerSize() * static_cast<float>(factor));
+    if (vtkPen* pen = plot->GetPen()) pen->SetWidth(by(pen->GetWidth()));
+    if (auto* points = vtkPlotPoints::SafeDownCast(plot)) points->SetMarkerSize(by(points->GetMarkerSize()));
   }
 }
 
@@ -164,6 +164,31 @@ void styleCharts(vtkRenderWindow* window, const ChartStyle& style) {
     forEachChart(window, dressForPaper);
   }
   if (style.scale > 1) forEachChart(window, [&](vtkChartXY* chart) { scaleChart(chart, style.scale); });
+}
+
+ScaledCharts::ScaledCharts(vtkRenderWindow* window, int scale) : window_(window), scale_(scale) {
+  if (scale_ <= 1) return;
+  // the ticks of the last (screen) layout kept: VTK would pick them again by pixel length, finer
+  forEachChart(window_, [this](vtkChartXY* chart) {
+    for (int a = 0; a < 4; ++a) {
+      vtkAxis* axis = chart->GetAxis(a);
+      if (!axis->GetVisible() || !axis->GetTickPositions()) continue;
+      vtkNew<vtkDoubleArray> positions;
+      positions->DeepCopy(axis->GetTickPositions());
+      vtkNew<vtkStringArray> labels;
+      labels->DeepCopy(axis->GetTickLabels());
+      axis->SetCustomTickPositions(positions, labels);
+      frozen_.push_back(axis);
+    }
+    scaleChart(chart, scale_);
+  });
+}
+
+ScaledCharts::~ScaledCharts() {
+  if (scale_ <= 1) return;
+  forEachChart(window_, [this](vtkChartXY* chart) { scaleChart(chart, scale_, true); });
+  for (vtkAxis* axis : frozen_)
+    axis->SetCustomTickPositions(nullptr); // VTK picks them again (no window's chart has ticks of its own)
 }
 
 } // namespace rv

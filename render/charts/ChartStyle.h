@@ -5,7 +5,9 @@
 #pragma once
 #include <string>
 #include <utility>
+#include <vector>
 
+class vtkAxis;
 class vtkRenderWindow;
 
 namespace rv {
@@ -23,5 +25,21 @@ std::pair<int, int> figureSize(const ChartStyle& style, std::pair<int, int> size
 /// Restyles every 2-D chart drawn in `window` (the charts of its context scenes): fonts, pens and markers
 /// x scale; paper: black axes, ticks and text, a faint grid, a column's type sizes.
 void styleCharts(vtkRenderWindow* window, const ChartStyle& style);
+
+/// A larger picture of a window's charts as they stand (a GUI's 2x / 4x save): while it lives, every chart's
+/// type, pens, markers and distances are `scale` x as large and its ticks those of the last render (the
+/// screen's); when it goes, everything is as it was. Nothing for scale 1 or a window without charts.
+class ScaledCharts {
+public:
+  ScaledCharts(vtkRenderWindow* window, int scale);
+  ~ScaledCharts();
+  ScaledCharts(const ScaledCharts&) = delete;
+  ScaledCharts& operator=(const ScaledCharts&) = delete;
+
+private:
+  vtkRenderWindow* window_;
+  int scale_;
+  std::vector<vtkAxis*> frozen_; ///< the axes whose ticks it froze
+};
 
 } // namespace rv

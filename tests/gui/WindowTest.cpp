@@ -293,8 +293,17 @@ private slots:
     const QString map = dir_.filePath("map2.png");
     QString why;
     QVERIFY2(saveChartFigure(window_->mapPanel()->view(), map, &why), qPrintable(why));
-    QCOMPARE(QImage(map).size(), window_->mapPanel()->view()->grabFramebuffer().size() * 2);
+    const QImage onScreen = window_->mapPanel()->view()->grabFramebuffer();
+    QCOMPARE(QImage(map).size(), onScreen.size() * 2);
     QVERIFY(keep(QImage(map), "map_x2.png"));
+    // the same figure, finer: type, pens and points twice as large, so four times the ink or more (the same
+    // type and pens on twice the pixels would give about twice)
+    const auto ink = [](const QImage& img) {
+      return countPixels(img, [](const QColor& c) { return c.lightness() < 110; });
+    };
+    const double ratio = static_cast<double>(ink(QImage(map))) / static_cast<double>(ink(onScreen));
+    qInfo("ink ratio %f", ratio);
+    QVERIFY2(ratio > 3 && ratio < 10, qPrintable(QString("ink x%1").arg(ratio))); // (small type is grey)
     PictureSize::setCurrent("view");
     QVERIFY(!PictureSize::valid("10x10") && !PictureSize::valid("abc") && PictureSize::valid("2400x1600"));
   }
