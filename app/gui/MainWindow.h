@@ -1,5 +1,8 @@
-// MainWindow.h -- the main window of the skeleton GUI: the 3D view of a scene with play / pause, reset and
-// speed. The motion is integrated on a TrajectoryStream thread; the GUI thread only draws.
+// MainWindow.h -- the main window: the 3D view of a scene with play / pause, reset and speed, and the docks
+// around it (control panel, map, tool manager, Results). The motion is integrated on a TrajectoryStream
+// thread; the GUI thread only draws. Its rooms: MainWindow.cpp (the scene, its run, pictures and videos, the
+// windows it opens), MainWindowMenus.cpp (toolbars, menus and their dialogs), MainWindowSession.cpp (scenes
+// and sessions saved and opened, Undo, the jobs kept at exit).
 #pragma once
 #include "dynamics/jobs/PlotTap.h"
 #include "dynamics/jobs/TrajectoryStream.h"
@@ -22,6 +25,7 @@
 class QAction;
 class QCloseEvent;
 class QComboBox;
+class QDockWidget;
 class QDragEnterEvent;
 class QDropEvent;
 class QMenu;
@@ -194,6 +198,10 @@ private:
   void showViewSettings();
   QComboBox* styleBox_;
   QComboBox* axesBox_;
+  /// The playback and visualizer toolbars (MainWindowMenus.cpp); the latter shows and hides `settingsDock`.
+  void buildToolBars(QDockWidget* settingsDock);
+  /// The menu bar (MainWindowMenus.cpp), after every dock exists (the Windows menu lists them).
+  void buildMenus();
   void rememberRecent(const QString& path);
   void fillRecentMenu();
   void showStatus();
