@@ -52,6 +52,9 @@ public:
   /// frames the growing curve at every frame, until the user turns, moves or zooms it: from then on the
   /// camera is the user's (playing or not) until the next reset.
   void resetCamera();
+  /// Whether the camera is carried along with the body as it rolls (view.camera.follow): the user's toggle,
+  /// taking effect from the next frame on, the camera left where it is.
+  void setFollow(bool on) { options_.camera.follow = on; }
   /// The apex view's key to its colours, a line per axis (red, green, blue); empty in other views.
   const std::vector<std::string>& colourKey() const { return keyLines_; }
 

@@ -218,6 +218,7 @@ ViewOptions MainWindow::effectiveView(const ViewOptions& base) const {
   for (const auto& [name, o] : edits_.objects)
     v.objects[name] = o;
   if (editedAxes_) v.axes = edits_.axes;
+  if (editedFollow_) v.camera.follow = *editedFollow_;
   return v;
 }
 
@@ -251,6 +252,9 @@ void MainWindow::showViewSettings() {
   const QSignalBlocker quietStyle(styleBox_), quietAxes(axesBox_); // showing is not editing
   styleBox_->setCurrentIndex(style == SurfaceStyle::Grid ? 1 : style == SurfaceStyle::Both ? 2 : 0);
   axesBox_->setCurrentIndex(static_cast<int>(v.axes.style));
+  const QSignalBlocker quietFollow(followAction_);
+  followAction_->setChecked(v.camera.follow);
+  followAction_->setEnabled(scene_ && scene_->model->geometry()); // a body to follow
   settings_->setObjects(names, v);
 }
 
@@ -276,7 +280,7 @@ bool MainWindow::openScene(const QString& path) {
   QSettings().setValue("lastScene", QFileInfo(path).absoluteFilePath());
   rememberRecent(QFileInfo(path).absoluteFilePath());
   edits_ = {}; // another file: its own appearance
-  editedAxes_ = false;
+  editedAxes_ = false, editedFollow_.reset();
   if (const auto r = scene->document.find("results"); r != scene->document.end()) // kept when it was saved
     for (const auto& line : *r)
       results_->appendPlainText(QString::fromStdString(line.get<std::string>()));
@@ -294,7 +298,7 @@ bool MainWindow::openModel(const QString& path) {
     return false;
   }
   edits_ = {};
-  editedAxes_ = false;
+  editedAxes_ = false, editedFollow_.reset();
   useScene(std::move(scene), file);
   return true;
 }
@@ -617,6 +621,7 @@ nlohmann::json MainWindow::documentWithEdits() const {
     j["tickmarks"] = a.tickmarks;
     j["subticks"] = a.subticks;
   }
+  if (editedFollow_) doc["view"]["camera"]["follow"] = *editedFollow_;
   // the Results dock goes with the scene: what was found is there when the scene is opened again
   doc.erase("results");
   for (const QString& line : results().split('\n', Qt::SkipEmptyParts))

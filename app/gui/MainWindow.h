@@ -246,6 +246,8 @@ private:
   QAction* recordAction_;
   ViewOptions edits_;
   bool editedAxes_ = false;
+  std::optional<bool> editedFollow_; ///< the toolbar's Follow body, once toggled (over view.camera.follow)
+  QAction* followAction_ = nullptr;
   // the apex window (a second visualizer fed with the same states)
   QWidget* apexWindow_ = nullptr;
   QtVtkWidget* apexView_ = nullptr;

@@ -72,6 +72,15 @@ void MainWindow::buildToolBars(QDockWidget* settingsDock) {
                     view_->update();
                   })
       ->setToolTip("Put the camera back to the scene's placement");
+  followAction_ = view->addAction("Follow body");
+  followAction_->setObjectName("follow");
+  followAction_->setCheckable(true);
+  followAction_->setToolTip("Carry the camera along with the body as it rolls (else it stays where you put "
+                            "it); either way you turn, move and zoom it");
+  connect(followAction_, &QAction::toggled, this, [this](bool on) {
+    editedFollow_ = on;
+    if (visual_) visual_->setFollow(on);
+  });
   auto* style = styleBox_ = new QComboBox(this);
   style->setObjectName("surface_style");
   style->addItems({"fill", "grid", "both"});

@@ -25,6 +25,7 @@
 #include "scenes/SceneLoader.h"
 #include "scenes/SweepTask.h"
 #include "scenes/ToolRunner.h"
+#include <vtkCamera.h>
 #include <vtkChartXY.h>
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkPlotPoints.h>
@@ -59,11 +60,17 @@
 #include <QTimer>
 #include <QTreeWidget>
 #include <QtTest>
+#include <array>
 #include <cstdio>
+#include <fstream>
 #include <functional>
 #include <set>
+#include <vtkCamera.h>
 #include <vtkChartXY.h>
 #include <vtkPlot.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkRendererCollection.h>
 
 namespace rv {
 
@@ -1733,6 +1740,56 @@ private slots:
               labels << recent->text();
     QVERIFY2(labels.contains("copy/henon_heiles.json") && labels.contains("scenes/henon_heiles.json"),
              qPrintable(labels.join(" | ")));
+  }
+
+  // Issue 43, item 3: the camera is the user's in a body view, playing or not -- turned while playing, it
+  // stays turned (only carried along with the body while Follow body is on: the same view of it), pause and
+  // play do not reset it; Follow body off, the camera stays where it was put.
+  void theCameraIsTheUsersAndFollowingIsAToggle() {
+    QVERIFY(window_->runDocument(loadScene(defaultScenePath("chaplygin_ball")).document));
+    if (!window_->playing()) window_->togglePlay();
+    auto* follow = window_->findChild<QAction*>("follow");
+    QVERIFY(follow && follow->isEnabled());
+    QCOMPARE(follow->isChecked(), window_->scene()->view.camera.follow);
+    vtkCamera* cam = window_->view()->renderWindow()->GetRenderers()->GetFirstRenderer()->GetActiveCamera();
+    const auto state = [cam] {
+      std::array<double, 6> s{};
+      cam->GetPosition(&s[0]);
+      cam->GetFocalPoint(&s[3]);
+      return s;
+    };
+    const auto waitFrames = [this] {
+      const double t0 = window_->shownTime();
+      return QTest::qWaitFor([&] { return window_->shownTime() > t0 + 0.5; }, 20000);
+    };
+    if (!follow->isChecked()) follow->trigger();
+    QVERIFY(waitFrames());
+    cam->Azimuth(50); // the user turns it while playing
+    cam->Elevation(10);
+    cam->OrthogonalizeViewUp();
+    const auto turned = state();
+    QVERIFY(waitFrames());
+    const auto carried = state(); // carried with the body: the same offset from what it looks at
+    QVERIFY(carried != turned);   // (the ball rolled on)
+    for (int i = 0; i < 3; ++i)
+      QVERIFY(std::abs((carried[i] - carried[i + 3]) - (turned[i] - turned[i + 3])) < 1e-9);
+    window_->togglePlay(); // pause and play: not reset
+    window_->togglePlay();
+    QVERIFY(waitFrames());
+    const auto played = state();
+    for (int i = 0; i < 3; ++i)
+      QVERIFY(std::abs((played[i] - played[i + 3]) - (turned[i] - turned[i + 3])) < 1e-9);
+    follow->trigger(); // off: the camera stays where it is
+    QVERIFY(!follow->isChecked());
+    const auto put = state();
+    QVERIFY(waitFrames());
+    QVERIFY(state() == put);
+    const QString saved =
+        dir_.filePath("nofollow.json"); // the toggle is a scene setting: Save scene keeps it
+    QVERIFY(window_->saveSceneTo(saved));
+    std::ifstream in(saved.toStdString());
+    QCOMPARE(nlohmann::json::parse(in)["view"]["camera"]["follow"], nlohmann::json(false));
+    follow->trigger();
   }
 
   // Issue 43: the control panel opens wide enough for its first tabs' whole titles (it read "Poincar..." with
