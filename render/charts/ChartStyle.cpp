@@ -98,8 +98,9 @@ void scaleChart(vtkChartXY* chart, int factor, bool back = false) {
   }
 }
 
-// The ticks the chart chose at its size, kept: a scaled picture has the same ticks and labels.
-void freezeTicks(vtkChartXY* chart) {
+// The ticks the chart chose at its size, kept: a scaled picture has the same ticks and labels. The axes
+// frozen go to `frozen` when given.
+void freezeTicks(vtkChartXY* chart, std::vector<vtkAxis*>* frozen = nullptr) {
   for (int a = 0; a < 4; ++a) {
     vtkAxis* axis = chart->GetAxis(a);
     if (!axis->GetVisible() || !axis->GetTickPositions()) continue;
@@ -108,6 +109,7 @@ void freezeTicks(vtkChartXY* chart) {
     vtkNew<vtkStringArray> labels;
     labels->DeepCopy(axis->GetTickLabels());
     axis->SetCustomTickPositions(positions, labels);
+    if (frozen) frozen->push_back(axis);
   }
 }
 
@@ -154,7 +156,7 @@ void styleCharts(vtkRenderWindow* window, const ChartStyle& style) {
   window->SetSize(std::max(16, static_cast<int>(width / layout)),
                   std::max(16, static_cast<int>(height / layout)));
   window->Render();
-  forEachChart(window, freezeTicks);
+  forEachChart(window, [](vtkChartXY* chart) { freezeTicks(chart); });
   window->SetSize(width, height);
   if (style.paper) {
     vtkRendererCollection* renderers = window->GetRenderers();
@@ -170,16 +172,7 @@ ScaledCharts::ScaledCharts(vtkRenderWindow* window, int scale) : window_(window)
   if (scale_ <= 1) return;
   // the ticks of the last (screen) layout kept: VTK would pick them again by pixel length, finer
   forEachChart(window_, [this](vtkChartXY* chart) {
-    for (int a = 0; a < 4; ++a) {
-      vtkAxis* axis = chart->GetAxis(a);
-      if (!axis->GetVisible() || !axis->GetTickPositions()) continue;
-      vtkNew<vtkDoubleArray> positions;
-      positions->DeepCopy(axis->GetTickPositions());
-      vtkNew<vtkStringArray> labels;
-      labels->DeepCopy(axis->GetTickLabels());
-      axis->SetCustomTickPositions(positions, labels);
-      frozen_.push_back(axis);
-    }
+    freezeTicks(chart, &frozen_);
     scaleChart(chart, scale_);
   });
 }
