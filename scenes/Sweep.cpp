@@ -823,6 +823,11 @@ std::vector<double> sweepGridValues(const SweepSpec& spec, const SweepStore& sto
       spec, [&](long i) { return store.done(i); }, [&](long i) { return store.read(i); });
 }
 
+std::vector<double> sweepGridValues(const SweepSpec& spec, const std::function<bool(long)>& done,
+                                    const std::function<SweepRecord(long)>& read) {
+  return gridValues(spec, done, read);
+}
+
 std::string sweepCsvRow(const SweepSpec& spec, long index, const SweepRecord& r, bool timing) {
   std::string row;
   for (double v : spec.axisValues(index))

@@ -144,6 +144,9 @@ bool runSweepLevels(const SweepSpec& spec, SweepStore& store, int workers,
 /// others of a refined sweep painted from the nearest computed point of the finest level around them (NaN
 /// where none is computed yet, or where a point failed).
 std::vector<double> sweepGridValues(const SweepSpec& spec, const SweepStore& store);
+/// The same from points kept elsewhere: `done(i)` whether point i is computed, `read(i)` its record.
+std::vector<double> sweepGridValues(const SweepSpec& spec, const std::function<bool(long)>& done,
+                                    const std::function<SweepRecord(long)>& read);
 
 /// One CSV row of a point (status "ok" or "failed: reason", quoted).
 std::string sweepCsvRow(const SweepSpec& spec, long index, const SweepRecord& record, bool timing = false);

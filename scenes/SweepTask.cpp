@@ -69,8 +69,16 @@ void SweepTask::updateChartData(SweepChartData& d, std::vector<char>& read) cons
     read.assign(points, 0);
   }
   if (spec_.refine > 0) { // a new point repaints the cells around it: the whole grid again
+    if (computed_.size() != points || read[0] != 1) computed_.assign(points, {}); // (a new start)
     const long done = store_->doneCount();
-    if (read[0] != 1 || lastPainted_ != done) d.values = sweepGridValues(spec_, *store_);
+    if (read[0] != 1 || lastPainted_ != done) {
+      for (std::size_t i = 0; i < points; ++i)
+        if (computed_[i].empty() && store_->done(static_cast<long>(i)))
+          computed_[i] = store_->read(static_cast<long>(i)).values;
+      d.values = sweepGridValues(
+          spec_, [&](long i) { return !computed_[static_cast<std::size_t>(i)].empty(); },
+          [&](long i) { return SweepRecord{computed_[static_cast<std::size_t>(i)]}; });
+    }
     read[0] = 1;
     lastPainted_ = done;
     return;

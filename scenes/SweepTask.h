@@ -9,6 +9,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace rv {
 
@@ -40,6 +41,9 @@ private:
   std::unique_ptr<SweepStore> store_;
   int generation_ = 0;
   mutable long lastPainted_ = -1; // a refined sweep's points done when its chart was last painted
+  /// A refined sweep's computed points as read (each once from the store; empty: not yet), repainted from
+  /// memory when more are done -- a 10^5-point grid's repaint read every record from disk.
+  mutable std::vector<std::vector<double>> computed_;
 };
 
 } // namespace rv

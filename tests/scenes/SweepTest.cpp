@@ -6,8 +6,10 @@
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/Lanes.h"
 #include "scenes/SceneLoader.h"
+#include "scenes/SweepTask.h"
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <gtest/gtest.h>
@@ -259,6 +261,39 @@ bool runRefined(const SweepSpec& s, SweepStore& store, long stopAfter = 0) {
         },
         2, control);
   });
+}
+
+// The window's picture of a refined sweep while it runs (SweepTask::updateChartData: records read once into
+// memory, the grid painted again from them when more are done) is the store's painted grid, stopped halfway
+// and finished.
+TEST(Sweep, ARefinedSweepsChartDataIsTheStoresPaintedGrid) {
+  const SweepSpec spec = sweepFromJson(
+      sweep("henon_map", json::array({axis("map.0", -2.5, 2.5, 17), axis("map.1", -2.5, 2.5, 17)}),
+            "observable.x", json::object(), {{"refine", 2}, {"time", 40}}),
+      "sw.json");
+  SweepTask task(spec, 1);
+  SweepChartData data;
+  std::vector<char> read;
+  const auto same = [&] {
+    task.updateChartData(data, read);
+    const std::vector<double> painted = sweepGridValues(task.spec(), task.store());
+    if (data.values.size() != painted.size()) return false;
+    for (std::size_t i = 0; i < painted.size(); ++i)
+      if (!(data.values[i] == painted[i] || (std::isnan(data.values[i]) && std::isnan(painted[i]))))
+        return false;
+    return true;
+  };
+  EXPECT_TRUE(same()); // nothing computed: NaN everywhere
+  ToolControl halfway;
+  halfway.stopRequested = [&] { return task.store().doneCount() > 300; };
+  ASSERT_FALSE(task.run(halfway));
+  const long stopped = task.store().doneCount();
+  EXPECT_GT(stopped, 0);
+  EXPECT_TRUE(same());
+  ASSERT_TRUE(task.run(ToolControl{}));
+  EXPECT_GT(task.store().doneCount(), stopped);
+  EXPECT_TRUE(same());
+  EXPECT_TRUE(std::any_of(data.values.begin(), data.values.end(), [](double v) { return !std::isnan(v); }));
 }
 
 // The Henon map's basin of attraction over the initial point: orbits that escape fail (their state stops
