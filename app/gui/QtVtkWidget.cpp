@@ -284,13 +284,14 @@ bool savePicture(QtVtkWidget* view, const QString& path) {
     picture = view->grabFramebuffer(); // what the screen shows
   } else {
     try {
-      // a chart's type, pens and markers grow with the picture (2x: the same figure, finer), its ticks kept
+      // a chart's type, pens and markers grow with the picture (2x: the same figure, finer), its ticks kept;
+      // so does a 3D view's time line
       const int scale = std::max(
           1, static_cast<int>(std::lround(std::min(static_cast<double>(size.width()) / shown.width(),
                                                    static_cast<double>(size.height()) / shown.height()))));
       // the ticks kept are those of a render at the view's own size: one now (a save just before left none)
       if (scale > 1) view->renderAt(shown.width(), shown.height());
-      const ScaledCharts scaled(view->renderWindow(), scale);
+      const ScaledPicture scaled(view->renderWindow(), scale);
       const Image rendered = view->renderAt(size.width(), size.height());
       picture = QImage(rendered.rgb.data(), rendered.width, rendered.height, rendered.width * 3,
                        QImage::Format_RGB888)

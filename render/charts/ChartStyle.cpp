@@ -5,11 +5,14 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <vtkActor2D.h>
+#include <vtkActor2DCollection.h>
 #include <vtkAxis.h>
 #include <vtkChartLegend.h>
 #include <vtkChartXY.h>
 #include <vtkContextActor.h>
 #include <vtkContextScene.h>
+#include <vtkCoordinate.h>
 #include <vtkDoubleArray.h>
 #include <vtkNew.h>
 #include <vtkPen.h>
@@ -20,6 +23,7 @@
 #include <vtkRenderer.h>
 #include <vtkRendererCollection.h>
 #include <vtkStringArray.h>
+#include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 
 namespace rv {
@@ -168,20 +172,40 @@ void styleCharts(vtkRenderWindow* window, const ChartStyle& style) {
   if (style.scale > 1) forEachChart(window, [&](vtkChartXY* chart) { scaleChart(chart, style.scale); });
 }
 
-ScaledCharts::ScaledCharts(vtkRenderWindow* window, int scale) : window_(window), scale_(scale) {
+ScaledPicture::ScaledPicture(vtkRenderWindow* window, int scale) : window_(window), scale_(scale) {
   if (scale_ <= 1) return;
   // the ticks of the last (screen) layout kept: VTK would pick them again by pixel length, finer
   forEachChart(window_, [this](vtkChartXY* chart) {
     freezeTicks(chart, &frozen_);
     scaleChart(chart, scale_);
   });
+  // a 3D view's text in display pixels (the time and energy line, the apex view's key): larger and as far
+  // from the corner, as the CLI's tiled large pictures have it
+  vtkRendererCollection* renderers = window_->GetRenderers();
+  renderers->InitTraversal();
+  while (vtkRenderer* renderer = renderers->GetNextItem()) {
+    vtkActor2DCollection* actors = renderer->GetActors2D();
+    actors->InitTraversal();
+    while (vtkActor2D* actor = actors->GetNextActor2D()) {
+      auto* text = vtkTextActor::SafeDownCast(actor);
+      if (!text || text->GetPositionCoordinate()->GetCoordinateSystem() != VTK_DISPLAY) continue;
+      const double* at = text->GetPosition();
+      texts_.push_back({text, text->GetTextProperty()->GetFontSize(), at[0], at[1]});
+      text->GetTextProperty()->SetFontSize(texts_.back().fontSize * scale_);
+      text->SetPosition(at[0] * scale_, at[1] * scale_);
+    }
+  }
 }
 
-ScaledCharts::~ScaledCharts() {
+ScaledPicture::~ScaledPicture() {
   if (scale_ <= 1) return;
   forEachChart(window_, [this](vtkChartXY* chart) { scaleChart(chart, scale_, true); });
   for (vtkAxis* axis : frozen_)
     axis->SetCustomTickPositions(nullptr); // VTK picks them again (no window's chart has ticks of its own)
+  for (const auto& t : texts_) {
+    t.actor->GetTextProperty()->SetFontSize(t.fontSize);
+    t.actor->SetPosition(t.x, t.y);
+  }
 }
 
 } // namespace rv

@@ -9,6 +9,7 @@
 
 class vtkAxis;
 class vtkRenderWindow;
+class vtkTextActor;
 
 namespace rv {
 
@@ -26,20 +27,27 @@ std::pair<int, int> figureSize(const ChartStyle& style, std::pair<int, int> size
 /// x scale; paper: black axes, ticks and text, a faint grid, a column's type sizes.
 void styleCharts(vtkRenderWindow* window, const ChartStyle& style);
 
-/// A larger picture of a window's charts as they stand (a GUI's 2x / 4x save): while it lives, every chart's
-/// type, pens, markers and distances are `scale` x as large and its ticks those of the last render (the
-/// screen's); when it goes, everything is as it was. Nothing for scale 1 or a window without charts.
-class ScaledCharts {
+/// A larger picture of a window as it stands (a GUI's 2x / 4x save): while it lives, every chart's type,
+/// pens, markers and distances are `scale` x as large and its ticks those of the last render (the screen's),
+/// and a 3D view's text in display pixels (the time line) is `scale` x as large and as far from its corner;
+/// when it goes, everything is as it was. Nothing for scale 1.
+class ScaledPicture {
 public:
-  ScaledCharts(vtkRenderWindow* window, int scale);
-  ~ScaledCharts();
-  ScaledCharts(const ScaledCharts&) = delete;
-  ScaledCharts& operator=(const ScaledCharts&) = delete;
+  ScaledPicture(vtkRenderWindow* window, int scale);
+  ~ScaledPicture();
+  ScaledPicture(const ScaledPicture&) = delete;
+  ScaledPicture& operator=(const ScaledPicture&) = delete;
 
 private:
   vtkRenderWindow* window_;
   int scale_;
   std::vector<vtkAxis*> frozen_; ///< the axes whose ticks it froze
+  struct Text {
+    vtkTextActor* actor;
+    int fontSize;
+    double x, y;
+  };
+  std::vector<Text> texts_; ///< the text actors it scaled, as they were
 };
 
 } // namespace rv

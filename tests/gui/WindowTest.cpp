@@ -294,6 +294,19 @@ private slots:
     QCOMPARE(big.size(), QSize(1920, 1080));
     QVERIFY(varied(big));
     QVERIFY(keep(big, "snapshot_1920x1080.png"));
+    // its time line grows with the picture (the whole number of times the view fits): about scale^2 as many
+    // dark pixels in the bottom left corner as on the screen
+    const double scale = std::max(1L, std::lround(std::min(1920.0 / shown.width(), 1080.0 / shown.height())));
+    const auto textInk = [](const QImage& img, int band) {
+      return countPixels(img.copy(0, img.height() - band, img.width() * 45 / 100, band),
+                         [](const QColor& c) { return c.lightness() < 60; });
+    };
+    const double textRatio =
+        static_cast<double>(textInk(big, static_cast<int>(40 * scale))) /
+        static_cast<double>(std::max(1L, textInk(window_->view()->grabFramebuffer(), 40)));
+    qInfo("time line ink x%f at scale %f", textRatio, scale);
+    QVERIFY2(textRatio > 0.6 * scale * scale,
+             qPrintable(QString("time line ink x%1 at scale %2").arg(textRatio).arg(scale)));
     QCOMPARE(window_->view()->grabFramebuffer().size(), shown); // the window keeps its size and picture
     QVERIFY(varied(window_->view()->grabFramebuffer()));
     PictureSize::setCurrent("x2");
