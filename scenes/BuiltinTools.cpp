@@ -9,8 +9,11 @@
 #include "dynamics/tools/FourierSpectrum.h"
 #include "dynamics/tools/Lyapunov.h"
 #include "dynamics/tools/Megno.h"
+#include "dynamics/tools/MegnoLanes.h"
+#include "dynamics/tools/ReturnMap.h"
 #include "scenes/FixedPointJson.h"
 #include "scenes/SceneTools.h"
+#include "scenes/Sweep.h"
 #include "scenes/ToolRunner.h"
 
 #include <mutex>
@@ -248,6 +251,48 @@ ToolResult runSpectrum(const Scene& scene, const ToolControl& control) {
 
 } // namespace
 
+namespace {
+// The megno tool's batch evaluation (a LanesEvaluator, scenes/Sweep.h): its output `name` at several points
+// at once (dynamics/tools/MegnoLanes.h): the points go together when they differ only in their initial state,
+// on a flow whose model has a lane kernel, integrated with rk4 -- where each lane is the scalar run bit for
+// bit, so a point's value cannot depend on the points beside it, and a sweep stays the same file on any
+// threads, ranks and resumption. (Everhart's corrector stops when every lane has converged, adams starts
+// adaptively: on lanes a point would take its neighbours' iterations.)
+std::optional<std::vector<LaneValues>>
+megnoOnLanesOf(const std::string& name, const std::vector<Scene>& scenes, const ToolControl& control) {
+  // the megno tool's outputs, as its result names them
+  const auto pick = [&name](const MegnoEstimate& e) -> std::optional<double> {
+    const nlohmann::json fields = megnoFields(e);
+    const auto f = fields.find(name);
+    if (f == fields.end() || !f->is_number()) return std::nullopt;
+    return f->get<double>();
+  };
+  const Scene& first = scenes.front();
+  if (!pick(MegnoEstimate{})) return std::nullopt; // an output this batch does not know: one at a time
+  if (!megnoRunsOnLanes(*first.model)) return std::nullopt;
+  const RunSpec run = first.runSpec();
+  if (run.integrator->id != "rk4") return std::nullopt;
+  nlohmann::json common = first.document;
+  common.erase("initial");
+  std::vector<Eigen::VectorXd> starts;
+  starts.reserve(scenes.size());
+  for (const Scene& s : scenes) {
+    nlohmann::json doc = s.document;
+    doc.erase("initial");
+    if (doc != common) return std::nullopt;
+    starts.push_back(s.initialState);
+  }
+  const auto results = megnoOnLanes(
+      *first.model, [&] { return run.makeIntegrator(*first.model); }, starts, first.megno, control);
+  if (results.empty()) throw Stopped{};
+  std::vector<LaneValues> values;
+  values.reserve(results.size());
+  for (const auto& r : results)
+    values.push_back({{*pick(r.last)}, r.failure});
+  return values;
+}
+} // namespace
+
 void registerBuiltinTools() {
   static std::once_flag once;
   std::call_once(once, [] {
@@ -255,6 +300,7 @@ void registerBuiltinTools() {
     addToolRunner("spectrum", {runSpectrum});
     addToolRunner("lyapunov", {.start = [](const Scene& s) { return std::make_unique<LyapunovToolRun>(s); },
                                .tableName = "history"});
+    addLanesEvaluator("megno", megnoOnLanesOf);
     addToolRunner("megno", {.start = [](const Scene& s) { return std::make_unique<MegnoToolRun>(s); },
                             .tableName = "history"});
   });

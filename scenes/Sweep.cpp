@@ -3,10 +3,8 @@
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/Lanes.h"
 #include "dynamics/tools/FixedPoint.h"
-#include "dynamics/tools/MegnoLanes.h"
 #include "dynamics/tools/ToolRegistry.h"
 #include "dynamics/tools/ToolSettings.h"
-#include "scenes/BuiltinTools.h"
 #include "scenes/JsonFields.h"
 #include "scenes/SceneLoader.h"
 #include "scenes/SceneTools.h"
@@ -19,6 +17,7 @@
 #include <fstream>
 #include <limits>
 #include <map>
+#include <mutex>
 #include <numeric>
 #include <set>
 #include <sstream>
@@ -84,48 +83,6 @@ std::string typeCodes() {
   for (int k = 0; k <= static_cast<int>(FixedPointType::Unstable); ++k)
     codes += fmt::format("{}{} {}", k ? ", " : "", k, toString(static_cast<FixedPointType>(k)));
   return codes;
-}
-
-// MEGNO's number `name` (an output of the megno tool) at several points at once
-// (dynamics/tools/MegnoLanes.h): the points go together when they differ only in their initial state, on a
-// flow whose model has a lane kernel, integrated with rk4 -- where each lane is the scalar run bit for bit,
-// so a point's value cannot depend on the points beside it, and a sweep stays the same file on any threads,
-// ranks and resumption. (Everhart's corrector stops when every lane has converged, adams starts adaptively:
-// on lanes a point would take its neighbours' iterations.)
-auto megnoOnLanesQuantity(const std::string& name) {
-  return [name](const SweepSpec&, const std::vector<Scene>& scenes,
-                const ToolControl& control) -> std::optional<std::vector<LaneValues>> {
-    // the megno tool's outputs, as its result names them
-    const auto pick = [&name](const MegnoEstimate& e) -> std::optional<double> {
-      const nlohmann::json fields = megnoFields(e);
-      const auto f = fields.find(name);
-      if (f == fields.end() || !f->is_number()) return std::nullopt;
-      return f->get<double>();
-    };
-    const Scene& first = scenes.front();
-    if (!pick(MegnoEstimate{})) return std::nullopt; // an output this batch does not know: one at a time
-    if (!megnoRunsOnLanes(*first.model)) return std::nullopt;
-    const RunSpec run = first.runSpec();
-    if (run.integrator->id != "rk4") return std::nullopt;
-    json common = first.document;
-    common.erase("initial");
-    std::vector<Eigen::VectorXd> starts;
-    starts.reserve(scenes.size());
-    for (const Scene& s : scenes) {
-      json doc = s.document;
-      doc.erase("initial");
-      if (doc != common) return std::nullopt;
-      starts.push_back(s.initialState);
-    }
-    const auto results = megnoOnLanes(
-        *first.model, [&] { return run.makeIntegrator(*first.model); }, starts, first.megno, control);
-    if (results.empty()) throw Stopped{};
-    std::vector<LaneValues> values;
-    values.reserve(results.size());
-    for (const auto& r : results)
-      values.push_back({{*pick(r.last)}, r.failure});
-    return values;
-  };
 }
 
 std::vector<SweepQuantity> makeQuantities() {
@@ -269,7 +226,11 @@ std::vector<SweepQuantity> makeQuantities() {
                        throw ComputationError(tool.id + " gave no number for " + name + ": " + v.dump());
                      return std::vector<double>{v.get<double>()};
                    }});
-      if (tool.id == "megno") q.back().evaluateLanes = megnoOnLanesQuantity(out.name);
+      if (const LanesEvaluator* lanes = findLanesEvaluator(tool.id))
+        q.back().evaluateLanes = [lanes, name = out.name](const SweepSpec&, const std::vector<Scene>& scenes,
+                                                          const ToolControl& c) {
+          return (*lanes)(name, scenes, c);
+        };
     }
   }
   return q;
@@ -817,6 +778,31 @@ std::vector<double> gridValues(const SweepSpec& spec, const Done& done, const Re
 }
 
 } // namespace
+
+namespace {
+struct LanesEvaluators {
+  std::mutex mutex;
+  std::map<std::string, LanesEvaluator> byTool;
+};
+LanesEvaluators& lanesEvaluators() {
+  static LanesEvaluators all;
+  return all;
+}
+} // namespace
+
+void addLanesEvaluator(const std::string& id, LanesEvaluator evaluate) {
+  auto& all = lanesEvaluators();
+  const std::lock_guard lock(all.mutex);
+  if (!all.byTool.emplace(id, std::move(evaluate)).second)
+    throw InputError("tool " + id + " has a batch evaluation on lanes already");
+}
+
+const LanesEvaluator* findLanesEvaluator(const std::string& id) {
+  auto& all = lanesEvaluators();
+  const std::lock_guard lock(all.mutex);
+  const auto it = all.byTool.find(id);
+  return it == all.byTool.end() ? nullptr : &it->second; // (entries are never removed: the pointer stays)
+}
 
 std::vector<double> sweepGridValues(const SweepSpec& spec, const SweepStore& store) {
   return gridValues(

@@ -37,6 +37,17 @@ struct LaneValues {
   std::exception_ptr failure;
 };
 
+/// A tool's batch evaluation of its output `output` over the scenes of up to kLanes grid points at once, one
+/// per SIMD lane (dynamics/core/Lanes.h): per point its values or what its evaluation threw; nothing where
+/// these scenes cannot go together (then each runs alone). Throws Stopped when stopped.
+using LanesEvaluator = std::function<std::optional<std::vector<LaneValues>>(
+    const std::string& output, const std::vector<Scene>& scenes, const ToolControl& control)>;
+/// Gives registered tool `id` a batch evaluation on lanes, which every sweep of its outputs then uses (the
+/// megno tool's is bound by registerBuiltinTools; a module's tool may bind one). InputError when it has one.
+void addLanesEvaluator(const std::string& id, LanesEvaluator evaluate);
+/// Tool `id`'s batch evaluation on lanes, or nullptr.
+const LanesEvaluator* findLanesEvaluator(const std::string& id);
+
 /// A number per grid point, computed by a registered tool (ToolRegistry id `tool`).
 struct SweepQuantity {
   std::string id;          ///< as written in a sweep file; a trailing '.' takes a name ("observable.")

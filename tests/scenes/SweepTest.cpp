@@ -363,6 +363,10 @@ TEST(Sweep, PointsOnLanesAreThePointsOneAtATime) {
         "sw.json");
   };
   const SweepSpec batched = file(0), single = file(1);
+  // the megno tool's batch evaluation is a registry property of the tool (not a name the sweep knows)
+  ASSERT_NE(findLanesEvaluator("megno"), nullptr);
+  EXPECT_EQ(findLanesEvaluator("lyapunov"), nullptr);
+  EXPECT_THROW(addLanesEvaluator("megno", {}), InputError);
   ASSERT_EQ(sweepBatch(batched), kLanes);
   ASSERT_EQ(sweepBatch(single), 1);
   const std::string dir = ::testing::TempDir();
