@@ -10,7 +10,6 @@
 #include "app/gui/QtVtkWidget.h"
 
 #include "render/charts/ChartStyle.h"
-
 #include "render/context/HeadlessContext.h"
 
 #include <QFile>
@@ -61,6 +60,13 @@ bool softwareGl() {
     return cpu;
   }();
   return software;
+}
+
+// How many times larger a picture's type and pens are than the view's: the whole times the view fits in it.
+int pictureScale(const QSize& picture, const QSize& shown) {
+  return std::max(1, static_cast<int>(std::lround(
+                         std::min(static_cast<double>(picture.width()) / std::max(1, shown.width()),
+                                  static_cast<double>(picture.height()) / std::max(1, shown.height())))));
 }
 
 unsigned long pressEvent(Qt::MouseButton b) { // vtk *PressEvent; +1 is the matching *ReleaseEvent
@@ -201,6 +207,7 @@ void QtVtkWidget::paintGL() {
     const int w = size[0], h = size[1];
     window_->SetSize(tapSize_.width(), tapSize_.height());
     try {
+      const ScaledPicture scaled(window_, pictureScale(tapSize_, QSize(dw, dh))); // the time line grows too
       captureInto(window_, tapped_);
     } catch (const std::exception&) {
       tapped_ = Image{}; // (an empty picture: the recorder says why)
@@ -286,9 +293,7 @@ bool savePicture(QtVtkWidget* view, const QString& path) {
     try {
       // a chart's type, pens and markers grow with the picture (2x: the same figure, finer), its ticks kept;
       // so does a 3D view's time line
-      const int scale = std::max(
-          1, static_cast<int>(std::lround(std::min(static_cast<double>(size.width()) / shown.width(),
-                                                   static_cast<double>(size.height()) / shown.height()))));
+      const int scale = pictureScale(size, shown);
       // the ticks kept are those of a render at the view's own size: one now (a save just before left none)
       if (scale > 1) view->renderAt(shown.width(), shown.height());
       const ScaledPicture scaled(view->renderWindow(), scale);
