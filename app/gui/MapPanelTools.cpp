@@ -315,7 +315,7 @@ void MapPanel::restoreToolOutputs(const std::vector<SavedToolOutput>& saved) {
     ToolSeries t{&job, chart_->addSeries(o.x, o.y, o.colour), o.colour, o.x,
                  o.y,  [](ToolSeries&) { return false; }};
     t.everyStep = o.everyStep;
-    t.ended = [summary](const ToolSeries&) { return summary; };
+    t.ended = [summary](const ToolSeries&) { return QString(summary); };
     t.endSaid = true; // the Results log said it when it was computed
     for (const auto& [parameter, m] : o.multipliers)
       offerMultipliers(t, parameter, m);
