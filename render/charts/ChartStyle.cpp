@@ -117,10 +117,15 @@ void freezeTicks(vtkChartXY* chart, std::vector<vtkAxis*>* frozen = nullptr) {
   }
 }
 
-void forEachChart(vtkRenderWindow* window, const std::function<void(vtkChartXY*)>& f) {
+void forEachRenderer(vtkRenderWindow* window, const std::function<void(vtkRenderer*)>& f) {
   vtkRendererCollection* renderers = window->GetRenderers();
   renderers->InitTraversal();
-  while (vtkRenderer* renderer = renderers->GetNextItem()) {
+  while (vtkRenderer* renderer = renderers->GetNextItem())
+    f(renderer);
+}
+
+void forEachChart(vtkRenderWindow* window, const std::function<void(vtkChartXY*)>& f) {
+  forEachRenderer(window, [&f](vtkRenderer* renderer) {
     vtkPropCollection* props = renderer->GetViewProps();
     props->InitTraversal();
     while (vtkProp* prop = props->GetNextProp()) {
@@ -130,7 +135,7 @@ void forEachChart(vtkRenderWindow* window, const std::function<void(vtkChartXY*)
       for (unsigned i = 0; i < scene->GetNumberOfItems(); ++i)
         if (auto* chart = vtkChartXY::SafeDownCast(scene->GetItem(i))) f(chart);
     }
-  }
+  });
 }
 
 } // namespace
@@ -163,10 +168,7 @@ void styleCharts(vtkRenderWindow* window, const ChartStyle& style) {
   forEachChart(window, [](vtkChartXY* chart) { freezeTicks(chart); });
   window->SetSize(width, height);
   if (style.paper) {
-    vtkRendererCollection* renderers = window->GetRenderers();
-    renderers->InitTraversal();
-    while (vtkRenderer* renderer = renderers->GetNextItem())
-      renderer->SetBackground(1, 1, 1), renderer->GradientBackgroundOff();
+    forEachRenderer(window, [](vtkRenderer* r) { r->SetBackground(1, 1, 1), r->GradientBackgroundOff(); });
     forEachChart(window, dressForPaper);
   }
   if (style.scale > 1) forEachChart(window, [&](vtkChartXY* chart) { scaleChart(chart, style.scale); });
@@ -181,9 +183,7 @@ ScaledPicture::ScaledPicture(vtkRenderWindow* window, int scale) : window_(windo
   });
   // a 3D view's text in display pixels (the time and energy line, the apex view's key): larger and as far
   // from the corner, as the CLI's tiled large pictures have it
-  vtkRendererCollection* renderers = window_->GetRenderers();
-  renderers->InitTraversal();
-  while (vtkRenderer* renderer = renderers->GetNextItem()) {
+  forEachRenderer(window_, [this](vtkRenderer* renderer) {
     vtkActor2DCollection* actors = renderer->GetActors2D();
     actors->InitTraversal();
     while (vtkActor2D* actor = actors->GetNextActor2D()) {
@@ -194,7 +194,7 @@ ScaledPicture::ScaledPicture(vtkRenderWindow* window, int scale) : window_(windo
       text->GetTextProperty()->SetFontSize(texts_.back().fontSize * scale_);
       text->SetPosition(at[0] * scale_, at[1] * scale_);
     }
-  }
+  });
 }
 
 ScaledPicture::~ScaledPicture() {
