@@ -7,6 +7,7 @@
 #include "scenes/ToolRunner.h"
 
 #include <algorithm>
+#include <cmath>
 #include <mutex>
 #include <utility>
 
@@ -70,6 +71,51 @@ std::unique_ptr<Chart> historyChart(const ToolResult& r, const std::string& titl
   return chart;
 }
 
+// a grid tool's result (scenes/GridTools.cpp) as an image over its plane -- the surface as log10 of the
+// distance (the zeros, fixed points, are the darkest spots) with the search path from fixedpoint.guess, the
+// region of allowed motion as two shades; of a 3D grid the layer nearest grid.z
+std::unique_ptr<Chart> gridChart(const Scene& scene, const ToolResult& r) {
+  const ToolGrid& g = r.grid;
+  const auto& t = r.table;
+  if (g.dimensions < 2 || static_cast<int>(t.names.size()) <= g.coordinates)
+    throw ComputationError("the grid tool gave no grid to draw");
+  const bool surface = t.names[g.coordinates] == "distance";
+  const int nx = g.size[0], ny = g.size[1];
+  int layer = 0;
+  if (g.dimensions == 3) {
+    const double z = scene.tool("grid")["z"];
+    layer = std::clamp(static_cast<int>(std::lround((z - g.origin[2]) / g.spacing[2])), 0, g.size[2] - 1);
+  }
+  const auto& values = t.values[g.coordinates];
+  std::vector<double> z(static_cast<std::size_t>(nx) * ny);
+  for (std::size_t i = 0; i < z.size(); ++i) {
+    const double v = values.at(static_cast<std::size_t>(layer) * z.size() + i);
+    z[i] = surface ? std::log10(std::max(v, 1e-16)) : v;
+  }
+  auto chart = std::make_unique<PoincareChart>(t.names[0], t.names[1]);
+  if (surface)
+    chart->addImage(nx, ny, g.origin[0], g.spacing[0], g.origin[1], g.spacing[1], z, {0.05, 0.05, 0.35},
+                    {1.0, 0.95, 0.6});
+  else
+    chart->addImage(nx, ny, g.origin[0], g.spacing[0], g.origin[1], g.spacing[1], z, {0.85, 0.85, 0.85},
+                    {0.2, 0.55, 0.3});
+  std::vector<double> px, py;
+  for (const auto& p : r.fields.value("search_path", nlohmann::json::array()))
+    px.push_back(p.at(0).get<double>()), py.push_back(p.at(1).get<double>());
+  if (!px.empty()) {
+    chart->addCurve(px, py, {0.9, 0.1, 0.1}, 1.5);
+    chart->select(chart->addSeries(px, py, {0.9, 0.1, 0.1}));
+  }
+  // the cells are centred on the nodes: the outer ones reach half a step beyond the grid's range
+  chart->setRanges(g.origin[0] - g.spacing[0] / 2, g.origin[0] + (nx - 0.5) * g.spacing[0],
+                   g.origin[1] - g.spacing[1] / 2, g.origin[1] + (ny - 0.5) * g.spacing[1]);
+  std::string title = surface ? "Surface |Map(x) - x| (log10)" : "Region of allowed motion";
+  if (g.dimensions == 3)
+    title += format(" at %s = %.6g", t.names[2].c_str(), g.origin[2] + layer * g.spacing[2]);
+  chart->setTitle(title);
+  return chart;
+}
+
 } // namespace
 
 void registerBuiltinCharts() {
@@ -78,6 +124,8 @@ void registerBuiltinCharts() {
     registerBuiltinTools();
     addToolChart("bifurcation_curve", bifurcationCurveChart);
     addToolChart("spectrum", spectrumChart);
+    addToolChart("surface", gridChart);
+    addToolChart("ram", gridChart);
     addToolChart("lyapunov", [](const Scene&, const ToolResult& r) {
       return historyChart(r, "Lyapunov exponents", "Lyapunov exponents", {});
     });

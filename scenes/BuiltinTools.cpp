@@ -298,6 +298,7 @@ void registerBuiltinTools() {
   std::call_once(once, [] {
     addToolRunner("bifurcation_curve", {runBifurcationCurve});
     addToolRunner("spectrum", {runSpectrum});
+    registerGridTools();
     addToolRunner("lyapunov", {.start = [](const Scene& s) { return std::make_unique<LyapunovToolRun>(s); },
                                .tableName = "history"});
     addLanesEvaluator("megno", megnoOnLanesOf);

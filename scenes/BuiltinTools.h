@@ -15,6 +15,8 @@ nlohmann::json megnoFields(const MegnoEstimate& e);
 /// Binds the runners of the built-in tools that have one (bifurcation_curve, spectrum, lyapunov, megno);
 /// idempotent and thread-safe. Free of VTK (the fuzzers link it).
 void registerBuiltinTools();
+/// Binds the runners of the grid tools, surface and ram (scenes/GridTools.cpp); called by the above.
+void registerGridTools();
 /// Binds their charts (scenes/BuiltinCharts.cpp, VTK) after their runners; idempotent and thread-safe.
 void registerBuiltinCharts();
 

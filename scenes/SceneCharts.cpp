@@ -25,22 +25,6 @@ std::string chartTitle(const std::string& view) {
 
 namespace {
 
-// the chart's plane of the grid section (the 2D section of a 3D map)
-GridSettings chartGridSettings(const Scene& scene) {
-  GridSettings g = gridSettings(scene.tool("grid"));
-  g.threeD = false;
-  return g;
-}
-
-// A computation kept between the runs of a chart's job (ChartProgress): its objects and what it has drawn.
-struct GridProgress final : ChartProgress {
-  GridProgress(const Scene& scene, MapGrid::Kind kind)
-      : sm(Scene(scene), {}, false), map(sm.map()), grid(map, kind, chartGridSettings(scene)) {}
-  SceneMap sm;
-  ReturnMap map;
-  MapGrid grid;
-};
-
 // a run of a tool that runs through ToolRunner.h (ToolRun: a stopped one goes on)
 struct ToolRunProgress final : ChartProgress {
   explicit ToolRunProgress(std::unique_ptr<ToolRun> r) : run(std::move(r)) {}
@@ -69,46 +53,6 @@ P& progressOf(const ChartRequest& r, std::unique_ptr<ChartProgress>& local, Args
   std::unique_ptr<ChartProgress>& slot = r.progress ? *r.progress : local;
   if (!dynamic_cast<P*>(slot.get())) slot = std::make_unique<P>(std::forward<Args>(args)...);
   return static_cast<P&>(*slot);
-}
-
-std::unique_ptr<PoincareChart> gridChart(const Scene& scene, const ChartRequest& request, MapGrid::Kind kind,
-                                         const ToolControl& control) {
-  std::unique_ptr<ChartProgress> local;
-  auto& progress = progressOf<GridProgress>(request, local, scene, kind);
-  progress.grid.run(control);
-  const GridSettings& g = progress.grid.settings();
-  const ReturnMap& map = progress.map;
-  const SceneMap& sm = progress.sm;
-  const MapGrid& grid = progress.grid;
-  const auto& names = map.coordinateNames();
-  auto chart = std::make_unique<PoincareChart>(names[0], names[1]);
-  const GridValues& r = grid.result();
-  if (kind == MapGrid::Kind::Surface) {
-    // log10 of the distance: the zeros (fixed points) show as the darkest spots
-    std::vector<double> z(r.values.size());
-    for (std::size_t i = 0; i < z.size(); ++i)
-      z[i] = std::log10(std::max(r.values[i], 1e-16));
-    chart->addImage(r.size[0], r.size[1], g.axes[0].min, g.axes[0].step, g.axes[1].min, g.axes[1].step, z,
-                    {0.05, 0.05, 0.35}, {1.0, 0.95, 0.6});
-  } else {
-    chart->addImage(r.size[0], r.size[1], g.axes[0].min, g.axes[0].step, g.axes[1].min, g.axes[1].step,
-                    r.values, {0.85, 0.85, 0.85}, {0.2, 0.55, 0.3});
-  }
-  // the search path of the scene's fixed point on the surface (the manual's "show point on the surface")
-  if (kind == MapGrid::Kind::Surface && !scene.guess.empty()) {
-    std::vector<double> px, py;
-    try {
-      findFixedPoint(map, sm.guess(), sm.search(), control,
-                     [&](const SearchPoint& p) { px.push_back(p.point[0]), py.push_back(p.point[1]); });
-    } catch (const ComputationError&) { // a failed search is still worth seeing
-    } catch (const Stopped&) {
-    }
-    chart->addCurve(px, py, {0.9, 0.1, 0.1}, 1.5);
-    const int k = chart->addSeries(px, py, {0.9, 0.1, 0.1});
-    chart->select(k);
-  }
-  chart->setRanges(g.axes[0].min, g.axes[0].max, g.axes[1].min, g.axes[1].max);
-  return chart;
 }
 
 using ChartBuilder = std::unique_ptr<Chart> (*)(const Scene&, const ChartRequest&, const ToolControl&);
@@ -205,14 +149,6 @@ std::unique_ptr<Chart> continuationChart(const Scene& scene, const ChartRequest&
   return chart;
 }
 
-std::unique_ptr<Chart> surfaceChart(const Scene& scene, const ChartRequest& r, const ToolControl& control) {
-  return gridChart(scene, r, MapGrid::Kind::Surface, control);
-}
-
-std::unique_ptr<Chart> ramChart(const Scene& scene, const ChartRequest& r, const ToolControl& control) {
-  return gridChart(scene, r, MapGrid::Kind::AllowedRegion, control);
-}
-
 // a tool that runs through ToolRunner.h: its own chart, or its table's columns against the first
 std::unique_ptr<Chart> toolResultChart(const ToolEntry& tool, const Scene& scene, const ToolResult& result) {
   registerBuiltinCharts();
@@ -238,9 +174,7 @@ const std::vector<std::pair<std::string, ChartBuilder>>& chartBuilders() {
                                                                    {"plot", plotChart},
                                                                    {"multipliers", multipliersChart},
                                                                    {"bifurcation", bifurcationChart},
-                                                                   {"continuation", continuationChart},
-                                                                   {"surface", surfaceChart},
-                                                                   {"ram", ramChart}};
+                                                                   {"continuation", continuationChart}};
   return b;
 }
 

@@ -240,6 +240,13 @@ const TextKey textKeys[] = {
          w.fail("not a parameter of " + scene.model->info().id);
      },
      "the second parameter of the curve (the first is continuation.parameter)", "text", true},
+    {"level", "grid", "belongs to the \"grid\" section",
+     // read where it is used (scenes/GridTools.cpp), from the document; checked here
+     [](const json& j, const Where& w, Scene& scene) {
+       const std::string id = text(j, w);
+       if (scene.model->findObservable(id) < 0) w.fail("not an observable of " + scene.model->info().id);
+     },
+     "2D maps, region of allowed motion: the observable giving the energy level's height above the region"},
     {"function", "spectrum", "",
      [](const json& j, const Where& w, Scene& scene) { scene.spectrum.function = text(j, w); },
      "the observable whose spectrum is taken", "text", true},

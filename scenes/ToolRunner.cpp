@@ -128,6 +128,13 @@ std::string sweepQuantityId(const ToolEntry& tool, const ToolOutput& output) {
   return output.quantityName.empty() ? tool.id + "." + output.name : output.quantityName;
 }
 
+std::vector<SceneOverride> argumentSettings(const ToolRunner& runner, const std::string& name,
+                                            const std::string& value) {
+  for (const auto& a : runner.arguments)
+    if (a.name == name) return a.toSettings(value);
+  throw InputError(name + ": not an argument of the tool");
+}
+
 nlohmann::json toolResultJson(const ToolResult& result) {
   nlohmann::json j = result.fields;
   if (result.stopped) j["stopped"] = true;

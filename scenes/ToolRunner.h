@@ -11,13 +11,25 @@
 #include "render/charts/Chart.h"
 #include "render/export/VtkXmlFiles.h"
 #include "scenes/Scene.h"
+#include "scenes/SceneLoader.h"
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 
 namespace rv {
+
+/// A result on a regular grid of nodes (surface, RAM): the table's rows are the nodes, x fastest, and its
+/// first `coordinates` columns their coordinates. The CLI writes it as image data (-o FILE.vti), Python gives
+/// the axes and each other column shaped (ny, nx) or (nz, ny, nx).
+struct ToolGrid {
+  int dimensions = 0;               ///< the axes it spans: 2 or 3 (0: the result is no grid)
+  int coordinates = 0;              ///< the coordinate columns: a 2D grid of a 3D map has 3 (z constant)
+  std::array<int, 3> size{1, 1, 1}; ///< nodes per axis (1 along an axis the grid does not span)
+  std::array<double, 3> origin{0, 0, 0}, spacing{1, 1, 1};
+};
 
 /// What one run of a tool produced.
 struct ToolResult {
@@ -27,6 +39,20 @@ struct ToolResult {
   NamedColumns table;
   /// Stopped on request: the fields and rows hold what was computed until then.
   bool stopped = false;
+  /// Where the rows are the nodes of a grid: its shape.
+  ToolGrid grid = {};
+};
+
+/// A call argument of a tool besides its section's settings -- the CLI's `--NAME VALUE`, Python's
+/// `NAME=value` -- that stands for scene settings: `--x MIN,MAX` is grid.x_min and grid.x_max. Every front
+/// end applies it the same way (toSettings), before the run, so the computation reads settings only.
+struct ToolArgument {
+  std::string name;        ///< the flag and keyword, e.g. "x"
+  std::string valueName;   ///< what the value looks like in --help, e.g. "MIN,MAX"
+  std::string description; ///< one line
+  /// The scene settings the value (as text: "0,1"; a Python sequence is joined by commas) stands for;
+  /// InputError naming the argument for a value it cannot take.
+  std::function<std::vector<SceneOverride>(const std::string& value)> toSettings;
 };
 
 /// One run of a tool on a scene that can stop and go on: a stopped chart job continues it (GUI Continue),
@@ -60,6 +86,13 @@ struct ToolRunner {
   /// The name the table goes by as one piece -- the Python result's key that holds it as one Table (e.g.
   /// "history"); empty: each column is a key of its own.
   std::string tableName = {};
+  /// Call arguments besides the settings (an argument named like a setting replaces its flag).
+  std::vector<ToolArgument> arguments = {};
+  /// Its results are grids (ToolResult::grid): the CLI's -o also writes .vti image data.
+  bool grid = false;
+  /// Settings of its section that do not change the result (threads): a run saved with --checkpoint may be
+  /// resumed with other values.
+  std::vector<std::string> resultIndependent = {};
 };
 
 /// Begins a run of tool `id` on the scene: the runner's own resumable run, or its `run` wrapped in one that
@@ -93,6 +126,11 @@ ToolResult runTool(const ToolEntry& tool, const Scene& scene, const ToolControl&
 
 /// The sweep quantity an output marked `quantity` is: its quantityName, else "TOOL.OUTPUT".
 std::string sweepQuantityId(const ToolEntry& tool, const ToolOutput& output);
+
+/// The scene overrides argument `name` of the runner stands for, given its value as text; InputError for an
+/// unknown name.
+std::vector<SceneOverride> argumentSettings(const ToolRunner& runner, const std::string& name,
+                                            const std::string& value);
 
 /// The result as one JSON object: the fields, and "stopped" when the run was stopped.
 nlohmann::json toolResultJson(const ToolResult& result);

@@ -61,8 +61,6 @@ const std::map<std::string, ToolCommandBuilder>& toolCommandBuilders() {
       {"continue", addContinueCommand},
       {"separatrix", addSeparatrixCommand},
       {"bifurcation-tree", addBifurcationTreeCommand},
-      {"surface", addSurfaceCommand},
-      {"ram", addRamCommand},
       {"diagram", addDiagramCommand},
       {"sweep", addSweepCommand}};
   return builders;

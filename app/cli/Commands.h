@@ -61,8 +61,6 @@ Command addFixedPointCommand(CLI::App* cmd);
 Command addContinueCommand(CLI::App* cmd);
 Command addSeparatrixCommand(CLI::App* cmd);
 Command addBifurcationTreeCommand(CLI::App* cmd);
-Command addSurfaceCommand(CLI::App* cmd);
-Command addRamCommand(CLI::App* cmd);
 Command addDiagramCommand(CLI::App* cmd);
 Command addSweepCommand(CLI::App* cmd);
 /// The subcommand of a tool that runs through scenes/ToolRunner.h (a module's tool): SCENE, --set, a flag

@@ -136,106 +136,6 @@ nlohmann::json changeJson(const TypeChange& t) {
           {"multipliers", multipliersJson(t.at.fixedPoint.multipliers)}};
 }
 
-struct GridArgs {
-  MapArgs map;
-  std::string x, y, z, output, level, checkpoint;
-  double step = 0;
-  int threads = 0;
-};
-
-void addGridArgs(CLI::App* cmd, GridArgs& a, bool ram) {
-  addMapArgs(cmd, a.map, false);
-  cmd->add_option("--x", a.x, "range of the first map coordinate: MIN,MAX")->required();
-  cmd->add_option("--y", a.y, "range of the second map coordinate: MIN,MAX")->required();
-  cmd->add_option("--z", a.z, "3D grid of a 3D map: range MIN,MAX of the third (else grid.z is its value)");
-  cmd->add_option("--step", a.step, "grid step along every axis (default: grid.step_x, step_y, step_z)");
-  cmd->add_option("--threads", a.threads, "number of threads (default: grid.threads)");
-  cmd->add_option("-o,--output", a.output,
-                  "CSV file (default: standard output); a .vti file is image data for ParaView")
-      ->check(writesOneOf({".csv", ".vti"}));
-  addCheckpointOption(cmd, a.checkpoint);
-  if (ram)
-    cmd->add_option("--level", a.level,
-                    "2D maps: observable giving the energy level's height above the region (default: the "
-                    "completed state component)");
-}
-
-int runGrid(const GridArgs& a, MapGrid::Kind kind) {
-  const auto s = setUp(a.map, false);
-  ParameterValues gv = s->scene().tool("grid");
-  if (a.threads < 0) throw InputError("--threads: must be at least 1");
-  if (a.threads > 0) gv.set("threads", a.threads, "--threads");
-  if (a.step < 0 || std::isnan(a.step)) throw InputError("--step: must be positive");
-  if (a.step > 0)
-    for (const char* k : {"step_x", "step_y", "step_z"})
-      gv.set(k, a.step, "--step");
-  GridSettings g = gridSettings(gv);
-  const auto range = [](const std::string& text, const char* flag, GridAxis& axis) {
-    const auto r = parseNumbers(text, flag);
-    if (r.size() != 2 || !(r[0] <= r[1]))
-      throw InputError(std::string(flag) + " " + text + ": expected MIN,MAX");
-    axis.min = r[0], axis.max = r[1];
-  };
-  range(a.x, "--x", g.axes[0]);
-  range(a.y, "--y", g.axes[1]);
-  if (!a.z.empty()) {
-    range(a.z, "--z", g.axes[2]);
-    g.threeD = true;
-  }
-  const ReturnMap map = s->map();
-  MapGrid grid(map, kind, g, a.level);
-  // the result does not depend on the number of threads: a run may be resumed with another
-  Checkpoint checkpoint(a.checkpoint, kind == MapGrid::Kind::Surface ? "surface" : "ram",
-                        fmt::format("{} --x {} --y {} --z {} --step {} --level {} {}",
-                                    s->scene().document.dump(), a.x, a.y, a.z, a.step, a.level, a.map.order));
-  if (auto saved = checkpoint.load()) grid.restore(saved->state);
-  const bool vti = hasExtension(a.output, ".vti");
-  if (vti) checkWritable(a.output, "-o");
-  std::optional<Output> out;
-  if (!vti) out.emplace(a.output);
-  Progress progress(kind == MapGrid::Kind::Surface ? "surface" : "ram");
-  const bool complete =
-      checkpoint.run([&](const ToolControl& c) { return grid.run(c); },
-                     [&](Snapshot& state) { grid.save(state); }, interruptibleControl(progress));
-  const int dims = g.threeD ? 3 : map.dimension() == 3 ? 3 : 2;
-  std::vector<std::string> names(map.coordinateNames().begin(), map.coordinateNames().begin() + dims);
-  if (kind == MapGrid::Kind::Surface) {
-    names.push_back("distance");
-  } else {
-    names.push_back("allowed");
-    if (!grid.levelName().empty()) names.push_back(grid.levelName());
-  }
-  const GridValues& r = grid.result();
-  if (vti) {
-    ImageGrid image;
-    image.size = r.size;
-    for (int d = 0; d < 3; ++d)
-      image.origin[d] = g.axes[d].min, image.spacing[d] = g.axes[d].step;
-    if (!g.threeD) image.origin[2] = map.dimension() == 3 ? g.zValue : 0, image.spacing[2] = 1;
-    image.axisNames.assign(names.begin(), names.begin() + dims);
-    image.arrays.names.assign(names.begin() + dims, names.end());
-    image.arrays.values.push_back(r.values);
-    if (!r.level.empty()) image.arrays.values.push_back(r.level);
-    writeImageVti(a.output, image);
-    if (complete) checkpoint.finish();
-    return complete ? 0 : 130;
-  }
-  std::fprintf(out->get(), "%s\n", header(names).c_str());
-  for (int k = 0; k < r.size[2]; ++k)
-    for (int j = 0; j < r.size[1]; ++j)
-      for (int i = 0; i < r.size[0]; ++i) {
-        const std::size_t at = (static_cast<std::size_t>(k) * r.size[1] + j) * r.size[0] + i;
-        std::vector<double> row = toVector(grid.node(i, j, k));
-        row.resize(dims);
-        row.push_back(r.values[at]);
-        if (!r.level.empty()) row.push_back(r.level[at]);
-        printRow(out->get(), row);
-      }
-  out->commit();
-  if (complete) checkpoint.finish();
-  return complete ? 0 : 130;
-}
-
 } // namespace
 
 Command addFixedPointCommand(CLI::App* cmd) {
@@ -480,18 +380,6 @@ Command addSeparatrixCommand(CLI::App* cmd) {
             out.commit();
             return interrupted() ? 130 : 0;
           }};
-}
-
-Command addSurfaceCommand(CLI::App* cmd) {
-  auto a = std::make_shared<GridArgs>();
-  addGridArgs(cmd, *a, false);
-  return {cmd, [a] { return runGrid(*a, MapGrid::Kind::Surface); }};
-}
-
-Command addRamCommand(CLI::App* cmd) {
-  auto a = std::make_shared<GridArgs>();
-  addGridArgs(cmd, *a, true);
-  return {cmd, [a] { return runGrid(*a, MapGrid::Kind::AllowedRegion); }};
 }
 
 Command addDiagramCommand(CLI::App* cmd) {

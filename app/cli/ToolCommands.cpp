@@ -102,69 +102,123 @@ Command addPoincareCommand(CLI::App* cmd) {
           }};
 }
 
+namespace {
+
+// A grid result as image data: the coordinate columns are its axes, the others its arrays.
+void writeGridVti(const std::string& path, const ToolResult& r) {
+  const ToolGrid& g = r.grid;
+  ImageGrid image;
+  image.size = g.size;
+  image.origin = g.origin;
+  image.spacing = g.spacing;
+  image.axisNames.assign(r.table.names.begin(), r.table.names.begin() + g.coordinates);
+  image.arrays.names.assign(r.table.names.begin() + g.coordinates, r.table.names.end());
+  image.arrays.values.assign(r.table.values.begin() + g.coordinates, r.table.values.end());
+  writeImageVti(path, image);
+}
+
+void writeTableCsv(FILE* f, const NamedColumns& t) {
+  for (std::size_t c = 0; c < t.names.size(); ++c)
+    std::fprintf(f, "%s%s", c ? "," : "", t.names[c].c_str());
+  std::fprintf(f, "\n");
+  for (long k = 0; k < t.rows(); ++k)
+    for (std::size_t c = 0; c < t.names.size(); ++c)
+      std::fprintf(f, "%.17g%s", t.values[c][static_cast<std::size_t>(k)],
+                   c + 1 < t.names.size() ? "," : "\n");
+}
+
+} // namespace
+
 Command addRegisteredToolCommand(CLI::App* cmd, const ToolEntry& tool) {
   struct Options {
     SceneArgs scene;
     std::string output;
     bool json = false;
     std::string checkpoint;
-    std::map<std::string, std::string> settings; // --KEY of the settings table, by key
+    std::map<std::string, std::string> settings;  // --KEY of the settings table, by key
+    std::map<std::string, std::string> arguments; // --NAME of the runner's arguments, by name
   };
   auto o = std::make_shared<Options>();
+  const ToolRunner& runner = *findToolRunner(tool.id);
   addSceneArgs(cmd, o->scene);
+  const auto isArgument = [&runner](const std::string& name) {
+    return std::any_of(runner.arguments.begin(), runner.arguments.end(),
+                       [&](const ToolArgument& a) { return a.name == name; });
+  };
   const ToolSection* section = findToolSection(tool.section);
   if (section) {
     for (const auto& p : section->table->specs())
-      cmd->add_option("--" + p.id, o->settings[p.id],
-                      p.description + " (default: the scene's " + tool.section + "." + p.id + ")");
+      if (!isArgument(p.id))
+        cmd->add_option("--" + p.id, o->settings[p.id],
+                        p.description + " (default: the scene's " + tool.section + "." + p.id + ")");
     for (const auto& t : sectionTextKeys(section->key))
-      cmd->add_option("--" + t.key, o->settings[t.key],
-                      t.description + " (default: the scene's " + tool.section + "." + t.key + ")");
+      if (!isArgument(t.key))
+        cmd->add_option("--" + t.key, o->settings[t.key],
+                        t.description + " (default: the scene's " + tool.section + "." + t.key + ")");
   }
+  for (const auto& a : runner.arguments)
+    cmd->add_option("--" + a.name, o->arguments[a.name], a.description)->type_name(a.valueName);
   std::string fields;
   for (const auto& out : tool.outputs)
     fields += (fields.empty() ? "" : ", ") + out.name;
   cmd->add_flag("--json", o->json, "print one JSON object: " + fields);
-  cmd->add_option("-o,--output", o->output, "CSV file: the tool's table (.csv)")
-      ->check(writesOneOf({".csv"}));
+  const std::vector<std::string> formats =
+      runner.grid ? std::vector<std::string>{".csv", ".vti"} : std::vector<std::string>{".csv"};
+  cmd->add_option("-o,--output", o->output,
+                  runner.grid
+                      ? "CSV file: the grid's nodes and values; a .vti file is image data for ParaView"
+                      : "CSV file: the tool's table (.csv)")
+      ->check(writesOneOf(formats));
   if (resumable(tool)) addCheckpointOption(cmd, o->checkpoint);
-  return {cmd, [o, &tool, section] {
+  return {cmd, [o, &tool, &runner, section] {
             std::vector<std::string> sets = o->scene.sets;
             for (const auto& [key, value] : o->settings)
               if (!value.empty()) sets.push_back(section->key + "." + key + "=" + value);
+            for (const auto& [name, value] : o->arguments) {
+              if (value.empty()) continue;
+              try {
+                for (const auto& s : argumentSettings(runner, name, value))
+                  sets.push_back(s.key + "=" + s.value);
+              } catch (const InputError& e) {
+                throw InputError("--" + name + " " + value + ": " + e.what());
+              }
+            }
             SceneArgs args{o->scene.scene, sets};
-            if (!o->output.empty() && !hasExtension(o->output, ".csv"))
-              throw InputError("-o " + o->output + ": unsupported format (supported: .csv)");
+            const bool vti = hasExtension(o->output, ".vti");
             const Scene scene = args.load();
             std::unique_ptr<Output> out;
-            if (!o->output.empty()) out = std::make_unique<Output>(o->output);
+            if (vti)
+              checkWritable(o->output, "-o");
+            else if (!o->output.empty())
+              out = std::make_unique<Output>(o->output);
             Progress progress(tool.id);
             const auto run = startTool(tool, scene);
-            Checkpoint checkpoint(o->checkpoint, tool.command, scene.document.dump());
+            // what the result depends on: the scene, less the settings a resumed run may change
+            nlohmann::json key = scene.document;
+            for (const auto& k : runner.resultIndependent)
+              if (key.contains(tool.section) && key[tool.section].is_object()) key[tool.section].erase(k);
+            Checkpoint checkpoint(o->checkpoint, tool.command, key.dump());
             if (auto saved = checkpoint.load()) run->restore(saved->state);
             const ToolControl control = interruptibleControl(progress);
             const bool finished = checkpoint.enabled()
                                       ? checkpoint.run([&](const ToolControl& c) { return run->advance(c); },
                                                        [&](Snapshot& state) { run->save(state); }, control)
                                       : run->advance(control);
-            if (finished) checkpoint.finish();
             ToolResult r = run->result();
             r.stopped = !finished;
             checkToolResult(tool, r);
-            if (out) {
-              const auto& t = r.table;
-              for (std::size_t c = 0; c < t.names.size(); ++c)
-                std::fprintf(out->get(), "%s%s", c ? "," : "", t.names[c].c_str());
-              std::fprintf(out->get(), "\n");
-              for (long k = 0; k < t.rows(); ++k)
-                for (std::size_t c = 0; c < t.names.size(); ++c)
-                  std::fprintf(out->get(), "%.17g%s", t.values[c][static_cast<std::size_t>(k)],
-                               c + 1 < t.names.size() ? "," : "\n");
+            if (vti) {
+              if (r.grid.dimensions == 0)
+                throw ComputationError(tool.id + ": its result is no grid for .vti");
+              writeGridVti(o->output, r);
+            } else if (out) {
+              writeTableCsv(out->get(), r.table);
               out->commit();
             }
+            if (finished) checkpoint.finish(); // after the output is written: a failed write can resume
             if (o->json)
               fmt::print("{}\n", toolResultJson(r).dump());
-            else if (!out) { // the declared outputs in their order, then any other field
+            else if (!out && !vti) { // the declared outputs in their order, then any other field
               std::vector<std::string> names;
               for (const auto& output : tool.outputs)
                 if (r.fields.contains(output.name)) names.push_back(output.name);

@@ -288,45 +288,6 @@ pyb::object bifurcationTree(Call& c) {
   return d;
 }
 
-pyb::object grid(Call& c, MapGrid::Kind kind) {
-  const auto s = sceneMap(c, false);
-  GridSettings g = gridSettings(s->scene().tool("grid"));
-  if (c.has("z_range")) {
-    const auto z = c.args["z_range"].cast<std::pair<double, double>>();
-    if (!(z.first <= z.second)) throw InputError("z_range: expected (min, max)");
-    g.axes[2].min = z.first, g.axes[2].max = z.second;
-    g.threeD = true;
-  }
-  for (int a = 0; a < 2; ++a)
-    if (!(g.axes[a].min <= g.axes[a].max))
-      throw InputError(fmt::format("grid.{0}_min, grid.{0}_max: need min <= max", a ? "y" : "x"));
-  const ReturnMap map = s->map();
-  MapGrid mg(map, kind, g, c.get<std::string>("level", ""));
-  runJob(c.progress, [&](const ToolControl& control) { mg.run(control); });
-  const GridValues& r = mg.result();
-  const int dims = g.threeD ? 3 : 2;
-  pyb::dict d;
-  const char* names[] = {"x", "y", "z"};
-  for (int a = 0; a < dims; ++a) {
-    std::vector<double> axis;
-    axis.reserve(r.size[a]);
-    for (int i = 0; i < r.size[a]; ++i)
-      axis.push_back(g.axes[a].at(i));
-    d[names[a]] = toArray(std::move(axis));
-  }
-  d["coordinates"] = std::vector<std::string>(map.coordinateNames().begin(),
-                                              map.coordinateNames().begin() +
-                                                  std::min<std::size_t>(dims, map.coordinateNames().size()));
-  // values[k][j][i] at (x_i, y_j, z_k): x fastest, as the grid stores them
-  std::vector<pyb::ssize_t> shape{r.size[1], r.size[0]};
-  if (dims == 3) shape.insert(shape.begin(), r.size[2]);
-  d[kind == MapGrid::Kind::Surface ? "distance" : "allowed"] = toArray(std::vector<double>(r.values), shape);
-  if (!r.level.empty()) d["level"] = toArray(std::vector<double>(r.level), shape);
-  if (!mg.levelName().empty()) d["level_name"] = mg.levelName();
-  d["complete"] = r.done == static_cast<long>(r.values.size());
-  return d;
-}
-
 pyb::object diagram(Call& c) {
   const std::vector<Diagram> diagrams = c.scene.model->diagrams();
   const Diagram& d =
@@ -387,14 +348,6 @@ const std::map<std::string, Runner>& runners() {
       {"separatrix",
        {{"branches"}, "branches: a list of 1..4 or \"all\" (default: separatrix.branch)", separatrix}},
       {"bifurcation_tree", {{}, "", bifurcationTree}},
-      {"surface",
-       {{"z_range"},
-        "z_range: (min, max) of the third coordinate: a 3D grid of a 3D map (ranges: grid.x_min ... y_max)",
-        [](Call& c) { return grid(c, MapGrid::Kind::Surface); }}},
-      {"ram",
-       {{"z_range", "level"},
-        "z_range as for surface; level: 2D maps: the observable giving the energy level's height",
-        [](Call& c) { return grid(c, MapGrid::Kind::AllowedRegion); }}},
       {"diagram",
        {{"diagram", "branch", "min", "max", "step"},
         "diagram: which (default: the problem's first); branch: one only; min, max, step: of the branch "
@@ -453,6 +406,23 @@ pyb::object registeredTool(const ToolEntry& tool, Call& c) {
     if (value.is_array() && !value.empty() &&
         std::all_of(value.begin(), value.end(), [](const auto& v) { return v.is_number(); }))
       d[name.c_str()] = toArray(value.get<std::vector<double>>());
+  if (r.grid.dimensions > 0) { // a grid: its axes (x, y, z) and each value column shaped (nz,) ny, nx
+    const ToolGrid& g = r.grid;
+    const char* axes[] = {"x", "y", "z"};
+    for (int a = 0; a < g.dimensions; ++a) {
+      std::vector<double> axis;
+      for (int i = 0; i < g.size[a]; ++i)
+        axis.push_back(g.origin[a] + i * g.spacing[a]);
+      d[axes[a]] = toArray(std::move(axis));
+    }
+    d["coordinates"] = std::vector<std::string>(r.table.names.begin(), r.table.names.begin() + g.dimensions);
+    std::vector<pyb::ssize_t> shape{g.size[1], g.size[0]};
+    if (g.dimensions == 3) shape.insert(shape.begin(), g.size[2]);
+    for (std::size_t k = g.coordinates; k < r.table.names.size(); ++k)
+      d[r.table.names[k].c_str()] = toArray(std::vector<double>(r.table.values[k]), shape);
+    d["complete"] = !r.stopped;
+    return d;
+  }
   // the table as one piece under the runner's name (a dict the package makes a Table), else column by column
   const std::string& name = findToolRunner(tool.id)->tableName;
   pyb::dict columns;
@@ -484,12 +454,31 @@ pyb::object runTool(const Scene& scene, const std::string& id, const pyb::object
   const Runner& runner = *found;
   Call call{scene, {}, progress};
   std::vector<SceneOverride> overrides;
+  const ToolRunner* toolRunner = findToolRunner(tool.id);
   for (const auto& [k, v] : kw) {
     const std::string key = pyb::str(k).cast<std::string>();
-    if (std::find(runner.args.begin(), runner.args.end(), key) != runner.args.end())
+    if (std::find(runner.args.begin(), runner.args.end(), key) != runner.args.end()) {
       call.args[key] = pyb::reinterpret_borrow<pyb::object>(v);
-    else
+    } else if (toolRunner && std::any_of(toolRunner->arguments.begin(), toolRunner->arguments.end(),
+                                         [&](const ToolArgument& a) { return a.name == key; })) {
+      // an argument standing for settings (x=(0, 1) is grid.x_min, x_max): its value as the CLI's text
+      std::string text;
+      if (pyb::isinstance<pyb::str>(v))
+        text = v.cast<std::string>();
+      else if (pyb::isinstance<pyb::sequence>(v))
+        for (pyb::handle item : v)
+          text += (text.empty() ? "" : ",") + pyb::str(item).cast<std::string>();
+      else
+        text = pyb::str(v).cast<std::string>();
+      try {
+        const auto settings = argumentSettings(*toolRunner, key, text);
+        overrides.insert(overrides.end(), settings.begin(), settings.end());
+      } catch (const InputError& e) {
+        throw InputError(key + "=" + pyb::repr(v).cast<std::string>() + ": " + e.what());
+      }
+    } else {
       overrides.push_back(placeKeyword(scene, tool, key, v));
+    }
   }
   call.scene = withOverrides(scene, overrides);
   return runner.run(call);
@@ -537,10 +526,17 @@ pyb::dict toolDict(const ToolEntry& e) {
   }
   d["keywords"] = keywords;
   const Runner* runner = runnerOf(e);
-  d["arguments"] = runner ? runner->args : std::vector<std::string>{};
-  d["arguments_help"] = runner ? runner->help : std::string();
-  d["origin"] = e.origin;
+  std::vector<std::string> arguments = runner ? runner->args : std::vector<std::string>{};
+  std::string help = runner ? runner->help : std::string();
   const ToolRunner* toolRunner = findToolRunner(e.id);
+  if (toolRunner)
+    for (const auto& a : toolRunner->arguments) {
+      arguments.push_back(a.name);
+      help += (help.empty() ? "" : "; ") + a.name + ": " + a.description;
+    }
+  d["arguments"] = arguments;
+  d["arguments_help"] = help;
+  d["origin"] = e.origin;
   d["runner"] = toolRunner != nullptr; // runs through scenes/ToolRunner.h (every front end derived)
   d["table"] = toolRunner ? toolRunner->tableName : std::string(); // the result's key of its table, if one
   return d;

@@ -46,7 +46,7 @@ MapGrid::MapGrid(const ReturnMap& map, Kind kind, GridSettings settings, std::st
           levelObservable = names[i];
     }
     levelIndex_ = m.findObservable(levelObservable);
-    if (levelIndex_ < 0) throw InputError("--level: unknown observable '" + levelObservable + "'");
+    if (levelIndex_ < 0) throw InputError("grid.level: unknown observable '" + levelObservable + "'");
     levelName_ = levelObservable;
     grid_.level.assign(total, std::numeric_limits<double>::quiet_NaN());
   }

@@ -355,6 +355,14 @@ const ParameterTable& gridTable() {
        .label = "Y max",
        .defaultValue = d.axes[1].max,
        .description = "grid range of a chart (second coordinate)"},
+      {.id = "z_min",
+       .label = "Z min",
+       .defaultValue = d.axes[2].min,
+       .description = "grid range of a 3D grid (third coordinate)"},
+      {.id = "z_max",
+       .label = "Z max",
+       .defaultValue = d.axes[2].max,
+       .description = "grid range of a 3D grid (third coordinate)"},
   };
   return t;
 }
@@ -421,6 +429,7 @@ GridSettings gridSettings(const ParameterValues& v) {
   g.zValue = v["z"];
   g.axes[0].min = v["x_min"], g.axes[0].max = v["x_max"];
   g.axes[1].min = v["y_min"], g.axes[1].max = v["y_max"];
+  g.axes[2].min = v["z_min"], g.axes[2].max = v["z_max"];
   return g;
 }
 

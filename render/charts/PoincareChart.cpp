@@ -242,7 +242,7 @@ void PoincareChart::addImage(int nx, int ny, double x0, double dx, double y0, do
                              const std::vector<double>& values, const Rgb& low, const Rgb& high) {
   vtkNew<vtkImageData> image;
   image->SetDimensions(nx, ny, 1);
-  image->SetOrigin(x0, y0, 0);
+  image->SetOrigin(x0 - dx / 2, y0 - dy / 2, 0); // the plot's cells start at their points
   image->SetSpacing(dx, dy, 1);
   vtkNew<vtkDoubleArray> scalars;
   scalars->SetNumberOfValues(static_cast<vtkIdType>(nx) * ny);

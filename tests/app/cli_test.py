@@ -3,6 +3,7 @@
 messages that name the culprit, and no file left behind on failure. Usage: cli_test.py ROLLVIZ ROLLVIZ_OSMESA SRC"""
 import csv
 import json
+import math
 import os
 import signal
 import time
@@ -730,6 +731,27 @@ class Cli(unittest.TestCase):
             if abs(rest) > 1e-9:
                 self.assertEqual(float(row["allowed"]), 1.0 if rest > 0 else 0.0, row)
         self.assertBadInput(run("surface", sm, "--x", "1,0", "--y", "0,1"), "--x")
+        self.assertBadInput(run("surface", sm, "--z", "1,2,3"), "--z")
+        self.assertBadInput(run("ram", sm, "--level", "nope"), "grid.level", "not an observable")
+        # the known answer (scenes/tools/surface.json): the Henon map's fixed point x = (-0.7 + sqrt(0.49 + 5.6))
+        # / 2.8, y = 0.3 x is where the search from fixedpoint.guess ends, and the node of least distance lies
+        # in its valley (within two cells: the valley is long and narrow, so not always the nearest node)
+        j = json.loads(run("surface", os.path.join(SRC, "scenes", "tools", "surface.json"), "--json").stdout)
+        x = (-0.7 + math.sqrt(0.49 + 5.6)) / 2.8
+        self.assertLessEqual(abs(j["least"]["at"][0] - x), 2 * 0.05)
+        self.assertLessEqual(abs(j["least"]["at"][1] - 0.3 * x), 2 * 0.02)
+        self.assertLess(j["least"]["distance"], 0.05)
+        self.assertEqual(j["nodes"], 21 * 21)
+        self.assertEqual(j["search"], "converged")
+        self.assertAlmostEqual(j["search_path"][-1][0], x, delta=1e-9)
+        self.assertAlmostEqual(j["search_path"][-1][1], 0.3 * x, delta=1e-9)
+        # the region of allowed motion's share of the rectangle: the area inside p^2/2 + y^2/2 - y^3/3 = 1/8
+        j = json.loads(run("ram", os.path.join(SRC, "scenes", "henon_heiles.json"), "--x", "-0.6,0.8", "--y",
+                           "-0.6,0.6", "--step", "0.01", "--json").stdout)
+        ys = [-0.6 + 0.0001 * k for k in range(14001)]
+        area = sum(2 * math.sqrt(max(0.0, 2 * (0.125 - y * y / 2 + y ** 3 / 3))) for y in ys) * 0.0001
+        self.assertAlmostEqual(j["allowed_fraction"], area / (1.4 * 1.2), delta=0.01)
+        self.assertEqual(j["level_name"], "px")
 
     def test_diagram(self):
         out = self.path("d.csv")

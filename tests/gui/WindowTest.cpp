@@ -1880,7 +1880,7 @@ private slots:
       QCoreApplication::sendPostedEvents(nullptr, QEvent::DeferredDelete);
       ++tried;
     }
-    QVERIFY(tried >= 4); // spectrum, lyapunov, megno, bifurcation_curve
+    QVERIFY(tried >= 6); // spectrum, lyapunov, megno, bifurcation_curve, surface, ram
   }
 
   // File > Open model...: a model file runs at its own "initial", joins the problem list, and saving it while

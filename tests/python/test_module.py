@@ -293,6 +293,12 @@ def test_every_tool_runs_from_python():
     assert sep.fixedpoint.type.startswith("hyperbolic") and sep.branches[1].points.shape[1] == 2
     g = hm.surface(step_x=0.5, step_y=0.5, x_min=-1, x_max=1, y_min=-1, y_max=1)
     assert g.distance.shape == (g.y.size, g.x.size) == (5, 5)
+    # the CLI's arguments as keywords (--x MIN,MAX is x=(MIN, MAX)): the same grid, the same numbers
+    h = hm.surface(x=(-1, 1), y=(-1, 1), step=0.5)
+    assert np.array_equal(h.distance, g.distance) and np.array_equal(h.x, np.linspace(-1, 1, 5))
+    assert h.nodes == 25 and h.coordinates == ["x", "y"]
+    with pytest.raises(ValueError, match="x=.*MIN <= MAX"):
+        hm.surface(x=(1, -1))
     cb = rollviz.Scene.load(scene_path("chaplygin_ball.json"))
     d = cb.diagram()
     assert d.branches and all(b.shape[1] == 3 for b in d.branches.values())
