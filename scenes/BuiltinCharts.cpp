@@ -1,5 +1,6 @@
 // BuiltinCharts.cpp -- how the results of rollviz's own runnable tools (scenes/BuiltinTools.cpp) are drawn,
 // bound to their runners once, before the first chart is drawn (SceneCharts.cpp).
+#include "dynamics/core/Diagram.h"
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/Format.h"
 #include "render/charts/ToolCharts.h"
@@ -116,6 +117,19 @@ std::unique_ptr<Chart> gridChart(const Scene& scene, const ToolResult& r) {
   return chart;
 }
 
+// the diagram's branches drawn from the model (the chart samples them finer than a table may), the scene's
+// point marked; named by its id when the scene picks one
+std::unique_ptr<Chart> diagramChart(const Scene& scene, const ToolResult& r) {
+  const auto diagrams = scene.model->diagrams();
+  const Diagram& d = findDiagram(diagrams, r.fields.at("diagram").get<std::string>(), "diagram.diagram",
+                                 scene.model->info().id);
+  auto chart = std::make_unique<PoincareChart>(d.axes[0], d.axes[1]);
+  drawDiagram(*chart, d, {r.fields.at("state").get<DiagramPoint>()});
+  const bool named = scene.document.contains("diagram") && scene.document["diagram"].contains("diagram");
+  chart->setTitle("Topological analysis" + (named ? " " + d.id : std::string()));
+  return chart;
+}
+
 } // namespace
 
 void registerBuiltinCharts() {
@@ -124,6 +138,7 @@ void registerBuiltinCharts() {
     registerBuiltinTools();
     addToolChart("bifurcation_curve", bifurcationCurveChart);
     addToolChart("spectrum", spectrumChart);
+    addToolChart("diagram", diagramChart);
     addToolChart("surface", gridChart);
     addToolChart("ram", gridChart);
     addToolChart("lyapunov", [](const Scene&, const ToolResult& r) {

@@ -4,6 +4,7 @@
 // link it); their charts are scenes/BuiltinCharts.cpp.
 #include "scenes/BuiltinTools.h"
 
+#include "dynamics/core/Diagram.h"
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/Format.h"
 #include "dynamics/tools/FourierSpectrum.h"
@@ -16,6 +17,7 @@
 #include "scenes/Sweep.h"
 #include "scenes/ToolRunner.h"
 
+#include <cmath>
 #include <mutex>
 
 namespace rv {
@@ -249,6 +251,60 @@ ToolResult runSpectrum(const Scene& scene, const ToolControl& control) {
   return out;
 }
 
+// The bifurcation diagram (manual §2.3.10): the model's branches sampled over their parameter, and the
+// scene's point on the diagram's plane (dynamics/core/Diagram.h). Its settings (scene section "diagram"):
+// which diagram, one branch, the parameter's range and step.
+ToolResult runDiagram(const Scene& scene, const ToolControl&) {
+  const nlohmann::json section = scene.document.value("diagram", nlohmann::json::object());
+  const auto diagrams = scene.model->diagrams();
+  const Diagram& d = findDiagram(diagrams, section.value("diagram", std::string()), "diagram.diagram",
+                                 scene.model->info().id);
+  const std::string only = section.value("branch", std::string());
+  const DiagramPoint state = d.place(scene.initialState.data());
+  ToolResult r;
+  r.table.names = {"parameter", d.axes[0], d.axes[1]};
+  r.table.values.resize(3);
+  r.text = {{"branch", {}, 0}};
+  nlohmann::json branches = nlohmann::json::array(), all = nlohmann::json::array();
+  bool found = only.empty();
+  for (const auto& b : d.branches) {
+    branches.push_back({{"id", b.id},
+                        {"description", b.description},
+                        {"parameter", b.parameter},
+                        {"min", b.min},
+                        {"max", b.max},
+                        {"step", b.step}});
+    if (!only.empty() && b.id != only) continue;
+    found = true;
+    const double lo = section.value("min", b.min), hi = section.value("max", b.max),
+                 step = section.value("step", b.step);
+    if (!(step > 0) || !(hi >= lo))
+      throw InputError("diagram.min, max, step: need min <= max and step > 0 (branch " + b.id + ")");
+    const long n = static_cast<long>(std::floor((hi - lo) / step * (1 + 1e-12)));
+    if (n > 10'000'000) throw InputError("diagram.step: more than 1e7 points");
+    for (long k = 0; k <= n; ++k) {
+      const double s = lo + static_cast<double>(k) * step;
+      for (const DiagramPoint& p : b.points(s)) {
+        r.table.addRow({s, p[0], p[1]});
+        r.text[0].values.push_back(b.id);
+      }
+    }
+  }
+  if (!found) {
+    std::string known;
+    for (const auto& b : d.branches)
+      known += " " + b.id;
+    throw InputError("diagram.branch " + only + ": no such branch of " + d.id + " (branches:" + known + ")");
+  }
+  r.table.addRow({0, state[0], state[1]}); // the scene's point, last
+  r.text[0].values.emplace_back("state");
+  for (const auto& x : diagrams)
+    all.push_back(x.id);
+  r.fields = {{"diagram", d.id}, {"title", d.title},     {"axes", d.axes},
+              {"diagrams", all}, {"branches", branches}, {"state", state}};
+  return r;
+}
+
 } // namespace
 
 namespace {
@@ -298,6 +354,7 @@ void registerBuiltinTools() {
   std::call_once(once, [] {
     addToolRunner("bifurcation_curve", {runBifurcationCurve});
     addToolRunner("spectrum", {runSpectrum});
+    addToolRunner("diagram", {runDiagram});
     registerGridTools();
     addToolRunner("lyapunov", {.start = [](const Scene& s) { return std::make_unique<LyapunovToolRun>(s); },
                                .tableName = "history"});

@@ -42,7 +42,6 @@ struct MapProgress final : ChartProgress {
 // is matched; the menu order is the table's.
 struct ChartRequest {
   long points;
-  std::string diagram;
   std::unique_ptr<ChartProgress>* progress; ///< where a resumable view keeps its computation, or nullptr
 };
 
@@ -112,15 +111,6 @@ std::unique_ptr<Chart> multipliersChart(const Scene& scene, const ChartRequest&,
   return chart;
 }
 
-std::unique_ptr<Chart> bifurcationChart(const Scene& scene, const ChartRequest& r, const ToolControl&) {
-  const auto diagrams = scene.model->diagrams();
-  const Diagram& d = findDiagram(diagrams, r.diagram, r.diagram.empty() ? "--view bifurcation" : "--diagram",
-                                 scene.model->info().id);
-  auto chart = std::make_unique<PoincareChart>(d.axes[0], d.axes[1]);
-  drawDiagram(*chart, d, {d.place(scene.initialState.data())});
-  return chart;
-}
-
 std::unique_ptr<Chart> continuationChart(const Scene& scene, const ChartRequest&,
                                          const ToolControl& control) {
   const SceneMap sm{Scene(scene)};
@@ -173,7 +163,6 @@ const std::vector<std::pair<std::string, ChartBuilder>>& chartBuilders() {
                                                                    {"map3d", map3dChart},
                                                                    {"plot", plotChart},
                                                                    {"multipliers", multipliersChart},
-                                                                   {"bifurcation", bifurcationChart},
                                                                    {"continuation", continuationChart}};
   return b;
 }
@@ -195,11 +184,15 @@ const std::vector<std::string>& chartViews() {
 std::unique_ptr<Chart> sceneChart(const Scene& scene, const std::string& view, const ToolControl& control,
                                   long points, const std::string& diagram,
                                   std::unique_ptr<ChartProgress>* progress) {
+  if (!diagram.empty()) // the scene's diagram.diagram, for this chart
+    return sceneChart(
+        sceneFromJson(scene.document, scene.source, {{"diagram.diagram", nlohmann::json(diagram).dump()}}),
+        view, control, points, "", progress);
   for (const auto& [name, build] : chartBuilders())
     if (name == view) {
-      auto chart = build(scene, {points, diagram, progress}, control);
+      auto chart = build(scene, {points, progress}, control);
       if (auto* plane = dynamic_cast<PoincareChart*>(chart.get())) // every chart says what it is
-        plane->setTitle(chartTitle(view) + (diagram.empty() ? "" : " " + diagram));
+        plane->setTitle(chartTitle(view));
       return chart;
     }
   if (const ToolEntry* tool = runnableToolOfView(view)) {

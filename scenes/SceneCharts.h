@@ -30,10 +30,10 @@ public:
 };
 
 /// Computes what `view` shows for the scene and draws it. `points` > 0 overrides poincare.points; `diagram`
-/// picks the bifurcation view's diagram (empty: the problem's first). Throws InputError for an unknown view
-/// or one the problem does not have; Stopped results are drawn as far as they got. With `progress`, a
-/// resumable view keeps its computation there and, called again with the same scene after a stop, goes on
-/// from it (the caller drops it when the scene changes).
+/// is the scene's diagram.diagram for this chart: the bifurcation view's diagram (empty: the scene's). Throws
+/// InputError for an unknown view or one the problem does not have; Stopped results are drawn as far as they
+/// got. With `progress`, a resumable view keeps its computation there and, called again with the same scene
+/// after a stop, goes on from it (the caller drops it when the scene changes).
 std::unique_ptr<Chart> sceneChart(const Scene& scene, const std::string& view, const ToolControl& control,
                                   long points = 0, const std::string& diagram = "",
                                   std::unique_ptr<ChartProgress>* progress = nullptr);

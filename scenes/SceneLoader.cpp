@@ -247,6 +247,27 @@ const TextKey textKeys[] = {
        if (scene.model->findObservable(id) < 0) w.fail("not an observable of " + scene.model->info().id);
      },
      "2D maps, region of allowed motion: the observable giving the energy level's height above the region"},
+    {"diagram", "diagram", "",
+     // read where it is used (scenes/BuiltinTools.cpp), from the document; checked here
+     [](const json& j, const Where& w, Scene& scene) {
+       const std::string id = text(j, w);
+       std::string known;
+       for (const auto& d : scene.model->diagrams()) {
+         if (d.id == id) return;
+         known += " " + d.id;
+       }
+       w.fail("unknown diagram of " + scene.model->info().id +
+              (known.empty() ? " (it has no bifurcation diagrams)" : " (known:" + known + ")"));
+     },
+     "which of the problem's diagrams (default: its first)", "text", true},
+    {"branch", "diagram", "", [](const json& j, const Where& w, Scene&) { (void)text(j, w); },
+     "one branch only (default: every branch)", "text", true},
+    {"min", "diagram", "", [](const json& j, const Where& w, Scene&) { (void)number(j, w); },
+     "the least value of the branch parameter (default: the branch's)", "number", true},
+    {"max", "diagram", "", [](const json& j, const Where& w, Scene&) { (void)number(j, w); },
+     "the largest value of the branch parameter (default: the branch's)", "number", true},
+    {"step", "diagram", "", [](const json& j, const Where& w, Scene&) { (void)number(j, w); },
+     "the step of the branch parameter (default: the branch's)", "number", true},
     {"function", "spectrum", "",
      [](const json& j, const Where& w, Scene& scene) { scene.spectrum.function = text(j, w); },
      "the observable whose spectrum is taken", "text", true},

@@ -111,7 +111,8 @@ void checkToolResult(const ToolEntry& tool, const ToolResult& r) {
   if (!r.stopped)
     for (const auto& o : tool.outputs)
       if (o.name.rfind('<', 0) != 0 && !r.fields.contains(o.name) &&
-          std::find(r.table.names.begin(), r.table.names.end(), o.name) == r.table.names.end())
+          std::find(r.table.names.begin(), r.table.names.end(), o.name) == r.table.names.end() &&
+          std::none_of(r.text.begin(), r.text.end(), [&](const TextColumn& t) { return t.name == o.name; }))
         throw ComputationError(fmt::format("tool '{}' did not produce its output '{}'", tool.id, o.name));
 }
 

@@ -31,12 +31,22 @@ struct ToolGrid {
   std::array<double, 3> origin{0, 0, 0}, spacing{1, 1, 1};
 };
 
+/// A column of text among a result's numbers (a branch's id, a fixed point's type): the CSV writes it in its
+/// place, Python gives a list of str.
+struct TextColumn {
+  std::string name;
+  std::vector<std::string> values; ///< one per row of the table
+  std::size_t at = 0;              ///< its place: before the table's column `at` (names.size(): the last)
+};
+
 /// What one run of a tool produced.
 struct ToolResult {
   /// The named outputs (numbers, strings, arrays): `--json`, the Python result's keys, sweep quantities.
   nlohmann::json fields = nlohmann::json::object();
   /// The rows it computed (the CSV of `-o`, the Python result's arrays); may have no columns.
   NamedColumns table;
+  /// Its columns of text, beside the table's numbers.
+  std::vector<TextColumn> text = {};
   /// Stopped on request: the fields and rows hold what was computed until then.
   bool stopped = false;
   /// Where the rows are the nodes of a grid: its shape.

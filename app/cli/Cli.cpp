@@ -61,7 +61,6 @@ const std::map<std::string, ToolCommandBuilder>& toolCommandBuilders() {
       {"continue", addContinueCommand},
       {"separatrix", addSeparatrixCommand},
       {"bifurcation-tree", addBifurcationTreeCommand},
-      {"diagram", addDiagramCommand},
       {"sweep", addSweepCommand}};
   return builders;
 }

@@ -61,7 +61,6 @@ Command addFixedPointCommand(CLI::App* cmd);
 Command addContinueCommand(CLI::App* cmd);
 Command addSeparatrixCommand(CLI::App* cmd);
 Command addBifurcationTreeCommand(CLI::App* cmd);
-Command addDiagramCommand(CLI::App* cmd);
 Command addSweepCommand(CLI::App* cmd);
 /// The subcommand of a tool that runs through scenes/ToolRunner.h (a module's tool): SCENE, --set, a flag
 /// per setting of its section (--KEY), --json (its fields), -o (its table as CSV).

@@ -117,14 +117,36 @@ void writeGridVti(const std::string& path, const ToolResult& r) {
   writeImageVti(path, image);
 }
 
-void writeTableCsv(FILE* f, const NamedColumns& t) {
-  for (std::size_t c = 0; c < t.names.size(); ++c)
-    std::fprintf(f, "%s%s", c ? "," : "", t.names[c].c_str());
+// the table's numbers round-trip exact, its text columns in their places
+void writeTableCsv(FILE* f, const ToolResult& r) {
+  const NamedColumns& t = r.table;
+  // the columns in order: a text column's index is -1 - its place in r.text
+  std::vector<long> order;
+  for (std::size_t c = 0; c <= t.names.size(); ++c) {
+    for (std::size_t x = 0; x < r.text.size(); ++x)
+      if (std::min(r.text[x].at, t.names.size()) == c) order.push_back(-1 - static_cast<long>(x));
+    if (c < t.names.size()) order.push_back(static_cast<long>(c));
+  }
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    const long c = order[i];
+    std::fprintf(
+        f, "%s%s", i ? "," : "",
+        (c < 0 ? r.text[static_cast<std::size_t>(-1 - c)].name : t.names[static_cast<std::size_t>(c)])
+            .c_str());
+  }
   std::fprintf(f, "\n");
-  for (long k = 0; k < t.rows(); ++k)
-    for (std::size_t c = 0; c < t.names.size(); ++c)
-      std::fprintf(f, "%.17g%s", t.values[c][static_cast<std::size_t>(k)],
-                   c + 1 < t.names.size() ? "," : "\n");
+  for (long k = 0; k < t.rows(); ++k) {
+    const auto row = static_cast<std::size_t>(k);
+    for (std::size_t i = 0; i < order.size(); ++i) {
+      const long c = order[i];
+      if (c < 0)
+        std::fprintf(f, "%s%s", i ? "," : "",
+                     r.text[static_cast<std::size_t>(-1 - c)].values.at(row).c_str());
+      else
+        std::fprintf(f, "%s%.17g", i ? "," : "", t.values[static_cast<std::size_t>(c)][row]);
+    }
+    std::fprintf(f, "\n");
+  }
 }
 
 } // namespace
@@ -154,7 +176,9 @@ Command addRegisteredToolCommand(CLI::App* cmd, const ToolEntry& tool) {
     for (const auto& t : sectionTextKeys(section->key))
       if (!isArgument(t.key))
         cmd->add_option("--" + t.key, o->settings[t.key],
-                        t.description + " (default: the scene's " + tool.section + "." + t.key + ")");
+                        t.description + (t.description.find("(default:") != std::string::npos
+                                             ? " (scene key " + tool.section + "." + t.key + ")"
+                                             : " (default: the scene's " + tool.section + "." + t.key + ")"));
   }
   for (const auto& a : runner.arguments)
     cmd->add_option("--" + a.name, o->arguments[a.name], a.description)->type_name(a.valueName);
@@ -212,7 +236,7 @@ Command addRegisteredToolCommand(CLI::App* cmd, const ToolEntry& tool) {
                 throw ComputationError(tool.id + ": its result is no grid for .vti");
               writeGridVti(o->output, r);
             } else if (out) {
-              writeTableCsv(out->get(), r.table);
+              writeTableCsv(out->get(), r);
               out->commit();
             }
             if (finished) checkpoint.finish(); // after the output is written: a failed write can resume

@@ -191,6 +191,7 @@ void ControlPanel::setScene(const Scene& scene) {
   tabs_->addTab(toolsTab_, "Tools");
   observables_.clear();
   for (const auto& t : toolSections()) {
+    if (t.table->size() == 0) continue; // text keys only (the diagram's): the tool's chart window picks them
     QComboBox* chooser = nullptr;
     // the observable a section names (the Poincare section, the spectrum's function): a flow's observables
     if (!t.observableKey.empty() && !scene.model->isMap()) {

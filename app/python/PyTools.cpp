@@ -288,40 +288,6 @@ pyb::object bifurcationTree(Call& c) {
   return d;
 }
 
-pyb::object diagram(Call& c) {
-  const std::vector<Diagram> diagrams = c.scene.model->diagrams();
-  const Diagram& d =
-      findDiagram(diagrams, c.get<std::string>("diagram", ""), "diagram", c.scene.model->info().id);
-  const std::string only = c.get<std::string>("branch", "");
-  pyb::dict branches;
-  bool found = only.empty();
-  for (const auto& x : d.branches) {
-    if (!only.empty() && x.id != only) continue;
-    found = true;
-    const double lo = c.get<double>("min", x.min), hi = c.get<double>("max", x.max),
-                 step = c.get<double>("step", x.step);
-    if (!(step > 0) || !(hi >= lo)) throw InputError("min/max/step: need min <= max and step > 0");
-    const long n = static_cast<long>(std::floor((hi - lo) / step * (1 + 1e-12)));
-    if (n > 10'000'000) throw InputError("step: more than 1e7 points");
-    std::vector<double> rows;
-    for (long k = 0; k <= n; ++k) {
-      const double s = lo + k * step;
-      for (const DiagramPoint& p : x.points(s))
-        rows.push_back(s), rows.push_back(p[0]), rows.push_back(p[1]);
-    }
-    branches[x.id.c_str()] = table(std::move(rows), 3);
-  }
-  if (!found) throw InputError("branch " + only + ": no such branch of " + d.id);
-  const DiagramPoint state = d.place(c.scene.initialState.data());
-  pyb::dict out;
-  out["diagram"] = d.id;
-  out["title"] = d.title;
-  out["axes"] = std::vector<std::string>{d.axes[0], d.axes[1]};
-  out["branches"] = branches;
-  out["state"] = std::vector<double>{state[0], state[1]};
-  return out;
-}
-
 pyb::object plot(Call& c) {
   std::vector<std::vector<double>> points;
   runJob(c.progress, [&](const ToolControl& control) {
@@ -348,11 +314,6 @@ const std::map<std::string, Runner>& runners() {
       {"separatrix",
        {{"branches"}, "branches: a list of 1..4 or \"all\" (default: separatrix.branch)", separatrix}},
       {"bifurcation_tree", {{}, "", bifurcationTree}},
-      {"diagram",
-       {{"diagram", "branch", "min", "max", "step"},
-        "diagram: which (default: the problem's first); branch: one only; min, max, step: of the branch "
-        "parameter",
-        diagram}},
   };
   return r;
 }
@@ -430,6 +391,8 @@ pyb::object registeredTool(const ToolEntry& tool, Call& c) {
   for (std::size_t k = 0; k < r.table.names.size(); ++k)
     if (!into.contains(r.table.names[k].c_str()))
       into[r.table.names[k].c_str()] = toArray(std::vector<double>(r.table.values[k]));
+  for (const auto& t : r.text) // a column of text: a list of str
+    into[t.name.c_str()] = t.values;
   if (!name.empty()) d[name.c_str()] = columns;
   return d;
 }

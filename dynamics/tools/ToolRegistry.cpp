@@ -22,6 +22,7 @@ std::vector<ToolSection>& sections() {
       {"bifurcation_tree", "Bifurcating tree", &bifurcationTreeTable()},
       {"bifurcation_curve", "Bifurcation curve", &bifurcationCurveTable()},
       {"grid", "Surface |Map(x) - x| and region of allowed motion", &gridTable()},
+      {"diagram", "Topological analysis", &diagramTable()},
       {"lyapunov", "Lyapunov exponents", &lyapunovTable()},
       {"megno", "MEGNO and FLI", &megnoTable()},
       {"plot", "2D / 3D plot", &plotTable()},
@@ -278,14 +279,22 @@ ToolRegistry& ToolRegistry::mutableGlobal() {
     add({.id = "diagram",
          .title = "Topological analysis",
          .description = "the bifurcation diagram on the plane of first integrals",
+         .section = "diagram",
          .command = "diagram",
          .commandHelp = "a bifurcation diagram on the plane of first integrals, with the scene's point",
          .chartView = "bifurcation",
-         .outputs = {{"branch, parameter", "the curve and its parameter"},
-                     {"<the diagram's axes>", "the point"}},
+         .outputs = {{"branch", "CSV: the branch's id (the last row, \"state\", is the scene's point)"},
+                     {"parameter", "CSV: the branch's parameter"},
+                     {"<the diagram's axes>", "CSV: the point on the diagram's plane"},
+                     {"diagram", "the diagram's id"},
+                     {"title", "what the diagram shows"},
+                     {"axes", "the names of its two axes (first integrals)"},
+                     {"diagrams", "the ids of every diagram of the problem"},
+                     {"branches", "each branch: id, description, parameter and its default min, max, step"},
+                     {"state", "the scene's point on the diagram"}},
          .reference = "manual §2.3.10",
-         .computation =
-             "dynamics/core/Diagram.h (each model's diagrams(), e.g. dynamics/models/ChaplyginDiagram.h)"});
+         .computation = "dynamics/core/Diagram.h (each model's diagrams(), e.g. "
+                        "dynamics/models/ChaplyginDiagram.h); runner scenes/BuiltinTools.cpp"});
     add({.id = "sweep",
          .title = "Chart of regimes (sweep)",
          .description =

@@ -367,6 +367,11 @@ const ParameterTable& gridTable() {
   return t;
 }
 
+const ParameterTable& diagramTable() {
+  static const ParameterTable t;
+  return t;
+}
+
 FixedPointSettings fixedPointSettings(const ParameterValues& v) {
   FixedPointSettings s;
   s.method = v.choice("method") == "newton" ? FixedPointMethod::Newton : FixedPointMethod::Gradient;

@@ -19,6 +19,9 @@ const ParameterTable& bifurcationTreeTable();
 /// "second_parameter", the first continuation.parameter).
 const ParameterTable& bifurcationCurveTable();
 const ParameterTable& gridTable();
+/// The bifurcation diagram's section has no numbers of its own: its keys (which diagram, branch, range) are
+/// text keys (scenes/SceneLoader.cpp).
+const ParameterTable& diagramTable();
 /// A sweep file's "options" (scenes/Sweep.h): time, statistic, orbit points, the order search... (one
 /// declaration, shown by `rollviz describe-tool sweep`).
 const ParameterTable& sweepOptionsTable();

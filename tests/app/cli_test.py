@@ -764,14 +764,22 @@ class Cli(unittest.TestCase):
         j = json.loads(run("diagram", SCENE, "--json").stdout)
         self.assertEqual(j["axes"], ["n", "h"])
         self.assertBadInput(run("diagram", os.path.join(SRC, "scenes", "lorenz.json")), "no bifurcation diagrams")
-        self.assertBadInput(run("diagram", SCENE, "--diagram", "xy"), "--diagram", "nh")
+        self.assertBadInput(run("diagram", SCENE, "--diagram", "xy"), "diagram.diagram", "nh")
+        self.assertBadInput(run("diagram", SCENE, "--branch", "xy"), "diagram.branch", "tau")
+        self.assertBadInput(run("diagram", SCENE, "--min", "1", "--max", "0"), "diagram.min")
+        # one branch over a range of its own: the rows are that branch's, at its parameter's steps
+        r = run("diagram", SCENE, "--branch", "tau", "--min", "0.5", "--max", "0.6", "--step", "0.05", "-o", out)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        rows = list(csv.DictReader(open(out)))
+        self.assertEqual({row["branch"] for row in rows}, {"tau", "state"})
+        self.assertTrue(all(float(row["parameter"]) in (0.5, 0.55, 0.6) for row in rows if row["branch"] == "tau"))
         # the chart of another of the problem's diagrams; an unknown one names the flag and the known ones
         png = self.path("ch.png")
         r = run("chart", SCENE, "--view", "bifurcation", "--diagram", "ch", "-o", png, "--size", "300x300")
         self.assertEqual(r.returncode, 0, r.stderr)
         self.assertTrue(os.path.getsize(png) > 1000)
         self.assertBadInput(run("chart", SCENE, "--view", "bifurcation", "--diagram", "xy", "-o", png),
-                            "--diagram", "ch")
+                            "diagram.diagram", "ch")
 
     def test_every_scene_has_a_poincare_map(self):
         # a section the motion never crosses would make `poincare` run forever: every shipped scene must return

@@ -301,7 +301,13 @@ def test_every_tool_runs_from_python():
         hm.surface(x=(1, -1))
     cb = rollviz.Scene.load(scene_path("chaplygin_ball.json"))
     d = cb.diagram()
-    assert d.branches and all(b.shape[1] == 3 for b in d.branches.values())
+    # rows of (branch, parameter, the two axes), the scene's point last; the branches described
+    assert len(d.branch) == d.parameter.size == d[d.axes[0]].size == d[d.axes[1]].size
+    assert d.branch[-1] == "state" and list(d[d.axes[0]][-1:]) == [d.state[0]]
+    assert d.branch[:-1] and set(d.branch[:-1]) <= {b["id"] for b in d.branches}  # some may have no points
+    one = cb.diagram(branch="tau", min=0.5, max=0.6, step=0.05)
+    assert one.branch == ["tau", "tau", "tau", "state"] and np.allclose(one.parameter[:3], [0.5, 0.55, 0.6])
+    assert cb.diagram(diagram="ch").axes == [d.diagrams[1][0], "h"] == ["c", "h"]
     assert cb.ram(step_x=0.5, step_y=0.5).allowed.ndim == 2
     # the standard map's fixed point (pi, 0) doubles its period at K = 4 (trace of the Jacobian 2 - K = -2)
     sm = rollviz.Scene.load(scene_path("standard_map.json"), K=3.5)
