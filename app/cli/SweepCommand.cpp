@@ -23,6 +23,7 @@
 #include <fstream>
 #include <functional>
 #include <memory>
+#include <mutex>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
@@ -150,8 +151,6 @@ int runSweep(const SweepOptions& o) {
     try {
       spec = loadSweepWindow(o.sweep, o.window);
       if (o.lanes >= 0) spec = sweepWithOptions(*spec, {{"lanes", o.lanes}}, "--lanes");
-      if (spec->refine > 0 && remote > 0)
-        throw InputError(o.sweep + ":options.refine: a refined sweep runs on threads, not yet on MPI ranks");
       checkWritable(o.output, "-o");
       if (!o.png.empty()) {
         checkWritable(o.png, "--png");
@@ -172,7 +171,8 @@ int runSweep(const SweepOptions& o) {
   if (resolved.empty()) return 2;
   if (!writer) {
     const SweepSpec s = sweepFromJson(nlohmann::json::parse(resolved), o.sweep);
-    workSweep(mpi, static_cast<int>(s.columns.size()), [&s](long i) { return evaluateSweepPoint(s, i, {}); });
+    workSweep(mpi, sweepBatch(s),
+              [&s](const std::vector<long>& indices) { return evaluateSweepPoints(s, indices, {}); });
     return 0;
   }
 
@@ -222,19 +222,46 @@ int runSweep(const SweepOptions& o) {
   double bytesPerPoint = 0;
   bool complete = false;
   if (remote > 0) {
-    ChunkScheduler scheduler(store, threads + remote, static_cast<long>(spec->options->get("chunk")));
-    // this rank computes on its threads while its main thread serves the others
+    // this rank computes on its threads while its main thread serves the others, level after level of a
+    // refined sweep: a level's scheduler hands out to both, and the next level begins once every record of
+    // this one is in (the other ranks are told "later" meanwhile)
     ToolControl local;
     local.stopRequested = [] { return interrupted(); };
+    std::mutex levelMutex;
+    ChunkScheduler* level = nullptr; // the level being handed out
+    bool levelsDone = false;
     std::exception_ptr failure;
     std::thread computing([&] {
       try {
-        runSweepThreads(store, scheduler, evaluateBatch, batch, threads, local);
+        complete = runSweepLevels(*spec, store, threads + remote, [&](ChunkScheduler& scheduler) {
+          {
+            const std::lock_guard lock(levelMutex);
+            level = &scheduler;
+          }
+          bool finished = runSweepThreads(store, scheduler, evaluateBatch, batch, threads, local);
+          while (finished && !scheduler.finished()) { // the other ranks' last chunks of the level
+            if (interrupted()) finished = false;
+            std::this_thread::sleep_for(std::chrono::milliseconds(2));
+          }
+          const std::lock_guard lock(levelMutex);
+          level = nullptr;
+          return finished;
+        });
       } catch (...) {
         failure = std::current_exception();
       }
+      const std::lock_guard lock(levelMutex);
+      levelsDone = true;
     });
-    const SweepTraffic traffic = serveSweep(mpi, store, scheduler, [&] {
+    const auto next = [&]() -> ChunkOffer {
+      const std::lock_guard lock(levelMutex);
+      if (level) {
+        if (const auto chunk = level->next()) return {ChunkOffer::Kind::Chunk, chunk->first, chunk->second};
+        return {ChunkOffer::Kind::Later};
+      }
+      return levelsDone ? ChunkOffer{ChunkOffer::Kind::End} : ChunkOffer{ChunkOffer::Kind::Later};
+    };
+    const SweepTraffic traffic = serveSweep(mpi, store, next, [&] {
       report();
       return interrupted();
     });
@@ -243,7 +270,6 @@ int runSweep(const SweepOptions& o) {
         traffic.records > 0 ? static_cast<double>(traffic.bytes) / static_cast<double>(traffic.records) : 0;
     computing.join();
     if (failure) std::rethrow_exception(failure);
-    complete = store.doneCount() == spec->points();
   } else {
     complete = runSweepLevels(*spec, store, threads, [&](ChunkScheduler& scheduler) {
       return runSweepThreads(store, scheduler, evaluateBatch, batch, threads, control);

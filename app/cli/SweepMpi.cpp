@@ -26,8 +26,10 @@ bool launchedByMpirun() {
 #ifdef ROLLVIZ_HAVE_MPI
 // A worker asks for its next chunk while it computes the current one (double buffering: rank 0's answer is
 // never waited for), so it always holds at most two chunks. Every request carries the records of the chunk
-// finished before it and gets a chunk back, empty when there is no more work; after the empty one the worker
-// sends the records of its last chunk and ends.
+// finished before it and is answered at once: a chunk, "later" (begin -1: a refined sweep's level waits for
+// its last records -- which may be the ones this worker holds, so it sends them and asks again), or an empty
+// chunk when there is no more work; after the empty one the worker sends the records of its last chunk and
+// ends.
 constexpr int kRequestTag = 1; // worker -> rank 0: records, and a request for a chunk
 constexpr int kChunkTag = 2;   // rank 0 -> worker: [begin, end), empty when there is no more work
 constexpr int kLastTag = 3;    // worker -> rank 0: the records of its last chunk; it ends
@@ -69,7 +71,7 @@ std::string MpiSession::broadcast(const std::string& text) const {
 #endif
 }
 
-SweepTraffic serveSweep(const MpiSession& mpi, SweepStore& store, ChunkScheduler& scheduler,
+SweepTraffic serveSweep(const MpiSession& mpi, SweepStore& store, const std::function<ChunkOffer()>& next,
                         const std::function<bool()>& poll) {
 #ifdef ROLLVIZ_HAVE_MPI
   const auto world = mpi.world();
@@ -88,10 +90,7 @@ SweepTraffic serveSweep(const MpiSession& mpi, SweepStore& store, ChunkScheduler
       // sleep (up to 2 ms when nothing comes) costs them nothing
       std::this_thread::sleep_for(idle);
       idle = std::min(2 * idle, std::chrono::microseconds(2000));
-      if (!stopping && poll()) {
-        stopping = true;
-        scheduler.stop();
-      }
+      if (!stopping && poll()) stopping = true;
       continue;
     }
     idle = std::chrono::microseconds(100);
@@ -109,20 +108,25 @@ SweepTraffic serveSweep(const MpiSession& mpi, SweepStore& store, ChunkScheduler
       --working;
       continue;
     }
+    if (!stopping && poll()) stopping = true;
     std::int64_t chunk[2] = {0, 0};
-    if (const auto next = scheduler.next()) chunk[0] = next->first, chunk[1] = next->second;
+    const ChunkOffer offer = stopping ? ChunkOffer{} : next();
+    if (offer.kind == ChunkOffer::Kind::Chunk) chunk[0] = offer.begin, chunk[1] = offer.end;
+    if (offer.kind == ChunkOffer::Kind::Later) chunk[0] = -1, chunk[1] = 0;
     MPI_Send(chunk, 2, MPI_INT64_T, status.MPI_SOURCE, kChunkTag, MPI_COMM_WORLD);
   }
   return traffic;
 #else
-  (void)mpi, (void)store, (void)scheduler, (void)poll;
+  (void)mpi, (void)store, (void)next, (void)poll;
   return {};
 #endif
 }
 
-void workSweep(const MpiSession& mpi, int columns, const std::function<SweepRecord(long)>& evaluate) {
+void workSweep(const MpiSession& mpi, int batch,
+               const std::function<std::vector<SweepRecord>(const std::vector<long>&)>& evaluate) {
 #ifdef ROLLVIZ_HAVE_MPI
-  (void)mpi, (void)columns; // the session only has to be alive; records carry their own column count
+  (void)mpi; // the session only has to be alive; records carry their own column count
+  batch = std::max(1, batch);
   std::vector<char> results, sending; // sending: the records on their way while the next are computed
   std::int64_t chunk[2];
   MPI_Send(results.data(), 0, MPI_CHAR, 0, kRequestTag, MPI_COMM_WORLD);
@@ -134,14 +138,22 @@ void workSweep(const MpiSession& mpi, int columns, const std::function<SweepReco
     MPI_Isend(sending.data(), static_cast<int>(sending.size()), MPI_CHAR, 0, kRequestTag, MPI_COMM_WORLD,
               &request);
     results.clear();
-    for (std::int64_t i = chunk[0]; i < chunk[1]; ++i)
-      packRecord(results, static_cast<long>(i), evaluate(static_cast<long>(i)));
+    if (chunk[0] < 0) // later: the level's last points are being computed elsewhere
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    for (std::int64_t i = chunk[0]; i >= 0 && i < chunk[1]; i += batch) {
+      std::vector<long> indices;
+      for (std::int64_t k = i; k < std::min<std::int64_t>(chunk[1], i + batch); ++k)
+        indices.push_back(static_cast<long>(k));
+      const auto records = evaluate(indices);
+      for (std::size_t k = 0; k < indices.size(); ++k)
+        packRecord(results, indices[k], records.at(k));
+    }
     MPI_Recv(chunk, 2, MPI_INT64_T, 0, kChunkTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
     MPI_Wait(&request, MPI_STATUS_IGNORE); // answered, so received: done at once
   }
   MPI_Send(results.data(), static_cast<int>(results.size()), MPI_CHAR, 0, kLastTag, MPI_COMM_WORLD);
 #else
-  (void)mpi, (void)columns, (void)evaluate;
+  (void)mpi, (void)batch, (void)evaluate;
 #endif
 }
 

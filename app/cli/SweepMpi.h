@@ -40,14 +40,26 @@ struct SweepTraffic {
   long bytes = 0;   ///< bytes of records received
 };
 
-/// Rank 0: answers the other ranks' requests for chunks from `scheduler` and writes the records they send
-/// into `store` until every rank has been told there is no more work. `poll` runs between messages (progress,
+/// What rank 0 answers a rank that asks for work.
+struct ChunkOffer {
+  enum class Kind {
+    Chunk, ///< points [begin, end)
+    Later, ///< none yet: a level of a refined sweep waits for its last points (the next level follows from
+           ///< them)
+    End    ///< no more work
+  } kind = Kind::End;
+  long begin = 0, end = 0;
+};
+
+/// Rank 0: answers the other ranks' requests for chunks with `next` and writes the records they send into
+/// `store` until every rank has been told there is no more work. `poll` runs between messages (progress,
 /// Ctrl-C: it returns true to stop handing out work).
-SweepTraffic serveSweep(const MpiSession& mpi, SweepStore& store, ChunkScheduler& scheduler,
+SweepTraffic serveSweep(const MpiSession& mpi, SweepStore& store, const std::function<ChunkOffer()>& next,
                         const std::function<bool()>& poll);
 
-/// Ranks 1..N-1: asks rank 0 for chunks, computes each point with `evaluate` and sends the records back,
-/// until rank 0 has no more work.
-void workSweep(const MpiSession& mpi, int columns, const std::function<SweepRecord(long)>& evaluate);
+/// Ranks 1..N-1: asks rank 0 for chunks, computes their points `batch` consecutive ones at a time with
+/// `evaluate` (a record per index: SIMD lanes) and sends the records back, until rank 0 has no more work.
+void workSweep(const MpiSession& mpi, int batch,
+               const std::function<std::vector<SweepRecord>(const std::vector<long>&)>& evaluate);
 
 } // namespace rv

@@ -197,6 +197,13 @@ void ChunkScheduler::stop() {
   stopped_ = true;
 }
 
+bool ChunkScheduler::finished() const {
+  const std::lock_guard lock(mutex_);
+  for (long i = 0; i < store_.points(); ++i)
+    if (handsOut(i)) return false;
+  return true;
+}
+
 bool runSweepThreads(SweepStore& store, ChunkScheduler& scheduler,
                      const std::function<SweepRecord(long, const ToolControl&)>& evaluate, int threads,
                      const ToolControl& control) {

@@ -83,6 +83,9 @@ public:
   std::optional<std::pair<long, long>> next();
   /// Hands out nothing more.
   void stop();
+  /// Whether every point it hands out (the level's) has a record -- those computed elsewhere (other ranks)
+  /// included.
+  bool finished() const;
 
 private:
   bool handsOut(long index) const {
@@ -90,7 +93,7 @@ private:
   }
   const SweepStore& store_;
   std::vector<char> wanted_;
-  std::mutex mutex_;
+  mutable std::mutex mutex_;
   long cursor_ = 0, left_;
   int workers_;
   long maxChunk_;

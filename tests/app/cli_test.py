@@ -1147,6 +1147,17 @@ class Cli(unittest.TestCase):
         r = run("sweep", rf, "-o", vti)
         self.assertEqual(r.returncode, 0, r.stderr)
         self.assertIn('WholeExtent="0 32 0 32 0 0"', open(vti, errors="replace").read())
+        # on MPI ranks, level after level (the others wait for each level's last records): the same file
+        env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+                   OMPI_MCA_rmaps_base_oversubscribe="1")
+        env.pop("DISPLAY", None)
+        for ranks in ("2", "3"):
+            out = self.path("refined_mpi%s.csv" % ranks)
+            r = subprocess.run(["mpirun", "-n", ranks, RV, "sweep", rf, "-o", out], capture_output=True,
+                               text=True, env=env, timeout=300)
+            self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+            self.assertIn("more rank", r.stderr)
+            self.assertEqual(self.sweep_values(out), rows, "mpirun -n %s differs" % ranks)
 
     def test_sweep_points_on_lanes_equal_one_at_a_time(self):
         # MEGNO over Henon-Heiles initial points with rk4: several points at once (the default) and --lanes 1
