@@ -86,6 +86,30 @@ TEST(SweepStore, EveryPointIsHandedOutOnceAndResumedPointsNever) {
   store.remove();
 }
 
+// a level of a refined sweep is finished once each of its points has a record, whoever wrote it (another
+// rank's records arrive through the store): handing out its last chunk is not finishing it
+TEST(SweepStore, ALevelIsFinishedWhenEachOfItsPointsHasARecord) {
+  const std::string path = tempPath("level");
+  std::filesystem::remove(path);
+  SweepStore store(path, "level", 10, 1, "-o");
+  std::vector<char> wanted(10, 0);
+  wanted[2] = wanted[3] = wanted[7] = 1;
+  store.write(3, {{1.0}, 0, true, ""}); // resumed
+  ChunkScheduler scheduler(store, 2, 0, wanted);
+  EXPECT_FALSE(scheduler.finished());
+  std::vector<long> handed;
+  while (const auto c = scheduler.next())
+    for (long i = c->first; i < c->second; ++i)
+      handed.push_back(i);
+  EXPECT_EQ(handed, (std::vector<long>{2, 7}));
+  EXPECT_FALSE(scheduler.finished()); // handed out, not recorded
+  store.write(2, {{1.0}, 0, true, ""});
+  EXPECT_FALSE(scheduler.finished());
+  store.write(7, {{std::nan("")}, 0, false, "failed"}); // a failed point has its record too
+  EXPECT_TRUE(scheduler.finished());
+  store.remove();
+}
+
 std::vector<SweepRecord> runWith(int threads, const std::string& name) {
   const std::string path = tempPath(name);
   std::filesystem::remove(path);
