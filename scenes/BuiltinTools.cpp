@@ -310,10 +310,11 @@ ToolResult runDiagram(const Scene& scene, const ToolControl&) {
 namespace {
 // The megno tool's batch evaluation (a LanesEvaluator, scenes/Sweep.h): its output `name` at several points
 // at once (dynamics/tools/MegnoLanes.h): the points go together when they differ only in their initial state,
-// on a flow whose model has a lane kernel, integrated with rk4 -- where each lane is the scalar run bit for
-// bit, so a point's value cannot depend on the points beside it, and a sweep stays the same file on any
-// threads, ranks and resumption. (Everhart's corrector stops when every lane has converged, adams starts
-// adaptively: on lanes a point would take its neighbours' iterations.)
+// on a flow whose model has a lane kernel, integrated by a method that steps stacked orbits as alone
+// (IntegratorEntry::independentOrbits: rk4) -- where each lane is the scalar run bit for bit, so a point's
+// value cannot depend on the points beside it, and a sweep stays the same file on any threads, ranks and
+// resumption. (Everhart's corrector stops when every lane has converged, adams starts adaptively: on lanes a
+// point would take its neighbours' iterations.)
 std::optional<std::vector<LaneValues>>
 megnoOnLanesOf(const std::string& name, const std::vector<Scene>& scenes, const ToolControl& control) {
   // the megno tool's outputs, as its result names them
@@ -327,7 +328,7 @@ megnoOnLanesOf(const std::string& name, const std::vector<Scene>& scenes, const 
   if (!pick(MegnoEstimate{})) return std::nullopt; // an output this batch does not know: one at a time
   if (!megnoRunsOnLanes(*first.model)) return std::nullopt;
   const RunSpec run = first.runSpec();
-  if (run.integrator->id != "rk4") return std::nullopt;
+  if (!run.integrator->independentOrbits) return std::nullopt;
   nlohmann::json common = first.document;
   common.erase("initial");
   std::vector<Eigen::VectorXd> starts;

@@ -733,7 +733,8 @@ bool runSweepLevels(const SweepSpec& spec, SweepStore& store, int workers,
   const long chunk = static_cast<long>(spec.options->get("chunk"));
   for (int level = 0; level <= spec.refine; ++level) {
     ChunkScheduler scheduler(store, workers, chunk,
-                             spec.refine > 0 ? sweepLevelPoints(spec, store, level) : std::vector<char>{});
+                             spec.refine > 0 ? sweepLevelPoints(spec, store, level) : std::vector<char>{},
+                             sweepBatch(spec));
     if (!runLevel(scheduler)) return false;
   }
   return true;

@@ -9,6 +9,8 @@
 // -- so a lane's result equals the scalar one bit for bit. Functions with no vector form (sqrt, sin, ...)
 // are applied lane by lane with the C library's, as the scalar path calls them.
 #pragma once
+#include "dynamics/core/HeldScalar.h"
+
 #include <Eigen/Core>
 #include <cmath>
 #include <string>
@@ -171,25 +173,6 @@ inline std::string laneDescription() {
                        : "two SSE2 pairs of doubles (no AVX2 here)");
 }
 
-} // namespace rv
-
-namespace rv {
-/// What Eigen needs to hold the scalar S in its fixed-size vectors (no arithmetic of its own on them).
-template <class S, int Cost> struct HeldScalarTraits : Eigen::GenericNumTraits<double> {
-  using Real = S;
-  using NonInteger = S;
-  using Nested = S;
-  using Literal = S;
-  enum {
-    IsComplex = 0,
-    IsInteger = 0,
-    IsSigned = 1,
-    RequireInitialization = 1,
-    ReadCost = 1,
-    AddCost = Cost,
-    MulCost = Cost
-  };
-};
 } // namespace rv
 
 namespace Eigen {

@@ -19,6 +19,8 @@
 // coefficients in both orders so that each series product is a dot product of two contiguous arrays.
 #pragma once
 
+#include "dynamics/core/HeldScalar.h"
+
 #include <Eigen/Core>
 #include <cmath>
 #include <cstdint>
@@ -263,21 +265,7 @@ inline double valueOf(const taylor::Var& v) {
 } // namespace rv
 
 namespace Eigen {
-template <> struct NumTraits<rv::taylor::Var> : NumTraits<double> {
-  using Real = rv::taylor::Var;
-  using NonInteger = rv::taylor::Var;
-  using Nested = rv::taylor::Var;
-  using Literal = rv::taylor::Var;
-  enum {
-    IsComplex = 0,
-    IsInteger = 0,
-    IsSigned = 1,
-    RequireInitialization = 1,
-    ReadCost = 1,
-    AddCost = 3,
-    MulCost = 3
-  };
-};
+template <> struct NumTraits<rv::taylor::Var> : rv::HeldScalarTraits<rv::taylor::Var, 3> {};
 template <typename BinaryOp> struct ScalarBinaryOpTraits<rv::taylor::Var, double, BinaryOp> {
   using ReturnType = rv::taylor::Var;
 };

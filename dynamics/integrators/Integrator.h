@@ -90,6 +90,11 @@ struct IntegratorEntry {
   std::function<std::unique_ptr<Integrator>(const ParameterValues&)> create;
   /// Where it comes from: "" for rollviz's own, else the module file that registered it.
   std::string origin = {};
+  /// Orbits integrated together as one system (stacked on SIMD lanes, dynamics/tools/MegnoLanes.h) are each
+  /// stepped as alone, bit for bit: its steps depend on the step size alone, never on the state (a fixed
+  /// step, no error control, no iteration to convergence, no adaptive start). Not the same as
+  /// Integrator::fixedStep(): Everhart's fixed step iterates its corrector until the whole state converges.
+  bool independentOrbits = false;
 };
 
 /// All integration methods by name.

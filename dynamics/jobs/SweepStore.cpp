@@ -164,9 +164,10 @@ void SweepStore::remove() {
   std::remove(path_.c_str());
 }
 
-ChunkScheduler::ChunkScheduler(const SweepStore& store, int workers, long maxChunk, std::vector<char> wanted)
+ChunkScheduler::ChunkScheduler(const SweepStore& store, int workers, long maxChunk, std::vector<char> wanted,
+                               int granularity)
     : store_(store), wanted_(std::move(wanted)), left_(0), workers_(std::max(1, workers)),
-      maxChunk_(maxChunk > 0 ? maxChunk : 256) {
+      maxChunk_(maxChunk > 0 ? maxChunk : 256), granularity_(std::max(1, granularity)) {
   if (!wanted_.empty() && wanted_.size() != static_cast<std::size_t>(store.points()))
     throw std::logic_error("ChunkScheduler: one wanted flag per point");
   for (long i = 0; i < store.points(); ++i)
@@ -180,7 +181,10 @@ std::optional<std::pair<long, long>> ChunkScheduler::next() {
     ++cursor_;
   if (cursor_ >= store_.points()) return std::nullopt;
   // a quarter of each worker's share of what is left: big chunks first, single points at the end
-  const long want = std::clamp(left_ / (4L * workers_), 1L, maxChunk_);
+  long want = std::clamp(left_ / (4L * workers_), 1L, maxChunk_);
+  // whole batches: rounded up to the granularity, down again where that passes maxChunk
+  want = (want + granularity_ - 1) / granularity_ * granularity_;
+  if (want > maxChunk_ && maxChunk_ >= granularity_) want = maxChunk_ / granularity_ * granularity_;
   const long begin = cursor_;
   long end = begin, taken = 0;
   while (end < store_.points() && taken < want && handsOut(end)) { // a chunk stops at a point not handed out

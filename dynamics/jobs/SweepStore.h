@@ -77,8 +77,11 @@ private:
 class ChunkScheduler {
 public:
   /// `workers`: how many ask at once; `maxChunk` bounds a chunk (0: automatic). `wanted` (one flag per point;
-  /// empty: all) limits it to some points: a level of a refined sweep.
-  ChunkScheduler(const SweepStore& store, int workers, long maxChunk = 0, std::vector<char> wanted = {});
+  /// empty: all) limits it to some points: a level of a refined sweep. `granularity`: chunks are whole
+  /// multiples of it where the points allow (the batch of points computed at once on SIMD lanes: the last
+  /// chunks are whole batches, not single points left to the slower one-at-a-time path).
+  ChunkScheduler(const SweepStore& store, int workers, long maxChunk = 0, std::vector<char> wanted = {},
+                 int granularity = 1);
   /// The next chunk to compute, or nothing when every point is handed out (or after stop()).
   std::optional<std::pair<long, long>> next();
   /// Hands out nothing more.
@@ -97,6 +100,7 @@ private:
   long cursor_ = 0, left_;
   int workers_;
   long maxChunk_;
+  long granularity_;
   bool stopped_ = false;
 };
 

@@ -64,7 +64,7 @@ void SweepLanes(benchmark::State& state) {
   for (auto _ : state) {
     std::filesystem::remove(storePath());
     SweepStore store(storePath(), "bench", spec.points(), static_cast<int>(spec.columns.size()), "bench");
-    ChunkScheduler scheduler(store, 1);
+    ChunkScheduler scheduler(store, 1, 0, {}, sweepBatch(spec)); // as runSweepLevels: whole batches
     runSweepThreads(store, scheduler,
                     [&](const std::vector<long>& indices, const ToolControl& c) {
                       return evaluateSweepPoints(spec, indices, c);

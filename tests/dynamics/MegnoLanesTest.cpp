@@ -1,4 +1,5 @@
-// MEGNO on lanes (dynamics/tools/MegnoLanes.h): the lane kernel equals the scalar tangent right-hand side bit
+// MEGNO on lanes (dynamics/tools/MegnoLanes.h): a method declaring independent orbits steps orbits together
+// as alone; the lane kernel equals the scalar tangent right-hand side bit
 // for bit; four Henon-Heiles orbits at once with rk4 are the four scalar runs bit for bit; with Everhart
 // (whose corrector stops when every lane has converged) they agree to its accuracy on tori; orbits that blow
 // up (Henon-Heiles above the escape energy 1/6) fail in the batch as they fail alone, and the others keep
@@ -7,6 +8,7 @@
 #include "dynamics/core/LaneField.h"
 #include "dynamics/integrators/Everhart.h"
 #include "dynamics/integrators/Rk4.h"
+#include "tests/dynamics/TestModels.h"
 #include "tests/dynamics/TestSupport.h"
 
 #include <gtest/gtest.h>
@@ -14,6 +16,66 @@
 
 namespace rv {
 namespace {
+
+// K coupled oscillators side by side in one state (x of the first, then of the second, ...): what a batch on
+// lanes integrates
+ModelInfo stackInfo(int k) {
+  ModelInfo info{.id = "oscillator stack", .coreDimension = 3 * k};
+  for (int i = 0; i < 3 * k; ++i)
+    info.stateNames.push_back("x" + std::to_string(i));
+  return info;
+}
+struct OscillatorStack final : Model {
+  explicit OscillatorStack(const ModelInfo& info) : Model(info, ParameterValues(info.parameters)) {}
+  void rhs(const double* x, double* dx) const override {
+    for (int i = 0; i < dimension(); i += 3)
+      one.rhs(x + i, dx + i);
+  }
+  void jacobian(const double*, double*) const override {
+    ADD_FAILURE() << "the methods stepped need no Jacobian";
+  }
+  test::CoupledOscillator one;
+};
+
+// IntegratorEntry::independentOrbits is what lets a sweep put orbits on lanes and still write each orbit's
+// own numbers: a method that declares it gives each of K orbits integrated together the steps and the state
+// of the orbit integrated alone, bit for bit (orbits far apart: a method whose steps read the state would
+// step them differently). K = 2 and 6: a small system and one large enough for rk4's AVX2 path (18
+// components: four registers and two left over) against the alone runs' fixed-size path.
+TEST(Lanes, AMethodOfIndependentOrbitsStepsOrbitsTogetherAsEachAlone) {
+  int declaring = 0;
+  for (const auto& entry : IntegratorRegistry::global().entries()) {
+    if (!entry.independentOrbits) continue;
+    ++declaring;
+    const ParameterValues values(*entry.parameters);
+    for (int k : {2, 6}) {
+      SCOPED_TRACE(entry.id + ", " + std::to_string(k) + " orbits");
+      const ModelInfo info = stackInfo(k);
+      const OscillatorStack stack(info);
+      Eigen::VectorXd all(3 * k);
+      std::vector<std::unique_ptr<Integrator>> alone;
+      for (int i = 0; i < k; ++i) {
+        Eigen::VectorXd x(3);
+        x << 1 + 13.0 * i, -3.0 * i, 0.5 * i * i;
+        all.segment(3 * i, 3) = x;
+        alone.push_back(entry.create(values));
+        alone.back()->start(stack.one, 0, x);
+      }
+      auto together = entry.create(values);
+      together->start(stack, 0, all);
+      for (int step = 0; step < 200; ++step) {
+        together->step();
+        for (auto& a : alone) {
+          a->step();
+          ASSERT_EQ(together->time(), a->time());
+        }
+      }
+      for (int i = 0; i < k; ++i)
+        EXPECT_EQ(together->state().segment(3 * i, 3), alone[static_cast<std::size_t>(i)]->state()) << i;
+    }
+  }
+  EXPECT_GE(declaring, 1); // rk4
+}
 
 // a Henon-Heiles state at energy e from (y, py) on x = 0 with px > 0
 Eigen::VectorXd hhState(double e, double y, double py) {

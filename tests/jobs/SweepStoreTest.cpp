@@ -86,6 +86,27 @@ TEST(SweepStore, EveryPointIsHandedOutOnceAndResumedPointsNever) {
   store.remove();
 }
 
+// with a granularity (the points computed at once on SIMD lanes) every chunk is whole batches -- the last
+// ones too, where a plain schedule ends with single points -- and still every point is handed out once
+TEST(SweepStore, ChunksAreWholeBatchesToTheEnd) {
+  const std::string path = tempPath("batches");
+  std::filesystem::remove(path);
+  SweepStore store(path, "batches", 1000, 1, "-o");
+  for (const int workers : {1, 3}) {
+    ChunkScheduler scheduler(store, workers, 30, {}, 4);
+    std::vector<int> handed(1000, 0);
+    while (const auto c = scheduler.next()) {
+      EXPECT_EQ((c->second - c->first) % 4, 0) << c->first << ".." << c->second;
+      EXPECT_LE(c->second - c->first, 28); // within maxChunk 30, in whole batches
+      for (long i = c->first; i < c->second; ++i)
+        ++handed[static_cast<std::size_t>(i)];
+    }
+    for (int h : handed)
+      EXPECT_EQ(h, 1);
+  }
+  store.remove();
+}
+
 // a level of a refined sweep is finished once each of its points has a record, whoever wrote it (another
 // rank's records arrive through the store): handing out its last chunk is not finishing it
 TEST(SweepStore, ALevelIsFinishedWhenEachOfItsPointsHasARecord) {
