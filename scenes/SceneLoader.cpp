@@ -7,6 +7,7 @@
 
 #include "dynamics/core/Errors.h"
 #include "dynamics/tools/ToolSettings.h"
+#include "render/video/VideoSettings.h"
 
 #include <algorithm>
 #include <array>
@@ -408,7 +409,15 @@ const std::set<std::string>& sceneKeys() {
   return keys;
 }
 
+namespace {
+// the render layer's settings section (the video encoder's, render/video/VideoSettings.h) joins the tools'
+// when this library loads, before any thread reads the sections; sceneFromJson makes sure of it again
+const bool videoSectionRegistered = (registerVideoSection(), true);
+} // namespace
+
 Scene sceneFromJson(json doc, const std::string& source, const std::vector<SceneOverride>& overrides) {
+  registerVideoSection();
+  (void)videoSectionRegistered;
   const Where root{source, ""};
   requireObject(doc, root);
   applyOverrides(doc, overrides, source);

@@ -1,5 +1,4 @@
 #include "dynamics/tools/ToolRegistry.h"
-#include "dynamics/tools/VideoSettings.h"
 
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/ModelRegistry.h"
@@ -26,7 +25,6 @@ std::vector<ToolSection>& sections() {
       {"lyapunov", "Lyapunov exponents", &lyapunovTable()},
       {"megno", "MEGNO and FLI", &megnoTable()},
       {"plot", "2D / 3D plot", &plotTable()},
-      {"video", "Video", &videoTable()},
   };
   return s;
 }

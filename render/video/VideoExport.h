@@ -40,7 +40,7 @@ struct VideoOverrides {
   std::string sizeName, durationName, fpsName;
 };
 
-/// The scene's "video" section (dynamics/tools/VideoSettings.h videoTable) as a spec, with `speed` (the
+/// The scene's "video" section (render/video/VideoSettings.h videoTable) as a spec, with `speed` (the
 /// view's) and the overrides given. InputError when the result is odd-sized, not of positive length or its
 /// rate is outside [1, 240], naming the override -- or the section's key -- that made it so.
 VideoSpec videoSpec(const ParameterValues& video, double speed, const VideoOverrides& given = {});

@@ -1,4 +1,8 @@
-#include "dynamics/tools/VideoSettings.h"
+#include "render/video/VideoSettings.h"
+
+#include "dynamics/tools/ToolRegistry.h"
+
+#include <mutex>
 
 namespace rv {
 
@@ -54,6 +58,11 @@ const ParameterTable& videoTable() {
                    "veryslow"}},
   };
   return t;
+}
+
+void registerVideoSection() {
+  static std::once_flag once;
+  std::call_once(once, [] { addToolSection({"video", "Video", &videoTable()}); });
 }
 
 } // namespace rv
