@@ -61,7 +61,8 @@ struct ToolArgument {
   std::string valueName;   ///< what the value looks like in --help, e.g. "MIN,MAX"
   std::string description; ///< one line
   /// The scene settings the value (as text: "0,1"; a Python sequence is joined by commas) stands for;
-  /// InputError naming the argument for a value it cannot take.
+  /// InputError saying what is wrong with a value it cannot take (each front end puts the argument's name
+  /// in its own spelling before it: "--x 1,0: ...", "x=(1, 0): ...").
   std::function<std::vector<SceneOverride>(const std::string& value)> toSettings;
 };
 
