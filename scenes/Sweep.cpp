@@ -430,6 +430,12 @@ SweepSpec sweepFromJson(json doc, const std::string& source) {
   // refinement: the axes become the finest grid, of which the file's grid is level 0
   spec.refine = static_cast<int>(options->get("refine"));
   spec.refineThreshold = options->get("refine_threshold");
+  if (options->choice("refine_by") == "value") {
+    if (spec.quantity->categorical)
+      (root / "options" / "refine_by")
+          .fail("a categorical quantity is refined wherever it changes: refine_by value needs a number");
+    spec.refineAt = options->get("refine_at");
+  }
   if (spec.refine > 0) {
     if (spec.quantity->cloud)
       (root / "options" / "refine")
@@ -695,6 +701,7 @@ std::vector<char> sweepLevelPoints(const SweepSpec& spec, const SweepStore& stor
     if (!a.ok) return false;
     const double x = a.values.empty() ? kNaN : a.values[0], y = b.values.empty() ? kNaN : b.values[0];
     if (std::isnan(x) || std::isnan(y)) return std::isnan(x) != std::isnan(y);
+    if (!std::isnan(spec.refineAt)) return (x < spec.refineAt) != (y < spec.refineAt); // across the value
     return spec.quantity->categorical ? x != y : std::abs(x - y) > tolerance;
   };
   std::vector<long> origin(spec.axes.size(), 0), last(spec.axes.size()), cellLast(spec.axes.size());

@@ -12,6 +12,7 @@
 
 #include <exception>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -90,6 +91,9 @@ struct SweepSpec {
   /// which the sweep computes the file's grid and then, level after level, the cells where the regimes meet.
   int refine = 0;
   double refineThreshold = 0; ///< options.refine_threshold
+  /// options.refine_by value: cells are halved where corners lie on different sides of refineAt (NaN: by
+  /// refineThreshold).
+  double refineAt = std::numeric_limits<double>::quiet_NaN();
   int lanes = 0; ///< options.lanes: 0 points on SIMD lanes where the quantity can, 1 one at a time
   long points() const;
   /// The grid indices of a point (the first axis fastest) and its axis values.

@@ -529,6 +529,22 @@ const ParameterTable& sweepOptionsTable() {
            "refine: a cell is halved when two corners differ by more than this fraction of the "
            "quantity's range on the grid (any change of a categorical quantity, or a failed corner "
            "beside a computed one)"},
+      {.id = "refine_by",
+       .label = "Refine where",
+       .defaultValue = 0,
+       .min = 0,
+       .max = 1,
+       .description =
+           "refine: change -- corners differ by more than refine_threshold; value -- corners lie on "
+           "different sides of refine_at (regimes told apart by a value, as MEGNO's <Y> = 2 on tori "
+           "against its growth in chaos: the chaotic sea, whose values differ from point to point, is "
+           "not refined as a boundary); a failed corner beside a computed one either way",
+       .integer = true,
+       .choices = {"change", "value"}},
+      {.id = "refine_at",
+       .label = "Refine across",
+       .defaultValue = 0,
+       .description = "refine_by value: the value of the quantity that separates the regimes"},
   };
   return t;
 }

@@ -4,7 +4,9 @@ computed refined, L levels from a coarse grid, beside the full grid at the fines
 points each computes, their CPU cost (the sum of the points' own seconds, --timing), and how many points of the
 finest grid the refined chart puts in the same regime as the full one (torus: <Y> < threshold; chaos; outside the
 energy surface). A figure, not a test: nothing here passes or fails.
-Usage: sweep_refine.py ROLLVIZ [--count N] [--levels L] [--time T] [--threads K] [--threshold X]"""
+Usage: sweep_refine.py ROLLVIZ [--count N] [--levels L] [--time T] [--threads K] [--threshold X | --at Y]
+(--at: options.refine_by value, refine_at Y -- cells are halved where the regimes meet, <Y> on either side of Y,
+not where chaotic neighbours merely differ)"""
 import argparse
 import csv
 import json
@@ -44,6 +46,7 @@ def main():
     p.add_argument("--time", type=float, default=100, help="megno.time")
     p.add_argument("--threads", type=int, default=2)
     p.add_argument("--threshold", type=float, default=0.05, help="options.refine_threshold")
+    p.add_argument("--at", type=float, help="refine by value: options.refine_by value, refine_at AT")
     p.add_argument("--torus", type=float, default=2.5, help="<Y> below this: a torus")
     a = p.parse_args()
     with open(os.path.join(SOURCE, "scenes", "sweeps", "henon_heiles_megno.json")) as f:
@@ -56,6 +59,8 @@ def main():
         for axis in refined["axes"]:
             axis["count"] = a.count
         refined["options"] = {"refine": a.levels, "refine_threshold": a.threshold}
+        if a.at is not None:
+            refined["options"] = {"refine": a.levels, "refine_by": "value", "refine_at": a.at}
         full = json.loads(json.dumps(doc))
         for axis in full["axes"]:
             axis["count"] = fine_count
@@ -71,7 +76,8 @@ def main():
     full_values = [float(r["megno"]) for r in f_rows]
     same = sum(regime(x, a.torus) == regime(y, a.torus) for x, y in zip(full_values, painted))
     print(f"Henon-Heiles MEGNO, megno.time = {a.time:g}, coarse {a.count}x{a.count}, {a.levels} levels "
-          f"(threshold {a.threshold:g}) -> finest {fine_count}x{fine_count}")
+          f"({f'refine_at {a.at:g}' if a.at is not None else f'threshold {a.threshold:g}'}) -> finest "
+          f"{fine_count}x{fine_count}")
     print(f"full grid:    {len(f_rows)} points, {cost(f_rows):.1f} s of CPU")
     print(f"refined:      {len(r_rows)} points ({100 * len(r_rows) / len(f_rows):.1f} %), {cost(r_rows):.1f} s "
           f"of CPU ({100 * cost(r_rows) / cost(f_rows):.1f} % of the full grid's)")

@@ -352,6 +352,52 @@ TEST(Sweep, RefinementComputesTheBoundaryAtTheFineResolutionAndEachPointAsADirec
   resumed.remove();
 }
 
+// options.refine_by value: only the cells whose corners lie on different sides of refine_at are halved. One
+// iteration of the Henon map from (x0, 0) gives x1 = 1 - 1.4 x0^2, which falls through 0.5 once on [0, 1], at
+// x0 = sqrt(0.5 / 1.4): refinement follows that one crossing down to the finest level, where "change" refines
+// wherever neighbours differ by more than the threshold (the steep half of the line).
+TEST(Sweep, RefiningByAValueFollowsOnlyWhereTheQuantityCrossesIt) {
+  const auto file = [](const json& options) {
+    json o{{"refine", 3}, {"time", 1}};
+    o.update(options);
+    return sweepFromJson(sweep("henon_map", json::array({axis("map.0", 0, 1, 5)}), "observable.x",
+                               {{"initial.map", json::array({0.1, 0.0})}}, o),
+                         "sw.json");
+  };
+  const double crossing = std::sqrt(0.5 / 1.4);
+  const std::string dir = ::testing::TempDir();
+  const SweepSpec byValue = file({{"refine_by", "value"}, {"refine_at", 0.5}});
+  SweepStore store(dir + "/by_value.store", byValue.resolved.dump(), byValue.points(),
+                   static_cast<int>(byValue.columns.size()), "test");
+  ASSERT_TRUE(runRefined(byValue, store));
+  std::vector<double> computed;
+  for (long i = 0; i < byValue.points(); ++i)
+    if (store.done(i)) {
+      computed.push_back(byValue.axisValues(i)[0]);
+      EXPECT_NEAR(store.read(i).values.at(0), 1 - 1.4 * computed.back() * computed.back(), 1e-15);
+    }
+  // the coarse grid (0, 0.25, ..., 1), then one new point per level, each in the cell around the crossing
+  EXPECT_EQ(computed.size(), 5U + 3U);
+  double below = 0, above = 1;
+  for (double x : computed)
+    (x < crossing ? below : above) = x < crossing ? std::max(below, x) : std::min(above, x);
+  EXPECT_NEAR(above - below, 0.25 / 8, 1e-12) << "the crossing is bracketed at the finest spacing";
+  store.remove();
+  // by change, the line is refined wherever it is steep, far from the crossing too
+  const SweepSpec byChange = file(json::object());
+  SweepStore all(dir + "/by_change.store", byChange.resolved.dump(), byChange.points(),
+                 static_cast<int>(byChange.columns.size()), "test");
+  ASSERT_TRUE(runRefined(byChange, all));
+  EXPECT_GT(all.doneCount(), 2 * static_cast<long>(computed.size()));
+  EXPECT_TRUE(all.done(byChange.points() - 2)) << "x0 = 1 - 1/32, where x1 falls fastest";
+  all.remove();
+  // a categorical quantity has no value to refine across
+  EXPECT_NE(errorOf(sweep("henon_map", json::array({axis("map.0", 0, 1, 5)}), "fixedpoint.type",
+                          json::object(), {{"refine", 1}, {"refine_by", "value"}}))
+                .find("options.refine_by"),
+            std::string::npos);
+}
+
 // MEGNO over Henon-Heiles initial points: four points at once on SIMD lanes (options.lanes 0) against one at
 // a time (lanes 1) -- with rk4 the same records bit for bit, points outside the energy surface failing alike
 TEST(Sweep, PointsOnLanesAreThePointsOneAtATime) {
