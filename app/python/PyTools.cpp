@@ -371,9 +371,9 @@ pyb::object registeredTool(const ToolEntry& tool, Call& c) {
     const ToolGrid& g = r.grid;
     const char* axes[] = {"x", "y", "z"};
     for (int a = 0; a < g.dimensions; ++a) {
-      std::vector<double> axis;
+      std::vector<double> axis(static_cast<std::size_t>(g.size[a]));
       for (int i = 0; i < g.size[a]; ++i)
-        axis.push_back(g.origin[a] + i * g.spacing[a]);
+        axis[static_cast<std::size_t>(i)] = g.origin[a] + i * g.spacing[a];
       d[axes[a]] = toArray(std::move(axis));
     }
     d["coordinates"] = std::vector<std::string>(r.table.names.begin(), r.table.names.begin() + g.dimensions);
