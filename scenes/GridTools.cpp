@@ -11,36 +11,16 @@
 #include "dynamics/tools/ToolSettings.h"
 #include "scenes/BuiltinTools.h"
 #include "scenes/FixedPointJson.h"
+#include "scenes/JsonFields.h"
 #include "scenes/SceneTools.h"
 #include "scenes/ToolRunner.h"
 
 #include <cmath>
 #include <limits>
-#include <sstream>
 
 namespace rv {
 
 namespace {
-
-std::vector<double> numbersIn(const std::string& text) {
-  std::vector<double> v;
-  std::stringstream in(text);
-  for (std::string part; std::getline(in, part, ',');) {
-    std::size_t used = 0;
-    double x = NAN;
-    try {
-      x = std::stod(part, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    while (used < part.size() && std::isspace(static_cast<unsigned char>(part[used])))
-      ++used;
-    if (used == 0 || used != part.size() || !std::isfinite(x))
-      throw InputError("'" + part + "' is not a finite number");
-    v.push_back(x);
-  }
-  return v;
-}
 
 std::string number(double x) {
   return format("%.17g", x);
@@ -51,7 +31,7 @@ ToolArgument rangeArgument(const std::string& name, const std::string& which) {
   return {name, "MIN,MAX",
           "the grid's range of the " + which + " map coordinate (grid." + name + "_min, " + name + "_max)",
           [name](const std::string& value) {
-            const auto r = numbersIn(value);
+            const auto r = commaNumbers(value);
             if (r.size() != 2 || !(r[0] <= r[1])) throw InputError("expected MIN,MAX with MIN <= MAX");
             return std::vector<SceneOverride>{{"grid." + name + "_min", number(r[0])},
                                               {"grid." + name + "_max", number(r[1])}};
@@ -66,7 +46,7 @@ std::vector<ToolArgument> gridArguments(bool ram) {
        "3D maps: the plane z = Z of a 2D grid (grid.z), or MIN,MAX: a 3D grid in space (grid.section 3D, "
        "z_min, z_max)",
        [](const std::string& value) {
-         const auto r = numbersIn(value);
+         const auto r = commaNumbers(value);
          if (r.size() == 1)
            return std::vector<SceneOverride>{{"grid.section", "\"2D\""}, {"grid.z", number(r[0])}};
          if (r.size() != 2 || !(r[0] <= r[1])) throw InputError("expected Z or MIN,MAX with MIN <= MAX");
@@ -75,7 +55,7 @@ std::vector<ToolArgument> gridArguments(bool ram) {
        }},
       {"step", "S", "the grid's step along every axis (grid.step_x, step_y, step_z)",
        [](const std::string& value) {
-         const auto r = numbersIn(value);
+         const auto r = commaNumbers(value);
          if (r.size() != 1 || !(r[0] > 0)) throw InputError("expected one positive step");
          std::vector<SceneOverride> o;
          for (const char* k : {"grid.step_x", "grid.step_y", "grid.step_z"})
@@ -83,7 +63,7 @@ std::vector<ToolArgument> gridArguments(bool ram) {
          return o;
        }},
       {"order", "N", "the order n of the map Map^n (fixedpoint.order)", [](const std::string& value) {
-         const auto r = numbersIn(value);
+         const auto r = commaNumbers(value);
          if (r.size() != 1 || r[0] < 1 || r[0] != std::floor(r[0]))
            throw InputError("expected an order n >= 1");
          return std::vector<SceneOverride>{{"fixedpoint.order", number(r[0])}};

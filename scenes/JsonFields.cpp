@@ -3,6 +3,8 @@
 #include "dynamics/core/Errors.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -47,6 +49,19 @@ double number(const json& j, const Where& w) {
 std::string text(const json& j, const Where& w) {
   if (!j.is_string()) w.fail("expected a string, got " + shown(j));
   return j.get<std::string>();
+}
+
+std::vector<double> commaNumbers(const std::string& text) {
+  std::vector<double> v;
+  std::stringstream in(text);
+  for (std::string item; std::getline(in, item, ',');) {
+    char* end = nullptr;
+    const double x = std::strtod(item.c_str(), &end);
+    if (item.empty() || *end != '\0' || !std::isfinite(x))
+      throw InputError("expected numbers separated by commas");
+    v.push_back(x);
+  }
+  return v;
 }
 
 std::vector<double> numbers(const nlohmann::json& j, const Where& w) {

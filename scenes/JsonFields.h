@@ -26,6 +26,9 @@ std::string text(const nlohmann::json& j, const Where& w);
 bool boolean(const nlohmann::json& j, const Where& w);
 /// An array of numbers ("expected an array of numbers"; an element that is not one names its index).
 std::vector<double> numbers(const nlohmann::json& j, const Where& w);
+/// Finite numbers separated by commas ("0.6,0.2": a command line's --guess, --x); InputError "expected
+/// numbers separated by commas" for anything else (the caller names its flag).
+std::vector<double> commaNumbers(const std::string& text);
 /// Fails naming the first key of `j` that is not in `keys`.
 void onlyKeys(const nlohmann::json& j, const Where& w, std::initializer_list<const char*> keys);
 /// The whole text of one of the project's input files; InputError "PATH: is a folder, not a WHAT", "cannot

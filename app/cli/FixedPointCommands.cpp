@@ -10,6 +10,7 @@
 #include "dynamics/tools/ToolSettings.h"
 #include "render/export/VtkXmlFiles.h"
 #include "scenes/FixedPointJson.h"
+#include "scenes/JsonFields.h"
 #include "scenes/SceneTools.h"
 
 #include <cmath>
@@ -26,16 +27,11 @@ namespace rv {
 namespace {
 
 std::vector<double> parseNumbers(const std::string& text, const std::string& flag) {
-  std::vector<double> v;
-  std::stringstream in(text);
-  for (std::string item; std::getline(in, item, ',');) {
-    char* end = nullptr;
-    const double x = std::strtod(item.c_str(), &end);
-    if (item.empty() || *end != '\0' || !std::isfinite(x))
-      throw InputError(flag + " " + text + ": expected numbers separated by commas");
-    v.push_back(x);
+  try {
+    return commaNumbers(text);
+  } catch (const InputError& e) {
+    throw InputError(flag + " " + text + ": " + e.what());
   }
-  return v;
 }
 
 std::string header(const std::vector<std::string>& names) {

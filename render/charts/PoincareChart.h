@@ -33,8 +33,8 @@ public:
   /// Adds a curve through (x[i], y[i]), broken where a value is NaN; returns the index of its first piece.
   int addCurve(const std::vector<double>& x, const std::vector<double>& y, const Rgb& color, float width = 2);
   /// A heat map of values on a regular grid (x fastest: values[j * nx + i] at (x0 + i dx, y0 + j dy)), each
-  /// value filling the cell centred on its node, coloured from `low` (at the smallest value) to `high`; NaN is drawn transparent. A colour bar with the
-  /// values' scale stands right of the plot.
+  /// value filling the cell centred on its node, coloured from `low` (at the smallest value) to `high`; NaN
+  /// is drawn transparent. A colour bar with the values' scale stands right of the plot.
   void addImage(int nx, int ny, double x0, double dx, double y0, double dy, const std::vector<double>& values,
                 const Rgb& low, const Rgb& high);
   /// The label drawn over the point under the cursor (its series and coordinates); off, nothing of the cursor
