@@ -3,6 +3,7 @@
 #include "dynamics/core/Diagram.h"
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/Format.h"
+#include "dynamics/tools/FixedPoint.h"
 #include "render/charts/ToolCharts.h"
 #include "scenes/BuiltinTools.h"
 #include "scenes/ToolRunner.h"
@@ -27,6 +28,35 @@ std::unique_ptr<Chart> bifurcationCurveChart(const Scene&, const ToolResult& r) 
   drawCurves(*chart, t.values[0], {t.values[1]}, marks);
   chart->setTitle(format("%s curve in (%s, %s)", r.fields.value("kind", std::string()).c_str(),
                          t.names[0].c_str(), t.names[1].c_str()));
+  return chart;
+}
+
+// a type as the result's text column spells it (toString)
+FixedPointType fixedPointTypeOf(const std::string& name) {
+  for (int k = 0; k <= static_cast<int>(FixedPointType::Unstable); ++k)
+    if (name == toString(static_cast<FixedPointType>(k))) return static_cast<FixedPointType>(k);
+  throw ComputationError("continuation: unknown type of fixed point '" + name + "'");
+}
+
+// a continued family: its parameter against the coordinate that moves most along it, coloured by type
+std::unique_ptr<Chart> continuationChart(const Scene&, const ToolResult& r) {
+  const auto& t = r.table;
+  if (t.rows() == 0) throw ComputationError("continuation: no point of the family to draw");
+  // the coordinates are the columns between the parameter and the multipliers (re1, im1, ...)
+  const auto multipliers = std::find(t.names.begin(), t.names.end(), "re1");
+  const auto coordinates = static_cast<std::size_t>(multipliers - t.names.begin());
+  std::size_t best = 1;
+  double spread = -1;
+  for (std::size_t k = 1; k < coordinates; ++k) {
+    const auto [lo, hi] = std::minmax_element(t.values[k].begin(), t.values[k].end());
+    if (*hi - *lo > spread) spread = *hi - *lo, best = k;
+  }
+  std::vector<FixedPointType> types;
+  for (const auto& name : r.text.at(0).values)
+    types.push_back(fixedPointTypeOf(name));
+  auto chart = std::make_unique<PoincareChart>(t.names[0], t.names[best]);
+  drawFamily(*chart, t.values[0], t.values[best], types);
+  chart->setTitle("Continuation");
   return chart;
 }
 
@@ -139,6 +169,7 @@ void registerBuiltinCharts() {
     addToolChart("bifurcation_curve", bifurcationCurveChart);
     addToolChart("spectrum", spectrumChart);
     addToolChart("diagram", diagramChart);
+    addToolChart("continuation", continuationChart);
     addToolChart("surface", gridChart);
     addToolChart("ram", gridChart);
     addToolChart("lyapunov", [](const Scene&, const ToolResult& r) {

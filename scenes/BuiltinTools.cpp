@@ -357,6 +357,7 @@ void registerBuiltinTools() {
     addToolRunner("spectrum", {runSpectrum});
     addToolRunner("diagram", {runDiagram});
     registerGridTools();
+    registerMapTools();
     addToolRunner("lyapunov", {.start = [](const Scene& s) { return std::make_unique<LyapunovToolRun>(s); },
                                .tableName = "history"});
     addLanesEvaluator("megno", megnoOnLanesOf);

@@ -17,6 +17,9 @@ nlohmann::json megnoFields(const MegnoEstimate& e);
 void registerBuiltinTools();
 /// Binds the runners of the grid tools, surface and ram (scenes/GridTools.cpp); called by the above.
 void registerGridTools();
+/// Binds the runners of the fixed-point family: fixedpoint, continuation, separatrix, bifurcation_tree
+/// (scenes/MapTools.cpp); called by the above.
+void registerMapTools();
 /// Binds their charts (scenes/BuiltinCharts.cpp, VTK) after their runners; idempotent and thread-safe.
 void registerBuiltinCharts();
 

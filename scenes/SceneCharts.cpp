@@ -111,34 +111,6 @@ std::unique_ptr<Chart> multipliersChart(const Scene& scene, const ChartRequest&,
   return chart;
 }
 
-std::unique_ptr<Chart> continuationChart(const Scene& scene, const ChartRequest&,
-                                         const ToolControl& control) {
-  const SceneMap sm{Scene(scene)};
-  const auto cont = sm.continuationRun();
-  try {
-    cont->run(control);
-  } catch (const ComputationError&) {
-    if (cont->points().empty()) throw;
-  }
-  // against the coordinate that moves most along the family
-  const auto& pts = cont->points();
-  int best = 0;
-  double spread = -1;
-  for (int k = 0; k < static_cast<int>(pts.front().fixedPoint.point.size()); ++k) {
-    double lo = 1e300, hi = -1e300;
-    for (const auto& c : pts)
-      lo = std::min(lo, c.fixedPoint.point[k]), hi = std::max(hi, c.fixedPoint.point[k]);
-    if (hi - lo > spread) spread = hi - lo, best = k;
-  }
-  std::vector<double> p, x;
-  std::vector<FixedPointType> types;
-  for (const auto& c : pts)
-    p.push_back(c.parameter), x.push_back(c.fixedPoint.point[best]), types.push_back(c.fixedPoint.type);
-  auto chart = std::make_unique<PoincareChart>(cont->settings().parameter, sm.map().coordinateNames()[best]);
-  drawFamily(*chart, p, x, types);
-  return chart;
-}
-
 // a tool that runs through ToolRunner.h: its own chart, or its table's columns against the first
 std::unique_ptr<Chart> toolResultChart(const ToolEntry& tool, const Scene& scene, const ToolResult& result) {
   registerBuiltinCharts();
@@ -162,8 +134,7 @@ const std::vector<std::pair<std::string, ChartBuilder>>& chartBuilders() {
   static const std::vector<std::pair<std::string, ChartBuilder>> b{{"poincare", poincareChart},
                                                                    {"map3d", map3dChart},
                                                                    {"plot", plotChart},
-                                                                   {"multipliers", multipliersChart},
-                                                                   {"continuation", continuationChart}};
+                                                                   {"multipliers", multipliersChart}};
   return b;
 }
 

@@ -223,6 +223,14 @@ const TextKey textKeys[] = {
      },
      "the starting point of the search in map coordinates (default: the scene's initial map point)",
      "numbers"},
+    {"branches", "separatrix", "belongs to the \"separatrix\" section",
+     // read where it is used (scenes/MapTools.cpp), from the document; checked here
+     [](const json& j, const Where& w, Scene&) {
+       if (j.is_string() && j.get<std::string>() == "all") return;
+       for (double b : numbers(j, w))
+         if (b != 1 && b != 2 && b != 3 && b != 4) w.fail("branches are 1, 2, 3, 4 (or \"all\")");
+     },
+     "the branches to grow: a list of 1..4 or \"all\" (default: separatrix.branch)", "numbers"},
     {"parameter", "continuation", "belongs to the \"continuation\" section",
      [](const json& j, const Where& w, Scene& scene) {
        scene.continuationParameter = text(j, w);

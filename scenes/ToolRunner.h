@@ -51,6 +51,16 @@ struct ToolResult {
   bool stopped = false;
   /// Where the rows are the nodes of a grid: its shape.
   ToolGrid grid = {};
+  /// What the run said on the way, a line each (where a family's type changes, a tree's ratios): the CLI
+  /// prints them (on standard error when the table goes to standard output); --json and Python leave them
+  /// out.
+  std::vector<std::string> notes = {};
+  /// Why the computation ended early with a result worth keeping (a family that cannot be continued past a
+  /// point): the CLI writes the result, then fails with this (exit 1); Python's result has it as "failure".
+  std::string failure = {};
+  /// The Python result where it is shaped otherwise than the fields beside the table's columns (a family's
+  /// points as one array; null: those): the runner writes both shapes, so no front end is taught the tool.
+  nlohmann::json python = nullptr;
 };
 
 /// A call argument of a tool besides its section's settings -- the CLI's `--NAME VALUE`, Python's
@@ -64,6 +74,8 @@ struct ToolArgument {
   /// InputError saying what is wrong with a value it cannot take (each front end puts the argument's name
   /// in its own spelling before it: "--x 1,0: ...", "x=(1, 0): ...").
   std::function<std::vector<SceneOverride>(const std::string& value)> toSettings;
+  /// Takes no value (the CLI's `--doubled`, Python's `doubled=True`): toSettings("") when given.
+  bool flag = false;
 };
 
 /// One run of a tool on a scene that can stop and go on: a stopped chart job continues it (GUI Continue),
@@ -104,6 +116,17 @@ struct ToolRunner {
   /// Settings of its section that do not change the result (threads): a run saved with --checkpoint may be
   /// resumed with other values.
   std::vector<std::string> resultIndependent = {};
+  /// The result in words for a terminal (the CLI without --json and -o); empty: each field as "name = value".
+  std::function<std::string(const ToolResult&)> describe = {};
+  /// The table is what it computes (a family, a branch): without -o the CLI writes its CSV on standard
+  /// output.
+  bool tableIsResult = false;
+  /// Fields (at any depth of the result) that hold complex numbers as [re, im] pairs: Python gives them as
+  /// complex arrays.
+  std::vector<std::string> complexFields = {};
+  /// The GUI runs it on the map window, which draws its points as they come (MapPanel), not in a chart
+  /// window.
+  bool onTheMap = false;
 };
 
 /// Begins a run of tool `id` on the scene: the runner's own resumable run, or its `run` wrapped in one that

@@ -56,12 +56,7 @@ std::pair<int, int> parseSize(const std::string& text) {
 
 const std::map<std::string, ToolCommandBuilder>& toolCommandBuilders() {
   static const std::map<std::string, ToolCommandBuilder> builders{
-      {"poincare", addPoincareCommand},
-      {"fixedpoint", addFixedPointCommand},
-      {"continue", addContinueCommand},
-      {"separatrix", addSeparatrixCommand},
-      {"bifurcation-tree", addBifurcationTreeCommand},
-      {"sweep", addSweepCommand}};
+      {"poincare", addPoincareCommand}, {"sweep", addSweepCommand}};
   return builders;
 }
 

@@ -57,10 +57,6 @@ using ToolCommandBuilder = Command (*)(CLI::App* cmd);
 /// By ToolEntry::command; runCli adds the subcommand of every registered tool that has one from here.
 const std::map<std::string, ToolCommandBuilder>& toolCommandBuilders();
 Command addPoincareCommand(CLI::App* cmd);
-Command addFixedPointCommand(CLI::App* cmd);
-Command addContinueCommand(CLI::App* cmd);
-Command addSeparatrixCommand(CLI::App* cmd);
-Command addBifurcationTreeCommand(CLI::App* cmd);
 Command addSweepCommand(CLI::App* cmd);
 /// The subcommand of a tool that runs through scenes/ToolRunner.h (a module's tool): SCENE, --set, a flag
 /// per setting of its section (--KEY), --json (its fields), -o (its table as CSV).

@@ -15,8 +15,10 @@
 #include <cmath>
 #include <cstdio>
 #include <fmt/core.h>
+#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 namespace rv {
 
@@ -151,6 +153,35 @@ void writeTableCsv(FILE* f, const ToolResult& r) {
 
 } // namespace
 
+namespace {
+
+// A bad value met after the flags became scene settings names the flag it came from ("--param Q: ..."):
+// `given` maps each scene key set by a flag to the flag as typed.
+[[noreturn]] void rethrowNamingTheFlag(const InputError& e, const std::map<std::string, std::string>& given) {
+  const std::string message = e.what();
+  for (const auto& [key, flag] : given)
+    if (message.find(key) != std::string::npos &&
+        message.find(flag.substr(0, flag.find(' '))) == std::string::npos)
+      throw InputError(flag + ": " + message);
+  throw e;
+}
+
+// the declared outputs in their order, then any other field, as "name = value"
+void printFields(const ToolEntry& tool, const ToolResult& r) {
+  std::vector<std::string> names;
+  for (const auto& output : tool.outputs)
+    if (r.fields.contains(output.name)) names.push_back(output.name);
+  for (const auto& [name, value] : r.fields.items())
+    if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+  for (const auto& name : names) {
+    const auto& value = r.fields[name];
+    fmt::print("{} = {}\n", name,
+               value.is_number_float() ? fmt::format("{:.10g}", value.get<double>()) : value.dump());
+  }
+}
+
+} // namespace
+
 Command addRegisteredToolCommand(CLI::App* cmd, const ToolEntry& tool) {
   struct Options {
     SceneArgs scene;
@@ -159,6 +190,7 @@ Command addRegisteredToolCommand(CLI::App* cmd, const ToolEntry& tool) {
     std::string checkpoint;
     std::map<std::string, std::string> settings;  // --KEY of the settings table, by key
     std::map<std::string, std::string> arguments; // --NAME of the runner's arguments, by name
+    std::map<std::string, bool> flags;            // --NAME of the runner's arguments that take no value
   };
   auto o = std::make_shared<Options>();
   const ToolRunner& runner = *findToolRunner(tool.id);
@@ -181,7 +213,10 @@ Command addRegisteredToolCommand(CLI::App* cmd, const ToolEntry& tool) {
                                              : " (default: the scene's " + tool.section + "." + t.key + ")"));
   }
   for (const auto& a : runner.arguments)
-    cmd->add_option("--" + a.name, o->arguments[a.name], a.description)->type_name(a.valueName);
+    if (a.flag)
+      cmd->add_flag("--" + a.name, o->flags[a.name], a.description);
+    else
+      cmd->add_option("--" + a.name, o->arguments[a.name], a.description)->type_name(a.valueName);
   std::string fields;
   for (const auto& out : tool.outputs)
     fields += (fields.empty() ? "" : ", ") + out.name;
@@ -191,32 +226,52 @@ Command addRegisteredToolCommand(CLI::App* cmd, const ToolEntry& tool) {
   cmd->add_option("-o,--output", o->output,
                   runner.grid
                       ? "CSV file: the grid's nodes and values; a .vti file is image data for ParaView"
-                      : "CSV file: the tool's table (.csv)")
+                  : runner.tableIsResult ? "CSV file (default: standard output)"
+                                         : "CSV file: the tool's table (.csv)")
       ->check(writesOneOf(formats));
   if (resumable(tool)) addCheckpointOption(cmd, o->checkpoint);
   return {cmd, [o, &tool, &runner, section] {
             std::vector<std::string> sets = o->scene.sets;
+            std::map<std::string, std::string> given; // scene key -> the flag that set it
             for (const auto& [key, value] : o->settings)
-              if (!value.empty()) sets.push_back(section->key + "." + key + "=" + value);
-            for (const auto& [name, value] : o->arguments) {
-              if (value.empty()) continue;
-              try {
-                for (const auto& s : argumentSettings(runner, name, value))
-                  sets.push_back(s.key + "=" + s.value);
-              } catch (const InputError& e) {
-                throw InputError("--" + name + " " + value + ": " + e.what());
+              if (!value.empty()) {
+                sets.push_back(section->key + "." + key + "=" + value);
+                given.emplace(section->key + "." + key, "--" + key + " " + value);
               }
-            }
+            const auto apply = [&](const std::string& name, const std::string& value,
+                                   const std::string& typed) {
+              try {
+                for (const auto& s : argumentSettings(runner, name, value)) {
+                  sets.push_back(s.key + "=" + s.value);
+                  given.emplace(s.key, typed);
+                }
+              } catch (const InputError& e) {
+                throw InputError(typed + ": " + e.what());
+              }
+            };
+            for (const auto& [name, value] : o->arguments)
+              if (!value.empty()) apply(name, value, "--" + name + " " + value);
+            for (const auto& [name, on] : o->flags)
+              if (on) apply(name, "", "--" + name);
             SceneArgs args{o->scene.scene, sets};
             const bool vti = hasExtension(o->output, ".vti");
-            const Scene scene = args.load();
+            // a table that is the result goes to standard output without -o (not beside --json's object)
+            const bool tableOut = !o->output.empty() || (runner.tableIsResult && !o->json);
+            std::optional<Scene> loaded;
+            std::unique_ptr<ToolRun> run;
+            try {
+              loaded.emplace(args.load());
+              run = startTool(tool, *loaded);
+            } catch (const InputError& e) {
+              rethrowNamingTheFlag(e, given);
+            }
+            const Scene& scene = *loaded;
             std::unique_ptr<Output> out;
             if (vti)
               checkWritable(o->output, "-o");
-            else if (!o->output.empty())
+            else if (tableOut)
               out = std::make_unique<Output>(o->output);
             Progress progress(tool.id);
-            const auto run = startTool(tool, scene);
             // what the result depends on: the scene, less the settings a resumed run may change
             nlohmann::json key = scene.document;
             for (const auto& k : runner.resultIndependent)
@@ -224,13 +279,18 @@ Command addRegisteredToolCommand(CLI::App* cmd, const ToolEntry& tool) {
             Checkpoint checkpoint(o->checkpoint, tool.command, key.dump());
             if (auto saved = checkpoint.load()) run->restore(saved->state);
             const ToolControl control = interruptibleControl(progress);
-            const bool finished = checkpoint.enabled()
-                                      ? checkpoint.run([&](const ToolControl& c) { return run->advance(c); },
-                                                       [&](Snapshot& state) { run->save(state); }, control)
-                                      : run->advance(control);
+            bool finished = false;
+            try {
+              finished = checkpoint.enabled()
+                             ? checkpoint.run([&](const ToolControl& c) { return run->advance(c); },
+                                              [&](Snapshot& state) { run->save(state); }, control)
+                             : run->advance(control);
+            } catch (const InputError& e) {
+              rethrowNamingTheFlag(e, given);
+            }
             ToolResult r = run->result();
             r.stopped = !finished;
-            checkToolResult(tool, r);
+            if (r.failure.empty()) checkToolResult(tool, r);
             if (vti) {
               if (r.grid.dimensions == 0)
                 throw ComputationError(tool.id + ": its result is no grid for .vti");
@@ -240,20 +300,23 @@ Command addRegisteredToolCommand(CLI::App* cmd, const ToolEntry& tool) {
               out->commit();
             }
             if (finished) checkpoint.finish(); // after the output is written: a failed write can resume
-            if (o->json)
+            if (o->json) {
               fmt::print("{}\n", toolResultJson(r).dump());
-            else if (!out && !vti) { // the declared outputs in their order, then any other field
-              std::vector<std::string> names;
-              for (const auto& output : tool.outputs)
-                if (r.fields.contains(output.name)) names.push_back(output.name);
-              for (const auto& [name, value] : r.fields.items())
-                if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
-              for (const auto& name : names) {
-                const auto& value = r.fields[name];
-                fmt::print("{} = {}\n", name,
-                           value.is_number_float() ? fmt::format("{:.10g}", value.get<double>())
-                                                   : value.dump());
+            } else {
+              // what it said on the way: beside a table on standard output, on standard error
+              FILE* notes = out && o->output.empty() ? stderr : stdout;
+              for (const auto& line : r.notes)
+                fmt::print(notes, "{}\n", line);
+              if (!out && !vti) {
+                if (runner.describe)
+                  fmt::print("{}", runner.describe(r));
+                else
+                  printFields(tool, r);
               }
+            }
+            if (!r.failure.empty()) { // the result so far is written; the computation ended early
+              fmt::print(stderr, "rollviz: failed: {}\n", r.failure);
+              return 1;
             }
             return r.stopped || interrupted() ? 130 : 0;
           }};

@@ -10,7 +10,6 @@
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/ModelRegistry.h"
 #include "dynamics/tools/ToolSettings.h"
-#include "scenes/FixedPointJson.h"
 #include "scenes/SceneTools.h"
 #include "scenes/SectionTextKeys.h"
 #include "scenes/Sweep.h"
@@ -79,114 +78,6 @@ pyb::object poincare(Call& c) {
   return table(std::move(flat), width);
 }
 
-pyb::dict fixedPointDict(const FixedPointResult& r, const ReturnMap& map) {
-  pyb::dict d;
-  d["point"] = toArray(toVector(r.point));
-  d["coordinates"] = map.coordinateNames();
-  d["multipliers"] = complexArray(r.multipliers);
-  d["type"] = toString(r.type);
-  d["residual"] = r.residual;
-  d["iterations"] = r.iterations;
-  d["evaluations"] = r.evaluations;
-  d["order"] = map.order();
-  std::vector<double> path;
-  for (const auto& q : r.path) {
-    const auto p = toVector(q.point);
-    path.insert(path.end(), p.begin(), p.end());
-  }
-  d["path"] = table(std::move(path), static_cast<std::size_t>(r.point.size()));
-  return d;
-}
-
-// the fixed point the scene's map search finds; a stop request ends the call as a failure naming the tool
-FixedPointResult searchFixedPoint(const SceneMap& s, const ReturnMap& map, const ToolControl& control,
-                                  const std::string& tool) {
-  try {
-    return findFixedPoint(map, s.guess(), s.search(), control);
-  } catch (const Stopped&) {
-    throw ComputationError(tool + ": stopped");
-  }
-}
-
-pyb::object fixedpoint(Call& c) {
-  const auto s = sceneMap(c);
-  const ReturnMap map = s->map();
-  FixedPointResult r;
-  runJob(c.progress,
-         [&](const ToolControl& control) { r = searchFixedPoint(*s, map, control, "fixedpoint"); });
-  return fixedPointDict(r, map);
-}
-
-pyb::dict changeDict(const TypeChange& t, const std::string& parameter) {
-  pyb::dict d;
-  d["parameter"] = t.parameter;
-  d["kind"] = toString(t.kind);
-  d["from"] = toString(t.from);
-  d["to"] = toString(t.to);
-  d["point"] = toArray(toVector(t.at.fixedPoint.point));
-  d["multipliers"] = complexArray(t.at.fixedPoint.multipliers);
-  d["description"] = describe(t, parameter);
-  return d;
-}
-
-// a family's points, multipliers, types and changes as a dict
-pyb::dict familyDict(const Continuation& family, const ContinuationSettings& cs, const ReturnMap& map,
-                     const std::string& failure) {
-  std::vector<double> param, points, residual;
-  std::vector<std::complex<double>> multipliers;
-  std::vector<std::string> types;
-  std::size_t m = 0;
-  for (const auto& p : family.points()) {
-    param.push_back(p.parameter);
-    const auto x = toVector(p.fixedPoint.point);
-    points.insert(points.end(), x.begin(), x.end());
-    multipliers.insert(multipliers.end(), p.fixedPoint.multipliers.begin(), p.fixedPoint.multipliers.end());
-    m = p.fixedPoint.multipliers.size();
-    residual.push_back(p.fixedPoint.residual);
-    types.emplace_back(toString(p.fixedPoint.type));
-  }
-  pyb::list changes;
-  for (const auto& t : family.changes())
-    changes.append(changeDict(t, cs.parameter));
-  const auto n = static_cast<pyb::ssize_t>(param.size());
-  pyb::dict d;
-  d["parameter"] = cs.parameter;
-  d["parameter_values"] = toArray(std::move(param));
-  d["coordinates"] = map.coordinateNames();
-  d["points"] = table(std::move(points), map.coordinateNames().size());
-  d["multipliers"] = toArray(std::move(multipliers), {n, static_cast<pyb::ssize_t>(m)});
-  d["residual"] = toArray(std::move(residual));
-  d["types"] = types;
-  d["changes"] = changes;
-  d["failure"] = failure;
-  d["end"] = failure.empty() ? family.end() : failure; // why the family ends
-  return d;
-}
-
-pyb::object continuation(Call& c) {
-  const auto s = sceneMap(c);
-  const ContinuationSettings cs = s->continuation();
-  const auto run = s->continuationRun();
-  std::string failure;
-  runJob(c.progress, [&](const ToolControl& control) {
-    try {
-      run->run(control);
-    } catch (const ComputationError& e) {
-      if (run->points().empty() || (cs.switchAt > 0 && !run->doubled())) throw;
-      failure = e.what(); // the family up to here is a result: keep it, and say why it ends
-    }
-  });
-  if (!run->doubled()) return familyDict(*run, cs, s->map(), failure);
-  // switched (continuation.switch): the family of doubled order, its parent under "parent"
-  SectionSettings twice = s->section();
-  twice.order *= 2;
-  const ReturnMap map(*s->scene().model, s->integrators(), twice);
-  pyb::dict d = familyDict(*run->doubled(), cs, map, failure);
-  d["order"] = twice.order;
-  d["parent"] = familyDict(*run, cs, s->map(), "");
-  return d;
-}
-
 pyb::object multipliers(Call& c) {
   const auto s = sceneMap(c);
   std::vector<std::vector<std::complex<double>>> path;
@@ -195,97 +86,6 @@ pyb::object multipliers(Call& c) {
   for (const auto& m : path)
     out.append(complexArray(m));
   return out;
-}
-
-pyb::object separatrix(Call& c) {
-  const auto s = sceneMap(c);
-  const ReturnMap map = s->map();
-  if (map.dimension() != 2) throw InputError("separatrix: separatrices are drawn for 2D maps only");
-  const ParameterValues& sv = s->scene().tool("separatrix");
-  std::vector<int> list;
-  if (!c.has("branches"))
-    list = {static_cast<int>(sv["branch"])};
-  else if (pyb::isinstance<pyb::str>(c.args["branches"]) && c.get<std::string>("branches", "") == "all")
-    list = {1, 2, 3, 4};
-  else
-    for (int b : c.args["branches"].cast<std::vector<int>>()) {
-      if (b < 1 || b > 4) throw InputError("branches: branches are 1, 2, 3, 4 (or \"all\")");
-      list.push_back(b);
-    }
-  pyb::dict d;
-  std::vector<std::pair<int, SeparatrixResult>> results;
-  FixedPointResult fp;
-  runJob(c.progress, [&](const ToolControl& control) {
-    fp = searchFixedPoint(*s, map, control, "separatrix");
-    for (int b : list) {
-      SeparatrixSettings ss = separatrixSettings(sv, s->search());
-      ss.branch = b;
-      results.emplace_back(b, growSeparatrix(map, fp, ss, control));
-      if (results.back().second.stoppedBecause == "stopped") break;
-    }
-  });
-  d["fixedpoint"] = fixedPointDict(fp, map);
-  pyb::dict branches;
-  for (auto& [b, r] : results) {
-    std::vector<double> flat;
-    for (const auto& p : r.points) {
-      const auto x = toVector(p);
-      flat.insert(flat.end(), x.begin(), x.end());
-    }
-    pyb::dict x;
-    x["points"] = table(std::move(flat), 2);
-    x["parameters"] = toArray(std::vector<double>(r.parameters));
-    x["multiplier"] = r.multiplier;
-    x["unstable"] = r.unstable;
-    x["linear_region"] = r.linearRegion;
-    x["ended_by"] = r.stoppedBecause;
-    branches[pyb::int_(b)] = x;
-  }
-  d["branches"] = branches;
-  return d;
-}
-
-pyb::object bifurcationTree(Call& c) {
-  const auto s = sceneMap(c);
-  const ContinuationSettings cs = s->continuation();
-  const BifurcationTreeSettings t = bifurcationTreeSettings(s->scene().tool("bifurcation_tree"), cs);
-  const double start = s->spec().modelParameters[cs.parameter];
-  std::vector<double> rows;
-  std::vector<std::string> types;
-  BifurcationTreeResult r;
-  const ReturnMap map = s->map();
-  runJob(c.progress, [&](const ToolControl& control) {
-    try {
-      bifurcationTree(
-          s->spec().modelAt(cs.parameter), s->integrators(), s->section(), start, s->guess(), t, control,
-          [&](const TreeBranch& b, const ContinuationPoint& p) {
-            rows.push_back(b.level), rows.push_back(b.order), rows.push_back(p.parameter);
-            const auto x = toVector(p.fixedPoint.point);
-            rows.insert(rows.end(), x.begin(), x.end());
-            types.emplace_back(toString(p.fixedPoint.type));
-          },
-          [](const PeriodDoubling&) {}, &r);
-    } catch (const Stopped&) {
-    }
-  });
-  pyb::list doublings;
-  for (const auto& x : r.doublings) {
-    pyb::dict d;
-    d["level"] = x.level, d["order"] = x.order, d["parameter"] = x.parameter;
-    doublings.append(d);
-  }
-  std::vector<std::string> columns{"level", "order", cs.parameter};
-  for (const auto& n : map.coordinateNames())
-    columns.push_back(n);
-  pyb::dict d;
-  d["parameter"] = cs.parameter;
-  d["columns"] = columns;
-  d["rows"] = table(std::move(rows), columns.size());
-  d["types"] = types;
-  d["doublings"] = doublings;
-  d["ratios"] = r.ratios();
-  d["end"] = r.end;
-  return d;
 }
 
 pyb::object plot(Call& c) {
@@ -308,12 +108,7 @@ const std::map<std::string, Runner>& runners() {
       {"poincare", {{}, "", poincare}},
       {"map3d", {{}, "", poincare}},
       {"plot", {{}, "", plot}},
-      {"fixedpoint", {{}, "", fixedpoint}},
-      {"continuation", {{}, "", continuation}},
       {"multipliers", {{}, "", multipliers}},
-      {"separatrix",
-       {{"branches"}, "branches: a list of 1..4 or \"all\" (default: separatrix.branch)", separatrix}},
-      {"bifurcation_tree", {{}, "", bifurcationTree}},
   };
   return r;
 }
@@ -357,10 +152,85 @@ SceneOverride placeKeyword(const Scene& scene, const ToolEntry& tool, const std:
   throw InputError(valueError ? *valueError : *firstError);
 }
 
-// a tool that runs through scenes/ToolRunner.h: its fields, and its table's columns as arrays
+bool isNumbers(const nlohmann::json& j) {
+  return j.is_array() && !j.empty() &&
+         std::all_of(j.begin(), j.end(), [](const auto& v) { return v.is_number(); });
+}
+
+// A runner's Python result (ToolResult::python) as Python values: a list of numbers is an array, a list of
+// equally long lists of numbers a 2D array, a field named in `complex` ([re, im] pairs, or rows of them) a
+// complex array, an object keyed by integers ("1", "2": JSON has no other keys) a dict of ints.
+pyb::object toPython(const nlohmann::json& j, const std::vector<std::string>& complex,
+                     bool isComplex = false) {
+  if (j.is_object()) {
+    const bool numbered = !j.empty() && std::all_of(j.items().begin(), j.items().end(), [](const auto& item) {
+      const std::string& k = item.key();
+      return !k.empty() && k.size() < 10 &&
+             std::all_of(k.begin(), k.end(), [](char ch) { return ch >= '0' && ch <= '9'; });
+    });
+    pyb::dict d;
+    for (const auto& [k, v] : j.items()) {
+      pyb::object value = toPython(v, complex, std::find(complex.begin(), complex.end(), k) != complex.end());
+      if (numbered)
+        d[pyb::int_(std::stoi(k))] = value;
+      else
+        d[k.c_str()] = value;
+    }
+    return d;
+  }
+  if (j.is_array()) {
+    const auto pair = [](const nlohmann::json& z) { return isNumbers(z) && z.size() == 2; };
+    if (isComplex && (j.empty() || pair(j.front()))) { // [[re, im], ...]
+      std::vector<std::complex<double>> z;
+      for (const auto& p : j)
+        z.emplace_back(p[0].get<double>(), p[1].get<double>());
+      return toArray(std::move(z));
+    }
+    if (isComplex && j.front().is_array()) { // rows of [re, im] pairs, as long each
+      std::vector<std::complex<double>> z;
+      const std::size_t m = j.front().size();
+      for (const auto& row : j) {
+        if (row.size() != m) throw ComputationError("rows of multipliers of unequal length");
+        for (const auto& p : row)
+          z.emplace_back(p[0].get<double>(), p[1].get<double>());
+      }
+      return toArray(std::move(z), {static_cast<pyb::ssize_t>(j.size()), static_cast<pyb::ssize_t>(m)});
+    }
+    if (isNumbers(j)) return toArray(j.get<std::vector<double>>());
+    const std::size_t width = j.empty() || !j.front().is_array() ? 0 : j.front().size();
+    if (width > 0 && std::all_of(j.begin(), j.end(),
+                                 [&](const auto& row) { return isNumbers(row) && row.size() == width; })) {
+      std::vector<double> flat;
+      for (const auto& row : j)
+        for (const auto& v : row)
+          flat.push_back(v.get<double>());
+      return table(std::move(flat), width);
+    }
+    pyb::list list;
+    for (const auto& v : j)
+      list.append(toPython(v, complex));
+    return list;
+  }
+  return pyb::module_::import("json").attr("loads")(j.dump());
+}
+
+// a tool that runs through scenes/ToolRunner.h: its fields, and its table's columns as arrays (or the shape
+// the runner gives Python, ToolResult::python)
 pyb::object registeredTool(const ToolEntry& tool, Call& c) {
   ToolResult r;
   runJob(c.progress, [&](const ToolControl& control) { r = rv::runTool(tool, c.scene, control); });
+  const ToolRunner& runner = *findToolRunner(tool.id);
+  if (!r.python.is_null()) { // its shape, and beside it each column of the table the shape does not name
+    pyb::dict d = toPython(r.python, runner.complexFields);
+    for (std::size_t k = 0; k < r.table.names.size(); ++k)
+      if (!d.contains(r.table.names[k].c_str()))
+        d[r.table.names[k].c_str()] = toArray(std::vector<double>(r.table.values[k]));
+    for (const auto& t : r.text)
+      if (!d.contains(t.name.c_str())) d[t.name.c_str()] = t.values;
+    if (r.stopped) d["stopped"] = true;
+    return d;
+  }
+  if (!r.failure.empty()) throw ComputationError(r.failure);
   pyb::dict d = pyb::module_::import("json").attr("loads")(toolResultJson(r).dump());
   d["stopped"] = r.stopped;
   for (const auto& [name, value] : r.fields.items()) // a list of numbers is an array (exponents)
@@ -385,7 +255,7 @@ pyb::object registeredTool(const ToolEntry& tool, Call& c) {
     return d;
   }
   // the table as one piece under the runner's name (a dict the package makes a Table), else column by column
-  const std::string& name = findToolRunner(tool.id)->tableName;
+  const std::string& name = runner.tableName;
   pyb::dict columns;
   pyb::dict& into = name.empty() ? d : columns;
   for (std::size_t k = 0; k < r.table.names.size(); ++k)
@@ -424,14 +294,18 @@ pyb::object runTool(const Scene& scene, const std::string& id, const pyb::object
       call.args[key] = pyb::reinterpret_borrow<pyb::object>(v);
     } else if (toolRunner && std::any_of(toolRunner->arguments.begin(), toolRunner->arguments.end(),
                                          [&](const ToolArgument& a) { return a.name == key; })) {
-      // an argument standing for settings (x=(0, 1) is grid.x_min, x_max): its value as the CLI's text
+      // an argument standing for settings (x=(0, 1) is grid.x_min, x_max): its value as the CLI's text; one
+      // that takes no value (doubled=True) applies when true
+      const bool flag = std::any_of(toolRunner->arguments.begin(), toolRunner->arguments.end(),
+                                    [&](const ToolArgument& a) { return a.name == key && a.flag; });
+      if (flag && !PyObject_IsTrue(v.ptr())) continue;
       std::string text;
-      if (pyb::isinstance<pyb::str>(v))
+      if (!flag && pyb::isinstance<pyb::str>(v))
         text = v.cast<std::string>();
-      else if (pyb::isinstance<pyb::sequence>(v))
+      else if (!flag && pyb::isinstance<pyb::sequence>(v))
         for (pyb::handle item : v)
           text += (text.empty() ? "" : ",") + pyb::str(item).cast<std::string>();
-      else
+      else if (!flag)
         text = pyb::str(v).cast<std::string>();
       try {
         const auto settings = argumentSettings(*toolRunner, key, text);

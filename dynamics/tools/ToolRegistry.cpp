@@ -157,9 +157,16 @@ ToolRegistry& ToolRegistry::mutableGlobal() {
          .command = "fixedpoint",
          .commandHelp = "a fixed point of order n of the scene's map, its multipliers and type",
          .outputs = {{"point", "the fixed point"},
+                     {"coordinates", "the names of its coordinates"},
                      {"type", "elliptic, hyperbolic, ..."},
-                     {"multipliers", "the eigenvalues of D(Map^n)"},
-                     {"residual", "|Map^n(x) - x|"}},
+                     {"multipliers", "the eigenvalues of D(Map^n), [re, im] each (complex in Python)"},
+                     {"residual", "|Map^n(x) - x|"},
+                     {"iterations", "the search's iterations"},
+                     {"evaluations", "the map evaluations it spent"},
+                     {"order", "n"},
+                     {"<path>",
+                      "with fixedpoint.path = yes (--path): each point of the search and its residual "
+                      "(always in Python, as rows)"}},
          .reference = "manual §2.3.4",
          .computation =
              "dynamics/tools/FixedPoint.h (findFixedPoint); as a job dynamics/jobs/FixedPointTasks.h"});
@@ -172,10 +179,18 @@ ToolRegistry& ToolRegistry::mutableGlobal() {
          .commandHelp =
              "continue a fixed point in a parameter: the family, its multipliers and where its type changes",
          .chartView = "continuation",
-         .outputs = {{"parameter", "the parameter's value"},
+         .outputs = {{"parameter",
+                      "the continued parameter: its name (JSON), its value at each point (a column)"},
                      {"<map coordinates>", "the fixed point"},
+                     {"<re1, im1, ...>", "its multipliers"},
+                     {"residual", "|Map^n(x) - x| at each point"},
                      {"type", "its type"},
-                     {"changes", "JSON: where the type changes"}},
+                     {"changes", "JSON: where the type changes"},
+                     {"points", "JSON: how many points the family has"},
+                     {"end", "JSON: why the family ends"},
+                     {"<doubled>",
+                      "JSON, with continuation.switch: the family of doubled order followed instead "
+                      "(its points are the table)"}},
          .reference = "manual §2.3.5",
          .computation =
              "dynamics/tools/Continuation.h (Continuation); as a job dynamics/jobs/FixedPointTasks.h"});
@@ -194,7 +209,13 @@ ToolRegistry& ToolRegistry::mutableGlobal() {
          .section = "separatrix",
          .command = "separatrix",
          .commandHelp = "the separatrices of a hyperbolic fixed point of a 2D map, as CSV",
-         .outputs = {{"branch", "1..4"}, {"<map coordinates>", "the points of the branch"}},
+         .outputs = {{"branch", "1..4, each point's branch"},
+                     {"<map coordinates>", "the points of the branch"},
+                     {"parameter", "each point's k + s: the image F^k of the linear segment's point s"},
+                     {"fixedpoint", "JSON: the hyperbolic point (as the fixedpoint tool gives it)"},
+                     {"branches",
+                      "JSON: each branch grown: its multiplier, direction (outgoing or incoming), "
+                      "linear region and why it ended"}},
          .reference = "manual §2.3.6",
          .computation =
              "dynamics/tools/Separatrix.h (growSeparatrix); as a job dynamics/jobs/FixedPointTasks.h"});
@@ -205,7 +226,10 @@ ToolRegistry& ToolRegistry::mutableGlobal() {
          .section = "bifurcation_tree",
          .command = "bifurcation-tree",
          .commandHelp = "the period-doubling cascade of an elliptic fixed point",
-         .outputs = {{"level, order, parameter", "each doubling"},
+         .outputs = {{"level", "the level of each point's branch in the tree (0: the starting family)"},
+                     {"order", "the order of each point's branch"},
+                     {"type", "each point's type"},
+                     {"doublings", "JSON: each period doubling (level, order, parameter)"},
                      {"ratios", "JSON: the Feigenbaum ratios"},
                      {"end",
                       "why the tree ended (levels reached, the finite value, a family that could not be "

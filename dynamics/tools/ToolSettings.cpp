@@ -82,6 +82,14 @@ const ParameterTable& fixedPointTable() {
        .min = 0,
        .max = 1,
        .description = "how close to the unit circle (or to +-1) a multiplier counts as on it"},
+      {.id = "path",
+       .label = "Show all points",
+       .defaultValue = 0,
+       .min = 0,
+       .max = 1,
+       .description = "the result gives the whole search path (the map window always draws it)",
+       .integer = true,
+       .choices = {"no", "yes"}},
   };
   return t;
 }

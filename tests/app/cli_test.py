@@ -702,6 +702,46 @@ class Cli(unittest.TestCase):
         self.assertEqual(h.returncode, 1, h.stderr)
         self.assertIn("not elliptic", h.stderr)
 
+    def test_the_fixed_point_family_runs_through_the_registry(self):
+        # continue without -o: the family's CSV on standard output, what it says on the way on standard error
+        sm = os.path.join(SRC, "scenes", "tools", "continuation.json")
+        r = run("continue", sm)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        rows = list(csv.DictReader(r.stdout.splitlines()))
+        self.assertEqual(list(rows[0].keys()), ["K", "theta", "p", "re1", "im1", "re2", "im2", "residual", "type"])
+        self.assertEqual(rows[0]["type"], "elliptic")
+        self.assertAlmostEqual(float(rows[-1]["K"]), 4.5, delta=1e-12)
+        self.assertIn("(multiplier -1)", r.stderr)
+        # --json alone: one JSON object and nothing else (the table is not mixed in)
+        j = json.loads(run("continue", sm, "--json").stdout)
+        self.assertEqual((j["parameter"], j["points"]), ("K", len(rows)))
+        self.assertAlmostEqual(j["changes"][0]["parameter"], 4, delta=1e-8)
+        # a flag that takes no value (--doubled is continuation.switch = 1), the same family as the setting
+        a = run("continue", sm, "--to", "4.2", "--doubled", "--json")
+        b = run("continue", sm, "--to", "4.2", "--set", "continuation.switch=1", "--json")
+        self.assertEqual(a.returncode, 0, a.stderr)
+        self.assertEqual(json.loads(a.stdout), json.loads(b.stdout))
+        self.assertEqual(json.loads(a.stdout)["doubled"]["order"], 2)
+        # --path (fixedpoint.path = yes): the search's points, each nearer the fixed point
+        hm = os.path.join(SRC, "scenes", "tools", "fixedpoint.json")
+        f = json.loads(run("fixedpoint", hm, "--path", "--json").stdout)
+        x = (-0.7 + (0.49 + 5.6) ** 0.5) / 2.8
+        self.assertEqual(f["type"], "hyperbolic with reflection")
+        self.assertAlmostEqual(f["path"][-1]["point"][0], x, delta=1e-12)
+        self.assertLess(f["path"][-1]["residual"], 1e-10)
+        self.assertNotIn("path", json.loads(run("fixedpoint", hm, "--json").stdout))
+        # the flags' values are checked where they become settings, and the message names the flag
+        sep = os.path.join(SRC, "scenes", "tools", "separatrix.json")
+        self.assertBadInput(run("separatrix", sep, "--branch", "5"), "--branch 5", "1, 2, 3, 4")
+        self.assertBadInput(run("continue", sm, "--to", "x"), "--to x")
+        self.assertBadInput(run("bifurcation-tree", sm, "--param", "Q"), "--param Q", "not a parameter")
+        # the separatrix's branches: the rows by branch, the notes with -o on standard output
+        out = self.path("sep.csv")
+        r = run("separatrix", sep, "--branch", "1,2", "-o", out)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertEqual({row["branch"] for row in csv.DictReader(open(out))}, {"1", "2"})
+        self.assertIn("branch 2:", r.stdout)
+
     def test_separatrix_surface_ram(self):
         sm = os.path.join(SRC, "scenes", "standard_map.json")
         out = self.path("s.csv")

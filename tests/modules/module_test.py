@@ -218,9 +218,10 @@ class Module(unittest.TestCase):
                         f"assert not missing, missing\n")
                 r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env(**pyenv))
                 self.assertEqual(r.returncode, 0, r.stderr)
-                png = os.path.join(TMP, t["id"] + ".png")
-                self.ok("chart", scene, "--view", t["chart"], "-o", png)
-                self.assertGreater(os.path.getsize(png), 1000)
+                if t["chart"]:  # the fixed point, separatrices and the tree are drawn on the map (GUI)
+                    png = os.path.join(TMP, t["id"] + ".png")
+                    self.ok("chart", scene, "--view", t["chart"], "-o", png)
+                    self.assertGreater(os.path.getsize(png), 1000)
                 for output, q in t["output_quantities"].items():  # each output a sweep can chart is one
                     self.assertIn(output, names)
                     self.assertIn(q, t["sweep_quantities"])

@@ -366,3 +366,23 @@ def test_a_model_file_from_python_equals_the_cli(tmp_path, monkeypatch):
     content["equations"]["px"] = "-x - 2*x*yy"
     with pytest.raises(ValueError, match=r"equations.px: column 10: unknown name 'yy'"):
         rollviz.Model(content)
+
+
+def test_the_fixed_point_family_in_python_is_its_runners():
+    """The runners' flags as keywords, and the table's columns beside the family's arrays."""
+    sm = rollviz.Scene.load(scene_path("tools/continuation.json"))
+    a = sm.continuation(to=4.2, doubled=True)  # a flag argument: continuation.switch = 1
+    b = sm.continuation(to=4.2, switch=1)
+    assert a.order == 2 and np.array_equal(a.parameter_values, b.parameter_values)
+    assert a.parent.parameter_values[0] == 3.5
+    c = sm.continuation(doubled=False)  # a flag given False is not given
+    assert "order" not in c and c.multipliers.dtype == np.complex128
+    # the columns of the CLI's CSV, by name: the trace of the Jacobian at (pi, 0) is 2 - K
+    assert np.array_equal(c.K, c.parameter_values) and c.type == c.types
+    assert np.allclose(c.re1 + c.re2, 2 - c.K, atol=1e-9)
+    assert np.allclose(c.multipliers.real.sum(axis=1), 2 - c.parameter_values, atol=1e-9)
+    t = rollviz.Scene.load(scene_path("tools/bifurcation_tree.json")).bifurcation_tree()
+    assert np.array_equal(t.level, t.rows[:, 0]) and abs(t.doublings[0].parameter - 4) < 1e-6
+    assert len(t.type) == t.rows.shape[0]
+    f = rollviz.Scene.load(scene_path("tools/fixedpoint.json")).fixedpoint()
+    assert f.path.shape[1] == 2 and np.allclose(f.path[-1], f.point)

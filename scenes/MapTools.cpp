@@ -1,0 +1,450 @@
+// MapTools.cpp -- the runners of the fixed-point family (scenes/ToolRunner.h): fixedpoint, continuation,
+// separatrix, bifurcation_tree, on the scene's map. Every front end derives its part from them -- the CLI
+// command (flags, --json, -o, what it says on the way), the Python method (its result's shape is written
+// here, `python`), the chart of a continuation; the GUI runs them on its map window (ToolRunner::onTheMap).
+// The computations are dynamics/tools' (FixedPoint.h, Continuation.h, Separatrix.h, BifurcationTree.h).
+#include "dynamics/core/Errors.h"
+#include "dynamics/tools/BifurcationTree.h"
+#include "dynamics/tools/ToolSettings.h"
+#include "scenes/BuiltinTools.h"
+#include "scenes/FixedPointJson.h"
+#include "scenes/JsonFields.h"
+#include "scenes/SceneTools.h"
+#include "scenes/ToolRunner.h"
+
+#include <fmt/core.h>
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+namespace rv {
+
+namespace {
+
+using nlohmann::json;
+
+// --guess x,y[,z]: fixedpoint.guess
+ToolArgument guessArgument() {
+  return {"guess", "X,Y[,Z]",
+          "starting point in map coordinates (default: fixedpoint.guess, or the scene's initial map point)",
+          [](const std::string& value) {
+            return std::vector<SceneOverride>{{"fixedpoint.guess", json(commaNumbers(value)).dump()}};
+          }};
+}
+
+// an argument that is another section's setting under a short name (--order is fixedpoint.order)
+ToolArgument settingArgument(const std::string& name, const std::string& key, const std::string& valueName,
+                             const std::string& description) {
+  return {name, valueName, description, [key](const std::string& value) {
+            // a JSON value as is (a number), anything else as a string
+            const json parsed = json::parse(value, nullptr, false);
+            return std::vector<SceneOverride>{
+                {key, parsed.is_discarded() || parsed.is_string() ? json(value).dump() : value}};
+          }};
+}
+
+std::vector<ToolArgument> searchArguments() {
+  return {guessArgument(),
+          settingArgument("order", "fixedpoint.order", "N",
+                          "order n of the map Map^n (default: fixedpoint.order)"),
+          settingArgument("method", "fixedpoint.method", "newton|gradient",
+                          "the search: newton or gradient (default: fixedpoint.method)")};
+}
+
+// the continuation's everyday flags beside its section's settings (its own `method` is natural|arclength)
+std::vector<ToolArgument> continuationArguments() {
+  return {guessArgument(),
+          settingArgument("order", "fixedpoint.order", "N",
+                          "order n of the map Map^n (default: fixedpoint.order)"),
+          settingArgument("param", "continuation.parameter", "NAME",
+                          "the model parameter to continue in (default: continuation.parameter)"),
+          settingArgument("to", "continuation.to", "VALUE",
+                          "finite value of the parameter (default: continuation.to)")};
+}
+
+json pointsJson(const std::vector<Eigen::VectorXd>& points) {
+  json j = json::array();
+  for (const auto& p : points)
+    j.push_back(toVector(p));
+  return j;
+}
+
+// a fixed point as the fixedpoint tool gives it (its search path apart)
+json fixedPointFields(const FixedPointResult& r, const ReturnMap& map) {
+  return {{"point", toVector(r.point)},
+          {"coordinates", map.coordinateNames()},
+          {"multipliers", multipliersJson(r.multipliers)},
+          {"type", toString(r.type)},
+          {"residual", r.residual},
+          {"iterations", r.iterations},
+          {"evaluations", r.evaluations},
+          {"order", map.order()}};
+}
+
+// the search path as rows of points (Python always has it)
+json searchPathRows(const FixedPointResult& r) {
+  std::vector<Eigen::VectorXd> points;
+  for (const auto& q : r.path)
+    points.push_back(q.point);
+  return pointsJson(points);
+}
+
+ToolResult runFixedPoint(const Scene& scene, const ToolControl& control) {
+  const SceneMap s(scene);
+  const ReturnMap map = s.map();
+  ToolResult result;
+  FixedPointResult r;
+  try {
+    r = findFixedPoint(map, s.guess(), s.search(), control);
+  } catch (const Stopped&) {
+    result.stopped = true;
+    return result;
+  }
+  result.fields = fixedPointFields(r, map);
+  if (scene.tool("fixedpoint").choice("path") == "yes") {
+    json path = json::array();
+    for (const auto& q : r.path)
+      path.push_back({{"point", toVector(q.point)}, {"residual", q.residual}});
+    result.fields["path"] = path;
+  }
+  result.python = fixedPointFields(r, map);
+  result.python["path"] = searchPathRows(r);
+  return result;
+}
+
+std::string describeFixedPoint(const ToolResult& r) {
+  const json& f = r.fields;
+  if (!f.contains("point")) return {};
+  std::string text;
+  if (f.contains("path"))
+    for (const auto& q : f["path"])
+      text +=
+          fmt::format("search: {:.17g}  |Map^n(x) - x| = {:.3g}\n",
+                      fmt::join(q["point"].get<std::vector<double>>(), ", "), q["residual"].get<double>());
+  text += fmt::format("point: {:.17g}\n", fmt::join(f["point"].get<std::vector<double>>(), ", "));
+  for (const auto& z : f["multipliers"]) {
+    const double re = z[0], im = z[1];
+    text += fmt::format("multiplier: {:.15g} {:+.15g} i  (|m| = {:.15g})\n", re, im, std::hypot(re, im));
+  }
+  text += fmt::format("type: {}\nresidual: {:.3g}\niterations: {}\nmap evaluations: {}\n",
+                      f["type"].get<std::string>(), f["residual"].get<double>(), f["iterations"].get<int>(),
+                      f["evaluations"].get<long>());
+  return text;
+}
+
+// --- continuation
+
+json changeJson(const TypeChange& t) {
+  return {{"parameter", t.parameter},
+          {"kind", toString(t.kind)},
+          {"from", toString(t.from)},
+          {"to", toString(t.to)},
+          {"point", toVector(t.at.fixedPoint.point)},
+          {"multipliers", multipliersJson(t.at.fixedPoint.multipliers)}};
+}
+
+// what the CLI's --json says of a family
+json familySummary(const Continuation& family, const ContinuationSettings& c) {
+  json changes = json::array();
+  for (const auto& t : family.changes())
+    changes.push_back(changeJson(t));
+  return {{"parameter", c.parameter},
+          {"method", c.method == ContinuationMethod::Arclength ? "arclength" : "natural"},
+          {"points", family.points().size()},
+          {"last", family.points().empty() ? 0.0 : family.points().back().parameter},
+          {"changes", changes},
+          {"end", family.end()}};
+}
+
+// a family as Python has it: its points, multipliers and types as arrays, its changes described
+json familyPython(const Continuation& family, const ContinuationSettings& c, const ReturnMap& map,
+                  const std::string& failure) {
+  json values = json::array(), points = json::array(), multipliers = json::array(), residual = json::array(),
+       types = json::array(), changes = json::array();
+  for (const auto& p : family.points()) {
+    values.push_back(p.parameter);
+    points.push_back(toVector(p.fixedPoint.point));
+    multipliers.push_back(multipliersJson(p.fixedPoint.multipliers));
+    residual.push_back(p.fixedPoint.residual);
+    types.push_back(toString(p.fixedPoint.type));
+  }
+  for (const auto& t : family.changes()) {
+    json ch = changeJson(t);
+    ch["description"] = describe(t, c.parameter);
+    changes.push_back(ch);
+  }
+  return {{"parameter", c.parameter},
+          {"parameter_values", values},
+          {"coordinates", map.coordinateNames()},
+          {"points", points},
+          {"multipliers", multipliers},
+          {"residual", residual},
+          {"types", types},
+          {"changes", changes},
+          {"failure", failure},
+          {"end", failure.empty() ? family.end() : failure}};
+}
+
+ToolResult runContinuation(const Scene& scene, const ToolControl& control) {
+  const SceneMap s(scene);
+  const ContinuationSettings c = s.continuation();
+  const auto run = s.continuationRun();
+  Continuation& cont = *run;
+  ToolResult result;
+  const ReturnMap map = s.map();
+  // the table: the parameter, the point, its multipliers, the residual; its type as text, last
+  const auto head = [&](std::size_t multipliers) {
+    result.table.names = {c.parameter};
+    for (const auto& n : map.coordinateNames())
+      result.table.names.push_back(n);
+    for (std::size_t i = 1; i <= multipliers; ++i) {
+      result.table.names.push_back(fmt::format("re{}", i));
+      result.table.names.push_back(fmt::format("im{}", i));
+    }
+    result.table.names.push_back("residual");
+    result.table.values.assign(result.table.names.size(), {});
+    result.text = {{"type", {}, result.table.names.size()}};
+  };
+  head(static_cast<std::size_t>(map.dimension()));
+  bool done = false;
+  try {
+    done = cont.run(
+        control,
+        [&](const ContinuationPoint& p) {
+          if (result.table.rows() == 0) {
+            head(p.fixedPoint.multipliers.size());
+            if (cont.doubled())
+              result.notes.push_back(
+                  fmt::format("the family of order {} born at the period doubling starts at {} = {:.12g}",
+                              2 * s.section().order, c.parameter, p.parameter));
+          }
+          std::vector<double> row{p.parameter};
+          for (double x : toVector(p.fixedPoint.point))
+            row.push_back(x);
+          for (auto z : p.fixedPoint.multipliers)
+            row.push_back(z.real()), row.push_back(z.imag());
+          row.push_back(p.fixedPoint.residual);
+          result.table.addRow(row);
+          result.text[0].values.emplace_back(toString(p.fixedPoint.type));
+        },
+        [&](const TypeChange& t) { result.notes.push_back(describe(t, c.parameter)); });
+  } catch (const ComputationError& e) {
+    if (cont.points().empty() || (c.switchAt > 0 && !cont.doubled())) throw;
+    result.failure = e.what(); // the family up to here is a result: keep it, and say why it ends
+  }
+  result.stopped = !done && result.failure.empty();
+  const Continuation& family = cont.doubled() ? *cont.doubled() : cont;
+  result.fields = familySummary(cont, c);
+  if (cont.doubled()) {
+    result.fields["doubled"] = familySummary(family, c);
+    result.fields["doubled"]["order"] = 2 * s.section().order;
+    result.fields["doubled"]["first"] = family.points().front().parameter;
+  }
+  if (done && (c.method == ContinuationMethod::Arclength || cont.doubled()))
+    result.notes.push_back("the family ends: " + family.end());
+  if (!cont.doubled()) {
+    result.python = familyPython(cont, c, map, result.failure);
+  } else { // switched: the family of doubled order, its parent under "parent"
+    SectionSettings twice = s.section();
+    twice.order *= 2;
+    result.python = familyPython(family, c, ReturnMap(*scene.model, s.integrators(), twice), result.failure);
+    result.python["order"] = twice.order;
+    result.python["parent"] = familyPython(cont, c, map, "");
+  }
+  return result;
+}
+
+// --- separatrix
+
+// separatrix.branches, else separatrix.branch
+std::vector<int> branchesOf(const Scene& scene) {
+  const json& doc = scene.document;
+  if (doc.contains("separatrix") && doc["separatrix"].contains("branches")) {
+    const json& b = doc["separatrix"]["branches"];
+    if (b.is_string()) return {1, 2, 3, 4};
+    return b.get<std::vector<int>>();
+  }
+  return {static_cast<int>(scene.tool("separatrix")["branch"])};
+}
+
+ToolArgument branchArgument() {
+  return {"branch", "1,2,3,4|all",
+          "the branches to grow, comma-separated, or all (default: separatrix.branch)",
+          [](const std::string& value) {
+            if (value == "all") return std::vector<SceneOverride>{{"separatrix.branches", "\"all\""}};
+            const auto list = commaNumbers(value);
+            for (double b : list)
+              if (b != 1 && b != 2 && b != 3 && b != 4) throw InputError("branches are 1, 2, 3, 4");
+            return std::vector<SceneOverride>{{"separatrix.branches", json(list).dump()}};
+          }};
+}
+
+ToolResult runSeparatrix(const Scene& scene, const ToolControl& control) {
+  const SceneMap s(scene);
+  const ReturnMap map = s.map();
+  if (map.dimension() != 2) throw InputError("separatrix: separatrices are drawn for 2D maps only");
+  const std::vector<int> list = branchesOf(scene);
+  ToolResult result;
+  FixedPointResult fp;
+  try {
+    fp = findFixedPoint(map, s.guess(), s.search(), control);
+  } catch (const Stopped&) {
+    result.stopped = true;
+    return result;
+  }
+  result.table.names = {"branch"};
+  for (const auto& n : map.coordinateNames())
+    result.table.names.push_back(n);
+  result.table.names.push_back("parameter");
+  result.table.values.assign(result.table.names.size(), {});
+  json branches = json::array(), python = json::object();
+  for (int b : list) {
+    SeparatrixSettings ss = separatrixSettings(scene.tool("separatrix"), s.search());
+    ss.branch = b;
+    const SeparatrixResult r = growSeparatrix(map, fp, ss, control);
+    for (std::size_t i = 0; i < r.points.size(); ++i) {
+      std::vector<double> row{static_cast<double>(b)};
+      for (double x : toVector(r.points[i]))
+        row.push_back(x);
+      row.push_back(r.parameters[i]);
+      result.table.addRow(row);
+    }
+    result.notes.push_back(fmt::format(
+        "branch {}: {} points, multiplier {:.12g} ({}), linear region {:g}, ended by {}", b, r.points.size(),
+        r.multiplier, r.unstable ? "outgoing" : "incoming", r.linearRegion, r.stoppedBecause));
+    const json branch{{"multiplier", r.multiplier},
+                      {"unstable", r.unstable},
+                      {"linear_region", r.linearRegion},
+                      {"ended_by", r.stoppedBecause}};
+    json numbered = branch;
+    numbered["branch"] = b;
+    numbered["points"] = r.points.size();
+    branches.push_back(numbered);
+    json x = branch;
+    x["points"] = pointsJson(r.points);
+    x["parameters"] = r.parameters;
+    python[std::to_string(b)] = x; // Python: a dict by branch number
+    if (r.stoppedBecause == "stopped") {
+      result.stopped = true;
+      break;
+    }
+  }
+  result.fields = {{"fixedpoint", fixedPointFields(fp, map)}, {"branches", branches}};
+  json fixed = fixedPointFields(fp, map);
+  fixed["path"] = searchPathRows(fp);
+  result.python = {{"fixedpoint", fixed}, {"branches", python}};
+  return result;
+}
+
+// --- bifurcation tree
+
+ToolResult runBifurcationTree(const Scene& scene, const ToolControl& control) {
+  const SceneMap s(scene);
+  const ContinuationSettings c = s.continuation();
+  const BifurcationTreeSettings t = bifurcationTreeSettings(scene.tool("bifurcation_tree"), c);
+  const double start = s.spec().modelParameters[c.parameter];
+  const ReturnMap map = s.map();
+  ToolResult result;
+  result.table.names = {"level", "order", c.parameter};
+  for (const auto& n : map.coordinateNames())
+    result.table.names.push_back(n);
+  result.table.values.assign(result.table.names.size(), {});
+  result.text = {{"type", {}, result.table.names.size()}};
+  BifurcationTreeResult r;
+  try {
+    bifurcationTree(
+        s.spec().modelAt(c.parameter), s.integrators(), s.section(), start, s.guess(), t, control,
+        [&](const TreeBranch& b, const ContinuationPoint& p) {
+          std::vector<double> row{static_cast<double>(b.level), static_cast<double>(b.order), p.parameter};
+          for (double x : toVector(p.fixedPoint.point))
+            row.push_back(x);
+          result.table.addRow(row);
+          result.text[0].values.emplace_back(toString(p.fixedPoint.type));
+        },
+        [&](const PeriodDoubling& d) {
+          result.notes.push_back(
+              fmt::format("period doubling of order {} at {} = {:.12g}", d.order, c.parameter, d.parameter));
+        },
+        &r);
+  } catch (const Stopped&) {
+    result.stopped = true;
+  }
+  for (double q : r.ratios())
+    result.notes.push_back(fmt::format("ratio: {:.10g}", q));
+  if (!r.end.empty()) result.notes.push_back("the tree ends: " + r.end);
+  json doublings = json::array();
+  for (const auto& x : r.doublings)
+    doublings.push_back({{"level", x.level}, {"order", x.order}, {"parameter", x.parameter}});
+  result.fields = {
+      {"parameter", c.parameter}, {"doublings", doublings}, {"ratios", r.ratios()}, {"end", r.end}};
+  json rows = json::array();
+  for (long k = 0; k < result.table.rows(); ++k) {
+    std::vector<double> row;
+    for (const auto& column : result.table.values)
+      row.push_back(column[static_cast<std::size_t>(k)]);
+    rows.push_back(row);
+  }
+  result.python = result.fields;
+  result.python["columns"] = result.table.names;
+  result.python["rows"] = rows;
+  result.python["types"] = result.text[0].values;
+  return result;
+}
+
+} // namespace
+
+void registerMapTools() {
+  addToolRunner("fixedpoint",
+                {.run = runFixedPoint,
+                 .arguments = {guessArgument(),
+                               {.name = "path",
+                                .description = "also give the whole search path (the manual's "
+                                               "\"show all points\"; fixedpoint.path = yes)",
+                                .toSettings =
+                                    [](const std::string&) {
+                                      return std::vector<SceneOverride>{{"fixedpoint.path", "\"yes\""}};
+                                    },
+                                .flag = true}},
+                 .describe = describeFixedPoint,
+                 .complexFields = {"multipliers"},
+                 .onTheMap = true});
+  auto continuation = continuationArguments();
+  continuation.push_back({.name = "arclength",
+                          .description =
+                              "pseudo-arclength continuation, which passes folds (continuation.method = "
+                              "arclength)",
+                          .toSettings =
+                              [](const std::string&) {
+                                return std::vector<SceneOverride>{{"continuation.method", "\"arclength\""}};
+                              },
+                          .flag = true});
+  continuation.push_back(
+      {.name = "doubled",
+       .description =
+           "branch switching: the family of doubled order born at the first period doubling instead, "
+           "continued to the end of [start, --to] on its side (continuation.switch = 1)",
+       .toSettings =
+           [](const std::string&) {
+             return std::vector<SceneOverride>{{"continuation.switch", "1"}};
+           },
+       .flag = true});
+  addToolRunner("continuation", {.run = runContinuation,
+                                 .arguments = continuation,
+                                 .tableIsResult = true,
+                                 .complexFields = {"multipliers"},
+                                 .onTheMap = true});
+  auto separatrix = searchArguments();
+  separatrix.push_back(branchArgument());
+  addToolRunner("separatrix", {.run = runSeparatrix,
+                               .arguments = separatrix,
+                               .tableIsResult = true,
+                               .complexFields = {"multipliers"},
+                               .onTheMap = true});
+  auto tree = continuationArguments();
+  tree.push_back(searchArguments()[2]); // --method: the search's (the tree's section has none)
+  tree.push_back(settingArgument("step", "continuation.step", "STEP",
+                                 "signed step of the parameter (default: continuation.step)"));
+  addToolRunner("bifurcation_tree",
+                {.run = runBifurcationTree, .arguments = tree, .tableIsResult = true, .onTheMap = true});
+}
+
+} // namespace rv
