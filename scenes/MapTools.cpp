@@ -390,43 +390,39 @@ ToolResult runBifurcationTree(const Scene& scene, const ToolControl& control) {
   return result;
 }
 
+// a flag that sets a scene key to a value (--doubled is continuation.switch = 1)
+ToolArgument flagArgument(const std::string& name, const std::string& key, const std::string& value,
+                          const std::string& description) {
+  return {.name = name,
+          .description = description,
+          .toSettings =
+              [key, value](const std::string&) {
+                return std::vector<SceneOverride>{{key, value}};
+              },
+          .flag = true};
+}
+
 } // namespace
 
 void registerMapTools() {
-  addToolRunner("fixedpoint",
-                {.run = runFixedPoint,
-                 .arguments = {guessArgument(),
-                               {.name = "path",
-                                .description = "also give the whole search path (the manual's "
-                                               "\"show all points\"; fixedpoint.path = yes)",
-                                .toSettings =
-                                    [](const std::string&) {
-                                      return std::vector<SceneOverride>{{"fixedpoint.path", "\"yes\""}};
-                                    },
-                                .flag = true}},
-                 .describe = describeFixedPoint,
-                 .complexFields = {"multipliers"},
-                 .onTheMap = true});
+  addToolRunner(
+      "fixedpoint",
+      {.run = runFixedPoint,
+       .arguments = {guessArgument(), flagArgument("path", "fixedpoint.path", "\"yes\"",
+                                                   "also give the whole search path (the manual's \"show "
+                                                   "all points\"; fixedpoint.path = yes)")},
+       .describe = describeFixedPoint,
+       .complexFields = {"multipliers"},
+       .onTheMap = true});
   auto continuation = continuationArguments();
-  continuation.push_back({.name = "arclength",
-                          .description =
-                              "pseudo-arclength continuation, which passes folds (continuation.method = "
-                              "arclength)",
-                          .toSettings =
-                              [](const std::string&) {
-                                return std::vector<SceneOverride>{{"continuation.method", "\"arclength\""}};
-                              },
-                          .flag = true});
   continuation.push_back(
-      {.name = "doubled",
-       .description =
-           "branch switching: the family of doubled order born at the first period doubling instead, "
-           "continued to the end of [start, --to] on its side (continuation.switch = 1)",
-       .toSettings =
-           [](const std::string&) {
-             return std::vector<SceneOverride>{{"continuation.switch", "1"}};
-           },
-       .flag = true});
+      flagArgument("arclength", "continuation.method", "\"arclength\"",
+                   "pseudo-arclength continuation, which passes folds (continuation.method = "
+                   "arclength)"));
+  continuation.push_back(flagArgument("doubled", "continuation.switch", "1",
+                                      "branch switching: the family of doubled order born at the first "
+                                      "period doubling instead, continued to the "
+                                      "end of [start, --to] on its side (continuation.switch = 1)"));
   addToolRunner("continuation", {.run = runContinuation,
                                  .arguments = continuation,
                                  .tableIsResult = true,
