@@ -4,6 +4,8 @@
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/Format.h"
 #include "dynamics/tools/FixedPoint.h"
+#include "render/charts/Chart3D.h"
+#include "render/charts/PlotChart.h"
 #include "render/charts/ToolCharts.h"
 #include "scenes/BuiltinTools.h"
 #include "scenes/ToolRunner.h"
@@ -28,6 +30,50 @@ std::unique_ptr<Chart> bifurcationCurveChart(const Scene&, const ToolResult& r) 
   drawCurves(*chart, t.values[0], {t.values[1]}, marks);
   chart->setTitle(format("%s curve in (%s, %s)", r.fields.value("kind", std::string()).c_str(),
                          t.names[0].c_str(), t.names[1].c_str()));
+  return chart;
+}
+
+// the map's points: its first two coordinates (a 1D map's against the time)
+std::unique_ptr<Chart> poincareChart(const Scene&, const ToolResult& r) {
+  const auto& t = r.table;
+  // the columns are the coordinates, t, sheet: a 1D map's second column is the time
+  auto chart = std::make_unique<PoincareChart>(t.names.at(0), t.names.at(1));
+  chart->addSeries(t.values.at(0), t.values.at(1), seriesColor(0));
+  chart->select(0);
+  chart->setTitle("Poincaré map");
+  return chart;
+}
+
+// the map in three dimensions
+std::unique_ptr<Chart> map3dChart(const Scene&, const ToolResult& r) {
+  const auto& t = r.table;
+  auto chart =
+      std::make_unique<Chart3D>(std::array<std::string, 3>{t.names.at(0), t.names.at(1), t.names.at(2)});
+  chart->addSeries(t.values[0], t.values[1], t.values[2], seriesColor(0), 3);
+  return chart;
+}
+
+// the plot section's observables, in the plot window's ranges and point type
+std::unique_ptr<Chart> plotChart(const Scene& scene, const ToolResult& r) {
+  std::array<std::vector<double>, 3> c;
+  for (std::size_t i = 0; i < r.table.values.size() && i < 3; ++i)
+    c[i] = r.table.values[i];
+  auto plot = std::make_unique<PlotChart>(scene.plot.settings.axes, scene.plot.chart);
+  plot->setSeries(plot->addSeries(seriesColor(0)), c);
+  return plot;
+}
+
+// the multipliers on the complex plane, step after step of the continuation
+std::unique_ptr<Chart> multipliersChart(const Scene&, const ToolResult& r) {
+  std::vector<std::vector<std::complex<double>>> steps;
+  for (const auto& row : r.fields.at("multipliers")) {
+    steps.emplace_back();
+    for (const auto& z : row)
+      steps.back().emplace_back(z[0].get<double>(), z[1].get<double>());
+  }
+  auto chart = std::make_unique<PoincareChart>("Re", "Im");
+  drawMultipliers(*chart, steps);
+  chart->setTitle("Multipliers");
   return chart;
 }
 
@@ -170,6 +216,10 @@ void registerBuiltinCharts() {
     addToolChart("spectrum", spectrumChart);
     addToolChart("diagram", diagramChart);
     addToolChart("continuation", continuationChart);
+    addToolChart("poincare", poincareChart);
+    addToolChart("map3d", map3dChart);
+    addToolChart("plot", plotChart);
+    addToolChart("multipliers", multipliersChart);
     addToolChart("surface", gridChart);
     addToolChart("ram", gridChart);
     addToolChart("lyapunov", [](const Scene&, const ToolResult& r) {

@@ -358,6 +358,7 @@ void registerBuiltinTools() {
     addToolRunner("diagram", {runDiagram});
     registerGridTools();
     registerMapTools();
+    registerPoincareTools();
     addToolRunner("lyapunov", {.start = [](const Scene& s) { return std::make_unique<LyapunovToolRun>(s); },
                                .tableName = "history"});
     addLanesEvaluator("megno", megnoOnLanesOf);

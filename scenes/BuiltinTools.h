@@ -20,6 +20,9 @@ void registerGridTools();
 /// Binds the runners of the fixed-point family: fixedpoint, continuation, separatrix, bifurcation_tree
 /// (scenes/MapTools.cpp); called by the above.
 void registerMapTools();
+/// Binds the runners of poincare, map3d, plot and multipliers (scenes/PoincareTools.cpp); called by the
+/// above.
+void registerPoincareTools();
 /// Binds their charts (scenes/BuiltinCharts.cpp, VTK) after their runners; idempotent and thread-safe.
 void registerBuiltinCharts();
 

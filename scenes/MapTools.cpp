@@ -1,8 +1,9 @@
 // MapTools.cpp -- the runners of the fixed-point family (scenes/ToolRunner.h): fixedpoint, continuation,
-// separatrix, bifurcation_tree, on the scene's map. Every front end derives its part from them -- the CLI
-// command (flags, --json, -o, what it says on the way), the Python method (its result's shape is written
-// here, `python`), the chart of a continuation; the GUI runs them on its map window (ToolRunner::onTheMap).
-// The computations are dynamics/tools' (FixedPoint.h, Continuation.h, Separatrix.h, BifurcationTree.h).
+// multipliers, separatrix, bifurcation_tree, on the scene's map. Every front end derives its part from them
+// -- the CLI command (flags, --json, -o, what it says on the way), the Python method (its result's shape is
+// written here, `python`), the chart of a continuation; the GUI runs them on its map window
+// (ToolRunner::ownWindow). The computations are dynamics/tools' (FixedPoint.h, Continuation.h, Separatrix.h,
+// BifurcationTree.h).
 #include "dynamics/core/Errors.h"
 #include "dynamics/tools/BifurcationTree.h"
 #include "dynamics/tools/ToolSettings.h"
@@ -390,6 +391,36 @@ ToolResult runBifurcationTree(const Scene& scene, const ToolControl& control) {
   return result;
 }
 
+// the multipliers of the scene's fixed point along its continuation (or of the point alone)
+ToolResult runMultipliers(const Scene& scene, const ToolControl& control) {
+  const SceneMap s(scene);
+  std::vector<std::vector<std::complex<double>>> path;
+  ToolResult r;
+  try {
+    path = multiplierPath(s, control);
+  } catch (const Stopped&) {
+    r.stopped = true;
+    return r;
+  }
+  const std::size_t m = path.empty() ? 0 : path.front().size();
+  r.table.names = {"step"};
+  for (std::size_t i = 1; i <= m; ++i) {
+    r.table.names.push_back(fmt::format("re{}", i));
+    r.table.names.push_back(fmt::format("im{}", i));
+  }
+  r.table.values.assign(r.table.names.size(), {});
+  nlohmann::json all = nlohmann::json::array();
+  for (std::size_t k = 0; k < path.size(); ++k) {
+    std::vector<double> row{static_cast<double>(k)};
+    for (auto z : path[k])
+      row.push_back(z.real()), row.push_back(z.imag());
+    r.table.addRow(row);
+    all.push_back(multipliersJson(path[k]));
+  }
+  r.fields = {{"multipliers", all}};
+  return r;
+}
+
 // a flag that sets a scene key to a value (--doubled is continuation.switch = 1)
 ToolArgument flagArgument(const std::string& name, const std::string& key, const std::string& value,
                           const std::string& description) {
@@ -413,7 +444,7 @@ void registerMapTools() {
                                                    "all points\"; fixedpoint.path = yes)")},
        .describe = describeFixedPoint,
        .complexFields = {"multipliers"},
-       .onTheMap = true});
+       .ownWindow = true});
   auto continuation = continuationArguments();
   continuation.push_back(
       flagArgument("arclength", "continuation.method", "\"arclength\"",
@@ -427,20 +458,24 @@ void registerMapTools() {
                                  .arguments = continuation,
                                  .tableIsResult = true,
                                  .complexFields = {"multipliers"},
-                                 .onTheMap = true});
+                                 .ownWindow = true});
   auto separatrix = searchArguments();
   separatrix.push_back(branchArgument());
   addToolRunner("separatrix", {.run = runSeparatrix,
                                .arguments = separatrix,
                                .tableIsResult = true,
                                .complexFields = {"multipliers"},
-                               .onTheMap = true});
+                               .ownWindow = true});
   auto tree = continuationArguments();
   tree.push_back(searchArguments()[2]); // --method: the search's (the tree's section has none)
   tree.push_back(settingArgument("step", "continuation.step", "STEP",
                                  "signed step of the parameter (default: continuation.step)"));
+  auto multipliers = continuationArguments();
+  multipliers.push_back(tree.back()); // --step
+  addToolRunner("multipliers",
+                {.run = runMultipliers, .arguments = multipliers, .complexFields = {"multipliers"}});
   addToolRunner("bifurcation_tree",
-                {.run = runBifurcationTree, .arguments = tree, .tableIsResult = true, .onTheMap = true});
+                {.run = runBifurcationTree, .arguments = tree, .tableIsResult = true, .ownWindow = true});
 }
 
 } // namespace rv

@@ -51,6 +51,9 @@ struct ToolResult {
   bool stopped = false;
   /// Where the rows are the nodes of a grid: its shape.
   ToolGrid grid = {};
+  /// Where the rows are points in space: how many of the first columns (1-3) are their position (the others
+  /// are data at the points in a .vtp).
+  int cloud = 0;
   /// What the run said on the way, a line each (where a family's type changes, a tree's ratios): the CLI
   /// prints them (on standard error when the table goes to standard output); --json and Python leave them
   /// out.
@@ -124,9 +127,11 @@ struct ToolRunner {
   /// Fields (at any depth of the result) that hold complex numbers as [re, im] pairs: Python gives them as
   /// complex arrays.
   std::vector<std::string> complexFields = {};
-  /// The GUI runs it on the map window, which draws its points as they come (MapPanel), not in a chart
-  /// window.
-  bool onTheMap = false;
+  /// The GUI shows it in a window of its own, not in a chart window: the map window draws the map's points
+  /// and the fixed-point family as they come (MapPanel), the plot filter has its live window.
+  bool ownWindow = false;
+  /// Its results are point clouds (ToolResult::cloud): the CLI's -o also writes .vtp poly data.
+  bool cloud = false;
 };
 
 /// Begins a run of tool `id` on the scene: the runner's own resumable run, or its `run` wrapped in one that

@@ -4,6 +4,7 @@
 #include "app/cli/Progress.h"
 #include "dynamics/core/Errors.h"
 #include "dynamics/tools/ToolRegistry.h"
+#include "scenes/ToolRunner.h"
 
 #include "render/context/HeadlessContext.h"
 #include "render/export/VtkXmlFiles.h"
@@ -52,12 +53,6 @@ std::pair<int, int> parseSize(const std::string& text) {
       h < 16 || w > 16384 || h > 16384)
     throw InputError("--size " + text + ": expected WIDTHxHEIGHT, each in [16, 16384]");
   return {w, h};
-}
-
-const std::map<std::string, ToolCommandBuilder>& toolCommandBuilders() {
-  static const std::map<std::string, ToolCommandBuilder> builders{
-      {"poincare", addPoincareCommand}, {"sweep", addSweepCommand}};
-  return builders;
 }
 
 namespace {
@@ -111,13 +106,11 @@ int runCli(int argc, char** argv, const GuiLauncher& gui) {
   std::vector<Command> commands{
       addListCommand(app),   addDescribeCommand(app), addDescribeToolCommand(app), addIntegrateCommand(app),
       addRenderCommand(app), addVideoCommand(app),    addChartCommand(app),        addInfoCommand(app)};
-  for (const auto& tool : ToolRegistry::global().entries()) {
-    if (tool.command.empty()) continue;
-    auto* cmd = app.add_subcommand(tool.command, tool.commandHelp);
-    const auto builder = toolCommandBuilders().find(tool.command);
-    commands.push_back(builder != toolCommandBuilders().end() ? builder->second(cmd)
-                                                              : addRegisteredToolCommand(cmd, tool));
-  }
+  // every tool that runs on a scene, derived from its registry entry and runner (a module's too)
+  for (const auto& tool : ToolRegistry::global().entries())
+    if (!tool.command.empty() && findToolRunner(tool.id))
+      commands.push_back(addRegisteredToolCommand(app.add_subcommand(tool.command, tool.commandHelp), tool));
+  commands.push_back(addSweepCommand(app));
   GuiOptions guiOptions;
   if (gui) {
     auto* cmd = app.add_subcommand("gui", "open the GUI on a scene (the default with no arguments)");

@@ -51,13 +51,9 @@ Command addRenderCommand(CLI::App& app);
 Command addVideoCommand(CLI::App& app);
 Command addChartCommand(CLI::App& app);
 
-/// The headless commands of the registered tools (dynamics/tools/ToolRegistry.h): each fills the subcommand
-/// the registry names (ToolEntry::command, with ToolEntry::commandHelp) with its options and its run.
-using ToolCommandBuilder = Command (*)(CLI::App* cmd);
-/// By ToolEntry::command; runCli adds the subcommand of every registered tool that has one from here.
-const std::map<std::string, ToolCommandBuilder>& toolCommandBuilders();
-Command addPoincareCommand(CLI::App* cmd);
-Command addSweepCommand(CLI::App* cmd);
+/// `rollviz sweep`: a tool over a grid of scenes (scenes/Sweep.h), named and described by the registry's
+/// entry.
+Command addSweepCommand(CLI::App& app);
 /// The subcommand of a tool that runs through scenes/ToolRunner.h (a module's tool): SCENE, --set, a flag
 /// per setting of its section (--KEY), --json (its fields), -o (its table as CSV).
 Command addRegisteredToolCommand(CLI::App* cmd, const ToolEntry& tool);

@@ -8,6 +8,7 @@
 #include "app/cli/SweepMpi.h"
 #include "dynamics/core/Errors.h"
 #include "dynamics/io/AtomicFile.h"
+#include "dynamics/tools/ToolRegistry.h"
 #include "render/Snapshot.h"
 #include "render/charts/SweepChart.h"
 #include "render/context/HeadlessContext.h"
@@ -296,7 +297,10 @@ int runSweep(const SweepOptions& o) {
 
 } // namespace
 
-Command addSweepCommand(CLI::App* cmd) {
+Command addSweepCommand(CLI::App& app) {
+  // a sweep runs a tool over many scenes: its own command, with the registry entry's name and help
+  const ToolEntry& entry = ToolRegistry::global().get("sweep");
+  auto* cmd = app.add_subcommand(entry.command, entry.commandHelp);
   auto o = std::make_shared<SweepOptions>();
   cmd->add_option("sweep", o->sweep, "sweep file (JSON: scene, axes, quantity, set, options)")->required();
   cmd->add_option(

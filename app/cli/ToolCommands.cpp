@@ -1,6 +1,6 @@
-// ToolCommands.cpp -- `rollviz poincare` and the command of every tool with a runner (scenes/ToolRunner.h:
-// spectrum, lyapunov, megno, bifurcation-curve, a module's): the tools of dynamics/tools
-// run in the foreground, with progress on a terminal and Ctrl-C keeping what was computed (exit 130).
+// ToolCommands.cpp -- the command of every tool with a runner (scenes/ToolRunner.h: rollviz's own and a
+// module's), derived from its registry entry: the tools of dynamics/tools run in the foreground, with
+// progress on a terminal and Ctrl-C keeping what was computed (exit 130).
 #include "app/cli/Checkpoint.h"
 #include "app/cli/Commands.h"
 #include "app/cli/Output.h"
@@ -21,88 +21,6 @@
 #include <optional>
 
 namespace rv {
-
-namespace {
-
-struct PoincareOptions {
-  SceneArgs scene;
-  long points = 0;
-  std::string output, checkpoint;
-};
-
-} // namespace
-
-Command addPoincareCommand(CLI::App* cmd) {
-  auto o = std::make_shared<PoincareOptions>();
-  addSceneArgs(cmd, o->scene);
-  cmd->add_option("--points", o->points, "how many points (default: the scene's poincare.points)");
-  cmd->add_option(
-         "-o,--output", o->output,
-         "CSV file: the map coordinates, t, sheet (default: standard output); a .vtp file is a point "
-         "cloud for ParaView with the same columns as point data")
-      ->check(writesOneOf({".csv", ".vtp"}));
-  addCheckpointOption(cmd, o->checkpoint);
-  return {cmd, [o] {
-            if (o->points < 0) throw InputError("--points: must be positive");
-            const Scene scene = o->scene.load();
-            const auto map = scenePoincareMap(scene, o->points);
-            if (hasExtension(o->output, ".vtp")) {
-              if (!o->checkpoint.empty()) throw InputError("--checkpoint: only with CSV output");
-              checkWritable(o->output, "-o");
-              NamedColumns table;
-              table.names = map->coordinateNames();
-              table.names.insert(table.names.end(), {"t", "sheet"});
-              const int dims = static_cast<int>(map->coordinateNames().size());
-              Progress progress("poincare");
-              const ToolControl control = interruptibleControl(progress);
-              while (auto p = map->next(control)) {
-                std::vector<double> row = p->coordinates;
-                row.insert(row.end(), {p->time, static_cast<double>(p->sheet)});
-                table.addRow(row);
-              }
-              writePolyDataVtp(o->output, table, {0, dims > 1 ? 1 : -1, dims > 2 ? 2 : -1}, false);
-              return interrupted() ? 130 : 0;
-            }
-            Checkpoint checkpoint(o->checkpoint, "poincare",
-                                  scene.document.dump() + " --points " + std::to_string(o->points));
-            Output out(o->output);
-            std::string text; // what is written, kept for the checkpoint
-            if (auto saved = checkpoint.load()) {
-              map->restore(saved->state);
-              text = std::move(saved->text);
-            } else {
-              for (const auto& n : map->coordinateNames())
-                text += n + ",";
-              text += "t,sheet\n";
-            }
-            std::fputs(text.c_str(), out.get());
-            Progress progress("poincare");
-            const ToolControl control = checkpoint.stoppingWhenDue(interruptibleControl(progress));
-            for (;;) {
-              if (auto p = map->next(control)) {
-                const auto start = text.size();
-                for (double c : p->coordinates)
-                  text += fmt::format("{:.17g},", c);
-                text += fmt::format("{:.17g},{}\n", p->time, p->sheet);
-                std::fputs(text.c_str() + start, out.get());
-                if (!checkpoint.enabled()) text.clear();
-                continue;
-              }
-              // stopped between steps: a due save goes on, Ctrl-C saves and ends, the end of the map ends
-              if (interrupted() || checkpoint.due()) {
-                Snapshot state;
-                map->save(state);
-                checkpoint.save(state, text);
-                if (!interrupted()) continue;
-              }
-              break;
-            }
-            out.commit(); // a failed integration throws before this: no file is left behind
-            if (interrupted()) return 130;
-            checkpoint.finish();
-            return 0;
-          }};
-}
 
 namespace {
 
@@ -221,14 +139,14 @@ Command addRegisteredToolCommand(CLI::App* cmd, const ToolEntry& tool) {
   for (const auto& out : tool.outputs)
     fields += (fields.empty() ? "" : ", ") + out.name;
   cmd->add_flag("--json", o->json, "print one JSON object: " + fields);
-  const std::vector<std::string> formats =
-      runner.grid ? std::vector<std::string>{".csv", ".vti"} : std::vector<std::string>{".csv"};
-  cmd->add_option("-o,--output", o->output,
-                  runner.grid
-                      ? "CSV file: the grid's nodes and values; a .vti file is image data for ParaView"
-                  : runner.tableIsResult ? "CSV file (default: standard output)"
-                                         : "CSV file: the tool's table (.csv)")
-      ->check(writesOneOf(formats));
+  std::vector<std::string> formats{".csv"};
+  std::string what =
+      runner.tableIsResult ? "CSV file (default: standard output)" : "CSV file: the tool's table";
+  if (runner.grid) formats.emplace_back(".vti"), what += "; a .vti file is image data for ParaView";
+  if (runner.cloud)
+    formats.emplace_back(".vtp"),
+        what += "; a .vtp file is a point cloud for ParaView, the columns point data";
+  cmd->add_option("-o,--output", o->output, what)->check(writesOneOf(formats));
   if (resumable(tool)) addCheckpointOption(cmd, o->checkpoint);
   return {cmd, [o, &tool, &runner, section] {
             std::vector<std::string> sets = o->scene.sets;
@@ -254,7 +172,7 @@ Command addRegisteredToolCommand(CLI::App* cmd, const ToolEntry& tool) {
             for (const auto& [name, on] : o->flags)
               if (on) apply(name, "", "--" + name);
             SceneArgs args{o->scene.scene, sets};
-            const bool vti = hasExtension(o->output, ".vti");
+            const bool vti = hasExtension(o->output, ".vti"), vtp = hasExtension(o->output, ".vtp");
             // a table that is the result goes to standard output without -o (not beside --json's object)
             const bool tableOut = !o->output.empty() || (runner.tableIsResult && !o->json);
             std::optional<Scene> loaded;
@@ -267,7 +185,7 @@ Command addRegisteredToolCommand(CLI::App* cmd, const ToolEntry& tool) {
             }
             const Scene& scene = *loaded;
             std::unique_ptr<Output> out;
-            if (vti)
+            if (vti || vtp)
               checkWritable(o->output, "-o");
             else if (tableOut)
               out = std::make_unique<Output>(o->output);
@@ -295,6 +213,9 @@ Command addRegisteredToolCommand(CLI::App* cmd, const ToolEntry& tool) {
               if (r.grid.dimensions == 0)
                 throw ComputationError(tool.id + ": its result is no grid for .vti");
               writeGridVti(o->output, r);
+            } else if (vtp) {
+              if (r.cloud == 0) throw ComputationError(tool.id + ": its result is no point cloud for .vtp");
+              writePolyDataVtp(o->output, r.table, {0, r.cloud > 1 ? 1 : -1, r.cloud > 2 ? 2 : -1}, false);
             } else if (out) {
               writeTableCsv(out->get(), r);
               out->commit();
@@ -307,7 +228,7 @@ Command addRegisteredToolCommand(CLI::App* cmd, const ToolEntry& tool) {
               FILE* notes = out && o->output.empty() ? stderr : stdout;
               for (const auto& line : r.notes)
                 fmt::print(notes, "{}\n", line);
-              if (!out && !vti) {
+              if (!out && !vti && !vtp) {
                 if (runner.describe)
                   fmt::print("{}", runner.describe(r));
                 else

@@ -29,88 +29,11 @@ namespace rv::py {
 
 namespace {
 
-// A tool's call: the scene with its settings applied, the keywords that are no scene keys, the callback.
-struct Call {
-  Scene scene;
-  std::map<std::string, pyb::object> args;
-  pyb::object progress;
-  bool has(const std::string& k) const { return args.count(k) > 0; }
-  template <class T> T get(const std::string& k, T fallback) const {
-    const auto it = args.find(k);
-    return it == args.end() || it->second.is_none() ? fallback : it->second.cast<T>();
-  }
-};
-
-struct Runner {
-  std::vector<std::string> args; ///< keywords of the call that are no scene keys
-  std::string help;              ///< what they mean (docstrings)
-  std::function<pyb::object(Call&)> run;
-};
-
-pyb::array_t<std::complex<double>> complexArray(const std::vector<std::complex<double>>& m) {
-  return toArray(std::vector<std::complex<double>>(m));
-}
-
 // rows of equal length as an n x k array
 pyb::array_t<double> table(std::vector<double>&& flat, std::size_t columns) {
   const auto k = static_cast<pyb::ssize_t>(columns);
   const auto n = k ? static_cast<pyb::ssize_t>(flat.size()) / k : 0;
   return toArray(std::move(flat), {n, k});
-}
-
-std::unique_ptr<SceneMap> sceneMap(const Call& c, bool needGuess = true) {
-  MapToolOverrides o;
-  return std::make_unique<SceneMap>(c.scene, o, needGuess);
-}
-
-pyb::object poincare(Call& c) {
-  std::vector<double> flat;
-  std::size_t width = 0;
-  runJob(c.progress, [&](const ToolControl& control) {
-    const auto map = scenePoincareMap(c.scene);
-    width = map->coordinateNames().size() + 2;
-    while (auto p = map->next(control)) {
-      flat.insert(flat.end(), p->coordinates.begin(), p->coordinates.end());
-      flat.push_back(p->time);
-      flat.push_back(p->sheet);
-    }
-  });
-  return table(std::move(flat), width);
-}
-
-pyb::object multipliers(Call& c) {
-  const auto s = sceneMap(c);
-  std::vector<std::vector<std::complex<double>>> path;
-  runJob(c.progress, [&](const ToolControl& control) { path = multiplierPath(*s, control); });
-  pyb::list out;
-  for (const auto& m : path)
-    out.append(complexArray(m));
-  return out;
-}
-
-pyb::object plot(Call& c) {
-  std::vector<std::vector<double>> points;
-  runJob(c.progress, [&](const ToolControl& control) {
-    auto integ = c.scene.startIntegrator();
-    points = samplePlot(*c.scene.model, *integ, c.scene.plot.settings, control);
-  });
-  std::vector<double> flat;
-  std::size_t width = 0;
-  for (const auto& p : points) {
-    flat.insert(flat.end(), p.begin(), p.end());
-    width = p.size();
-  }
-  return table(std::move(flat), width);
-}
-
-const std::map<std::string, Runner>& runners() {
-  static const std::map<std::string, Runner> r{
-      {"poincare", {{}, "", poincare}},
-      {"map3d", {{}, "", poincare}},
-      {"plot", {{}, "", plot}},
-      {"multipliers", {{}, "", multipliers}},
-  };
-  return r;
 }
 
 // the scene sections a plain keyword of the tool may belong to: its own, its ancestors' in the tree, then the
@@ -216,10 +139,10 @@ pyb::object toPython(const nlohmann::json& j, const std::vector<std::string>& co
 
 // a tool that runs through scenes/ToolRunner.h: its fields, and its table's columns as arrays (or the shape
 // the runner gives Python, ToolResult::python)
-pyb::object registeredTool(const ToolEntry& tool, Call& c) {
+pyb::object registeredTool(const ToolEntry& tool, const ToolRunner& runner, const Scene& scene,
+                           const pyb::object& progress) {
   ToolResult r;
-  runJob(c.progress, [&](const ToolControl& control) { r = rv::runTool(tool, c.scene, control); });
-  const ToolRunner& runner = *findToolRunner(tool.id);
+  runJob(progress, [&](const ToolControl& control) { r = rv::runTool(tool, scene, control); });
   if (!r.python.is_null()) { // its shape, and beside it each column of the table the shape does not name
     pyb::dict d = toPython(r.python, runner.complexFields);
     for (std::size_t k = 0; k < r.table.names.size(); ++k)
@@ -231,12 +154,20 @@ pyb::object registeredTool(const ToolEntry& tool, Call& c) {
     return d;
   }
   if (!r.failure.empty()) throw ComputationError(r.failure);
-  pyb::dict d = pyb::module_::import("json").attr("loads")(toolResultJson(r).dump());
+  if (runner.tableIsResult) { // the table is the result: the package makes it a rollviz.Table
+    std::vector<double> flat;
+    for (long k = 0; k < r.table.rows(); ++k)
+      for (const auto& column : r.table.values)
+        flat.push_back(column[static_cast<std::size_t>(k)]);
+    pyb::dict t;
+    t["columns"] = r.table.names;
+    t["rows"] = table(std::move(flat), r.table.names.size());
+    pyb::dict d;
+    d["_table"] = t;
+    return d;
+  }
+  pyb::dict d = toPython(r.fields, runner.complexFields); // lists of numbers as arrays (exponents)
   d["stopped"] = r.stopped;
-  for (const auto& [name, value] : r.fields.items()) // a list of numbers is an array (exponents)
-    if (value.is_array() && !value.empty() &&
-        std::all_of(value.begin(), value.end(), [](const auto& v) { return v.is_number(); }))
-      d[name.c_str()] = toArray(value.get<std::vector<double>>());
   if (r.grid.dimensions > 0) { // a grid: its axes (x, y, z) and each value column shaped (nz,) ny, nx
     const ToolGrid& g = r.grid;
     const char* axes[] = {"x", "y", "z"};
@@ -267,33 +198,18 @@ pyb::object registeredTool(const ToolEntry& tool, Call& c) {
   return d;
 }
 
-// the Python call of a tool: written here, or the generic one of a tool with a runner
-const Runner* runnerOf(const ToolEntry& tool) {
-  if (const auto it = runners().find(tool.id); it != runners().end()) return &it->second;
-  if (!findToolRunner(tool.id)) return nullptr;
-  static std::map<std::string, Runner> generic;
-  auto [it, fresh] = generic.try_emplace(tool.id);
-  if (fresh) it->second.run = [&tool](Call& c) { return registeredTool(tool, c); };
-  return &it->second;
-}
-
 pyb::object runTool(const Scene& scene, const std::string& id, const pyb::object& progress,
                     const pyb::kwargs& kw) {
   const ToolEntry& tool = ToolRegistry::global().get(id);
-  const Runner* found = runnerOf(tool);
-  if (!found)
+  const ToolRunner* toolRunner = findToolRunner(tool.id);
+  if (!toolRunner)
     throw InputError(id + ": not a tool of a scene" +
                      (id == "sweep" ? " (rollviz.sweep(path) runs a sweep file)" : ""));
-  const Runner& runner = *found;
-  Call call{scene, {}, progress};
   std::vector<SceneOverride> overrides;
-  const ToolRunner* toolRunner = findToolRunner(tool.id);
   for (const auto& [k, v] : kw) {
     const std::string key = pyb::str(k).cast<std::string>();
-    if (std::find(runner.args.begin(), runner.args.end(), key) != runner.args.end()) {
-      call.args[key] = pyb::reinterpret_borrow<pyb::object>(v);
-    } else if (toolRunner && std::any_of(toolRunner->arguments.begin(), toolRunner->arguments.end(),
-                                         [&](const ToolArgument& a) { return a.name == key; })) {
+    if (std::any_of(toolRunner->arguments.begin(), toolRunner->arguments.end(),
+                    [&](const ToolArgument& a) { return a.name == key; })) {
       // an argument standing for settings (x=(0, 1) is grid.x_min, x_max): its value as the CLI's text; one
       // that takes no value (doubled=True) applies when true
       const bool flag = std::any_of(toolRunner->arguments.begin(), toolRunner->arguments.end(),
@@ -317,8 +233,7 @@ pyb::object runTool(const Scene& scene, const std::string& id, const pyb::object
       overrides.push_back(placeKeyword(scene, tool, key, v));
     }
   }
-  call.scene = withOverrides(scene, overrides);
-  return runner.run(call);
+  return registeredTool(tool, *toolRunner, withOverrides(scene, overrides), progress);
 }
 
 pyb::dict toolDict(const ToolEntry& e) {
@@ -362,9 +277,8 @@ pyb::dict toolDict(const ToolEntry& e) {
     }
   }
   d["keywords"] = keywords;
-  const Runner* runner = runnerOf(e);
-  std::vector<std::string> arguments = runner ? runner->args : std::vector<std::string>{};
-  std::string help = runner ? runner->help : std::string();
+  std::vector<std::string> arguments;
+  std::string help;
   const ToolRunner* toolRunner = findToolRunner(e.id);
   if (toolRunner)
     for (const auto& a : toolRunner->arguments) {

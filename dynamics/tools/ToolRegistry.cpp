@@ -135,6 +135,9 @@ ToolRegistry& ToolRegistry::mutableGlobal() {
          .title = "Map3D",
          .parent = "poincare",
          .description = "the map in three dimensions (a chart window)",
+         .command = "map3d",
+         .commandHelp =
+             "the map's points in three dimensions (a 2D map's: the first three state variables), as CSV",
          .chartView = "map3d",
          .outputs = {{"<three coordinates>", "the points in space"}},
          .reference = "manual §2.3.1",
@@ -146,6 +149,8 @@ ToolRegistry& ToolRegistry::mutableGlobal() {
              "the plot section's observables along the 3D view's run and every trajectory of the map "
              "(a live filter window)",
          .section = "plot",
+         .command = "plot",
+         .commandHelp = "the plot section's observables along a scene's trajectory, as CSV",
          .chartView = "plot",
          .outputs = {{"<plot.x, plot.y[, plot.z]>", "the observables at each output"}},
          .reference = "manual §2.4.1-§2.4.2",
@@ -198,8 +203,12 @@ ToolRegistry& ToolRegistry::mutableGlobal() {
          .title = "Multipliers",
          .parent = "continuation",
          .description = "the multipliers of the continued fixed point on the complex plane",
+         .command = "multipliers",
+         .commandHelp =
+             "the multipliers of a fixed point along its continuation (or of the point alone), as CSV",
          .chartView = "multipliers",
-         .outputs = {{"Re, Im", "each multiplier"}},
+         .outputs = {{"step", "the continuation's step (a column, beside re1, im1, re2, im2, ...)"},
+                     {"multipliers", "JSON: each step's multipliers, [re, im] each (complex in Python)"}},
          .reference = "manual §2.4.3",
          .computation = "dynamics/tools/Continuation.h (Continuation)"});
     add({.id = "separatrix",

@@ -742,6 +742,29 @@ class Cli(unittest.TestCase):
         self.assertEqual({row["branch"] for row in csv.DictReader(open(out))}, {"1", "2"})
         self.assertIn("branch 2:", r.stdout)
 
+    def test_map3d_plot_and_multipliers_are_commands_too(self):
+        # Henon-Heiles' crossings of x = 0 in (x, y, px): on the plane, and with py >= 0 on the level E = 1/8
+        rows = list(csv.DictReader(run("map3d", os.path.join(SRC, "scenes", "tools", "map3d.json"), "--points", "50")
+                                   .stdout.splitlines()))
+        self.assertEqual(len(rows), 50)
+        for row in rows:
+            x, y, px = float(row["x"]), float(row["y"]), float(row["px"])
+            self.assertLess(abs(x), 1e-9)
+            self.assertLessEqual(px * px / 2 + y * y / 2 - y ** 3 / 3, 0.125 + 1e-9)  # py^2 / 2 is the rest
+        # the orbit stays inside the potential's triangle (V < 1/6 below the saddles)
+        out = self.path("plot.csv")
+        r = run("plot", os.path.join(SRC, "scenes", "tools", "plot.json"), "--x", "x", "--y", "y", "-o", out)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        with open(out) as f:
+            points = [(float(row["x"]), float(row["y"])) for row in csv.DictReader(f)]
+        self.assertGreater(len(points), 1000)
+        self.assertTrue(all((x * x + y * y) / 2 + x * x * y - y ** 3 / 3 <= 0.125 + 1e-9 for x, y in points))
+        # the product of the Henon map's multipliers is det DF = -b at every step
+        j = json.loads(run("multipliers", os.path.join(SRC, "scenes", "tools", "multipliers.json"), "--json").stdout)
+        self.assertGreater(len(j["multipliers"]), 5)
+        for (a, b), (c, d) in j["multipliers"]:
+            self.assertAlmostEqual(a * c - b * d, -0.3, delta=1e-9)
+
     def test_separatrix_surface_ram(self):
         sm = os.path.join(SRC, "scenes", "standard_map.json")
         out = self.path("s.csv")

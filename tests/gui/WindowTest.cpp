@@ -18,6 +18,7 @@
 #include "app/gui/VisualizerSettings.h"
 #include "dynamics/jobs/JobTree.h"
 #include "dynamics/jobs/PoincareTask.h"
+#include "render/charts/Chart3D.h"
 #include "render/charts/PoincareChart.h"
 #include "render/context/HeadlessContext.h"
 #include "scenes/BuiltinTools.h"
@@ -1861,7 +1862,7 @@ private slots:
     for (const auto& tool : ToolRegistry::global().entries()) {
       const ToolRunner* runner = findToolRunner(tool.id);
       // the fixed-point family runs on the map window (MapTest)
-      if (!runner || runner->onTheMap || tool.chartView.empty() || !tool.origin.empty()) continue;
+      if (!runner || runner->ownWindow || tool.chartView.empty() || !tool.origin.empty()) continue;
       const QString scene = tools + QString::fromStdString(tool.id) + ".json";
       QVERIFY2(QFile::exists(scene), qPrintable("a built-in tool with a runner ships an example: " + scene));
       QVERIFY(window_->openScene(scene));
@@ -1875,14 +1876,18 @@ private slots:
       QTRY_VERIFY_WITH_TIMEOUT(chart->ready() || !chart->failure().isEmpty(), 120000);
       QVERIFY2(chart->ready(), qPrintable(QString::fromStdString(tool.id) + ": " + chart->failure()));
       auto* plane = dynamic_cast<PoincareChart*>(chart->drawn().get());
-      QVERIFY2(plane && plane->chart()->GetNumberOfPlots() > 0, tool.id.c_str());
+      auto* space = dynamic_cast<Chart3D*>(chart->drawn().get()); // map3d: points in a box around them
+      QVERIFY2((plane && plane->chart()->GetNumberOfPlots() > 0) ||
+                   (space && space->bounds()[1] > space->bounds()[0]),
+               tool.id.c_str());
       QVERIFY(chart->findChild<QPushButton*>("save_figure")->isEnabled());
       QVERIFY(keep(chart->grab().toImage(), QString::fromStdString("window_tool_" + tool.id + ".png")));
       chart->close();
       QCoreApplication::sendPostedEvents(nullptr, QEvent::DeferredDelete);
       ++tried;
     }
-    QVERIFY(tried >= 6); // spectrum, lyapunov, megno, bifurcation_curve, surface, ram
+    QVERIFY(tried >=
+            9); // spectrum, lyapunov, megno, map3d, multipliers, bifurcation_curve, surface, ram, diagram
   }
 
   // File > Open model...: a model file runs at its own "initial", joins the problem list, and saving it while

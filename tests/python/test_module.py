@@ -284,11 +284,14 @@ def test_sweep_equals_the_cli(tmp_path):
 def test_every_tool_runs_from_python():
     """Each tool of the registry answers on a small case (the ones above check numbers)."""
     hm = rollviz.Scene.load(scene_path("henon_map.json"))
-    assert hm.map3d(points=10).shape[0] == 10
+    m = rollviz.Scene.load(scene_path("henon_heiles.json")).map3d(points=10)  # a 2D map: the first 3 state variables
+    assert m.shape == (10, 3) and m.columns == ["x", "y", "px"]
     assert hm.spectrum(function="x", samples=256).frequency.size > 0
     assert hm.plot(**{"plot.x": "x", "plot.y": "y", "plot.time_limit": 50}).shape[1] == 2
     r = hm.multipliers(guess=[0.63, 0.19], parameter="a", to=1.35, step=-0.05)
-    assert len(r) >= 2 and all(m.shape == (2,) for m in r)
+    assert r.multipliers.dtype == np.complex128 and r.multipliers.shape[0] >= 2 == r.multipliers.shape[1]
+    assert np.allclose(np.prod(r.multipliers, axis=1), -0.3)  # det of the Henon map's Jacobian: -b
+    assert np.array_equal(r.re1, r.multipliers[:, 0].real) and r.step.size == r.multipliers.shape[0]
     sep = hm.separatrix(guess=[0.63, 0.19], branches=[1], points=50)
     assert sep.fixedpoint.type.startswith("hyperbolic") and sep.branches[1].points.shape[1] == 2
     g = hm.surface(step_x=0.5, step_y=0.5, x_min=-1, x_max=1, y_min=-1, y_max=1)

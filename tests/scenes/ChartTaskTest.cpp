@@ -150,7 +150,7 @@ TEST(ToolTask, RunsTheFirstAlternativeThatDoesNotFail) {
   } catch (const ComputationError& e) {
     EXPECT_NE(std::string(e.what()).find("finds no period doubling point"), std::string::npos) << e.what();
   }
-  EXPECT_THROW(ToolTask("poincare", {henon(0)}, "test"), InputError); // no runner: written by hand
+  EXPECT_THROW(ToolTask("sweep", {henon(0)}, "test"), InputError); // no runner: it runs over many scenes
   EXPECT_THROW(ToolTask("bifurcation_curve", {}, "test"), InputError);
 }
 

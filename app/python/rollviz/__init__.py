@@ -180,28 +180,16 @@ def _wrap(value):
     return value
 
 
-def _plot_axes(scene, settings, width):
-    """The observables on a plot's axes: the call's settings, else the scene's plot section."""
-    section = _json.loads(scene.to_json()).get("plot", {})
-    names = [settings.get(a, settings.get("plot." + a, section.get(a))) for a in ("x", "y", "z")[:width]]
-    return names if all(isinstance(n, str) for n in names) and len(set(names)) == width else \
-        ["x", "y", "z"][:width]
-
-
-def _shaped(tool_id, scene, value, settings=None):
-    """A tool's raw result with names: point sets as Tables, histories as Tables."""
-    if tool_id in ("poincare", "map3d"):
-        return Table(list(scene.map_coordinates) + ["t", "sheet"], value)
-    if tool_id == "plot":
-        data = _np.asarray(value)
-        return Table(_plot_axes(scene, settings or {}, data.shape[1]), data)
-    if not isinstance(value, dict):
-        return _wrap(value)
+def _shaped(value, table=""):
+    """A tool's raw result with names: a table that is the result (a map's points) as a Table, the table the
+    runner names (megno's history) as a Table."""
+    if "_table" in value:
+        return Table(value["_table"]["columns"], value["_table"]["rows"])
     r = _wrap(value)
-    if isinstance(r.get("history"), dict):
-        h = r["history"]
+    if table and isinstance(r.get(table), dict):
+        h = r[table]
         names = ["t"] + [n for n in h if n != "t"] if "t" in h else list(h)
-        r["history"] = Table(names, _np.column_stack([_np.asarray(h[n], dtype=float) for n in names]))
+        r[table] = Table(names, _np.column_stack([_np.asarray(h[n], dtype=float) for n in names]))
     return r
 
 
@@ -581,7 +569,7 @@ def _make_method(tool):
             places = {f"{keywords[k]['section']}.{k}": k for k in settings if k in keywords}
             places.update({k: k for k in settings if "." in k})
             raise _in_python_words(call, scene, places, e) from None
-        return _shaped(tool_id, scene, raw, settings)
+        return _shaped(raw, tool["table"])
 
     method.__name__ = tool_id
     method.__qualname__ = f"Scene.{tool_id}"
