@@ -16,6 +16,7 @@
 #include <fmt/core.h>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+#include <optional>
 
 namespace rv {
 
@@ -89,17 +90,24 @@ json searchPathRows(const FixedPointResult& r) {
   return pointsJson(points);
 }
 
+// the fixed point the scene's search finds; nothing when stopped on request
+std::optional<FixedPointResult> searchFixedPoint(const SceneMap& s, const ReturnMap& map,
+                                                 const ToolControl& control) {
+  try {
+    return findFixedPoint(map, s.guess(), s.search(), control);
+  } catch (const Stopped&) {
+    return std::nullopt;
+  }
+}
+
 ToolResult runFixedPoint(const Scene& scene, const ToolControl& control) {
   const SceneMap s(scene);
   const ReturnMap map = s.map();
   ToolResult result;
-  FixedPointResult r;
-  try {
-    r = findFixedPoint(map, s.guess(), s.search(), control);
-  } catch (const Stopped&) {
-    result.stopped = true;
-    return result;
-  }
+  const auto found = searchFixedPoint(s, map, control);
+  result.stopped = !found;
+  if (!found) return result;
+  const FixedPointResult& r = *found;
   result.fields = fixedPointFields(r, map);
   if (scene.tool("fixedpoint").choice("path") == "yes") {
     json path = json::array();
@@ -285,13 +293,10 @@ ToolResult runSeparatrix(const Scene& scene, const ToolControl& control) {
   if (map.dimension() != 2) throw InputError("separatrix: separatrices are drawn for 2D maps only");
   const std::vector<int> list = branchesOf(scene);
   ToolResult result;
-  FixedPointResult fp;
-  try {
-    fp = findFixedPoint(map, s.guess(), s.search(), control);
-  } catch (const Stopped&) {
-    result.stopped = true;
-    return result;
-  }
+  const auto found = searchFixedPoint(s, map, control);
+  result.stopped = !found;
+  if (!found) return result;
+  const FixedPointResult& fp = *found;
   result.table.names = {"branch"};
   for (const auto& n : map.coordinateNames())
     result.table.names.push_back(n);
