@@ -176,23 +176,4 @@ bool BifurcationTreeTask::run(const ToolControl& control) {
   }
 }
 
-GridTask::GridTask(MapTaskSpec spec, MapGrid::Kind kind, GridSettings settings)
-    : spec_(std::move(spec)), kind_(kind), settings_(settings) {
-  reset();
-}
-
-std::string GridTask::name() const {
-  return kind_ == MapGrid::Kind::Surface ? "Surface |Map(x) - x|" : "Region of allowed motion";
-}
-
-void GridTask::reset() {
-  grid_.reset();
-  holder_ = std::make_unique<MapHolder>(spec_);
-  grid_ = std::make_unique<MapGrid>(holder_->map(), kind_, settings_);
-}
-
-bool GridTask::run(const ToolControl& control) {
-  return grid_->run(control);
-}
-
 } // namespace rv

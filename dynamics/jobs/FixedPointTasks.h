@@ -1,14 +1,14 @@
 // FixedPointTasks.h -- the fixed-point family of tools as jobs (manual §2.3.4-§2.3.9): each streams its
 // results through channels while it runs, stops promptly (the tools poll between map evaluations), and goes
-// on from where it stopped: a fixed-point search from its last point, a continuation from its last step, a
-// grid from the rows left; a separatrix or a bifurcation tree starts again. Failures (no convergence, a
-// non-hyperbolic point, ...) end the job with the reason in its status.
+// on from where it stopped: a fixed-point search from its last point, a continuation from its last step; a
+// separatrix or a bifurcation tree starts again. Failures (no convergence, a non-hyperbolic point, ...) end the
+// job with the reason in its status. (The map window runs them; every front end else runs the tools' runners,
+// scenes/MapTools.cpp.)
 #pragma once
 #include "dynamics/jobs/Channel.h"
 #include "dynamics/jobs/RunSpec.h"
 #include "dynamics/jobs/Task.h"
 #include "dynamics/tools/BifurcationTree.h"
-#include "dynamics/tools/MapGrid.h"
 #include "dynamics/tools/Separatrix.h"
 
 #include <mutex>
@@ -130,25 +130,6 @@ private:
   Channel<TreePoint> points_;
   Channel<PeriodDoubling> doublings_;
   Channel<std::string> ends_;
-};
-
-/// The |Map(x) - x| surface or the region of allowed motion.
-class GridTask final : public Task {
-public:
-  GridTask(MapTaskSpec spec, MapGrid::Kind kind, GridSettings settings);
-  std::string name() const override;
-  std::string describe() const override { return spec_.describe(); }
-  bool run(const ToolControl& control) override;
-  void reset() override;
-  /// The grid; only while the job does not run.
-  const MapGrid& grid() const { return *grid_; }
-
-private:
-  MapTaskSpec spec_;
-  MapGrid::Kind kind_;
-  GridSettings settings_;
-  std::unique_ptr<MapHolder> holder_;
-  std::unique_ptr<MapGrid> grid_;
 };
 
 } // namespace rv

@@ -8,7 +8,7 @@
 #include "app/gui/ToolManager.h"
 #include "dynamics/core/ModelRegistry.h"
 #include "dynamics/jobs/JobTree.h"
-#include "dynamics/jobs/LyapunovTask.h"
+#include "dynamics/jobs/MegnoTask.h"
 #include "dynamics/jobs/PoincareTask.h"
 #include "dynamics/tools/ToolRegistry.h"
 #include "dynamics/tools/ToolSettings.h"
@@ -256,9 +256,9 @@ private slots:
     spec.initialState = spec.makeModel()->stateFromMap({0.1, 0.1}, {}, "test");
     JobTree jobs;
     Job& trajectory = jobs.add(std::make_unique<PoincareTask>(spec, SectionSettings{.maxPoints = 0}));
-    LyapunovSettings ls;
-    ls.maxTime = 1e9;
-    Job& lyapunov = jobs.add(std::make_unique<LyapunovTask>(spec, ls), &trajectory);
+    MegnoSettings ms;
+    ms.maxTime = 1e9;
+    Job& lyapunov = jobs.add(std::make_unique<MegnoTask>(spec, ms), &trajectory);
     std::vector<int> removed;
     ToolManager manager(jobs, [&](Job& j) {
       removed.push_back(j.id());
@@ -266,7 +266,7 @@ private slots:
     });
     manager.refresh();
     QCOMPARE(manager.tree()->topLevelItemCount(), 1);
-    QCOMPARE(manager.tree()->topLevelItem(0)->childCount(), 1); // the Lyapunov job under its trajectory
+    QCOMPARE(manager.tree()->topLevelItem(0)->childCount(), 1); // the MEGNO job under its trajectory
     QCOMPARE(manager.tree()->topLevelItem(0)->text(1), QString("Poincare map"));
 
     manager.select(lyapunov.id());
@@ -283,7 +283,7 @@ private slots:
     QCOMPARE(manager.tree()->topLevelItem(0)->child(0)->foreground(1).color(), QColor(200, 20, 20)); // in red
 
     manager.select(trajectory.id());
-    manager.deleteSelected(); // and the Lyapunov job with it
+    manager.deleteSelected(); // and the MEGNO job with it
     QCOMPARE(removed, std::vector<int>{1});
     QVERIFY(jobs.jobs().empty());
     QCOMPARE(manager.tree()->topLevelItemCount(), 0);

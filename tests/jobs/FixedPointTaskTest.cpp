@@ -92,26 +92,6 @@ TEST(FixedPointJobs, ContinuationStopsPromptlyAndGoesOnToTheSameFamily) {
   }
 }
 
-TEST(FixedPointJobs, GridStopsAndContinues) {
-  JobTree tree;
-  GridSettings g;
-  g.axes[0] = {-0.3, 0.3, 0.01};
-  g.axes[1] = {-0.3, 0.3, 0.01};
-  auto task = std::make_unique<GridTask>(spec("henon_heiles", {{"energy", 0.125}}, Eigen::Vector2d(0, 0)),
-                                         MapGrid::Kind::Surface, g);
-  auto* grid = task.get();
-  Job& job = tree.add(std::move(task));
-  job.start();
-  ASSERT_TRUE(waitFor([&] { return job.progress() > 0.1; }));
-  job.stop();
-  EXPECT_EQ(job.status(), Job::Status::Stopped);
-  const long done = grid->grid().result().done;
-  EXPECT_LT(done, 61 * 61);
-  job.start();
-  ASSERT_TRUE(waitFor([&] { return job.status() == Job::Status::Finished; }));
-  EXPECT_EQ(grid->grid().result().done, 61 * 61);
-}
-
 TEST(FixedPointJobs, SeparatrixRefusesAnEllipticPointInItsStatus) {
   JobTree tree;
   Job& job = tree.add(std::make_unique<SeparatrixTask>(

@@ -3,9 +3,8 @@
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/ModelRegistry.h"
 #include "dynamics/jobs/JobTree.h"
-#include "dynamics/jobs/LyapunovTask.h"
+#include "dynamics/jobs/MegnoTask.h"
 #include "dynamics/jobs/PoincareTask.h"
-#include "dynamics/jobs/SpectrumTask.h"
 
 #include "tests/jobs/WaitFor.h"
 #include <chrono>
@@ -193,24 +192,19 @@ TEST(Job, FailuresAreReportedWithTheReason) {
 TEST(JobTree, ToolsHangUnderTheirTrajectoryAndGoWithIt) {
   JobTree tree;
   Job& map = tree.add(std::make_unique<PoincareTask>(henonHeiles(), SectionSettings{.maxPoints = 0}));
-  LyapunovSettings ls;
-  ls.maxTime = 50;
-  Job& lyap = tree.add(std::make_unique<LyapunovTask>(henonHeiles(), ls), &map);
-  SpectrumSettings ss;
-  ss.function = "x";
-  ss.samples = 1024;
-  Job& spec = tree.add(std::make_unique<SpectrumTask>(henonHeiles(), ss), &map);
-  EXPECT_EQ(lyap.parent(), &map);
+  MegnoSettings ms;
+  ms.maxTime = 50;
+  Job& megno = tree.add(std::make_unique<MegnoTask>(henonHeiles(), ms), &map);
+  ms.maxTime = 20;
+  Job& shorter = tree.add(std::make_unique<MegnoTask>(henonHeiles(), ms), &map);
+  EXPECT_EQ(megno.parent(), &map);
   EXPECT_EQ(tree.children(map).size(), 2u);
-  lyap.start();
-  spec.start();
+  megno.start();
+  shorter.start();
   ASSERT_TRUE(waitFor(
-      [&] { return lyap.status() == Job::Status::Finished && spec.status() == Job::Status::Finished; }));
-  std::vector<SpectrumResult> r;
-  static_cast<SpectrumTask&>(spec.task()).results().take(r);
-  ASSERT_EQ(r.size(), 1u);
-  EXPECT_EQ(r[0].samples, 1024);
-  EXPECT_NEAR(static_cast<LyapunovTask&>(lyap.task()).result().last.time, 50, 1e-9);
+      [&] { return megno.status() == Job::Status::Finished && shorter.status() == Job::Status::Finished; }));
+  EXPECT_NEAR(static_cast<MegnoTask&>(megno.task()).result().last.time, 50, 1e-9);
+  EXPECT_NEAR(static_cast<MegnoTask&>(shorter.task()).result().last.time, 20, 1e-9);
   tree.remove(map);
   EXPECT_TRUE(tree.jobs().empty());
 }

@@ -3,7 +3,7 @@
 // standard map: the point (pi, 0) has the trace 2 - K.
 #include "dynamics/core/Errors.h"
 #include "dynamics/jobs/JobTree.h"
-#include "dynamics/jobs/LyapunovTask.h"
+#include "dynamics/jobs/MegnoTask.h"
 #include "scenes/SceneLoader.h"
 #include "scenes/SceneTools.h"
 
@@ -83,8 +83,8 @@ TEST(EditTask, ASeparatrixKeepsItsBranchAndToolsWithoutSettingsSaySo) {
   EXPECT_FALSE(editTask(branch, standardMap(1.2)));
   EXPECT_EQ(branch.settings().branch, 3);
   const Scene scene = standardMap(0.9);
-  LyapunovTask lyapunov(scene.runSpec(), LyapunovSettings{});
-  EXPECT_THROW(editTask(lyapunov, scene), InputError);
+  MegnoTask megno(scene.runSpec(), MegnoSettings{});
+  EXPECT_THROW(editTask(megno, scene), InputError);
 }
 
 } // namespace
