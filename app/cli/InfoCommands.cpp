@@ -8,6 +8,7 @@
 #include "dynamics/tools/ToolSettings.h"
 #include "scenes/Gallery.h"
 #include "scenes/ModelFile.h"
+#include "scenes/ToolRunner.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -130,6 +131,11 @@ Command addDescribeToolCommand(CLI::App& app) {
         if (e.options) {
           fmt::print("\noptions (a sweep file's \"options\"; id, default, range, meaning):\n");
           printParameters(*e.options);
+        }
+        if (const ToolRunner* runner = findToolRunner(e.id); runner && !runner->arguments.empty()) {
+          fmt::print("\narguments (the command's --NAME, Python's NAME=; they stand for scene settings):\n");
+          for (const auto& a : runner->arguments)
+            fmt::print("  {:<22} {}\n", "--" + a.name + (a.flag ? "" : " " + a.valueName), a.description);
         }
         fmt::print("\noutputs:\n");
         for (const auto& out : e.outputs)

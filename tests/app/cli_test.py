@@ -730,6 +730,10 @@ class Cli(unittest.TestCase):
         self.assertAlmostEqual(f["path"][-1]["point"][0], x, delta=1e-12)
         self.assertLess(f["path"][-1]["residual"], 1e-10)
         self.assertNotIn("path", json.loads(run("fixedpoint", hm, "--json").stdout))
+        # describe-tool lists the runner's arguments, as the command's --help does
+        d = run("describe-tool", "continuation").stdout
+        self.assertIn("--doubled", d)
+        self.assertIn("--guess X,Y[,Z]", d)
         # the flags' values are checked where they become settings, and the message names the flag
         sep = os.path.join(SRC, "scenes", "tools", "separatrix.json")
         self.assertBadInput(run("separatrix", sep, "--branch", "5"), "--branch 5", "1, 2, 3, 4")
