@@ -1886,8 +1886,55 @@ private slots:
       QCoreApplication::sendPostedEvents(nullptr, QEvent::DeferredDelete);
       ++tried;
     }
-    QVERIFY(tried >=
-            9); // spectrum, lyapunov, megno, map3d, multipliers, bifurcation_curve, surface, ram, diagram
+    // spectrum, lyapunov, megno, map3d, multipliers, bifurcation_curve, surface, ram, diagram
+    QVERIFY(tried >= 9);
+  }
+
+  // the rest of the registry's generic test in the GUI: a tool with a window of its own
+  // (ToolRunner::ownWindow: the map's points, the fixed-point family, the plot filter), created from the
+  // Tools tab on its example scene, starts there -- jobs of the map window that draw and do not fail, or the
+  // plot's live window
+  void everyToolWithItsOwnWindowStartsThereFromTheToolsTab() {
+    const QString tools = QString(qgetenv("ROLLVIZ_SOURCE_DIR")) + "/scenes/tools/";
+    int tried = 0;
+    for (const auto& tool : ToolRegistry::global().entries()) {
+      const ToolRunner* runner = findToolRunner(tool.id);
+      if (!runner || !runner->ownWindow || !tool.origin.empty()) continue;
+      const QString scene = tools + QString::fromStdString(tool.id) + ".json";
+      QVERIFY2(QFile::exists(scene), qPrintable("a built-in tool with a runner ships an example: " + scene));
+      QVERIFY(window_->openScene(scene));
+      MapPanel* map = window_->mapPanel();
+      std::vector<int> before;
+      for (Job* j : map->jobs().jobs())
+        before.push_back(j->id());
+      const auto plots = window_->findChildren<PlotWindow*>().size();
+      window_->createTool(tool.id);
+      ++tried;
+      if (window_->findChildren<PlotWindow*>().size() > plots) continue; // the plot filter's live window
+      std::vector<Job*> added;
+      for (Job* j : map->jobs().jobs())
+        if (std::find(before.begin(), before.end(), j->id()) == before.end()) added.push_back(j);
+      QVERIFY2(!added.empty(), tool.id.c_str());
+      for (Job* j : added) {
+        const int id = j->id();
+        if (map->isTrajectory(id)) { // the map's points: it draws them as they come
+          QTRY_VERIFY_WITH_TIMEOUT(j->status() == Job::Status::Failed ||
+                                       !map->saveTrajectories({id}, false, true).front().x.empty(),
+                                   120000);
+        } else { // a search, a family, a branch, a tree: it ends with what it drew (the frame timer drains
+                 // it)
+          const auto drew = [&] {
+            const auto drawn = map->saveToolOutputs({id});
+            return !drawn.empty() && (!drawn.front().x.empty() || !drawn.front().found.empty());
+          };
+          QTRY_VERIFY_WITH_TIMEOUT(
+              j->status() == Job::Status::Failed || (j->status() == Job::Status::Finished && drew()), 120000);
+        }
+        QVERIFY2(j->status() != Job::Status::Failed,
+                 qPrintable(QString::fromStdString(tool.id + ": " + j->error())));
+      }
+    }
+    QVERIFY(tried >= 6); // poincare, plot, fixedpoint, continuation, separatrix, bifurcation_tree
   }
 
   // File > Open model...: a model file runs at its own "initial", joins the problem list, and saving it while
