@@ -246,7 +246,9 @@ ToolResult runContinuation(const Scene& scene, const ToolControl& control) {
   if (cont.doubled()) {
     result.fields["doubled"] = familySummary(family, c);
     result.fields["doubled"]["order"] = 2 * s.section().order;
-    result.fields["doubled"]["first"] = family.points().front().parameter;
+    // (a doubled family that failed at its first point has none)
+    result.fields["doubled"]["first"] =
+        family.points().empty() ? json(nullptr) : json(family.points().front().parameter);
   }
   if (done && (c.method == ContinuationMethod::Arclength || cont.doubled()))
     result.notes.push_back("the family ends: " + family.end());
