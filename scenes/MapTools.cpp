@@ -385,12 +385,8 @@ ToolResult runBifurcationTree(const Scene& scene, const ToolControl& control) {
   result.fields = {
       {"parameter", c.parameter}, {"doublings", doublings}, {"ratios", r.ratios()}, {"end", r.end}};
   json rows = json::array();
-  for (long k = 0; k < result.table.rows(); ++k) {
-    std::vector<double> row;
-    for (const auto& column : result.table.values)
-      row.push_back(column[static_cast<std::size_t>(k)]);
-    rows.push_back(row);
-  }
+  for (long k = 0; k < result.table.rows(); ++k)
+    rows.push_back(result.table.row(k));
   result.python = result.fields;
   result.python["columns"] = result.table.names;
   result.python["rows"] = rows;

@@ -134,7 +134,11 @@ pyb::object toPython(const nlohmann::json& j, const std::vector<std::string>& co
       list.append(toPython(v, complex));
     return list;
   }
-  return pyb::module_::import("json").attr("loads")(j.dump());
+  if (j.is_string()) return pyb::str(j.get<std::string>());
+  if (j.is_boolean()) return pyb::bool_(j.get<bool>());
+  if (j.is_number_integer()) return pyb::int_(j.get<long long>());
+  if (j.is_number()) return pyb::float_(j.get<double>());
+  return pyb::none();
 }
 
 // a tool that runs through scenes/ToolRunner.h: its fields, and its table's columns as arrays (or the shape
@@ -156,9 +160,10 @@ pyb::object registeredTool(const ToolEntry& tool, const ToolRunner& runner, cons
   if (!r.failure.empty()) throw ComputationError(r.failure);
   if (runner.tableIsResult) { // the table is the result: the package makes it a rollviz.Table
     std::vector<double> flat;
-    for (long k = 0; k < r.table.rows(); ++k)
-      for (const auto& column : r.table.values)
-        flat.push_back(column[static_cast<std::size_t>(k)]);
+    for (long k = 0; k < r.table.rows(); ++k) {
+      const auto row = r.table.row(k);
+      flat.insert(flat.end(), row.begin(), row.end());
+    }
     pyb::dict t;
     t["columns"] = r.table.names;
     t["rows"] = table(std::move(flat), r.table.names.size());

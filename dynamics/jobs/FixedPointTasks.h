@@ -1,9 +1,9 @@
 // FixedPointTasks.h -- the fixed-point family of tools as jobs (manual §2.3.4-§2.3.9): each streams its
 // results through channels while it runs, stops promptly (the tools poll between map evaluations), and goes
 // on from where it stopped: a fixed-point search from its last point, a continuation from its last step; a
-// separatrix or a bifurcation tree starts again. Failures (no convergence, a non-hyperbolic point, ...) end the
-// job with the reason in its status. (The map window runs them; every front end else runs the tools' runners,
-// scenes/MapTools.cpp.)
+// separatrix or a bifurcation tree starts again. Failures (no convergence, a non-hyperbolic point, ...) end
+// the job with the reason in its status. (The map window runs them; every front end else runs the tools'
+// runners, scenes/MapTools.cpp.)
 #pragma once
 #include "dynamics/jobs/Channel.h"
 #include "dynamics/jobs/RunSpec.h"

@@ -25,6 +25,14 @@ struct NamedColumns {
       values[c].push_back(row[c]);
   }
   long rows() const { return values.empty() ? 0 : static_cast<long>(values[0].size()); }
+  /// Row k: each column's value at sample k.
+  std::vector<double> row(long k) const {
+    std::vector<double> r;
+    r.reserve(values.size());
+    for (const auto& column : values)
+      r.push_back(column[static_cast<std::size_t>(k)]);
+    return r;
+  }
 };
 
 /// Writes the samples as poly data: every column a point-data array; the points' coordinates are the
