@@ -9,6 +9,7 @@
 #include "dynamics/core/Format.h"
 #include "dynamics/tools/FourierSpectrum.h"
 #include "dynamics/tools/Lyapunov.h"
+#include "dynamics/tools/LyapunovLanes.h"
 #include "dynamics/tools/Megno.h"
 #include "dynamics/tools/MegnoLanes.h"
 #include "dynamics/tools/ReturnMap.h"
@@ -204,18 +205,22 @@ private:
   std::vector<std::string> columns(std::size_t) const override { return {"t", "megno", "y", "fli"}; }
 };
 
+// the lyapunov tool's numbers
+nlohmann::json lyapunovFields(const LyapunovResult& l) {
+  return {{"exponents", l.last.exponents},
+          {"max", l.last.exponents.empty() ? 0.0 : l.last.exponents.front()},
+          {"sum", l.last.sum()},
+          {"time", l.last.time},
+          {"converged", l.converged}};
+}
+
 // the Lyapunov exponents along the scene's trajectory (dynamics/tools/Lyapunov.h)
 class LyapunovToolRun final : public EstimatesRun<LyapunovRun, LyapunovEstimate> {
 public:
   explicit LyapunovToolRun(const Scene& scene) : EstimatesRun(scene, scene.lyapunov) {}
   ToolResult result() const override {
-    const LyapunovResult& l = run().result();
     ToolResult r;
-    r.fields = {{"exponents", l.last.exponents},
-                {"max", l.last.exponents.empty() ? 0.0 : l.last.exponents.front()},
-                {"sum", l.last.sum()},
-                {"time", l.last.time},
-                {"converged", l.converged}};
+    r.fields = lyapunovFields(run().result());
     r.table = history();
     return r;
   }
@@ -308,44 +313,76 @@ ToolResult runDiagram(const Scene& scene, const ToolControl&) {
 } // namespace
 
 namespace {
-// The megno tool's batch evaluation (a LanesEvaluator, scenes/Sweep.h): its output `name` at several points
-// at once (dynamics/tools/MegnoLanes.h): the points go together when they differ only in their initial state,
-// on a flow whose model has a lane kernel, integrated by a method that steps stacked orbits as alone
-// (IntegratorEntry::independentOrbits: rk4) -- where each lane is the scalar run bit for bit, so a point's
-// value cannot depend on the points beside it, and a sweep stays the same file on any threads, ranks and
-// resumption. (Everhart's corrector stops when every lane has converged, adams starts adaptively: on lanes a
-// point would take its neighbours' iterations.)
-std::optional<std::vector<LaneValues>>
-megnoOnLanesOf(const std::string& name, const std::vector<Scene>& scenes, const ToolControl& control) {
-  // the megno tool's outputs, as its result names them
-  const auto pick = [&name](const MegnoEstimate& e) -> std::optional<double> {
-    const nlohmann::json fields = megnoFields(e);
-    const auto f = fields.find(name);
-    if (f == fields.end() || !f->is_number()) return std::nullopt;
-    return f->get<double>();
-  };
-  const Scene& first = scenes.front();
-  if (!pick(MegnoEstimate{})) return std::nullopt; // an output this batch does not know: one at a time
-  if (!megnoRunsOnLanes(*first.model)) return std::nullopt;
-  const RunSpec run = first.runSpec();
-  if (!run.integrator->independentOrbits) return std::nullopt;
-  nlohmann::json common = first.document;
-  common.erase("initial");
+// Sweep points go on lanes together (dynamics/core/Lanes.h) when their scenes differ only in the initial
+// state and the model's parameters: one tool, integrator and settings, each point with its own model.
+struct PointsOnLanes {
+  std::vector<const Model*> models;
   std::vector<Eigen::VectorXd> starts;
-  starts.reserve(scenes.size());
-  for (const Scene& s : scenes) {
+  RunSpec run;
+};
+std::optional<PointsOnLanes> pointsOnLanes(const std::vector<Scene>& scenes) {
+  const auto common = [](const Scene& s) {
     nlohmann::json doc = s.document;
     doc.erase("initial");
-    if (doc != common) return std::nullopt;
-    starts.push_back(s.initialState);
+    doc.erase("parameters");
+    return doc;
+  };
+  const nlohmann::json first = common(scenes.front());
+  PointsOnLanes p{.run = scenes.front().runSpec()};
+  for (const Scene& s : scenes) {
+    if (common(s) != first) return std::nullopt;
+    p.models.push_back(s.model.get());
+    p.starts.push_back(s.initialState);
   }
+  return p;
+}
+
+// A tool's output `name` from its fields, where it is a number.
+std::optional<double> numberIn(const nlohmann::json& fields, const std::string& name) {
+  const auto f = fields.find(name);
+  if (f == fields.end() || !f->is_number()) return std::nullopt;
+  return f->get<double>();
+}
+
+// The megno tool's batch evaluation (a LanesEvaluator, scenes/Sweep.h): its output `name` at several points
+// at once (dynamics/tools/MegnoLanes.h), on a flow whose model has a lane kernel, integrated by a method
+// that steps stacked orbits as alone (IntegratorEntry::independentOrbits: rk4) -- where each lane is the
+// scalar run bit for bit, so a point's value cannot depend on the points beside it, and a sweep stays the
+// same file on any threads, ranks and resumption. (Everhart's corrector stops when every lane has converged,
+// adams starts adaptively: on lanes a point would take its neighbours' iterations.)
+std::optional<std::vector<LaneValues>>
+megnoOnLanesOf(const std::string& name, const std::vector<Scene>& scenes, const ToolControl& control) {
+  if (!numberIn(megnoFields(MegnoEstimate{}), name)) return std::nullopt; // not a number: one at a time
+  const auto points = pointsOnLanes(scenes);
+  if (!points || !points->run.integrator->independentOrbits || !megnoRunsOnLanes(points->models))
+    return std::nullopt;
   const auto results = megnoOnLanes(
-      *first.model, [&] { return run.makeIntegrator(*first.model); }, starts, first.megno, control);
+      points->models, [&] { return points->run.makeIntegrator(*points->models.front()); }, points->starts,
+      scenes.front().megno, control);
   if (results.empty()) throw Stopped{};
   std::vector<LaneValues> values;
   values.reserve(results.size());
   for (const auto& r : results)
-    values.push_back({{*pick(r.last)}, r.failure});
+    values.push_back({{*numberIn(megnoFields(r.last), name)}, r.failure});
+  return values;
+}
+
+// The lyapunov tool's batch evaluation: the tangent method's fused rk4 steps of several orbits at once
+// (dynamics/tools/LyapunovLanes.h), each lane the scalar run bit for bit.
+std::optional<std::vector<LaneValues>>
+lyapunovOnLanesOf(const std::string& name, const std::vector<Scene>& scenes, const ToolControl& control) {
+  if (!numberIn(lyapunovFields(LyapunovResult{}), name)) return std::nullopt;
+  const auto points = pointsOnLanes(scenes);
+  if (!points) return std::nullopt;
+  const auto results = lyapunovOnLanes(
+      points->models, [&] { return points->run.makeIntegrator(*points->models.front()); }, points->starts,
+      scenes.front().lyapunov, control);
+  if (!results) return std::nullopt;
+  if (results->empty()) throw Stopped{};
+  std::vector<LaneValues> values;
+  values.reserve(results->size());
+  for (const auto& r : *results)
+    values.push_back({{*numberIn(lyapunovFields(r.result), name)}, r.failure});
   return values;
 }
 } // namespace
@@ -359,6 +396,7 @@ void registerBuiltinTools() {
     registerGridTools();
     registerMapTools();
     registerPoincareTools();
+    addLanesEvaluator("lyapunov", lyapunovOnLanesOf);
     addToolRunner("lyapunov", {.start = [](const Scene& s) { return std::make_unique<LyapunovToolRun>(s); },
                                .tableName = "history"});
     addLanesEvaluator("megno", megnoOnLanesOf);

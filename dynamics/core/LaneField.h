@@ -1,19 +1,56 @@
-// LaneField.h -- what a model offers to integrate kLanes trajectories at once (dynamics/core/Lanes.h): its
-// right-hand side and the derivative along one tangent vector at kLanes states in one evaluation. Models with
-// a templated field (ModelWithField) that declare `static constexpr bool kLaneField = true` (a field with no
-// branch on a value) have it; the batched tools (dynamics/tools/MegnoLanes.h) find it by dynamic_cast.
+// LaneField.h -- what a model offers to integrate kLanes trajectories at once (dynamics/core/Lanes.h): a
+// kernel bound to kLanes models that evaluates their right-hand sides with the derivatives along tangent
+// vectors in one pass, and takes RK4 steps of kLanes orbits with their tangent vectors in one compiled loop.
+// Models with a templated field (ModelWithField) that declare `static constexpr bool kLaneField = true` (a
+// field with no branch on a value) have it; the batched tools (dynamics/tools/MegnoLanes.h, LyapunovLanes.h)
+// get it through laneKernelFor.
+//
+// The lanes may hold different models of one class: a sweep over a parameter puts its points side by side.
+// A model whose field reads parameters declares them as `template <class T> struct Coefficients` (members of
+// type T only) with `coefficients()` and a static `field(coefficients, x, dx)`; the lanes then read one
+// coefficient per lane (dynamics/models/Lorenz.h). A model without it runs lanes of equal parameters only.
+// Declare such a field [[gnu::always_inline]]: the kernel then compiles it whole for AVX2 (GCC leaves a large
+// function out of line, compiled for baseline x86-64).
 #pragma once
 #include "dynamics/core/Lanes.h"
 
+#include <array>
+#include <memory>
+#include <vector>
+
 namespace rv {
+
+class Model;
+
+/// The model of each lane: models of one class, the first the one asked.
+using LaneModels = std::array<const Model*, kLanes>;
+
+/// The fields of kLanes models bound together: what the batched tools call at each step.
+class LaneKernel {
+public:
+  virtual ~LaneKernel() = default;
+  /// f(x) and J(x) w at kLanes states at once, component-major: x[c * kLanes + l] for the n state components
+  /// and then the m core components of w (m = coreDimension), out likewise (f, then J w). Lane l computes
+  /// with the l-th model.
+  virtual void tangentRhs(const double* x, double* out) const = 0;
+  /// Advances kLanes orbits, each with k tangent vectors in core coordinates, by `steps` classical RK4 steps
+  /// of h: y holds, component-major (y[j * kLanes + l]), each lane's state laid out as TangentSystem's (x,
+  /// then the k vectors column after column). Each lane is what Model::tangentRk4 gives its orbit alone, bit
+  /// for bit. False, changing nothing, where k is outside the fixed counts of tangentRk4; steps = 0 only
+  /// asks.
+  virtual bool tangentRk4(double* y, int k, double h, long steps) const = 0;
+};
 
 class LaneField {
 public:
   virtual ~LaneField() = default;
-  /// f(x) and J(x) w at kLanes states at once, component-major: x[c * kLanes + l] for the n state components
-  /// and then the m core components of w (m = coreDimension), out likewise (f, then J w). False, writing
-  /// nothing, where the model has no lane kernel.
-  virtual bool laneTangentRhs(const double* x, double* out) const = 0;
+  /// The kernel of `models` (each of this model's class), or nullptr where they cannot go together: no lane
+  /// kernel, a map, models of another class, different parameters of a model without Coefficients.
+  virtual std::unique_ptr<LaneKernel> laneKernel(const LaneModels& models) const = 0;
 };
+
+/// The kernel that integrates the orbits of `models` (one per orbit, 1 to kLanes; the last fills the lanes
+/// left over) together, or nullptr where they cannot go on lanes.
+std::unique_ptr<LaneKernel> laneKernelFor(const std::vector<const Model*>& models);
 
 } // namespace rv

@@ -14,6 +14,7 @@
 #include <Eigen/Core>
 #include <cmath>
 #include <string>
+#include <type_traits>
 
 namespace rv {
 
@@ -90,74 +91,129 @@ inline Lanes log(const Lanes& a) {
   return eachLane(a, [](double x) { return std::log(x); });
 }
 
-/// A value and its derivative along one direction (forward-mode differentiation), with the rules of
-/// Eigen::AutoDiffScalar written out in its order of operations, so that a lane's tangent equals the scalar
-/// path's (ModelWithField::tangentRhs) bit for bit.
-template <class T> struct Jet {
-  T v, d;
-  Jet() : v(0.0), d(0.0) {}
-  Jet(double x) : v(x), d(0.0) {} // NOLINT(google-explicit-constructor): a constant
-  Jet(T value, T derivative) : v(value), d(derivative) {}
+/// A value and its derivatives along K directions (forward-mode differentiation), with the rules of
+/// Eigen::AutoDiffScalar written out in its order of operations, derivative by derivative, so that a lane's
+/// tangents equal the scalar path's (ModelWithField::tangentRhs, its K-vector AutoDiff pass) bit for bit.
+/// A constant is a double, or one value per lane (a coefficient that differs between lanes).
+template <class T, int K = 1> struct Jet {
+  T v;
+  T d[K];
+  Jet() : v(0.0) { fill(T(0.0)); }
+  Jet(double x) : v(x) { fill(T(0.0)); } // NOLINT(google-explicit-constructor): a constant
+  Jet(T value, T derivative) : v(value) { fill(derivative); }
   Jet& operator+=(const Jet& o) { return *this = *this + o; }
   Jet& operator-=(const Jet& o) { return *this = *this - o; }
   Jet& operator*=(const Jet& o) { return *this = *this * o; }
   Jet& operator/=(const Jet& o) { return *this = *this / o; }
+  /// The jet with value `value` and derivatives d[c] = f(c).
+  template <class F> [[gnu::always_inline]] static Jet with(T value, F f) {
+    Jet r;
+    r.v = value;
+    for (int c = 0; c < K; ++c)
+      r.d[c] = f(c);
+    return r;
+  }
+
+private:
+  void fill(const T& x) {
+    for (int c = 0; c < K; ++c)
+      d[c] = x;
+  }
 };
 
-template <class T> Jet<T> operator+(const Jet<T>& a, const Jet<T>& b) {
-  return {a.v + b.v, a.d + b.d};
+/// A constant of a Jet<T, K>: a number, or a T (one value per lane: a coefficient that differs between
+/// lanes).
+template <class C, class T>
+concept JetConstant = std::is_arithmetic_v<C> || std::is_same_v<C, T>;
+
+/// A Jet's constant as a T: a number in every lane.
+template <class T, class C> T constantAs(const C& c) {
+  if constexpr (std::is_same_v<C, T>)
+    return c;
+  else
+    return T(static_cast<double>(c));
 }
-template <class T> Jet<T> operator-(const Jet<T>& a, const Jet<T>& b) {
-  return {a.v - b.v, a.d - b.d};
+
+template <class T, int K>
+[[gnu::always_inline]] inline Jet<T, K> operator+(const Jet<T, K>& a, const Jet<T, K>& b) {
+  return Jet<T, K>::with(a.v + b.v, [&](int c) { return a.d[c] + b.d[c]; });
 }
-template <class T> Jet<T> operator*(const Jet<T>& a, const Jet<T>& b) {
-  return {a.v * b.v, a.d * b.v + b.d * a.v};
+template <class T, int K>
+[[gnu::always_inline]] inline Jet<T, K> operator-(const Jet<T, K>& a, const Jet<T, K>& b) {
+  return Jet<T, K>::with(a.v - b.v, [&](int c) { return a.d[c] - b.d[c]; });
 }
-template <class T> Jet<T> operator/(const Jet<T>& a, const Jet<T>& b) {
-  return {a.v / b.v, (a.d * b.v - b.d * a.v) * (T(1.0) / (b.v * b.v))};
+template <class T, int K>
+[[gnu::always_inline]] inline Jet<T, K> operator*(const Jet<T, K>& a, const Jet<T, K>& b) {
+  return Jet<T, K>::with(a.v * b.v, [&](int c) { return a.d[c] * b.v + b.d[c] * a.v; });
 }
-template <class T> Jet<T> operator-(const Jet<T>& a) {
-  return {-a.v, -a.d};
+template <class T, int K>
+[[gnu::always_inline]] inline Jet<T, K> operator/(const Jet<T, K>& a, const Jet<T, K>& b) {
+  const T scale = T(1.0) / (b.v * b.v);
+  return Jet<T, K>::with(a.v / b.v, [&](int c) { return (a.d[c] * b.v - b.d[c] * a.v) * scale; });
 }
-template <class T> Jet<T> operator+(const Jet<T>& a) {
+template <class T, int K> [[gnu::always_inline]] inline Jet<T, K> operator-(const Jet<T, K>& a) {
+  return Jet<T, K>::with(-a.v, [&](int c) { return -a.d[c]; });
+}
+template <class T, int K> [[gnu::always_inline]] inline Jet<T, K> operator+(const Jet<T, K>& a) {
   return a;
 }
-template <class T> Jet<T> operator+(const Jet<T>& a, double b) {
-  return {a.v + b, a.d};
+template <class T, int K, JetConstant<T> C>
+[[gnu::always_inline]] inline Jet<T, K> operator+(const Jet<T, K>& a, const C& constant) {
+  const T b = constantAs<T>(constant);
+  return Jet<T, K>::with(a.v + b, [&](int c) { return a.d[c]; });
 }
-template <class T> Jet<T> operator+(double a, const Jet<T>& b) {
-  return {a + b.v, b.d};
+template <class T, int K, JetConstant<T> C>
+[[gnu::always_inline]] inline Jet<T, K> operator+(const C& constant, const Jet<T, K>& b) {
+  const T a = constantAs<T>(constant);
+  return Jet<T, K>::with(a + b.v, [&](int c) { return b.d[c]; });
 }
-template <class T> Jet<T> operator-(const Jet<T>& a, double b) {
-  return {a.v - b, a.d};
+template <class T, int K, JetConstant<T> C>
+[[gnu::always_inline]] inline Jet<T, K> operator-(const Jet<T, K>& a, const C& constant) {
+  const T b = constantAs<T>(constant);
+  return Jet<T, K>::with(a.v - b, [&](int c) { return a.d[c]; });
 }
-template <class T> Jet<T> operator-(double a, const Jet<T>& b) {
-  return {a - b.v, -b.d};
+template <class T, int K, JetConstant<T> C>
+[[gnu::always_inline]] inline Jet<T, K> operator-(const C& constant, const Jet<T, K>& b) {
+  const T a = constantAs<T>(constant);
+  return Jet<T, K>::with(a - b.v, [&](int c) { return -b.d[c]; });
 }
-template <class T> Jet<T> operator*(const Jet<T>& a, double b) {
-  return {a.v * b, a.d * b};
+template <class T, int K, JetConstant<T> C>
+[[gnu::always_inline]] inline Jet<T, K> operator*(const Jet<T, K>& a, const C& constant) {
+  const T b = constantAs<T>(constant);
+  return Jet<T, K>::with(a.v * b, [&](int c) { return a.d[c] * b; });
 }
-template <class T> Jet<T> operator*(double a, const Jet<T>& b) {
-  return {a * b.v, b.d * a};
+template <class T, int K, JetConstant<T> C>
+[[gnu::always_inline]] inline Jet<T, K> operator*(const C& constant, const Jet<T, K>& b) {
+  const T a = constantAs<T>(constant);
+  return Jet<T, K>::with(a * b.v, [&](int c) { return b.d[c] * a; });
 }
-template <class T> Jet<T> operator/(const Jet<T>& a, double b) {
-  return {a.v / b, a.d * (1.0 / b)};
+template <class T, int K, JetConstant<T> C>
+[[gnu::always_inline]] inline Jet<T, K> operator/(const Jet<T, K>& a, const C& constant) {
+  const T b = constantAs<T>(constant);
+  const T inverse = T(1.0) / b;
+  return Jet<T, K>::with(a.v / b, [&](int c) { return a.d[c] * inverse; });
 }
-template <class T> Jet<T> operator/(double a, const Jet<T>& b) {
-  return {a / b.v, b.d * (T(-a) / (b.v * b.v))};
+template <class T, int K, JetConstant<T> C>
+[[gnu::always_inline]] inline Jet<T, K> operator/(const C& constant, const Jet<T, K>& b) {
+  const T a = constantAs<T>(constant);
+  const T scale = -a / (b.v * b.v);
+  return Jet<T, K>::with(a / b.v, [&](int c) { return b.d[c] * scale; });
 }
-template <class T> Jet<T> sqrt(const Jet<T>& a) {
+template <class T, int K> [[gnu::always_inline]] inline Jet<T, K> sqrt(const Jet<T, K>& a) {
   using std::sqrt;
   const T root = sqrt(a.v);
-  return {root, a.d * (T(0.5) / root)};
+  const T scale = T(0.5) / root;
+  return Jet<T, K>::with(root, [&](int c) { return a.d[c] * scale; });
 }
-template <class T> Jet<T> sin(const Jet<T>& a) {
+template <class T, int K> [[gnu::always_inline]] inline Jet<T, K> sin(const Jet<T, K>& a) {
   using std::cos, std::sin;
-  return {sin(a.v), a.d * cos(a.v)};
+  const T slope = cos(a.v);
+  return Jet<T, K>::with(sin(a.v), [&](int c) { return a.d[c] * slope; });
 }
-template <class T> Jet<T> cos(const Jet<T>& a) {
+template <class T, int K> [[gnu::always_inline]] inline Jet<T, K> cos(const Jet<T, K>& a) {
   using std::cos, std::sin;
-  return {cos(a.v), a.d * -sin(a.v)};
+  const T slope = -sin(a.v);
+  return Jet<T, K>::with(cos(a.v), [&](int c) { return a.d[c] * slope; });
 }
 
 /// Whether this CPU runs the AVX2 lane kernels (else they run as SSE2 pairs).
@@ -177,5 +233,5 @@ inline std::string laneDescription() {
 
 namespace Eigen {
 template <> struct NumTraits<rv::Lanes> : rv::HeldScalarTraits<rv::Lanes, 1> {};
-template <class T> struct NumTraits<rv::Jet<T>> : rv::HeldScalarTraits<rv::Jet<T>, 3> {};
+template <class T, int K> struct NumTraits<rv::Jet<T, K>> : rv::HeldScalarTraits<rv::Jet<T, K>, 3> {};
 } // namespace Eigen

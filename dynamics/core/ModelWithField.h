@@ -7,9 +7,14 @@
 #include "dynamics/integrators/Rk4Scheme.h"
 
 #include <algorithm>
+#include <array>
+#include <bit>
+#include <memory>
+#include <optional>
 #include <stdexcept>
 #include <unsupported/Eigen/AutoDiff>
 #include <utility>
+#include <vector>
 
 namespace rv {
 
@@ -80,18 +85,19 @@ public:
     return !isMap() && withFixedVectors(k, [&]<int K>() { fusedRk4<K>(x, V, h, steps); });
   }
 
-  /// f and J w at kLanes states at once, in one AVX2 register per component where the CPU has AVX2 (compiled
-  /// for it without FMA: each lane rounds as the scalar path does), else as SSE2 pairs.
-  bool laneTangentRhs(const double* x, double* out) const final {
+  /// The lane kernel of kLanes models of this class: their fields at once, in one AVX2 register per
+  /// component where the CPU has AVX2 (compiled for it without FMA: each lane rounds as the scalar path
+  /// does), else as SSE2 pairs.
+  std::unique_ptr<LaneKernel> laneKernel(const LaneModels& models) const final {
     if constexpr (requires { Derived::kLaneField; }) {
-      if (cpuHasAvx2())
-        laneKernelAvx2(x, out);
-      else
-        laneKernelBaseline(x, out);
-      return true;
+      if (isMap()) return nullptr;
+      const auto lanes = laneSelves(models);
+      if (!lanes) return nullptr;
+      const auto coefficients = laneCoefficients(*lanes);
+      return std::make_unique<Kernel<std::remove_const_t<decltype(coefficients)>>>(*this, coefficients);
     } else {
-      (void)x, (void)out;
-      return false;
+      (void)models;
+      return nullptr;
     }
   }
 
@@ -112,21 +118,116 @@ public:
 
 private:
   const Derived& self() const { return static_cast<const Derived&>(*this); }
-  [[gnu::target("avx2"), gnu::flatten]] void laneKernelAvx2(const double* x, double* out) const {
-    laneKernel(x, out);
+  static constexpr bool kCoefficients = requires { typename Derived::template Coefficients<double>; };
+  using LaneSelves = std::array<const Derived*, kLanes>;
+  // the lanes' models as Derived, or nothing where they cannot go together: another class, or different
+  // parameters that the field does not read as Coefficients
+  std::optional<LaneSelves> laneSelves(const LaneModels& models) const {
+    LaneSelves lanes{};
+    for (int l = 0; l < kLanes; ++l) {
+      lanes[l] = dynamic_cast<const Derived*>(models[l]);
+      if (!lanes[l]) return std::nullopt;
+      if (!kCoefficients && lanes[l]->parameters().values() != parameters().values()) return std::nullopt;
+    }
+    return lanes;
   }
-  [[gnu::flatten]] void laneKernelBaseline(const double* x, double* out) const { laneKernel(x, out); }
-  EIGEN_ALWAYS_INLINE void laneKernel(const double* x, double* out) const {
-    using J = Jet<Lanes>;
+  // what the field reads per lane: Derived::Coefficients<Lanes> gathered from the lanes' models
+  // (Coefficients<T> holds T members only, so it is an array of them); nothing for a field without
+  // Coefficients
+  struct NoCoefficients {};
+  static auto laneCoefficients(const LaneSelves& lanes) {
+    if constexpr (kCoefficients) {
+      using One = typename Derived::template Coefficients<double>;
+      using All = typename Derived::template Coefficients<Lanes>;
+      constexpr std::size_t count = sizeof(One) / sizeof(double);
+      static_assert(sizeof(One) == count * sizeof(double) && sizeof(All) == count * sizeof(Lanes),
+                    "Coefficients<T> must hold members of type T only");
+      std::array<Lanes, count> gathered;
+      for (int l = 0; l < kLanes; ++l) {
+        const auto values = std::bit_cast<std::array<double, count>>(lanes[l]->coefficients());
+        for (std::size_t i = 0; i < count; ++i)
+          gathered[i].v[l] = values[i];
+      }
+      return std::bit_cast<All>(gathered);
+    } else {
+      (void)lanes;
+      return NoCoefficients{};
+    }
+  }
+  // f and J V of kLanes states with K tangent vectors, component-major in TangentSystem's layout: the lane
+  // form of directional<K>. The field is called here, in the flattened kernel, not through a lambda: the
+  // compiler inlines it whole only there
+  template <int K, class C>
+  EIGEN_ALWAYS_INLINE void laneDirectional(const C& coefficients, const double* in, double* out) const {
+    using J = Jet<Lanes, K>;
     Vec<J> xa, fa;
     for (int i = 0; i < N; ++i)
-      xa[i] = J(Lanes::load(x + i * kLanes), i < M ? Lanes::load(x + (N + i) * kLanes) : Lanes(0.0));
-    self().field(xa, fa);
+      xa[i] = J::with(Lanes::load(in + i * kLanes),
+                      [&](int c) { return i < M ? Lanes::load(in + (N + c * M + i) * kLanes) : Lanes(0.0); });
+    if constexpr (kCoefficients)
+      Derived::field(coefficients, xa, fa);
+    else
+      self().field(xa, fa);
     for (int i = 0; i < N; ++i)
       fa[i].v.store(out + i * kLanes);
-    for (int i = 0; i < M; ++i)
-      fa[i].d.store(out + (N + i) * kLanes);
+    for (int c = 0; c < K; ++c)
+      for (int i = 0; i < M; ++i)
+        fa[i].d[c].store(out + (N + c * M + i) * kLanes);
   }
+  // fusedRk4<K> on kLanes orbits: the same steps element by element (rk4StepOnArrays)
+  template <int K, class C>
+  EIGEN_ALWAYS_INLINE void laneRk4(const C& coefficients, double* y, double h, long steps) const {
+    constexpr long size = static_cast<long>(N + M * K) * kLanes;
+    std::vector<double> stages(static_cast<std::size_t>(7 * size)); // y0, f0, k2, k3, k4, tmp, y1
+    double *y0 = stages.data(), *f0 = y0 + size, *k2 = f0 + size, *k3 = k2 + size, *k4 = k3 + size,
+           *tmp = k4 + size, *y1 = tmp + size;
+    std::copy(y, y + size, y0);
+    const auto rhs = [&](const double* in, double* out) { laneDirectional<K>(coefficients, in, out); };
+    for (long s = 0; s < steps; ++s) {
+      rhs(y0, f0);
+      rk4StepOnArrays(rhs, h, size, y0, f0, k2, k3, k4, tmp, y1);
+      std::swap(y0, y1);
+    }
+    std::copy(y0, y0 + size, y);
+  }
+  // kLanes models' fields bound: their coefficients gathered once, the kernels compiled for AVX2 and for
+  // baseline x86-64 (the models' fields and Jet's rules inlined whole: Lanes.h, LaneField.h)
+  template <class C> class Kernel final : public LaneKernel {
+  public:
+    Kernel(const ModelWithField& model, const C& coefficients) : model_(model), coefficients_(coefficients) {}
+    void tangentRhs(const double* x, double* out) const override {
+      if (cpuHasAvx2())
+        rhsAvx2(x, out);
+      else
+        rhsBaseline(x, out);
+    }
+    bool tangentRk4(double* y, int k, double h, long steps) const override {
+      return withFixedVectors(k, [&]<int K>() {
+        if (steps == 0) return;
+        if (cpuHasAvx2())
+          rk4Avx2<K>(y, h, steps);
+        else
+          rk4Baseline<K>(y, h, steps);
+      });
+    }
+
+  private:
+    [[gnu::target("avx2"), gnu::flatten]] void rhsAvx2(const double* x, double* out) const {
+      model_.template laneDirectional<1>(coefficients_, x, out);
+    }
+    [[gnu::flatten]] void rhsBaseline(const double* x, double* out) const {
+      model_.template laneDirectional<1>(coefficients_, x, out);
+    }
+    template <int K>
+    [[gnu::target("avx2"), gnu::flatten]] void rk4Avx2(double* y, double h, long steps) const {
+      model_.template laneRk4<K>(coefficients_, y, h, steps);
+    }
+    template <int K> [[gnu::flatten]] void rk4Baseline(double* y, double h, long steps) const {
+      model_.template laneRk4<K>(coefficients_, y, h, steps);
+    }
+    const ModelWithField& model_;
+    C coefficients_;
+  };
   // calls body.template operator()<k>() when 1 <= k <= min(M, kMaxFixedVectors); false otherwise
   template <class Body> static bool withFixedVectors(int k, Body&& body) {
     return [&]<int... I>(std::integer_sequence<int, I...>) {

@@ -7,50 +7,13 @@ namespace rv {
 
 namespace {
 
-// rk4Step (Rk4Scheme.h) on arrays of n doubles, four at a time in one AVX2 register (the rest one by one):
 // the large systems -- orbits stacked on lanes (dynamics/tools/MegnoLanes.h) -- whose combinations of stages
-// are a fair share of a step. Each element takes the Eigen expression's operations in its order (no fused
-// multiply-add), so the state is the one rk4Step gives, bit for bit.
-template <class Combine> [[gnu::always_inline]] inline void eachElement(long n, Combine&& combine) {
-  long i = 0;
-  for (; i + kLanes <= n; i += kLanes)
-    combine.template operator()<Lanes>(i);
-  for (; i < n; ++i)
-    combine.template operator()<double>(i);
-}
-
-template <class T> [[gnu::always_inline]] inline T loadAt(const double* p, long i) {
-  if constexpr (std::is_same_v<T, Lanes>)
-    return Lanes::load(p + i);
-  else
-    return p[i];
-}
-
-template <class T> [[gnu::always_inline]] inline void storeAt(double* p, long i, const T& v) {
-  if constexpr (std::is_same_v<T, Lanes>)
-    v.store(p + i);
-  else
-    p[i] = v;
-}
-
+// are a fair share of a step: four elements in one AVX2 register
 template <class Field>
 [[gnu::target("avx2"), gnu::flatten]] void rk4StepAvx2(const Field& field, double h, long n, const double* y0,
                                                        const double* f0, double* k2, double* k3, double* k4,
                                                        double* tmp, double* y1) {
-  const auto plusScaled = [n, y0, tmp](double c, const double* k) { // tmp = y0 + c k
-    eachElement(n, [&]<class T>(long i) { storeAt(tmp, i, loadAt<T>(y0, i) + T(c) * loadAt<T>(k, i)); });
-  };
-  plusScaled(0.5 * h, f0);
-  field(tmp, k2);
-  plusScaled(0.5 * h, k2);
-  field(tmp, k3);
-  plusScaled(h, k3);
-  field(tmp, k4);
-  const double c = h / 6.0;
-  eachElement(n, [&]<class T>(long i) {
-    const T sum = loadAt<T>(f0, i) + T(2.0) * loadAt<T>(k2, i) + T(2.0) * loadAt<T>(k3, i) + loadAt<T>(k4, i);
-    storeAt(y1, i, loadAt<T>(y0, i) + T(c) * sum);
-  });
+  rk4StepOnArrays(field, h, n, y0, f0, k2, k3, k4, tmp, y1);
 }
 
 } // namespace

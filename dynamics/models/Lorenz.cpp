@@ -21,7 +21,7 @@ const ModelInfo& Lorenz::staticInfo() {
 }
 
 Lorenz::Lorenz(const ParameterValues& p)
-    : ModelWithField(staticInfo(), p), sigma_(p["sigma"]), rho_(p["rho"]), beta_(p["beta"]) {
+    : ModelWithField(staticInfo(), p), c_{p["sigma"], p["rho"], p["beta"]} {
   addStandardObservables();
 }
 

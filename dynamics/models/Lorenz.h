@@ -12,14 +12,20 @@ public:
   static const ModelInfo& staticInfo();
   static constexpr bool kLaneField = true; ///< no branch on a value: runs on lanes (Lanes.h)
 
-  template <class S> void field(const Vec<S>& x, Vec<S>& dx) const {
-    dx[0] = sigma_ * (x[1] - x[0]);
-    dx[1] = x[0] * (rho_ - x[2]) - x[1];
-    dx[2] = x[0] * x[1] - beta_ * x[2];
+  /// The parameters the field reads, as T: double, or one per lane (LaneField.h).
+  template <class T> struct Coefficients { T sigma, rho, beta; };
+  const Coefficients<double>& coefficients() const { return c_; }
+
+  template <class S, class T>
+  [[gnu::always_inline]] static void field(const Coefficients<T>& c, const Vec<S>& x, Vec<S>& dx) {
+    dx[0] = c.sigma * (x[1] - x[0]);
+    dx[1] = x[0] * (c.rho - x[2]) - x[1];
+    dx[2] = x[0] * x[1] - c.beta * x[2];
   }
+  template <class S> void field(const Vec<S>& x, Vec<S>& dx) const { field(c_, x, dx); }
 
 private:
-  double sigma_, rho_, beta_;
+  Coefficients<double> c_;
 };
 
 } // namespace rv

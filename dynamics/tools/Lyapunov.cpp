@@ -232,7 +232,7 @@ void LyapunovRun::startAll(double t0) {
 
 // one interval: advance, orthonormalise, restart; false when stopped on the way (nothing is changed then)
 bool LyapunovRun::interval(const ToolControl& control) {
-  double step = std::min(interval_, s_.maxTime - t_);
+  double step = nextSpan();
   if (tangent_) {
     if (const long steps = fusedSteps(step); steps > 0) {
       if (!advanceFused(steps, control)) {
@@ -251,8 +251,6 @@ bool LyapunovRun::interval(const ToolControl& control) {
       startAll(t_);
       return false;
     }
-    x_ = state_.head(n_);
-    V_ = Eigen::Map<const Eigen::MatrixXd>(state_.data() + n_, m_, k_);
   } else {
     for (;;) { // cut the interval short while a perturbation grows beyond its maximum
       std::vector<Eigen::VectorXd> ends(k_ + 1);
@@ -276,11 +274,30 @@ bool LyapunovRun::interval(const ToolControl& control) {
       break;
     }
   }
-  t_ += step;
+  close(step);
+  return true;
+}
+
+// the interval of `span` advanced (tangent mode: in state_): orthonormalise, restart
+void LyapunovRun::close(double span) {
+  if (tangent_) {
+    x_ = state_.head(n_);
+    V_ = Eigen::Map<const Eigen::MatrixXd>(state_.data() + n_, m_, k_);
+  }
+  t_ += span;
   project();
   orthonormalize(V_, logs_);
   startAll(t_);
-  return true;
+}
+
+long LyapunovRun::nextFusedSteps() const {
+  return tangent_ && !finished() ? fusedSteps(nextSpan()) : 0;
+}
+
+void LyapunovRun::closeFusedInterval(const std::function<void(const LyapunovEstimate&)>& onEstimate,
+                                     const ToolControl& control) {
+  close(nextSpan());
+  recordEstimate(onEstimate, control);
 }
 
 // how many rk4 steps make `span` when the fused path applies and they make it exactly; 0 otherwise
@@ -303,29 +320,41 @@ bool LyapunovRun::advanceFused(long steps, const ToolControl& control) {
   return true;
 }
 
+bool LyapunovRun::advanceOneInterval(const std::function<void(const LyapunovEstimate&)>& onEstimate,
+                                     const ToolControl& control) {
+  if (control.stopRequested() || !interval(control)) return false;
+  recordEstimate(onEstimate, control);
+  return true;
+}
+
+// the estimate after an interval: the history, the stopping rule, the streamed output
+void LyapunovRun::recordEstimate(const std::function<void(const LyapunovEstimate&)>& onEstimate,
+                                 const ToolControl& control) {
+  const Eigen::VectorXd estimate = logs_ / t_;
+  result_.last.time = t_;
+  result_.last.exponents.assign(estimate.data(), estimate.data() + k_);
+  history_.push_back(estimate);
+  if (static_cast<int>(history_.size()) > s_.estimateEvery) {
+    const double change = (history_.back() - history_.front()).lpNorm<Eigen::Infinity>();
+    history_.erase(history_.begin());
+    successes_ = change < s_.accuracy ? successes_ + 1 : 0;
+    if (s_.successes > 0 && successes_ >= s_.successes) result_.converged = true;
+  }
+  if (t_ >= nextOutput_) {
+    if (onEstimate) onEstimate(result_.last);
+    nextOutput_ += s_.outputPeriod;
+  }
+  control.progress(t_ / s_.maxTime);
+}
+
 bool LyapunovRun::run(const std::function<void(const LyapunovEstimate&)>& onEstimate,
                       const ToolControl& control) {
   result_.stopped = false;
-  while (t_ < s_.maxTime && !result_.converged) {
-    if (control.stopRequested() || !interval(control)) {
+  while (!finished()) {
+    if (!advanceOneInterval(onEstimate, control)) {
       result_.stopped = true;
       return false;
     }
-    const Eigen::VectorXd estimate = logs_ / t_;
-    result_.last.time = t_;
-    result_.last.exponents.assign(estimate.data(), estimate.data() + k_);
-    history_.push_back(estimate);
-    if (static_cast<int>(history_.size()) > s_.estimateEvery) {
-      const double change = (history_.back() - history_.front()).lpNorm<Eigen::Infinity>();
-      history_.erase(history_.begin());
-      successes_ = change < s_.accuracy ? successes_ + 1 : 0;
-      if (s_.successes > 0 && successes_ >= s_.successes) result_.converged = true;
-    }
-    if (t_ >= nextOutput_) {
-      if (onEstimate) onEstimate(result_.last);
-      nextOutput_ += s_.outputPeriod;
-    }
-    control.progress(t_ / s_.maxTime);
   }
   if (onEstimate && result_.last.time > 0) onEstimate(result_.last);
   return true;

@@ -8,6 +8,7 @@
 #include "dynamics/integrators/Integrator.h"
 #include "dynamics/tools/ToolControl.h"
 
+#include <algorithm>
 #include <functional>
 #include <memory>
 #include <vector>
@@ -61,6 +62,22 @@ public:
   bool run(const std::function<void(const LyapunovEstimate&)>& onEstimate = {},
            const ToolControl& control = {});
   const LyapunovResult& result() const { return result_; }
+  /// Whether the run is over (its time reached, or converged).
+  bool finished() const { return t_ >= s_.maxTime || result_.converged; }
+  /// One interval and its estimate: what run() repeats. False when stopped on the way (nothing changes).
+  bool advanceOneInterval(const std::function<void(const LyapunovEstimate&)>& onEstimate,
+                          const ToolControl& control);
+
+  /// Runs advanced together on SIMD lanes (LyapunovLanes.h) take an interval in three parts: the number of
+  /// fused rk4 steps of fusedStepSize() that make it (0 where the fused path does not apply: the run then
+  /// takes it alone, advanceOneInterval), the state those steps advance (x, then the tangent vectors, as
+  /// TangentSystem lays them out), and the interval's close once advanced (the estimate as run() makes it).
+  long nextFusedSteps() const;
+  double fusedStepSize() const { return fusedStep_; }
+  Eigen::VectorXd& tangentState() { return state_; }
+  void closeFusedInterval(const std::function<void(const LyapunovEstimate&)>& onEstimate,
+                          const ToolControl& control);
+  int exponentCount() const { return k_; }
   /// Saves the run at its last finished interval (every interval restarts the integrators from there):
   /// restore() into a run built from the same model, settings and start goes on bit-identically.
   void save(Snapshot& s) const;
@@ -70,6 +87,10 @@ private:
   void startAll(double t0);
   void project();
   bool interval(const ToolControl& control);
+  void close(double span);
+  void recordEstimate(const std::function<void(const LyapunovEstimate&)>& onEstimate,
+                      const ToolControl& control);
+  double nextSpan() const { return std::min(interval_, s_.maxTime - t_); }
   long fusedSteps(double span) const;
   bool advanceFused(long steps, const ToolControl& control);
   const Model& model_;

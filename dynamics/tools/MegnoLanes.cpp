@@ -30,12 +30,12 @@ LaneSystemInfo laneInfo(const Model& base, int dimension) {
 // l, the components x (n), w (m), tau, A, B
 class LaneSystem final : private LaneSystemInfo, public Model {
 public:
-  LaneSystem(const Model& base, const LaneField& lanes)
+  LaneSystem(const Model& base, const LaneKernel& kernel)
       : LaneSystemInfo(laneInfo(base, kLanes * (base.dimension() + base.info().coreDimension + 3))),
-        Model(systemInfo, base.parameters()), lanes_(lanes), n_(base.dimension()),
+        Model(systemInfo, base.parameters()), kernel_(kernel), n_(base.dimension()),
         m_(base.info().coreDimension) {}
   void rhs(const double* y, double* dy) const override {
-    lanes_.laneTangentRhs(y, dy);
+    kernel_.tangentRhs(y, dy);
     if (cpuHasAvx2())
       sumsAvx2(y, dy);
     else
@@ -65,37 +65,28 @@ private:
     for (int l = 0; l < kLanes; ++l)
       dy[b + l] = t[l] > 0 ? rate[l] : 0;
   }
-  const LaneField& lanes_;
+  const LaneKernel& kernel_;
   int n_, m_;
 };
 
-const LaneField* laneField(const Model& model) {
-  const auto* lanes = dynamic_cast<const LaneField*>(&model);
-  if (!lanes || model.isMap()) return nullptr;
-  // a model whose lane kernel is missing says so by writing nothing
-  std::vector<double> probe(
-      static_cast<std::size_t>(kLanes * (model.dimension() + model.info().coreDimension)), 0.0);
-  std::vector<double> out(probe.size());
-  return lanes->laneTangentRhs(probe.data(), out.data()) ? lanes : nullptr;
-}
-
 } // namespace
 
-bool megnoRunsOnLanes(const Model& model) {
-  return laneField(model) != nullptr;
+bool megnoRunsOnLanes(const std::vector<const Model*>& models) {
+  return laneKernelFor(models) != nullptr;
 }
 
-std::vector<MegnoLaneResult> megnoOnLanes(const Model& model, const IntegratorFactory& makeIntegrator,
+std::vector<MegnoLaneResult> megnoOnLanes(const std::vector<const Model*>& models,
+                                          const IntegratorFactory& makeIntegrator,
                                           const std::vector<Eigen::VectorXd>& x0s, const MegnoSettings& s,
                                           const ToolControl& control) {
-  const LaneField* lanes = laneField(model);
-  if (!lanes) throw std::logic_error("megnoOnLanes: " + model.info().id + " has no lane kernel");
-  if (x0s.empty() || x0s.size() > static_cast<std::size_t>(kLanes))
-    throw std::logic_error("megnoOnLanes: 1 to kLanes states");
+  const auto kernel = laneKernelFor(models);
+  if (!kernel) throw std::logic_error("megnoOnLanes: these models do not run on lanes together");
+  if (x0s.empty() || x0s.size() != models.size()) throw std::logic_error("megnoOnLanes: one model per state");
+  const Model& model = *models[0];
   if (!(s.maxTime > 0) || !std::isfinite(s.maxTime)) throw InputError("megno: the time must be positive");
   if (!(s.interval > 0)) throw InputError("megno: the interval must be positive");
   const int n = model.dimension(), m = model.info().coreDimension, count = static_cast<int>(x0s.size());
-  const LaneSystem system(model, *lanes);
+  const LaneSystem system(model, *kernel);
   const int tau = (n + m) * kLanes, sumA = tau + kLanes, sumB = sumA + kLanes;
 
   // the lanes' states: the orbits given, the last repeated into lanes left over; w as MegnoRun starts it
@@ -116,8 +107,8 @@ std::vector<MegnoLaneResult> megnoOnLanes(const Model& model, const IntegratorFa
     std::vector<MegnoLaneResult> r(static_cast<std::size_t>(count));
     for (int l = 0; l < count; ++l) {
       try {
-        const MegnoResult one =
-            megno(model, makeIntegrator, x0s[static_cast<std::size_t>(l)], s, {}, control);
+        const MegnoResult one = megno(*models[static_cast<std::size_t>(l)], makeIntegrator,
+                                      x0s[static_cast<std::size_t>(l)], s, {}, control);
         if (one.stopped) return std::vector<MegnoLaneResult>{};
         r[static_cast<std::size_t>(l)].last = one.last;
       } catch (const ComputationError&) {

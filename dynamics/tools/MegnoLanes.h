@@ -18,17 +18,20 @@
 
 namespace rv {
 
-/// Whether megnoOnLanes can run this model: a flow whose field runs on lanes (LaneField.h).
-bool megnoRunsOnLanes(const Model& model);
+/// Whether megnoOnLanes can run orbits of these models (one per orbit) together: flows of one class whose
+/// field runs on lanes with these parameters (laneKernelFor, LaneField.h).
+bool megnoRunsOnLanes(const std::vector<const Model*>& models);
 
 struct MegnoLaneResult {
   MegnoEstimate last;         ///< at the end of the time
   std::exception_ptr failure; ///< what the scalar run threw for this orbit (then `last` is empty)
 };
 
-/// MEGNO and FLI from each of `x0s` (1 to kLanes states of `model`) to settings.maxTime. Returns one result
-/// per state, or nothing when stopped by request. InputError for bad settings (as MegnoRun).
-std::vector<MegnoLaneResult> megnoOnLanes(const Model& model, const IntegratorFactory& makeIntegrator,
+/// MEGNO and FLI from each of `x0s` (1 to kLanes states, of the models `models`, one per state: they may
+/// differ in their parameters where megnoRunsOnLanes) to settings.maxTime. Returns one result per state, or
+/// nothing when stopped by request. InputError for bad settings (as MegnoRun).
+std::vector<MegnoLaneResult> megnoOnLanes(const std::vector<const Model*>& models,
+                                          const IntegratorFactory& makeIntegrator,
                                           const std::vector<Eigen::VectorXd>& x0s,
                                           const MegnoSettings& settings, const ToolControl& control = {});
 

@@ -515,9 +515,9 @@ const ParameterTable& sweepOptionsTable() {
        .min = 0,
        .max = 1,
        .description =
-           "0: points on SIMD lanes, several at once, where the quantity can (megno and its numbers "
-           "over a flow's initial points with rk4, bit for bit the points one at a time; `rollviz info` "
-           "names the width); 1: one point at a time",
+           "0: points on SIMD lanes, several at once, where the quantity can (megno and lyapunov numbers "
+           "over a flow's initial points and parameters with rk4, bit for bit the points one at a time; "
+           "`rollviz info` names the width); 1: one point at a time",
        .integer = true},
       {.id = "refine",
        .label = "Refinement levels",

@@ -1164,6 +1164,12 @@ class Cli(unittest.TestCase):
             self.assertEqual(r.returncode, 0, name + ": " + r.stderr)
             self.assertEqual(len(list(csv.reader(open(out)))), 1 + 2 ** len(doc["axes"]), name)
             self.assertTrue(varied(pixels(self.path(name + ".png"))[1]), name)
+            # one point at a time: the same numbers as the batches on SIMD lanes (every example's method is
+            # rk4 or one the sweep does not batch, so equal means bit for bit)
+            single = self.path(name + ".single.csv")
+            r = run("sweep", self.sweep_file(name, doc), "-o", single, "--lanes", "1")
+            self.assertEqual(r.returncode, 0, name + ": " + r.stderr)
+            self.assertEqual(self.sweep_values(single), self.sweep_values(out), name)
         self.assertEqual([f for f in os.listdir(self.dir) if "sweep-part" in f], [], "a temporary store was left")
 
     def test_sweep_window_and_refinement(self):

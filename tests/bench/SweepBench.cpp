@@ -44,6 +44,19 @@ void SweepThreads(benchmark::State& state) {
                          benchmark::Counter::kIsRate);
 }
 
+// the whole sweep on one thread, in whole batches as runSweepLevels chunks it
+void sweepOnOneThread(const SweepSpec& spec) {
+  std::filesystem::remove(storePath());
+  SweepStore store(storePath(), "bench", spec.points(), static_cast<int>(spec.columns.size()), "bench");
+  ChunkScheduler scheduler(store, 1, 0, {}, sweepBatch(spec));
+  runSweepThreads(store, scheduler,
+                  [&](const std::vector<long>& indices, const ToolControl& c) {
+                    return evaluateSweepPoints(spec, indices, c);
+                  },
+                  sweepBatch(spec), 1, {});
+  store.remove();
+}
+
 // MEGNO over initial points, one thread: several points at once on SIMD lanes (0) against one at a time (1).
 // With rk4 (h = 0.01) each lane is the scalar run bit for bit; with the scene's Everhart 15 (h = 0.05) and
 // adams (order 12, h = 0.05) a sweep runs one point at a time either way (scenes/Sweep.cpp says why): their
@@ -61,18 +74,26 @@ void SweepLanes(benchmark::State& state) {
   if (state.range(1) == 2)
     doc["set"].update({{"integrator.method", "adams"}, {"integrator.step", 0.05}, {"integrator.order", 12}});
   const SweepSpec spec = sweepFromJson(doc, "bench.json");
-  for (auto _ : state) {
-    std::filesystem::remove(storePath());
-    SweepStore store(storePath(), "bench", spec.points(), static_cast<int>(spec.columns.size()), "bench");
-    ChunkScheduler scheduler(store, 1, 0, {}, sweepBatch(spec)); // as runSweepLevels: whole batches
-    runSweepThreads(store, scheduler,
-                    [&](const std::vector<long>& indices, const ToolControl& c) {
-                      return evaluateSweepPoints(spec, indices, c);
-                    },
-                    sweepBatch(spec), 1, {});
-    store.remove();
-  }
+  for (auto _ : state)
+    sweepOnOneThread(spec);
   state.SetLabel(method);
+  state.counters["points/s"] =
+      benchmark::Counter(static_cast<double>(spec.points()) * static_cast<double>(state.iterations()),
+                         benchmark::Counter::kIsRate);
+}
+
+// The largest Lyapunov exponent of Lorenz over rho (scenes/sweeps/lorenz_lyapunov_rho.json: rk4, h = 0.001,
+// 16 values of rho, lyapunov.time 50), one thread: a parameter per lane, four points at once (0) against one
+// at a time (1), each lane the scalar run bit for bit
+void SweepLanesLyapunov(benchmark::State& state) {
+  nlohmann::json doc{{"scene", defaultScenePath("lorenz")},
+                     {"axes", {{{"id", "rho"}, {"min", 0.5}, {"max", 250}, {"count", 16}}}},
+                     {"quantity", "lyapunov.max"},
+                     {"set", {{"lyapunov.time", 50}}},
+                     {"options", {{"lanes", state.range(0)}}}};
+  const SweepSpec spec = sweepFromJson(doc, "bench.json");
+  for (auto _ : state)
+    sweepOnOneThread(spec);
   state.counters["points/s"] =
       benchmark::Counter(static_cast<double>(spec.points()) * static_cast<double>(state.iterations()),
                          benchmark::Counter::kIsRate);
@@ -114,5 +135,6 @@ BENCHMARK(SweepLanes)
     ->Iterations(1)
     ->UseRealTime()
     ->Unit(benchmark::kMillisecond);
+BENCHMARK(SweepLanesLyapunov)->Arg(1)->Arg(0)->Iterations(1)->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(SweepStoreWriteRead);
 BENCHMARK(SweepRecordBytes);

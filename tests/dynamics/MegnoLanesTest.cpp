@@ -77,6 +77,11 @@ TEST(Lanes, AMethodOfIndependentOrbitsStepsOrbitsTogetherAsEachAlone) {
   EXPECT_GE(declaring, 1); // rk4
 }
 
+// `count` orbits of one model
+std::vector<const Model*> sameModel(const Model& model, std::size_t count) {
+  return std::vector<const Model*>(count, &model);
+}
+
 // a Henon-Heiles state at energy e from (y, py) on x = 0 with px > 0
 Eigen::VectorXd hhState(double e, double y, double py) {
   Eigen::VectorXd x(4);
@@ -91,12 +96,12 @@ TEST(Lanes, KernelEqualsTheScalarTangentRightHandSideBitForBit) {
   for (const char* id : {"henon_heiles", "lorenz"}) {
     const auto model = test::makeModel(id, {});
     const int n = model->dimension(), m = model->info().coreDimension;
-    const auto* lanes = dynamic_cast<const LaneField*>(model.get());
-    ASSERT_TRUE(lanes) << id;
+    const auto kernel = laneKernelFor({model.get()});
+    ASSERT_TRUE(kernel) << id;
     std::vector<double> y(static_cast<std::size_t>(kLanes * (n + m))), out(y.size());
     for (double& v : y)
       v = u(random);
-    ASSERT_TRUE(lanes->laneTangentRhs(y.data(), out.data())) << id;
+    kernel->tangentRhs(y.data(), out.data());
     for (int l = 0; l < kLanes; ++l) {
       Eigen::VectorXd x(n), w(m), dx(n), dw(m);
       for (int c = 0; c < n; ++c)
@@ -112,9 +117,13 @@ TEST(Lanes, KernelEqualsTheScalarTangentRightHandSideBitForBit) {
     }
   }
   // a model whose field branches on a value has no lane kernel: the batched tools leave it to the scalar run
-  EXPECT_FALSE(megnoRunsOnLanes(*test::makeModel("chaplygin_ball", {})));
-  EXPECT_FALSE(megnoRunsOnLanes(*test::makeModel("standard_map", {})));
-  EXPECT_TRUE(megnoRunsOnLanes(*test::makeModel("henon_heiles", {})));
+  const auto ball = test::makeModel("chaplygin_ball", {}), map = test::makeModel("standard_map", {}),
+             hh = test::makeModel("henon_heiles", {}), lorenz = test::makeModel("lorenz", {});
+  EXPECT_FALSE(megnoRunsOnLanes({ball.get()}));
+  EXPECT_FALSE(megnoRunsOnLanes({map.get()}));
+  EXPECT_TRUE(megnoRunsOnLanes({hh.get()}));
+  // lanes of one class only
+  EXPECT_FALSE(megnoRunsOnLanes({hh.get(), lorenz.get()}));
 }
 
 TEST(Lanes, MegnoWithRk4IsTheScalarRunBitForBit) {
@@ -125,7 +134,7 @@ TEST(Lanes, MegnoWithRk4IsTheScalarRunBitForBit) {
   // tori and chaos, and a batch of three (the last lane repeats the third)
   const std::vector<Eigen::VectorXd> x0s{hhState(0.125, 0.1, 0.1), hhState(0.125, 0.3, 0.3),
                                          hhState(0.125, -0.2, 0.05)};
-  const auto lanes = megnoOnLanes(*model, rk4, x0s, s);
+  const auto lanes = megnoOnLanes(sameModel(*model, x0s.size()), rk4, x0s, s);
   ASSERT_EQ(lanes.size(), 3u);
   for (std::size_t k = 0; k < x0s.size(); ++k) {
     ASSERT_FALSE(lanes[k].failure);
@@ -144,7 +153,7 @@ TEST(Lanes, MegnoWithEverhartAgreesToItsAccuracyOnTori) {
   s.maxTime = 200, s.interval = 10, s.outputPeriod = 200;
   const std::vector<Eigen::VectorXd> x0s{hhState(0.125, 0.1, 0.1), hhState(0.125, 0.0, 0.2),
                                          hhState(0.125, -0.1, 0.0), hhState(0.125, 0.05, -0.1)};
-  const auto lanes = megnoOnLanes(*model, everhart, x0s, s);
+  const auto lanes = megnoOnLanes(sameModel(*model, x0s.size()), everhart, x0s, s);
   for (std::size_t k = 0; k < x0s.size(); ++k) {
     const MegnoEstimate alone = megno(*model, everhart, x0s[k], s).last;
     std::printf("  lane %zu: <Y> %.15f alone %.15f\n", k, lanes[k].last.megno, alone.megno);
@@ -164,7 +173,7 @@ TEST(Lanes, AnOrbitThatBlowsUpFailsAsItWouldAloneAndTheOthersKeepTheirAnswers) {
   s.maxTime = 40, s.interval = 5, s.outputPeriod = 40;
   const std::vector<Eigen::VectorXd> x0s{hhState(0.1, 0.1, 0.1), hhState(e, 0.6, 0.3),
                                          hhState(0.1, -0.2, 0.05), hhState(e, 0.0, 0.1)};
-  const auto lanes = megnoOnLanes(*model, rk4, x0s, s);
+  const auto lanes = megnoOnLanes(sameModel(*model, x0s.size()), rk4, x0s, s);
   int failed = 0;
   for (std::size_t k = 0; k < x0s.size(); ++k) {
     bool aloneFails = false;

@@ -398,6 +398,19 @@ TEST(Sweep, RefiningByAValueFollowsOnlyWhereTheQuantityCrossesIt) {
             std::string::npos);
 }
 
+// a whole sweep on two threads, into a store in the test's folder
+std::unique_ptr<SweepStore> sweepOnTwoThreads(const SweepSpec& s, const std::string& name) {
+  auto store = std::make_unique<SweepStore>(::testing::TempDir() + "/" + name, s.resolved.dump(), s.points(),
+                                            static_cast<int>(s.columns.size()), "test");
+  ChunkScheduler scheduler(*store, 2);
+  EXPECT_TRUE(runSweepThreads(*store, scheduler,
+                              [&](const std::vector<long>& indices, const ToolControl& c) {
+                                return evaluateSweepPoints(s, indices, c);
+                              },
+                              sweepBatch(s), 2, {}));
+  return store;
+}
+
 // MEGNO over Henon-Heiles initial points: four points at once on SIMD lanes (options.lanes 0) against one at
 // a time (lanes 1) -- with rk4 the same records bit for bit, points outside the energy surface failing alike
 TEST(Sweep, PointsOnLanesAreThePointsOneAtATime) {
@@ -411,23 +424,12 @@ TEST(Sweep, PointsOnLanesAreThePointsOneAtATime) {
   const SweepSpec batched = file(0), single = file(1);
   // the megno tool's batch evaluation is a registry property of the tool (not a name the sweep knows)
   ASSERT_NE(findLanesEvaluator("megno"), nullptr);
-  EXPECT_EQ(findLanesEvaluator("lyapunov"), nullptr);
+  EXPECT_NE(findLanesEvaluator("lyapunov"), nullptr);
+  EXPECT_EQ(findLanesEvaluator("spectrum"), nullptr);
   EXPECT_THROW(addLanesEvaluator("megno", {}), InputError);
   ASSERT_EQ(sweepBatch(batched), kLanes);
   ASSERT_EQ(sweepBatch(single), 1);
-  const std::string dir = ::testing::TempDir();
-  const auto runAll = [&](const SweepSpec& s, const std::string& name) {
-    auto store = std::make_unique<SweepStore>(dir + "/" + name, s.resolved.dump(), s.points(),
-                                              static_cast<int>(s.columns.size()), "test");
-    ChunkScheduler scheduler(*store, 2);
-    EXPECT_TRUE(runSweepThreads(*store, scheduler,
-                                [&](const std::vector<long>& indices, const ToolControl& c) {
-                                  return evaluateSweepPoints(s, indices, c);
-                                },
-                                sweepBatch(s), 2, {}));
-    return store;
-  };
-  auto a = runAll(batched, "lanes.store"), b = runAll(single, "single.store");
+  auto a = sweepOnTwoThreads(batched, "lanes.store"), b = sweepOnTwoThreads(single, "single.store");
   int failed = 0;
   for (long i = 0; i < batched.points(); ++i) {
     const SweepRecord x = a->read(i), y = b->read(i);
@@ -441,6 +443,32 @@ TEST(Sweep, PointsOnLanesAreThePointsOneAtATime) {
   }
   EXPECT_GT(failed, 0); // the corners lie outside the energy surface
   EXPECT_LT(failed, batched.points());
+  a->remove();
+  b->remove();
+}
+
+// The largest Lyapunov exponent of Lorenz over rho with a parameter per lane
+// (dynamics/tools/LyapunovLanes.h): the batched sweep writes the one-at-a-time sweep's numbers bit for bit,
+// and they are the known ones -- negative where the orbit falls onto an equilibrium (rho below ~24: 4 to 20
+// here), the chaotic attractor's 0.9056 at rho = 28 (Sprott 2003; within the 300 time units' convergence)
+TEST(Sweep, LorenzExponentOverRhoOnLanesIsTheScalarOne) {
+  const auto file = [](int lanes) {
+    return sweepFromJson(sweep("lorenz", json::array({axis("rho", 4, 28, 7)}), "lyapunov.max",
+                               {{"lyapunov.time", 300}}, {{"lanes", lanes}}),
+                         "sw.json");
+  };
+  const SweepSpec batched = file(0), single = file(1);
+  ASSERT_EQ(sweepBatch(batched), kLanes);
+  auto a = sweepOnTwoThreads(batched, "rho-lanes.store"), b = sweepOnTwoThreads(single, "rho-single.store");
+  for (long i = 0; i < batched.points(); ++i) {
+    const SweepRecord x = a->read(i), y = b->read(i);
+    ASSERT_TRUE(x.ok && y.ok) << i << ": " << x.reason << " / " << y.reason;
+    EXPECT_EQ(x.values, y.values) << "rho " << batched.axisValues(i)[0];
+    if (batched.axisValues(i)[0] <= 20) {
+      EXPECT_LT(x.values[0], 0) << "rho " << batched.axisValues(i)[0];
+    }
+  }
+  EXPECT_NEAR(a->read(6).values[0], 0.9056, 0.05);
   a->remove();
   b->remove();
 }

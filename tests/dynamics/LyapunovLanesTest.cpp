@@ -1,0 +1,173 @@
+// Lyapunov exponents on lanes (dynamics/tools/LyapunovLanes.h) and lanes of different parameters
+// (LaneField.h's Coefficients): the lane kernels with one Lorenz model per lane equal each model's scalar
+// tangent right-hand side and fused RK4 bit for bit; four orbits at four values of rho give each the scalar
+// run's exponents bit for bit (an interval that is not a whole number of steps, taken alone, included); runs
+// that converge early stop as alone; an orbit that blows up fails as it fails alone; what cannot go on lanes
+// (the perturbed method, another integrator, too many exponents, lanes of two classes) says so.
+#include "dynamics/tools/LyapunovLanes.h"
+#include "dynamics/core/Errors.h"
+#include "dynamics/core/LaneField.h"
+#include "dynamics/integrators/Merson.h"
+#include "dynamics/integrators/Rk4.h"
+#include "tests/dynamics/TestSupport.h"
+
+#include <gtest/gtest.h>
+#include <random>
+
+namespace rv {
+namespace {
+
+std::vector<std::unique_ptr<Model>> lorenzAt(const std::vector<double>& rhos) {
+  std::vector<std::unique_ptr<Model>> models;
+  for (double rho : rhos)
+    models.push_back(test::makeModel("lorenz", {{"rho", rho}, {"sigma", 10 + rho / 100}}));
+  return models;
+}
+
+std::vector<const Model*> pointers(const std::vector<std::unique_ptr<Model>>& models) {
+  std::vector<const Model*> p;
+  for (const auto& m : models)
+    p.push_back(m.get());
+  return p;
+}
+
+TEST(LyapunovLanes, KernelsWithAModelPerLaneEqualEachModelAloneBitForBit) {
+  const auto models = lorenzAt({0.5, 13.9, 28, 250});
+  const auto kernel = laneKernelFor(pointers(models));
+  ASSERT_NE(kernel, nullptr);
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> u(-3, 3);
+  const int n = 3, m = 3;
+  // f and J w
+  std::vector<double> y(static_cast<std::size_t>(kLanes * (n + m))), out(y.size());
+  for (double& v : y)
+    v = u(random);
+  kernel->tangentRhs(y.data(), out.data());
+  for (int l = 0; l < kLanes; ++l) {
+    Eigen::VectorXd x(n), w(m), dx(n), dw(m);
+    for (int c = 0; c < n; ++c)
+      x[c] = y[static_cast<std::size_t>(c * kLanes + l)];
+    for (int i = 0; i < m; ++i)
+      w[i] = y[static_cast<std::size_t>((n + i) * kLanes + l)];
+    models[static_cast<std::size_t>(l)]->tangentRhs(x.data(), w.data(), 1, dx.data(), dw.data());
+    for (int c = 0; c < n; ++c)
+      EXPECT_EQ(out[static_cast<std::size_t>(c * kLanes + l)], dx[c]) << "lane " << l << " f" << c;
+    for (int i = 0; i < m; ++i)
+      EXPECT_EQ(out[static_cast<std::size_t>((n + i) * kLanes + l)], dw[i]) << "lane " << l << " Jw" << i;
+  }
+  // fused RK4 with 1, 2 and 3 tangent vectors
+  for (int k = 1; k <= 3; ++k) {
+    const int size = n + m * k;
+    std::vector<double> stacked(static_cast<std::size_t>(kLanes * size));
+    std::vector<Eigen::VectorXd> alone(kLanes, Eigen::VectorXd(size));
+    for (int l = 0; l < kLanes; ++l)
+      for (int j = 0; j < size; ++j)
+        stacked[static_cast<std::size_t>(j * kLanes + l)] = alone[static_cast<std::size_t>(l)][j] =
+            j < n ? u(random) * 5 : u(random);
+    ASSERT_TRUE(kernel->tangentRk4(stacked.data(), k, 1e-3, 700)) << k;
+    for (int l = 0; l < kLanes; ++l) {
+      Eigen::VectorXd& a = alone[static_cast<std::size_t>(l)];
+      ASSERT_TRUE(models[static_cast<std::size_t>(l)]->tangentRk4(a.data(), a.data() + n, k, 1e-3, 700));
+      for (int j = 0; j < size; ++j)
+        EXPECT_EQ(stacked[static_cast<std::size_t>(j * kLanes + l)], a[j]) << "k " << k << " lane " << l;
+    }
+  }
+  EXPECT_FALSE(kernel->tangentRk4(y.data(), 4, 1e-3, 0)) << "more vectors than the core dimension";
+}
+
+TEST(LyapunovLanes, FourValuesOfRhoGiveEachTheScalarRunsExponentsBitForBit) {
+  const auto models = lorenzAt({10, 24, 28, 160});
+  const IntegratorFactory rk4 = [] { return std::make_unique<Rk4>(0.002); };
+  LyapunovSettings s;
+  s.maxTime = 30.001; // the last interval, 0.001, is not a whole number of steps: each run takes it alone
+  s.interval = 0.5;
+  std::vector<Eigen::VectorXd> x0s;
+  for (int l = 0; l < 4; ++l)
+    x0s.push_back(Eigen::Vector3d(1 + l, 1, 20 - l));
+  ASSERT_TRUE(lyapunovRunsOnLanes(pointers(models), rk4, s));
+  const auto lanes = lyapunovOnLanes(pointers(models), rk4, x0s, s);
+  ASSERT_TRUE(lanes.has_value());
+  ASSERT_EQ(lanes->size(), 4u);
+  for (std::size_t l = 0; l < 4; ++l) {
+    ASSERT_FALSE((*lanes)[l].failure) << l;
+    const LyapunovResult alone = lyapunovExponents(*models[l], rk4, x0s[l], s);
+    EXPECT_EQ((*lanes)[l].result.last.exponents, alone.last.exponents) << "rho lane " << l;
+    EXPECT_EQ((*lanes)[l].result.last.time, alone.last.time) << l;
+  }
+  // rho = 28 is chaotic, rho = 10 settles on a fixed point: the largest exponent says so already at t = 30
+  EXPECT_GT((*lanes)[2].result.last.exponents[0], 0.5);
+  EXPECT_LT((*lanes)[0].result.last.exponents[0], 0);
+  // fewer orbits than lanes, two exponents of each, estimates compared for an early stop
+  s.count = 2, s.successes = 3, s.accuracy = 0.05, s.estimateEvery = 4;
+  const std::vector<const Model*> two{models[0].get(), models[3].get()};
+  const std::vector<Eigen::VectorXd> twoStarts{x0s[0], x0s[3]};
+  const auto pair = lyapunovOnLanes(two, rk4, twoStarts, s);
+  ASSERT_TRUE(pair.has_value());
+  ASSERT_EQ(pair->size(), 2u);
+  for (std::size_t l = 0; l < 2; ++l) {
+    const LyapunovResult alone = lyapunovExponents(*two[l], rk4, twoStarts[l], s);
+    EXPECT_EQ((*pair)[l].result.converged, alone.converged) << l;
+    EXPECT_EQ((*pair)[l].result.last.exponents, alone.last.exponents) << l;
+    EXPECT_EQ((*pair)[l].result.last.time, alone.last.time) << l;
+  }
+  EXPECT_TRUE((*pair)[0].result.converged) << "pick settings under which the fixed point converges early";
+}
+
+TEST(LyapunovLanes, AnOrbitThatBlowsUpFailsAsAloneAndTheOthersKeepTheirExponents) {
+  // Henon-Heiles above the escape energy 1/6: an orbit leaving through a saddle runs off to infinity
+  const auto model = test::makeModel("henon_heiles", {});
+  const IntegratorFactory rk4 = [] { return std::make_unique<Rk4>(0.01); };
+  LyapunovSettings s;
+  s.maxTime = 40, s.interval = 1;
+  const auto state = [](double e, double y, double py) {
+    Eigen::VectorXd x(4);
+    x << 0, y, std::sqrt(std::max(0.0, 2 * e - py * py - y * y + 2 * y * y * y / 3)), py;
+    return x;
+  };
+  const std::vector<Eigen::VectorXd> x0s{state(0.1, 0.1, 0.1), state(0.3, 0.6, 0.3), state(0.1, -0.2, 0.05)};
+  const auto lanes = lyapunovOnLanes(std::vector<const Model*>(3, model.get()), rk4, x0s, s);
+  ASSERT_TRUE(lanes.has_value());
+  int failed = 0;
+  for (std::size_t l = 0; l < x0s.size(); ++l) {
+    std::string aloneFailure;
+    LyapunovResult alone;
+    try {
+      alone = lyapunovExponents(*model, rk4, x0s[l], s);
+    } catch (const ComputationError& e) {
+      aloneFailure = e.what();
+    }
+    std::string laneFailure;
+    if ((*lanes)[l].failure) {
+      try {
+        std::rethrow_exception((*lanes)[l].failure);
+      } catch (const ComputationError& e) {
+        laneFailure = e.what();
+      }
+    }
+    EXPECT_EQ(laneFailure, aloneFailure) << l;
+    failed += aloneFailure.empty() ? 0 : 1;
+    if (aloneFailure.empty()) {
+      EXPECT_EQ((*lanes)[l].result.last.exponents, alone.last.exponents) << l;
+    }
+  }
+  EXPECT_EQ(failed, 1) << "the orbit above the escape energy should blow up, the others not";
+}
+
+TEST(LyapunovLanes, WhatCannotGoOnLanesSaysSo) {
+  const auto models = lorenzAt({10, 28});
+  const auto ps = pointers(models);
+  const IntegratorFactory rk4 = [] { return std::make_unique<Rk4>(0.01); };
+  const IntegratorFactory merson = [] { return std::make_unique<Merson>(0.01, 1e-9, 1e-12, 1.0); };
+  LyapunovSettings s;
+  EXPECT_TRUE(lyapunovRunsOnLanes(ps, rk4, s));
+  EXPECT_FALSE(lyapunovRunsOnLanes(ps, merson, s)) << "no fused path: each run alone";
+  s.mode = LyapunovSettings::Mode::Perturbed;
+  EXPECT_FALSE(lyapunovRunsOnLanes(ps, rk4, s));
+  const auto hh = test::makeModel("henon_heiles", {});
+  EXPECT_FALSE(lyapunovRunsOnLanes({models[0].get(), hh.get()}, rk4, {})) << "two classes";
+  const auto map = test::makeModel("standard_map", {});
+  EXPECT_FALSE(lyapunovRunsOnLanes({map.get()}, rk4, {})) << "a map";
+}
+
+} // namespace
+} // namespace rv
