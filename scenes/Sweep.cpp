@@ -427,6 +427,10 @@ SweepSpec sweepFromJson(json doc, const std::string& source) {
     spec.axes.push_back(axis);
   }
   spec.lanes = static_cast<int>(options->get("lanes"));
+  if (spec.lanes != 0 && spec.lanes != 1 && spec.lanes != 4 && spec.lanes != 8)
+    (root / "options" / "lanes")
+        .fail("0 (as many as the CPU's registers take), 1 (one point at a time), 4 or 8, got " +
+              std::to_string(spec.lanes));
   // refinement: the axes become the finest grid, of which the file's grid is level 0
   spec.refine = static_cast<int>(options->get("refine"));
   spec.refineThreshold = options->get("refine_threshold");
@@ -513,7 +517,8 @@ SweepRecord evaluateSweepPoint(const SweepSpec& spec, long index, const ToolCont
 }
 
 int sweepBatch(const SweepSpec& spec) {
-  return spec.lanes == 0 && spec.quantity->evaluateLanes ? kLanes : 1;
+  if (!spec.quantity->evaluateLanes) return 1;
+  return spec.lanes == 0 ? laneWidth() : spec.lanes;
 }
 
 std::vector<SweepRecord> evaluateSweepPoints(const SweepSpec& spec, const std::vector<long>& indices,

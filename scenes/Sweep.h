@@ -38,9 +38,9 @@ struct LaneValues {
   std::exception_ptr failure;
 };
 
-/// A tool's batch evaluation of its output `output` over the scenes of up to kLanes grid points at once, one
-/// per SIMD lane (dynamics/core/Lanes.h): per point its values or what its evaluation threw; nothing where
-/// these scenes cannot go together (then each runs alone). Throws Stopped when stopped.
+/// A tool's batch evaluation of its output `output` over the scenes of up to kMaxLanes grid points at once,
+/// one per SIMD lane (dynamics/core/Lanes.h): per point its values or what its evaluation threw; nothing
+/// where these scenes cannot go together (then each runs alone). Throws Stopped when stopped.
 using LanesEvaluator = std::function<std::optional<std::vector<LaneValues>>(
     const std::string& output, const std::vector<Scene>& scenes, const ToolControl& control)>;
 /// Gives registered tool `id` a batch evaluation on lanes, which every sweep of its outputs then uses (the
@@ -63,7 +63,7 @@ struct SweepQuantity {
   bool optionalName = false; ///< takes ".NAME" but has a default (reversal[.NAME])
   /// Its first column is a category (a type, a count, yes/no): refined on any change.
   bool categorical = false;
-  /// Its values at up to kLanes grid points' scenes at once, one per SIMD lane (dynamics/core/Lanes.h), or
+  /// Its values at up to kMaxLanes grid points' scenes at once, one per SIMD lane (dynamics/core/Lanes.h), or
   /// nothing where these points cannot go together (another model, integrator or setting; a model without a
   /// lane kernel): then each is evaluated alone. Per point: its values, or what its evaluation threw.
   /// Throws Stopped when stopped. Unset for quantities that do not run on lanes.
@@ -123,8 +123,8 @@ Scene sweepPointScene(const SweepSpec& spec, long index);
 
 /// Computes grid point `index`; never throws: a point that fails is a record with ok = false and the reason.
 SweepRecord evaluateSweepPoint(const SweepSpec& spec, long index, const ToolControl& control);
-/// How many points evaluateSweepPoints takes at once: kLanes where the quantity runs on lanes (and
-/// options.lanes is 0), else 1.
+/// How many points evaluateSweepPoints takes at once: where the quantity runs on lanes, options.lanes, or the
+/// CPU's width (laneWidth: 8 with AVX-512, else 4) where that is 0; else 1.
 int sweepBatch(const SweepSpec& spec);
 /// Computes the grid points `indices` (at most sweepBatch), on SIMD lanes where they can go together, else
 /// one by one; a record per index, as evaluateSweepPoint gives (each point's seconds: its share of the

@@ -34,7 +34,9 @@ std::vector<Fact> buildFacts() {
       {"fmt", fmt::format("{}.{}.{}", FMT_VERSION / 10000, FMT_VERSION / 100 % 100, FMT_VERSION % 100)},
       {"module stamp", moduleStamp()},
       {"SIMD lanes",
-       laneDescription() + " (sweeps of MEGNO over initial points with rk4; --lanes 1: one at a time)"}};
+       laneDescription() +
+           " (sweeps of MEGNO and Lyapunov exponents over initial points and parameters with rk4; --lanes 1: "
+           "one at a time, --lanes 4 or 8: that many)"}};
   std::string compiler;
   const bool compiles = modelCompilationAvailable(&compiler);
   facts.push_back(

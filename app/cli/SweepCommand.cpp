@@ -323,7 +323,8 @@ Command addSweepCommand(CLI::App& app) {
   cmd->add_option(
       "--lanes", o->lanes,
       "1: one point at a time (the scalar path, for comparison); 0: several points on SIMD lanes where "
-      "the quantity can (the default; rollviz info names the width)");
+      "the quantity can, as many as the CPU's registers take (the default; rollviz info names the width); "
+      "4 or 8: that many");
   cmd->add_option("--checkpoint", o->checkpoint,
                   "keep finished points in FILE: a sweep killed and started again goes on from there");
   return {cmd, [o] { return runSweep(*o); }};

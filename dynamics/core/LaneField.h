@@ -1,6 +1,6 @@
-// LaneField.h -- what a model offers to integrate kLanes trajectories at once (dynamics/core/Lanes.h): a
-// kernel bound to kLanes models that evaluates their right-hand sides with the derivatives along tangent
-// vectors in one pass, and takes RK4 steps of kLanes orbits with their tangent vectors in one compiled loop.
+// LaneField.h -- what a model offers to integrate W trajectories at once (dynamics/core/Lanes.h; W = 4 or 8):
+// a kernel bound to W models that evaluates their right-hand sides with the derivatives along tangent
+// vectors in one pass, and takes RK4 steps of W orbits with their tangent vectors in one compiled loop.
 // Models with a templated field (ModelWithField) that declare `static constexpr bool kLaneField = true` (a
 // field with no branch on a value) have it; the batched tools (dynamics/tools/MegnoLanes.h, LyapunovLanes.h)
 // get it through laneKernelFor.
@@ -14,7 +14,6 @@
 #pragma once
 #include "dynamics/core/Lanes.h"
 
-#include <array>
 #include <memory>
 #include <vector>
 
@@ -22,19 +21,21 @@ namespace rv {
 
 class Model;
 
-/// The model of each lane: models of one class, the first the one asked.
-using LaneModels = std::array<const Model*, kLanes>;
+/// The model of each lane (4 or 8): models of one class, the first the one asked.
+using LaneModels = std::vector<const Model*>;
 
-/// The fields of kLanes models bound together: what the batched tools call at each step.
+/// The fields of W models bound together: what the batched tools call at each step.
 class LaneKernel {
 public:
   virtual ~LaneKernel() = default;
-  /// f(x) and J(x) w at kLanes states at once, component-major: x[c * kLanes + l] for the n state components
+  /// W: how many lanes.
+  virtual int width() const = 0;
+  /// f(x) and J(x) w at W states at once, component-major: x[c * W + l] for the n state components
   /// and then the m core components of w (m = coreDimension), out likewise (f, then J w). Lane l computes
   /// with the l-th model.
   virtual void tangentRhs(const double* x, double* out) const = 0;
-  /// Advances kLanes orbits, each with k tangent vectors in core coordinates, by `steps` classical RK4 steps
-  /// of h: y holds, component-major (y[j * kLanes + l]), each lane's state laid out as TangentSystem's (x,
+  /// Advances W orbits, each with k tangent vectors in core coordinates, by `steps` classical RK4 steps of h:
+  /// y holds, component-major (y[j * W + l]), each lane's state laid out as TangentSystem's (x,
   /// then the k vectors column after column). Each lane is what Model::tangentRk4 gives its orbit alone, bit
   /// for bit. False, changing nothing, where k is outside the fixed counts of tangentRk4; steps = 0 only
   /// asks.
@@ -44,13 +45,13 @@ public:
 class LaneField {
 public:
   virtual ~LaneField() = default;
-  /// The kernel of `models` (each of this model's class), or nullptr where they cannot go together: no lane
-  /// kernel, a map, models of another class, different parameters of a model without Coefficients.
+  /// The kernel of `models` (4 or 8, each of this model's class), or nullptr where they cannot go together:
+  /// no lane kernel, a map, models of another class, different parameters of a model without Coefficients.
   virtual std::unique_ptr<LaneKernel> laneKernel(const LaneModels& models) const = 0;
 };
 
-/// The kernel that integrates the orbits of `models` (one per orbit, 1 to kLanes; the last fills the lanes
-/// left over) together, or nullptr where they cannot go on lanes.
+/// The kernel that integrates the orbits of `models` (one per orbit, 1 to kMaxLanes; the last fills the lanes
+/// left over) together, 4 lanes wide for up to 4 orbits, else 8; nullptr where they cannot go on lanes.
 std::unique_ptr<LaneKernel> laneKernelFor(const std::vector<const Model*>& models);
 
 } // namespace rv

@@ -1,13 +1,14 @@
-// Lanes.h -- kLanes doubles computed together, one per SIMD lane, and Jet, a value with its derivative along
-// one direction: the scalars a model's templated field is evaluated on to integrate kLanes trajectories at
-// once (a sweep's points, issue 40), as heyoka's batch mode does (Biscani & Izzo, MNRAS 504 (2021) 2614).
+// Lanes.h -- W doubles computed together, one per SIMD lane, and Jet, a value with its derivatives along K
+// directions: the scalars a model's templated field is evaluated on to integrate W trajectories at once (a
+// sweep's points, issue 40), as heyoka's batch mode does (Biscani & Izzo, MNRAS 504 (2021) 2614).
 //
-// Lanes is a GCC/Clang vector of 4 doubles: a baseline x86-64 build computes it as two SSE2 pairs; code
-// compiled for AVX2 (ModelWithField's lane kernel, chosen at run time on a CPU that has it) as one 256-bit
-// register. Each lane does exactly the arithmetic the scalar path does -- no fused multiply-add (the kernel
-// is compiled for AVX2 without FMA), the same order of operations (Jet's rules are Eigen::AutoDiffScalar's)
-// -- so a lane's result equals the scalar one bit for bit. Functions with no vector form (sqrt, sin, ...)
-// are applied lane by lane with the C library's, as the scalar path calls them.
+// LaneVector<W> is a GCC/Clang vector of W = 4 or 8 doubles: a baseline x86-64 build computes it in SSE2
+// pairs; code compiled for AVX2 or AVX-512 (the lane kernels of ModelWithField, chosen at run time on a CPU
+// that has them) in 256- or 512-bit registers. Each lane does exactly the arithmetic the scalar path does --
+// no fused multiply-add (the project compiles with -ffp-contract=off, and AVX2 code without FMA), the same
+// order of operations (Jet's rules are Eigen::AutoDiffScalar's) -- so a lane's result equals the scalar one
+// bit for bit. Functions with no vector form (sqrt, sin, ...) are applied lane by lane with the C library's,
+// as the scalar path calls them.
 #pragma once
 #include "dynamics/core/HeldScalar.h"
 
@@ -18,76 +19,92 @@
 
 namespace rv {
 
-/// How many trajectories a lane kernel integrates at once.
-inline constexpr int kLanes = 4;
+/// The most trajectories a lane kernel integrates at once (AVX-512).
+inline constexpr int kMaxLanes = 8;
 
-struct Lanes {
-  // aligned as a double, not as the vector: Eigen's fixed-size storage aligns its arrays to 16 bytes, which a
-  // 32-byte-aligned element would contradict (clang refuses it); loads and stores are unaligned ones
-  typedef double V __attribute__((vector_size(kLanes * sizeof(double)), aligned(alignof(double))));
+namespace detail {
+// the vector types (a dependent vector_size is not one); aligned as a double, not as the vector: Eigen's
+// fixed-size storage aligns its arrays to 16 bytes, which a 32-byte-aligned element would contradict (clang
+// refuses it); loads and stores are unaligned ones
+template <int W> struct DoubleVector;
+template <> struct DoubleVector<4> {
+  typedef double Type __attribute__((vector_size(4 * sizeof(double)), aligned(alignof(double))));
+};
+template <> struct DoubleVector<8> {
+  typedef double Type __attribute__((vector_size(8 * sizeof(double)), aligned(alignof(double))));
+};
+} // namespace detail
+
+/// W doubles, one per lane.
+template <int W> struct LaneVector {
+  static constexpr int kWidth = W;
+  using V = typename detail::DoubleVector<W>::Type;
   V v;
-  Lanes() : v(V{}) {}
-  Lanes(double x) : v(V{} + x) {} // NOLINT(google-explicit-constructor): a constant in every lane
-  static Lanes load(const double* p) {
-    Lanes r;
+  LaneVector() : v(V{}) {}
+  LaneVector(double x) : v(V{} + x) {} // NOLINT(google-explicit-constructor): a constant in every lane
+  static LaneVector load(const double* p) {
+    LaneVector r;
     __builtin_memcpy(&r.v, p, sizeof(V));
     return r;
   }
   void store(double* p) const { __builtin_memcpy(p, &v, sizeof(V)); }
   double operator[](int l) const { return v[l]; }
-  Lanes& operator+=(const Lanes& o) { return v += o.v, *this; }
-  Lanes& operator-=(const Lanes& o) { return v -= o.v, *this; }
-  Lanes& operator*=(const Lanes& o) { return v *= o.v, *this; }
-  Lanes& operator/=(const Lanes& o) { return v /= o.v, *this; }
+  LaneVector& operator+=(const LaneVector& o) { return v += o.v, *this; }
+  LaneVector& operator-=(const LaneVector& o) { return v -= o.v, *this; }
+  LaneVector& operator*=(const LaneVector& o) { return v *= o.v, *this; }
+  LaneVector& operator/=(const LaneVector& o) { return v /= o.v, *this; }
 };
 
-inline Lanes operator+(const Lanes& a, const Lanes& b) {
-  Lanes r;
+/// Four lanes: one AVX2 register.
+using Lanes = LaneVector<4>;
+
+template <int W> LaneVector<W> operator+(const LaneVector<W>& a, const LaneVector<W>& b) {
+  LaneVector<W> r;
   r.v = a.v + b.v;
   return r;
 }
-inline Lanes operator-(const Lanes& a, const Lanes& b) {
-  Lanes r;
+template <int W> LaneVector<W> operator-(const LaneVector<W>& a, const LaneVector<W>& b) {
+  LaneVector<W> r;
   r.v = a.v - b.v;
   return r;
 }
-inline Lanes operator*(const Lanes& a, const Lanes& b) {
-  Lanes r;
+template <int W> LaneVector<W> operator*(const LaneVector<W>& a, const LaneVector<W>& b) {
+  LaneVector<W> r;
   r.v = a.v * b.v;
   return r;
 }
-inline Lanes operator/(const Lanes& a, const Lanes& b) {
-  Lanes r;
+template <int W> LaneVector<W> operator/(const LaneVector<W>& a, const LaneVector<W>& b) {
+  LaneVector<W> r;
   r.v = a.v / b.v;
   return r;
 }
-inline Lanes operator-(const Lanes& a) {
-  Lanes r;
+template <int W> LaneVector<W> operator-(const LaneVector<W>& a) {
+  LaneVector<W> r;
   r.v = -a.v;
   return r;
 }
-inline Lanes operator+(const Lanes& a) {
+template <int W> LaneVector<W> operator+(const LaneVector<W>& a) {
   return a;
 }
-template <class F> Lanes eachLane(const Lanes& a, F f) {
-  Lanes r;
-  for (int l = 0; l < kLanes; ++l)
+template <int W, class F> LaneVector<W> eachLane(const LaneVector<W>& a, F f) {
+  LaneVector<W> r;
+  for (int l = 0; l < W; ++l)
     r.v[l] = f(a.v[l]);
   return r;
 }
-inline Lanes sqrt(const Lanes& a) {
+template <int W> LaneVector<W> sqrt(const LaneVector<W>& a) {
   return eachLane(a, [](double x) { return std::sqrt(x); });
 }
-inline Lanes sin(const Lanes& a) {
+template <int W> LaneVector<W> sin(const LaneVector<W>& a) {
   return eachLane(a, [](double x) { return std::sin(x); });
 }
-inline Lanes cos(const Lanes& a) {
+template <int W> LaneVector<W> cos(const LaneVector<W>& a) {
   return eachLane(a, [](double x) { return std::cos(x); });
 }
-inline Lanes exp(const Lanes& a) {
+template <int W> LaneVector<W> exp(const LaneVector<W>& a) {
   return eachLane(a, [](double x) { return std::exp(x); });
 }
-inline Lanes log(const Lanes& a) {
+template <int W> LaneVector<W> log(const LaneVector<W>& a) {
   return eachLane(a, [](double x) { return std::log(x); });
 }
 
@@ -222,16 +239,28 @@ inline bool cpuHasAvx2() {
   return avx2;
 }
 
+/// Whether this CPU runs the AVX-512 lane kernels of eight lanes.
+inline bool cpuHasAvx512() {
+  static const bool avx512 = __builtin_cpu_supports("avx512f");
+  return avx512;
+}
+
+/// How many trajectories a batch takes on this CPU: 8 with AVX-512, else 4.
+inline int laneWidth() {
+  return cpuHasAvx512() ? 8 : 4;
+}
+
 /// What `rollviz info` says of the lanes.
 inline std::string laneDescription() {
-  return std::to_string(kLanes) + " trajectories per batch, " +
-         (cpuHasAvx2() ? "one AVX2 register (256 bits) of doubles"
-                       : "two SSE2 pairs of doubles (no AVX2 here)");
+  if (cpuHasAvx512()) return "8 trajectories per batch, one AVX-512 register (512 bits) of doubles";
+  return "4 trajectories per batch, " + std::string(cpuHasAvx2()
+                                                        ? "one AVX2 register (256 bits) of doubles"
+                                                        : "two SSE2 pairs of doubles (no AVX2 here)");
 }
 
 } // namespace rv
 
 namespace Eigen {
-template <> struct NumTraits<rv::Lanes> : rv::HeldScalarTraits<rv::Lanes, 1> {};
+template <int W> struct NumTraits<rv::LaneVector<W>> : rv::HeldScalarTraits<rv::LaneVector<W>, 1> {};
 template <class T, int K> struct NumTraits<rv::Jet<T, K>> : rv::HeldScalarTraits<rv::Jet<T, K>, 3> {};
 } // namespace Eigen

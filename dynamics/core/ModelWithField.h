@@ -10,7 +10,6 @@
 #include <array>
 #include <bit>
 #include <memory>
-#include <optional>
 #include <stdexcept>
 #include <unsupported/Eigen/AutoDiff>
 #include <utility>
@@ -29,7 +28,7 @@ template <class D> double valueOf(const Eigen::AutoDiffScalar<D>& v) {
 /// Derived must provide `template <class S> void field(const Vec<S>& x, Vec<S>& dx) const`. M is the core
 /// dimension (the leading components that evolve on their own); it must equal info().coreDimension. A Derived
 /// whose field has no branch on a value may declare `static constexpr bool kLaneField = true`: then its field
-/// also runs on kLanes states at once (LaneField.h).
+/// also runs on 4 or 8 states at once (LaneField.h).
 template <class Derived, int N, int M = N> class ModelWithField : public Model, public LaneField {
 public:
   static constexpr int kDim = N;
@@ -85,16 +84,15 @@ public:
     return !isMap() && withFixedVectors(k, [&]<int K>() { fusedRk4<K>(x, V, h, steps); });
   }
 
-  /// The lane kernel of kLanes models of this class: their fields at once, in one AVX2 register per
-  /// component where the CPU has AVX2 (compiled for it without FMA: each lane rounds as the scalar path
-  /// does), else as SSE2 pairs.
+  /// The lane kernel of 4 or 8 models of this class: their fields at once, in one AVX2 (4 lanes) or AVX-512
+  /// (8 lanes) register per component where the CPU has it (without fused multiply-add: each lane rounds as
+  /// the scalar path does), else in SSE2 pairs.
   std::unique_ptr<LaneKernel> laneKernel(const LaneModels& models) const final {
     if constexpr (requires { Derived::kLaneField; }) {
       if (isMap()) return nullptr;
-      const auto lanes = laneSelves(models);
-      if (!lanes) return nullptr;
-      const auto coefficients = laneCoefficients(*lanes);
-      return std::make_unique<Kernel<std::remove_const_t<decltype(coefficients)>>>(*this, coefficients);
+      if (models.size() == 4) return laneKernelOf<4>(models);
+      if (models.size() == 8) return laneKernelOf<8>(models);
+      return nullptr;
     } else {
       (void)models;
       return nullptr;
@@ -119,31 +117,31 @@ public:
 private:
   const Derived& self() const { return static_cast<const Derived&>(*this); }
   static constexpr bool kCoefficients = requires { typename Derived::template Coefficients<double>; };
-  using LaneSelves = std::array<const Derived*, kLanes>;
-  // the lanes' models as Derived, or nothing where they cannot go together: another class, or different
-  // parameters that the field does not read as Coefficients
-  std::optional<LaneSelves> laneSelves(const LaneModels& models) const {
-    LaneSelves lanes{};
-    for (int l = 0; l < kLanes; ++l) {
+  template <int W> using LaneSelves = std::array<const Derived*, W>;
+  template <int W> std::unique_ptr<LaneKernel> laneKernelOf(const LaneModels& models) const {
+    LaneSelves<W> lanes{};
+    for (int l = 0; l < W; ++l) { // another class, or different parameters not read as Coefficients: no
       lanes[l] = dynamic_cast<const Derived*>(models[l]);
-      if (!lanes[l]) return std::nullopt;
-      if (!kCoefficients && lanes[l]->parameters().values() != parameters().values()) return std::nullopt;
+      if (!lanes[l]) return nullptr;
+      if (!kCoefficients && lanes[l]->parameters().values() != parameters().values()) return nullptr;
     }
-    return lanes;
+    const auto coefficients = laneCoefficients<W>(lanes);
+    return std::make_unique<Kernel<W, std::remove_const_t<decltype(coefficients)>>>(*this, coefficients);
   }
-  // what the field reads per lane: Derived::Coefficients<Lanes> gathered from the lanes' models
+  // what the field reads per lane: Derived::Coefficients<LaneVector<W>> gathered from the lanes' models
   // (Coefficients<T> holds T members only, so it is an array of them); nothing for a field without
   // Coefficients
   struct NoCoefficients {};
-  static auto laneCoefficients(const LaneSelves& lanes) {
+  template <int W> static auto laneCoefficients(const LaneSelves<W>& lanes) {
     if constexpr (kCoefficients) {
+      using L = LaneVector<W>;
       using One = typename Derived::template Coefficients<double>;
-      using All = typename Derived::template Coefficients<Lanes>;
+      using All = typename Derived::template Coefficients<L>;
       constexpr std::size_t count = sizeof(One) / sizeof(double);
-      static_assert(sizeof(One) == count * sizeof(double) && sizeof(All) == count * sizeof(Lanes),
+      static_assert(sizeof(One) == count * sizeof(double) && sizeof(All) == count * sizeof(L),
                     "Coefficients<T> must hold members of type T only");
-      std::array<Lanes, count> gathered;
-      for (int l = 0; l < kLanes; ++l) {
+      std::array<L, count> gathered;
+      for (int l = 0; l < W; ++l) {
         const auto values = std::bit_cast<std::array<double, count>>(lanes[l]->coefficients());
         for (std::size_t i = 0; i < count; ++i)
           gathered[i].v[l] = values[i];
@@ -154,76 +152,92 @@ private:
       return NoCoefficients{};
     }
   }
-  // f and J V of kLanes states with K tangent vectors, component-major in TangentSystem's layout: the lane
-  // form of directional<K>. The field is called here, in the flattened kernel, not through a lambda: the
-  // compiler inlines it whole only there
-  template <int K, class C>
+  // f and J V of W states with K tangent vectors, component-major in TangentSystem's layout: the lane form of
+  // directional<K>. The field is called here, in the flattened kernel, not through a lambda: the compiler
+  // inlines it whole only there
+  template <int W, int K, class C>
   EIGEN_ALWAYS_INLINE void laneDirectional(const C& coefficients, const double* in, double* out) const {
-    using J = Jet<Lanes, K>;
+    using L = LaneVector<W>;
+    using J = Jet<L, K>;
     Vec<J> xa, fa;
     for (int i = 0; i < N; ++i)
-      xa[i] = J::with(Lanes::load(in + i * kLanes),
-                      [&](int c) { return i < M ? Lanes::load(in + (N + c * M + i) * kLanes) : Lanes(0.0); });
+      xa[i] = J::with(L::load(in + i * W),
+                      [&](int c) { return i < M ? L::load(in + (N + c * M + i) * W) : L(0.0); });
     if constexpr (kCoefficients)
       Derived::field(coefficients, xa, fa);
     else
       self().field(xa, fa);
     for (int i = 0; i < N; ++i)
-      fa[i].v.store(out + i * kLanes);
+      fa[i].v.store(out + i * W);
     for (int c = 0; c < K; ++c)
       for (int i = 0; i < M; ++i)
-        fa[i].d[c].store(out + (N + c * M + i) * kLanes);
+        fa[i].d[c].store(out + (N + c * M + i) * W);
   }
-  // fusedRk4<K> on kLanes orbits: the same steps element by element (rk4StepOnArrays)
-  template <int K, class C>
+  // fusedRk4<K> on W orbits: the same steps element by element (rk4StepOnArrays)
+  template <int W, int K, class C>
   EIGEN_ALWAYS_INLINE void laneRk4(const C& coefficients, double* y, double h, long steps) const {
-    constexpr long size = static_cast<long>(N + M * K) * kLanes;
+    constexpr long size = static_cast<long>(N + M * K) * W;
     std::vector<double> stages(static_cast<std::size_t>(7 * size)); // y0, f0, k2, k3, k4, tmp, y1
     double *y0 = stages.data(), *f0 = y0 + size, *k2 = f0 + size, *k3 = k2 + size, *k4 = k3 + size,
            *tmp = k4 + size, *y1 = tmp + size;
     std::copy(y, y + size, y0);
-    const auto rhs = [&](const double* in, double* out) { laneDirectional<K>(coefficients, in, out); };
+    const auto rhs = [&](const double* in, double* out) { laneDirectional<W, K>(coefficients, in, out); };
     for (long s = 0; s < steps; ++s) {
       rhs(y0, f0);
-      rk4StepOnArrays(rhs, h, size, y0, f0, k2, k3, k4, tmp, y1);
+      rk4StepOnArrays<W>(rhs, h, size, y0, f0, k2, k3, k4, tmp, y1);
       std::swap(y0, y1);
     }
     std::copy(y0, y0 + size, y);
   }
-  // kLanes models' fields bound: their coefficients gathered once, the kernels compiled for AVX2 and for
-  // baseline x86-64 (the models' fields and Jet's rules inlined whole: Lanes.h, LaneField.h)
-  template <class C> class Kernel final : public LaneKernel {
+  // W models' fields bound: their coefficients gathered once, the kernels compiled for the CPU's vector
+  // extension (AVX2 for 4 lanes, AVX-512 for 8) and for baseline x86-64 (the models' fields and Jet's rules
+  // inlined whole: Lanes.h, LaneField.h)
+  template <int W, class C> class Kernel final : public LaneKernel {
   public:
     Kernel(const ModelWithField& model, const C& coefficients) : model_(model), coefficients_(coefficients) {}
+    int width() const override { return W; }
     void tangentRhs(const double* x, double* out) const override {
-      if (cpuHasAvx2())
-        rhsAvx2(x, out);
-      else
-        rhsBaseline(x, out);
+      if constexpr (W == 8) {
+        if (cpuHasAvx512()) return rhsAvx512(x, out);
+      } else {
+        if (cpuHasAvx2()) return rhsAvx2(x, out);
+      }
+      rhsBaseline(x, out);
     }
     bool tangentRk4(double* y, int k, double h, long steps) const override {
       return withFixedVectors(k, [&]<int K>() {
         if (steps == 0) return;
-        if (cpuHasAvx2())
-          rk4Avx2<K>(y, h, steps);
-        else
-          rk4Baseline<K>(y, h, steps);
+        if constexpr (W == 8) {
+          if (cpuHasAvx512()) return rk4Avx512<K>(y, h, steps);
+        } else {
+          if (cpuHasAvx2()) return rk4Avx2<K>(y, h, steps);
+        }
+        rk4Baseline<K>(y, h, steps);
       });
     }
 
   private:
+    // four lanes in AVX2 (whose target has no FMA), eight in AVX-512 (whose has: the project compiles with
+    // -ffp-contract=off, so no product and sum are fused), else SSE2 pairs
     [[gnu::target("avx2"), gnu::flatten]] void rhsAvx2(const double* x, double* out) const {
-      model_.template laneDirectional<1>(coefficients_, x, out);
+      model_.template laneDirectional<W, 1>(coefficients_, x, out);
+    }
+    [[gnu::target("avx512f"), gnu::flatten]] void rhsAvx512(const double* x, double* out) const {
+      model_.template laneDirectional<W, 1>(coefficients_, x, out);
     }
     [[gnu::flatten]] void rhsBaseline(const double* x, double* out) const {
-      model_.template laneDirectional<1>(coefficients_, x, out);
+      model_.template laneDirectional<W, 1>(coefficients_, x, out);
     }
     template <int K>
     [[gnu::target("avx2"), gnu::flatten]] void rk4Avx2(double* y, double h, long steps) const {
-      model_.template laneRk4<K>(coefficients_, y, h, steps);
+      model_.template laneRk4<W, K>(coefficients_, y, h, steps);
+    }
+    template <int K>
+    [[gnu::target("avx512f"), gnu::flatten]] void rk4Avx512(double* y, double h, long steps) const {
+      model_.template laneRk4<W, K>(coefficients_, y, h, steps);
     }
     template <int K> [[gnu::flatten]] void rk4Baseline(double* y, double h, long steps) const {
-      model_.template laneRk4<K>(coefficients_, y, h, steps);
+      model_.template laneRk4<W, K>(coefficients_, y, h, steps);
     }
     const ModelWithField& model_;
     C coefficients_;

@@ -13,7 +13,7 @@ template <class Field>
 [[gnu::target("avx2"), gnu::flatten]] void rk4StepAvx2(const Field& field, double h, long n, const double* y0,
                                                        const double* f0, double* k2, double* k3, double* k4,
                                                        double* tmp, double* y1) {
-  rk4StepOnArrays(field, h, n, y0, f0, k2, k3, k4, tmp, y1);
+  rk4StepOnArrays<4>(field, h, n, y0, f0, k2, k3, k4, tmp, y1);
 }
 
 } // namespace
@@ -84,7 +84,7 @@ template <int D> void Rk4::stepWith() {
     ++evaluations_;
   };
   if constexpr (D == Eigen::Dynamic) {
-    if (n >= 4 * kLanes && cpuHasAvx2()) {
+    if (n >= 16 && cpuHasAvx2()) {
       rk4StepAvx2([&](const double* y, double* dy) { model_->rhs(y, dy), ++evaluations_; }, h, n, x0.data(),
                   f0.data(), k2.data(), k3.data(), k4.data(), tmp.data(), x.data());
     } else {

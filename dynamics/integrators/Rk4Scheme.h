@@ -26,38 +26,38 @@ inline void rk4Step(const Field& field, double h, const Y& y0, const Y& f0, Y& k
 }
 
 namespace detail {
-// combine<T>(i) on elements i of arrays of n doubles: kLanes at a time as Lanes, the rest one by one
-template <class Combine> [[gnu::always_inline]] inline void eachElement(long n, Combine&& combine) {
-  const long whole = n / kLanes * kLanes;
-  for (long i = 0; i < whole; i += kLanes)
-    combine.template operator()<Lanes>(i);
+// combine<T>(i) on elements i of arrays of n doubles: W at a time as LaneVector<W>, the rest one by one
+template <int W, class Combine> [[gnu::always_inline]] inline void eachElement(long n, Combine&& combine) {
+  const long whole = n / W * W;
+  for (long i = 0; i < whole; i += W)
+    combine.template operator()<LaneVector<W>>(i);
   for (long i = whole; i < n; ++i)
     combine.template operator()<double>(i);
 }
 template <class T> [[gnu::always_inline]] inline T loadAt(const double* p, long i) {
-  if constexpr (std::is_same_v<T, Lanes>)
-    return Lanes::load(p + i);
-  else
+  if constexpr (std::is_same_v<T, double>)
     return p[i];
+  else
+    return T::load(p + i);
 }
 template <class T> [[gnu::always_inline]] inline void storeAt(double* p, long i, const T& v) {
-  if constexpr (std::is_same_v<T, Lanes>)
-    v.store(p + i);
-  else
+  if constexpr (std::is_same_v<T, double>)
     p[i] = v;
+  else
+    v.store(p + i);
 }
 } // namespace detail
 
-/// rk4Step on arrays of n doubles (field(const double* y, double* dy)), kLanes elements at a time: each
-/// element takes the Eigen expression's operations in its order (no fused multiply-add), so the state is the
-/// one rk4Step gives, bit for bit. Compiled into a function for AVX2, one register per four elements.
-template <class Field>
+/// rk4Step on arrays of n doubles (field(const double* y, double* dy)), W elements at a time: each element
+/// takes the Eigen expression's operations in its order (no fused multiply-add), so the state is the one
+/// rk4Step gives, bit for bit. Compiled into a function for AVX2 or AVX-512, one register per W elements.
+template <int W, class Field>
 [[gnu::always_inline]] inline void rk4StepOnArrays(const Field& field, double h, long n, const double* y0,
                                                    const double* f0, double* k2, double* k3, double* k4,
                                                    double* tmp, double* y1) {
   using detail::eachElement, detail::loadAt, detail::storeAt;
   const auto plusScaled = [n, y0, tmp](double c, const double* k) { // tmp = y0 + c k
-    eachElement(n, [&]<class T>(long i) { storeAt(tmp, i, loadAt<T>(y0, i) + T(c) * loadAt<T>(k, i)); });
+    eachElement<W>(n, [&]<class T>(long i) { storeAt(tmp, i, loadAt<T>(y0, i) + T(c) * loadAt<T>(k, i)); });
   };
   plusScaled(0.5 * h, f0);
   field(tmp, k2);
@@ -66,7 +66,7 @@ template <class Field>
   plusScaled(h, k3);
   field(tmp, k4);
   const double c = h / 6.0;
-  eachElement(n, [&]<class T>(long i) {
+  eachElement<W>(n, [&]<class T>(long i) {
     const T sum = loadAt<T>(f0, i) + T(2.0) * loadAt<T>(k2, i) + T(2.0) * loadAt<T>(k3, i) + loadAt<T>(k4, i);
     storeAt(y1, i, loadAt<T>(y0, i) + T(c) * sum);
   });

@@ -66,7 +66,8 @@ std::optional<std::vector<LyapunovLaneResult>> lyapunovOnLanes(const std::vector
     }
   };
   const int dimension = static_cast<int>(runs.front()->tangentState().size());
-  std::vector<double> y(static_cast<std::size_t>(dimension * kLanes));
+  const int width = lanes->kernel->width();
+  std::vector<double> y(static_cast<std::size_t>(dimension * width));
   const double h = runs.front()->fusedStepSize();
   constexpr long kChunk = 4096; // steps between looks at a stop request and at the state (as LyapunovRun)
   for (;;) {
@@ -80,11 +81,11 @@ std::optional<std::vector<LyapunovLaneResult>> lyapunovOnLanes(const std::vector
         if (active(l) && !alone(l)) return std::vector<LyapunovLaneResult>{};
       continue;
     }
-    for (int l = 0; l < kLanes; ++l) { // lanes left over repeat the last orbit
+    for (int l = 0; l < width; ++l) { // lanes left over repeat the last orbit
       const Eigen::VectorXd& x =
           runs[std::min<std::size_t>(static_cast<std::size_t>(l), count - 1)]->tangentState();
       for (int j = 0; j < dimension; ++j)
-        y[static_cast<std::size_t>(j * kLanes + l)] = x[j];
+        y[static_cast<std::size_t>(j * width + l)] = x[j];
     }
     std::vector<bool> blewUp(count, false);
     for (long done = 0; done < steps; done += kChunk) {
@@ -92,7 +93,7 @@ std::optional<std::vector<LyapunovLaneResult>> lyapunovOnLanes(const std::vector
       lanes->kernel->tangentRk4(y.data(), runs.front()->exponentCount(), h, std::min(kChunk, steps - done));
       for (std::size_t l = 0; l < count; ++l)
         for (int j = 0; j < dimension && !blewUp[l]; ++j)
-          blewUp[l] = !std::isfinite(y[static_cast<std::size_t>(j * kLanes) + l]);
+          blewUp[l] = !std::isfinite(y[static_cast<std::size_t>(j * width) + l]);
     }
     for (std::size_t l = 0; l < count; ++l) {
       if (!active(l)) continue;
@@ -102,7 +103,7 @@ std::optional<std::vector<LyapunovLaneResult>> lyapunovOnLanes(const std::vector
       }
       Eigen::VectorXd& x = runs[l]->tangentState();
       for (int j = 0; j < dimension; ++j)
-        x[j] = y[static_cast<std::size_t>(j * kLanes) + l];
+        x[j] = y[static_cast<std::size_t>(j * width) + l];
       runs[l]->closeFusedInterval({}, control);
     }
   }

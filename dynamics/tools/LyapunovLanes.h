@@ -1,6 +1,6 @@
-// LyapunovLanes.h -- the Lyapunov exponents (Lyapunov.h, tangent mode) of kLanes orbits at once, one per SIMD
-// lane (dynamics/core/Lanes.h): the orbits and their tangent vectors advanced by the models' fused lane RK4
-// (LaneKernel::tangentRk4), each orbit's run orthonormalising, estimating and stopping as alone. What a
+// LyapunovLanes.h -- the Lyapunov exponents (Lyapunov.h, tangent mode) of up to 8 orbits at once, one per
+// SIMD lane (dynamics/core/Lanes.h): the orbits and their tangent vectors advanced by the models' fused lane
+// RK4 (LaneKernel::tangentRk4), each orbit's run orthonormalising, estimating and stopping as alone. What a
 // sweep of Lyapunov exponents over initial points or parameters computes (issue 40).
 //
 // The same numbers: the fused lane steps are the scalar fused steps lane by lane, bit for bit, and each
@@ -27,7 +27,7 @@ struct LyapunovLaneResult {
 bool lyapunovRunsOnLanes(const std::vector<const Model*>& models, const IntegratorFactory& makeIntegrator,
                          const LyapunovSettings& settings);
 
-/// The exponents from each of `x0s` (1 to kLanes states; models: one per state, of one class, parameters
+/// The exponents from each of `x0s` (1 to kMaxLanes states; models: one per state, of one class, parameters
 /// possibly differing). Nothing where they cannot run on lanes (lyapunovRunsOnLanes); an empty list when
 /// stopped by request. InputError for bad settings (as LyapunovRun).
 std::optional<std::vector<LyapunovLaneResult>> lyapunovOnLanes(const std::vector<const Model*>& models,

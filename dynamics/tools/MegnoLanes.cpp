@@ -26,14 +26,14 @@ LaneSystemInfo laneInfo(const Model& base, int dimension) {
   return s;
 }
 
-// kLanes MEGNO systems (MegnoRun::System) stacked component-major: y[c * kLanes + l] is component c of lane
-// l, the components x (n), w (m), tau, A, B
+// W MEGNO systems (MegnoRun::System) stacked component-major: y[c * W + l] is component c of lane l, the
+// components x (n), w (m), tau, A, B
 class LaneSystem final : private LaneSystemInfo, public Model {
 public:
   LaneSystem(const Model& base, const LaneKernel& kernel)
-      : LaneSystemInfo(laneInfo(base, kLanes * (base.dimension() + base.info().coreDimension + 3))),
+      : LaneSystemInfo(laneInfo(base, kernel.width() * (base.dimension() + base.info().coreDimension + 3))),
         Model(systemInfo, base.parameters()), kernel_(kernel), n_(base.dimension()),
-        m_(base.info().coreDimension) {}
+        m_(base.info().coreDimension), w_(kernel.width()) {}
   void rhs(const double* y, double* dy) const override {
     kernel_.tangentRhs(y, dy);
     if (cpuHasAvx2())
@@ -46,15 +46,21 @@ public:
   }
 
 private:
-  // the MEGNO sums' derivatives of every lane at once: megnoIntegrand and 2 A / tau, lane by lane the scalar
-  // run's operations in its order (no fused multiply-add), so each lane rounds as MegnoRun does
-  [[gnu::target("avx2"), gnu::flatten]] void sumsAvx2(const double* y, double* dy) const { sums(y, dy); }
-  void sumsBaseline(const double* y, double* dy) const { sums(y, dy); }
+  // the MEGNO sums' derivatives of every lane, four at a time: megnoIntegrand and 2 A / tau, lane by lane the
+  // scalar run's operations in its order (no fused multiply-add), so each lane rounds as MegnoRun does
+  [[gnu::target("avx2"), gnu::flatten]] void sumsAvx2(const double* y, double* dy) const {
+    for (int q = 0; q < w_; q += 4)
+      sums(y + q, dy + q);
+  }
+  void sumsBaseline(const double* y, double* dy) const {
+    for (int q = 0; q < w_; q += 4)
+      sums(y + q, dy + q);
+  }
   [[gnu::always_inline]] void sums(const double* y, double* dy) const {
-    const int tau = (n_ + m_) * kLanes, a = tau + kLanes, b = a + kLanes;
+    const int tau = (n_ + m_) * w_, a = tau + w_, b = a + w_;
     Lanes dot(0.0), squared(0.0);
     for (int i = 0; i < m_; ++i) {
-      const Lanes w = Lanes::load(y + (n_ + i) * kLanes), dw = Lanes::load(dy + (n_ + i) * kLanes);
+      const Lanes w = Lanes::load(y + (n_ + i) * w_), dw = Lanes::load(dy + (n_ + i) * w_);
       dot += w * dw;
       squared += w * w;
     }
@@ -62,11 +68,11 @@ private:
     Lanes(1.0).store(dy + tau);
     (t * dot / squared).store(dy + a);
     const Lanes rate = Lanes(2.0) * Lanes::load(y + a) / t;
-    for (int l = 0; l < kLanes; ++l)
+    for (int l = 0; l < Lanes::kWidth; ++l)
       dy[b + l] = t[l] > 0 ? rate[l] : 0;
   }
   const LaneKernel& kernel_;
-  int n_, m_;
+  int n_, m_, w_;
 };
 
 } // namespace
@@ -87,7 +93,8 @@ std::vector<MegnoLaneResult> megnoOnLanes(const std::vector<const Model*>& model
   if (!(s.interval > 0)) throw InputError("megno: the interval must be positive");
   const int n = model.dimension(), m = model.info().coreDimension, count = static_cast<int>(x0s.size());
   const LaneSystem system(model, *kernel);
-  const int tau = (n + m) * kLanes, sumA = tau + kLanes, sumB = sumA + kLanes;
+  const int width = kernel->width();
+  const int tau = (n + m) * width, sumA = tau + width, sumB = sumA + width;
 
   // the lanes' states: the orbits given, the last repeated into lanes left over; w as MegnoRun starts it
   Eigen::VectorXd w0(m);
@@ -95,13 +102,13 @@ std::vector<MegnoLaneResult> megnoOnLanes(const std::vector<const Model*>& model
     w0[i] = 1.0 / (i + 1);
   w0.normalize();
   Eigen::VectorXd y = Eigen::VectorXd::Zero(system.dimension());
-  for (int l = 0; l < kLanes; ++l) {
+  for (int l = 0; l < width; ++l) {
     const Eigen::VectorXd& x0 = x0s[static_cast<std::size_t>(std::min(l, count - 1))];
     if (x0.size() != n) throw InputError("megno: the initial state has the wrong size");
     for (int c = 0; c < n; ++c)
-      y[c * kLanes + l] = x0[c];
+      y[c * width + l] = x0[c];
     for (int i = 0; i < m; ++i)
-      y[(n + i) * kLanes + l] = w0[i];
+      y[(n + i) * width + l] = w0[i];
   }
   const auto alone = [&] { // every orbit by the scalar run: each fails, or not, as it would alone
     std::vector<MegnoLaneResult> r(static_cast<std::size_t>(count));
@@ -119,12 +126,12 @@ std::vector<MegnoLaneResult> megnoOnLanes(const std::vector<const Model*>& model
   };
 
   double t = 0;
-  std::vector<double> logNorm(kLanes, 0.0);
+  std::vector<double> logNorm(width, 0.0);
   while (t < s.maxTime) {
     const double target = t + std::min(s.interval, s.maxTime - t);
     try {
       auto integ = makeIntegrator();
-      integ->controlBy(n * kLanes); // the orbits' components alone (as MegnoRun: x, not w)
+      integ->controlBy(n * width); // the orbits' components alone (as MegnoRun: x, not w)
       integ->start(system, t, y);
       while (integ->time() < target) {
         if (control.stopRequested()) return {};
@@ -138,12 +145,12 @@ std::vector<MegnoLaneResult> megnoOnLanes(const std::vector<const Model*>& model
       return alone();
     }
     t = target;
-    for (int l = 0; l < kLanes; ++l) {
-      const double norm = tangentLength(y.data() + n * kLanes + l, m, kLanes);
+    for (int l = 0; l < width; ++l) {
+      const double norm = tangentLength(y.data() + n * width + l, m, width);
       if (!(norm > 0) || !std::isfinite(norm) || !std::isfinite(y[sumB + l])) return alone();
       logNorm[static_cast<std::size_t>(l)] += std::log(norm);
       for (int i = 0; i < m; ++i)
-        y[(n + i) * kLanes + l] /= norm;
+        y[(n + i) * width + l] /= norm;
     }
     control.progress(t / s.maxTime);
   }

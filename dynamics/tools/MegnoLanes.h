@@ -1,5 +1,5 @@
-// MegnoLanes.h -- MEGNO and FLI (Megno.h) of kLanes orbits of one flow at once, one per SIMD lane
-// (dynamics/core/Lanes.h): the kLanes MEGNO systems (x, w, tau, A, B) stacked component-major into one system
+// MegnoLanes.h -- MEGNO and FLI (Megno.h) of up to 8 orbits of one flow at once, one per SIMD lane
+// (dynamics/core/Lanes.h): the lanes' MEGNO systems (x, w, tau, A, B) stacked component-major into one system
 // whose right-hand side is the model's lane kernel, integrated by the scene's integrator with one step for
 // all, renormalised lane by lane every interval as MegnoRun does. What a sweep of MEGNO over initial points
 // computes (issue 40).
@@ -27,7 +27,7 @@ struct MegnoLaneResult {
   std::exception_ptr failure; ///< what the scalar run threw for this orbit (then `last` is empty)
 };
 
-/// MEGNO and FLI from each of `x0s` (1 to kLanes states, of the models `models`, one per state: they may
+/// MEGNO and FLI from each of `x0s` (1 to kMaxLanes states, of the models `models`, one per state: they may
 /// differ in their parameters where megnoRunsOnLanes) to settings.maxTime. Returns one result per state, or
 /// nothing when stopped by request. InputError for bad settings (as MegnoRun).
 std::vector<MegnoLaneResult> megnoOnLanes(const std::vector<const Model*>& models,

@@ -513,11 +513,12 @@ const ParameterTable& sweepOptionsTable() {
        .label = "Lanes",
        .defaultValue = 0,
        .min = 0,
-       .max = 1,
+       .max = 8,
        .description =
-           "0: points on SIMD lanes, several at once, where the quantity can (megno and lyapunov numbers "
-           "over a flow's initial points and parameters with rk4, bit for bit the points one at a time; "
-           "`rollviz info` names the width); 1: one point at a time",
+           "0: points on SIMD lanes, as many at once as the CPU's registers take (8 with AVX-512, else 4; "
+           "`rollviz info` names the width), where the quantity can (megno and lyapunov numbers over a "
+           "flow's initial points and parameters with rk4, bit for bit the points one at a time); 4 or 8: "
+           "that many; 1: one point at a time",
        .integer = true},
       {.id = "refine",
        .label = "Refinement levels",

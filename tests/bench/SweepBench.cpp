@@ -57,10 +57,10 @@ void sweepOnOneThread(const SweepSpec& spec) {
   store.remove();
 }
 
-// MEGNO over initial points, one thread: several points at once on SIMD lanes (0) against one at a time (1).
-// With rk4 (h = 0.01) each lane is the scalar run bit for bit; with the scene's Everhart 15 (h = 0.05) and
-// adams (order 12, h = 0.05) a sweep runs one point at a time either way (scenes/Sweep.cpp says why): their
-// rows show that it costs nothing
+// MEGNO over initial points, one thread: several points at once on SIMD lanes (0: the CPU's width; 4; 8)
+// against one at a time (1). With rk4 (h = 0.01) each lane is the scalar run bit for bit; with the scene's
+// Everhart 15 (h = 0.05) and adams (order 12, h = 0.05) a sweep runs one point at a time either way
+// (scenes/Sweep.cpp says why): their rows show that it costs nothing
 void SweepLanes(benchmark::State& state) {
   const char* method = state.range(1) == 0 ? "everhart" : state.range(1) == 1 ? "rk4" : "adams";
   nlohmann::json doc{{"scene", defaultScenePath("henon_heiles")},
@@ -83,8 +83,8 @@ void SweepLanes(benchmark::State& state) {
 }
 
 // The largest Lyapunov exponent of Lorenz over rho (scenes/sweeps/lorenz_lyapunov_rho.json: rk4, h = 0.001,
-// 16 values of rho, lyapunov.time 50), one thread: a parameter per lane, four points at once (0) against one
-// at a time (1), each lane the scalar run bit for bit
+// 16 values of rho, lyapunov.time 50), one thread: a parameter per lane, four (AVX2) or eight (AVX-512)
+// points at once against one at a time (1), each lane the scalar run bit for bit
 void SweepLanesLyapunov(benchmark::State& state) {
   nlohmann::json doc{{"scene", defaultScenePath("lorenz")},
                      {"axes", {{{"id", "rho"}, {"min", 0.5}, {"max", 250}, {"count", 16}}}},
@@ -129,12 +129,19 @@ BENCHMARK(SweepLanes)
     ->Args({1, 0})
     ->Args({0, 0})
     ->Args({1, 1})
-    ->Args({0, 1})
+    ->Args({4, 1})
+    ->Args({8, 1})
     ->Args({1, 2})
     ->Args({0, 2})
     ->Iterations(1)
     ->UseRealTime()
     ->Unit(benchmark::kMillisecond);
-BENCHMARK(SweepLanesLyapunov)->Arg(1)->Arg(0)->Iterations(1)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(SweepLanesLyapunov)
+    ->Arg(1)
+    ->Arg(4)
+    ->Arg(8)
+    ->Iterations(1)
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(SweepStoreWriteRead);
 BENCHMARK(SweepRecordBytes);

@@ -32,63 +32,69 @@ std::vector<const Model*> pointers(const std::vector<std::unique_ptr<Model>>& mo
 }
 
 TEST(LyapunovLanes, KernelsWithAModelPerLaneEqualEachModelAloneBitForBit) {
-  const auto models = lorenzAt({0.5, 13.9, 28, 250});
-  const auto kernel = laneKernelFor(pointers(models));
-  ASSERT_NE(kernel, nullptr);
-  std::mt19937 random(11);
-  std::uniform_real_distribution<double> u(-3, 3);
-  const int n = 3, m = 3;
-  // f and J w
-  std::vector<double> y(static_cast<std::size_t>(kLanes * (n + m))), out(y.size());
-  for (double& v : y)
-    v = u(random);
-  kernel->tangentRhs(y.data(), out.data());
-  for (int l = 0; l < kLanes; ++l) {
-    Eigen::VectorXd x(n), w(m), dx(n), dw(m);
-    for (int c = 0; c < n; ++c)
-      x[c] = y[static_cast<std::size_t>(c * kLanes + l)];
-    for (int i = 0; i < m; ++i)
-      w[i] = y[static_cast<std::size_t>((n + i) * kLanes + l)];
-    models[static_cast<std::size_t>(l)]->tangentRhs(x.data(), w.data(), 1, dx.data(), dw.data());
-    for (int c = 0; c < n; ++c)
-      EXPECT_EQ(out[static_cast<std::size_t>(c * kLanes + l)], dx[c]) << "lane " << l << " f" << c;
-    for (int i = 0; i < m; ++i)
-      EXPECT_EQ(out[static_cast<std::size_t>((n + i) * kLanes + l)], dw[i]) << "lane " << l << " Jw" << i;
-  }
-  // fused RK4 with 1, 2 and 3 tangent vectors
-  for (int k = 1; k <= 3; ++k) {
-    const int size = n + m * k;
-    std::vector<double> stacked(static_cast<std::size_t>(kLanes * size));
-    std::vector<Eigen::VectorXd> alone(kLanes, Eigen::VectorXd(size));
-    for (int l = 0; l < kLanes; ++l)
-      for (int j = 0; j < size; ++j)
-        stacked[static_cast<std::size_t>(j * kLanes + l)] = alone[static_cast<std::size_t>(l)][j] =
-            j < n ? u(random) * 5 : u(random);
-    ASSERT_TRUE(kernel->tangentRk4(stacked.data(), k, 1e-3, 700)) << k;
-    for (int l = 0; l < kLanes; ++l) {
-      Eigen::VectorXd& a = alone[static_cast<std::size_t>(l)];
-      ASSERT_TRUE(models[static_cast<std::size_t>(l)]->tangentRk4(a.data(), a.data() + n, k, 1e-3, 700));
-      for (int j = 0; j < size; ++j)
-        EXPECT_EQ(stacked[static_cast<std::size_t>(j * kLanes + l)], a[j]) << "k " << k << " lane " << l;
+  const auto all = lorenzAt({0.5, 13.9, 28, 250, 1, 24.5, 99, 160});
+  const auto every = pointers(all);
+  for (long count : {4, 8}) { // four lanes (AVX2) and eight (AVX-512)
+    const std::vector<const Model*> models(every.begin(), every.begin() + count);
+    const auto kernel = laneKernelFor(models);
+    ASSERT_NE(kernel, nullptr);
+    const int width = kernel->width();
+    ASSERT_EQ(width, static_cast<int>(count));
+    std::mt19937 random(11);
+    std::uniform_real_distribution<double> u(-3, 3);
+    const int n = 3, m = 3;
+    // f and J w
+    std::vector<double> y(static_cast<std::size_t>(width * (n + m))), out(y.size());
+    for (double& v : y)
+      v = u(random);
+    kernel->tangentRhs(y.data(), out.data());
+    for (int l = 0; l < width; ++l) {
+      Eigen::VectorXd x(n), w(m), dx(n), dw(m);
+      for (int c = 0; c < n; ++c)
+        x[c] = y[static_cast<std::size_t>(c * width + l)];
+      for (int i = 0; i < m; ++i)
+        w[i] = y[static_cast<std::size_t>((n + i) * width + l)];
+      models[static_cast<std::size_t>(l)]->tangentRhs(x.data(), w.data(), 1, dx.data(), dw.data());
+      for (int c = 0; c < n; ++c)
+        EXPECT_EQ(out[static_cast<std::size_t>(c * width + l)], dx[c]) << "lane " << l << " f" << c;
+      for (int i = 0; i < m; ++i)
+        EXPECT_EQ(out[static_cast<std::size_t>((n + i) * width + l)], dw[i]) << "lane " << l << " Jw" << i;
     }
+    // fused RK4 with 1, 2 and 3 tangent vectors
+    for (int k = 1; k <= 3; ++k) {
+      const int size = n + m * k;
+      std::vector<double> stacked(static_cast<std::size_t>(width * size));
+      std::vector<Eigen::VectorXd> alone(width, Eigen::VectorXd(size));
+      for (int l = 0; l < width; ++l)
+        for (int j = 0; j < size; ++j)
+          stacked[static_cast<std::size_t>(j * width + l)] = alone[static_cast<std::size_t>(l)][j] =
+              j < n ? u(random) * 5 : u(random);
+      ASSERT_TRUE(kernel->tangentRk4(stacked.data(), k, 1e-3, 700)) << k;
+      for (int l = 0; l < width; ++l) {
+        Eigen::VectorXd& a = alone[static_cast<std::size_t>(l)];
+        ASSERT_TRUE(models[static_cast<std::size_t>(l)]->tangentRk4(a.data(), a.data() + n, k, 1e-3, 700));
+        for (int j = 0; j < size; ++j)
+          EXPECT_EQ(stacked[static_cast<std::size_t>(j * width + l)], a[j]) << "k " << k << " lane " << l;
+      }
+    }
+    EXPECT_FALSE(kernel->tangentRk4(y.data(), 4, 1e-3, 0)) << "more vectors than the core dimension";
   }
-  EXPECT_FALSE(kernel->tangentRk4(y.data(), 4, 1e-3, 0)) << "more vectors than the core dimension";
 }
 
-TEST(LyapunovLanes, FourValuesOfRhoGiveEachTheScalarRunsExponentsBitForBit) {
-  const auto models = lorenzAt({10, 24, 28, 160});
+TEST(LyapunovLanes, ValuesOfRhoGiveEachTheScalarRunsExponentsBitForBit) {
+  const auto models = lorenzAt({10, 24, 28, 160, 5, 20, 35, 99});
   const IntegratorFactory rk4 = [] { return std::make_unique<Rk4>(0.002); };
   LyapunovSettings s;
   s.maxTime = 30.001; // the last interval, 0.001, is not a whole number of steps: each run takes it alone
   s.interval = 0.5;
   std::vector<Eigen::VectorXd> x0s;
-  for (int l = 0; l < 4; ++l)
+  for (int l = 0; l < 8; ++l)
     x0s.push_back(Eigen::Vector3d(1 + l, 1, 20 - l));
   ASSERT_TRUE(lyapunovRunsOnLanes(pointers(models), rk4, s));
-  const auto lanes = lyapunovOnLanes(pointers(models), rk4, x0s, s);
+  const auto lanes = lyapunovOnLanes(pointers(models), rk4, x0s, s); // eight lanes
   ASSERT_TRUE(lanes.has_value());
-  ASSERT_EQ(lanes->size(), 4u);
-  for (std::size_t l = 0; l < 4; ++l) {
+  ASSERT_EQ(lanes->size(), 8u);
+  for (std::size_t l = 0; l < 8; ++l) {
     ASSERT_FALSE((*lanes)[l].failure) << l;
     const LyapunovResult alone = lyapunovExponents(*models[l], rk4, x0s[l], s);
     EXPECT_EQ((*lanes)[l].result.last.exponents, alone.last.exponents) << "rho lane " << l;

@@ -96,24 +96,28 @@ TEST(Lanes, KernelEqualsTheScalarTangentRightHandSideBitForBit) {
   for (const char* id : {"henon_heiles", "lorenz"}) {
     const auto model = test::makeModel(id, {});
     const int n = model->dimension(), m = model->info().coreDimension;
-    const auto kernel = laneKernelFor({model.get()});
-    ASSERT_TRUE(kernel) << id;
-    std::vector<double> y(static_cast<std::size_t>(kLanes * (n + m))), out(y.size());
-    for (double& v : y)
-      v = u(random);
-    kernel->tangentRhs(y.data(), out.data());
-    for (int l = 0; l < kLanes; ++l) {
-      Eigen::VectorXd x(n), w(m), dx(n), dw(m);
-      for (int c = 0; c < n; ++c)
-        x[c] = y[static_cast<std::size_t>(c * kLanes + l)];
-      for (int i = 0; i < m; ++i)
-        w[i] = y[static_cast<std::size_t>((n + i) * kLanes + l)];
-      model->tangentRhs(x.data(), w.data(), 1, dx.data(), dw.data());
-      for (int c = 0; c < n; ++c)
-        EXPECT_EQ(out[static_cast<std::size_t>(c * kLanes + l)], dx[c]) << id << " lane " << l << " f" << c;
-      for (int i = 0; i < m; ++i)
-        EXPECT_EQ(out[static_cast<std::size_t>((n + i) * kLanes + l)], dw[i])
-            << id << " lane " << l << " Jw" << i;
+    for (std::size_t orbits : {1, 5}) { // four lanes (AVX2), eight (AVX-512)
+      const auto kernel = laneKernelFor(std::vector<const Model*>(orbits, model.get()));
+      ASSERT_TRUE(kernel) << id;
+      const int width = kernel->width();
+      EXPECT_EQ(width, orbits == 1 ? 4 : 8);
+      std::vector<double> y(static_cast<std::size_t>(width * (n + m))), out(y.size());
+      for (double& v : y)
+        v = u(random);
+      kernel->tangentRhs(y.data(), out.data());
+      for (int l = 0; l < width; ++l) {
+        Eigen::VectorXd x(n), w(m), dx(n), dw(m);
+        for (int c = 0; c < n; ++c)
+          x[c] = y[static_cast<std::size_t>(c * width + l)];
+        for (int i = 0; i < m; ++i)
+          w[i] = y[static_cast<std::size_t>((n + i) * width + l)];
+        model->tangentRhs(x.data(), w.data(), 1, dx.data(), dw.data());
+        for (int c = 0; c < n; ++c)
+          EXPECT_EQ(out[static_cast<std::size_t>(c * width + l)], dx[c]) << id << " lane " << l << " f" << c;
+        for (int i = 0; i < m; ++i)
+          EXPECT_EQ(out[static_cast<std::size_t>((n + i) * width + l)], dw[i])
+              << id << " lane " << l << " Jw" << i;
+      }
     }
   }
   // a model whose field branches on a value has no lane kernel: the batched tools leave it to the scalar run

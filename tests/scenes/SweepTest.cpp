@@ -427,7 +427,7 @@ TEST(Sweep, PointsOnLanesAreThePointsOneAtATime) {
   EXPECT_NE(findLanesEvaluator("lyapunov"), nullptr);
   EXPECT_EQ(findLanesEvaluator("spectrum"), nullptr);
   EXPECT_THROW(addLanesEvaluator("megno", {}), InputError);
-  ASSERT_EQ(sweepBatch(batched), kLanes);
+  ASSERT_EQ(sweepBatch(batched), laneWidth());
   ASSERT_EQ(sweepBatch(single), 1);
   auto a = sweepOnTwoThreads(batched, "lanes.store"), b = sweepOnTwoThreads(single, "single.store");
   int failed = 0;
@@ -457,20 +457,29 @@ TEST(Sweep, LorenzExponentOverRhoOnLanesIsTheScalarOne) {
                                {{"lyapunov.time", 300}}, {{"lanes", lanes}}),
                          "sw.json");
   };
-  const SweepSpec batched = file(0), single = file(1);
-  ASSERT_EQ(sweepBatch(batched), kLanes);
-  auto a = sweepOnTwoThreads(batched, "rho-lanes.store"), b = sweepOnTwoThreads(single, "rho-single.store");
-  for (long i = 0; i < batched.points(); ++i) {
-    const SweepRecord x = a->read(i), y = b->read(i);
-    ASSERT_TRUE(x.ok && y.ok) << i << ": " << x.reason << " / " << y.reason;
-    EXPECT_EQ(x.values, y.values) << "rho " << batched.axisValues(i)[0];
-    if (batched.axisValues(i)[0] <= 20) {
-      EXPECT_LT(x.values[0], 0) << "rho " << batched.axisValues(i)[0];
+  const SweepSpec single = file(1);
+  EXPECT_EQ(sweepBatch(file(0)), laneWidth()); // the CPU's width
+  auto b = sweepOnTwoThreads(single, "rho-single.store");
+  for (int width : {4, 8}) { // AVX2's width and AVX-512's (SSE2 pairs where the CPU has neither)
+    const SweepSpec batched = file(width);
+    ASSERT_EQ(sweepBatch(batched), width);
+    auto a = sweepOnTwoThreads(batched, "rho-lanes.store");
+    for (long i = 0; i < batched.points(); ++i) {
+      const SweepRecord x = a->read(i), y = b->read(i);
+      ASSERT_TRUE(x.ok && y.ok) << i << ": " << x.reason << " / " << y.reason;
+      EXPECT_EQ(x.values, y.values) << width << " lanes, rho " << batched.axisValues(i)[0];
+      if (batched.axisValues(i)[0] <= 20) {
+        EXPECT_LT(x.values[0], 0) << "rho " << batched.axisValues(i)[0];
+      }
     }
+    EXPECT_NEAR(a->read(6).values[0], 0.9056, 0.05);
+    a->remove();
   }
-  EXPECT_NEAR(a->read(6).values[0], 0.9056, 0.05);
-  a->remove();
   b->remove();
+  EXPECT_NE(errorOf(sweep("lorenz", json::array({axis("rho", 4, 28, 7)}), "lyapunov.max", json::object(),
+                          {{"lanes", 3}}))
+                .find("options.lanes"),
+            std::string::npos);
 }
 
 } // namespace

@@ -616,7 +616,8 @@ def sweep(scene, axes=None, quantity=None, threads=0, progress=None, checkpoint=
     sweep file's "options": {"refine": 2} computes the grid, then twice halves the cells where the regimes meet;
     the grid is then the finest one, its points not computed "painted" from the nearest computed one). lanes=1
     computes one point at a time (the scalar path; options["lanes"]), for comparison with the default, several
-    points at once on SIMD lanes where the quantity can."""
+    points at once on SIMD lanes where the quantity can (as many as the CPU's registers take: 8 with AVX-512,
+    else 4); lanes=4 or lanes=8 asks for that many."""
     checkpoint = None if checkpoint is None else _os.fspath(checkpoint)
     if isinstance(scene, (str, _os.PathLike)):
         if axes is not None or quantity is not None or settings or options is not None or lanes is not None:
