@@ -9,6 +9,7 @@
 #include "dynamics/core/LaneField.h"
 #include "dynamics/integrators/Merson.h"
 #include "dynamics/integrators/Rk4.h"
+#include "tests/dynamics/LaneTestSupport.h"
 #include "tests/dynamics/TestSupport.h"
 
 #include <gtest/gtest.h>
@@ -43,23 +44,7 @@ TEST(LyapunovLanes, KernelsWithAModelPerLaneEqualEachModelAloneBitForBit) {
     std::mt19937 random(11);
     std::uniform_real_distribution<double> u(-3, 3);
     const int n = 3, m = 3;
-    // f and J w
-    std::vector<double> y(static_cast<std::size_t>(width * (n + m))), out(y.size());
-    for (double& v : y)
-      v = u(random);
-    kernel->tangentRhs(y.data(), out.data());
-    for (int l = 0; l < width; ++l) {
-      Eigen::VectorXd x(n), w(m), dx(n), dw(m);
-      for (int c = 0; c < n; ++c)
-        x[c] = y[static_cast<std::size_t>(c * width + l)];
-      for (int i = 0; i < m; ++i)
-        w[i] = y[static_cast<std::size_t>((n + i) * width + l)];
-      models[static_cast<std::size_t>(l)]->tangentRhs(x.data(), w.data(), 1, dx.data(), dw.data());
-      for (int c = 0; c < n; ++c)
-        EXPECT_EQ(out[static_cast<std::size_t>(c * width + l)], dx[c]) << "lane " << l << " f" << c;
-      for (int i = 0; i < m; ++i)
-        EXPECT_EQ(out[static_cast<std::size_t>((n + i) * width + l)], dw[i]) << "lane " << l << " Jw" << i;
-    }
+    test::expectKernelRhsIsEachModelAlone(*kernel, models, random, std::to_string(width) + " lanes");
     // fused RK4 with 1, 2 and 3 tangent vectors
     for (int k = 1; k <= 3; ++k) {
       const int size = n + m * k;
@@ -77,7 +62,7 @@ TEST(LyapunovLanes, KernelsWithAModelPerLaneEqualEachModelAloneBitForBit) {
           EXPECT_EQ(stacked[static_cast<std::size_t>(j * width + l)], a[j]) << "k " << k << " lane " << l;
       }
     }
-    EXPECT_FALSE(kernel->tangentRk4(y.data(), 4, 1e-3, 0)) << "more vectors than the core dimension";
+    EXPECT_FALSE(kernel->tangentRk4(nullptr, 4, 1e-3, 0)) << "more vectors than the core dimension";
   }
 }
 

@@ -8,6 +8,7 @@
 #include "dynamics/core/LaneField.h"
 #include "dynamics/integrators/Everhart.h"
 #include "dynamics/integrators/Rk4.h"
+#include "tests/dynamics/LaneTestSupport.h"
 #include "tests/dynamics/TestModels.h"
 #include "tests/dynamics/TestSupport.h"
 
@@ -92,32 +93,15 @@ Eigen::VectorXd hhState(double e, double y, double py) {
 
 TEST(Lanes, KernelEqualsTheScalarTangentRightHandSideBitForBit) {
   std::mt19937 random(7);
-  std::uniform_real_distribution<double> u(-2, 2);
   for (const char* id : {"henon_heiles", "lorenz"}) {
     const auto model = test::makeModel(id, {});
-    const int n = model->dimension(), m = model->info().coreDimension;
     for (std::size_t orbits : {1, 5}) { // four lanes (AVX2), eight (AVX-512)
       const auto kernel = laneKernelFor(std::vector<const Model*>(orbits, model.get()));
       ASSERT_TRUE(kernel) << id;
-      const int width = kernel->width();
-      EXPECT_EQ(width, orbits == 1 ? 4 : 8);
-      std::vector<double> y(static_cast<std::size_t>(width * (n + m))), out(y.size());
-      for (double& v : y)
-        v = u(random);
-      kernel->tangentRhs(y.data(), out.data());
-      for (int l = 0; l < width; ++l) {
-        Eigen::VectorXd x(n), w(m), dx(n), dw(m);
-        for (int c = 0; c < n; ++c)
-          x[c] = y[static_cast<std::size_t>(c * width + l)];
-        for (int i = 0; i < m; ++i)
-          w[i] = y[static_cast<std::size_t>((n + i) * width + l)];
-        model->tangentRhs(x.data(), w.data(), 1, dx.data(), dw.data());
-        for (int c = 0; c < n; ++c)
-          EXPECT_EQ(out[static_cast<std::size_t>(c * width + l)], dx[c]) << id << " lane " << l << " f" << c;
-        for (int i = 0; i < m; ++i)
-          EXPECT_EQ(out[static_cast<std::size_t>((n + i) * width + l)], dw[i])
-              << id << " lane " << l << " Jw" << i;
-      }
+      EXPECT_EQ(kernel->width(), orbits == 1 ? 4 : 8);
+      test::expectKernelRhsIsEachModelAlone(
+          *kernel, std::vector<const Model*>(static_cast<std::size_t>(kernel->width()), model.get()), random,
+          id);
     }
   }
   // a model whose field branches on a value has no lane kernel: the batched tools leave it to the scalar run
