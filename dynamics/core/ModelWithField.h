@@ -153,8 +153,7 @@ private:
     }
   }
   // f and J V of W states with K tangent vectors, component-major in TangentSystem's layout: the lane form of
-  // directional<K>. The field is called here, in the flattened kernel, not through a lambda: the compiler
-  // inlines it whole only there
+  // directional<K> (a field declared always_inline is compiled into the kernel's vector code: LaneField.h)
   template <int W, int K, class C>
   EIGEN_ALWAYS_INLINE void laneDirectional(const C& coefficients, const double* in, double* out) const {
     using L = LaneVector<W>;

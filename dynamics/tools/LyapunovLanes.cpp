@@ -67,7 +67,10 @@ std::optional<std::vector<LyapunovLaneResult>> lyapunovOnLanes(const std::vector
   };
   const int dimension = static_cast<int>(runs.front()->tangentState().size());
   const int width = lanes->kernel->width();
-  std::vector<double> y(static_cast<std::size_t>(dimension * width));
+  std::vector<double> y(static_cast<std::size_t>(dimension) * static_cast<std::size_t>(width));
+  const auto at = [width](int component, std::size_t lane) { // component-major: y[j * width + l]
+    return static_cast<std::size_t>(component) * static_cast<std::size_t>(width) + lane;
+  };
   const double h = runs.front()->fusedStepSize();
   constexpr long kChunk = 4096; // steps between looks at a stop request and at the state (as LyapunovRun)
   for (;;) {
@@ -85,7 +88,7 @@ std::optional<std::vector<LyapunovLaneResult>> lyapunovOnLanes(const std::vector
       const Eigen::VectorXd& x =
           runs[std::min<std::size_t>(static_cast<std::size_t>(l), count - 1)]->tangentState();
       for (int j = 0; j < dimension; ++j)
-        y[static_cast<std::size_t>(j * width + l)] = x[j];
+        y[at(j, static_cast<std::size_t>(l))] = x[j];
     }
     std::vector<bool> blewUp(count, false);
     for (long done = 0; done < steps; done += kChunk) {
@@ -93,7 +96,7 @@ std::optional<std::vector<LyapunovLaneResult>> lyapunovOnLanes(const std::vector
       lanes->kernel->tangentRk4(y.data(), runs.front()->exponentCount(), h, std::min(kChunk, steps - done));
       for (std::size_t l = 0; l < count; ++l)
         for (int j = 0; j < dimension && !blewUp[l]; ++j)
-          blewUp[l] = !std::isfinite(y[static_cast<std::size_t>(j * width) + l]);
+          blewUp[l] = !std::isfinite(y[at(j, l)]);
     }
     for (std::size_t l = 0; l < count; ++l) {
       if (!active(l)) continue;
@@ -103,7 +106,7 @@ std::optional<std::vector<LyapunovLaneResult>> lyapunovOnLanes(const std::vector
       }
       Eigen::VectorXd& x = runs[l]->tangentState();
       for (int j = 0; j < dimension; ++j)
-        x[j] = y[static_cast<std::size_t>(j * width) + l];
+        x[j] = y[at(j, l)];
       runs[l]->closeFusedInterval({}, control);
     }
   }
