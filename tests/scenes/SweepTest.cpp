@@ -11,8 +11,10 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <gtest/gtest.h>
+#include <thread>
 
 namespace rv {
 namespace {
@@ -256,7 +258,13 @@ bool runRefined(const SweepSpec& s, SweepStore& store, long stopAfter = 0) {
     return runSweepThreads(
         store, scheduler,
         [&](long i, const ToolControl& c) {
-          ++evaluated;
+          if (++evaluated >= stopAfter && stopAfter > 0) {
+            // hold the point until the run has seen the stop: it looks between points (every 20 ms), and a
+            // fast sweep on a busy machine would otherwise finish first
+            const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+            while (!c.stopRequested() && std::chrono::steady_clock::now() < deadline)
+              std::this_thread::yield();
+          }
           return evaluateSweepPoint(s, i, c);
         },
         2, control);
