@@ -346,19 +346,18 @@ std::optional<double> numberIn(const nlohmann::json& fields, const std::string& 
 
 // The megno tool's batch evaluation (a LanesEvaluator, scenes/Sweep.h): its output `name` at several points
 // at once (dynamics/tools/MegnoLanes.h), on a flow whose model has a lane kernel, integrated by a method
-// that steps stacked orbits as alone (IntegratorEntry::independentOrbits: rk4) -- where each lane is the
-// scalar run bit for bit, so a point's value cannot depend on the points beside it, and a sweep stays the
-// same file on any threads, ranks and resumption. (Everhart's corrector stops when every lane has converged,
-// adams starts adaptively: on lanes a point would take its neighbours' iterations.)
+// that steps stacked orbits as alone (Integrator::stepLanesAlone: rk4, everhart at a fixed step) -- where
+// each lane is the scalar run bit for bit, so a point's value cannot depend on the points beside it, and a
+// sweep stays the same file on any threads, ranks and resumption. (An adaptive step or adams's adaptive
+// start would make a point take its neighbours' steps: those run one at a time.)
 std::optional<std::vector<LaneValues>>
 megnoOnLanesOf(const std::string& name, const std::vector<Scene>& scenes, const ToolControl& control) {
   if (!numberIn(megnoFields(MegnoEstimate{}), name)) return std::nullopt; // not a number: one at a time
   const auto points = pointsOnLanes(scenes);
-  if (!points || !points->run.integrator->independentOrbits || !megnoRunsOnLanes(points->models))
-    return std::nullopt;
-  const auto results = megnoOnLanes(
-      points->models, [&] { return points->run.makeIntegrator(*points->models.front()); }, points->starts,
-      scenes.front().megno, control);
+  if (!points) return std::nullopt;
+  const IntegratorFactory make = [&] { return points->run.makeIntegrator(*points->models.front()); };
+  if (!megnoRunsOnLanes(points->models, make)) return std::nullopt;
+  const auto results = megnoOnLanes(points->models, make, points->starts, scenes.front().megno, control);
   if (results.empty()) throw Stopped{};
   std::vector<LaneValues> values;
   values.reserve(results.size());
@@ -367,7 +366,8 @@ megnoOnLanesOf(const std::string& name, const std::vector<Scene>& scenes, const 
   return values;
 }
 
-// The lyapunov tool's batch evaluation: the tangent method's fused rk4 steps of several orbits at once
+// The lyapunov tool's batch evaluation: the tangent method's fused rk4 steps of several orbits at once, or
+// a method that steps lanes as alone (everhart at a fixed step) on the stacked tangent systems
 // (dynamics/tools/LyapunovLanes.h), each lane the scalar run bit for bit.
 std::optional<std::vector<LaneValues>>
 lyapunovOnLanesOf(const std::string& name, const std::vector<Scene>& scenes, const ToolControl& control) {

@@ -40,7 +40,7 @@ template <int W> struct LaneVector {
   static constexpr int kWidth = W;
   using V = typename detail::DoubleVector<W>::Type;
   V v;
-  LaneVector() : v(V{}) {}
+  LaneVector() = default; // uninitialised, as a double: jets are built lane values first (Jet::with)
   LaneVector(double x) : v(V{} + x) {} // NOLINT(google-explicit-constructor): a constant in every lane
   static LaneVector load(const double* p) {
     LaneVector r;
@@ -115,9 +115,15 @@ template <int W> LaneVector<W> log(const LaneVector<W>& a) {
 template <class T, int K = 1> struct Jet {
   T v;
   T d[K];
-  Jet() : v(0.0) { fill(T(0.0)); }
+  /// Uninitialised, as AutoDiffScalar: a jet of 8 lanes and 6 directions is 448 bytes, which a field's
+  /// temporaries would otherwise zero each time before their values are written.
+  Jet() = default;
   Jet(double x) : v(x) { fill(T(0.0)); } // NOLINT(google-explicit-constructor): a constant
-  Jet(T value, T derivative) : v(value) { fill(derivative); }
+  /// A constant of one value per lane (a coefficient that differs between lanes).
+  template <class C>
+  requires(std::is_same_v<C, T> && !std::is_arithmetic_v<C>) explicit Jet(const C& value) : v(value) {
+    fill(T(0.0));
+  }
   Jet& operator+=(const Jet& o) { return *this = *this + o; }
   Jet& operator-=(const Jet& o) { return *this = *this - o; }
   Jet& operator*=(const Jet& o) { return *this = *this * o; }
@@ -263,4 +269,13 @@ inline std::string laneDescription() {
 namespace Eigen {
 template <int W> struct NumTraits<rv::LaneVector<W>> : rv::HeldScalarTraits<rv::LaneVector<W>, 1> {};
 template <class T, int K> struct NumTraits<rv::Jet<T, K>> : rv::HeldScalarTraits<rv::Jet<T, K>, 3> {};
+// a vector of jets times a coefficient of one value per lane (as a vector of AutoDiffScalar times a double)
+template <int W, int K, typename BinaryOp>
+struct ScalarBinaryOpTraits<rv::LaneVector<W>, rv::Jet<rv::LaneVector<W>, K>, BinaryOp> {
+  using ReturnType = rv::Jet<rv::LaneVector<W>, K>;
+};
+template <int W, int K, typename BinaryOp>
+struct ScalarBinaryOpTraits<rv::Jet<rv::LaneVector<W>, K>, rv::LaneVector<W>, BinaryOp> {
+  using ReturnType = rv::Jet<rv::LaneVector<W>, K>;
+};
 } // namespace Eigen

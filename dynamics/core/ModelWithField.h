@@ -195,13 +195,15 @@ private:
   public:
     Kernel(const ModelWithField& model, const C& coefficients) : model_(model), coefficients_(coefficients) {}
     int width() const override { return W; }
-    void tangentRhs(const double* x, double* out) const override {
-      if constexpr (W == 8) {
-        if (cpuHasAvx512()) return rhsAvx512(x, out);
-      } else {
-        if (cpuHasAvx2()) return rhsAvx2(x, out);
-      }
-      rhsBaseline(x, out);
+    bool tangentRhs(const double* x, int k, double* out) const override {
+      return withFixedVectors(k, [&]<int K>() {
+        if constexpr (W == 8) {
+          if (cpuHasAvx512()) return rhsAvx512<K>(x, out);
+        } else {
+          if (cpuHasAvx2()) return rhsAvx2<K>(x, out);
+        }
+        rhsBaseline<K>(x, out);
+      });
     }
     bool tangentRk4(double* y, int k, double h, long steps) const override {
       return withFixedVectors(k, [&]<int K>() {
@@ -218,14 +220,15 @@ private:
   private:
     // four lanes in AVX2 (whose target has no FMA), eight in AVX-512 (whose has: the project compiles with
     // -ffp-contract=off, so no product and sum are fused), else SSE2 pairs
-    [[gnu::target("avx2"), gnu::flatten]] void rhsAvx2(const double* x, double* out) const {
-      model_.template laneDirectional<W, 1>(coefficients_, x, out);
+    template <int K> [[gnu::target("avx2"), gnu::flatten]] void rhsAvx2(const double* x, double* out) const {
+      model_.template laneDirectional<W, K>(coefficients_, x, out);
     }
+    template <int K>
     [[gnu::target("avx512f"), gnu::flatten]] void rhsAvx512(const double* x, double* out) const {
-      model_.template laneDirectional<W, 1>(coefficients_, x, out);
+      model_.template laneDirectional<W, K>(coefficients_, x, out);
     }
-    [[gnu::flatten]] void rhsBaseline(const double* x, double* out) const {
-      model_.template laneDirectional<W, 1>(coefficients_, x, out);
+    template <int K> [[gnu::flatten]] void rhsBaseline(const double* x, double* out) const {
+      model_.template laneDirectional<W, K>(coefficients_, x, out);
     }
     template <int K>
     [[gnu::target("avx2"), gnu::flatten]] void rk4Avx2(double* y, double h, long steps) const {

@@ -5,6 +5,8 @@
 
 #include <cmath>
 #include <mutex>
+#include <stdexcept>
+#include <string>
 
 namespace rv {
 
@@ -198,9 +200,19 @@ Everhart::Everhart(double step, int order, int iterations, double tolerance)
   c_.assign(t.cl.begin(), t.cl.end());
 }
 
+bool Everhart::stepLanesAlone(int width) {
+  if (tolerance_ > 0 || width < 1) return false; // an adaptive step is one step for all lanes
+  lanes_ = width;
+  return true;
+}
+
 void Everhart::start(const Model& model, double t0, const Eigen::VectorXd& x0, int direction) {
   Integrator::start(model, t0, x0, direction);
   const auto d = x0.size();
+  if (d % lanes_ != 0)
+    throw std::logic_error("Everhart: a state of " + std::to_string(d) + " components is not " +
+                           std::to_string(lanes_) + " lanes");
+  laneCorrectors_.assign(static_cast<std::size_t>(lanes_), LaneCorrector{});
   F_.setZero(d, n_), Fnew_.setZero(d, n_), predicted_.setZero(d, n_), correction_.setZero(d, n_);
   f1_.resize(d), y_.resize(d), sum_.resize(d);
   compensation_.setZero(d);
@@ -249,6 +261,10 @@ void Everhart::step() {
 // (IAS15's rule) or what is left is far below it, or after `iterations` sweeps. Returns the polynomial's last
 // coefficient relative to the largest node value (IAS15's error measure).
 template <int N> double Everhart::correct(double h) {
+  if (lanes_ > 1) {
+    correctLanes<N>(h);
+    return 0; // lanes step at a fixed step
+  }
   using Nodes = Eigen::Matrix<double, Eigen::Dynamic, N>;
   const Eigen::Map<const Nodes> nodes(F_.data(), F_.rows(), N);
   double previousChange = 0, changeBefore = 0;
@@ -258,9 +274,8 @@ template <int N> double Everhart::correct(double h) {
     ++lastIterations_;
     double change = 0, scale = 0;
     for (int j = 1; j < N; ++j) {
-      // y = x0 + h sum_l A(j, l) F_l: with N known the product unrolls and vectorises along the state
-      const Eigen::Matrix<double, N, 1> a = h * A_.row(j).transpose();
-      y_.noalias() = x_ + nodes.lazyProduct(a);
+      // y = x0 + h sum_l A(j, l) F_l
+      nodeSum<N>(h, j);
       model_->rhs(y_.data(), f1_.data()); // f1_ is free until the step ends
       ++evaluations_;
       change = std::max(change, (f1_ - F_.col(j)).head(c).cwiseAbs().maxCoeff());
@@ -294,6 +309,66 @@ template <int N> double Everhart::correct(double h) {
   return scale > 0 ? last / scale : last;
 }
 
+// y_ = x_ + h sum_l A(j, l) F_l, column by column: every component summed in the same order whatever the
+// number of components (a matrix product would sum a last odd row in another order than the vectorised ones,
+// so an orbit's rounding would depend on the lanes stacked with it, and on its dimension's parity)
+template <int N> void Everhart::nodeSum(double h, int j) {
+  y_ = F_.col(0) * (h * A_(j, 0));
+  for (int l = 1; l < N; ++l)
+    y_ += F_.col(l) * (h * A_(j, l));
+  y_ += x_;
+}
+
+// correct<N> on `lanes_` orbits stacked component-major: the same sweeps over all lanes (one evaluation of
+// the stacked system each), but each lane measures its own change and stops by correct<N>'s rules; a lane
+// that has converged keeps its node values while the others iterate on. Each orbit's nodes are then those it
+// takes alone, bit for bit: the node sums y = x0 + h A F are row by row.
+template <int N> void Everhart::correctLanes(double h) {
+  const Eigen::Index width = lanes_, components = F_.rows() / width;
+  const Eigen::Index controlledComponents = controlled(F_.rows()) / width;
+  for (auto& lane : laneCorrectors_)
+    lane = LaneCorrector{};
+  int open = lanes_;
+  lastIterations_ = 0;
+  for (int it = 0; it < maxIterations_ && open > 0; ++it) {
+    ++lastIterations_;
+    for (auto& lane : laneCorrectors_)
+      lane.change = 0, lane.scale = 0;
+    for (int j = 1; j < N; ++j) {
+      nodeSum<N>(h, j);
+      model_->rhs(y_.data(), f1_.data());
+      ++evaluations_;
+      for (Eigen::Index c = 0; c < components; ++c)
+        for (Eigen::Index l = 0; l < width; ++l) {
+          LaneCorrector& lane = laneCorrectors_[static_cast<std::size_t>(l)];
+          if (lane.converged) continue;
+          const Eigen::Index r = c * width + l;
+          if (c < controlledComponents) {
+            lane.change = std::max(lane.change, std::abs(f1_[r] - F_(r, j)));
+            lane.scale = std::max(lane.scale, std::abs(f1_[r]));
+          }
+          F_(r, j) = f1_[r];
+        }
+    }
+    for (auto& lane : laneCorrectors_) { // correct<N>'s stopping rules, lane by lane
+      if (lane.converged) continue;
+      const double relative = lane.scale > 0 ? lane.change / lane.scale : lane.change;
+      bool stop = relative == 0 || (it > 2 && relative >= lane.previousChange);
+      if (!stop && it >= 2 && lane.changeBefore > 0) {
+        const double contraction = std::min(1.0, lane.previousChange / lane.changeBefore);
+        stop = relative * contraction < 1e-18 && relative >= 0.1 * contraction * lane.previousChange;
+      }
+      if (stop) {
+        lane.converged = true;
+        --open;
+      } else {
+        lane.changeBefore = lane.previousChange;
+        lane.previousChange = relative;
+      }
+    }
+  }
+}
+
 template <int N> void Everhart::stepWith() {
   F_.swap(Fnew_); // Fnew_: the last step's nodes, kept while a rejected step is redone
   for (int attempt = 0;; ++attempt) {
@@ -306,10 +381,11 @@ template <int N> void Everhart::stepWith() {
     if (havePrevious_) {
       const double ratio = h_ / lastStep_;
       if (ratio != lastRatio_) setExtrapolation(ratio);
-      using Nodes = Eigen::Matrix<double, Eigen::Dynamic, N>;
-      const Eigen::Matrix<double, N, N> E = extrapolate_;
-      Eigen::Map<Nodes> predicted(F_.data(), F_.rows(), N);
-      predicted.noalias() = Eigen::Map<const Nodes>(Fnew_.data(), Fnew_.rows(), N).lazyProduct(E);
+      for (int j = 0; j < N; ++j) { // column by column: each component's sum in one order (nodeSum)
+        F_.col(j) = Fnew_.col(0) * extrapolate_(0, j);
+        for (int l = 1; l < N; ++l)
+          F_.col(j) += Fnew_.col(l) * extrapolate_(l, j);
+      }
       predicted_ = F_;
       if (ratio == 1) F_ += correction_;
     } else {

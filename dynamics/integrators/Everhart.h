@@ -34,6 +34,9 @@ public:
   void interpolate(double t, Eigen::VectorXd& out) const override;
   void save(Snapshot& s) const override;
   void restore(Snapshot& s) override;
+  /// At a fixed step: each lane's corrector iterates until that lane converges (the others' values frozen
+  /// once they have), so each orbit takes the iterations, and the steps, it takes alone.
+  bool stepLanesAlone(int width) override;
 
   int order() const { return 2 * n_ - 1; }
   bool fixedStep() const override { return tolerance_ <= 0; }
@@ -51,11 +54,20 @@ public:
 private:
   template <int N> void stepWith();
   template <int N> double correct(double h);
+  template <int N> void correctLanes(double h);
+  template <int N> void nodeSum(double h, int j);
   /// The predictor's extrapolation for a step `ratio` times the last one: l_l(1 + ratio c_j).
   void setExtrapolation(double ratio);
 
   double h_, tolerance_;
   int n_, maxIterations_, lastIterations_ = 0;
+  int lanes_ = 1; ///< orbits stacked component-major (stepLanesAlone), each converging on its own
+  /// each lane's corrector: the last two changes and whether it has converged (correctLanes)
+  struct LaneCorrector {
+    double change = 0, scale = 0, previousChange = 0, changeBefore = 0;
+    bool converged = false;
+  };
+  std::vector<LaneCorrector> laneCorrectors_;
   long rejected_ = 0;
   bool havePrevious_ = false;
   double lastStep_ = 0;  ///< length of the last step taken

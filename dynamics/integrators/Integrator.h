@@ -36,6 +36,16 @@ public:
   /// only; 0, the default, by all. The integrator of a tangent system set to its orbit's dimension follows
   /// the orbit alone: the orbit does not depend on how many tangent vectors ride along.
   void controlBy(int components) { controlled_ = components; }
+  /// Takes the state as `width` orbits stacked component-major (component c of orbit l at c * width + l: SIMD
+  /// lanes, dynamics/core/Lanes.h) and steps each orbit as alone, bit for bit -- a point's result then cannot
+  /// depend on the points beside it. Call before start(); controlBy then counts the components of all lanes
+  /// (c * width for c per orbit). False, changing nothing, where the method cannot: its steps would read the
+  /// whole state (an error control, a step chosen from it). Rk4 steps orbits independently; Everhart at a
+  /// fixed step iterates each lane's corrector to that lane's convergence.
+  virtual bool stepLanesAlone(int width) {
+    (void)width;
+    return false;
+  }
 
   double time() const { return t_; }
   double previousTime() const { return tPrev_; }
@@ -90,11 +100,6 @@ struct IntegratorEntry {
   std::function<std::unique_ptr<Integrator>(const ParameterValues&)> create;
   /// Where it comes from: "" for rollviz's own, else the module file that registered it.
   std::string origin = {};
-  /// Orbits integrated together as one system (stacked on SIMD lanes, dynamics/tools/MegnoLanes.h) are each
-  /// stepped as alone, bit for bit: its steps depend on the step size alone, never on the state (a fixed
-  /// step, no error control, no iteration to convergence, no adaptive start). Not the same as
-  /// Integrator::fixedStep(): Everhart's fixed step iterates its corrector until the whole state converges.
-  bool independentOrbits = false;
 };
 
 /// All integration methods by name.

@@ -37,8 +37,7 @@ IntegratorEntry Rk4::entry() {
           .parameters = &parameterTable(),
           .create = [](const ParameterValues& p) -> std::unique_ptr<Integrator> {
             return std::make_unique<Rk4>(p["step"]);
-          },
-          .independentOrbits = true};
+          }};
 }
 
 void Rk4::start(const Model& model, double t0, const Eigen::VectorXd& x0, int direction) {

@@ -19,6 +19,8 @@ public:
   void restore(Snapshot& s) override;
   double stepSize() const { return h_; }
   bool fixedStep() const override { return true; }
+  /// Each component's stages read the state only through f: stacked orbits step as alone.
+  bool stepLanesAlone(int) override { return true; }
 
 private:
   template <int D> void stepWith();

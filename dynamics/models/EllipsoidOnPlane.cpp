@@ -85,8 +85,10 @@ RigidBodyConstants ellipsoidConstants(const ParameterValues& p) {
 
 EllipsoidOnPlane::EllipsoidOnPlane(const ParameterValues& p)
     : RigidBodyOnPlane(staticInfo(), p, ellipsoidConstants(p)),
-      b2_(p["b1"] * p["b1"], p["b2"] * p["b2"], p["b3"] * p["b3"]), a_(p["a1"], p["a2"], p["a3"]) {
-  if (!(((-a_).array() / b2_.cwiseSqrt().array()).matrix().norm() < 1))
+      coefficients_{.body = body_,
+                    .surface = {.b2 = {p["b1"] * p["b1"], p["b2"] * p["b2"], p["b3"] * p["b3"]},
+                                .a = {p["a1"], p["a2"], p["a3"]}}} {
+  if (!((geometricCentre().array() / semiAxes().array()).matrix().norm() < 1))
     throw InputError("a1..a3: the centre of mass must lie inside the ellipsoid");
   addRigidBodyObservables();
 }

@@ -11,31 +11,57 @@ class EllipsoidOnPlane final : public RigidBodyOnPlane<EllipsoidOnPlane> {
 public:
   explicit EllipsoidOnPlane(const ParameterValues& params);
   static const ModelInfo& staticInfo();
+  static constexpr bool kLaneField = true; ///< no branch on a value: runs on lanes (Lanes.h)
+
+  /// The surface as the equations read it, as T (double, or one value per lane): the squared semi-axes b2 and
+  /// the offset a; its Gauss map (8) with the erratum and that map's rate along gamma-dot.
+  template <class T> struct Surface {
+    std::array<T, 3> b2, a;
+    template <class S> [[gnu::always_inline]] ThreeVector<S> contact(const ThreeVector<S>& g) const {
+      using std::sqrt;
+      const ThreeVector<S> b2g = times(b2, g);
+      return -b2g / sqrt(dot(g, b2g)) - ThreeVector<S>::of(a);
+    }
+    template <class S>
+    [[gnu::always_inline]] ThreeVector<S> contactRate(const ThreeVector<S>& g,
+                                                      const ThreeVector<S>& dg) const {
+      using std::sqrt;
+      const ThreeVector<S> b2g = times(b2, g);
+      const S s2 = dot(g, b2g), s = sqrt(s2);
+      return -times(b2, dg) / s + (dot(b2g, dg) / (s2 * s)) * b2g;
+    }
+  };
+  /// What the field reads (LaneField.h): the body's constants and the surface's.
+  template <class T> struct Coefficients {
+    RigidBodyCoefficients<T> body;
+    Surface<T> surface;
+  };
+  const Coefficients<double>& coefficients() const { return coefficients_; }
 
   template <class S> V3<S> contact(const V3<S>& g) const {
-    using std::sqrt;
-    const V3<S> b2g = b2_.cast<S>().cwiseProduct(g);
-    return -b2g / sqrt(g.dot(b2g)) - a_.cast<S>();
+    return coefficients_.surface.template contact<S>(ThreeVector<S>::from(g)).eigen();
   }
   template <class S> V3<S> contactRate(const V3<S>& g, const V3<S>& dg) const {
-    using std::sqrt;
-    const V3<S> b2g = b2_.cast<S>().cwiseProduct(g);
-    const S s2 = g.dot(b2g), s = sqrt(s2);
-    return -b2_.cast<S>().cwiseProduct(dg) / s + b2g * (b2g.dot(dg) / (s2 * s));
+    return coefficients_.surface.template contactRate<S>(ThreeVector<S>::from(g), ThreeVector<S>::from(dg))
+        .eigen();
   }
   bool touches(const Eigen::Vector3d&) const { return true; }
   std::optional<BodyGeometry> geometry() const override {
-    return BodyGeometry{.shape = BodyShape::Ellipsoid, .centre = -a_, .semiAxes = b2_.cwiseSqrt()};
+    return BodyGeometry{.shape = BodyShape::Ellipsoid, .centre = geometricCentre(), .semiAxes = semiAxes()};
   }
 
   /// Semi-axes and the geometric centre seen from the centre of mass (-a), for drawing.
-  Eigen::Vector3d semiAxes() const { return b2_.cwiseSqrt(); }
-  Eigen::Vector3d geometricCentre() const { return -a_; }
+  Eigen::Vector3d semiAxes() const {
+    return Eigen::Map<const Eigen::Vector3d>(coefficients_.surface.b2.data()).cwiseSqrt();
+  }
+  Eigen::Vector3d geometricCentre() const {
+    return -Eigen::Map<const Eigen::Vector3d>(coefficients_.surface.a.data());
+  }
   /// (9)
   static Eigen::Matrix3d eulerRotation(double phi, double theta, double psi);
 
 private:
-  Eigen::Vector3d b2_, a_;
+  Coefficients<double> coefficients_;
 };
 
 } // namespace rv

@@ -10,8 +10,11 @@
 #pragma once
 #include "dynamics/core/ModelWithField.h"
 #include "dynamics/models/BodyParameters.h"
+#include "dynamics/models/ThreeVector.h"
 
 #include <Eigen/Dense>
+#include <array>
+#include <cstddef>
 
 namespace rv {
 
@@ -22,8 +25,18 @@ struct RigidBodyConstants {
   Eigen::Matrix3d field = Eigen::Matrix3d::Zero(); ///< B of U = (gamma, B gamma) / 2
 };
 
+/// The same constants as the equations read them, as T: double, or one value per SIMD lane (a sweep's points
+/// side by side, dynamics/core/LaneField.h). Matrices column-major.
+template <class T> struct RigidBodyCoefficients {
+  std::array<T, 9> inertia;
+  T mass, gravity;
+  std::array<T, 9> field;
+};
+
 /// The equations, generic in the surface (Derived provides contact<S>(gamma) and contactRate<S>(gamma,
-/// dgamma)).
+/// dgamma) on Eigen vectors). A Derived whose surface is a `Surface<T>` of coefficients (EllipsoidOnPlane)
+/// declares `Coefficients<T> {RigidBodyCoefficients<T> body; Surface<T> surface;}` and `coefficients()`; its
+/// field then runs on lanes.
 template <class Derived> class RigidBodyOnPlane : public ModelWithField<Derived, 16, 6> {
 public:
   using Base = ModelWithField<Derived, 16, 6>;
@@ -31,41 +44,73 @@ public:
   template <class S> using V3 = Eigen::Matrix<S, 3, 1>;
 
   RigidBodyOnPlane(const ModelInfo& info, const ParameterValues& p, const RigidBodyConstants& c)
-      : Base(info, p), c_(c) {}
+      : Base(info, p), c_(c) {
+    for (int k = 0; k < 9; ++k) {
+      body_.inertia[static_cast<std::size_t>(k)] = c.inertia(k % 3, k / 3);
+      body_.field[static_cast<std::size_t>(k)] = c.field(k % 3, k / 3);
+    }
+    body_.mass = c.mass, body_.gravity = c.gravity;
+  }
 
   /// omega from M: M = I omega + m r x (omega x r).
   template <class S> V3<S> angularVelocity(const V3<S>& M, const V3<S>& r) const {
-    Eigen::Matrix<S, 3, 3> A = c_.inertia.template cast<S>();
-    const S rr = r.squaredNorm();
+    return angularVelocityOf<S>(body_, ThreeVector<S>::from(M), ThreeVector<S>::from(r)).eigen();
+  }
+  template <class S, class T>
+  [[gnu::always_inline]] static ThreeVector<S>
+  angularVelocityOf(const RigidBodyCoefficients<T>& body, const ThreeVector<S>& M, const ThreeVector<S>& r) {
+    ThreeMatrix<S> A = ThreeMatrix<S>::of(body.inertia);
+    const S rr = dot(r, r);
     for (int i = 0; i < 3; ++i) {
-      A(i, i) += c_.mass * rr;
+      A(i, i) = A(i, i) + body.mass * rr;
       for (int j = 0; j < 3; ++j)
-        A(i, j) -= c_.mass * r[i] * r[j];
+        A(i, j) = A(i, j) - body.mass * r[i] * r[j];
     }
-    return A.inverse() * M;
+    return A.solve(M);
   }
 
-  template <class S> void field(const Vec<S>& x, Vec<S>& dx) const {
+  /// (2) with the kinematics, of the body's coefficients and a surface that has contact<S>(gamma) and
+  /// contactRate<S>(gamma, dgamma) on ThreeVector<S>: the one statement of the equations, for one body and
+  /// for lanes of bodies (Coefficients<T>, T one value per lane). Written on ThreeVector, always inlined: the
+  /// lane kernels compile it whole (ThreeVector.h says why).
+  template <class S, class T, class Surface>
+  [[gnu::always_inline]] static void equations(const RigidBodyCoefficients<T>& body, const Surface& surface,
+                                               const Vec<S>& x, Vec<S>& dx) {
     using std::sqrt;
-    const V3<S> M = x.template segment<3>(0), g = x.template segment<3>(3);
-    const V3<S> a = x.template segment<3>(6), b = x.template segment<3>(9);
-    const V3<S> r = self().template contact<S>(g);
-    const V3<S> w = angularVelocity<S>(M, r);
-    const V3<S> dg = g.cross(w);
-    const V3<S> dr = self().template contactRate<S>(g, dg);
-    const V3<S> Bg = c_.field.template cast<S>() * g;
-    dx.template segment<3>(0) = M.cross(w) + c_.mass * dr.cross(w.cross(r)) +
-                                (c_.mass * c_.gravity) * r.cross(g) + g.cross(Bg); // (2)
-    dx.template segment<3>(3) = dg;
-    dx.template segment<3>(6) = a.cross(w);
-    dx.template segment<3>(9) = b.cross(w);
-    const V3<S> v = -w.cross(r); // velocity of the centre of mass, from the rolling constraint (1)
-    dx[12] = v.dot(a);
-    dx[13] = v.dot(b);
+    using Three = ThreeVector<S>;
+    const Three M{{x[0], x[1], x[2]}}, g{{x[3], x[4], x[5]}}, a{{x[6], x[7], x[8]}}, b{{x[9], x[10], x[11]}};
+    const Three r = surface.template contact<S>(g);
+    const Three w = angularVelocityOf<S>(body, M, r);
+    const Three dg = cross(g, w);
+    const Three dr = surface.template contactRate<S>(g, dg);
+    const Three Bg = ThreeMatrix<S>::of(body.field) * g;
+    const Three dM = cross(M, w) + body.mass * cross(dr, cross(w, r)) +
+                     (body.mass * body.gravity) * cross(r, g) + cross(g, Bg); // (2)
+    const Three da = cross(a, w), db = cross(b, w);
+    for (int i = 0; i < 3; ++i) {
+      dx[i] = dM[i];
+      dx[3 + i] = dg[i];
+      dx[6 + i] = da[i];
+      dx[9 + i] = db[i];
+    }
+    const Three v = -cross(w, r); // velocity of the centre of mass, from the rolling constraint (1)
+    dx[12] = dot(v, a);
+    dx[13] = dot(v, b);
     // the contact point moves on the plane with ((alpha, r'), (beta, r')) and on the body with r'
-    const S pa = a.dot(dr), pb = b.dot(dr);
+    const S pa = dot(a, dr), pb = dot(b, dr);
     dx[14] = sqrt(pa * pa + pb * pb);
-    dx[15] = sqrt(dr.squaredNorm());
+    dx[15] = sqrt(dot(dr, dr));
+  }
+  template <class S> void field(const Vec<S>& x, Vec<S>& dx) const {
+    if constexpr (requires { typename Derived::template Coefficients<double>; })
+      field(self().coefficients(), x, dx);
+    else
+      equations<S>(body_, EigenSurface{self()}, x, dx);
+  }
+  /// The lanes' field (LaneField.h), for a Derived with Coefficients.
+  template <class S, class C>
+  [[gnu::always_inline]] static void field(const C& coefficients, const Vec<S>& x, Vec<S>& dx) {
+    equations<S>(coefficients.body, coefficients.surface, x, dx);
   }
 
   Eigen::VectorXd integrals(const double* x) const override {
@@ -115,9 +160,20 @@ public:
 
 protected:
   RigidBodyConstants c_;
+  RigidBodyCoefficients<double> body_; ///< c_ as the equations read it
 
 private:
   const Derived& self() const { return static_cast<const Derived&>(*this); }
+  // a Derived whose contact<S> and contactRate<S> take and give Eigen vectors, as a surface of equations()
+  struct EigenSurface {
+    const Derived& body;
+    template <class S> ThreeVector<S> contact(const ThreeVector<S>& g) const {
+      return ThreeVector<S>::from(body.template contact<S>(g.eigen()));
+    }
+    template <class S> ThreeVector<S> contactRate(const ThreeVector<S>& g, const ThreeVector<S>& dg) const {
+      return ThreeVector<S>::from(body.template contactRate<S>(g.eigen(), dg.eigen()));
+    }
+  };
 };
 
 } // namespace rv

@@ -294,8 +294,8 @@ long LyapunovRun::nextFusedSteps() const {
   return tangent_ && !finished() ? fusedSteps(nextSpan()) : 0;
 }
 
-void LyapunovRun::closeFusedInterval(const std::function<void(const LyapunovEstimate&)>& onEstimate,
-                                     const ToolControl& control) {
+void LyapunovRun::closeAdvancedInterval(const std::function<void(const LyapunovEstimate&)>& onEstimate,
+                                        const ToolControl& control) {
   close(nextSpan());
   recordEstimate(onEstimate, control);
 }

@@ -68,16 +68,21 @@ public:
   bool advanceOneInterval(const std::function<void(const LyapunovEstimate&)>& onEstimate,
                           const ToolControl& control);
 
-  /// Runs advanced together on SIMD lanes (LyapunovLanes.h) take an interval in three parts: the number of
-  /// fused rk4 steps of fusedStepSize() that make it (0 where the fused path does not apply: the run then
-  /// takes it alone, advanceOneInterval), the state those steps advance (x, then the tangent vectors, as
-  /// TangentSystem lays them out), and the interval's close once advanced (the estimate as run() makes it).
+  /// Runs advanced together on SIMD lanes (LyapunovLanes.h) take an interval in three parts: its advance --
+  /// the number of fused rk4 steps of fusedStepSize() that make it (0 where the fused path does not apply),
+  /// or an integrator from time() over nextSpan() (a fresh one each interval, as run() starts them) -- of the
+  /// state (x, then the tangent vectors, as TangentSystem lays them out), and the interval's close once
+  /// advanced (the estimate as run() makes it).
   long nextFusedSteps() const;
   double fusedStepSize() const { return fusedStep_; }
+  double time() const { return t_; }
+  double nextSpan() const { return std::min(interval_, s_.maxTime - t_); }
   Eigen::VectorXd& tangentState() { return state_; }
-  void closeFusedInterval(const std::function<void(const LyapunovEstimate&)>& onEstimate,
-                          const ToolControl& control);
+  void closeAdvancedInterval(const std::function<void(const LyapunovEstimate&)>& onEstimate,
+                             const ToolControl& control);
   int exponentCount() const { return k_; }
+  /// Whether the interval is taken by the tangent method (not perturbed orbits).
+  bool tangentMode() const { return tangent_ != nullptr; }
   /// Saves the run at its last finished interval (every interval restarts the integrators from there):
   /// restore() into a run built from the same model, settings and start goes on bit-identically.
   void save(Snapshot& s) const;
@@ -90,7 +95,6 @@ private:
   void close(double span);
   void recordEstimate(const std::function<void(const LyapunovEstimate&)>& onEstimate,
                       const ToolControl& control);
-  double nextSpan() const { return std::min(interval_, s_.maxTime - t_); }
   long fusedSteps(double span) const;
   bool advanceFused(long steps, const ToolControl& control);
   const Model& model_;

@@ -2,7 +2,9 @@
 
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/LaneField.h"
+#include "dynamics/tools/LaneStack.h"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -14,6 +16,7 @@ namespace {
 struct LaneRuns {
   std::unique_ptr<LaneKernel> kernel;
   std::vector<std::unique_ptr<LyapunovRun>> runs;
+  bool fused = false; ///< rk4 fused with the tangent equations; else an integrator on the stacked systems
 };
 
 std::optional<LaneRuns> laneRuns(const std::vector<const Model*>& models, const IntegratorFactory& make,
@@ -22,15 +25,35 @@ std::optional<LaneRuns> laneRuns(const std::vector<const Model*>& models, const 
   LaneRuns r;
   r.kernel = laneKernelFor(models);
   if (!r.kernel) return std::nullopt;
-  for (std::size_t l = 0; l < x0s.size(); ++l) {
+  for (std::size_t l = 0; l < x0s.size(); ++l)
     r.runs.push_back(std::make_unique<LyapunovRun>(*models[l], make, x0s[l], s));
-    if (r.runs.back()->fusedStepSize() == 0) return std::nullopt; // not rk4: each alone
+  LyapunovRun& first = *r.runs.front();
+  const int k = first.exponentCount();
+  r.fused = first.fusedStepSize() > 0;
+  if (r.fused) {
+    std::vector<double> probe(1);
+    if (!r.kernel->tangentRk4(probe.data(), k, 0, 0)) return std::nullopt; // more exponents than it takes
+    return r;
   }
-  std::vector<double> probe(1);
-  if (!r.kernel->tangentRk4(probe.data(), r.runs.front()->exponentCount(), 0, 0))
-    return std::nullopt; // more exponents than the fused path takes
+  // a method that steps each lane as alone, and a kernel with k vectors (its answer at a zero state)
+  if (!make()->stepLanesAlone(r.kernel->width())) return std::nullopt;
+  std::vector<double> zero(static_cast<std::size_t>(r.kernel->width()) *
+                           static_cast<std::size_t>(first.tangentState().size()));
+  std::vector<double> out(zero.size());
+  if (!r.kernel->tangentRhs(zero.data(), k, out.data())) return std::nullopt;
   return r;
 }
+
+// W tangent systems (TangentSystem, k vectors) stacked component-major: the lanes' kernel is its field
+class LaneTangents final : public LaneStack {
+public:
+  LaneTangents(const Model& base, const LaneKernel& kernel, int k)
+      : LaneStack(base, kernel, base.dimension() + base.info().coreDimension * k, "lyapunov lanes"), k_(k) {}
+  void rhs(const double* y, double* dy) const override { kernel_.tangentRhs(y, k_, dy); }
+
+private:
+  int k_;
+};
 
 } // namespace
 
@@ -72,32 +95,71 @@ std::optional<std::vector<LyapunovLaneResult>> lyapunovOnLanes(const std::vector
     return static_cast<std::size_t>(component) * static_cast<std::size_t>(width) + lane;
   };
   const double h = runs.front()->fusedStepSize();
+  const int k = runs.front()->exponentCount();
+  const int n = models.front()->dimension();
+  const LaneTangents stacked(*models.front(), *lanes->kernel, k);
   constexpr long kChunk = 4096; // steps between looks at a stop request and at the state (as LyapunovRun)
+  // the next interval of every active run on the lanes, from `lead`, an active run (lanes of runs done and
+  // lanes left over take its orbit: a finished or failed orbit's state must not fail the batch); true when
+  // advanced, false when stopped; the orbits that failed (a blow-up) marked in blewUp
+  const auto onLanes = [&](std::size_t leadLane, long steps, std::vector<bool>& blewUp) {
+    for (std::size_t l = 0; l < static_cast<std::size_t>(width); ++l) {
+      const Eigen::VectorXd& x = runs[l < count && active(l) ? l : leadLane]->tangentState();
+      for (int j = 0; j < dimension; ++j)
+        y[at(j, l)] = x[j];
+    }
+    if (lanes->fused) {
+      for (long done = 0; done < steps; done += kChunk) {
+        if (control.stopRequested()) return false;
+        lanes->kernel->tangentRk4(y.data(), k, h, std::min(kChunk, steps - done));
+        for (std::size_t l = 0; l < count; ++l)
+          for (int j = 0; j < dimension && !blewUp[l]; ++j)
+            blewUp[l] = !std::isfinite(y[at(j, l)]);
+      }
+      return true;
+    }
+    // as LyapunovRun takes an interval with its integrator: a fresh one from the interval's start, stepped
+    // past its end and interpolated back; a failed step fails the batch, and each orbit goes alone
+    const LyapunovRun& lead = *runs[leadLane];
+    const double target = lead.time() + lead.nextSpan();
+    try {
+      auto integ = makeIntegrator();
+      integ->stepLanesAlone(width);
+      integ->controlBy(n * width); // each orbit alone, as LyapunovRun's integrator: x, not the vectors
+      Eigen::VectorXd state =
+          Eigen::Map<const Eigen::VectorXd>(y.data(), static_cast<Eigen::Index>(y.size()));
+      integ->start(stacked, lead.time(), state);
+      while (integ->time() < target) {
+        if (control.stopRequested()) return false;
+        integ->step();
+      }
+      if (integ->time() == target)
+        state = integ->state();
+      else
+        integ->interpolate(target, state);
+      std::copy(state.begin(), state.end(), y.begin());
+    } catch (const ComputationError&) {
+      std::fill(blewUp.begin(), blewUp.end(), true);
+    }
+    return true;
+  };
   for (;;) {
     // the lanes' next interval: the same span and steps for every active run (one time, one step)
     long steps = -1;
-    for (std::size_t l = 0; l < count; ++l)
-      if (active(l)) steps = runs[l]->nextFusedSteps();
+    std::size_t leadLane = 0;
+    for (std::size_t l = count; l-- > 0;) {
+      if (!active(l)) continue;
+      steps = lanes->fused ? runs[l]->nextFusedSteps() : 1;
+      leadLane = l;
+    }
     if (steps < 0) break; // every run done
     if (steps == 0) {     // an interval the fused path does not make: each run alone
       for (std::size_t l = 0; l < count; ++l)
         if (active(l) && !alone(l)) return std::vector<LyapunovLaneResult>{};
       continue;
     }
-    for (int l = 0; l < width; ++l) { // lanes left over repeat the last orbit
-      const Eigen::VectorXd& x =
-          runs[std::min<std::size_t>(static_cast<std::size_t>(l), count - 1)]->tangentState();
-      for (int j = 0; j < dimension; ++j)
-        y[at(j, static_cast<std::size_t>(l))] = x[j];
-    }
     std::vector<bool> blewUp(count, false);
-    for (long done = 0; done < steps; done += kChunk) {
-      if (control.stopRequested()) return std::vector<LyapunovLaneResult>{};
-      lanes->kernel->tangentRk4(y.data(), runs.front()->exponentCount(), h, std::min(kChunk, steps - done));
-      for (std::size_t l = 0; l < count; ++l)
-        for (int j = 0; j < dimension && !blewUp[l]; ++j)
-          blewUp[l] = !std::isfinite(y[at(j, l)]);
-    }
+    if (!onLanes(leadLane, steps, blewUp)) return std::vector<LyapunovLaneResult>{};
     for (std::size_t l = 0; l < count; ++l) {
       if (!active(l)) continue;
       if (blewUp[l]) { // from the interval's start, alone: the scalar run's failure, at its time
@@ -107,7 +169,7 @@ std::optional<std::vector<LyapunovLaneResult>> lyapunovOnLanes(const std::vector
       Eigen::VectorXd& x = runs[l]->tangentState();
       for (int j = 0; j < dimension; ++j)
         x[j] = y[at(j, l)];
-      runs[l]->closeFusedInterval({}, control);
+      runs[l]->closeAdvancedInterval({}, control);
     }
   }
   for (std::size_t l = 0; l < count; ++l)

@@ -2,65 +2,47 @@
 
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/LaneField.h"
+#include "dynamics/tools/LaneStack.h"
 
 #include <cmath>
+#include <stdexcept>
 #include <string>
 
 namespace rv {
 
 namespace {
 
-struct LaneSystemInfo {
-  ModelInfo systemInfo;
-};
-
-LaneSystemInfo laneInfo(const Model& base, int dimension) {
-  LaneSystemInfo s{base.info()};
-  s.systemInfo.id = base.info().id + "+megno lanes";
-  s.systemInfo.stateNames.clear();
-  for (int i = 0; i < dimension; ++i)
-    s.systemInfo.stateNames.push_back("y" + std::to_string(i));
-  s.systemInfo.coreDimension = dimension;
-  s.systemInfo.integralNames.clear();
-  s.systemInfo.hasMeasure = false;
-  return s;
-}
-
 // W MEGNO systems (MegnoRun::System) stacked component-major: y[c * W + l] is component c of lane l, the
 // components x (n), w (m), tau, A, B
-class LaneSystem final : private LaneSystemInfo, public Model {
+class LaneSystem final : public LaneStack {
 public:
   LaneSystem(const Model& base, const LaneKernel& kernel)
-      : LaneSystemInfo(laneInfo(base, kernel.width() * (base.dimension() + base.info().coreDimension + 3))),
-        Model(systemInfo, base.parameters()), kernel_(kernel), n_(base.dimension()),
-        m_(base.info().coreDimension), w_(kernel.width()) {}
+      : LaneStack(base, kernel, base.dimension() + base.info().coreDimension + 3, "megno lanes"),
+        n_(base.dimension()), m_(base.info().coreDimension) {}
   void rhs(const double* y, double* dy) const override {
-    kernel_.tangentRhs(y, dy);
+    kernel_.tangentRhs(y, 1, dy);
     if (cpuHasAvx2())
       sumsAvx2(y, dy);
     else
       sumsBaseline(y, dy);
-  }
-  void jacobian(const double*, double*) const override {
-    throw ComputationError("the Jacobian of the batched MEGNO system is not available");
   }
 
 private:
   // the MEGNO sums' derivatives of every lane, four at a time: megnoIntegrand and 2 A / tau, lane by lane the
   // scalar run's operations in its order (no fused multiply-add), so each lane rounds as MegnoRun does
   [[gnu::target("avx2"), gnu::flatten]] void sumsAvx2(const double* y, double* dy) const {
-    for (int q = 0; q < w_; q += 4)
+    for (int q = 0; q < lanes_; q += 4)
       sums(y + q, dy + q);
   }
   void sumsBaseline(const double* y, double* dy) const {
-    for (int q = 0; q < w_; q += 4)
+    for (int q = 0; q < lanes_; q += 4)
       sums(y + q, dy + q);
   }
   [[gnu::always_inline]] void sums(const double* y, double* dy) const {
-    const int tau = (n_ + m_) * w_, a = tau + w_, b = a + w_;
+    const int tau = (n_ + m_) * lanes_, a = tau + lanes_, b = a + lanes_;
     Lanes dot(0.0), squared(0.0);
     for (int i = 0; i < m_; ++i) {
-      const Lanes w = Lanes::load(y + (n_ + i) * w_), dw = Lanes::load(dy + (n_ + i) * w_);
+      const Lanes w = Lanes::load(y + (n_ + i) * lanes_), dw = Lanes::load(dy + (n_ + i) * lanes_);
       dot += w * dw;
       squared += w * w;
     }
@@ -71,14 +53,14 @@ private:
     for (int l = 0; l < Lanes::kWidth; ++l)
       dy[b + l] = t[l] > 0 ? rate[l] : 0;
   }
-  const LaneKernel& kernel_;
-  int n_, m_, w_;
+  int n_, m_;
 };
 
 } // namespace
 
-bool megnoRunsOnLanes(const std::vector<const Model*>& models) {
-  return laneKernelFor(models) != nullptr;
+bool megnoRunsOnLanes(const std::vector<const Model*>& models, const IntegratorFactory& makeIntegrator) {
+  const auto kernel = laneKernelFor(models);
+  return kernel && makeIntegrator()->stepLanesAlone(kernel->width());
 }
 
 std::vector<MegnoLaneResult> megnoOnLanes(const std::vector<const Model*>& models,
@@ -131,6 +113,8 @@ std::vector<MegnoLaneResult> megnoOnLanes(const std::vector<const Model*>& model
     const double target = t + std::min(s.interval, s.maxTime - t);
     try {
       auto integ = makeIntegrator();
+      if (!integ->stepLanesAlone(width))
+        throw std::logic_error("megnoOnLanes: the method does not step lanes as alone");
       integ->controlBy(n * width); // the orbits' components alone (as MegnoRun: x, not w)
       integ->start(system, t, y);
       while (integ->time() < target) {

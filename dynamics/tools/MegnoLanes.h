@@ -19,8 +19,9 @@
 namespace rv {
 
 /// Whether megnoOnLanes can run orbits of these models (one per orbit) together: flows of one class whose
-/// field runs on lanes with these parameters (laneKernelFor, LaneField.h).
-bool megnoRunsOnLanes(const std::vector<const Model*>& models);
+/// field runs on lanes with these parameters (laneKernelFor, LaneField.h), integrated by a method that steps
+/// each lane as alone (Integrator::stepLanesAlone: rk4, everhart at a fixed step).
+bool megnoRunsOnLanes(const std::vector<const Model*>& models, const IntegratorFactory& makeIntegrator);
 
 struct MegnoLaneResult {
   MegnoEstimate last;         ///< at the end of the time

@@ -517,7 +517,8 @@ const ParameterTable& sweepOptionsTable() {
        .description =
            "0: points on SIMD lanes, as many at once as the CPU's registers take (8 with AVX-512, else 4; "
            "`rollviz info` names the width), where the quantity can (megno and lyapunov numbers over a "
-           "flow's initial points and parameters with rk4, bit for bit the points one at a time); 4 or 8: "
+           "flow's initial points and parameters with rk4 or everhart at a fixed step, bit for bit the "
+           "points one at a time); 4 or 8: "
            "that many; 1: one point at a time",
        .integer = true},
       {.id = "refine",

@@ -10,31 +10,31 @@
 
 namespace rv::test {
 
-/// A kernel's f and J w at random states equal, lane by lane, each lane's model alone (Model::tangentRhs),
-/// bit for bit; `lanes` holds the model of each of the kernel's lanes.
+/// A kernel's f and J V (k tangent vectors) at random states equal, lane by lane, each lane's model alone
+/// (Model::tangentRhs), bit for bit; `lanes` holds the model of each of the kernel's lanes.
 inline void expectKernelRhsIsEachModelAlone(const LaneKernel& kernel, const std::vector<const Model*>& lanes,
-                                            std::mt19937& random, const std::string& what) {
+                                            std::mt19937& random, const std::string& what, int k = 1) {
   std::uniform_real_distribution<double> u(-2, 2);
   const int width = kernel.width(), n = lanes.front()->dimension(), m = lanes.front()->info().coreDimension;
   ASSERT_EQ(static_cast<int>(lanes.size()), width) << what;
-  std::vector<double> y(static_cast<std::size_t>(width * (n + m))), out(y.size());
+  std::vector<double> y(static_cast<std::size_t>(width * (n + m * k))), out(y.size());
   for (double& v : y)
     v = u(random);
-  kernel.tangentRhs(y.data(), out.data());
+  ASSERT_TRUE(kernel.tangentRhs(y.data(), k, out.data())) << what << ", k = " << k;
   const auto at = [width](int component, int lane) {
     return static_cast<std::size_t>(component * width + lane);
   };
   for (int l = 0; l < width; ++l) {
-    Eigen::VectorXd x(n), w(m), dx(n), dw(m);
+    Eigen::VectorXd x(n), V(m * k), dx(n), dV(m * k);
     for (int c = 0; c < n; ++c)
       x[c] = y[at(c, l)];
-    for (int i = 0; i < m; ++i)
-      w[i] = y[at(n + i, l)];
-    lanes[static_cast<std::size_t>(l)]->tangentRhs(x.data(), w.data(), 1, dx.data(), dw.data());
+    for (int i = 0; i < m * k; ++i)
+      V[i] = y[at(n + i, l)];
+    lanes[static_cast<std::size_t>(l)]->tangentRhs(x.data(), V.data(), k, dx.data(), dV.data());
     for (int c = 0; c < n; ++c)
-      EXPECT_EQ(out[at(c, l)], dx[c]) << what << ", lane " << l << " f" << c;
-    for (int i = 0; i < m; ++i)
-      EXPECT_EQ(out[at(n + i, l)], dw[i]) << what << ", lane " << l << " Jw" << i;
+      EXPECT_EQ(out[at(c, l)], dx[c]) << what << ", k = " << k << ", lane " << l << " f" << c;
+    for (int i = 0; i < m * k; ++i)
+      EXPECT_EQ(out[at(n + i, l)], dV[i]) << what << ", k = " << k << ", lane " << l << " JV" << i;
   }
 }
 

@@ -3,12 +3,17 @@
 // tangent right-hand side and fused RK4 bit for bit; four orbits at four values of rho give each the scalar
 // run's exponents bit for bit (an interval that is not a whole number of steps, taken alone, included); runs
 // that converge early stop as alone; an orbit that blows up fails as it fails alone; what cannot go on lanes
-// (the perturbed method, another integrator, too many exponents, lanes of two classes) says so.
+// (the perturbed method, another integrator, too many exponents, lanes of two classes) says so. The
+// rattleback (ellipsoid_on_plane, Coefficients of the body and its surface) on lanes: its kernel equals each
+// model alone, and everhart at a fixed step (each lane's corrector converging on its own) gives each of eight
+// (b2, psi) the scalar run's six exponents bit for bit.
 #include "dynamics/tools/LyapunovLanes.h"
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/LaneField.h"
+#include "dynamics/integrators/Everhart.h"
 #include "dynamics/integrators/Merson.h"
 #include "dynamics/integrators/Rk4.h"
+#include "dynamics/models/BodyState.h"
 #include "tests/dynamics/LaneTestSupport.h"
 #include "tests/dynamics/TestSupport.h"
 
@@ -108,6 +113,7 @@ TEST(LyapunovLanes, AnOrbitThatBlowsUpFailsAsAloneAndTheOthersKeepTheirExponents
   // Henon-Heiles above the escape energy 1/6: an orbit leaving through a saddle runs off to infinity
   const auto model = test::makeModel("henon_heiles", {});
   const IntegratorFactory rk4 = [] { return std::make_unique<Rk4>(0.01); };
+  const IntegratorFactory everhart = [] { return std::make_unique<Everhart>(0.02, 15, 12); };
   LyapunovSettings s;
   s.maxTime = 40, s.interval = 1;
   const auto state = [](double e, double y, double py) {
@@ -116,32 +122,34 @@ TEST(LyapunovLanes, AnOrbitThatBlowsUpFailsAsAloneAndTheOthersKeepTheirExponents
     return x;
   };
   const std::vector<Eigen::VectorXd> x0s{state(0.1, 0.1, 0.1), state(0.3, 0.6, 0.3), state(0.1, -0.2, 0.05)};
-  const auto lanes = lyapunovOnLanes(std::vector<const Model*>(3, model.get()), rk4, x0s, s);
-  ASSERT_TRUE(lanes.has_value());
-  int failed = 0;
-  for (std::size_t l = 0; l < x0s.size(); ++l) {
-    std::string aloneFailure;
-    LyapunovResult alone;
-    try {
-      alone = lyapunovExponents(*model, rk4, x0s[l], s);
-    } catch (const ComputationError& e) {
-      aloneFailure = e.what();
-    }
-    std::string laneFailure;
-    if ((*lanes)[l].failure) {
+  for (const auto& method : {rk4, everhart}) {
+    const auto lanes = lyapunovOnLanes(std::vector<const Model*>(3, model.get()), method, x0s, s);
+    ASSERT_TRUE(lanes.has_value());
+    int failed = 0;
+    for (std::size_t l = 0; l < x0s.size(); ++l) {
+      std::string aloneFailure;
+      LyapunovResult alone;
       try {
-        std::rethrow_exception((*lanes)[l].failure);
+        alone = lyapunovExponents(*model, method, x0s[l], s);
       } catch (const ComputationError& e) {
-        laneFailure = e.what();
+        aloneFailure = e.what();
+      }
+      std::string laneFailure;
+      if ((*lanes)[l].failure) {
+        try {
+          std::rethrow_exception((*lanes)[l].failure);
+        } catch (const ComputationError& e) {
+          laneFailure = e.what();
+        }
+      }
+      EXPECT_EQ(laneFailure, aloneFailure) << l;
+      failed += aloneFailure.empty() ? 0 : 1;
+      if (aloneFailure.empty()) {
+        EXPECT_EQ((*lanes)[l].result.last.exponents, alone.last.exponents) << l;
       }
     }
-    EXPECT_EQ(laneFailure, aloneFailure) << l;
-    failed += aloneFailure.empty() ? 0 : 1;
-    if (aloneFailure.empty()) {
-      EXPECT_EQ((*lanes)[l].result.last.exponents, alone.last.exponents) << l;
-    }
+    EXPECT_EQ(failed, 1) << "the orbit above the escape energy should blow up, the others not";
   }
-  EXPECT_EQ(failed, 1) << "the orbit above the escape energy should blow up, the others not";
 }
 
 TEST(LyapunovLanes, WhatCannotGoOnLanesSaysSo) {
@@ -150,14 +158,73 @@ TEST(LyapunovLanes, WhatCannotGoOnLanesSaysSo) {
   const IntegratorFactory rk4 = [] { return std::make_unique<Rk4>(0.01); };
   const IntegratorFactory merson = [] { return std::make_unique<Merson>(0.01, 1e-9, 1e-12, 1.0); };
   LyapunovSettings s;
+  const IntegratorFactory everhart = [] { return std::make_unique<Everhart>(0.01, 15, 12); };
+  const IntegratorFactory adaptive = [] { return std::make_unique<Everhart>(0.01, 15, 12, 1e-9); };
   EXPECT_TRUE(lyapunovRunsOnLanes(ps, rk4, s));
-  EXPECT_FALSE(lyapunovRunsOnLanes(ps, merson, s)) << "no fused path: each run alone";
+  EXPECT_TRUE(lyapunovRunsOnLanes(ps, everhart, s));
+  EXPECT_FALSE(lyapunovRunsOnLanes(ps, merson, s)) << "an error control: each run alone";
+  EXPECT_FALSE(lyapunovRunsOnLanes(ps, adaptive, s)) << "an adaptive step: each run alone";
   s.mode = LyapunovSettings::Mode::Perturbed;
   EXPECT_FALSE(lyapunovRunsOnLanes(ps, rk4, s));
   const auto hh = test::makeModel("henon_heiles", {});
   EXPECT_FALSE(lyapunovRunsOnLanes({models[0].get(), hh.get()}, rk4, {})) << "two classes";
   const auto map = test::makeModel("standard_map", {});
   EXPECT_FALSE(lyapunovRunsOnLanes({map.get()}, rk4, {})) << "a map";
+}
+
+// rattlebacks of eight shapes and turns (b2, psi): the sweep ellipsoid_lyapunov.json's points
+std::vector<std::unique_ptr<Model>> rattlebacks() {
+  std::vector<std::unique_ptr<Model>> models;
+  for (int l = 0; l < 8; ++l)
+    models.push_back(
+        test::makeModel("ellipsoid_on_plane", {{"b2", 0.3 + 0.12 * l}, {"psi", -0.3 + 0.08 * l}}));
+  return models;
+}
+
+TEST(LyapunovLanes, RattlebackKernelsWithAModelPerLaneEqualEachModelAloneBitForBit) {
+  const auto all = rattlebacks();
+  const auto every = pointers(all);
+  std::mt19937 random(5);
+  for (long count : {4, 8}) {
+    const std::vector<const Model*> models(every.begin(), every.begin() + count);
+    const auto kernel = laneKernelFor(models);
+    ASSERT_NE(kernel, nullptr);
+    for (int k : {1, 3, 6})
+      test::expectKernelRhsIsEachModelAlone(*kernel, models, random, std::to_string(count) + " rattlebacks",
+                                            k);
+  }
+}
+
+TEST(LyapunovLanes, RattlebackExponentsWithEverhartAreTheScalarRunsBitForBit) {
+  const auto models = rattlebacks();
+  const IntegratorFactory everhart = [] { return std::make_unique<Everhart>(0.01, 15, 12); };
+  LyapunovSettings s; // all six exponents, as the sweep's scene asks
+  s.maxTime = 6.5;    // a last interval of half the others
+  s.interval = 1;
+  std::vector<Eigen::VectorXd> x0s;
+  for (int l = 0; l < 8; ++l)
+    x0s.push_back(body_state::fromMomentumAndVertical(Eigen::Vector3d(0.01 * l, 0, -0.3),
+                                                      Eigen::Vector3d(0, 0.02 + 0.01 * l, 1).normalized()));
+  ASSERT_TRUE(lyapunovRunsOnLanes(pointers(models), everhart, s));
+  const auto lanes = lyapunovOnLanes(pointers(models), everhart, x0s, s);
+  ASSERT_TRUE(lanes.has_value());
+  ASSERT_EQ(lanes->size(), 8u);
+  for (std::size_t l = 0; l < 8; ++l) {
+    ASSERT_FALSE((*lanes)[l].failure) << l;
+    const LyapunovResult alone = lyapunovExponents(*models[l], everhart, x0s[l], s);
+    ASSERT_EQ(alone.last.exponents.size(), 6u);
+    EXPECT_EQ((*lanes)[l].result.last.exponents, alone.last.exponents) << "rattleback " << l;
+    EXPECT_EQ((*lanes)[l].result.last.time, alone.last.time) << l;
+  }
+  // three orbits, the fourth lane repeating the last
+  const std::vector<const Model*> three{models[1].get(), models[4].get(), models[6].get()};
+  const std::vector<Eigen::VectorXd> threeStarts{x0s[1], x0s[4], x0s[6]};
+  const auto some = lyapunovOnLanes(three, everhart, threeStarts, s);
+  ASSERT_TRUE(some.has_value());
+  for (std::size_t l = 0; l < 3; ++l)
+    EXPECT_EQ((*some)[l].result.last.exponents,
+              lyapunovExponents(*three[l], everhart, threeStarts[l], s).last.exponents)
+        << l;
 }
 
 } // namespace
