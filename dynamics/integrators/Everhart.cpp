@@ -267,7 +267,7 @@ template <int N> double Everhart::correct(double h) {
   }
   using Nodes = Eigen::Matrix<double, Eigen::Dynamic, N>;
   const Eigen::Map<const Nodes> nodes(F_.data(), F_.rows(), N);
-  double previousChange = 0, changeBefore = 0;
+  Convergence rule;
   const Eigen::Index c = controlled(F_.rows()); // the components whose convergence counts (controlBy)
   lastIterations_ = 0;
   for (int it = 0; it < maxIterations_; ++it) {
@@ -282,24 +282,7 @@ template <int N> double Everhart::correct(double h) {
       scale = std::max(scale, f1_.head(c).cwiseAbs().maxCoeff());
       F_.col(j) = f1_;
     }
-    // Converged when nothing changes any more or the changes stop shrinking (rounding is all that is left),
-    // as IAS15 iterates (its test on the last coefficient amplifies the nodes' changes ~1e4-fold). Stopping
-    // at a change extrapolated below rounding instead left a residual pointing the same way every step, which
-    // compensated summation then kept: the energy drifted linearly (an oscillator's q^2 + p^2 by ~1e-12 over
-    // 2e5 steps; ~25 % fewer evaluations). The contraction from two sweeps could also fake convergence (one
-    // step in ~1e5 stopped after two sweeps, a jump of 1.5e-13).
-    const double relative = scale > 0 ? change / scale : change;
-    if (relative == 0 || (it > 2 && relative >= previousChange)) break;
-    // Where the sweeps contract fast (short steps) the last one or two only chase rounding: stop once this
-    // change times the contraction seen over the two sweeps before leaves less than 1e-18 -- 100 times below
-    // the old extrapolated rule, no drift over 2e6 steps (h = 0.1 and 0.5) and 20-40 % fewer sweeps at
-    // h <= 0.1 -- unless the change dipped far below what that contraction predicts (chance, not convergence)
-    if (it >= 2 && changeBefore > 0) {
-      const double contraction = std::min(1.0, previousChange / changeBefore);
-      if (relative * contraction < 1e-18 && relative >= 0.1 * contraction * previousChange) break;
-    }
-    changeBefore = previousChange;
-    previousChange = relative;
+    if (rule.reached(it, scale > 0 ? change / scale : change)) break;
   }
   if (tolerance_ <= 0) return 0;
   const Eigen::Matrix<double, N, 1> w = leading_;
@@ -307,6 +290,33 @@ template <int N> double Everhart::correct(double h) {
   const double scale = nodes.topRows(c).cwiseAbs().maxCoeff();
   const double last = y_.head(c).cwiseAbs().maxCoeff();
   return scale > 0 ? last / scale : last;
+}
+
+// Converged when nothing changes any more or the changes stop shrinking (rounding is all that is left), as
+// IAS15 iterates (its test on the last coefficient amplifies the nodes' changes ~1e4-fold). Stopping at a
+// change extrapolated below rounding instead left a residual pointing the same way every step, which
+// compensated summation then kept: the energy drifted linearly (an oscillator's q^2 + p^2 by ~1e-12 over 2e5
+// steps; ~25 % fewer evaluations). The contraction from two sweeps could also fake convergence (one step in
+// ~1e5 stopped after two sweeps, a jump of 1.5e-13).
+bool Everhart::Convergence::reached(int sweep, double relative) {
+  if (relative == 0 || (sweep > 2 && relative >= previousChange)) {
+    converged = true;
+    return true;
+  }
+  // Where the sweeps contract fast (short steps) the last one or two only chase rounding: stop once this
+  // change times the contraction seen over the two sweeps before leaves less than 1e-18 -- 100 times below
+  // the old extrapolated rule, no drift over 2e6 steps (h = 0.1 and 0.5) and 20-40 % fewer sweeps at h <= 0.1
+  // -- unless the change dipped far below what that contraction predicts (chance, not convergence)
+  if (sweep >= 2 && changeBefore > 0) {
+    const double contraction = std::min(1.0, previousChange / changeBefore);
+    if (relative * contraction < 1e-18 && relative >= 0.1 * contraction * previousChange) {
+      converged = true;
+      return true;
+    }
+  }
+  changeBefore = previousChange;
+  previousChange = relative;
+  return false;
 }
 
 // y_ = x_ + h sum_l A(j, l) F_l, column by column: every component summed in the same order whatever the
@@ -341,7 +351,7 @@ template <int N> void Everhart::correctLanes(double h) {
       for (Eigen::Index c = 0; c < components; ++c)
         for (Eigen::Index l = 0; l < width; ++l) {
           LaneCorrector& lane = laneCorrectors_[static_cast<std::size_t>(l)];
-          if (lane.converged) continue;
+          if (lane.rule.converged) continue;
           const Eigen::Index r = c * width + l;
           if (c < controlledComponents) {
             lane.change = std::max(lane.change, std::abs(f1_[r] - F_(r, j)));
@@ -350,22 +360,10 @@ template <int N> void Everhart::correctLanes(double h) {
           F_(r, j) = f1_[r];
         }
     }
-    for (auto& lane : laneCorrectors_) { // correct<N>'s stopping rules, lane by lane
-      if (lane.converged) continue;
-      const double relative = lane.scale > 0 ? lane.change / lane.scale : lane.change;
-      bool stop = relative == 0 || (it > 2 && relative >= lane.previousChange);
-      if (!stop && it >= 2 && lane.changeBefore > 0) {
-        const double contraction = std::min(1.0, lane.previousChange / lane.changeBefore);
-        stop = relative * contraction < 1e-18 && relative >= 0.1 * contraction * lane.previousChange;
-      }
-      if (stop) {
-        lane.converged = true;
+    for (auto& lane : laneCorrectors_) // correct<N>'s stopping rule, lane by lane
+      if (!lane.rule.converged &&
+          lane.rule.reached(it, lane.scale > 0 ? lane.change / lane.scale : lane.change))
         --open;
-      } else {
-        lane.changeBefore = lane.previousChange;
-        lane.previousChange = relative;
-      }
-    }
   }
 }
 

@@ -62,10 +62,17 @@ private:
   double h_, tolerance_;
   int n_, maxIterations_, lastIterations_ = 0;
   int lanes_ = 1; ///< orbits stacked component-major (stepLanesAlone), each converging on its own
-  /// each lane's corrector: the last two changes and whether it has converged (correctLanes)
-  struct LaneCorrector {
-    double change = 0, scale = 0, previousChange = 0, changeBefore = 0;
+  /// The corrector's stopping rule for one orbit: the changes of the sweeps so far.
+  struct Convergence {
+    double previousChange = 0, changeBefore = 0;
     bool converged = false;
+    /// Whether sweep `sweep`, which changed the nodes by `relative`, leaves only rounding (remembered).
+    bool reached(int sweep, double relative);
+  };
+  /// each lane's corrector (correctLanes): its rule and this sweep's change and scale
+  struct LaneCorrector {
+    Convergence rule;
+    double change = 0, scale = 0;
   };
   std::vector<LaneCorrector> laneCorrectors_;
   long rejected_ = 0;

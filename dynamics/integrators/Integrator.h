@@ -30,6 +30,24 @@ public:
   /// Reads what save() wrote; throws InputError when the snapshot does not fit this integrator.
   virtual void restore(Snapshot& s);
 
+  /// Steps until time() reaches or passes t in the direction of integration, then writes the state at t into
+  /// `out` (the step's end where it lands on t, else the dense output). False, writing nothing, when
+  /// `stopRequested()` is true before a step.
+  template <class Stop> bool advanceTo(double t, Eigen::VectorXd& out, Stop&& stopRequested) {
+    while (direction_ * (t_ - t) < 0) {
+      if (stopRequested()) return false;
+      step();
+    }
+    if (t_ == t)
+      out = x_;
+    else
+      interpolate(t, out);
+    return true;
+  }
+  void advanceTo(double t, Eigen::VectorXd& out) {
+    advanceTo(t, out, [] { return false; });
+  }
+
   /// Whether the step never changes (what the Fourier spectrum needs).
   virtual bool fixedStep() const { return false; }
   /// Steps are controlled (error estimates, a corrector's convergence) by the first `components` of the state

@@ -5,21 +5,6 @@
 
 namespace rv {
 
-namespace {
-
-// the state at t, at or past the integrator's current time in its direction
-void stateAt(Integrator& integrator, double t, Eigen::VectorXd& x) {
-  const int dir = integrator.direction();
-  while (dir * (integrator.time() - t) < 0)
-    integrator.step();
-  if (t == integrator.time())
-    x = integrator.state();
-  else
-    integrator.interpolate(t, x);
-}
-
-} // namespace
-
 bool sampleUniform(Integrator& integrator, double every, long count,
                    const std::function<bool(double, const Eigen::VectorXd&)>& visit) {
   const double t0 = integrator.time();
@@ -27,7 +12,7 @@ bool sampleUniform(Integrator& integrator, double every, long count,
   Eigen::VectorXd x(integrator.state().size());
   for (long k = 0; k < count; ++k) {
     const double t = t0 + dir * static_cast<double>(k) * every;
-    stateAt(integrator, t, x);
+    integrator.advanceTo(t, x);
     if (!visit(t, x)) return false;
   }
   return true;
@@ -46,7 +31,7 @@ bool sampleAt(Integrator& integrator, const std::vector<double>& times,
   }
   Eigen::VectorXd x(integrator.state().size());
   for (const double t : times) {
-    stateAt(integrator, t, x);
+    integrator.advanceTo(t, x);
     if (!visit(t, x)) return false;
   }
   return true;

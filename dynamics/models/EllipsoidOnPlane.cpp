@@ -84,10 +84,10 @@ RigidBodyConstants ellipsoidConstants(const ParameterValues& p) {
 } // namespace
 
 EllipsoidOnPlane::EllipsoidOnPlane(const ParameterValues& p)
-    : RigidBodyOnPlane(staticInfo(), p, ellipsoidConstants(p)),
-      coefficients_{.body = body_,
-                    .surface = {.b2 = {p["b1"] * p["b1"], p["b2"] * p["b2"], p["b3"] * p["b3"]},
-                                .a = {p["a1"], p["a2"], p["a3"]}}} {
+    : RigidBodyOnPlane(staticInfo(), p, ellipsoidConstants(p)), surface_{.b2 = {p["b1"] * p["b1"],
+                                                                                p["b2"] * p["b2"],
+                                                                                p["b3"] * p["b3"]},
+                                                                         .a = {p["a1"], p["a2"], p["a3"]}} {
   if (!((geometricCentre().array() / semiAxes().array()).matrix().norm() < 1))
     throw InputError("a1..a3: the centre of mass must lie inside the ellipsoid");
   addRigidBodyObservables();

@@ -36,14 +36,14 @@ public:
     RigidBodyCoefficients<T> body;
     Surface<T> surface;
   };
-  const Coefficients<double>& coefficients() const { return coefficients_; }
+  Coefficients<double> coefficients() const { return {body(), surface_}; }
+  const Surface<double>& surface() const { return surface_; }
 
   template <class S> V3<S> contact(const V3<S>& g) const {
-    return coefficients_.surface.template contact<S>(ThreeVector<S>::from(g)).eigen();
+    return surface_.template contact<S>(ThreeVector<S>::from(g)).eigen();
   }
   template <class S> V3<S> contactRate(const V3<S>& g, const V3<S>& dg) const {
-    return coefficients_.surface.template contactRate<S>(ThreeVector<S>::from(g), ThreeVector<S>::from(dg))
-        .eigen();
+    return surface_.template contactRate<S>(ThreeVector<S>::from(g), ThreeVector<S>::from(dg)).eigen();
   }
   bool touches(const Eigen::Vector3d&) const { return true; }
   std::optional<BodyGeometry> geometry() const override {
@@ -52,16 +52,14 @@ public:
 
   /// Semi-axes and the geometric centre seen from the centre of mass (-a), for drawing.
   Eigen::Vector3d semiAxes() const {
-    return Eigen::Map<const Eigen::Vector3d>(coefficients_.surface.b2.data()).cwiseSqrt();
+    return Eigen::Map<const Eigen::Vector3d>(surface_.b2.data()).cwiseSqrt();
   }
-  Eigen::Vector3d geometricCentre() const {
-    return -Eigen::Map<const Eigen::Vector3d>(coefficients_.surface.a.data());
-  }
+  Eigen::Vector3d geometricCentre() const { return -Eigen::Map<const Eigen::Vector3d>(surface_.a.data()); }
   /// (9)
   static Eigen::Matrix3d eulerRotation(double phi, double theta, double psi);
 
 private:
-  Coefficients<double> coefficients_;
+  Surface<double> surface_;
 };
 
 } // namespace rv

@@ -35,8 +35,8 @@ template <class T> struct RigidBodyCoefficients {
 
 /// The equations, generic in the surface (Derived provides contact<S>(gamma) and contactRate<S>(gamma,
 /// dgamma) on Eigen vectors). A Derived whose surface is a `Surface<T>` of coefficients (EllipsoidOnPlane)
-/// declares `Coefficients<T> {RigidBodyCoefficients<T> body; Surface<T> surface;}` and `coefficients()`; its
-/// field then runs on lanes.
+/// gives it by `surface()` and declares `Coefficients<T> {RigidBodyCoefficients<T> body; Surface<T>
+/// surface;}` with `coefficients()`: its field then runs on lanes.
 template <class Derived> class RigidBodyOnPlane : public ModelWithField<Derived, 16, 6> {
 public:
   using Base = ModelWithField<Derived, 16, 6>;
@@ -44,7 +44,7 @@ public:
   template <class S> using V3 = Eigen::Matrix<S, 3, 1>;
 
   RigidBodyOnPlane(const ModelInfo& info, const ParameterValues& p, const RigidBodyConstants& c)
-      : Base(info, p), c_(c) {
+      : Base(info, p) {
     for (int k = 0; k < 9; ++k) {
       body_.inertia[static_cast<std::size_t>(k)] = c.inertia(k % 3, k / 3);
       body_.field[static_cast<std::size_t>(k)] = c.field(k % 3, k / 3);
@@ -102,8 +102,8 @@ public:
     dx[15] = sqrt(dot(dr, dr));
   }
   template <class S> void field(const Vec<S>& x, Vec<S>& dx) const {
-    if constexpr (requires { typename Derived::template Coefficients<double>; })
-      field(self().coefficients(), x, dx);
+    if constexpr (requires(const Derived& d) { d.surface(); })
+      equations<S>(body_, self().surface(), x, dx);
     else
       equations<S>(body_, EigenSurface{self()}, x, dx);
   }
@@ -128,7 +128,8 @@ public:
   /// -m g (r, gamma) + U(gamma).
   double potential(const Eigen::Vector3d& g) const {
     const Eigen::Vector3d r = self().template contact<double>(g);
-    return -c_.mass * c_.gravity * r.dot(g) + 0.5 * g.dot(c_.field * g);
+    return -body_.mass * body_.gravity * r.dot(g) +
+           0.5 * g.dot(Eigen::Map<const Eigen::Matrix3d>(body_.field.data()) * g);
   }
 
   std::optional<BodyPose> pose(const double* x) const override {
@@ -143,7 +144,14 @@ public:
     return p;
   }
 
-  const RigidBodyConstants& constants() const { return c_; }
+  RigidBodyConstants constants() const {
+    return {.inertia = Eigen::Map<const Eigen::Matrix3d>(body_.inertia.data()),
+            .mass = body_.mass,
+            .gravity = body_.gravity,
+            .field = Eigen::Map<const Eigen::Matrix3d>(body_.field.data())};
+  }
+  /// The constants as the equations read them.
+  const RigidBodyCoefficients<double>& body() const { return body_; }
 
 protected:
   /// Adds the observables every rigid body on the plane has; call from the leaf constructor.
@@ -159,8 +167,7 @@ public:
                                const std::string& context) const override;
 
 protected:
-  RigidBodyConstants c_;
-  RigidBodyCoefficients<double> body_; ///< c_ as the equations read it
+  RigidBodyCoefficients<double> body_;
 
 private:
   const Derived& self() const { return static_cast<const Derived&>(*this); }

@@ -146,23 +146,6 @@ void orthonormalize(Eigen::MatrixXd& V, Eigen::VectorXd& logs) {
   V = Q;
 }
 
-// advances an integrator to exactly t (interpolating past it) and restarts it there from `out`
-void advanceTo(Integrator& integ, const Model& m, double t, Eigen::VectorXd& out,
-               const ToolControl& control) {
-  const int dir = integ.direction();
-  while (dir * (integ.time() - t) < 0) {
-    if (control.stopRequested()) {
-      out = integ.state();
-      return;
-    }
-    integ.step();
-  }
-  if (integ.time() == t || m.isMap())
-    out = integ.state();
-  else
-    integ.interpolate(t, out);
-}
-
 } // namespace
 
 LyapunovRun::LyapunovRun(const Model& model, IntegratorFactory makeIntegrator, const Eigen::VectorXd& x0,
@@ -245,7 +228,7 @@ bool LyapunovRun::interval(const ToolControl& control) {
         integs_.back()->controlBy(n_);
         integs_.back()->start(*tangent_, t_, state_);
       }
-      advanceTo(*integs_[0], *tangent_, t_ + step, state_, control);
+      integs_[0]->advanceTo(t_ + step, state_, [&] { return control.stopRequested(); });
     }
     if (control.stopRequested()) {
       startAll(t_);
@@ -255,7 +238,7 @@ bool LyapunovRun::interval(const ToolControl& control) {
     for (;;) { // cut the interval short while a perturbation grows beyond its maximum
       std::vector<Eigen::VectorXd> ends(k_ + 1);
       for (int j = 0; j <= k_; ++j)
-        advanceTo(*integs_[j], model_, t_ + step, ends[j], control);
+        integs_[j]->advanceTo(t_ + step, ends[j], [&] { return control.stopRequested(); });
       if (control.stopRequested()) {
         startAll(t_);
         return false;

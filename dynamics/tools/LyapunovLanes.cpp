@@ -27,20 +27,11 @@ std::optional<LaneRuns> laneRuns(const std::vector<const Model*>& models, const 
   if (!r.kernel) return std::nullopt;
   for (std::size_t l = 0; l < x0s.size(); ++l)
     r.runs.push_back(std::make_unique<LyapunovRun>(*models[l], make, x0s[l], s));
-  LyapunovRun& first = *r.runs.front();
-  const int k = first.exponentCount();
-  r.fused = first.fusedStepSize() > 0;
-  if (r.fused) {
-    std::vector<double> probe(1);
-    if (!r.kernel->tangentRk4(probe.data(), k, 0, 0)) return std::nullopt; // more exponents than it takes
-    return r;
-  }
-  // a method that steps each lane as alone, and a kernel with k vectors (its answer at a zero state)
-  if (!make()->stepLanesAlone(r.kernel->width())) return std::nullopt;
-  std::vector<double> zero(static_cast<std::size_t>(r.kernel->width()) *
-                           static_cast<std::size_t>(first.tangentState().size()));
-  std::vector<double> out(zero.size());
-  if (!r.kernel->tangentRhs(zero.data(), k, out.data())) return std::nullopt;
+  std::vector<double> probe(1); // the kernel's fixed counts of vectors (the same for tangentRhs)
+  if (!r.kernel->tangentRk4(probe.data(), r.runs.front()->exponentCount(), 0, 0)) return std::nullopt;
+  r.fused = r.runs.front()->fusedStepSize() > 0;
+  // else a method that steps each lane as alone
+  if (!r.fused && !make()->stepLanesAlone(r.kernel->width())) return std::nullopt;
   return r;
 }
 
@@ -129,14 +120,7 @@ std::optional<std::vector<LyapunovLaneResult>> lyapunovOnLanes(const std::vector
       Eigen::VectorXd state =
           Eigen::Map<const Eigen::VectorXd>(y.data(), static_cast<Eigen::Index>(y.size()));
       integ->start(stacked, lead.time(), state);
-      while (integ->time() < target) {
-        if (control.stopRequested()) return false;
-        integ->step();
-      }
-      if (integ->time() == target)
-        state = integ->state();
-      else
-        integ->interpolate(target, state);
+      if (!integ->advanceTo(target, state, [&] { return control.stopRequested(); })) return false;
       std::copy(state.begin(), state.end(), y.begin());
     } catch (const ComputationError&) {
       std::fill(blewUp.begin(), blewUp.end(), true);

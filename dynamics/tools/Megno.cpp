@@ -118,17 +118,10 @@ void MegnoRun::start() {
 // a flow from t_ over one interval; the tangent vector is scaled back to unit length at its end
 bool MegnoRun::flowInterval(const ToolControl& control) {
   const double target = t_ + std::min(s_.interval, s_.maxTime - t_);
-  while (integ_->time() < target) {
-    if (control.stopRequested()) {
-      start(); // back to the interval's start: a continued run is the same as an uninterrupted one
-      return false;
-    }
-    integ_->step();
+  if (!integ_->advanceTo(target, state_, [&] { return control.stopRequested(); })) {
+    start(); // back to the interval's start: a continued run is the same as an uninterrupted one
+    return false;
   }
-  if (integ_->time() == target)
-    state_ = integ_->state();
-  else
-    integ_->interpolate(target, state_);
   t_ = target;
   sumA_ = state_[n_ + m_ + 1], sumB_ = state_[n_ + m_ + 2];
   const double norm = tangentLength(state_.data() + n_, m_);

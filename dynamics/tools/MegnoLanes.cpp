@@ -117,14 +117,7 @@ std::vector<MegnoLaneResult> megnoOnLanes(const std::vector<const Model*>& model
         throw std::logic_error("megnoOnLanes: the method does not step lanes as alone");
       integ->controlBy(n * width); // the orbits' components alone (as MegnoRun: x, not w)
       integ->start(system, t, y);
-      while (integ->time() < target) {
-        if (control.stopRequested()) return {};
-        integ->step();
-      }
-      if (integ->time() == target)
-        y = integ->state();
-      else
-        integ->interpolate(target, y);
+      if (!integ->advanceTo(target, y, [&] { return control.stopRequested(); })) return {};
     } catch (const ComputationError&) {
       return alone();
     }
