@@ -172,15 +172,15 @@ private:
       for (int i = 0; i < M; ++i)
         fa[i].d[c].store(out + (N + c * M + i) * W);
   }
-  // fusedRk4<K> on W orbits: the same steps element by element (rk4StepOnArrays)
-  template <int W, int K, class C>
-  EIGEN_ALWAYS_INLINE void laneRk4(const C& coefficients, double* y, double h, long steps) const {
+  // fusedRk4<K> on W orbits with the lanes' f and J V `rhs`: the same steps element by element
+  // (rk4StepOnArrays)
+  template <int W, int K, class Rhs>
+  EIGEN_ALWAYS_INLINE static void laneRk4(const Rhs& rhs, double* y, double h, long steps) {
     constexpr long size = static_cast<long>(N + M * K) * W;
     std::vector<double> stages(static_cast<std::size_t>(7 * size)); // y0, f0, k2, k3, k4, tmp, y1
     double *y0 = stages.data(), *f0 = y0 + size, *k2 = f0 + size, *k3 = k2 + size, *k4 = k3 + size,
            *tmp = k4 + size, *y1 = tmp + size;
     std::copy(y, y + size, y0);
-    const auto rhs = [&](const double* in, double* out) { laneDirectional<W, K>(coefficients, in, out); };
     for (long s = 0; s < steps; ++s) {
       rhs(y0, f0);
       rk4StepOnArrays<W>(rhs, h, size, y0, f0, k2, k3, k4, tmp, y1);
@@ -219,27 +219,47 @@ private:
 
   private:
     // four lanes in AVX2 (whose target has no FMA), eight in AVX-512 (whose has: the project compiles with
-    // -ffp-contract=off, so no product and sum are fused), else SSE2 pairs
-    template <int K> [[gnu::target("avx2"), gnu::flatten]] void rhsAvx2(const double* x, double* out) const {
+    // -ffp-contract=off, so no product and sum are fused), else SSE2 pairs. The field is compiled once per
+    // target and count of vectors, into these (noinline): the RK4 loops below call it for each stage rather
+    // than inline it four times over -- a rolling body's field over jets of 8 lanes is large, and four copies
+    // in each of its RK4 loops made its file take >15 min and 4 GB to compile under ThreadSanitizer. A small
+    // system's field (Lorenz, Henon-Heiles) is inlined into the loops all the same: the call per stage cost
+    // Lorenz's four lanes 27 % (360 -> 264 points/s, bench_sweep SweepLanesLyapunov/4).
+    static constexpr bool kSmallField = N <= 4;
+    template <int K> EIGEN_ALWAYS_INLINE void laneDirectional(const double* x, double* out) const {
       model_.template laneDirectional<W, K>(coefficients_, x, out);
     }
     template <int K>
-    [[gnu::target("avx512f"), gnu::flatten]] void rhsAvx512(const double* x, double* out) const {
+    [[gnu::target("avx2"), gnu::flatten, gnu::noinline]] void rhsAvx2(const double* x, double* out) const {
       model_.template laneDirectional<W, K>(coefficients_, x, out);
     }
-    template <int K> [[gnu::flatten]] void rhsBaseline(const double* x, double* out) const {
+    template <int K>
+    [[gnu::target("avx512f"), gnu::flatten, gnu::noinline]] void rhsAvx512(const double* x,
+                                                                           double* out) const {
+      model_.template laneDirectional<W, K>(coefficients_, x, out);
+    }
+    template <int K> [[gnu::flatten, gnu::noinline]] void rhsBaseline(const double* x, double* out) const {
       model_.template laneDirectional<W, K>(coefficients_, x, out);
     }
     template <int K>
     [[gnu::target("avx2"), gnu::flatten]] void rk4Avx2(double* y, double h, long steps) const {
-      model_.template laneRk4<W, K>(coefficients_, y, h, steps);
+      if constexpr (kSmallField)
+        laneRk4<W, K>([this](const double* in, double* out) { laneDirectional<K>(in, out); }, y, h, steps);
+      else
+        laneRk4<W, K>([this](const double* in, double* out) { rhsAvx2<K>(in, out); }, y, h, steps);
     }
     template <int K>
     [[gnu::target("avx512f"), gnu::flatten]] void rk4Avx512(double* y, double h, long steps) const {
-      model_.template laneRk4<W, K>(coefficients_, y, h, steps);
+      if constexpr (kSmallField)
+        laneRk4<W, K>([this](const double* in, double* out) { laneDirectional<K>(in, out); }, y, h, steps);
+      else
+        laneRk4<W, K>([this](const double* in, double* out) { rhsAvx512<K>(in, out); }, y, h, steps);
     }
     template <int K> [[gnu::flatten]] void rk4Baseline(double* y, double h, long steps) const {
-      model_.template laneRk4<W, K>(coefficients_, y, h, steps);
+      if constexpr (kSmallField)
+        laneRk4<W, K>([this](const double* in, double* out) { laneDirectional<K>(in, out); }, y, h, steps);
+      else
+        laneRk4<W, K>([this](const double* in, double* out) { rhsBaseline<K>(in, out); }, y, h, steps);
     }
     const ModelWithField& model_;
     C coefficients_;
