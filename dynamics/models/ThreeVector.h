@@ -56,9 +56,11 @@ template <class S> struct ThreeVector {
 template <class S> struct ThreeMatrix {
   std::array<S, 9> m;
 
-  [[gnu::always_inline]] S& operator()(int i, int j) { return m[static_cast<std::size_t>(3 * i + j)]; }
+  [[gnu::always_inline]] S& operator()(int i, int j) {
+    return m[3 * static_cast<std::size_t>(i) + static_cast<std::size_t>(j)];
+  }
   [[gnu::always_inline]] const S& operator()(int i, int j) const {
-    return m[static_cast<std::size_t>(3 * i + j)];
+    return m[3 * static_cast<std::size_t>(i) + static_cast<std::size_t>(j)];
   }
   /// A matrix of coefficients T stored column-major (Eigen's order) as S.
   template <class T> [[gnu::always_inline]] static ThreeMatrix of(const std::array<T, 9>& columnMajor) {
