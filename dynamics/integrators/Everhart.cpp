@@ -2,7 +2,10 @@
 
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/Format.h"
+#include "dynamics/integrators/EverhartKernels.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <mutex>
 #include <stdexcept>
@@ -212,7 +215,9 @@ void Everhart::start(const Model& model, double t0, const Eigen::VectorXd& x0, i
   if (d % lanes_ != 0)
     throw std::logic_error("Everhart: a state of " + std::to_string(d) + " components is not " +
                            std::to_string(lanes_) + " lanes");
-  laneCorrectors_.assign(static_cast<std::size_t>(lanes_), LaneCorrector{});
+  const auto lanes = static_cast<std::size_t>(lanes_);
+  laneRules_.assign(lanes, Convergence{});
+  laneChange_.assign(lanes, 0.0), laneScale_.assign(lanes, 0.0), laneOpen_.assign(lanes, 0);
   F_.setZero(d, n_), Fnew_.setZero(d, n_), predicted_.setZero(d, n_), correction_.setZero(d, n_);
   f1_.resize(d), y_.resize(d), sum_.resize(d);
   compensation_.setZero(d);
@@ -323,10 +328,10 @@ bool Everhart::Convergence::reached(int sweep, double relative) {
 // number of components (a matrix product would sum a last odd row in another order than the vectorised ones,
 // so an orbit's rounding would depend on the lanes stacked with it, and on its dimension's parity)
 template <int N> void Everhart::nodeSum(double h, int j) {
-  y_ = F_.col(0) * (h * A_(j, 0));
-  for (int l = 1; l < N; ++l)
-    y_ += F_.col(l) * (h * A_(j, l));
-  y_ += x_;
+  std::array<double, N> coefficients;
+  for (int l = 0; l < N; ++l)
+    coefficients[static_cast<std::size_t>(l)] = h * A_(j, l);
+  everhart::combine(F_.data(), F_.rows(), N, coefficients.data(), x_.data(), y_.data());
 }
 
 // correct<N> on `lanes_` orbits stacked component-major: the same sweeps over all lanes (one evaluation of
@@ -336,34 +341,29 @@ template <int N> void Everhart::nodeSum(double h, int j) {
 template <int N> void Everhart::correctLanes(double h) {
   const Eigen::Index width = lanes_, components = F_.rows() / width;
   const Eigen::Index controlledComponents = controlled(F_.rows()) / width;
-  for (auto& lane : laneCorrectors_)
-    lane = LaneCorrector{};
+  for (auto& rule : laneRules_)
+    rule = Convergence{};
+  std::fill(laneOpen_.begin(), laneOpen_.end(), -1);
   int open = lanes_;
   lastIterations_ = 0;
   for (int it = 0; it < maxIterations_ && open > 0; ++it) {
     ++lastIterations_;
-    for (auto& lane : laneCorrectors_)
-      lane.change = 0, lane.scale = 0;
+    std::fill(laneChange_.begin(), laneChange_.end(), 0.0);
+    std::fill(laneScale_.begin(), laneScale_.end(), 0.0);
     for (int j = 1; j < N; ++j) {
       nodeSum<N>(h, j);
       model_->rhs(y_.data(), f1_.data());
       ++evaluations_;
-      for (Eigen::Index c = 0; c < components; ++c)
-        for (Eigen::Index l = 0; l < width; ++l) {
-          LaneCorrector& lane = laneCorrectors_[static_cast<std::size_t>(l)];
-          if (lane.rule.converged) continue;
-          const Eigen::Index r = c * width + l;
-          if (c < controlledComponents) {
-            lane.change = std::max(lane.change, std::abs(f1_[r] - F_(r, j)));
-            lane.scale = std::max(lane.scale, std::abs(f1_[r]));
-          }
-          F_(r, j) = f1_[r];
-        }
+      everhart::scanLanes(f1_.data(), F_.col(j).data(), components, controlledComponents, lanes_,
+                          laneOpen_.data(), laneChange_.data(), laneScale_.data());
     }
-    for (auto& lane : laneCorrectors_) // correct<N>'s stopping rule, lane by lane
-      if (!lane.rule.converged &&
-          lane.rule.reached(it, lane.scale > 0 ? lane.change / lane.scale : lane.change))
+    for (std::size_t l = 0; l < laneRules_.size(); ++l) { // correct<N>'s stopping rule, lane by lane
+      const double change = laneChange_[l], scale = laneScale_[l];
+      if (laneOpen_[l] != 0 && laneRules_[l].reached(it, scale > 0 ? change / scale : change)) {
+        laneOpen_[l] = 0;
         --open;
+      }
+    }
   }
 }
 
@@ -379,11 +379,8 @@ template <int N> void Everhart::stepWith() {
     if (havePrevious_) {
       const double ratio = h_ / lastStep_;
       if (ratio != lastRatio_) setExtrapolation(ratio);
-      for (int j = 0; j < N; ++j) { // column by column: each component's sum in one order (nodeSum)
-        F_.col(j) = Fnew_.col(0) * extrapolate_(0, j);
-        for (int l = 1; l < N; ++l)
-          F_.col(j) += Fnew_.col(l) * extrapolate_(l, j);
-      }
+      for (int j = 0; j < N; ++j) // column by column: each component's sum in one order (nodeSum)
+        everhart::combine(Fnew_.data(), Fnew_.rows(), N, &extrapolate_(0, j), nullptr, F_.col(j).data());
       predicted_ = F_;
       if (ratio == 1) F_ += correction_;
     } else {
@@ -418,10 +415,7 @@ template <int N> void Everhart::stepWith() {
     // construction. With sum_j b_j F_j instead, the stored b_j summed to 1 + 1.4e-17 and every step moved the
     // state that much too far along its chord: a bias that made the energy drift linearly (Brouwer's law
     // holds for rounding that is random, not for a fixed error of the method's coefficients).
-    sum_ = F_.col(0);
-    for (int j = 1; j < N; ++j)
-      sum_ += b_[j] * (F_.col(j) - F_.col(0));
-    sum_ *= h;
+    everhart::increment(F_.data(), F_.rows(), N, b_.data(), h, sum_.data());
     advanceCompensated(h, sum_, compensation_);
     evaluate(x_, f1_);
     havePrevious_ = true;

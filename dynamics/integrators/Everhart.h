@@ -13,6 +13,7 @@
 #pragma once
 #include "dynamics/integrators/Integrator.h"
 
+#include <cstdint>
 #include <vector>
 
 namespace rv {
@@ -69,12 +70,11 @@ private:
     /// Whether sweep `sweep`, which changed the nodes by `relative`, leaves only rounding (remembered).
     bool reached(int sweep, double relative);
   };
-  /// each lane's corrector (correctLanes): its rule and this sweep's change and scale
-  struct LaneCorrector {
-    Convergence rule;
-    double change = 0, scale = 0;
-  };
-  std::vector<LaneCorrector> laneCorrectors_;
+  // each lane's corrector (correctLanes): its rule, this sweep's change and scale, and whether it is open
+  // (all ones) or converged (zero), as everhart::scanLanes takes them
+  std::vector<Convergence> laneRules_;
+  std::vector<double> laneChange_, laneScale_;
+  std::vector<std::int64_t> laneOpen_;
   long rejected_ = 0;
   bool havePrevious_ = false;
   double lastStep_ = 0;  ///< length of the last step taken

@@ -5,6 +5,7 @@
 #include "dynamics/integrators/Adams.h"
 #include "dynamics/integrators/AdamsKernels.h"
 #include "dynamics/integrators/Everhart.h"
+#include "dynamics/integrators/EverhartKernels.h"
 #include "dynamics/integrators/Merson.h"
 #include "dynamics/integrators/Rk4.h"
 #include "dynamics/integrators/Verner9.h"
@@ -12,8 +13,11 @@
 #include "tests/dynamics/TestSupport.h"
 
 #include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <gtest/gtest.h>
+#include <limits>
 #include <random>
 #include <tuple>
 
@@ -497,6 +501,79 @@ TEST(Adams, TheAvx2KernelsEqualThePortableOnesBitForBit) {
       }
       EXPECT_LT((sum[0] - D.rowwise().sum()).norm(), 1e-14);
     }
+}
+
+// Everhart's passes over its node values run 8 wide (AVX-512), 4 wide (AVX2) or in SSE2 pairs, each
+// component's sum in the order written here: every path gives these plain loops' numbers bit for bit, at
+// every dimension (blocks of 32 and 8 components and single ones), so an orbit's rounding does not depend
+// on the CPU or on the orbits stacked with it.
+TEST(Everhart, ItsPassesGiveThePlainLoopsNumbersOnEveryPath) {
+  using everhart::Path;
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> value(-1, 1);
+  for (const Path path : {Path::widest, Path::avx512, Path::avx2, Path::baseline}) {
+    if (!everhart::available(path)) continue;
+    for (const int n : {2, 8})
+      for (Eigen::Index d = 1; d <= 70; ++d) {
+        const Eigen::MatrixXd F = Eigen::MatrixXd::NullaryExpr(d, n, [&] { return value(random); });
+        const Eigen::VectorXd x = Eigen::VectorXd::NullaryExpr(d, [&] { return value(random); });
+        const Eigen::VectorXd c = Eigen::VectorXd::NullaryExpr(n, [&] { return value(random); });
+        Eigen::VectorXd sum(d), withX(d), step(d), sumExpected(d), withXExpected(d), stepExpected(d);
+        for (Eigen::Index i = 0; i < d; ++i) {
+          double s = F(i, 0) * c[0], e = F(i, 0);
+          for (int l = 1; l < n; ++l) {
+            s = s + F(i, l) * c[l];
+            e = e + c[l] * (F(i, l) - F(i, 0));
+          }
+          sumExpected[i] = s, withXExpected[i] = s + x[i], stepExpected[i] = e * 0.037;
+        }
+        everhart::combine(F.data(), d, n, c.data(), nullptr, sum.data(), path);
+        everhart::combine(F.data(), d, n, c.data(), x.data(), withX.data(), path);
+        everhart::increment(F.data(), d, n, c.data(), 0.037, step.data(), path);
+        EXPECT_EQ(sum, sumExpected) << "d " << d << " n " << n;
+        EXPECT_EQ(withX, withXExpected) << "d " << d << " n " << n;
+        EXPECT_EQ(step, stepExpected) << "d " << d << " n " << n;
+      }
+    // the corrector's scan of stacked orbits: open lanes take the new values and their largest changes,
+    // closed ones keep theirs; a NaN, an infinity and a negative zero count as std::max and std::abs count
+    // them
+    for (const int width : {1, 2, 4, 6, 8, 16})
+      for (const Eigen::Index components : {1, 3, 11}) {
+        const Eigen::Index rows = components * width, controlled = components - components / 3;
+        Eigen::VectorXd f = Eigen::VectorXd::NullaryExpr(rows, [&] { return value(random); });
+        Eigen::VectorXd Fj = Eigen::VectorXd::NullaryExpr(rows, [&] { return value(random); });
+        f[0] = std::numeric_limits<double>::quiet_NaN();
+        if (rows > 2) f[rows - 1] = -std::numeric_limits<double>::infinity(), f[1] = -0.0;
+        std::vector<std::int64_t> open(static_cast<std::size_t>(width));
+        std::vector<double> change(open.size()), scale(open.size());
+        for (std::size_t l = 0; l < open.size(); ++l)
+          open[l] = l % 3 == 1 ? 0 : -1, change[l] = 0.25 * value(random) + 0.25, scale[l] = 0.5;
+        Eigen::VectorXd FjExpected = Fj;
+        std::vector<double> changeExpected = change, scaleExpected = scale;
+        for (Eigen::Index r = 0; r < rows; ++r) {
+          const auto l = static_cast<std::size_t>(r % width);
+          if (open[l] == 0) continue;
+          if (r / width < controlled) {
+            changeExpected[l] = std::max(changeExpected[l], std::abs(f[r] - Fj[r]));
+            scaleExpected[l] = std::max(scaleExpected[l], std::abs(f[r]));
+          }
+          FjExpected[r] = f[r];
+        }
+        everhart::scanLanes(f.data(), Fj.data(), components, controlled, width, open.data(), change.data(),
+                            scale.data(), path);
+        for (Eigen::Index r = 0; r < rows; ++r) // (NaN == NaN is false: compare the bits)
+          EXPECT_EQ(std::bit_cast<std::uint64_t>(Fj[r]), std::bit_cast<std::uint64_t>(FjExpected[r]))
+              << "width " << width << " row " << r;
+        for (std::size_t l = 0; l < open.size(); ++l)
+          if (open[l] != 0) {
+            EXPECT_EQ(std::bit_cast<std::uint64_t>(change[l]),
+                      std::bit_cast<std::uint64_t>(changeExpected[l]))
+                << "width " << width << " lane " << l;
+            EXPECT_EQ(std::bit_cast<std::uint64_t>(scale[l]), std::bit_cast<std::uint64_t>(scaleExpected[l]))
+                << "width " << width << " lane " << l;
+          }
+      }
+  }
 }
 
 } // namespace
