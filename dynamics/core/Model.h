@@ -104,6 +104,11 @@ public:
   /// virtual call per stage -- the same steps as the rk4 integrator on the variational equations
   /// (TangentSystem). Returns false, changing nothing, where a model has no such path; steps = 0 only asks.
   virtual bool tangentRk4(double* x, double* V, int k, double h, long steps) const;
+  /// A system of orbits stacked on lanes (dynamics/tools/LaneStack.h) gives lane `lane`'s orbit as a system
+  /// of its own, whose field is the stacked one's in that lane bit for bit: what a method whose setup reads
+  /// the whole state (Adams's starter) runs orbit by orbit. Null where there is none (dynamics/core/OneLane.h
+  /// then views the stacked field one lane at a time, at the cost of the whole stack per evaluation).
+  virtual const Model* laneSystem(int /*lane*/) const { return nullptr; }
   /// Records one evaluation of the right-hand side at x on a tape that yields its Taylor coefficients
   /// (TaylorTape.h). Models with a templated field do it with no code of their own; the rest throw
   /// InputError saying that the Taylor method cannot expand them.

@@ -1,6 +1,7 @@
 #include "dynamics/integrators/Adams.h"
 
 #include "dynamics/core/Errors.h"
+#include "dynamics/core/OneLane.h"
 #include "dynamics/integrators/AdamsKernels.h"
 #include "dynamics/integrators/Verner9.h"
 
@@ -69,26 +70,31 @@ void Adams::start(const Model& model, double t0, const Eigen::VectorXd& x0, int 
   Integrator::start(model, t0, x0, direction);
   const auto n = x0.size();
   D_.setZero(n, k_);
-  startStates_.resize(n, k_);
+  startStates_.setZero(n, k_);
   predicted_.resize(n), fp_.resize(n), sum_.resize(n), increment_.resize(n);
   compensation_.setZero(n);
   taken_ = 0;
-  // the starting values at t0 + j h, j < k: Verner's pair near rounding, read off its interpolant
+  // the starting values at t0 + j h, j < k: Verner's pair near rounding, read off its interpolant; on lanes
+  // orbit by orbit (its adaptive steps read the whole state), each as alone
   startStates_.col(0) = x0;
-  double t = t0;
-  if (k_ > 1) {
-    Verner9 starter(1e-15, h_);
-    starter.start(model, t0, x0, direction_);
-    Eigen::VectorXd at(n);
-    for (int j = 1; j < k_; ++j) {
-      t += direction_ * h_;
-      while (direction_ * (starter.time() - t) < 0)
-        starter.step();
-      starter.interpolate(t, at);
-      startStates_.col(j) = at;
+  if (lanes_ == 1) {
+    startingValues(model, t0, x0, startStates_);
+  } else {
+    for (int l = 0; l < lanes_; ++l) {
+      const OneLane lane(model, lanes_, l, x0);
+      Eigen::MatrixXd states(lane.dimension(), k_);
+      const Model* own = model.laneSystem(l);
+      startingValues(own != nullptr ? *own : lane, t0, lane.of(x0), states);
+      for (int j = 1; j < k_; ++j) {
+        Eigen::VectorXd column = startStates_.col(j);
+        lane.put(states.col(j), column);
+        startStates_.col(j) = column;
+      }
     }
-    evaluations_ += starter.evaluations() + starter.denseEvaluations();
   }
+  double t = t0;
+  for (int j = 1; j < k_; ++j)
+    t += direction_ * h_;
   tD_ = t;
   // their derivatives, and the backward differences at the last one: D_j = nabla^j f_{k-1}
   Eigen::MatrixXd f(n, k_);
@@ -101,6 +107,29 @@ void Adams::start(const Model& model, double t0, const Eigen::VectorXd& x0, int 
     for (int i = k_ - 1; i > j; --i)
       f.col(i) -= f.col(i - 1);
   }
+}
+
+void Adams::startingValues(const Model& model, double t0, const Eigen::VectorXd& x0,
+                           Eigen::MatrixXd& states) {
+  if (k_ < 2) return;
+  Verner9 starter(1e-15, h_);
+  starter.start(model, t0, x0, direction_);
+  Eigen::VectorXd at(x0.size());
+  double t = t0;
+  for (int j = 1; j < k_; ++j) {
+    t += direction_ * h_;
+    while (direction_ * (starter.time() - t) < 0)
+      starter.step();
+    starter.interpolate(t, at);
+    states.col(j) = at;
+  }
+  evaluations_ += starter.evaluations() + starter.denseEvaluations();
+}
+
+bool Adams::stepLanesAlone(int width) {
+  if (width < 1) return false;
+  lanes_ = width;
+  return true;
 }
 
 void Adams::step() {

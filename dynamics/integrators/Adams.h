@@ -42,12 +42,16 @@ public:
   void save(Snapshot& s) const override;
   void restore(Snapshot& s) override;
   bool fixedStep() const override { return true; }
+  /// Yes: a PECE step is component by component, and the starting values are computed orbit by orbit.
+  bool stepLanesAlone(int width) override;
 
   int order() const { return k_ + 1; }
 
 private:
   /// int_0^s binom(u + j - 1, j) du, j = 0..k-1: the weights of nabla^j f in x(t_D + s h) - x(t_D).
   void integratedWeights(double s, double* weights) const;
+  /// Columns 1..k-1 of `states`: the states at t0 + j h from x0 (Verner's pair near rounding).
+  void startingValues(const Model& model, double t0, const Eigen::VectorXd& x0, Eigen::MatrixXd& states);
 
   double h_;
   int k_;                                 ///< past derivatives the predictor uses (order - 1)
@@ -55,6 +59,7 @@ private:
   /// integrated_[j][m]: the coefficient of s^(m+1) in int_0^s binom(u + j - 1, j) du
   std::array<std::array<double, kMaxOrder>, kMaxOrder> integrated_{};
   bool avx2_ = adams::avx2Available(); ///< the kernels' path (AdamsKernels.h: bit-identical either way)
+  int lanes_ = 1;                      ///< orbits stacked component-major (stepLanesAlone)
   long taken_ = 0;                     ///< steps since start()
   double tD_ = 0;                      ///< the time of the newest derivative in D_
   Eigen::MatrixXd D_;                  ///< nabla^j f at tD_ (dim x k)

@@ -6,6 +6,8 @@
 #include "dynamics/core/Model.h"
 
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace rv {
 
@@ -22,10 +24,18 @@ public:
   LaneStack(const Model& base, const LaneKernel& kernel, int perLane, const std::string& what);
   /// Not available: the stacked systems are stepped by explicit or fixed-point methods only.
   void jacobian(const double*, double*) const override;
+  /// The lane's own system where the derived class gave them (setLaneSystems), else null.
+  const Model* laneSystem(int lane) const override;
 
 protected:
+  /// Each lane's orbit as a system of its own (its field that lane's, bit for bit), one per lane.
+  void setLaneSystems(std::vector<const Model*> systems) { laneSystems_ = std::move(systems); }
+
   const LaneKernel& kernel_;
   const int lanes_; ///< W
+
+private:
+  std::vector<const Model*> laneSystems_;
 };
 
 } // namespace rv

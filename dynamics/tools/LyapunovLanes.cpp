@@ -2,11 +2,14 @@
 
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/LaneField.h"
+#include "dynamics/integrators/Rk4.h"
 #include "dynamics/tools/LaneStack.h"
+#include "dynamics/tools/TangentSystem.h"
 
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <stdexcept>
 
 namespace rv {
 
@@ -19,40 +22,70 @@ struct LaneRuns {
   bool fused = false; ///< rk4 fused with the tangent equations; else an integrator on the stacked systems
 };
 
-std::optional<LaneRuns> laneRuns(const std::vector<const Model*>& models, const IntegratorFactory& make,
-                                 const std::vector<Eigen::VectorXd>& x0s, const LyapunovSettings& s) {
-  if (s.mode != LyapunovSettings::Mode::Tangent) return std::nullopt;
+// whether these runs go on lanes, asked of the settings, the models and the integrator alone: no run is
+// started (a method whose start integrates, Adams's, would integrate whatever state it was given)
+std::optional<LaneRuns> lanePlan(const std::vector<const Model*>& models, const IntegratorFactory& make,
+                                 const LyapunovSettings& s) {
+  if (s.mode != LyapunovSettings::Mode::Tangent || models.empty() || models.front()->isMap())
+    return std::nullopt;
+  const Model& model = *models.front();
+  const int k = s.count > 0 ? s.count : model.info().coreDimension;
+  if (k < 1 || k > model.info().coreDimension) return std::nullopt; // the scalar run says why
   LaneRuns r;
   r.kernel = laneKernelFor(models);
   if (!r.kernel) return std::nullopt;
-  for (std::size_t l = 0; l < x0s.size(); ++l)
-    r.runs.push_back(std::make_unique<LyapunovRun>(*models[l], make, x0s[l], s));
   std::vector<double> probe(1); // the kernel's fixed counts of vectors (the same for tangentRhs)
-  if (!r.kernel->tangentRk4(probe.data(), r.runs.front()->exponentCount(), 0, 0)) return std::nullopt;
-  r.fused = r.runs.front()->fusedStepSize() > 0;
-  // else a method that steps each lane as alone
-  if (!r.fused && !make()->stepLanesAlone(r.kernel->width())) return std::nullopt;
+  if (!r.kernel->tangentRk4(probe.data(), k, 0, 0)) return std::nullopt;
+  // rk4 fused with the tangent equations where the model has that path (as LyapunovRun decides), else a
+  // method that steps each lane as alone
+  const auto integrator = make();
+  const TangentSystem tangent(model, k);
+  Eigen::VectorXd ask = Eigen::VectorXd::Zero(tangent.dimension());
+  r.fused = dynamic_cast<const Rk4*>(integrator.get()) != nullptr && tangent.rk4Steps(ask, 0, 0);
+  if (!r.fused && !integrator->stepLanesAlone(r.kernel->width())) return std::nullopt;
+  return r;
+}
+
+// the lane plan and the run of each orbit; InputError for bad settings
+std::optional<LaneRuns> laneRuns(const std::vector<const Model*>& models, const IntegratorFactory& make,
+                                 const std::vector<Eigen::VectorXd>& x0s, const LyapunovSettings& s) {
+  auto r = lanePlan(models, make, s);
+  if (!r) return std::nullopt;
+  for (std::size_t l = 0; l < x0s.size(); ++l)
+    r->runs.push_back(std::make_unique<LyapunovRun>(*models[l], make, x0s[l], s));
+  if (r->fused != (r->runs.front()->fusedStepSize() > 0))
+    throw std::logic_error("lyapunovOnLanes: the plan and the run disagree on rk4's fused path");
   return r;
 }
 
 // W tangent systems (TangentSystem, k vectors) stacked component-major: the lanes' kernel is its field
 class LaneTangents final : public LaneStack {
 public:
-  LaneTangents(const Model& base, const LaneKernel& kernel, int k)
-      : LaneStack(base, kernel, base.dimension() + base.info().coreDimension * k, "lyapunov lanes"), k_(k) {}
+  /// `models`: the lanes' models (the last one repeated into lanes left over)
+  LaneTangents(const std::vector<const Model*>& models, const LaneKernel& kernel, int k)
+      : LaneStack(*models.front(), kernel,
+                  models.front()->dimension() + models.front()->info().coreDimension * k, "lyapunov lanes"),
+        k_(k) {
+    std::vector<const Model*> systems;
+    for (int l = 0; l < lanes_; ++l) {
+      alone_.push_back(std::make_unique<TangentSystem>(
+          *models[std::min(static_cast<std::size_t>(l), models.size() - 1)], k));
+      systems.push_back(alone_.back().get());
+    }
+    setLaneSystems(std::move(systems));
+  }
   void rhs(const double* y, double* dy) const override { kernel_.tangentRhs(y, k_, dy); }
 
 private:
   int k_;
+  std::vector<std::unique_ptr<TangentSystem>> alone_; ///< each lane's scalar tangent system
 };
 
 } // namespace
 
 bool lyapunovRunsOnLanes(const std::vector<const Model*>& models, const IntegratorFactory& makeIntegrator,
                          const LyapunovSettings& settings) {
-  if (models.empty()) return false;
-  std::vector<Eigen::VectorXd> starts(models.size(), Eigen::VectorXd::Zero(models.front()->dimension()));
-  return laneRuns(models, makeIntegrator, starts, settings).has_value();
+  return lanePlan(models, makeIntegrator, settings).has_value();
 }
 
 std::optional<std::vector<LyapunovLaneResult>> lyapunovOnLanes(const std::vector<const Model*>& models,
@@ -88,7 +121,7 @@ std::optional<std::vector<LyapunovLaneResult>> lyapunovOnLanes(const std::vector
   const double h = runs.front()->fusedStepSize();
   const int k = runs.front()->exponentCount();
   const int n = models.front()->dimension();
-  const LaneTangents stacked(*models.front(), *lanes->kernel, k);
+  const LaneTangents stacked(models, *lanes->kernel, k);
   constexpr long kChunk = 4096; // steps between looks at a stop request and at the state (as LyapunovRun)
   // the next interval of every active run on the lanes, from `lead`, an active run (lanes of runs done and
   // lanes left over take its orbit: a finished or failed orbit's state must not fail the batch); true when

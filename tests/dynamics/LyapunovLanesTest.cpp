@@ -6,10 +6,11 @@
 // (the perturbed method, another integrator, too many exponents, lanes of two classes) says so. The
 // rattleback (ellipsoid_on_plane, Coefficients of the body and its surface) on lanes: its kernel equals each
 // model alone, and everhart at a fixed step (each lane's corrector converging on its own) gives each of eight
-// (b2, psi) the scalar run's six exponents bit for bit.
+// (b2, psi) the scalar run's six exponents bit for bit, and so does adams (its starter run lane by lane).
 #include "dynamics/tools/LyapunovLanes.h"
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/LaneField.h"
+#include "dynamics/integrators/Adams.h"
 #include "dynamics/integrators/Everhart.h"
 #include "dynamics/integrators/Merson.h"
 #include "dynamics/integrators/Rk4.h"
@@ -162,6 +163,8 @@ TEST(LyapunovLanes, WhatCannotGoOnLanesSaysSo) {
   const IntegratorFactory adaptive = [] { return std::make_unique<Everhart>(0.01, 15, 12, 1e-9); };
   EXPECT_TRUE(lyapunovRunsOnLanes(ps, rk4, s));
   EXPECT_TRUE(lyapunovRunsOnLanes(ps, everhart, s));
+  EXPECT_TRUE(lyapunovRunsOnLanes(
+      ps, [] { return std::make_unique<Adams>(0.01, 8); }, s));
   EXPECT_FALSE(lyapunovRunsOnLanes(ps, merson, s)) << "an error control: each run alone";
   EXPECT_FALSE(lyapunovRunsOnLanes(ps, adaptive, s)) << "an adaptive step: each run alone";
   s.mode = LyapunovSettings::Mode::Perturbed;
@@ -195,9 +198,8 @@ TEST(LyapunovLanes, RattlebackKernelsWithAModelPerLaneEqualEachModelAloneBitForB
   }
 }
 
-TEST(LyapunovLanes, RattlebackExponentsWithEverhartAreTheScalarRunsBitForBit) {
+void expectRattlebackExponentsAreTheScalarRuns(const IntegratorFactory& everhart) {
   const auto models = rattlebacks();
-  const IntegratorFactory everhart = [] { return std::make_unique<Everhart>(0.01, 15, 12); };
   LyapunovSettings s; // all six exponents, as the sweep's scene asks
   s.maxTime = 6.5;    // a last interval of half the others
   s.interval = 1;
@@ -225,6 +227,15 @@ TEST(LyapunovLanes, RattlebackExponentsWithEverhartAreTheScalarRunsBitForBit) {
     EXPECT_EQ((*some)[l].result.last.exponents,
               lyapunovExponents(*three[l], everhart, threeStarts[l], s).last.exponents)
         << l;
+}
+
+TEST(LyapunovLanes, RattlebackExponentsWithEverhartAreTheScalarRunsBitForBit) {
+  expectRattlebackExponentsAreTheScalarRuns([] { return std::make_unique<Everhart>(0.01, 15, 12); });
+}
+
+// Adams starts each interval's run orbit by orbit, on each lane's own tangent system (LaneStack::laneSystem)
+TEST(LyapunovLanes, RattlebackExponentsWithAdamsAreTheScalarRunsBitForBit) {
+  expectRattlebackExponentsAreTheScalarRuns([] { return std::make_unique<Adams>(0.005, 12); });
 }
 
 } // namespace

@@ -5,6 +5,7 @@
 // batch as they fail alone, and the others keep their scalar answers.
 #include "dynamics/tools/MegnoLanes.h"
 #include "dynamics/core/LaneField.h"
+#include "dynamics/integrators/Adams.h"
 #include "dynamics/integrators/Everhart.h"
 #include "dynamics/integrators/Rk4.h"
 #include "tests/dynamics/LaneTestSupport.h"
@@ -87,7 +88,7 @@ TEST(Lanes, AMethodThatStepsLanesAloneStepsEachOrbitAsAlone) {
               << "orbit " << i << " component " << c;
     }
   }
-  EXPECT_GE(saying, 2); // rk4, everhart
+  EXPECT_GE(saying, 3); // rk4, everhart, adams
   EXPECT_FALSE(Everhart(0.05, 15, 12, 1e-9).stepLanesAlone(4)) << "an adaptive step is one for all lanes";
 }
 
@@ -156,9 +157,8 @@ TEST(Lanes, MegnoWithRk4IsTheScalarRunBitForBit) {
 // and in the chaotic sea, at four lanes and at eight. The MEGNO system of Henon-Heiles has 11 components:
 // Everhart's node sums must add the last one in the same order as the others (three of these orbits, from
 // the example sweep henon_heiles_megno.json, came out 1e-14 apart when a matrix product summed them)
-TEST(Lanes, MegnoWithEverhartIsTheScalarRunBitForBit) {
+void expectMegnoOnLanesIsTheScalarRun(const IntegratorFactory& method) {
   const auto model = test::makeModel("henon_heiles", {{"energy", 0.125}});
-  const IntegratorFactory everhart = [] { return std::make_unique<Everhart>(0.05, 15, 12); };
   MegnoSettings s;
   s.maxTime = 400, s.interval = 10, s.outputPeriod = 400;
   const double py = -0.35714285714285715;
@@ -169,11 +169,11 @@ TEST(Lanes, MegnoWithEverhartIsTheScalarRunBitForBit) {
   int tori = 0, chaos = 0;
   for (std::size_t count : {4, 8}) {
     const std::vector<Eigen::VectorXd> some(x0s.begin(), x0s.begin() + static_cast<long>(count));
-    const auto lanes = megnoOnLanes(sameModel(*model, count), everhart, some, s);
+    const auto lanes = megnoOnLanes(sameModel(*model, count), method, some, s);
     ASSERT_EQ(lanes.size(), count);
     for (std::size_t k = 0; k < count; ++k) {
       ASSERT_FALSE(lanes[k].failure) << k;
-      const MegnoEstimate alone = megno(*model, everhart, x0s[k], s).last;
+      const MegnoEstimate alone = megno(*model, method, x0s[k], s).last;
       EXPECT_EQ(lanes[k].last.megno, alone.megno) << count << " lanes, orbit " << k;
       EXPECT_EQ(lanes[k].last.fli, alone.fli) << count << " lanes, orbit " << k;
       if (count == 8) ++(alone.megno < 2.5 ? tori : chaos);
@@ -181,6 +181,16 @@ TEST(Lanes, MegnoWithEverhartIsTheScalarRunBitForBit) {
   }
   EXPECT_GE(tori, 2);
   EXPECT_GE(chaos, 1) << "pick a chaotic orbit: the lanes' corrector iterations should differ";
+}
+
+TEST(Lanes, MegnoWithEverhartIsTheScalarRunBitForBit) {
+  expectMegnoOnLanesIsTheScalarRun([] { return std::make_unique<Everhart>(0.05, 15, 12); });
+}
+
+// Adams steps component by component and starts orbit by orbit (its adaptive starter on each lane's view of
+// the stacked field, dynamics/core/OneLane.h)
+TEST(Lanes, MegnoWithAdamsIsTheScalarRunBitForBit) {
+  expectMegnoOnLanesIsTheScalarRun([] { return std::make_unique<Adams>(0.02, 12); });
 }
 
 TEST(Lanes, AnOrbitThatBlowsUpFailsAsItWouldAloneAndTheOthersKeepTheirAnswers) {
