@@ -107,6 +107,10 @@ MegnoRun::MegnoRun(const Model& model, IntegratorFactory makeIntegrator, const E
 
 MegnoRun::~MegnoRun() = default;
 
+std::unique_ptr<Model> MegnoRun::system(const Model& model) {
+  return std::make_unique<System>(model);
+}
+
 void MegnoRun::start() {
   if (model_.isMap()) return;
   integ_ = make_();

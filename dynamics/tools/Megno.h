@@ -76,6 +76,9 @@ public:
   /// Returns true when finished. Throws ComputationError when the integration fails.
   bool run(const std::function<void(const MegnoEstimate&)>& onEstimate = {}, const ToolControl& control = {});
   const MegnoResult& result() const { return result_; }
+  /// The system a flow's run integrates: the model with one tangent vector w in core coordinates, then tau, A
+  /// and B (MegnoLanes.h stacks one per lane).
+  static std::unique_ptr<Model> system(const Model& model);
   /// Saves the run at its last finished interval; restore() into a run built alike goes on bit-identically.
   void save(Snapshot& s) const;
   void restore(Snapshot& s);

@@ -3,8 +3,11 @@
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/LaneField.h"
 #include "dynamics/tools/LaneStack.h"
+#include "dynamics/tools/Megno.h"
 
+#include <algorithm>
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 #include <string>
 
@@ -16,9 +19,18 @@ namespace {
 // components x (n), w (m), tau, A, B
 class LaneSystem final : public LaneStack {
 public:
-  LaneSystem(const Model& base, const LaneKernel& kernel)
-      : LaneStack(base, kernel, base.dimension() + base.info().coreDimension + 3, "megno lanes"),
-        n_(base.dimension()), m_(base.info().coreDimension) {}
+  /// `models`: the lanes' models (the last one repeated into lanes left over)
+  LaneSystem(const std::vector<const Model*>& models, const LaneKernel& kernel)
+      : LaneStack(*models.front(), kernel,
+                  models.front()->dimension() + models.front()->info().coreDimension + 3, "megno lanes"),
+        n_(models.front()->dimension()), m_(models.front()->info().coreDimension) {
+    std::vector<const Model*> systems;
+    for (int l = 0; l < lanes_; ++l) {
+      alone_.push_back(MegnoRun::system(*models[std::min(static_cast<std::size_t>(l), models.size() - 1)]));
+      systems.push_back(alone_.back().get());
+    }
+    setLaneSystems(std::move(systems));
+  }
   void rhs(const double* y, double* dy) const override {
     kernel_.tangentRhs(y, 1, dy);
     if (lanes_ % 8 == 0 && cpuHasAvx512())
@@ -62,6 +74,7 @@ private:
       dy[b + l] = t[l] > 0 ? rate[l] : 0;
   }
   int n_, m_;
+  std::vector<std::unique_ptr<Model>> alone_; ///< each lane's scalar MEGNO system
 };
 
 } // namespace
@@ -82,7 +95,7 @@ std::vector<MegnoLaneResult> megnoOnLanes(const std::vector<const Model*>& model
   if (!(s.maxTime > 0) || !std::isfinite(s.maxTime)) throw InputError("megno: the time must be positive");
   if (!(s.interval > 0)) throw InputError("megno: the interval must be positive");
   const int n = model.dimension(), m = model.info().coreDimension, count = static_cast<int>(x0s.size());
-  const LaneSystem system(model, *kernel);
+  const LaneSystem system(models, *kernel);
   const int width = kernel->width();
   const int tau = (n + m) * width, sumA = tau + width, sumB = sumA + width;
 
