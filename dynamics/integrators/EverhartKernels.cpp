@@ -143,33 +143,59 @@ void scanEachLane(const double* f, double* Fj, Eigen::Index components, Eigen::I
 }
 
 #if defined(__x86_64__)
-[[gnu::target("avx512f")]] void combineAvx512(const double* F, Eigen::Index d, int n, const double* c,
-                                              const double* x, double* out) {
+#define RV_TARGET(isa) [[gnu::target(isa)]]
+#else
+#define RV_TARGET(isa) // elsewhere the portable code under these names (available() never chooses them)
+#endif
+RV_TARGET("avx512f")
+void combineAvx512(const double* F, Eigen::Index d, int n, const double* c, const double* x, double* out) {
   combineBody<8>(F, d, n, c, x, out);
 }
-[[gnu::target("avx2")]] void combineAvx2(const double* F, Eigen::Index d, int n, const double* c,
-                                         const double* x, double* out) {
+RV_TARGET("avx2")
+void combineAvx2(const double* F, Eigen::Index d, int n, const double* c, const double* x, double* out) {
   combineBody<4>(F, d, n, c, x, out);
 }
-[[gnu::target("avx512f")]] void incrementAvx512(const double* F, Eigen::Index d, int n, const double* b,
-                                                double h, double* out) {
+void combineBaseline(const double* F, Eigen::Index d, int n, const double* c, const double* x, double* out) {
+  combineBody<4>(F, d, n, c, x, out);
+}
+RV_TARGET("avx512f")
+void incrementAvx512(const double* F, Eigen::Index d, int n, const double* b, double h, double* out) {
   incrementBody<8>(F, d, n, b, h, out);
 }
-[[gnu::target("avx2")]] void incrementAvx2(const double* F, Eigen::Index d, int n, const double* b, double h,
-                                           double* out) {
+RV_TARGET("avx2")
+void incrementAvx2(const double* F, Eigen::Index d, int n, const double* b, double h, double* out) {
   incrementBody<4>(F, d, n, b, h, out);
 }
-[[gnu::target("avx512f")]] void scanAvx512(const double* f, double* Fj, Eigen::Index components,
-                                           Eigen::Index controlled, int width, const std::int64_t* open,
-                                           double* change, double* scale) {
-  scanBody<8>(f, Fj, components, controlled, width, open, change, scale);
+void incrementBaseline(const double* F, Eigen::Index d, int n, const double* b, double h, double* out) {
+  incrementBody<4>(F, d, n, b, h, out);
 }
-[[gnu::target("avx2")]] void scanAvx2(const double* f, double* Fj, Eigen::Index components,
-                                      Eigen::Index controlled, int width, const std::int64_t* open,
-                                      double* change, double* scale) {
-  scanBody<4>(f, Fj, components, controlled, width, open, change, scale);
+// lanes in groups of 8 or 4 (or one by one when the width is neither's multiple)
+RV_TARGET("avx512f")
+void scanAvx512(const double* f, double* Fj, Eigen::Index components, Eigen::Index controlled, int width,
+                const std::int64_t* open, double* change, double* scale) {
+  if (width % 8 == 0) return scanBody<8>(f, Fj, components, controlled, width, open, change, scale);
+  if (width % 4 == 0) return scanBody<4>(f, Fj, components, controlled, width, open, change, scale);
+  scanEachLane(f, Fj, components, controlled, width, open, change, scale);
 }
-#endif
+RV_TARGET("avx2")
+void scanAvx2(const double* f, double* Fj, Eigen::Index components, Eigen::Index controlled, int width,
+              const std::int64_t* open, double* change, double* scale) {
+  if (width % 4 == 0) return scanBody<4>(f, Fj, components, controlled, width, open, change, scale);
+  scanEachLane(f, Fj, components, controlled, width, open, change, scale);
+}
+void scanBaseline(const double* f, double* Fj, Eigen::Index components, Eigen::Index controlled, int width,
+                  const std::int64_t* open, double* change, double* scale) {
+  if (width % 4 == 0) return scanBody<4>(f, Fj, components, controlled, width, open, change, scale);
+  scanEachLane(f, Fj, components, controlled, width, open, change, scale);
+}
+#undef RV_TARGET
+
+// the function of `path` (of the widest this CPU runs, for Path::widest)
+template <class Function> Function onPath(Path path, Function avx512, Function avx2, Function baseline) {
+  if (path == Path::widest)
+    path = available(Path::avx512) ? Path::avx512 : available(Path::avx2) ? Path::avx2 : Path::baseline;
+  return path == Path::avx512 ? avx512 : path == Path::avx2 ? avx2 : baseline;
+}
 } // namespace
 
 bool available(Path path) {
@@ -182,51 +208,19 @@ bool available(Path path) {
   return true;
 }
 
-namespace {
-Path resolve(Path path) {
-  if (path != Path::widest) return path;
-  return available(Path::avx512) ? Path::avx512 : available(Path::avx2) ? Path::avx2 : Path::baseline;
-}
-} // namespace
-
 void combine(const double* F, Eigen::Index d, int n, const double* c, const double* x, double* out,
              Path path) {
-  switch (resolve(path)) {
-#if defined(__x86_64__)
-  case Path::avx512:
-    return combineAvx512(F, d, n, c, x, out);
-  case Path::avx2:
-    return combineAvx2(F, d, n, c, x, out);
-#endif
-  default:
-    return combineBody<4>(F, d, n, c, x, out);
-  }
+  onPath(path, &combineAvx512, &combineAvx2, &combineBaseline)(F, d, n, c, x, out);
 }
 
 void increment(const double* F, Eigen::Index d, int n, const double* b, double h, double* out, Path path) {
-  switch (resolve(path)) {
-#if defined(__x86_64__)
-  case Path::avx512:
-    return incrementAvx512(F, d, n, b, h, out);
-  case Path::avx2:
-    return incrementAvx2(F, d, n, b, h, out);
-#endif
-  default:
-    return incrementBody<4>(F, d, n, b, h, out);
-  }
+  onPath(path, &incrementAvx512, &incrementAvx2, &incrementBaseline)(F, d, n, b, h, out);
 }
 
 void scanLanes(const double* f, double* Fj, Eigen::Index components, Eigen::Index controlled, int width,
                const std::int64_t* open, double* change, double* scale, Path path) {
-  path = resolve(path);
-#if defined(__x86_64__)
-  if (path == Path::avx512 && width % 8 == 0)
-    return scanAvx512(f, Fj, components, controlled, width, open, change, scale);
-  if (path != Path::baseline && width % 4 == 0)
-    return scanAvx2(f, Fj, components, controlled, width, open, change, scale);
-#endif
-  if (width % 4 == 0) return scanBody<4>(f, Fj, components, controlled, width, open, change, scale);
-  scanEachLane(f, Fj, components, controlled, width, open, change, scale);
+  onPath(path, &scanAvx512, &scanAvx2, &scanBaseline)(f, Fj, components, controlled, width, open, change,
+                                                      scale);
 }
 
 } // namespace rv::everhart
