@@ -5,8 +5,9 @@
 #include "dynamics/core/LaneField.h"
 #include "dynamics/core/Model.h"
 
+#include <functional>
+#include <memory>
 #include <string>
-#include <utility>
 #include <vector>
 
 namespace rv {
@@ -28,14 +29,16 @@ public:
   const Model* laneSystem(int lane) const override;
 
 protected:
-  /// Each lane's orbit as a system of its own (its field that lane's, bit for bit), one per lane.
-  void setLaneSystems(std::vector<const Model*> systems) { laneSystems_ = std::move(systems); }
+  /// Gives each lane its orbit as a system of its own, `alone(model)` of the lane's model (the last of
+  /// `models` repeated into lanes left over): its field must be that lane's, bit for bit.
+  void ownLaneSystems(const std::vector<const Model*>& models,
+                      const std::function<std::unique_ptr<Model>(const Model&)>& alone);
 
   const LaneKernel& kernel_;
   const int lanes_; ///< W
 
 private:
-  std::vector<const Model*> laneSystems_;
+  std::vector<std::unique_ptr<Model>> laneSystems_;
 };
 
 } // namespace rv

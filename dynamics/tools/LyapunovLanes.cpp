@@ -66,19 +66,12 @@ public:
       : LaneStack(*models.front(), kernel,
                   models.front()->dimension() + models.front()->info().coreDimension * k, "lyapunov lanes"),
         k_(k) {
-    std::vector<const Model*> systems;
-    for (int l = 0; l < lanes_; ++l) {
-      alone_.push_back(std::make_unique<TangentSystem>(
-          *models[std::min(static_cast<std::size_t>(l), models.size() - 1)], k));
-      systems.push_back(alone_.back().get());
-    }
-    setLaneSystems(std::move(systems));
+    ownLaneSystems(models, [k](const Model& model) { return std::make_unique<TangentSystem>(model, k); });
   }
   void rhs(const double* y, double* dy) const override { kernel_.tangentRhs(y, k_, dy); }
 
 private:
   int k_;
-  std::vector<std::unique_ptr<TangentSystem>> alone_; ///< each lane's scalar tangent system
 };
 
 } // namespace

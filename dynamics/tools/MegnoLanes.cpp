@@ -24,12 +24,7 @@ public:
       : LaneStack(*models.front(), kernel,
                   models.front()->dimension() + models.front()->info().coreDimension + 3, "megno lanes"),
         n_(models.front()->dimension()), m_(models.front()->info().coreDimension) {
-    std::vector<const Model*> systems;
-    for (int l = 0; l < lanes_; ++l) {
-      alone_.push_back(MegnoRun::system(*models[std::min(static_cast<std::size_t>(l), models.size() - 1)]));
-      systems.push_back(alone_.back().get());
-    }
-    setLaneSystems(std::move(systems));
+    ownLaneSystems(models, &MegnoRun::system);
   }
   void rhs(const double* y, double* dy) const override {
     kernel_.tangentRhs(y, 1, dy);
@@ -74,7 +69,6 @@ private:
       dy[b + l] = t[l] > 0 ? rate[l] : 0;
   }
   int n_, m_;
-  std::vector<std::unique_ptr<Model>> alone_; ///< each lane's scalar MEGNO system
 };
 
 } // namespace
