@@ -119,7 +119,7 @@ void ToolManager::refresh() {
     QTreeWidgetItem* it = items[j->id()];
     it->setText(0, QString::number(j->id()));
     it->setText(1, QString::fromStdString(j->task().name()));
-    QString status = toString(j->status());
+    QString status = statusName(j->status());
     if (j->status() == Job::Status::Failed) {
       const QString why = inGuiWords(j->error());
       status += ": " + why;

@@ -10,7 +10,7 @@ bool Task::edit(const TaskEdit&) {
   throw InputError(name() + " takes no new values: restart it");
 }
 
-const char* toString(Job::Status s) {
+const char* statusName(Job::Status s) {
   switch (s) {
   case Job::Status::Ready:
     return "ready";
@@ -42,7 +42,13 @@ void Job::start() {
   thread_ = std::thread([this] {
     ToolControl control;
     control.stopRequested = [this] { return stopRequested_.load(std::memory_order_relaxed); };
-    control.progress = [this](double f) { progress_.store(f, std::memory_order_relaxed); };
+    control.progress = [this](double f) {
+      progress_.store(f, std::memory_order_relaxed);
+      if (f >= pauseAt_.load(std::memory_order_relaxed)) {
+        pauseAt_ = std::numeric_limits<double>::infinity();
+        stopRequested_ = true;
+      }
+    };
     try {
       const bool finished = task_->run(control);
       if (finished) progress_ = 1.0;

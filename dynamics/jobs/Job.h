@@ -5,6 +5,7 @@
 
 #include <atomic>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -26,6 +27,10 @@ public:
   void start();
   /// Asks the task to stop and waits for the thread (the task stops within one step's worth of work).
   void stop();
+  /// Asks the task to stop once its progress reaches `fraction` (set before or while it runs; does not wait):
+  /// a pause at a known place whatever the machine's speed, for scripted runs and tests. Used up by that
+  /// stop.
+  void pauseAt(double fraction) { pauseAt_ = fraction; }
   /// Stops, resets the task and starts it again.
   void restart();
   /// Changes the task while it does not run (stops it first); the change continues from where it stopped.
@@ -50,11 +55,12 @@ private:
   std::atomic<bool> stopRequested_{false};
   std::atomic<Status> status_{Status::Ready};
   std::atomic<double> progress_{0};
+  std::atomic<double> pauseAt_{std::numeric_limits<double>::infinity()};
   mutable std::mutex errorMutex_;
   std::string error_;
 };
 
 /// "ready", "running", ...
-const char* toString(Job::Status status);
+const char* statusName(Job::Status status);
 
 } // namespace rv

@@ -13,6 +13,7 @@
 #include "dynamics/tools/ToolRegistry.h"
 #include "dynamics/tools/ToolSettings.h"
 #include "scenes/SceneLoader.h"
+#include "tests/gui/JobStatusText.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>

@@ -53,6 +53,39 @@ TEST(Job, RunsStopsPromptlyAndContinuesWhereItStopped) {
   EXPECT_GT(more.front().time, first.back().time);
 }
 
+// a task of 100 equal steps that counts them, for pauses at a known place
+class CountingTask : public Task {
+public:
+  std::string name() const override { return "count"; }
+  std::string describe() const override { return "100 steps"; }
+  bool run(const ToolControl& control) override {
+    for (; done < 100; ++done) {
+      if (control.stopRequested()) return false;
+      control.progress(done / 100.0);
+    }
+    return true;
+  }
+  void reset() override { done = 0; }
+  int done = 0;
+};
+
+TEST(Job, PausesWhereAskedAndThenRunsToTheEnd) {
+  JobTree tree;
+  auto task = std::make_unique<CountingTask>();
+  auto* count = task.get();
+  Job& job = tree.add(std::move(task));
+  job.pauseAt(0.3);
+  job.start();
+  ASSERT_TRUE(waitFor([&] { return !job.running(); }));
+  EXPECT_EQ(job.status(), Job::Status::Stopped);
+  EXPECT_EQ(count->done, 31) << "step 30 reported 0.3; the stop is seen before step 31";
+  EXPECT_DOUBLE_EQ(job.progress(), 0.3);
+  job.start(); // the pause is used up
+  ASSERT_TRUE(waitFor([&] { return !job.running(); }));
+  EXPECT_EQ(job.status(), Job::Status::Finished);
+  EXPECT_EQ(count->done, 100);
+}
+
 TEST(Job, EditTheEnergyAndContinueGivesPointsAtTheNewEnergy) {
   JobTree tree;
   auto task = std::make_unique<PoincareTask>(henonHeiles(0.125), SectionSettings{.maxPoints = 0});
