@@ -1,6 +1,7 @@
 #include "dynamics/jobs/JobTree.h"
 
 #include <algorithm>
+#include <utility>
 
 namespace rv {
 
@@ -10,6 +11,7 @@ JobTree::~JobTree() {
 
 Job& JobTree::add(std::unique_ptr<Task> task, Job* parent) {
   jobs_.push_back(std::make_unique<Job>(nextId_++, std::move(task), parent));
+  jobs_.back()->pauseAt(std::exchange(pauseNext_, std::numeric_limits<double>::infinity()));
   return *jobs_.back();
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 #include "dynamics/jobs/Job.h"
 
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -14,6 +15,9 @@ public:
   ~JobTree();
   /// Adds a job (not started) under `parent` (nullptr: a root).
   Job& add(std::unique_ptr<Task> task, Job* parent = nullptr);
+  /// The next job added pauses once its progress reaches `fraction` (Job::pauseAt, set before anything can
+  /// start it): for scripts and tests that stop a job a front end creates and starts at once.
+  void pauseNextAt(double fraction) { pauseNext_ = fraction; }
   /// Stops and deletes the job and everything under it.
   void remove(Job& job);
   void stopAll();
@@ -27,6 +31,7 @@ public:
 private:
   std::vector<std::unique_ptr<Job>> jobs_;
   int nextId_ = 1;
+  double pauseNext_ = std::numeric_limits<double>::infinity();
 };
 
 } // namespace rv

@@ -490,6 +490,7 @@ private slots:
     QVERIFY(whole->saveCsv(a));
     whole->close();
 
+    window_->mapPanel()->jobs().pauseNextAt(0.02); // the stop lands mid-run whatever the machine's speed
     ChartWindow* chart = window_->openChart("surface");
     Job* job = chart->job();
     QVERIFY(job);
@@ -497,7 +498,6 @@ private slots:
     tools->refresh();
     tools->select(job->id());
     QCOMPARE(tools->selected(), job);
-    job->pauseAt(0.02); // the stop lands mid-run whatever the machine's speed
     QTRY_VERIFY_WITH_TIMEOUT(job->status() != Job::Status::Running, 60000);
     tools->stopSelected();
     QCOMPARE(job->status(), Job::Status::Stopped);

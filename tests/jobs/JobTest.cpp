@@ -73,8 +73,8 @@ TEST(Job, PausesWhereAskedAndThenRunsToTheEnd) {
   JobTree tree;
   auto task = std::make_unique<CountingTask>();
   auto* count = task.get();
+  tree.pauseNextAt(0.3);
   Job& job = tree.add(std::move(task));
-  job.pauseAt(0.3);
   job.start();
   ASSERT_TRUE(waitFor([&] { return !job.running(); }));
   EXPECT_EQ(job.status(), Job::Status::Stopped);
@@ -84,6 +84,10 @@ TEST(Job, PausesWhereAskedAndThenRunsToTheEnd) {
   ASSERT_TRUE(waitFor([&] { return !job.running(); }));
   EXPECT_EQ(job.status(), Job::Status::Finished);
   EXPECT_EQ(count->done, 100);
+  Job& next = tree.add(std::make_unique<CountingTask>()); // the tree's pause was for one job
+  next.start();
+  ASSERT_TRUE(waitFor([&] { return !next.running(); }));
+  EXPECT_EQ(next.status(), Job::Status::Finished);
 }
 
 TEST(Job, EditTheEnergyAndContinueGivesPointsAtTheNewEnergy) {
