@@ -385,6 +385,14 @@ lyapunovOnLanesOf(const std::string& name, const std::vector<Scene>& scenes, con
     values.push_back({{*numberIn(lyapunovFields(r.result), name)}, r.failure});
   return values;
 }
+// the largest exponent alone: one tangent vector. Its vector is advanced, projected and normalised
+// (Householder's first column) without reading the others, and the steps follow the orbit alone, so L1 is
+// the spectrum's bit for bit; the stopping rule (successes) and the perturbed method's halving read every
+// exponent, so those keep them all.
+void narrowLyapunov(const std::string& output, Scene& scene) {
+  LyapunovSettings& l = scene.lyapunov;
+  if (output == "max" && l.mode == LyapunovSettings::Mode::Tangent && l.successes == 0) l.count = 1;
+}
 } // namespace
 
 void registerBuiltinTools() {
@@ -398,7 +406,8 @@ void registerBuiltinTools() {
     registerPoincareTools();
     addLanesEvaluator("lyapunov", lyapunovOnLanesOf);
     addToolRunner("lyapunov", {.start = [](const Scene& s) { return std::make_unique<LyapunovToolRun>(s); },
-                               .tableName = "history"});
+                               .tableName = "history",
+                               .narrowTo = narrowLyapunov});
     addLanesEvaluator("megno", megnoOnLanesOf);
     addToolRunner("megno", {.start = [](const Scene& s) { return std::make_unique<MegnoToolRun>(s); },
                             .tableName = "history"});

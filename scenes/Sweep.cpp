@@ -226,6 +226,8 @@ std::vector<SweepQuantity> makeQuantities() {
                        throw ComputationError(tool.id + " gave no number for " + name + ": " + v.dump());
                      return std::vector<double>{v.get<double>()};
                    }});
+      if (const ToolRunner* runner = findToolRunner(tool.id); runner->narrowTo)
+        q.back().narrow = [runner, name = out.name](Scene& s) { runner->narrowTo(name, s); };
       if (const LanesEvaluator* lanes = findLanesEvaluator(tool.id))
         q.back().evaluateLanes = [lanes, name = out.name](const SweepSpec&, const std::vector<Scene>& scenes,
                                                           const ToolControl& c) {
@@ -496,11 +498,20 @@ Scene sweepPointScene(const SweepSpec& spec, long index) {
   return sceneFromJson(std::move(doc), spec.source, overrides);
 }
 
+namespace {
+// grid point `index`'s scene as the quantity computes on it (narrowed to what it needs)
+Scene evaluatedScene(const SweepSpec& spec, long index) {
+  Scene scene = sweepPointScene(spec, index);
+  if (spec.quantity->narrow) spec.quantity->narrow(scene);
+  return scene;
+}
+} // namespace
+
 SweepRecord evaluateSweepPoint(const SweepSpec& spec, long index, const ToolControl& control) {
   const auto start = std::chrono::steady_clock::now();
   SweepRecord r;
   try {
-    const Scene scene = sweepPointScene(spec, index);
+    const Scene scene = evaluatedScene(spec, index);
     r.values = spec.quantity->evaluate(spec, scene, control);
     r.values.resize(spec.columns.size(), kNaN);
   } catch (const Stopped&) {
@@ -535,7 +546,7 @@ std::vector<SweepRecord> evaluateSweepPoints(const SweepSpec& spec, const std::v
   std::vector<std::size_t> batched;
   for (std::size_t k = 0; k < indices.size(); ++k) {
     try {
-      scenes.push_back(sweepPointScene(spec, indices[k]));
+      scenes.push_back(evaluatedScene(spec, indices[k]));
       batched.push_back(k);
     } catch (const std::exception&) {
       records[k] = evaluateSweepPoint(spec, indices[k], control);

@@ -70,6 +70,10 @@ struct SweepQuantity {
   std::function<std::optional<std::vector<LaneValues>>(const SweepSpec&, const std::vector<Scene>&,
                                                        const ToolControl&)>
       evaluateLanes;
+  /// Narrows a grid point's scene to what this quantity needs, the same numbers faster
+  /// (ToolRunner::narrowTo); applied before `evaluate` and `evaluateLanes`, not to the scene a point opens in
+  /// the GUI. May be empty.
+  std::function<void(Scene&)> narrow = {};
 };
 
 /// Every quantity a sweep can chart.

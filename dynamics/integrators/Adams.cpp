@@ -113,6 +113,8 @@ void Adams::startingValues(const Model& model, double t0, const Eigen::VectorXd&
                            Eigen::MatrixXd& states) {
   if (k_ < 2) return;
   Verner9 starter(1e-15, h_);
+  // controlled like the steps that follow (controlBy: a tangent system's orbit alone), per orbit on lanes
+  if (controlled_ > 0) starter.controlBy(controlled_ / lanes_);
   starter.start(model, t0, x0, direction_);
   Eigen::VectorXd at(x0.size());
   double t = t0;

@@ -7,6 +7,7 @@
 #include "dynamics/core/Lanes.h"
 #include "scenes/SceneLoader.h"
 #include "scenes/SweepTask.h"
+#include "scenes/ToolRunner.h"
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
@@ -14,6 +15,7 @@
 #include <chrono>
 #include <cmath>
 #include <gtest/gtest.h>
+#include <numeric>
 #include <thread>
 
 namespace rv {
@@ -488,6 +490,63 @@ TEST(Sweep, LorenzExponentOverRhoOnLanesIsTheScalarOne) {
                           {{"lanes", 3}}))
                 .find("options.lanes"),
             std::string::npos);
+}
+
+// A sweep of lyapunov.max follows one tangent vector (ToolRunner::narrowTo): the largest exponent's vector is
+// advanced, projected and normalised without reading the others and the steps follow the orbit alone, so each
+// point is the first exponent of the whole spectrum, bit for bit -- with everhart, adams (its starter too),
+// rk4 (the fused loop) and the projection on the integrals' level; the stopping rule reads every exponent, so
+// with it the spectrum stays whole.
+TEST(Sweep, TheLargestExponentAloneIsTheWholeSpectrumsFirstBitForBit) {
+  const ToolEntry& lyapunov = ToolRegistry::global().get("lyapunov");
+  const auto check = [&](const std::string& problem, json axes, json set, int exponents) {
+    set["lyapunov.time"] = 12;
+    for (int lanes : {1, laneWidth()}) {
+      const SweepSpec s =
+          sweepFromJson(sweep(problem, axes, "lyapunov.max", set, {{"lanes", lanes}}), "sw.json");
+      ASSERT_TRUE(s.quantity->narrow);
+      std::vector<long> all(static_cast<std::size_t>(s.points()));
+      std::iota(all.begin(), all.end(), 0L);
+      const auto records = evaluateSweepPoints(s, all, {});
+      for (long i = 0; i < s.points(); ++i) {
+        Scene narrowed = sweepPointScene(s, i);
+        s.quantity->narrow(narrowed);
+        EXPECT_EQ(narrowed.lyapunov.count, 1);
+        const ToolResult whole = runTool(lyapunov, sweepPointScene(s, i), {});
+        const auto& l = whole.fields.at("exponents");
+        ASSERT_EQ(static_cast<int>(l.size()), exponents) << problem;
+        ASSERT_TRUE(records[static_cast<std::size_t>(i)].ok) << records[static_cast<std::size_t>(i)].reason;
+        EXPECT_EQ(records[static_cast<std::size_t>(i)].values.at(0), l[0].get<double>())
+            << problem << " " << set.dump() << ", " << lanes << " lanes, point " << i;
+      }
+    }
+  };
+  const json rattleback = json::array({axis("b2", 0.3, 1.2, 3), axis("psi", -0.3, 0.3, 2)});
+  check("ellipsoid_on_plane", rattleback, {{"initial.state.M3", -0.3}}, 6);
+  check("ellipsoid_on_plane", rattleback,
+        {{"initial.state.M3", -0.3},
+         {"integrator.method", "adams"},
+         {"integrator.step", 0.01},
+         {"integrator.order", 12}},
+        6);
+  check("ellipsoid_on_plane", rattleback,
+        {{"initial.state.M3", -0.3}, {"integrator.method", "rk4"}, {"integrator.step", 0.01}}, 6);
+  check("ellipsoid_on_plane", rattleback, {{"initial.state.M3", -0.3}, {"lyapunov.renormalize", "yes"}}, 6);
+  check("lorenz", json::array({axis("rho", 10, 28, 5)}), json::object(), 3);
+  // where the stopping rule or the perturbed method reads every exponent, nothing is narrowed
+  for (const json& set : {json{{"lyapunov.successes", 3}}, json{{"lyapunov.mode", "perturbed"}}}) {
+    const SweepSpec s =
+        sweepFromJson(sweep("lorenz", json::array({axis("rho", 10, 28, 2)}), "lyapunov.max", set), "sw.json");
+    Scene scene = sweepPointScene(s, 0);
+    s.quantity->narrow(scene);
+    EXPECT_EQ(scene.lyapunov.count, 0) << set.dump();
+  }
+  // and the other outputs need every exponent
+  const SweepSpec sum =
+      sweepFromJson(sweep("lorenz", json::array({axis("rho", 10, 28, 2)}), "lyapunov.positive"), "sw.json");
+  Scene scene = sweepPointScene(sum, 0);
+  if (sum.quantity->narrow) sum.quantity->narrow(scene);
+  EXPECT_EQ(scene.lyapunov.count, 0);
 }
 
 } // namespace
