@@ -59,9 +59,10 @@ RigidBodyConstants paraboloidConstants(const ParameterValues& p) {
 } // namespace
 
 ParaboloidOnPlane::ParaboloidOnPlane(const ParameterValues& p)
-    : RigidBodyOnPlane(staticInfo(), p, paraboloidConstants(p)), p_(p["p"]), q_(p["q"]), h_(p["h"]) {
-  if (!(p_ > 0)) throw InputError("p: the radius of curvature must be positive");
-  if (!(q_ > 0)) throw InputError("q: the radius of curvature must be positive");
+    : RigidBodyOnPlane(staticInfo(), p, paraboloidConstants(p)), surface_{
+                                                                     .p = p["p"], .q = p["q"], .h = p["h"]} {
+  if (!(surface_.p > 0)) throw InputError("p: the radius of curvature must be positive");
+  if (!(surface_.q > 0)) throw InputError("q: the radius of curvature must be positive");
   addRigidBodyObservables();
 }
 

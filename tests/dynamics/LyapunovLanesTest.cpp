@@ -6,7 +6,8 @@
 // (the perturbed method, another integrator, too many exponents, lanes of two classes) says so. The
 // rattleback (ellipsoid_on_plane, Coefficients of the body and its surface) on lanes: its kernel equals each
 // model alone, and everhart at a fixed step (each lane's corrector converging on its own) gives each of eight
-// (b2, psi) the scalar run's six exponents bit for bit, and so does adams (its starter run lane by lane).
+// (b2, psi) the scalar run's six exponents bit for bit, and so does adams (its starter run lane by lane). The
+// paraboloid (paraboloid_on_plane, its Surface<T> of p, q, h) the same with everhart.
 #include "dynamics/tools/LyapunovLanes.h"
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/LaneField.h"
@@ -198,8 +199,31 @@ TEST(LyapunovLanes, RattlebackKernelsWithAModelPerLaneEqualEachModelAloneBitForB
   }
 }
 
-void expectRattlebackExponentsAreTheScalarRuns(const IntegratorFactory& everhart) {
-  const auto models = rattlebacks();
+// paraboloids of eight heights and turns (h, delta): the paraboloid's Surface<T> runs on lanes too
+std::vector<std::unique_ptr<Model>> paraboloids() {
+  std::vector<std::unique_ptr<Model>> models;
+  for (int l = 0; l < 8; ++l)
+    models.push_back(test::makeModel("paraboloid_on_plane",
+                                     {{"h", 0.3 + 0.07 * l}, {"delta", 0.05 * l}, {"q", 1.5 + 0.1 * l}}));
+  return models;
+}
+
+TEST(LyapunovLanes, ParaboloidKernelsWithAModelPerLaneEqualEachModelAloneBitForBit) {
+  const auto all = paraboloids();
+  const auto every = pointers(all);
+  std::mt19937 random(7);
+  for (long count : {4, 8}) {
+    const std::vector<const Model*> models(every.begin(), every.begin() + count);
+    const auto kernel = laneKernelFor(models);
+    ASSERT_NE(kernel, nullptr);
+    for (int k : {1, 6})
+      test::expectKernelRhsIsEachModelAlone(*kernel, models, random, std::to_string(count) + " paraboloids",
+                                            k);
+  }
+}
+
+void expectExponentsAreTheScalarRuns(const std::vector<std::unique_ptr<Model>>& models,
+                                     const IntegratorFactory& everhart) {
   LyapunovSettings s; // all six exponents, as the sweep's scene asks
   s.maxTime = 6.5;    // a last interval of half the others
   s.interval = 1;
@@ -215,7 +239,7 @@ void expectRattlebackExponentsAreTheScalarRuns(const IntegratorFactory& everhart
     ASSERT_FALSE((*lanes)[l].failure) << l;
     const LyapunovResult alone = lyapunovExponents(*models[l], everhart, x0s[l], s);
     ASSERT_EQ(alone.last.exponents.size(), 6u);
-    EXPECT_EQ((*lanes)[l].result.last.exponents, alone.last.exponents) << "rattleback " << l;
+    EXPECT_EQ((*lanes)[l].result.last.exponents, alone.last.exponents) << models[l]->info().id << " " << l;
     EXPECT_EQ((*lanes)[l].result.last.time, alone.last.time) << l;
   }
   // three orbits, the fourth lane repeating the last
@@ -230,12 +254,16 @@ void expectRattlebackExponentsAreTheScalarRuns(const IntegratorFactory& everhart
 }
 
 TEST(LyapunovLanes, RattlebackExponentsWithEverhartAreTheScalarRunsBitForBit) {
-  expectRattlebackExponentsAreTheScalarRuns([] { return std::make_unique<Everhart>(0.01, 15, 12); });
+  expectExponentsAreTheScalarRuns(rattlebacks(), [] { return std::make_unique<Everhart>(0.01, 15, 12); });
+}
+
+TEST(LyapunovLanes, ParaboloidExponentsWithEverhartAreTheScalarRunsBitForBit) {
+  expectExponentsAreTheScalarRuns(paraboloids(), [] { return std::make_unique<Everhart>(0.01, 15, 12); });
 }
 
 // Adams starts each interval's run orbit by orbit, on each lane's own tangent system (LaneStack::laneSystem)
 TEST(LyapunovLanes, RattlebackExponentsWithAdamsAreTheScalarRunsBitForBit) {
-  expectRattlebackExponentsAreTheScalarRuns([] { return std::make_unique<Adams>(0.005, 12); });
+  expectExponentsAreTheScalarRuns(rattlebacks(), [] { return std::make_unique<Adams>(0.005, 12); });
 }
 
 } // namespace
