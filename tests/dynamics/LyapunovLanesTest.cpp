@@ -185,8 +185,8 @@ std::vector<std::unique_ptr<Model>> rattlebacks() {
   return models;
 }
 
-TEST(LyapunovLanes, RattlebackKernelsWithAModelPerLaneEqualEachModelAloneBitForBit) {
-  const auto all = rattlebacks();
+// the lane kernels of the first 4 and of all 8 models, with 1, 3 and 6 tangent directions, against each alone
+void expectKernelsAreEachModelAlone(const std::vector<std::unique_ptr<Model>>& all, const std::string& what) {
   const auto every = pointers(all);
   std::mt19937 random(5);
   for (long count : {4, 8}) {
@@ -194,9 +194,12 @@ TEST(LyapunovLanes, RattlebackKernelsWithAModelPerLaneEqualEachModelAloneBitForB
     const auto kernel = laneKernelFor(models);
     ASSERT_NE(kernel, nullptr);
     for (int k : {1, 3, 6})
-      test::expectKernelRhsIsEachModelAlone(*kernel, models, random, std::to_string(count) + " rattlebacks",
-                                            k);
+      test::expectKernelRhsIsEachModelAlone(*kernel, models, random, std::to_string(count) + " " + what, k);
   }
+}
+
+TEST(LyapunovLanes, RattlebackKernelsWithAModelPerLaneEqualEachModelAloneBitForBit) {
+  expectKernelsAreEachModelAlone(rattlebacks(), "rattlebacks");
 }
 
 // paraboloids of eight heights and turns (h, delta): the paraboloid's Surface<T> runs on lanes too
@@ -209,17 +212,7 @@ std::vector<std::unique_ptr<Model>> paraboloids() {
 }
 
 TEST(LyapunovLanes, ParaboloidKernelsWithAModelPerLaneEqualEachModelAloneBitForBit) {
-  const auto all = paraboloids();
-  const auto every = pointers(all);
-  std::mt19937 random(7);
-  for (long count : {4, 8}) {
-    const std::vector<const Model*> models(every.begin(), every.begin() + count);
-    const auto kernel = laneKernelFor(models);
-    ASSERT_NE(kernel, nullptr);
-    for (int k : {1, 6})
-      test::expectKernelRhsIsEachModelAlone(*kernel, models, random, std::to_string(count) + " paraboloids",
-                                            k);
-  }
+  expectKernelsAreEachModelAlone(paraboloids(), "paraboloids");
 }
 
 void expectExponentsAreTheScalarRuns(const std::vector<std::unique_ptr<Model>>& models,
