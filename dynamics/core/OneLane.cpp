@@ -50,7 +50,7 @@ Eigen::VectorXd OneLane::of(const Eigen::VectorXd& stacked) const {
   return orbit;
 }
 
-void OneLane::put(const Eigen::VectorXd& orbit, Eigen::VectorXd& stacked) const {
+void OneLane::put(const Eigen::VectorXd& orbit, Eigen::Ref<Eigen::VectorXd> stacked) const {
   for (int c = 0; c < dimension(); ++c)
     stacked[c * width_ + lane_] = orbit[c];
 }

@@ -32,7 +32,7 @@ public:
   /// This lane's components of a stacked vector.
   Eigen::VectorXd of(const Eigen::VectorXd& stacked) const;
   /// Writes `orbit` into this lane's components of `stacked`.
-  void put(const Eigen::VectorXd& orbit, Eigen::VectorXd& stacked) const;
+  void put(const Eigen::VectorXd& orbit, Eigen::Ref<Eigen::VectorXd> stacked) const;
 
 private:
   const Model& stacked_;

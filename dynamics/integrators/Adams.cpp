@@ -85,11 +85,8 @@ void Adams::start(const Model& model, double t0, const Eigen::VectorXd& x0, int 
       Eigen::MatrixXd states(lane.dimension(), k_);
       const Model* own = model.laneSystem(l);
       startingValues(own != nullptr ? *own : lane, t0, lane.of(x0), states);
-      for (int j = 1; j < k_; ++j) {
-        Eigen::VectorXd column = startStates_.col(j);
-        lane.put(states.col(j), column);
-        startStates_.col(j) = column;
-      }
+      for (int j = 1; j < k_; ++j)
+        lane.put(states.col(j), startStates_.col(j));
     }
   }
   double t = t0;

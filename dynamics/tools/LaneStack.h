@@ -25,7 +25,7 @@ public:
   LaneStack(const Model& base, const LaneKernel& kernel, int perLane, const std::string& what);
   /// Not available: the stacked systems are stepped by explicit or fixed-point methods only.
   void jacobian(const double*, double*) const override;
-  /// The lane's own system where the derived class gave them (setLaneSystems), else null.
+  /// The lane's own system where the derived class gave them (ownLaneSystems), else null.
   const Model* laneSystem(int lane) const override;
 
 protected:
