@@ -10,8 +10,10 @@
 #include "dynamics/integrators/Taylor.h"
 #include "dynamics/integrators/Verner9.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 namespace rv {
 
@@ -24,6 +26,13 @@ void Integrator::start(const Model& model, double t0, const Eigen::VectorXd& x0,
   x_ = xPrev_ = x0;
   direction_ = direction >= 0 ? +1 : -1;
   evaluations_ = 0;
+  if (laneSteps_ > 0) {
+    if (x0.size() % laneSteps_ != 0)
+      throw std::logic_error("Integrator: a state of " + std::to_string(x0.size()) + " components is not " +
+                             std::to_string(laneSteps_) + " lanes");
+    laneTime_.assign(static_cast<std::size_t>(laneSteps_), t0);
+    lanePrevious_ = laneTime_;
+  }
 }
 
 void Integrator::save(Snapshot& s) const {
@@ -80,6 +89,19 @@ void Integrator::advanceCompensated(double h, const Eigen::VectorXd& increment,
   checkFinite();
 }
 
+namespace {
+// the cubic Hermite weights of xPrev, fPrev, x and f at s = (t - tPrev) / h (f's with h): one place, so every
+// lane computes what hermite() computes
+struct HermiteWeights {
+  double prev, prevRate, end, endRate;
+  HermiteWeights(double s, double h) {
+    const double s2 = s * s, s3 = s2 * s;
+    prev = 2 * s3 - 3 * s2 + 1, prevRate = (s3 - 2 * s2 + s) * h;
+    end = -2 * s3 + 3 * s2, endRate = (s3 - s2) * h;
+  }
+};
+} // namespace
+
 void Integrator::hermite(double t, const Eigen::VectorXd& fPrev, const Eigen::VectorXd& f,
                          Eigen::VectorXd& out) const {
   const double h = t_ - tPrev_;
@@ -87,9 +109,59 @@ void Integrator::hermite(double t, const Eigen::VectorXd& fPrev, const Eigen::Ve
     out = x_;
     return;
   }
-  const double s = (t - tPrev_) / h, s2 = s * s, s3 = s2 * s;
-  out = (2 * s3 - 3 * s2 + 1) * xPrev_ + ((s3 - 2 * s2 + s) * h) * fPrev + (-2 * s3 + 3 * s2) * x_ +
-        ((s3 - s2) * h) * f;
+  const HermiteWeights w((t - tPrev_) / h, h);
+  out = w.prev * xPrev_ + w.prevRate * fPrev + w.end * x_ + w.endRate * f;
+}
+
+void Integrator::hermiteLane(int lane, double t, const Eigen::VectorXd& fPrev, const Eigen::VectorXd& f,
+                             Eigen::VectorXd& out) const {
+  const auto l = static_cast<std::size_t>(lane);
+  const double h = laneTime_[l] - lanePrevious_[l];
+  const HermiteWeights w(h == 0 ? 0 : (t - lanePrevious_[l]) / h, h);
+  for (Eigen::Index i = lane; i < x_.size(); i += laneSteps_)
+    out[i] = h == 0 ? x_[i] : w.prev * xPrev_[i] + w.prevRate * fPrev[i] + w.end * x_[i] + w.endRate * f[i];
+}
+
+double Integrator::laneMaxAbs(const double* v, int lane, int width, Eigen::Index rows) {
+  double largest = 0;
+  for (Eigen::Index c = 0; c < rows; ++c) {
+    const double a = std::abs(v[c * width + lane]);
+    if (std::isnan(a)) return a;
+    largest = std::max(largest, a);
+  }
+  return largest;
+}
+
+void Integrator::stepLanes(const std::vector<char>&) {
+  throw std::logic_error("Integrator: this method does not step lanes on its own");
+}
+
+void Integrator::interpolateLane(int, double, Eigen::VectorXd&) const {
+  throw std::logic_error("Integrator: this method does not step lanes on its own");
+}
+
+bool Integrator::advanceLanesTo(double t, Eigen::VectorXd& out, const std::function<bool()>& stopRequested) {
+  const auto lanes = static_cast<std::size_t>(laneSteps_);
+  std::vector<char> behind(lanes);
+  for (;;) {
+    bool any = false;
+    for (std::size_t l = 0; l < lanes; ++l)
+      any |= behind[l] = direction_ * (laneTime_[l] - t) < 0;
+    if (!any) break;
+    if (stopRequested()) return false;
+    stepLanes(behind);
+  }
+  out.resize(x_.size());
+  for (int l = 0; l < laneSteps_; ++l) {
+    if (laneTime_[static_cast<std::size_t>(l)] == t)
+      for (Eigen::Index i = l; i < x_.size(); i += laneSteps_)
+        out[i] = x_[i];
+    else
+      interpolateLane(l, t, out);
+  }
+  // the integrator's own time: where the slowest lane stands (every lane at t or past it)
+  t_ = *std::min_element(laneTime_.begin(), laneTime_.end());
+  return true;
 }
 
 const IntegratorRegistry& IntegratorRegistry::global() {

@@ -32,8 +32,10 @@ public:
 
   /// Steps until time() reaches or passes t in the direction of integration, then writes the state at t into
   /// `out` (the step's end where it lands on t, else the dense output). False, writing nothing, when
-  /// `stopRequested()` is true before a step.
+  /// `stopRequested()` is true before a step. An adaptive method whose lanes step alone (stepLanesAlone)
+  /// steps each lane with steps of its own until that lane reaches or passes t, each lane as it would alone.
   template <class Stop> bool advanceTo(double t, Eigen::VectorXd& out, Stop&& stopRequested) {
+    if (laneSteps_ > 0) return advanceLanesTo(t, out, [&] { return stopRequested(); });
     while (direction_ * (t_ - t) < 0) {
       if (stopRequested()) return false;
       step();
@@ -59,12 +61,16 @@ public:
   /// depend on the points beside it. Call before start(); controlBy then counts the components of all lanes
   /// (c * width for c per orbit). False, changing nothing, where the method cannot: its steps would read the
   /// whole state (an error control, a step chosen from it). Rk4 steps orbits independently; Everhart at a
-  /// fixed step iterates each lane's corrector to that lane's convergence.
+  /// fixed step iterates each lane's corrector to that lane's convergence; an adaptive method that says yes
+  /// (merson) gives each lane its own step and time (takeLaneSteps): it is then advanced with advanceTo only.
   virtual bool stepLanesAlone(int width) {
     (void)width;
     return false;
   }
 
+  /// Whether its lanes take steps of their own (an adaptive method after stepLanesAlone): time() is then
+  /// where the slowest lane stands, and only advanceTo advances it.
+  bool lanesStepOnTheirOwn() const { return laneSteps_ > 0; }
   double time() const { return t_; }
   double previousTime() const { return tPrev_; }
   const Eigen::VectorXd& state() const { return x_; }
@@ -91,6 +97,22 @@ protected:
   void advanceCompensated(double h, const Eigen::VectorXd& increment, Eigen::VectorXd& compensation);
   /// Cubic Hermite interpolation on the last step from the states and derivatives at both ends.
   void hermite(double t, const Eigen::VectorXd& fPrev, const Eigen::VectorXd& f, Eigen::VectorXd& out) const;
+  /// For stepLanesAlone of an adaptive method: each of the `width` lanes takes steps of its own length from
+  /// start() on, with its own time (laneTime_, lanePrevious_). advanceTo then runs rounds of stepLanes until
+  /// every lane reaches or passes its target, and writes each lane's state there (interpolateLane).
+  void takeLaneSteps(int width) { laneSteps_ = width; }
+  /// One round of lane steps: each lane whose `behind` is set attempts one step of its own length (accepted
+  /// or not, as its error says); the others stand still. Throws as step() does.
+  virtual void stepLanes(const std::vector<char>& behind);
+  /// Lane `lane`'s state at t, in its last step, into its components of `out` (component c at c * width +
+  /// lane).
+  virtual void interpolateLane(int lane, double t, Eigen::VectorXd& out) const;
+  /// hermite() for one lane, each component computed as hermite() computes it.
+  void hermiteLane(int lane, double t, const Eigen::VectorXd& fPrev, const Eigen::VectorXd& f,
+                   Eigen::VectorXd& out) const;
+  /// The largest |v| of the first `rows` components of a lane (stride `width`); NaN where one is NaN (the
+  /// error of a step, the same on every path whatever the order the components come in).
+  static double laneMaxAbs(const double* v, int lane, int width, Eigen::Index rows);
   /// How many leading components of a state of `dimension` control the steps (controlBy).
   Eigen::Index controlled(Eigen::Index dimension) const {
     return controlled_ > 0 && controlled_ < dimension ? controlled_ : dimension;
@@ -102,6 +124,11 @@ protected:
   long evaluations_ = 0;
   int controlled_ = 0;
   Eigen::VectorXd x_, xPrev_;
+  int laneSteps_ = 0; ///< lanes stepped with steps of their own (takeLaneSteps); 0: one step for the state
+  std::vector<double> laneTime_, lanePrevious_; ///< each lane's time and its last step's start
+
+private:
+  bool advanceLanesTo(double t, Eigen::VectorXd& out, const std::function<bool()>& stopRequested);
 };
 
 /// Makes a fresh integrator of a run's method and settings: what tools that restart integrations take

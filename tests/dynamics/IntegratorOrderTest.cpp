@@ -6,6 +6,7 @@
 #include "dynamics/integrators/AdamsKernels.h"
 #include "dynamics/integrators/Everhart.h"
 #include "dynamics/integrators/EverhartKernels.h"
+#include "dynamics/integrators/LaneStages.h"
 #include "dynamics/integrators/Merson.h"
 #include "dynamics/integrators/Rk4.h"
 #include "dynamics/integrators/Verner9.h"
@@ -577,4 +578,49 @@ TEST(Everhart, ItsPassesGiveThePlainLoopsNumbersOnEveryPath) {
 }
 
 } // namespace
+
+// A stage on lanes with a step of each lane's own is, on every lane, the scalar method's vector expression
+// bit for bit: Merson's (h / 2) * (k1 - 3 * k3 + 4 * k4) added to x, and its error (h / 30) * (2 k1 - 9 k3 +
+// 8 k4 - k5), written with Eigen as Merson::step writes them, on widths that take the 8- and 4-wide packets,
+// both, and none, on every path this CPU runs.
+TEST(LaneStages, EachLaneIsTheScalarExpressionBitForBit) {
+  using lanes::Path;
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> any(-3, 3);
+  for (Path path : {Path::avx512, Path::avx2, Path::baseline}) {
+    if (!everhart::available(path)) continue;
+    for (int width : {1, 3, 4, 8, 12, 16}) {
+      const Eigen::Index rows = 7, d = rows * width;
+      std::vector<Eigen::VectorXd> k(4, Eigen::VectorXd(d));
+      Eigen::VectorXd x(d), h(width), stage(d), error(d);
+      for (auto* v : {&x, &k[0], &k[1], &k[2], &k[3]})
+        for (auto& e : *v)
+          e = any(random);
+      for (auto& e : h)
+        e = 0.01 * any(random);
+      const Eigen::VectorXd half = h / 2, thirtieth = h / 30;
+      const double* three[] = {k[0].data(), k[1].data(), k[2].data()};
+      const double* four[] = {k[0].data(), k[1].data(), k[2].data(), k[3].data()};
+      const double c3[] = {1, -3, 4}, c4[] = {2, -9, 8, -1};
+      lanes::stage(x.data(), half.data(), c3, three, 3, rows, width, stage.data(), path);
+      lanes::stage(nullptr, thirtieth.data(), c4, four, 4, rows, width, error.data(), path);
+      for (int l = 0; l < width; ++l) {
+        // lane l as a vector of its own, and the expressions as the scalar method writes them
+        const auto lane = [&](const Eigen::VectorXd& v) {
+          return Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd, 0, Eigen::InnerStride<>>(
+              v.data() + l, rows, Eigen::InnerStride<>(width)));
+        };
+        const Eigen::VectorXd k1 = lane(k[0]), k3 = lane(k[1]), k4 = lane(k[2]), k5 = lane(k[3]);
+        const double hl = h[l];
+        const Eigen::VectorXd expected = lane(x) + (hl / 2) * (k1 - 3 * k3 + 4 * k4);
+        const Eigen::VectorXd expectedError = (hl / 30) * (2 * k1 - 9 * k3 + 8 * k4 - k5);
+        for (Eigen::Index r = 0; r < rows; ++r) {
+          ASSERT_EQ(stage[r * width + l], expected[r]) << "width " << width << " lane " << l << " row " << r;
+          ASSERT_EQ(error[r * width + l], expectedError[r]) << "width " << width << " lane " << l;
+        }
+      }
+    }
+  }
+}
+
 } // namespace rv

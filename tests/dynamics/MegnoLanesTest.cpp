@@ -7,6 +7,7 @@
 #include "dynamics/core/LaneField.h"
 #include "dynamics/integrators/Adams.h"
 #include "dynamics/integrators/Everhart.h"
+#include "dynamics/integrators/Merson.h"
 #include "dynamics/integrators/Rk4.h"
 #include "tests/dynamics/LaneTestSupport.h"
 #include "tests/dynamics/TestModels.h"
@@ -49,9 +50,11 @@ struct OscillatorStack final : Model {
 // Integrator::stepLanesAlone is what lets a sweep put orbits on lanes and still write each orbit's own
 // numbers: a method that says yes gives each of K orbits integrated together the steps and the state of the
 // orbit integrated alone, bit for bit (orbits far apart and of different shapes: a method whose steps read
-// the whole state would step them differently -- everhart's corrector converges lane by lane). K = 2 and 6:
-// a small system and one large enough for rk4's AVX2 path (18 components: four registers and two left over)
-// against the alone runs' fixed-size path.
+// the whole state would step them differently -- everhart's corrector converges lane by lane, merson's error
+// and step are each lane's own). K = 2 and 6: a small system and one large enough for rk4's AVX2 path (18
+// components: four registers and two left over) against the alone runs' fixed-size path. Compared where
+// advanceTo lands, off the steps (the dense output) and after many steps; and step by step where the lanes
+// share one step (the time too).
 TEST(Lanes, AMethodThatStepsLanesAloneStepsEachOrbitAsAlone) {
   int saying = 0;
   for (const auto& entry : IntegratorRegistry::global().entries()) {
@@ -75,6 +78,18 @@ TEST(Lanes, AMethodThatStepsLanesAloneStepsEachOrbitAsAlone) {
       auto together = entry.create(values);
       ASSERT_TRUE(together->stepLanesAlone(k));
       together->start(stack, 0, all);
+      Eigen::VectorXd out, outAlone;
+      for (int j = 1; j <= 40; ++j) {
+        const double target = 0.137 * j;
+        ASSERT_TRUE(together->advanceTo(target, out, [] { return false; }));
+        for (int i = 0; i < k; ++i) {
+          alone[static_cast<std::size_t>(i)]->advanceTo(target, outAlone);
+          for (int c = 0; c < 3; ++c)
+            ASSERT_EQ(out[c * k + i], outAlone[c])
+                << "t = " << target << ", orbit " << i << " component " << c;
+        }
+      }
+      if (together->lanesStepOnTheirOwn()) continue; // each lane at a time of its own: advanceTo alone
       for (int step = 0; step < 200; ++step) {
         together->step();
         for (auto& a : alone) {
@@ -88,7 +103,7 @@ TEST(Lanes, AMethodThatStepsLanesAloneStepsEachOrbitAsAlone) {
               << "orbit " << i << " component " << c;
     }
   }
-  EXPECT_GE(saying, 3); // rk4, everhart, adams
+  EXPECT_GE(saying, 4); // rk4, everhart, adams, merson
   EXPECT_FALSE(Everhart(0.05, 15, 12, 1e-9).stepLanesAlone(4)) << "an adaptive step is one for all lanes";
 }
 
@@ -191,6 +206,11 @@ TEST(Lanes, MegnoWithEverhartIsTheScalarRunBitForBit) {
 // the stacked field, dynamics/core/OneLane.h)
 TEST(Lanes, MegnoWithAdamsIsTheScalarRunBitForBit) {
   expectMegnoOnLanesIsTheScalarRun([] { return std::make_unique<Adams>(0.02, 12); });
+}
+
+// each lane's step under its own error control: the orbits' step sequences differ, each the scalar run's
+TEST(Lanes, MegnoWithMersonIsTheScalarRunBitForBit) {
+  expectMegnoOnLanesIsTheScalarRun([] { return std::make_unique<Merson>(0.01, 1e-10, 1e-10, 0.1); });
 }
 
 TEST(Lanes, AnOrbitThatBlowsUpFailsAsItWouldAloneAndTheOthersKeepTheirAnswers) {

@@ -495,8 +495,8 @@ TEST(Sweep, LorenzExponentOverRhoOnLanesIsTheScalarOne) {
 // A sweep of lyapunov.max follows one tangent vector (ToolRunner::narrowTo): the largest exponent's vector is
 // advanced, projected and normalised without reading the others and the steps follow the orbit alone, so each
 // point is the first exponent of the whole spectrum, bit for bit -- with everhart, adams (its starter too),
-// rk4 (the fused loop) and the projection on the integrals' level; the stopping rule reads every exponent, so
-// with it the spectrum stays whole.
+// rk4 (the fused loop), merson (adaptive, a step per lane) and the projection on the integrals' level; the
+// stopping rule reads every exponent, so with it the spectrum stays whole.
 TEST(Sweep, TheLargestExponentAloneIsTheWholeSpectrumsFirstBitForBit) {
   const ToolEntry& lyapunov = ToolRegistry::global().get("lyapunov");
   const auto check = [&](const std::string& problem, json axes, json set, int exponents) {
@@ -532,6 +532,8 @@ TEST(Sweep, TheLargestExponentAloneIsTheWholeSpectrumsFirstBitForBit) {
   check("ellipsoid_on_plane", rattleback,
         {{"initial.state.M3", -0.3}, {"integrator.method", "rk4"}, {"integrator.step", 0.01}}, 6);
   check("ellipsoid_on_plane", rattleback, {{"initial.state.M3", -0.3}, {"lyapunov.renormalize", "yes"}}, 6);
+  // merson's steps: each lane's own, under its own error control
+  check("ellipsoid_on_plane", rattleback, {{"initial.state.M3", -0.3}, {"integrator.method", "merson"}}, 6);
   check("lorenz", json::array({axis("rho", 10, 28, 5)}), json::object(), 3);
   // where the stopping rule or the perturbed method reads every exponent, nothing is narrowed
   for (const json& set : {json{{"lyapunov.successes", 3}}, json{{"lyapunov.mode", "perturbed"}}}) {
