@@ -313,30 +313,6 @@ ToolResult runDiagram(const Scene& scene, const ToolControl&) {
 } // namespace
 
 namespace {
-// Sweep points go on lanes together (dynamics/core/Lanes.h) when their scenes differ only in the initial
-// state and the model's parameters: one tool, integrator and settings, each point with its own model.
-struct PointsOnLanes {
-  std::vector<const Model*> models;
-  std::vector<Eigen::VectorXd> starts;
-  RunSpec run;
-};
-std::optional<PointsOnLanes> pointsOnLanes(const std::vector<Scene>& scenes) {
-  const auto common = [](const Scene& s) {
-    nlohmann::json doc = s.document;
-    doc.erase("initial");
-    doc.erase("parameters");
-    return doc;
-  };
-  const nlohmann::json first = common(scenes.front());
-  PointsOnLanes p{.run = scenes.front().runSpec()};
-  for (const Scene& s : scenes) {
-    if (common(s) != first) return std::nullopt;
-    p.models.push_back(s.model.get());
-    p.starts.push_back(s.initialState);
-  }
-  return p;
-}
-
 // A tool's output `name` from its fields, where it is a number.
 std::optional<double> numberIn(const nlohmann::json& fields, const std::string& name) {
   const auto f = fields.find(name);

@@ -5,6 +5,7 @@
 #include "dynamics/tools/FixedPoint.h"
 #include "dynamics/tools/ToolRegistry.h"
 #include "dynamics/tools/ToolSettings.h"
+#include "dynamics/tools/TrajectoryLanes.h"
 #include "scenes/JsonFields.h"
 #include "scenes/SceneLoader.h"
 #include "scenes/SceneTools.h"
@@ -55,6 +56,110 @@ void integrateTo(const Scene& scene, double time, const ToolControl& control, On
     prev = integ->state();
     tPrev = integ->time();
   }
+}
+
+// What a trajectory quantity reads along one orbit: each step as integrateTo gives it, and its values at the
+// end. One reading per point, whether the point's orbit is integrated alone or on a lane beside others.
+struct OrbitReading {
+  std::function<void(double t0, const Eigen::VectorXd& x0, double t1, const Eigen::VectorXd& x1)> onStep;
+  std::function<std::vector<double>()> values;
+};
+using ReadingOf = OrbitReading (*)(const SweepSpec&, const Scene&);
+
+// observable.NAME: the value at the end, or the time average by the trapezoidal rule
+OrbitReading observableReading(const SweepSpec& sp, const Scene& s) {
+  struct Sums {
+    double sum = 0, last = 0;
+  };
+  const Observable& f = namedObservable(s, sp.quantityName);
+  const double time = sp.options->get("time");
+  const bool mean = sp.options->choice("statistic") == "mean";
+  auto sums = std::make_shared<Sums>();
+  sums->last = f.value(0, s.initialState.data());
+  return {[&f, sums](double t0, const Eigen::VectorXd& x0, double t1, const Eigen::VectorXd& x1) {
+            const double v = f.value(t1, x1.data());
+            sums->sum += 0.5 * (f.value(t0, x0.data()) + v) * (t1 - t0);
+            sums->last = v;
+          },
+          [sums, mean, time] { return std::vector<double>{mean ? sums->sum / time : sums->last}; }};
+}
+
+// reversal[.NAME]: whether the observable (the spin about the vertical) changed sign, when first (linear
+// interpolation in the step), and its value at the end
+OrbitReading reversalReading(const SweepSpec& sp, const Scene& s) {
+  struct Sign {
+    double start = 0, at = kNaN, end = 0;
+  };
+  const Observable& f = namedObservable(s, sp.quantityName.empty() ? "omega_vertical" : sp.quantityName);
+  auto sign = std::make_shared<Sign>();
+  sign->start = sign->end = f.value(0, s.initialState.data());
+  return {[&f, sign](double t0, const Eigen::VectorXd& x0, double t1, const Eigen::VectorXd& x1) {
+            const double a = f.value(t0, x0.data()), b = f.value(t1, x1.data());
+            if (std::isnan(sign->at) && sign->start != 0 && b * sign->start < 0)
+              sign->at = a == b ? t1 : t0 + (t1 - t0) * a / (a - b);
+            sign->end = b;
+          },
+          [sign] {
+            return std::vector<double>{std::isnan(sign->at) ? 0.0 : 1.0, sign->at, sign->end};
+          }};
+}
+
+// orbit: how many map points an orbit diagram's point computes (the transient, then those it keeps)
+long orbitLength(const SweepSpec& sp) {
+  return static_cast<long>(sp.options->get("transient")) + static_cast<long>(sp.options->get("orbit_points"));
+}
+
+// orbit: the kept points' coordinate options.coordinate; ComputationError where the map ended early
+std::vector<double> orbitValues(const SweepSpec& sp, const std::vector<MapPoint>& points) {
+  if (static_cast<long>(points.size()) < orbitLength(sp))
+    throw ComputationError(fmt::format("the map ended after {} points", points.size()));
+  const auto skip = static_cast<std::size_t>(sp.options->get("transient"));
+  const auto k = static_cast<std::size_t>(sp.options->get("coordinate"));
+  std::vector<double> v;
+  for (std::size_t n = skip; n < points.size(); ++n)
+    v.push_back(k < points[n].coordinates.size() ? points[n].coordinates[k] : kNaN);
+  return v;
+}
+
+// a trajectory quantity at one point: its scene's orbit to options.time, read
+auto alongTheOrbit(ReadingOf reading) {
+  return [reading](const SweepSpec& sp, const Scene& s, const ToolControl& c) {
+    const OrbitReading r = reading(sp, s);
+    integrateTo(s, sp.options->get("time"), c, r.onStep);
+    return r.values();
+  };
+}
+
+// a trajectory quantity at several points at once, their orbits on SIMD lanes (dynamics/tools/
+// TrajectoryLanes.h): each lane's steps are its orbit's alone, bit for bit, so each reading is the one-at-a-
+// time one; a failed step sends the points to be integrated alone (where each fails, or not, as alone)
+auto alongTheOrbitsOnLanes(ReadingOf reading) {
+  return [reading](const SweepSpec& sp, const std::vector<Scene>& scenes,
+                   const ToolControl& c) -> std::optional<std::vector<LaneValues>> {
+    const auto points = pointsOnLanes(scenes);
+    if (!points) return std::nullopt;
+    const IntegratorFactory make = [&] { return points->run.makeIntegrator(*points->models.front()); };
+    if (!trajectoriesRunOnLanes(points->models, make)) return std::nullopt;
+    std::vector<OrbitReading> readings;
+    readings.reserve(scenes.size());
+    for (const Scene& s : scenes)
+      readings.push_back(reading(sp, s));
+    const auto onStep = [&](int lane, double t0, const Eigen::VectorXd& x0, double t1,
+                            const Eigen::VectorXd& x1) {
+      readings[static_cast<std::size_t>(lane)].onStep(t0, x0, t1, x1);
+    };
+    try {
+      if (!integrateOnLanes(points->models, make, points->starts, sp.options->get("time"), c, onStep))
+        throw Stopped{};
+    } catch (const ComputationError&) {
+      return std::nullopt;
+    }
+    std::vector<LaneValues> values;
+    values.reserve(readings.size());
+    for (const OrbitReading& r : readings)
+      values.push_back({r.values(), nullptr});
+    return values;
+  };
 }
 
 std::vector<double> lyapunovExponents(const Scene& scene, const ToolControl& control) {
@@ -146,40 +251,17 @@ std::vector<SweepQuantity> makeQuantities() {
        "observable.NAME: the observable's value at options.time, or its time average over [0, time] "
        "(options.statistic)",
        [](const SweepSpec& sp) { return std::vector<std::string>{sp.quantity->id + sp.quantityName}; },
-       [](const SweepSpec& sp, const Scene& s, const ToolControl& c) {
-         const Observable& f = namedObservable(s, sp.quantityName);
-         const double time = sp.options->get("time");
-         const bool mean = sp.options->choice("statistic") == "mean";
-         double sum = 0, last = f.value(0, s.initialState.data());
-         integrateTo(s, time, c,
-                     [&](double t0, const Eigen::VectorXd& x0, double t1, const Eigen::VectorXd& x1) {
-                       const double v = f.value(t1, x1.data());
-                       sum += 0.5 * (f.value(t0, x0.data()) + v) * (t1 - t0); // the trapezoidal rule
-                       last = v;
-                     });
-         return std::vector<double>{mean ? sum / time : last};
-       }});
+       alongTheOrbit(observableReading)});
+  q.back().evaluateLanes = alongTheOrbitsOnLanes(observableReading);
   q.push_back({"reversal", "",
                "reversal[.NAME]: whether the spin about the vertical (or the observable NAME) changed sign "
                "within options.time (1/0), when it first did (linear interpolation) and its value at the end",
                [](const SweepSpec&) {
                  return std::vector<std::string>{"reversed", "reversal_at", "spin_end"};
                },
-               [](const SweepSpec& sp, const Scene& s, const ToolControl& c) {
-                 const Observable& f =
-                     namedObservable(s, sp.quantityName.empty() ? "omega_vertical" : sp.quantityName);
-                 const double s0 = f.value(0, s.initialState.data());
-                 double at = kNaN, end = s0;
-                 integrateTo(s, sp.options->get("time"), c,
-                             [&](double t0, const Eigen::VectorXd& x0, double t1, const Eigen::VectorXd& x1) {
-                               const double a = f.value(t0, x0.data()), b = f.value(t1, x1.data());
-                               if (std::isnan(at) && s0 != 0 && b * s0 < 0)
-                                 at = a == b ? t1 : t0 + (t1 - t0) * a / (a - b);
-                               end = b;
-                             });
-                 return std::vector<double>{std::isnan(at) ? 0.0 : 1.0, at, end};
-               },
+               alongTheOrbit(reversalReading),
                /*needsMap=*/false, /*cloud=*/false, /*optionalName=*/true});
+  q.back().evaluateLanes = alongTheOrbitsOnLanes(reversalReading);
   q.back().categorical = true; // refined where it reverses or not
   q.push_back({"orbit", "poincare",
                "an orbit diagram: the last options.orbit_points points (after options.transient) of the map "
@@ -194,22 +276,46 @@ std::vector<SweepQuantity> makeQuantities() {
                  return cols;
                },
                [](const SweepSpec& sp, const Scene& s, const ToolControl& c) {
-                 const long keep = static_cast<long>(sp.options->get("orbit_points"));
-                 const long skip = static_cast<long>(sp.options->get("transient"));
-                 const auto map = scenePoincareMap(s, skip + keep);
-                 const auto k = static_cast<std::size_t>(sp.options->get("coordinate"));
-                 std::vector<double> v;
-                 for (long n = 0; n < skip + keep; ++n) {
-                   const auto p = map->next(c);
+                 const auto map = scenePoincareMap(s, orbitLength(sp));
+                 std::vector<MapPoint> points;
+                 for (long n = 0; n < orbitLength(sp); ++n) {
+                   auto p = map->next(c);
                    if (!p) {
                      if (c.stopRequested()) throw Stopped{};
-                     throw ComputationError(fmt::format("the map ended after {} points", n));
+                     break; // the map ended: orbitValues says so
                    }
-                   if (n >= skip) v.push_back(k < p->coordinates.size() ? p->coordinates[k] : kNaN);
+                   points.push_back(std::move(*p));
                  }
-                 return v;
+                 return orbitValues(sp, points);
                },
                /*needsMap=*/true, /*cloud=*/true});
+  // a flow's orbits on lanes, their crossings located lane by lane (dynamics/tools/TrajectoryLanes.h)
+  q.back().evaluateLanes = [](const SweepSpec& sp, const std::vector<Scene>& scenes,
+                              const ToolControl& c) -> std::optional<std::vector<LaneValues>> {
+    const auto points = pointsOnLanes(scenes);
+    if (!points) return std::nullopt;
+    const IntegratorFactory make = [&] { return points->run.makeIntegrator(*points->models.front()); };
+    if (!trajectoriesRunOnLanes(points->models, make)) return std::nullopt;
+    SectionSettings settings = scenes.front().poincare;
+    settings.maxPoints = orbitLength(sp);
+    std::optional<std::vector<std::vector<MapPoint>>> orbits;
+    try {
+      orbits = mapPointsOnLanes(points->models, make, points->starts, settings, c);
+    } catch (const ComputationError&) {
+      return std::nullopt; // each alone, failing or not as alone
+    }
+    if (!orbits) throw Stopped{};
+    std::vector<LaneValues> values;
+    for (const auto& orbit : *orbits) {
+      values.emplace_back();
+      try {
+        values.back().values = orbitValues(sp, orbit);
+      } catch (const ComputationError&) {
+        values.back().failure = std::current_exception();
+      }
+    }
+    return values;
+  };
   // the numbers of every tool that runs through scenes/ToolRunner.h (a module's too): "TOOL.OUTPUT" or the
   // output's own quantity name
   for (const auto& tool : ToolRegistry::global().entries()) {
@@ -530,6 +636,24 @@ SweepRecord evaluateSweepPoint(const SweepSpec& spec, long index, const ToolCont
 int sweepBatch(const SweepSpec& spec) {
   if (!spec.quantity->evaluateLanes) return 1;
   return spec.lanes == 0 ? laneWidth() : spec.lanes;
+}
+
+std::optional<PointsOnLanes> pointsOnLanes(const std::vector<Scene>& scenes) {
+  const auto common = [](const Scene& s) {
+    nlohmann::json doc = s.document;
+    doc.erase("initial");
+    doc.erase("parameters");
+    return doc;
+  };
+  if (scenes.empty()) return std::nullopt;
+  const nlohmann::json first = common(scenes.front());
+  PointsOnLanes p{.run = scenes.front().runSpec()};
+  for (const Scene& s : scenes) {
+    if (common(s) != first) return std::nullopt;
+    p.models.push_back(s.model.get());
+    p.starts.push_back(s.initialState);
+  }
+  return p;
 }
 
 std::vector<SweepRecord> evaluateSweepPoints(const SweepSpec& spec, const std::vector<long>& indices,

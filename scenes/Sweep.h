@@ -49,6 +49,17 @@ void addLanesEvaluator(const std::string& id, LanesEvaluator evaluate);
 /// Tool `id`'s batch evaluation on lanes, or nullptr.
 const LanesEvaluator* findLanesEvaluator(const std::string& id);
 
+/// Grid points that go on lanes together: each point's model and initial state, and their common method and
+/// settings.
+struct PointsOnLanes {
+  std::vector<const Model*> models;
+  std::vector<Eigen::VectorXd> starts;
+  RunSpec run;
+};
+/// The points of `scenes` where they may go on lanes together: their scenes differ only in the initial state
+/// and the model's parameters (one problem, method and settings; each point its own model); else nothing.
+std::optional<PointsOnLanes> pointsOnLanes(const std::vector<Scene>& scenes);
+
 /// A number per grid point, computed by a registered tool (ToolRegistry id `tool`).
 struct SweepQuantity {
   std::string id;          ///< as written in a sweep file; a trailing '.' takes a name ("observable.")

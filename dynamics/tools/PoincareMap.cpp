@@ -92,8 +92,8 @@ SectionSettings poincareSettings(const ParameterValues& v, std::string observabl
   return s;
 }
 
-PoincareMap::PoincareMap(const Model& model, std::unique_ptr<Integrator> integrator, SectionSettings settings)
-    : model_(model), integ_(std::move(integrator)), s_(std::move(settings)) {
+SectionCrossings::SectionCrossings(const Model& model, SectionSettings settings)
+    : model_(model), s_(std::move(settings)) {
   if (s_.order < 1) throw InputError("poincare: the map order must be at least 1");
   const auto& obs = model.observables();
   const auto find = [&](const std::string& id) -> const Observable* {
@@ -113,98 +113,123 @@ PoincareMap::PoincareMap(const Model& model, std::unique_ptr<Integrator> integra
         names_.push_back(model.info().stateNames[i]);
   for (const auto& n : names_)
     coords_.push_back(find(n));
-  last_ = integ_->state();
-  work_.resize(last_.size());
-  sigma_ = section_ ? sectionFunction(integ_->time(), integ_->state()) : 0;
+}
+
+void SectionCrossings::start(double t, const Eigen::VectorXd& x) {
+  last_ = x;
+  work_.resize(x.size());
+  sigma_ = section_ ? sectionFunction(t, x) : 0;
   startOnSection_ = section_ && std::abs(sigma_) < 1e-9;
 }
 
-double PoincareMap::sectionFunction(double t, const Eigen::VectorXd& x) const {
+double SectionCrossings::sectionFunction(double t, const Eigen::VectorXd& x) const {
   const double v = section_->value(t, x.data()) - s_.value;
   return section_->angle ? std::sin(v) : v;
 }
 
-bool PoincareMap::acceptable(double t, const Eigen::VectorXd& x) const {
+bool SectionCrossings::acceptable(double t, const Eigen::VectorXd& x) const {
   if (section_->angle && std::cos(section_->value(t, x.data()) - s_.value) < 0) return false; // the far side
   return true;
 }
 
-std::vector<double> PoincareMap::coordinatesOf(double t, const Eigen::VectorXd& x) const {
+std::vector<double> SectionCrossings::coordinatesOf(double t, const Eigen::VectorXd& x) const {
   std::vector<double> c;
   for (const Observable* o : coords_)
     c.push_back(o->value(t, x.data()));
   return c;
 }
 
+std::optional<MapPoint> SectionCrossings::afterStep(double tPrevious, double t, const Eigen::VectorXd& x,
+                                                    int direction, const Interpolate& interpolate) {
+  if (model_.isMap()) {
+    work_ = x;
+  } else {
+    const double sigmaBefore = sigma_;
+    sigma_ = sectionFunction(t, x);
+    // a crossing in the requested direction of time-forward motion (the sign flips when integrating
+    // backward)
+    const double rising = direction * (sigma_ - sigmaBefore);
+    const bool crossed = (sigmaBefore < 0) != (sigma_ < 0) && sigmaBefore != 0;
+    const bool leaving = startOnSection_;
+    startOnSection_ = false;
+    // a point started on the section (a map point) must not count as its own first return
+    if (!crossed || leaving || (s_.checkDirection && rising * s_.direction <= 0)) return std::nullopt;
+    // Illinois regula falsi on the dense output
+    double a = tPrevious, b = t, fa = sigmaBefore, fb = sigma_;
+    int side = 0;
+    for (int it = 0; it < 200 && std::abs(b - a) > s_.accuracy; ++it) {
+      double c = (a * fb - b * fa) / (fb - fa);
+      if (!(std::min(a, b) < c && c < std::max(a, b))) c = 0.5 * (a + b);
+      interpolate(c, work_);
+      const double fc = sectionFunction(c, work_);
+      if (fc == 0) {
+        a = b = c;
+        break;
+      }
+      if ((fc < 0) == (fb < 0)) {
+        b = c, fb = fc;
+        if (side == -1) fa /= 2;
+        side = -1;
+      } else {
+        a = c, fa = fc;
+        if (side == +1) fb /= 2;
+        side = +1;
+      }
+    }
+    t = std::abs(fa) < std::abs(fb) ? a : b;
+    interpolate(t, work_);
+    if (!acceptable(t, work_)) return std::nullopt;
+  }
+  ++crossings_;
+  if (crossings_ % s_.order != 0) return std::nullopt;
+  const int sheet = s_.manySheeted ? model_.sheetOf(work_, {.sectionValue = s_.value, .root = s_.root}) : 0;
+  if (s_.manySheeted && sheet != s_.root) return std::nullopt;
+  ++points_;
+  last_ = work_;
+  return MapPoint{coordinatesOf(t, work_), t, sheet};
+}
+
+void SectionCrossings::save(Snapshot& s) const {
+  s.put(sigma_), s.put(startOnSection_ ? 1 : 0), s.put(static_cast<double>(crossings_));
+  s.put(static_cast<double>(points_)), s.put(last_);
+}
+
+void SectionCrossings::restore(Snapshot& s) {
+  sigma_ = s.get(), startOnSection_ = s.get() != 0, crossings_ = s.getLong(), points_ = s.getLong();
+  s.get(last_);
+}
+
+PoincareMap::PoincareMap(const Model& model, std::unique_ptr<Integrator> integrator, SectionSettings settings)
+    : integ_(std::move(integrator)), s_(settings), crossings_(model, std::move(settings)) {
+  crossings_.start(integ_->time(), integ_->state());
+}
+
 std::optional<MapPoint> PoincareMap::next(const ToolControl& control) {
-  const MapPointSpec spec{.sectionValue = s_.value, .root = s_.root};
   const int dir = integ_->direction();
-  while (s_.maxPoints <= 0 || points_ < s_.maxPoints) {
+  const SectionCrossings::Interpolate interpolate = [this](double t, Eigen::VectorXd& out) {
+    integ_->interpolate(t, out);
+  };
+  while (s_.maxPoints <= 0 || crossings_.points() < s_.maxPoints) {
     if (control.stopRequested() || dir * integ_->time() >= s_.maxTime) return std::nullopt;
     integ_->step();
     if (observer_) observer_(*integ_);
-    double t = integ_->time();
-    if (model_.isMap()) {
-      work_ = integ_->state();
-    } else {
-      const double sigmaBefore = sigma_;
-      sigma_ = sectionFunction(t, integ_->state());
-      // a crossing in the requested direction of time-forward motion (the sign flips when integrating
-      // backward)
-      const double rising = dir * (sigma_ - sigmaBefore);
-      const bool crossed = (sigmaBefore < 0) != (sigma_ < 0) && sigmaBefore != 0;
-      const bool leaving = startOnSection_;
-      startOnSection_ = false;
-      // a point started on the section (a map point) must not count as its own first return
-      if (!crossed || leaving || (s_.checkDirection && rising * s_.direction <= 0)) continue;
-      // Illinois regula falsi on the dense output
-      double a = integ_->previousTime(), b = t, fa = sigmaBefore, fb = sigma_;
-      int side = 0;
-      for (int it = 0; it < 200 && std::abs(b - a) > s_.accuracy; ++it) {
-        double c = (a * fb - b * fa) / (fb - fa);
-        if (!(std::min(a, b) < c && c < std::max(a, b))) c = 0.5 * (a + b);
-        integ_->interpolate(c, work_);
-        const double fc = sectionFunction(c, work_);
-        if (fc == 0) {
-          a = b = c;
-          break;
-        }
-        if ((fc < 0) == (fb < 0)) {
-          b = c, fb = fc;
-          if (side == -1) fa /= 2;
-          side = -1;
-        } else {
-          a = c, fa = fc;
-          if (side == +1) fb /= 2;
-          side = +1;
-        }
-      }
-      t = std::abs(fa) < std::abs(fb) ? a : b;
-      integ_->interpolate(t, work_);
-      if (!acceptable(t, work_)) continue;
-    }
-    ++crossings_;
-    if (crossings_ % s_.order != 0) continue;
-    const int sheet = s_.manySheeted ? model_.sheetOf(work_, spec) : 0;
-    if (s_.manySheeted && sheet != s_.root) continue;
-    ++points_;
-    last_ = work_;
-    if (s_.maxPoints > 0) control.progress(static_cast<double>(points_) / s_.maxPoints);
-    return MapPoint{coordinatesOf(t, work_), t, sheet};
+    auto point =
+        crossings_.afterStep(integ_->previousTime(), integ_->time(), integ_->state(), dir, interpolate);
+    if (!point) continue;
+    if (s_.maxPoints > 0) control.progress(static_cast<double>(crossings_.points()) / s_.maxPoints);
+    return point;
   }
   return std::nullopt;
 }
 
 void PoincareMap::save(Snapshot& s) const {
   integ_->save(s);
-  s.put(sigma_), s.put(startOnSection_ ? 1 : 0), s.put(static_cast<double>(crossings_));
-  s.put(static_cast<double>(points_)), s.put(last_);
+  crossings_.save(s);
 }
 
 void PoincareMap::restore(Snapshot& s) {
   integ_->restore(s);
-  sigma_ = s.get(), startOnSection_ = s.get() != 0, crossings_ = s.getLong(), points_ = s.getLong();
-  s.get(last_);
+  crossings_.restore(s);
 }
 
 } // namespace rv

@@ -43,6 +43,45 @@ struct MapPoint {
       0; ///< the sheet (root of the completion) in many-sheeted mode; 0: not determined (it can be costly)
 };
 
+/// The crossings of one orbit with a section, found step by step from the steps an integrator takes: what a
+/// PoincareMap integrates for, and what orbits integrated side by side on SIMD lanes find lane by lane
+/// (dynamics/tools/TrajectoryLanes.h) -- the same points, bit for bit, from the same steps.
+class SectionCrossings {
+public:
+  /// Throws InputError for an unknown section or an order below 1.
+  SectionCrossings(const Model& model, SectionSettings settings);
+  /// The orbit's first state: a start on the section is not its own first return.
+  void start(double t, const Eigen::VectorXd& x);
+  /// The step's dense output: the state at t in the last step.
+  using Interpolate = std::function<void(double t, Eigen::VectorXd& out)>;
+  /// After a step from tPrevious to t that ends at state x, integrating in `direction` (+1, -1): the point
+  /// where it crosses the section, if the settings keep it (its direction, order and sheet).
+  std::optional<MapPoint> afterStep(double tPrevious, double t, const Eigen::VectorXd& x, int direction,
+                                    const Interpolate& interpolate);
+  const std::vector<std::string>& coordinateNames() const { return names_; }
+  /// The map coordinates of a state.
+  std::vector<double> coordinatesOf(double t, const Eigen::VectorXd& x) const;
+  /// The full state at the last point kept.
+  const Eigen::VectorXd& lastState() const { return last_; }
+  /// How many points it has kept.
+  long points() const { return points_; }
+  void save(Snapshot& s) const;
+  void restore(Snapshot& s);
+
+private:
+  double sectionFunction(double t, const Eigen::VectorXd& x) const;
+  bool acceptable(double t, const Eigen::VectorXd& x) const;
+  const Model& model_;
+  SectionSettings s_;
+  const Observable* section_ = nullptr;
+  std::vector<const Observable*> coords_;
+  std::vector<std::string> names_;
+  Eigen::VectorXd last_, work_;
+  double sigma_ = 0;
+  bool startOnSection_ = false; ///< a start on the section is not a crossing
+  long crossings_ = 0, points_ = 0;
+};
+
 class PoincareMap {
 public:
   /// `integrator` must be started (at the trajectory's first point). Throws InputError for an unknown
@@ -51,10 +90,10 @@ public:
   /// The next point kept by the settings; nothing when stopped, at maxTime or after maxPoints points.
   std::optional<MapPoint> next(const ToolControl& control = {});
   /// Names of the map coordinates (the model's, or its core state for systems without them).
-  const std::vector<std::string>& coordinateNames() const { return names_; }
+  const std::vector<std::string>& coordinateNames() const { return crossings_.coordinateNames(); }
   /// The full state at the last point returned.
-  const Eigen::VectorXd& lastState() const { return last_; }
-  long points() const { return points_; }
+  const Eigen::VectorXd& lastState() const { return crossings_.lastState(); }
+  long points() const { return crossings_.points(); }
   const Integrator& integrator() const { return *integ_; }
   /// Called after every step of the integrator (the filters fed by a running map, manual §2.4); the
   /// observer runs on the caller's thread, inside next().
@@ -64,21 +103,14 @@ public:
   void save(Snapshot& s) const;
   void restore(Snapshot& s);
   /// The map coordinates of a state.
-  std::vector<double> coordinatesOf(double t, const Eigen::VectorXd& x) const;
+  std::vector<double> coordinatesOf(double t, const Eigen::VectorXd& x) const {
+    return crossings_.coordinatesOf(t, x);
+  }
 
 private:
-  double sectionFunction(double t, const Eigen::VectorXd& x) const;
-  bool acceptable(double t, const Eigen::VectorXd& x) const;
-  const Model& model_;
   std::unique_ptr<Integrator> integ_;
   SectionSettings s_;
-  const Observable* section_ = nullptr;
-  std::vector<const Observable*> coords_;
-  std::vector<std::string> names_;
-  Eigen::VectorXd last_, work_;
-  double sigma_ = 0;
-  bool startOnSection_ = false; ///< a start on the section is not a crossing
-  long crossings_ = 0, points_ = 0;
+  SectionCrossings crossings_;
   std::function<void(const Integrator&)> observer_;
 };
 

@@ -2,8 +2,10 @@
 #pragma once
 #include "dynamics/core/LaneField.h"
 #include "dynamics/core/Model.h"
+#include "tests/dynamics/TestSupport.h"
 
 #include <gtest/gtest.h>
+#include <memory>
 #include <random>
 #include <string>
 #include <vector>
@@ -36,6 +38,23 @@ inline void expectKernelRhsIsEachModelAlone(const LaneKernel& kernel, const std:
     for (int i = 0; i < m * k; ++i)
       EXPECT_EQ(out[at(n + i, l)], dV[i]) << what << ", k = " << k << ", lane " << l << " JV" << i;
   }
+}
+
+/// Rattlebacks of eight shapes and turns (b2, psi): the sweep ellipsoid_lyapunov.json's points.
+inline std::vector<std::unique_ptr<Model>> rattlebacks() {
+  std::vector<std::unique_ptr<Model>> models;
+  for (int l = 0; l < 8; ++l)
+    models.push_back(makeModel("ellipsoid_on_plane", {{"b2", 0.3 + 0.12 * l}, {"psi", -0.3 + 0.08 * l}}));
+  return models;
+}
+
+/// The first `count` of `models` (all of them: -1), as the lanes' models.
+inline std::vector<const Model*> pointers(const std::vector<std::unique_ptr<Model>>& models,
+                                          long count = -1) {
+  std::vector<const Model*> p;
+  for (const auto& m : models)
+    if (count < 0 || static_cast<long>(p.size()) < count) p.push_back(m.get());
+  return p;
 }
 
 } // namespace rv::test

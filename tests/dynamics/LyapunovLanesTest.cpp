@@ -32,12 +32,8 @@ std::vector<std::unique_ptr<Model>> lorenzAt(const std::vector<double>& rhos) {
   return models;
 }
 
-std::vector<const Model*> pointers(const std::vector<std::unique_ptr<Model>>& models) {
-  std::vector<const Model*> p;
-  for (const auto& m : models)
-    p.push_back(m.get());
-  return p;
-}
+using test::pointers;
+using test::rattlebacks;
 
 TEST(LyapunovLanes, KernelsWithAModelPerLaneEqualEachModelAloneBitForBit) {
   const auto all = lorenzAt({0.5, 13.9, 28, 250, 1, 24.5, 99, 160});
@@ -174,15 +170,6 @@ TEST(LyapunovLanes, WhatCannotGoOnLanesSaysSo) {
   EXPECT_FALSE(lyapunovRunsOnLanes({models[0].get(), hh.get()}, rk4, {})) << "two classes";
   const auto map = test::makeModel("standard_map", {});
   EXPECT_FALSE(lyapunovRunsOnLanes({map.get()}, rk4, {})) << "a map";
-}
-
-// rattlebacks of eight shapes and turns (b2, psi): the sweep ellipsoid_lyapunov.json's points
-std::vector<std::unique_ptr<Model>> rattlebacks() {
-  std::vector<std::unique_ptr<Model>> models;
-  for (int l = 0; l < 8; ++l)
-    models.push_back(
-        test::makeModel("ellipsoid_on_plane", {{"b2", 0.3 + 0.12 * l}, {"psi", -0.3 + 0.08 * l}}));
-  return models;
 }
 
 // the lane kernels of the first 4 and of all 8 models, with 1, 3 and 6 tangent directions, against each alone

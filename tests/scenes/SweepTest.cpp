@@ -12,8 +12,10 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <atomic>
+#include <bit>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <gtest/gtest.h>
 #include <numeric>
 #include <thread>
@@ -549,6 +551,89 @@ TEST(Sweep, TheLargestExponentAloneIsTheWholeSpectrumsFirstBitForBit) {
   Scene scene = sweepPointScene(sum, 0);
   if (sum.quantity->narrow) sum.quantity->narrow(scene);
   EXPECT_EQ(scene.lyapunov.count, 0);
+}
+
+// The trajectory quantities (observable.NAME, reversal) on lanes: a batch of points' orbits integrated at
+// once (dynamics/tools/TrajectoryLanes.h) gives each point the one-at-a-time values bit for bit -- the
+// rattleback's reversal over its spin and misalignment (a model per lane), an observable's end value and time
+// average, with everhart and rk4; the batches do run on lanes (the quantity's evaluateLanes answers).
+TEST(Sweep, TrajectoryQuantitiesOnLanesAreOneAtATimeBitForBit) {
+  const json axes = json::array({axis("initial.state.M3", -0.5, 0.5, 3), axis("psi", -0.3, 0.3, 3)});
+  std::vector<std::vector<double>> reversal; // the reversal chart's values
+  const auto check = [&](const std::string& quantity, json set, json options) {
+    options["time"] = 60;
+    std::vector<std::vector<double>> values[2];
+    std::vector<std::vector<std::uint64_t>> bits[2]; // compared bit for bit, NaN (no reversal) included
+    for (int k = 0; k < 2; ++k) {
+      options["lanes"] = k == 0 ? 1 : laneWidth();
+      const SweepSpec s = sweepFromJson(sweep("ellipsoid_on_plane", axes, quantity, set, options), "sw.json");
+      ASSERT_TRUE(s.quantity->evaluateLanes) << quantity;
+      std::vector<long> all(static_cast<std::size_t>(s.points()));
+      std::iota(all.begin(), all.end(), 0L);
+      for (const SweepRecord& r : evaluateSweepPoints(s, all, {})) {
+        ASSERT_TRUE(r.ok) << quantity << ": " << r.reason;
+        values[k].push_back(r.values);
+        bits[k].emplace_back();
+        for (double v : r.values)
+          bits[k].back().push_back(std::bit_cast<std::uint64_t>(v));
+      }
+      if (k == 1) {
+        std::vector<Scene> scenes;
+        for (long i = 0; i < 4; ++i)
+          scenes.push_back(sweepPointScene(s, i));
+        EXPECT_TRUE(s.quantity->evaluateLanes(s, scenes, {}).has_value()) << quantity << ": not on lanes";
+      }
+    }
+    EXPECT_EQ(bits[1], bits[0]) << quantity << " " << set.dump();
+    if (quantity == "reversal") reversal = values[0];
+  };
+  check("reversal", json::object(), json::object());
+  int reversed = 0;
+  for (const auto& v : reversal)
+    reversed += v[0] == 1;
+  EXPECT_GT(reversed, 0);
+  EXPECT_LT(reversed, 9) << "the chart should hold both regimes";
+  check("reversal", {{"integrator.method", "rk4"}, {"integrator.step", 0.01}}, json::object());
+  check("observable.M3", json::object(), json::object());
+  check("observable.M3", json::object(), {{"statistic", "mean"}});
+}
+
+// An orbit diagram of a flow on lanes: the Lorenz system's map points on z = 27 over rho (a parameter per
+// lane), the crossings located lane by lane, each point's row the one-at-a-time one bit for bit; and a map
+// that ends early (max_time) fails on its lane as alone.
+TEST(Sweep, AnOrbitDiagramOfAFlowOnLanesIsOneAtATimeBitForBit) {
+  const json axes = json::array({axis("rho", 24, 30, 7)});
+  for (const json& set : {json{{"poincare.points", 2000}}, json{{"poincare.max_time", 20}}}) {
+    std::vector<SweepRecord> records[2];
+    for (int k = 0; k < 2; ++k) {
+      const json options{{"lanes", k == 0 ? 1 : laneWidth()}, {"orbit_points", 20}, {"transient", 10}};
+      const SweepSpec s = sweepFromJson(sweep("lorenz", axes, "orbit", set, options), "sw.json");
+      std::vector<long> all(static_cast<std::size_t>(s.points()));
+      std::iota(all.begin(), all.end(), 0L);
+      records[k] = evaluateSweepPoints(s, all, {});
+      if (k == 1) {
+        std::vector<Scene> scenes;
+        for (long i = 0; i < 4; ++i)
+          scenes.push_back(sweepPointScene(s, i));
+        EXPECT_TRUE(s.quantity->evaluateLanes(s, scenes, {}).has_value()) << "not on lanes";
+      }
+    }
+    ASSERT_EQ(records[0].size(), 7u);
+    for (std::size_t i = 0; i < records[0].size(); ++i) {
+      EXPECT_EQ(records[1][i].ok, records[0][i].ok) << set.dump() << " point " << i;
+      EXPECT_EQ(records[1][i].reason, records[0][i].reason) << set.dump() << " point " << i;
+      if (records[0][i].ok) {
+        EXPECT_EQ(records[1][i].values, records[0][i].values) << set.dump() << " point " << i;
+        EXPECT_EQ(records[0][i].values.size(), 20u);
+      }
+    }
+    // the points: on the section's far lobe or the near one, never at the origin's height
+    if (records[0][0].ok) {
+      for (double x : records[0][0].values)
+        EXPECT_GT(std::abs(x), 1);
+    }
+    EXPECT_EQ(records[0][0].ok, !set.contains("poincare.max_time")) << records[0][0].reason;
+  }
 }
 
 } // namespace
