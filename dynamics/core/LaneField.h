@@ -33,8 +33,8 @@ public:
   /// f(x) and J(x) V for k tangent vectors at W states at once, component-major: x[c * W + l] for the n
   /// state components and then the m core components of each vector, vector after vector (m = coreDimension;
   /// TangentSystem's layout, lane by lane), out likewise (f, then J V). Lane l computes with the l-th model:
-  /// each lane is what Model::tangentRhs gives alone, bit for bit. False, changing nothing, where k is
-  /// outside the fixed counts (as tangentRk4).
+  /// each lane is what Model::tangentRhs gives alone, bit for bit. k = 0: f alone, each lane Model::rhs's.
+  /// False, changing nothing, where k is outside the fixed counts (as tangentRk4).
   virtual bool tangentRhs(const double* x, int k, double* out) const = 0;
   /// Advances W orbits, each with k tangent vectors in core coordinates, by `steps` classical RK4 steps of h:
   /// y holds, component-major (y[j * W + l]), each lane's state laid out as TangentSystem's (x,

@@ -13,6 +13,7 @@
 #include "dynamics/core/HeldScalar.h"
 
 #include <Eigen/Core>
+#include <array>
 #include <cmath>
 #include <string>
 #include <type_traits>
@@ -131,7 +132,7 @@ template <int W> LaneVector<W> log(const LaneVector<W>& a) {
 /// A constant is a double, or one value per lane (a coefficient that differs between lanes).
 template <class T, int K = 1> struct Jet {
   T v;
-  T d[K];
+  std::array<T, K> d; ///< none for K = 0: the value alone (a plain field on lanes)
   /// Uninitialised, as AutoDiffScalar: a jet of 8 lanes and 6 directions is 448 bytes, which a field's
   /// temporaries would otherwise zero each time before their values are written.
   Jet() = default;

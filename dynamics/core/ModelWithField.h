@@ -196,14 +196,8 @@ private:
     Kernel(const ModelWithField& model, const C& coefficients) : model_(model), coefficients_(coefficients) {}
     int width() const override { return W; }
     bool tangentRhs(const double* x, int k, double* out) const override {
-      return withFixedVectors(k, [&]<int K>() {
-        if constexpr (W == 8) {
-          if (cpuHasAvx512()) return rhsAvx512<K>(x, out);
-        } else {
-          if (cpuHasAvx2()) return rhsAvx2<K>(x, out);
-        }
-        rhsBaseline<K>(x, out);
-      });
+      if (k == 0) return evaluate<0>(x, out), true; // the field alone
+      return withFixedVectors(k, [&]<int K>() { evaluate<K>(x, out); });
     }
     bool tangentRk4(double* y, int k, double h, long steps) const override {
       return withFixedVectors(k, [&]<int K>() {
@@ -226,6 +220,14 @@ private:
     // system's field (Lorenz, Henon-Heiles) is inlined into the loops all the same: the call per stage cost
     // Lorenz's four lanes 27 % (360 -> 264 points/s, bench_sweep SweepLanesLyapunov/4).
     static constexpr bool kSmallField = N <= 4;
+    template <int K> void evaluate(const double* x, double* out) const {
+      if constexpr (W == 8) {
+        if (cpuHasAvx512()) return rhsAvx512<K>(x, out);
+      } else {
+        if (cpuHasAvx2()) return rhsAvx2<K>(x, out);
+      }
+      rhsBaseline<K>(x, out);
+    }
     template <int K> EIGEN_ALWAYS_INLINE void laneDirectional(const double* x, double* out) const {
       model_.template laneDirectional<W, K>(coefficients_, x, out);
     }

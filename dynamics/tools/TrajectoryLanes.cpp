@@ -12,25 +12,13 @@ namespace rv {
 
 namespace {
 
-// W orbits stacked component-major (y[c * W + l]: component c of lane l). The kernel evaluates fields with
-// one tangent direction at least; this one is zero and its derivative is dropped (each lane's field is its
-// model's, bit for bit: the values of the kernel's jets are computed as the plain field computes them)
+// W orbits stacked component-major (y[c * W + l]: component c of lane l), the kernel's field alone (no
+// tangent direction): each lane's field its model's right-hand side, bit for bit
 class OrbitStack final : public LaneStack {
 public:
   OrbitStack(const std::vector<const Model*>& models, const LaneKernel& kernel)
-      : LaneStack(*models.front(), kernel, models.front()->dimension(), "orbit lanes"),
-        n_(models.front()->dimension()), m_(models.front()->info().coreDimension),
-        in_(static_cast<std::size_t>((n_ + m_) * lanes_), 0.0), out_(in_.size()) {}
-  void rhs(const double* y, double* dy) const override {
-    const auto orbits = static_cast<std::ptrdiff_t>(n_) * lanes_;
-    std::copy(y, y + orbits, in_.begin()); // the tangent direction stays zero
-    kernel_.tangentRhs(in_.data(), 1, out_.data());
-    std::copy(out_.begin(), out_.begin() + orbits, dy);
-  }
-
-private:
-  int n_, m_;
-  mutable std::vector<double> in_, out_; // one thread integrates a stack
+      : LaneStack(*models.front(), kernel, models.front()->dimension(), "orbit lanes") {}
+  void rhs(const double* y, double* dy) const override { kernel_.tangentRhs(y, 0, dy); }
 };
 
 } // namespace

@@ -87,8 +87,9 @@ TEST(TrajectoryLanes, EveryStepOfEachOrbitIsItsStepAloneBitForBit) {
   expectEachOrbitIsAlone([] { return std::make_unique<Adams>(0.01, 12); }, "adams");
 }
 
-// the orbits' stack evaluates each lane's field as the kernel's f with a zero tangent direction: for every
-// registered model with a lane kernel, that f is the model's own right-hand side (Model::rhs) bit for bit
+// the orbits' stack evaluates each lane's field as the kernel's f alone (no tangent direction): for every
+// registered model with a lane kernel, that f is the model's own right-hand side (Model::rhs) bit for bit,
+// and the f of the kernel with a tangent direction too
 TEST(TrajectoryLanes, TheKernelsFieldIsEachModelsRightHandSide) {
   std::mt19937 random(3);
   std::uniform_real_distribution<double> u(-1.5, 1.5);
@@ -99,18 +100,23 @@ TEST(TrajectoryLanes, TheKernelsFieldIsEachModelsRightHandSide) {
     if (!kernel) continue;
     ++kernels;
     const int width = kernel->width(), n = model->dimension(), m = model->info().coreDimension;
-    std::vector<double> in(static_cast<std::size_t>((n + m) * width), 0.0), out(in.size());
+    std::vector<double> in(static_cast<std::size_t>((n + m) * width), 0.0), out(in.size()),
+        alone(static_cast<std::size_t>(n * width));
     for (int trial = 0; trial < 20; ++trial) {
       for (int i = 0; i < n * width; ++i)
         in[static_cast<std::size_t>(i)] = u(random);
+      ASSERT_TRUE(kernel->tangentRhs(in.data(), 0, alone.data()));
       ASSERT_TRUE(kernel->tangentRhs(in.data(), 1, out.data()));
       for (int l = 0; l < width; ++l) {
         Eigen::VectorXd x(n), f(n);
         for (int c = 0; c < n; ++c)
           x[c] = in[static_cast<std::size_t>(c * width + l)];
         model->rhs(x.data(), f.data());
-        for (int c = 0; c < n; ++c)
-          ASSERT_EQ(out[static_cast<std::size_t>(c * width + l)], f[c]) << entry.info->id << " f" << c;
+        for (int c = 0; c < n; ++c) {
+          const auto i = static_cast<std::size_t>(c * width + l);
+          ASSERT_EQ(alone[i], f[c]) << entry.info->id << " f" << c;
+          ASSERT_EQ(out[i], f[c]) << entry.info->id << " f" << c << " beside a tangent direction";
+        }
       }
     }
   }
