@@ -257,7 +257,7 @@ int runSweep(const SweepOptions& o) {
     const auto next = [&]() -> ChunkOffer {
       const std::lock_guard lock(levelMutex);
       if (level) {
-        if (const auto chunk = level->next()) return {ChunkOffer::Kind::Chunk, chunk->first, chunk->second};
+        if (auto chunk = level->next()) return {ChunkOffer::Kind::Chunk, std::move(*chunk)};
         return {ChunkOffer::Kind::Later};
       }
       return levelsDone ? ChunkOffer{ChunkOffer::Kind::End} : ChunkOffer{ChunkOffer::Kind::Later};

@@ -28,10 +28,10 @@ bool launchedByMpirun() {
 // never waited for), so it always holds at most two chunks. Every request carries the records of the chunk
 // finished before it and is answered at once: a chunk, "later" (begin -1: a refined sweep's level waits for
 // its last records -- which may be the ones this worker holds, so it sends them and asks again), or an empty
-// chunk when there is no more work; after the empty one the worker sends the records of its last chunk and
-// ends.
+// chunk when there is no more work (a chunk is its points' indices: a refined level's lie apart); after the
+// empty one the worker sends the records of its last chunk and ends.
 constexpr int kRequestTag = 1; // worker -> rank 0: records, and a request for a chunk
-constexpr int kChunkTag = 2;   // rank 0 -> worker: [begin, end), empty when there is no more work
+constexpr int kChunkTag = 2;   // rank 0 -> worker: the indices, {-1}: later, none: no more work
 constexpr int kLastTag = 3;    // worker -> rank 0: the records of its last chunk; it ends
 #endif
 
@@ -109,11 +109,12 @@ SweepTraffic serveSweep(const MpiSession& mpi, SweepStore& store, const std::fun
       continue;
     }
     if (!stopping && poll()) stopping = true;
-    std::int64_t chunk[2] = {0, 0};
     const ChunkOffer offer = stopping ? ChunkOffer{} : next();
-    if (offer.kind == ChunkOffer::Kind::Chunk) chunk[0] = offer.begin, chunk[1] = offer.end;
-    if (offer.kind == ChunkOffer::Kind::Later) chunk[0] = -1, chunk[1] = 0;
-    MPI_Send(chunk, 2, MPI_INT64_T, status.MPI_SOURCE, kChunkTag, MPI_COMM_WORLD);
+    std::vector<std::int64_t> chunk(offer.indices.begin(), offer.indices.end());
+    if (offer.kind != ChunkOffer::Kind::Chunk) chunk.clear();
+    if (offer.kind == ChunkOffer::Kind::Later) chunk.push_back(-1);
+    MPI_Send(chunk.data(), static_cast<int>(chunk.size()), MPI_INT64_T, status.MPI_SOURCE, kChunkTag,
+             MPI_COMM_WORLD);
   }
   return traffic;
 #else
@@ -126,29 +127,35 @@ void workSweep(const MpiSession& mpi, int batch,
                const std::function<std::vector<SweepRecord>(const std::vector<long>&)>& evaluate) {
 #ifdef ROLLVIZ_HAVE_MPI
   (void)mpi; // the session only has to be alive; records carry their own column count
-  batch = std::max(1, batch);
   std::vector<char> results, sending; // sending: the records on their way while the next are computed
-  std::int64_t chunk[2];
+  std::vector<std::int64_t> chunk;
+  const auto receive = [&chunk] {
+    MPI_Status status;
+    MPI_Probe(0, kChunkTag, MPI_COMM_WORLD, &status);
+    int count = 0;
+    MPI_Get_count(&status, MPI_INT64_T, &count);
+    chunk.resize(static_cast<std::size_t>(count));
+    MPI_Recv(chunk.data(), count, MPI_INT64_T, 0, kChunkTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+  };
   MPI_Send(results.data(), 0, MPI_CHAR, 0, kRequestTag, MPI_COMM_WORLD);
-  MPI_Recv(chunk, 2, MPI_INT64_T, 0, kChunkTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-  while (chunk[0] != chunk[1]) {
+  receive();
+  while (!chunk.empty()) {
     // ask for the next chunk now (with the last one's records), compute this one, then take the answer
     sending.swap(results);
     MPI_Request request;
     MPI_Isend(sending.data(), static_cast<int>(sending.size()), MPI_CHAR, 0, kRequestTag, MPI_COMM_WORLD,
               &request);
     results.clear();
-    if (chunk[0] < 0) // later: the level's last points are being computed elsewhere
+    if (chunk.front() < 0) // later: the level's last points are being computed elsewhere
       std::this_thread::sleep_for(std::chrono::milliseconds(1));
-    for (std::int64_t i = chunk[0]; i >= 0 && i < chunk[1]; i += batch) {
-      std::vector<long> indices;
-      for (std::int64_t k = i; k < std::min<std::int64_t>(chunk[1], i + batch); ++k)
-        indices.push_back(static_cast<long>(k));
-      const auto records = evaluate(indices);
-      for (std::size_t k = 0; k < indices.size(); ++k)
-        packRecord(results, indices[k], records.at(k));
-    }
-    MPI_Recv(chunk, 2, MPI_INT64_T, 0, kChunkTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    else
+      for (const std::vector<long>& indices :
+           batchesOf(std::vector<long>(chunk.begin(), chunk.end()), batch)) {
+        const auto records = evaluate(indices);
+        for (std::size_t k = 0; k < indices.size(); ++k)
+          packRecord(results, indices[k], records.at(k));
+      }
+    receive();
     MPI_Wait(&request, MPI_STATUS_IGNORE); // answered, so received: done at once
   }
   MPI_Send(results.data(), static_cast<int>(results.size()), MPI_CHAR, 0, kLastTag, MPI_COMM_WORLD);

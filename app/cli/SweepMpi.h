@@ -43,12 +43,12 @@ struct SweepTraffic {
 /// What rank 0 answers a rank that asks for work.
 struct ChunkOffer {
   enum class Kind {
-    Chunk, ///< points [begin, end)
+    Chunk, ///< the points `indices`
     Later, ///< none yet: a level of a refined sweep waits for its last points (the next level follows from
            ///< them)
     End    ///< no more work
   } kind = Kind::End;
-  long begin = 0, end = 0;
+  std::vector<long> indices = {};
 };
 
 /// Rank 0: answers the other ranks' requests for chunks with `next` and writes the records they send into
@@ -57,7 +57,7 @@ struct ChunkOffer {
 SweepTraffic serveSweep(const MpiSession& mpi, SweepStore& store, const std::function<ChunkOffer()>& next,
                         const std::function<bool()>& poll);
 
-/// Ranks 1..N-1: asks rank 0 for chunks, computes their points `batch` consecutive ones at a time with
+/// Ranks 1..N-1: asks rank 0 for chunks, computes their points `batch` at a time with
 /// `evaluate` (a record per index: SIMD lanes) and sends the records back, until rank 0 has no more work.
 void workSweep(const MpiSession& mpi, int batch,
                const std::function<std::vector<SweepRecord>(const std::vector<long>&)>& evaluate);

@@ -174,7 +174,7 @@ ChunkScheduler::ChunkScheduler(const SweepStore& store, int workers, long maxChu
     left_ += handsOut(i) ? 1 : 0;
 }
 
-std::optional<std::pair<long, long>> ChunkScheduler::next() {
+std::optional<std::vector<long>> ChunkScheduler::next() {
   const std::lock_guard lock(mutex_);
   if (stopped_) return std::nullopt;
   while (cursor_ < store_.points() && !handsOut(cursor_))
@@ -185,15 +185,12 @@ std::optional<std::pair<long, long>> ChunkScheduler::next() {
   // whole batches: rounded up to the granularity, down again where that passes maxChunk
   want = (want + granularity_ - 1) / granularity_ * granularity_;
   if (want > maxChunk_ && maxChunk_ >= granularity_) want = maxChunk_ / granularity_ * granularity_;
-  const long begin = cursor_;
-  long end = begin, taken = 0;
-  while (end < store_.points() && taken < want && handsOut(end)) { // a chunk stops at a point not handed out
-    ++end;
-    ++taken;
-  }
-  cursor_ = end;
-  left_ -= taken;
-  return std::pair{begin, end};
+  std::vector<long> chunk;
+  chunk.reserve(static_cast<std::size_t>(want));
+  for (; cursor_ < store_.points() && static_cast<long>(chunk.size()) < want; ++cursor_)
+    if (handsOut(cursor_)) chunk.push_back(cursor_);
+  left_ -= static_cast<long>(chunk.size());
+  return chunk;
 }
 
 void ChunkScheduler::stop() {
@@ -206,6 +203,16 @@ bool ChunkScheduler::finished() const {
   for (long i = 0; i < store_.points(); ++i)
     if (handsOut(i)) return false;
   return true;
+}
+
+std::vector<std::vector<long>> batchesOf(const std::vector<long>& chunk, int batch) {
+  const std::size_t step = static_cast<std::size_t>(std::max(1, batch));
+  std::vector<std::vector<long>> out;
+  for (std::size_t at = 0; at < chunk.size(); at += step) {
+    const auto from = chunk.begin() + static_cast<std::ptrdiff_t>(at);
+    out.emplace_back(from, from + static_cast<std::ptrdiff_t>(std::min(step, chunk.size() - at)));
+  }
+  return out;
 }
 
 bool runSweepThreads(SweepStore& store, ChunkScheduler& scheduler,
@@ -232,10 +239,8 @@ bool runSweepThreads(SweepStore& store, ChunkScheduler& scheduler, const BatchEv
       while (!stop.load()) {
         const auto chunk = scheduler.next();
         if (!chunk) break;
-        for (long i = chunk->first; i < chunk->second && !stop.load(); i += batch) {
-          std::vector<long> indices;
-          for (long k = i; k < std::min(chunk->second, i + static_cast<long>(std::max(1, batch))); ++k)
-            indices.push_back(k);
+        for (const std::vector<long>& indices : batchesOf(*chunk, batch)) {
+          if (stop.load()) break;
           const std::vector<SweepRecord> records = evaluate(indices, pointControl);
           if (stop.load()) break; // points cut short are dropped, not recorded
           for (std::size_t k = 0; k < indices.size(); ++k)

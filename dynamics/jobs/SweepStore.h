@@ -73,7 +73,9 @@ private:
   std::atomic<long> doneCount_{0}, failedCount_{0};
 };
 
-/// Hands out the points without a record in chunks [begin, end) of consecutive indices.
+/// Hands out the points without a record in chunks: the next ones in index order (consecutive in a plain
+/// sweep; a refined sweep's level passes over the points it does not compute, so that its chunks are whole
+/// batches too, however far apart its points lie).
 class ChunkScheduler {
 public:
   /// `workers`: how many ask at once; `maxChunk` bounds a chunk (0: automatic). `wanted` (one flag per point;
@@ -82,8 +84,9 @@ public:
   /// chunks are whole batches, not single points left to the slower one-at-a-time path).
   ChunkScheduler(const SweepStore& store, int workers, long maxChunk = 0, std::vector<char> wanted = {},
                  int granularity = 1);
-  /// The next chunk to compute, or nothing when every point is handed out (or after stop()).
-  std::optional<std::pair<long, long>> next();
+  /// The indices of the next chunk to compute (ascending), or nothing when every point is handed out (or
+  /// after stop()).
+  std::optional<std::vector<long>> next();
   /// Hands out nothing more.
   void stop();
   /// Whether every point it hands out (the level's) has a record -- those computed elsewhere (other ranks)
@@ -104,6 +107,9 @@ private:
   bool stopped_ = false;
 };
 
+/// A chunk cut into batches of `batch` points (the last one shorter), in its order.
+std::vector<std::vector<long>> batchesOf(const std::vector<long>& chunk, int batch);
+
 /// Computes every point the scheduler hands out on `threads` threads: `evaluate(index, control)` never
 /// throws (a failure is a record with ok = false), its record is written to the store. `control` stops it
 /// (points in progress are finished or dropped, never half-written); its progress is the fraction of all
@@ -111,9 +117,9 @@ private:
 bool runSweepThreads(SweepStore& store, ChunkScheduler& scheduler,
                      const std::function<SweepRecord(long, const ToolControl&)>& evaluate, int threads,
                      const ToolControl& control);
-/// Computes several consecutive points at once (SIMD lanes): a record per index.
+/// Computes several points at once (SIMD lanes): a record per index.
 using BatchEvaluator = std::function<std::vector<SweepRecord>(const std::vector<long>&, const ToolControl&)>;
-/// The same, `batch` consecutive points of a chunk at a time.
+/// The same, `batch` points of a chunk at a time.
 bool runSweepThreads(SweepStore& store, ChunkScheduler& scheduler, const BatchEvaluator& evaluate, int batch,
                      int threads, const ToolControl& control);
 

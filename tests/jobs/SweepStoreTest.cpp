@@ -4,6 +4,7 @@
 #include "dynamics/jobs/SweepStore.h"
 #include "dynamics/core/Errors.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <filesystem>
@@ -73,9 +74,10 @@ TEST(SweepStore, EveryPointIsHandedOutOnceAndResumedPointsNever) {
   std::vector<int> handed(1000, 0);
   std::size_t chunks = 0, first = 0;
   while (const auto c = scheduler.next()) {
-    ASSERT_LT(c->first, c->second);
-    if (chunks++ == 0) first = static_cast<std::size_t>(c->second - c->first);
-    for (long i = c->first; i < c->second; ++i)
+    ASSERT_FALSE(c->empty());
+    EXPECT_TRUE(std::ranges::is_sorted(*c));
+    if (chunks++ == 0) first = c->size();
+    for (long i : *c)
       ++handed[static_cast<std::size_t>(i)];
   }
   for (long i = 0; i < 1000; ++i)
@@ -96,14 +98,49 @@ TEST(SweepStore, ChunksAreWholeBatchesToTheEnd) {
     ChunkScheduler scheduler(store, workers, 30, {}, 4);
     std::vector<int> handed(1000, 0);
     while (const auto c = scheduler.next()) {
-      EXPECT_EQ((c->second - c->first) % 4, 0) << c->first << ".." << c->second;
-      EXPECT_LE(c->second - c->first, 28); // within maxChunk 30, in whole batches
-      for (long i = c->first; i < c->second; ++i)
+      EXPECT_EQ(c->size() % 4, 0U) << c->front() << ".." << c->back();
+      EXPECT_LE(c->size(), 28U); // within maxChunk 30, in whole batches
+      for (long i : *c)
         ++handed[static_cast<std::size_t>(i)];
     }
     for (int h : handed)
       EXPECT_EQ(h, 1);
   }
+  store.remove();
+}
+
+// a level of a refined sweep computes points that lie apart (every other one on a line of the finest grid,
+// and lines apart): its chunks gather them into whole batches all the same, where a chunk of consecutive
+// indices would hold one point each and leave the SIMD lanes idle
+TEST(SweepStore, ALevelsPointsLyingApartMakeWholeBatches) {
+  const std::string path = tempPath("apart");
+  std::filesystem::remove(path);
+  SweepStore store(path, "apart", 81 * 81, 1, "-o");
+  std::vector<char> wanted(81 * 81, 0);
+  long count = 0;
+  for (long row = 1; row < 81; row += 2)
+    for (long column = 0; column < 81; column += 2) {
+      wanted[static_cast<std::size_t>(row * 81 + column)] = 1;
+      ++count;
+    }
+  store.write(81 + 2, {{1.0}, 0, true, ""}); // resumed: not handed out
+  ChunkScheduler scheduler(store, 2, 64, wanted, 8);
+  std::vector<int> handed(81 * 81, 0);
+  std::size_t chunks = 0;
+  long total = 0;
+  while (const auto c = scheduler.next()) {
+    ++chunks;
+    total += static_cast<long>(c->size());
+    for (long i : *c)
+      ++handed[static_cast<std::size_t>(i)];
+    if (total < count - 8) { // whole batches (the level's last may be short)
+      EXPECT_EQ(c->size() % 8, 0U);
+    }
+  }
+  EXPECT_EQ(total, count - 1);
+  for (std::size_t i = 0; i < handed.size(); ++i)
+    EXPECT_EQ(handed[i], wanted[i] && i != 81 + 2 ? 1 : 0) << i;
+  EXPECT_LT(chunks, 60U); // not one per point
   store.remove();
 }
 
@@ -120,8 +157,7 @@ TEST(SweepStore, ALevelIsFinishedWhenEachOfItsPointsHasARecord) {
   EXPECT_FALSE(scheduler.finished());
   std::vector<long> handed;
   while (const auto c = scheduler.next())
-    for (long i = c->first; i < c->second; ++i)
-      handed.push_back(i);
+    handed.insert(handed.end(), c->begin(), c->end());
   EXPECT_EQ(handed, (std::vector<long>{2, 7}));
   EXPECT_FALSE(scheduler.finished()); // handed out, not recorded
   store.write(2, {{1.0}, 0, true, ""});
