@@ -1,9 +1,9 @@
 // MapTools.cpp -- the runners of the fixed-point family (scenes/ToolRunner.h): fixedpoint, continuation,
 // multipliers, separatrix, bifurcation_tree, on the scene's map. Every front end derives its part from them
 // -- the CLI command (flags, --json, -o, what it says on the way), the Python method (its result's shape is
-// written here, `python`), the chart of a continuation; the GUI runs them on its map window
-// (ToolRunner::ownWindow). The computations are dynamics/tools' (FixedPoint.h, Continuation.h, Separatrix.h,
-// BifurcationTree.h).
+// written here, `python`), the chart of a continuation, and the GUI's map window, which draws a family's,
+// a branch's or a tree's rows as they come (ToolWindow::MapRows, ToolControl::row). The computations are
+// dynamics/tools' (FixedPoint.h, Continuation.h, Separatrix.h, BifurcationTree.h).
 #include "dynamics/core/Errors.h"
 #include "dynamics/tools/BifurcationTree.h"
 #include "dynamics/tools/ToolSettings.h"
@@ -222,9 +222,9 @@ ToolResult runContinuation(const Scene& scene, const ToolControl& control) {
           if (result.table.rows() == 0) {
             head(p.fixedPoint.multipliers.size());
             if (cont.doubled())
-              result.notes.push_back(
-                  fmt::format("the family of order {} born at the period doubling starts at {} = {:.12g}",
-                              2 * s.section().order, c.parameter, p.parameter));
+              addNote(result, control,
+                      fmt::format("the family of order {} born at the period doubling starts at {} = {:.12g}",
+                                  2 * s.section().order, c.parameter, p.parameter));
           }
           std::vector<double> row{p.parameter};
           for (double x : toVector(p.fixedPoint.point))
@@ -232,10 +232,9 @@ ToolResult runContinuation(const Scene& scene, const ToolControl& control) {
           for (auto z : p.fixedPoint.multipliers)
             row.push_back(z.real()), row.push_back(z.imag());
           row.push_back(p.fixedPoint.residual);
-          result.table.addRow(row);
-          result.text[0].values.emplace_back(toString(p.fixedPoint.type));
+          addRow(result, control, row, {toString(p.fixedPoint.type)});
         },
-        [&](const TypeChange& t) { result.notes.push_back(describe(t, c.parameter)); });
+        [&](const TypeChange& t) { addNote(result, control, describe(t, c.parameter)); });
   } catch (const ComputationError& e) {
     if (cont.points().empty() || (c.switchAt > 0 && !cont.doubled())) throw;
     result.failure = e.what(); // the family up to here is a result: keep it, and say why it ends
@@ -251,7 +250,7 @@ ToolResult runContinuation(const Scene& scene, const ToolControl& control) {
         family.points().empty() ? json(nullptr) : json(family.points().front().parameter);
   }
   if (done && (c.method == ContinuationMethod::Arclength || cont.doubled()))
-    result.notes.push_back("the family ends: " + family.end());
+    addNote(result, control, "the family ends: " + family.end());
   if (!cont.doubled()) {
     result.python = familyPython(cont, c, map, result.failure);
   } else { // switched: the family of doubled order, its parent under "parent"
@@ -308,7 +307,21 @@ ToolResult runSeparatrix(const Scene& scene, const ToolControl& control) {
   for (int b : list) {
     SeparatrixSettings ss = separatrixSettings(scene.tool("separatrix"), s.search());
     ss.branch = b;
-    const SeparatrixResult r = growSeparatrix(map, fp, ss, control);
+    // each level's points as they are grown, for a front end drawing them (their parameters come with the
+    // table, once the branch is grown)
+    const auto onPoints = [&](const std::vector<Eigen::VectorXd>& points) {
+      if (!control.row) return;
+      StreamedRow streamed{{"branch"}, {}, {}, {}};
+      for (const auto& n : map.coordinateNames())
+        streamed.names.push_back(n);
+      for (const auto& p : points) {
+        streamed.values = {static_cast<double>(b)};
+        for (double x : toVector(p))
+          streamed.values.push_back(x);
+        control.row(streamed);
+      }
+    };
+    const SeparatrixResult r = growSeparatrix(map, fp, ss, control, onPoints);
     for (std::size_t i = 0; i < r.points.size(); ++i) {
       std::vector<double> row{static_cast<double>(b)};
       for (double x : toVector(r.points[i]))
@@ -316,9 +329,10 @@ ToolResult runSeparatrix(const Scene& scene, const ToolControl& control) {
       row.push_back(r.parameters[i]);
       result.table.addRow(row);
     }
-    result.notes.push_back(fmt::format(
-        "branch {}: {} points, multiplier {:.12g} ({}), linear region {:g}, ended by {}", b, r.points.size(),
-        r.multiplier, r.unstable ? "outgoing" : "incoming", r.linearRegion, r.stoppedBecause));
+    addNote(result, control,
+            fmt::format("branch {}: {} points, multiplier {:.12g} ({}), linear region {:g}, ended by {}", b,
+                        r.points.size(), r.multiplier, r.unstable ? "outgoing" : "incoming", r.linearRegion,
+                        r.stoppedBecause));
     const json branch{{"multiplier", r.multiplier},
                       {"unstable", r.unstable},
                       {"linear_region", r.linearRegion},
@@ -352,9 +366,14 @@ ToolResult runBifurcationTree(const Scene& scene, const ToolControl& control) {
   const double start = s.spec().modelParameters[c.parameter];
   const ReturnMap map = s.map();
   ToolResult result;
+  // the table: each point's branch, the parameter, the point and its multipliers; its type as text, last
   result.table.names = {"level", "order", c.parameter};
   for (const auto& n : map.coordinateNames())
     result.table.names.push_back(n);
+  for (int i = 1; i <= map.dimension(); ++i) {
+    result.table.names.push_back(fmt::format("re{}", i));
+    result.table.names.push_back(fmt::format("im{}", i));
+  }
   result.table.values.assign(result.table.names.size(), {});
   result.text = {{"type", {}, result.table.names.size()}};
   BifurcationTreeResult r;
@@ -365,11 +384,13 @@ ToolResult runBifurcationTree(const Scene& scene, const ToolControl& control) {
           std::vector<double> row{static_cast<double>(b.level), static_cast<double>(b.order), p.parameter};
           for (double x : toVector(p.fixedPoint.point))
             row.push_back(x);
-          result.table.addRow(row);
-          result.text[0].values.emplace_back(toString(p.fixedPoint.type));
+          for (auto z : p.fixedPoint.multipliers)
+            row.push_back(z.real()), row.push_back(z.imag());
+          addRow(result, control, row, {toString(p.fixedPoint.type)});
         },
         [&](const PeriodDoubling& d) {
-          result.notes.push_back(
+          addNote(
+              result, control,
               fmt::format("period doubling of order {} at {} = {:.12g}", d.order, c.parameter, d.parameter));
         },
         &r);
@@ -377,8 +398,8 @@ ToolResult runBifurcationTree(const Scene& scene, const ToolControl& control) {
     result.stopped = true;
   }
   for (double q : r.ratios())
-    result.notes.push_back(fmt::format("ratio: {:.10g}", q));
-  if (!r.end.empty()) result.notes.push_back("the tree ends: " + r.end);
+    addNote(result, control, fmt::format("ratio: {:.10g}", q));
+  if (!r.end.empty()) addNote(result, control, "the tree ends: " + r.end);
   json doublings = json::array();
   for (const auto& x : r.doublings)
     doublings.push_back({{"level", x.level}, {"order", x.order}, {"parameter", x.parameter}});
@@ -447,7 +468,7 @@ void registerMapTools() {
                                                    "all points\"; fixedpoint.path = yes)")},
        .describe = describeFixedPoint,
        .complexFields = {"multipliers"},
-       .ownWindow = true});
+       .window = ToolWindow::MapSearch});
   auto continuation = continuationArguments();
   continuation.push_back(
       flagArgument("arclength", "continuation.method", "\"arclength\"",
@@ -461,14 +482,14 @@ void registerMapTools() {
                                  .arguments = continuation,
                                  .tableIsResult = true,
                                  .complexFields = {"multipliers"},
-                                 .ownWindow = true});
+                                 .window = ToolWindow::MapRows});
   auto separatrix = searchArguments();
   separatrix.push_back(branchArgument());
   addToolRunner("separatrix", {.run = runSeparatrix,
                                .arguments = separatrix,
                                .tableIsResult = true,
                                .complexFields = {"multipliers"},
-                               .ownWindow = true});
+                               .window = ToolWindow::MapRows});
   auto tree = continuationArguments();
   tree.push_back(searchArguments()[2]); // --method: the search's (the tree's section has none)
   tree.push_back(settingArgument("step", "continuation.step", "STEP",
@@ -477,8 +498,11 @@ void registerMapTools() {
   multipliers.push_back(tree.back()); // --step
   addToolRunner("multipliers",
                 {.run = runMultipliers, .arguments = multipliers, .complexFields = {"multipliers"}});
-  addToolRunner("bifurcation_tree",
-                {.run = runBifurcationTree, .arguments = tree, .tableIsResult = true, .ownWindow = true});
+  addToolRunner("bifurcation_tree", {.run = runBifurcationTree,
+                                     .arguments = tree,
+                                     .tableIsResult = true,
+                                     .window = ToolWindow::MapRows,
+                                     .ellipticMultipliersEachRow = true});
 }
 
 } // namespace rv

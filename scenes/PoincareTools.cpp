@@ -88,7 +88,7 @@ ToolResult runPlot(const Scene& scene, const ToolControl& control) {
 void registerPoincareTools() {
   addToolRunner("poincare", {.start = [](const Scene& s) { return std::make_unique<MapPointsRun>(s, false); },
                              .tableIsResult = true,
-                             .ownWindow = true,
+                             .window = ToolWindow::MapTrajectory,
                              .cloud = true});
   addToolRunner("map3d",
                 {.start = [](const Scene& s) { return std::make_unique<MapPointsRun>(s, true); },
@@ -98,7 +98,7 @@ void registerPoincareTools() {
                                 }}},
                  .tableIsResult = true,
                  .cloud = true});
-  addToolRunner("plot", {.run = runPlot, .tableIsResult = true, .ownWindow = true});
+  addToolRunner("plot", {.run = runPlot, .tableIsResult = true, .window = ToolWindow::PlotWindow});
 }
 
 } // namespace rv

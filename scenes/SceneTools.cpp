@@ -101,13 +101,6 @@ public:
   RunSpec run() const override { return scene_.runSpec(); }
   SectionSettings section() const override { return scene_.poincare; }
   MapTaskSpec mapTask() const override { return map().taskSpec(); }
-  ContinuationSettings continuation() const override { return map().continuation(); }
-  SeparatrixSettings separatrix() const override {
-    return separatrixSettings(scene_.tool("separatrix"), map().search());
-  }
-  BifurcationTreeSettings bifurcationTree() const override {
-    return bifurcationTreeSettings(scene_.tool("bifurcation_tree"), map().continuation());
-  }
   std::string document() const override { return scene_.document.dump(); }
 
 private:

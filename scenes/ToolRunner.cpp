@@ -85,6 +85,24 @@ bool resumable(const ToolEntry& tool) {
   return runner && runner->start;
 }
 
+void addRow(ToolResult& result, const ToolControl& control, const std::vector<double>& row,
+            const std::vector<std::string>& text) {
+  result.table.addRow(row);
+  for (std::size_t i = 0; i < result.text.size() && i < text.size(); ++i)
+    result.text[i].values.push_back(text[i]);
+  if (!control.row) return;
+  StreamedRow streamed{result.table.names, row, {}, text};
+  for (const auto& t : result.text)
+    streamed.textNames.push_back(t.name);
+  streamed.textNames.resize(text.size());
+  control.row(streamed);
+}
+
+void addNote(ToolResult& result, const ToolControl& control, std::string note) {
+  if (control.note) control.note(note);
+  result.notes.push_back(std::move(note));
+}
+
 void putTable(Snapshot& state, const NamedColumns& table) {
   state.put(static_cast<double>(table.names.size()));
   for (const auto& column : table.values)

@@ -97,6 +97,18 @@ public:
   virtual void restore(Snapshot& state) = 0;
 };
 
+/// Where the GUI shows a tool's run (MainWindow::createTool): what it draws decides, not its id.
+enum class ToolWindow {
+  Chart,         ///< a chart window of its result, computed as a job of the tool manager
+  MapRows,       ///< the map window draws its rows as they come (ToolControl::row): each row's columns named
+                 ///< like the map's coordinates place a point; its multipliers (re1, im1, ...) beside a
+                 ///< column named like the continued parameter go to the multipliers filters; its notes to
+                 ///< the Results dock
+  MapTrajectory, ///< the map window's trajectory from the scene's initial state (the Poincare map itself)
+  MapSearch,     ///< the map window's fixed-point search from the scene's guess, its path drawn
+  PlotWindow     ///< the plot filter's live window, fed by the map window's trajectories
+};
+
 /// How a tool runs on a scene and how its result is drawn: `run` computes it at once; `start` instead begins
 /// a run that stops and goes on (ToolRun; the CLI command then offers --checkpoint). Give one of them.
 struct ToolRunner {
@@ -127,9 +139,12 @@ struct ToolRunner {
   /// Fields (at any depth of the result) that hold complex numbers as [re, im] pairs: Python gives them as
   /// complex arrays.
   std::vector<std::string> complexFields = {};
-  /// The GUI shows it in a window of its own, not in a chart window: the map window draws the map's points
-  /// and the fixed-point family as they come (MapPanel), the plot filter has its live window.
-  bool ownWindow = false;
+  /// Where the GUI shows a run (Tools > Create): in a chart window (the default), or drawn on the map window.
+  ToolWindow window = ToolWindow::Chart;
+  /// Drawn on the map (ToolWindow::MapRows) with multipliers in its rows: the multipliers filters (manual
+  /// §2.4.3) show those of its elliptic points only, every one (a bifurcation tree's branches), rather than
+  /// one per the filter's period of the parameter (a family).
+  bool ellipticMultipliersEachRow = false;
   /// Its results are point clouds (ToolResult::cloud): the CLI's -o also writes .vtp poly data.
   bool cloud = false;
   /// Narrows the scene's settings so that a run computes output `output` alone, faster and to the same bits
@@ -143,6 +158,14 @@ struct ToolRunner {
 std::unique_ptr<ToolRun> startTool(const ToolEntry& tool, const Scene& scene);
 /// Whether the tool's runs go on after a stop and can be saved (the runner has `start`).
 bool resumable(const ToolEntry& tool);
+
+/// Appends a row to the result's table, with the values of its text columns (in the order of result.text),
+/// and hands it on to control.row: how a runner adds a row, so that a front end that draws the rows as they
+/// come (the GUI's map window) sees each.
+void addRow(ToolResult& result, const ToolControl& control, const std::vector<double>& row,
+            const std::vector<std::string>& text = {});
+/// Appends a note to the result and hands it on to control.note.
+void addNote(ToolResult& result, const ToolControl& control, std::string note);
 
 /// A table in a Snapshot (a ToolRun's save): its names' count, then each column; getTable checks the names.
 void putTable(Snapshot& state, const NamedColumns& table);

@@ -5,10 +5,14 @@
 
 namespace rv {
 
-ToolTask::ToolTask(const std::string& id, std::vector<nlohmann::json> documents, std::string source)
-    : tool_(ToolRegistry::global().get(id)), documents_(std::move(documents)), source_(std::move(source)) {
+ToolTask::ToolTask(const std::string& id, std::vector<nlohmann::json> documents, std::string source,
+                   bool ownScene, std::vector<SceneOverride> kept)
+    : tool_(ToolRegistry::global().get(id)), source_(std::move(source)), ownScene_(ownScene),
+      kept_(std::move(kept)) {
   if (!findToolRunner(id)) throw InputError("tool '" + id + "' cannot run on a scene by itself");
-  if (documents_.empty()) throw InputError("tool '" + id + "': no scene to run on");
+  if (documents.empty()) throw InputError("tool '" + id + "': no scene to run on");
+  for (auto& d : documents)
+    documents_.push_back(kept_.empty() ? std::move(d) : sceneFromJson(std::move(d), source_, kept_).document);
 }
 
 std::string ToolTask::name() const {
@@ -21,11 +25,18 @@ std::string ToolTask::describe() const {
 
 bool ToolTask::run(const ToolControl& control) {
   reset();
+  if (streamed_) ++startedAgain_; // from the start: what an earlier run streamed is stale
+  ToolControl streaming = control;
+  streaming.row = [this](const StreamedRow& row) {
+    streamed_ = true;
+    rows_.push(row);
+  };
+  streaming.note = [this](const std::string& note) { notes_.push(note); };
   std::string failure;
   for (std::size_t i = 0; i < documents_.size(); ++i) {
     const Scene scene = sceneFromJson(documents_[i], source_);
     try {
-      ToolResult r = runTool(tool_, scene, control);
+      ToolResult r = runTool(tool_, scene, streaming);
       if (r.stopped) return false;
       const std::lock_guard lock(mutex_);
       result_ = std::move(r);
@@ -36,6 +47,14 @@ bool ToolTask::run(const ToolControl& control) {
     }
   }
   throw ComputationError(failure);
+}
+
+bool ToolTask::edit(const TaskEdit& e) {
+  // validated now: bad input changes nothing
+  nlohmann::json document = sceneFromJson(nlohmann::json::parse(e.document()), source_, kept_).document;
+  documents_ = {std::move(document)};
+  reset();
+  return false;
 }
 
 void ToolTask::reset() {

@@ -22,6 +22,7 @@
 #include "scenes/ModelFile.h"
 #include "scenes/SceneCharts.h"
 #include "scenes/SceneLoader.h"
+#include "scenes/ToolRunner.h"
 
 #include <QAction>
 #include <QCloseEvent>
@@ -631,19 +632,26 @@ nlohmann::json MainWindow::documentWithEdits() const {
 
 void MainWindow::createTool(const std::string& id) {
   if (!scene_) return;
-  // the tools that draw on the map window start there, the plot filter opens its live window; every other
-  // registered tool computes its chart view in a chart window (a job of the tool manager)
-  const std::map<std::string, std::function<void()>> onTheMap{
-      {"poincare", [this] { map_->startFrom(scene_->initialState); }},
-      {"fixedpoint", [this] { map_->searchFromGuess(); }},
-      {"continuation", [this] { map_->startContinuation(); }},
-      {"separatrix", [this] { map_->startSeparatrices(); }},
-      {"bifurcation_tree", [this] { map_->startBifurcationTree(); }},
-      {"plot", [this] { openPlotWindow(scene_->plot); }}};
-  if (const auto it = onTheMap.find(id); it != onTheMap.end())
-    it->second();
-  else
+  // where the tool's runner says it shows: a chart window (a job of the tool manager), or the map window,
+  // which draws its rows as they come, its own trajectory or search, or the plot filter's live window
+  const ToolRunner* runner = findToolRunner(id);
+  switch (runner ? runner->window : ToolWindow::Chart) {
+  case ToolWindow::Chart:
     openChart(ToolRegistry::global().get(id).chartView);
+    return;
+  case ToolWindow::MapRows:
+    map_->startRows(id);
+    return;
+  case ToolWindow::MapTrajectory:
+    map_->startFrom(scene_->initialState);
+    return;
+  case ToolWindow::MapSearch:
+    map_->searchFromGuess();
+    return;
+  case ToolWindow::PlotWindow:
+    openPlotWindow(scene_->plot);
+    return;
+  }
 }
 
 ChartWindow* MainWindow::openChart(const std::string& view, const std::string& diagram) {

@@ -13,6 +13,7 @@
 #include "dynamics/jobs/PlotTap.h"
 #include "render/charts/PoincareChart.h"
 #include "scenes/Scene.h"
+#include "scenes/SceneLoader.h"
 #include "scenes/Session.h"
 
 #include <QPointer>
@@ -37,8 +38,6 @@ class PlotWindow;
 class PoincareTask;
 class FixedPointTask;
 class MegnoTask;
-
-struct ContinuationSettings;
 
 class MapPanel : public QWidget {
   Q_OBJECT
@@ -67,7 +66,7 @@ public:
   /// Starts a fixed-point search (the scene's fixedpoint settings) from map coordinates (x, y).
   void searchFixedPointAt(double x, double y);
   /// Grows the four separatrices of the fixed point found from the scene's fixedpoint settings (one job per
-  /// branch, drawn as they grow).
+  /// branch, each the separatrix tool's runner, drawn as they grow).
   void startSeparatrices();
   /// Continues the scene's fixed point (its continuation settings); the family is drawn on the map and each
   /// change of type reported.
@@ -84,6 +83,9 @@ public:
   void startFrom(const Eigen::VectorXd& state) { start(state); }
   /// The period-doubling tree of the scene's fixed point (bifurcation_tree section); its families drawn.
   void startBifurcationTree();
+  /// Runs registered tool `id` (ToolWindow::MapRows) on the scene as a job of the map window that draws its
+  /// rows as they come: Tools > Create of any such tool, a module's included.
+  void startRows(const std::string& id);
   /// A fixed-point search from the scene's fixedpoint.guess.
   void searchFromGuess();
   /// The trajectories `ids` (empty: all; with `onlyRunning`, those running), each with its points and the
@@ -255,16 +257,19 @@ private:
     std::function<bool(ToolSeries&)> pull;
     /// the multipliers of a family's points (continuation, tree), kept for filters opened later
     std::vector<std::pair<double, std::vector<std::complex<double>>>> multipliers;
-    bool everyStep = false; ///< a tree: each step is output (not by the filter's period)
+    std::vector<double> along; ///< the continued parameter at each point drawn, where its rows carry it
+    bool everyStep = false;    ///< a tree: each step is output (not by the filter's period)
     /// What the Results dock says once the job has finished and everything it made is drawn
     std::function<QString(const ToolSeries&)> ended;
     bool endSaid = false;
   };
   std::vector<ToolSeries> tools_;
-  /// Starts a continuation with these settings; `said` goes to the Results dock.
-  void startContinuationWith(const ContinuationSettings& settings, const QString& said);
-  std::vector<QString> doublings_; ///< located by the last continuation started with switch 0
-  int continuationRun_ = 0;        ///< which continuation's doublings doublings_ holds
+  /// Starts registered tool `id` on the scene with `overrides` (kept by Edit properties) as a job drawn on
+  /// the map as its rows come (ToolWindow::MapRows), in `colour` (else the next of a palette); `said` goes to
+  /// the Results dock.
+  void startMapRows(const std::string& id, const std::vector<SceneOverride>& overrides, const QString& said,
+                    std::optional<Rgb> colour = std::nullopt);
+  std::vector<QString> doublings_; ///< located by the last family followed from the scene's point
   /// Adds a tool's job, a series on the map for its output (`pull` fetches it), and starts it.
   void startTool(std::unique_ptr<Task> task, const Rgb& colour, std::function<bool(ToolSeries&)> pull,
                  std::function<QString(const ToolSeries&)> ended = {});
@@ -276,8 +281,6 @@ private:
   std::vector<QPointer<ChartWindow>> diagramWindows_;
   std::optional<std::vector<Diagram>> diagrams_;       ///< the scene's, once a diagram window is open
   std::vector<std::vector<ChartWindow::Mark>> marked_; ///< the marks drawn, per window
-  /// The scene's tool setup; nothing (with a message) when the scene cannot give one.
-  std::unique_ptr<class SceneMap> sceneMap();
   QtVtkWidget* view_;
   ClickMode clickMode_ = ClickMode::Trajectory;
   QComboBox* modeBox_;

@@ -1,15 +1,19 @@
 // MapPanelTools.cpp -- the map window's fixed-point tools (manual §2.3): a search from a click or the scene's
-// guess, the separatrices, the continuation of a family and the switch to a doubled one, the bifurcation
-// tree; each a job whose output is drawn on the map, offered to the multipliers filters, and whose outcome
-// reaches the Results dock.
+// guess; and every registered tool drawn on the map as its rows come (ToolWindow::MapRows: the separatrices,
+// the continuation of a family and the switch to a doubled one, the bifurcation tree, a module's tool), run
+// as the registry's runner (scenes/ToolTask.h), its points offered to the multipliers filters, its notes and
+// outcome to the Results dock.
 #include "app/gui/MapPanel.h"
 
 #include "app/gui/MultipliersWindow.h"
 #include "app/gui/QtVtkWidget.h"
 #include "dynamics/core/Errors.h"
 #include "dynamics/jobs/FixedPointTasks.h"
+#include "dynamics/tools/ToolRegistry.h"
 #include "dynamics/tools/ToolSettings.h"
+#include "scenes/SceneLoader.h"
 #include "scenes/SceneTools.h"
+#include "scenes/ToolTask.h"
 
 #include <algorithm>
 
@@ -34,19 +38,6 @@ void MapPanel::searchFixedPointAt(double x, double y) {
         QString("searching a fixed point of order %1 from (%2, %3)").arg(sm.section().order).arg(x).arg(y));
   } catch (const InputError& e) {
     emit message(QString::fromStdString(e.what()));
-  }
-}
-
-std::unique_ptr<SceneMap> MapPanel::sceneMap() {
-  if (!scene_ || scene_->model->info().mapCoordinates.empty()) {
-    emit message("this problem has no map coordinates");
-    return nullptr;
-  }
-  try {
-    return std::make_unique<SceneMap>(Scene(*scene_));
-  } catch (const InputError& e) {
-    emit message(QString::fromStdString(e.what()));
-    return nullptr;
   }
 }
 
@@ -76,45 +67,23 @@ void MapPanel::addMultipliersWindow(MultipliersWindow* window) {
 }
 
 void MapPanel::startSeparatrices() {
-  const auto sm = sceneMap();
-  if (!sm) return;
-  const SeparatrixSettings base = separatrixSettings(scene_->tool("separatrix"), sm->search());
+  // a job per branch, the outgoing pair in one colour and the incoming in another
   const Rgb colours[] = {{0.55, 0.1, 0.6}, {0.55, 0.1, 0.6}, {0.1, 0.5, 0.2}, {0.1, 0.5, 0.2}};
-  for (int b = 1; b <= 4; ++b) {
-    SeparatrixSettings s = base;
-    s.branch = b;
-    auto task = std::make_unique<SeparatrixTask>(sm->taskSpec(), s);
-    SeparatrixTask* raw = task.get();
-    startTool(
-        std::move(task), colours[b - 1],
-        [raw](ToolSeries& t) {
-          std::vector<std::vector<Eigen::VectorXd>> batches;
-          raw->points().take(batches);
-          for (const auto& batch : batches)
-            for (const auto& p : batch)
-              t.x.push_back(p[0]), t.y.push_back(p[1]);
-          return !batches.empty();
-        },
-        [b](const ToolSeries& t) {
-          return QString("separatrix branch %1 (tool #%2) ended: %3 points")
-              .arg(b)
-              .arg(t.job->id())
-              .arg(t.x.size());
-        });
-  }
-  emit message("growing the separatrices of the fixed point near the scene's guess");
+  for (int b = 1; b <= 4; ++b)
+    startMapRows("separatrix", {{"separatrix.branches", "[" + std::to_string(b) + "]"}},
+                 b == 1 ? "growing the separatrices of the fixed point near the scene's guess" : "",
+                 colours[b - 1]);
 }
 
 void MapPanel::startContinuation() {
-  const auto sm = sceneMap();
-  if (!sm) return;
-  ContinuationSettings settings = sm->continuation();
-  startContinuationWith(settings, "continuing the scene's fixed point");
+  startMapRows("continuation", {}, "continuing the scene's fixed point");
+}
+
+void MapPanel::startBifurcationTree() {
+  startMapRows("bifurcation_tree", {}, "growing the bifurcation tree of the scene's fixed point");
 }
 
 void MapPanel::followDoubledFamily(int k) {
-  const auto sm = sceneMap();
-  if (!sm) return;
   if (k < 1 || k > static_cast<int>(doublings_.size())) {
     emit message(
         doublings_.empty()
@@ -123,9 +92,8 @@ void MapPanel::followDoubledFamily(int k) {
             : QString("there are %1 located period doublings, not %2").arg(doublings_.size()).arg(k));
     return;
   }
-  ContinuationSettings settings = sm->continuation();
-  settings.switchAt = k;
-  startContinuationWith(settings, "following the family of doubled order born at the " + doublings_[k - 1]);
+  startMapRows("continuation", {{"continuation.switch", std::to_string(k)}},
+               "following the family of doubled order born at the " + doublings_[k - 1]);
 }
 
 std::vector<std::pair<double, double>> MapPanel::toolPoints(int id) const {
@@ -137,91 +105,121 @@ std::vector<std::pair<double, double>> MapPanel::toolPoints(int id) const {
   return out;
 }
 
-void MapPanel::startContinuationWith(const ContinuationSettings& settings, const QString& said) {
-  const auto sm = sceneMap();
-  if (!sm) return;
-  try {
-    auto task = std::make_unique<ContinuationTask>(sm->taskSpec(), settings);
-    ContinuationTask* raw = task.get();
-    const std::string parameter = settings.parameter;
-    // the doublings of a family followed from the scene's point are where a later switch can start
-    const int run = settings.switchAt == 0 ? ++continuationRun_ : -1;
-    if (run > 0) doublings_.clear();
-    startTool(
-        std::move(task), {0.95, 0.55, 0.1},
-        [this, raw, parameter, run](ToolSeries& t) {
-          std::vector<ContinuationPoint> points;
-          std::vector<TypeChange> changes;
-          raw->points().take(points);
-          raw->changes().take(changes);
-          for (const auto& p : points) {
-            t.x.push_back(p.fixedPoint.point[0]), t.y.push_back(p.fixedPoint.point[1]);
-            offerMultipliers(t, p.parameter, p.fixedPoint.multipliers);
-          }
-          for (const auto& c : changes) {
-            const QString text = QString::fromStdString(describe(c, parameter));
-            if (run == continuationRun_ && c.kind == TypeChange::Kind::MultiplierMinusOne)
-              doublings_.push_back(QString("period doubling at %1 = %2")
-                                       .arg(QString::fromStdString(parameter))
-                                       .arg(c.parameter, 0, 'g', 12));
-            emit message(text);
-          }
-          return !points.empty();
-        },
-        [parameter](const ToolSeries& t) {
-          if (t.multipliers.empty())
-            return QString("continuation (tool #%1) ended with no point").arg(t.job->id());
-          return QString("continuation (tool #%1) ended: %2 fixed points, %3 from %4 to %5")
-              .arg(t.job->id())
-              .arg(t.multipliers.size())
-              .arg(QString::fromStdString(parameter))
-              .arg(t.multipliers.front().first, 0, 'g', 10)
-              .arg(t.multipliers.back().first, 0, 'g', 10);
-        });
-    emit message(said);
-  } catch (const InputError& e) {
-    emit message(QString::fromStdString(e.what()));
+namespace {
+// where a streamed row's columns are: the map point's, the continued parameter's, the multipliers' (re1,
+// im1, ...) and the type's; -1 where the row has none
+struct RowColumns {
+  int x = -1, y = -1, parameter = -1, type = -1;
+  std::vector<std::pair<int, int>> multipliers;
+  RowColumns(const StreamedRow& row, const std::vector<std::string>& coordinates,
+             const std::string& parameter) {
+    const auto at = [&row](const std::string& name) {
+      const auto it = std::find(row.names.begin(), row.names.end(), name);
+      return it == row.names.end() ? -1 : static_cast<int>(it - row.names.begin());
+    };
+    if (coordinates.size() >= 2) x = at(coordinates[0]), y = at(coordinates[1]);
+    if (!parameter.empty()) this->parameter = at(parameter);
+    for (int i = 1;; ++i) {
+      const int re = at("re" + std::to_string(i)), im = at("im" + std::to_string(i));
+      if (re < 0 || im < 0) break;
+      multipliers.emplace_back(re, im);
+    }
+    const auto t = std::find(row.textNames.begin(), row.textNames.end(), "type");
+    if (t != row.textNames.end()) type = static_cast<int>(t - row.textNames.begin());
   }
+};
+
+const Rgb kToolColours[] = {
+    {0.95, 0.55, 0.1}, {0.6, 0.2, 0.5}, {0.1, 0.5, 0.2}, {0.55, 0.1, 0.6}, {0.2, 0.4, 0.8}};
+} // namespace
+
+void MapPanel::startRows(const std::string& id) {
+  const ToolEntry* entry = ToolRegistry::global().find(id);
+  startMapRows(id, {}, entry ? QString::fromStdString(entry->title) + " on the map" : QString());
 }
 
-void MapPanel::startBifurcationTree() {
-  const auto sm = sceneMap();
-  if (!sm) return;
+void MapPanel::startMapRows(const std::string& id, const std::vector<SceneOverride>& overrides,
+                            const QString& said, std::optional<Rgb> colour) {
+  if (!scene_ || scene_->model->info().mapCoordinates.empty()) {
+    emit message("this problem has no map coordinates");
+    return;
+  }
+  const ToolRunner* runner = findToolRunner(id);
+  if (!runner) return;
   try {
-    const BifurcationTreeSettings settings =
-        bifurcationTreeSettings(sm->scene().tool("bifurcation_tree"), sm->continuation());
-    auto task = std::make_unique<BifurcationTreeTask>(sm->taskSpec(), settings);
-    BifurcationTreeTask* raw = task.get();
+    const Scene scene = sceneFromJson(scene_->document, scene_->source, overrides);
+    auto task = std::make_unique<ToolTask>(id, std::vector<nlohmann::json>{scene_->document}, scene_->source,
+                                           false, overrides);
+    ToolTask* raw = task.get();
+    const std::vector<std::string> coordinates = scene.model->info().mapCoordinates;
+    const std::string parameter = scene.continuationParameter;
+    const bool eachElliptic = runner->ellipticMultipliersEachRow;
+    const bool doubled = scene.tool("continuation").get("switch") != 0;
     startTool(
-        std::move(task), {0.6, 0.2, 0.5},
-        [this, raw](ToolSeries& t) {
-          t.everyStep = true;
-          std::vector<TreePoint> points;
-          std::vector<PeriodDoubling> doublings;
-          raw->points().take(points);
-          raw->doublings().take(doublings);
-          for (const auto& p : points) {
-            t.x.push_back(p.point.fixedPoint.point[0]), t.y.push_back(p.point.fixedPoint.point[1]);
-            if (p.point.fixedPoint.type ==
-                FixedPointType::Elliptic) // manual §2.4.3: only the tree's elliptic branches
-              offerMultipliers(t, p.point.parameter, p.point.fixedPoint.multipliers);
+        std::move(task), colour.value_or(kToolColours[tools_.size() % std::size(kToolColours)]),
+        [this, raw, coordinates, parameter, eachElliptic, doubled, seen = 0,
+         located = false](ToolSeries& t) mutable {
+          t.everyStep = eachElliptic;
+          bool drew = false;
+          if (raw->startedAgain() != seen) { // run again from the start: what it drew before goes
+            seen = raw->startedAgain();
+            located = false;
+            t.x.clear(), t.y.clear(), t.along.clear(), t.multipliers.clear();
+            for (auto& w : multiplierWindows_)
+              if (w) w->forget(t.job->id()), w->flush();
+            drew = true;
           }
-          for (const auto& d : doublings)
-            emit message(QString("period doubling of the order-%1 point at %2")
-                             .arg(d.order)
-                             .arg(d.parameter, 0, 'g', 12));
-          std::vector<std::string> ends;
-          raw->ends().take(ends);
-          for (const auto& e : ends)
-            emit message(QString("the bifurcation tree ends: %1").arg(QString::fromStdString(e)));
-          return !points.empty();
+          std::vector<StreamedRow> rows;
+          raw->rows().take(rows);
+          for (const StreamedRow& row : rows) {
+            const RowColumns c(row, coordinates, parameter);
+            const auto value = [&row](int i) { return row.values[static_cast<std::size_t>(i)]; };
+            if (c.x < 0 || c.y < 0) continue;
+            t.x.push_back(value(c.x)), t.y.push_back(value(c.y));
+            if (c.parameter < 0) continue;
+            t.along.push_back(value(c.parameter));
+            if (c.multipliers.empty()) continue;
+            const bool elliptic = c.type >= 0 && row.text[static_cast<std::size_t>(c.type)] ==
+                                                     toString(FixedPointType::Elliptic);
+            if (eachElliptic && !elliptic) continue; // manual §2.4.3: only a tree's elliptic branches
+            std::vector<std::complex<double>> m;
+            for (const auto& [re, im] : c.multipliers)
+              m.emplace_back(value(re), value(im));
+            offerMultipliers(t, value(c.parameter), m);
+          }
+          std::vector<std::string> notes;
+          raw->notes().take(notes);
+          for (const auto& n : notes)
+            emit message(QString::fromStdString(n));
+          // once it has ended, the period doublings a family followed from the scene's point located: where
+          // Follow the doubled family can switch
+          const auto result = located || doubled ? std::nullopt : raw->result();
+          if (result && result->fields.contains("changes") && !result->fields.contains("doubled")) {
+            located = true;
+            doublings_.clear();
+            for (const auto& c : result->fields["changes"])
+              if (c.value("kind", "") == toString(TypeChange::Kind::MultiplierMinusOne))
+                doublings_.push_back(QString("period doubling at %1 = %2")
+                                         .arg(QString::fromStdString(parameter))
+                                         .arg(c["parameter"].get<double>(), 0, 'g', 12));
+          }
+          return drew || !rows.empty();
         },
-        [](const ToolSeries& t) {
-          return QString("bifurcation tree (tool #%1) ended: %2 fixed points")
-              .arg(t.job->id())
-              .arg(t.x.size());
+        [raw, parameter](const ToolSeries& t) {
+          const auto result = raw->result();
+          QString said = QString("%1 (tool #%2) ended: %3 points")
+                             .arg(QString::fromStdString(raw->tool().title))
+                             .arg(t.job->id())
+                             .arg(t.x.size());
+          if (!t.along.empty())
+            said += QString(", %1 from %2 to %3")
+                        .arg(QString::fromStdString(parameter))
+                        .arg(t.along.front(), 0, 'g', 10)
+                        .arg(t.along.back(), 0, 'g', 10);
+          if (result && !result->failure.empty()) said += "; " + QString::fromStdString(result->failure);
+          return said;
         });
-    emit message("growing the bifurcation tree of the scene's fixed point");
+    if (!said.isEmpty()) emit message(said);
   } catch (const InputError& e) {
     emit message(QString::fromStdString(e.what()));
   }

@@ -1,15 +1,13 @@
-// FixedPointTasks.h -- the fixed-point family of tools as jobs (manual §2.3.4-§2.3.9): each streams its
-// results through channels while it runs, stops promptly (the tools poll between map evaluations), and goes
-// on from where it stopped: a fixed-point search from its last point, a continuation from its last step; a
-// separatrix or a bifurcation tree starts again. Failures (no convergence, a non-hyperbolic point, ...) end
-// the job with the reason in its status. (The map window runs them; every front end else runs the tools'
-// runners, scenes/MapTools.cpp.)
+// FixedPointTasks.h -- the map window's fixed-point search as a job (manual §2.3.4): it streams its path
+// through a channel while it runs, stops promptly (the search polls between map evaluations), and goes on
+// from its last point. A failure (no convergence, ...) ends the job with the reason in its status. (The rest
+// of the family -- continuation, separatrices, bifurcation tree -- runs on the map as the registry's runners,
+// scenes/ToolTask.h, scenes/MapTools.cpp.)
 #pragma once
 #include "dynamics/jobs/Channel.h"
 #include "dynamics/jobs/RunSpec.h"
 #include "dynamics/jobs/Task.h"
-#include "dynamics/tools/BifurcationTree.h"
-#include "dynamics/tools/Separatrix.h"
+#include "dynamics/tools/FixedPoint.h"
 
 #include <mutex>
 #include <optional>
@@ -60,76 +58,6 @@ private:
   Channel<SearchPoint> path_;
   mutable std::mutex mutex_;
   std::optional<FixedPointResult> result_;
-};
-
-class ContinuationTask final : public Task {
-public:
-  ContinuationTask(MapTaskSpec spec, ContinuationSettings settings);
-  std::string name() const override { return "Fixed point continuation"; }
-  std::string describe() const override;
-  bool run(const ToolControl& control) override;
-  void reset() override;
-  /// New values (while the job does not run): the family is continued again from the task's own guess.
-  void edit(MapTaskSpec spec, ContinuationSettings settings);
-  bool edit(const TaskEdit& e) override;
-  Channel<ContinuationPoint>& points() { return points_; }
-  Channel<TypeChange>& changes() { return changes_; }
-
-private:
-  MapTaskSpec spec_;
-  ContinuationSettings settings_;
-  std::unique_ptr<Continuation> continuation_;
-  Channel<ContinuationPoint> points_;
-  Channel<TypeChange> changes_;
-};
-
-class SeparatrixTask final : public Task {
-public:
-  SeparatrixTask(MapTaskSpec spec, SeparatrixSettings settings);
-  std::string name() const override { return "Separatrix"; }
-  std::string describe() const override { return spec_.describe(); }
-  bool run(const ToolControl& control) override;
-  void reset() override { points_.clear(); }
-  /// New values (while the job does not run): the branch (kept) grows again from the task's own guess.
-  void edit(MapTaskSpec spec, SeparatrixSettings settings);
-  bool edit(const TaskEdit& e) override;
-  const SeparatrixSettings& settings() const { return settings_; }
-  /// Batches of new points along the branch.
-  Channel<std::vector<Eigen::VectorXd>>& points() { return points_; }
-
-private:
-  MapTaskSpec spec_;
-  SeparatrixSettings settings_;
-  Channel<std::vector<Eigen::VectorXd>> points_;
-};
-
-/// A point of a bifurcation tree, with its family's level and order.
-struct TreePoint {
-  int level = 0, order = 1;
-  ContinuationPoint point;
-};
-
-class BifurcationTreeTask final : public Task {
-public:
-  BifurcationTreeTask(MapTaskSpec spec, BifurcationTreeSettings settings);
-  std::string name() const override { return "Bifurcation tree"; }
-  std::string describe() const override { return spec_.describe(); }
-  bool run(const ToolControl& control) override;
-  void reset() override;
-  /// New values (while the job does not run): the tree grows again from the task's own guess.
-  void edit(MapTaskSpec spec, BifurcationTreeSettings settings);
-  bool edit(const TaskEdit& e) override;
-  Channel<TreePoint>& points() { return points_; }
-  Channel<PeriodDoubling>& doublings() { return doublings_; }
-  /// Why the tree ended (BifurcationTreeResult::end), once it has.
-  Channel<std::string>& ends() { return ends_; }
-
-private:
-  MapTaskSpec spec_;
-  BifurcationTreeSettings settings_;
-  Channel<TreePoint> points_;
-  Channel<PeriodDoubling> doublings_;
-  Channel<std::string> ends_;
 };
 
 } // namespace rv

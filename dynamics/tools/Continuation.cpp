@@ -645,6 +645,7 @@ bool Continuation::runFamily(const ToolControl& control,
         break;
       }
       if (!goesOn) break;
+      if (control.stopRequested()) throw Stopped{}; // a map's point may take no poll of its own
     }
   } catch (const Stopped&) {
     return false;

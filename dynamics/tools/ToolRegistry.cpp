@@ -197,8 +197,7 @@ ToolRegistry& ToolRegistry::mutableGlobal() {
                       "JSON, with continuation.switch: the family of doubled order followed instead "
                       "(its points are the table)"}},
          .reference = "manual §2.3.5",
-         .computation =
-             "dynamics/tools/Continuation.h (Continuation); as a job dynamics/jobs/FixedPointTasks.h"});
+         .computation = "dynamics/tools/Continuation.h (Continuation); its runner scenes/MapTools.cpp"});
     add({.id = "multipliers",
          .title = "Multipliers",
          .parent = "continuation",
@@ -226,8 +225,7 @@ ToolRegistry& ToolRegistry::mutableGlobal() {
                       "JSON: each branch grown: its multiplier, direction (outgoing or incoming), "
                       "linear region and why it ended"}},
          .reference = "manual §2.3.6",
-         .computation =
-             "dynamics/tools/Separatrix.h (growSeparatrix); as a job dynamics/jobs/FixedPointTasks.h"});
+         .computation = "dynamics/tools/Separatrix.h (growSeparatrix); its runner scenes/MapTools.cpp"});
     add({.id = "bifurcation_tree",
          .title = "Bifurcation tree",
          .parent = "fixedpoint",
@@ -237,6 +235,9 @@ ToolRegistry& ToolRegistry::mutableGlobal() {
          .commandHelp = "the period-doubling cascade of an elliptic fixed point",
          .outputs = {{"level", "the level of each point's branch in the tree (0: the starting family)"},
                      {"order", "the order of each point's branch"},
+                     {"<parameter>", "the continued parameter's value at each point"},
+                     {"<map coordinates>", "the fixed point"},
+                     {"<re1, im1, ...>", "its multipliers"},
                      {"type", "each point's type"},
                      {"doublings", "JSON: each period doubling (level, order, parameter)"},
                      {"ratios", "JSON: the Feigenbaum ratios"},
@@ -244,8 +245,7 @@ ToolRegistry& ToolRegistry::mutableGlobal() {
                       "why the tree ended (levels reached, the finite value, a family that could not be "
                       "followed, ...)"}},
          .reference = "manual §2.3.7",
-         .computation =
-             "dynamics/tools/BifurcationTree.h (bifurcationTree); as a job dynamics/jobs/FixedPointTasks.h",
+         .computation = "dynamics/tools/BifurcationTree.h (bifurcationTree); its runner scenes/MapTools.cpp",
          .alsoSections = {"continuation"}});
     add({.id = "bifurcation_curve",
          .title = "Bifurcation curve",

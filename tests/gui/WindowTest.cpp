@@ -18,6 +18,7 @@
 #include "app/gui/VisualizerSettings.h"
 #include "dynamics/jobs/JobTree.h"
 #include "dynamics/jobs/PoincareTask.h"
+#include "dynamics/tools/ToolRegistry.h"
 #include "render/charts/Chart3D.h"
 #include "render/charts/PoincareChart.h"
 #include "render/context/HeadlessContext.h"
@@ -1147,7 +1148,7 @@ private slots:
     // its outcome reaches the Results dock: how many points, over which range of the parameter
     map->drain();
     const QString ended =
-        QString("continuation (tool #%1) ended: 41 fixed points, K from 1.5 to 3.5").arg(job->id());
+        QString("Continuation (tool #%1) ended: 41 points, K from 1.5 to 3.5").arg(job->id());
     QTRY_VERIFY2_WITH_TIMEOUT(window_->results().contains(ended), qPrintable(window_->results()), 10000);
     QTest::qWait(200);
     QVERIFY(keep(w->grab().toImage(), "window_multipliers.png"));
@@ -1865,7 +1866,8 @@ private slots:
     for (const auto& tool : ToolRegistry::global().entries()) {
       const ToolRunner* runner = findToolRunner(tool.id);
       // the fixed-point family runs on the map window (MapTest)
-      if (!runner || runner->ownWindow || tool.chartView.empty() || !tool.origin.empty()) continue;
+      if (!runner || runner->window != ToolWindow::Chart || tool.chartView.empty() || !tool.origin.empty())
+        continue;
       const QString scene = tools + QString::fromStdString(tool.id) + ".json";
       QVERIFY2(QFile::exists(scene), qPrintable("a built-in tool with a runner ships an example: " + scene));
       QVERIFY(window_->openScene(scene));
@@ -1893,8 +1895,8 @@ private slots:
     QVERIFY(tried >= 9);
   }
 
-  // the rest of the registry's generic test in the GUI: a tool with a window of its own
-  // (ToolRunner::ownWindow: the map's points, the fixed-point family, the plot filter), created from the
+  // the rest of the registry's generic test in the GUI: a tool shown elsewhere than in a chart window
+  // (ToolRunner::window: the map's points, the fixed-point family, the plot filter), created from the
   // Tools tab on its example scene, starts there -- jobs of the map window that draw and do not fail, or the
   // plot's live window
   void everyToolWithItsOwnWindowStartsThereFromTheToolsTab() {
@@ -1902,7 +1904,7 @@ private slots:
     int tried = 0;
     for (const auto& tool : ToolRegistry::global().entries()) {
       const ToolRunner* runner = findToolRunner(tool.id);
-      if (!runner || !runner->ownWindow || !tool.origin.empty()) continue;
+      if (!runner || runner->window == ToolWindow::Chart || !tool.origin.empty()) continue;
       const QString scene = tools + QString::fromStdString(tool.id) + ".json";
       QVERIFY2(QFile::exists(scene), qPrintable("a built-in tool with a runner ships an example: " + scene));
       QVERIFY(window_->openScene(scene));
@@ -1938,6 +1940,97 @@ private slots:
       }
     }
     QVERIFY(tried >= 6); // poincare, plot, fixedpoint, continuation, separatrix, bifurcation_tree
+  }
+
+  // Tools > Separatrices of the fixed point: the separatrix tool's runner, one job per branch, drawn as they
+  // grow -- the outgoing pair in one colour, the incoming in another. The standard map's saddle (0, 0) at K:
+  // its branches leave along the eigenvectors (1, mu - 1 - K) of the multipliers mu = 1 + K/2 +- sqrt(K +
+  // K^2/4) (the Jacobian there is ((1 + K, 1), (K, 1)))
+  void separatricesGrowAsAJobPerBranch() {
+    nlohmann::json doc = loadScene(defaultScenePath("standard_map")).document;
+    const double K = 0.9;
+    doc["parameters"]["K"] = K;
+    doc["fixedpoint"] = {{"guess", {0.01, 0.01}}};
+    QVERIFY(window_->runDocument(doc));
+    MapPanel* map = window_->mapPanel();
+    const int before = map->toolJobs();
+    map->startSeparatrices();
+    QCOMPARE(map->toolJobs(), before + 4);
+    const std::vector<Job*> all = map->jobs().jobs();
+    const std::vector<Job*> branches(all.end() - 4, all.end());
+    for (Job* j : branches)
+      QTRY_VERIFY_WITH_TIMEOUT(j->status() == Job::Status::Finished, 60000);
+    QTRY_VERIFY_WITH_TIMEOUT(map->toolPoints(branches.back()->id()).size() > 10, 10000);
+    std::vector<int> ids;
+    for (Job* j : branches)
+      ids.push_back(j->id());
+    const auto saved = map->saveToolOutputs(ids);
+    QCOMPARE(saved.size(), std::size_t(4));
+    QVERIFY(saved[0].colour == saved[1].colour && saved[2].colour == saved[3].colour);
+    QVERIFY(!(saved[0].colour == saved[2].colour));
+    const double root = std::sqrt(K + K * K / 4);
+    for (std::size_t b = 0; b < 4; ++b) {
+      const auto points = map->toolPoints(ids[b]);
+      QVERIFY2(points.size() > 10, qPrintable(QString("branch %1").arg(b + 1)));
+      // the first point: on the branch's eigenvector, near the saddle (theta wraps at 2 pi)
+      const double x = std::remainder(points.front().first, 2 * std::numbers::pi),
+                   y = std::remainder(points.front().second, 2 * std::numbers::pi);
+      const double mu = b < 2 ? 1 + K / 2 + root : 1 + K / 2 - root;
+      QVERIFY(std::hypot(x, y) < 0.1);
+      QVERIFY2(std::abs(y - (mu - 1 - K) * x) < 1e-6 * std::abs(x) + 1e-9,
+               qPrintable(QString("branch %1: (%2, %3)").arg(b + 1).arg(x).arg(y)));
+    }
+    for (Job* j : branches)
+      map->removeJob(*j);
+  }
+
+  // a tool from outside rollviz (as a module adds one) whose runner says ToolWindow::MapRows is drawn on the
+  // map window as its rows come, with no GUI code of its own: Tools > Create runs it as a job of the map
+  // window, each row a point where its columns named like the map's coordinates say, its notes and its end
+  // in the Results dock, its output kept by Undo like a family's
+  void aToolFromOutsideThatStreamsMapRowsIsDrawnOnTheMap() {
+    if (!ToolRegistry::global().find("test_map_rows")) {
+      ToolRegistry::mutableGlobal().add({.id = "test_map_rows",
+                                         .title = "Ring",
+                                         .description = "twelve points on a circle of the map",
+                                         .outputs = {{"<map coordinates>", "the points"}},
+                                         .origin = "a test's module"});
+      addToolRunner("test_map_rows", {.run =
+                                          [](const Scene& scene, const ToolControl& control) {
+                                            ToolResult r;
+                                            r.table.names = scene.model->info().mapCoordinates;
+                                            r.table.values.assign(r.table.names.size(), {});
+                                            for (int k = 0; k < 12; ++k) {
+                                              const double a = 2 * std::numbers::pi * k / 12;
+                                              addRow(r, control, {3 + 0.5 * std::cos(a), 0.5 * std::sin(a)});
+                                            }
+                                            addNote(r, control, "twelve points on a circle");
+                                            return r;
+                                          },
+                                      .window = ToolWindow::MapRows});
+    }
+    QVERIFY(window_->openScene(QString::fromStdString(defaultScenePath("standard_map"))));
+    MapPanel* map = window_->mapPanel();
+    const int before = map->toolJobs();
+    window_->createTool("test_map_rows");
+    QCOMPARE(map->toolJobs(), before + 1);
+    Job* job = map->jobs().jobs().back();
+    QTRY_VERIFY_WITH_TIMEOUT(job->status() == Job::Status::Finished, 20000);
+    QTRY_VERIFY_WITH_TIMEOUT(map->toolPoints(job->id()).size() == 12, 10000); // the frame timer drains it
+    const auto points = map->toolPoints(job->id());
+    for (int k = 0; k < 12; ++k) {
+      const double a = 2 * std::numbers::pi * k / 12;
+      QCOMPARE(points[static_cast<std::size_t>(k)].first, 3 + 0.5 * std::cos(a));
+      QCOMPARE(points[static_cast<std::size_t>(k)].second, 0.5 * std::sin(a));
+    }
+    QTRY_VERIFY_WITH_TIMEOUT(window_->results().contains("twelve points on a circle"), 10000);
+    const QString ended = QString("Ring (tool #%1) ended: 12 points").arg(job->id());
+    QTRY_VERIFY2_WITH_TIMEOUT(window_->results().contains(ended), qPrintable(window_->results()), 10000);
+    const auto saved = map->saveToolOutputs({job->id()});
+    QCOMPARE(saved.size(), std::size_t(1));
+    QCOMPARE(saved.front().x.size(), std::size_t(12));
+    map->removeJob(*job);
+    QCOMPARE(map->toolJobs(), before);
   }
 
   // File > Open model...: a model file runs at its own "initial", joins the problem list, and saving it while

@@ -154,5 +154,91 @@ TEST(ToolTask, RunsTheFirstAlternativeThatDoesNotFail) {
   EXPECT_THROW(ToolTask("bifurcation_curve", {}, "test"), InputError);
 }
 
+nlohmann::json standardMapFamily() {
+  return nlohmann::json::parse(R"json({
+    "problem": "standard_map", "parameters": {"K": 1.5}, "initial": {"map": [3.0, 0.1]},
+    "fixedpoint": {"guess": [3.1, 0.05]}, "continuation": {"parameter": "K", "to": 4.5, "step": 0.1}})json");
+}
+
+// the rows and notes of a run stream out as they are computed (the map window draws them so): every row of
+// the result's table, in order, bit for bit, with its type; every note
+TEST(ToolTask, StreamsEachRowAndNoteAsItIsComputed) {
+  registerBuiltinTools();
+  for (const char* tool : {"continuation", "bifurcation_tree"}) {
+    ToolTask task(tool, {standardMapFamily()}, "test", false);
+    EXPECT_FALSE(task.ownsItsScene());
+    ASSERT_TRUE(task.run({})) << tool;
+    const auto r = task.result();
+    ASSERT_TRUE(r);
+    std::vector<StreamedRow> rows;
+    task.rows().take(rows);
+    ASSERT_EQ(static_cast<long>(rows.size()), r->table.rows()) << tool;
+    ASSERT_GT(rows.size(), 5u);
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      EXPECT_EQ(rows[i].names, r->table.names);
+      EXPECT_EQ(rows[i].values, r->table.row(static_cast<long>(i))) << tool << " row " << i;
+      ASSERT_EQ(rows[i].textNames, std::vector<std::string>{"type"});
+      EXPECT_EQ(rows[i].text[0], r->text[0].values[i]);
+    }
+    std::vector<std::string> notes;
+    task.notes().take(notes);
+    EXPECT_EQ(notes, r->notes) << tool;
+    // (pi, 0) doubles at K = 4: the family says so, and so does the tree, whose rows carry multipliers now
+    const auto said = [&notes](const std::string& what) {
+      return std::any_of(notes.begin(), notes.end(),
+                         [&](const std::string& n) { return n.find(what) != std::string::npos; });
+    };
+    EXPECT_TRUE(said("= 4") || said("= 3.99999") || said("= 4.0000")) << tool;
+    EXPECT_NE(std::find(r->table.names.begin(), r->table.names.end(), "re2"), r->table.names.end()) << tool;
+  }
+  // a separatrix streams each level's points as it grows them: the map coordinates of the table's rows
+  ToolTask branch("separatrix", {standardMapFamily()}, "test", false,
+                  {{"separatrix.branches", "[1]"}, {"fixedpoint.guess", "[0.01, 0.01]"}});
+  ASSERT_TRUE(branch.run({}));
+  std::vector<StreamedRow> rows;
+  branch.rows().take(rows);
+  const auto r = branch.result();
+  ASSERT_TRUE(r);
+  ASSERT_GT(rows.size(), 20u);
+  EXPECT_EQ(rows.front().names, (std::vector<std::string>{"branch", "theta", "p"}));
+  EXPECT_LE(static_cast<long>(rows.size()), r->table.rows());
+}
+
+// stopped and continued, a run starts again from the start (startedAgain tells the window that drew the first
+// rows) and gives the family an uninterrupted run gives
+TEST(ToolTask, StoppedAndContinuedItGivesTheUninterruptedFamily) {
+  registerBuiltinTools();
+  ToolTask whole("continuation", {standardMapFamily()}, "test", false);
+  ASSERT_TRUE(whole.run({}));
+  const auto reference = whole.result();
+  ASSERT_TRUE(reference);
+  ToolTask parts("continuation", {standardMapFamily()}, "test", false);
+  long seen = 0;
+  ToolControl stopAfterThree;
+  stopAfterThree.stopRequested = [&] { return parts.rows().total() >= 3; };
+  EXPECT_FALSE(parts.run(stopAfterThree));
+  seen = parts.rows().total();
+  EXPECT_GE(seen, 3);
+  EXPECT_LT(seen, reference->table.rows());
+  EXPECT_EQ(parts.startedAgain(), 0);
+  ASSERT_TRUE(parts.run({}));
+  EXPECT_EQ(parts.startedAgain(), 1);
+  const auto r = parts.result();
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->table.values, reference->table.values);
+}
+
+// a map tool's failure is the job's: the separatrices of an elliptic point
+TEST(ToolTask, ASeparatrixOfAnEllipticPointFailsSayingWhy) {
+  registerBuiltinTools();
+  ToolTask branch("separatrix", {standardMapFamily()}, "test", false);
+  try {
+    branch.run({});
+    ADD_FAILURE() << "(pi, 0) is elliptic at K = 1.5";
+  } catch (const ComputationError& e) {
+    EXPECT_NE(std::string(e.what()).find("not hyperbolic"), std::string::npos) << e.what();
+  }
+}
+
 } // namespace
 } // namespace rv

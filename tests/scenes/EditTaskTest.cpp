@@ -1,12 +1,16 @@
 // Edit properties (manual §2.1) of the fixed-point family: a stopped tool takes an edited scene's values;
-// a search goes on from where it stopped, a continuation starts again with them. Known answers on the
+// a search goes on from where it stopped, a continuation starts again with them, a tool keeps its own
+// settings. Known answers on the
 // standard map: the point (pi, 0) has the trace 2 - K.
 #include "dynamics/core/Errors.h"
 #include "dynamics/jobs/JobTree.h"
 #include "dynamics/jobs/MegnoTask.h"
+#include "scenes/BuiltinTools.h"
 #include "scenes/SceneLoader.h"
 #include "scenes/SceneTools.h"
+#include "scenes/ToolTask.h"
 
+#include <cmath>
 #include <gtest/gtest.h>
 #include <numbers>
 
@@ -54,34 +58,52 @@ TEST(EditTask, AFixedPointSearchGoesOnWithTheNewProblem) {
   EXPECT_EQ(found->type, FixedPointType::Elliptic);
 }
 
+// a family on the map runs as the continuation's registered runner (scenes/ToolTask.h): edited, it starts
+// again with the new settings
 TEST(EditTask, AContinuationStartsAgainWithTheNewSettings) {
-  const SceneMap sm(standardMap(1.5, 2.5, 0.1));
+  registerBuiltinTools();
   JobTree tree;
-  auto task = std::make_unique<ContinuationTask>(sm.taskSpec(), sm.continuation());
-  ContinuationTask* family = task.get();
+  auto task = std::make_unique<ToolTask>("continuation", std::vector<json>{standardMap(1.5).document},
+                                         "standard.json", false);
+  ToolTask* family = task.get();
   Job& job = tree.add(std::move(task));
   runToEnd(job);
-  std::vector<ContinuationPoint> points;
-  family->points().take(points);
-  ASSERT_EQ(points.size(), 11u); // K = 1.5 .. 2.5
+  ASSERT_TRUE(family->result());
+  EXPECT_EQ(family->result()->table.rows(), 11); // K = 1.5 .. 2.5
   bool goesOn = true;
   job.edit([&](Task& t) { goesOn = editTask(t, standardMap(1.5, 3.0, 0.25)); });
   EXPECT_FALSE(goesOn);
+  EXPECT_FALSE(family->result()) << "the old family is not the answer for the new values";
   runToEnd(job);
-  family->points().take(points);
-  ASSERT_EQ(points.size(), 7u); // K = 1.5, 1.75, ..., 3.0
-  EXPECT_NEAR(points.back().parameter, 3.0, 1e-12);
-  for (const auto& p : points)
-    EXPECT_NEAR((p.fixedPoint.multipliers[0] + p.fixedPoint.multipliers[1]).real(), 2 - p.parameter, 1e-8);
+  const auto r = family->result();
+  ASSERT_TRUE(r);
+  ASSERT_EQ(r->table.rows(), 7); // K = 1.5, 1.75, ..., 3.0
+  const auto& K = r->table.values[0];
+  EXPECT_NEAR(K.back(), 3.0, 1e-12);
+  for (std::size_t i = 0; i < K.size(); ++i) // re1 + re2: the trace 2 - K
+    EXPECT_NEAR(r->table.values[3][i] + r->table.values[5][i], 2 - K[i], 1e-8);
 }
 
-TEST(EditTask, ASeparatrixKeepsItsBranchAndToolsWithoutSettingsSaySo) {
-  const SceneMap sm(standardMap(0.9));
-  SeparatrixSettings s;
-  s.branch = 3;
-  SeparatrixTask branch(sm.taskSpec(), s);
-  EXPECT_FALSE(editTask(branch, standardMap(1.2)));
-  EXPECT_EQ(branch.settings().branch, 3);
+// an edit keeps a tool's own settings: the separatrices the map grows keep their branches, a doubled family
+// its switch
+TEST(EditTask, AToolKeepsItsOwnSettingsAndToolsWithoutSettingsSaySo) {
+  registerBuiltinTools();
+  ToolTask branches("separatrix", {standardMap(0.9).document}, "standard.json", false,
+                    {{"separatrix.branches", "[3]"}, {"fixedpoint.guess", "[0.01, 0.01]"}});
+  EXPECT_FALSE(editTask(branches, standardMap(1.2)));
+  ASSERT_TRUE(branches.run({}));
+  const auto r = branches.result();
+  ASSERT_TRUE(r);
+  ASSERT_GT(r->table.rows(), 0);
+  for (double b : r->table.values[0])
+    EXPECT_EQ(b, 3);
+  EXPECT_NEAR(std::remainder(r->fields["fixedpoint"]["point"][0].get<double>(), 2 * std::numbers::pi), 0,
+              1e-9)
+      << "the saddle (0, 0)";
+  // its incoming branch's multiplier at the new K: 1 + K/2 - sqrt(K + K^2/4) (0.4 at the old K = 0.9)
+  const double K = 1.2;
+  EXPECT_NEAR(r->fields["branches"][0]["multiplier"].get<double>(), 1 + K / 2 - std::sqrt(K + K * K / 4),
+              1e-9);
   const Scene scene = standardMap(0.9);
   MegnoTask megno(scene.runSpec(), MegnoSettings{});
   EXPECT_THROW(editTask(megno, scene), InputError);
