@@ -90,11 +90,22 @@ json searchPathRows(const FixedPointResult& r) {
   return pointsJson(points);
 }
 
-// the fixed point the scene's search finds; nothing when stopped on request
+// the fixed point the scene's search finds; nothing when stopped on request. `streamPath`: each step of the
+// search handed on as a row (the map window draws the path as it goes)
 std::optional<FixedPointResult> searchFixedPoint(const SceneMap& s, const ReturnMap& map,
-                                                 const ToolControl& control) {
+                                                 const ToolControl& control, bool streamPath = false) {
+  std::function<void(const SearchPoint&)> onStep;
+  if (streamPath && control.row) {
+    StreamedRow row{map.coordinateNames(), {}, {}, {}};
+    row.names.emplace_back("residual");
+    onStep = [&control, row](const SearchPoint& p) mutable {
+      row.values = toVector(p.point);
+      row.values.push_back(p.residual);
+      control.row(row);
+    };
+  }
   try {
-    return findFixedPoint(map, s.guess(), s.search(), control);
+    return findFixedPoint(map, s.guess(), s.search(), control, onStep);
   } catch (const Stopped&) {
     return std::nullopt;
   }
@@ -104,7 +115,7 @@ ToolResult runFixedPoint(const Scene& scene, const ToolControl& control) {
   const SceneMap s(scene);
   const ReturnMap map = s.map();
   ToolResult result;
-  const auto found = searchFixedPoint(s, map, control);
+  const auto found = searchFixedPoint(s, map, control, true);
   result.stopped = !found;
   if (!found) return result;
   const FixedPointResult& r = *found;

@@ -9,14 +9,14 @@
 namespace rv {
 
 SceneMap::SceneMap(Scene scene, const MapToolOverrides& o, bool needGuess)
-    : scene_(std::move(scene)), task_{scene_.runSpec()}, overrides_(o) {
+    : scene_(std::move(scene)), run_(scene_.runSpec()), overrides_(o) {
   ParameterValues fp = scene_.tool("fixedpoint");
   if (o.order < 0) throw InputError("--order: must be at least 1");
   if (o.order > 0) fp.set("order", o.order, "--order");
   if (!o.method.empty()) fp.setChoice("method", o.method, "--method");
-  task_.search = fixedPointSettings(fp);
-  task_.section = scene_.poincare;
-  task_.section.order = static_cast<int>(fp["order"]);
+  search_ = fixedPointSettings(fp);
+  section_ = scene_.poincare;
+  section_.order = static_cast<int>(fp["order"]);
   const ReturnMap probe = map(); // validates the map (coordinates, section)
   std::vector<double> g = o.guess;
   if (g.empty()) g = scene_.guess;
@@ -32,23 +32,23 @@ SceneMap::SceneMap(Scene scene, const MapToolOverrides& o, bool needGuess)
                      std::to_string(probe.dimension()) + " coordinates (" + names + "), the guess has " +
                      std::to_string(g.size()));
   }
-  task_.guess = Eigen::Map<const Eigen::VectorXd>(g.data(), static_cast<Eigen::Index>(g.size()));
+  guess_ = Eigen::Map<const Eigen::VectorXd>(g.data(), static_cast<Eigen::Index>(g.size()));
 }
 
 IntegratorFactory SceneMap::integrators() const {
   const Model* m = scene_.model.get();
-  const RunSpec* spec = &task_.run;
+  const RunSpec* spec = &run_;
   return [spec, m] { return spec->makeIntegrator(*m); };
 }
 
 ReturnMap SceneMap::map() const {
-  return ReturnMap(*scene_.model, integrators(), task_.section);
+  return ReturnMap(*scene_.model, integrators(), section_);
 }
 
 ContinuationSettings SceneMap::continuation() const {
   ParameterValues cv = scene_.tool("continuation");
   if (overrides_.step) cv.set("step", *overrides_.step, "--step");
-  ContinuationSettings c = continuationSettings(cv, task_.search);
+  ContinuationSettings c = continuationSettings(cv, search_);
   c.parameter = overrides_.parameter.empty() ? scene_.continuationParameter : overrides_.parameter;
   if (c.parameter.empty()) throw InputError("--param: give the parameter to continue in");
   if (scene_.model->info().parameters.find(c.parameter) < 0)
@@ -64,8 +64,8 @@ ContinuationSettings SceneMap::continuation() const {
 
 std::unique_ptr<Continuation> SceneMap::continuationRun() const {
   const ContinuationSettings c = continuation();
-  return std::make_unique<Continuation>(task_.run.modelAt(c.parameter), integrators(), task_.section,
-                                        task_.run.modelParameters[c.parameter], task_.guess, c);
+  return std::make_unique<Continuation>(run_.modelAt(c.parameter), integrators(), section_,
+                                        run_.modelParameters[c.parameter], guess_, c);
 }
 
 std::unique_ptr<PoincareMap> scenePoincareMap(const Scene& scene, long points) {
@@ -94,22 +94,16 @@ std::vector<std::vector<std::complex<double>>> multiplierPath(const SceneMap& s,
 }
 
 namespace {
-// an edited scene as the tools read it; the map is built only for the fixed-point family
+// an edited scene as the tools read it
 class SceneEdit final : public TaskEdit {
 public:
   explicit SceneEdit(const Scene& scene) : scene_(scene) {}
   RunSpec run() const override { return scene_.runSpec(); }
   SectionSettings section() const override { return scene_.poincare; }
-  MapTaskSpec mapTask() const override { return map().taskSpec(); }
   std::string document() const override { return scene_.document.dump(); }
 
 private:
-  const SceneMap& map() const {
-    if (!map_) map_ = std::make_unique<SceneMap>(Scene(scene_), MapToolOverrides{}, false);
-    return *map_;
-  }
   const Scene& scene_;
-  mutable std::unique_ptr<SceneMap> map_;
 };
 } // namespace
 

@@ -1,7 +1,10 @@
 // SceneTools.h -- a scene's map with the fixed-point family's settings folded in (scene sections, then the
 // caller's overrides), ready to run: what the command line, the charts and the GUI share.
 #pragma once
-#include "dynamics/jobs/FixedPointTasks.h"
+#include "dynamics/jobs/RunSpec.h"
+#include "dynamics/jobs/Task.h"
+#include "dynamics/tools/Continuation.h"
+#include "dynamics/tools/FixedPoint.h"
 #include "dynamics/tools/ToolSettings.h"
 #include "scenes/Scene.h"
 
@@ -29,12 +32,10 @@ public:
   SceneMap& operator=(const SceneMap&) = delete;
 
   const Scene& scene() const { return scene_; }
-  const RunSpec& spec() const { return task_.run; }
-  const FixedPointSettings& search() const { return task_.search; }
-  const SectionSettings& section() const { return task_.section; }
-  const Eigen::VectorXd& guess() const { return task_.guess; }
-  /// The job description of the fixed-point family.
-  const MapTaskSpec& taskSpec() const { return task_; }
+  const RunSpec& spec() const { return run_; }
+  const FixedPointSettings& search() const { return search_; }
+  const SectionSettings& section() const { return section_; }
+  const Eigen::VectorXd& guess() const { return guess_; }
   IntegratorFactory integrators() const;
   /// The scene's map (of order fixedpoint.order).
   ReturnMap map() const;
@@ -45,15 +46,19 @@ public:
 
 private:
   Scene scene_;
-  MapTaskSpec task_;
+  RunSpec run_;
+  FixedPointSettings search_;
+  SectionSettings section_; ///< of the map's order
+  Eigen::VectorXd guess_;
   MapToolOverrides overrides_;
 };
 
 /// Edit properties (manual §2.1): gives a stopped tool the values of an edited scene (problem, method,
-/// section and the tool's own settings). A Poincare map and a fixed-point search go on from where they
-/// stopped (returns true); a continuation, separatrix branch or bifurcation tree starts again with them from
-/// its own guess, a chart (ChartTask) is computed again with them (returns false). Throws InputError when the
-/// tool cannot take them (a map's last point has no state on the new level; a tool with no such settings).
+/// section and the tool's own settings). A Poincare map goes on from where it stopped (returns true); a
+/// registered tool run on the map (ToolTask: a search, a family, a separatrix branch, a tree) starts again
+/// with them and its own settings, a chart (ChartTask) is computed again with them (returns false). Throws
+/// InputError when the tool cannot take them (a map's last point has no state on the new level; a tool with
+/// no such settings).
 bool editTask(Task& task, const Scene& edited);
 
 /// The scene's Poincare map from its initial state; `points` > 0 overrides poincare.points (default 2000).

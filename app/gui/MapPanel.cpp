@@ -7,7 +7,6 @@
 #include "app/gui/PlotWindow.h"
 #include "app/gui/QtVtkWidget.h"
 #include "dynamics/core/Errors.h"
-#include "dynamics/jobs/FixedPointTasks.h"
 #include "dynamics/jobs/MegnoTask.h"
 #include "dynamics/jobs/PoincareTask.h"
 #include "dynamics/tools/ToolSettings.h"
@@ -418,40 +417,7 @@ bool MapPanel::drain() {
       emit message(t.ended(t));
     }
   }
-  std::vector<SearchPoint> steps;
-  for (auto& s : searches_) {
-    if (s.task && s.task->path().take(steps) > 0) {
-      for (const auto& p : steps)
-        s.x.push_back(p.point[0]), s.y.push_back(p.point[1]);
-      if (s.path >= 0 && s.x.size() >= 2) chart_->setSeries(s.path, s.x, s.y); // a line needs two points
-      chart_->setSeries(s.point, s.x, s.y);
-      changed = true;
-    }
-    if (s.reported || s.job->running() || !s.task) continue; // (a record has nothing more to say)
-    s.reported = true;
-    if (const auto r = s.task->result()) {
-      QString m = QString("fixed point (");
-      for (Eigen::Index i = 0; i < r->point.size(); ++i)
-        m += QString(i ? ", %1" : "%1").arg(r->point[i], 0, 'g', 12);
-      m += QString("): %1; multipliers").arg(toString(r->type));
-      for (auto z : r->multipliers)
-        m += QString(" %1%2%3i")
-                 .arg(z.real(), 0, 'g', 6)
-                 .arg(z.imag() < 0 ? "" : "+")
-                 .arg(z.imag(), 0, 'g', 6);
-      emit message(m);
-      if (r->point.size() >= 2) {
-        s.foundAt = {r->point[0], r->point[1]};
-        chart_->setSeries(s.found, {r->point[0]}, {r->point[1]});
-      }
-      s.multipliers = r->multipliers; // shown in every multipliers filter, also in one opened later
-      s.caption = m;
-      for (auto& w : multiplierWindows_)
-        if (w) w->showFixedPoint(s.job->id(), m, s.multipliers);
-    } else if (s.job->status() == Job::Status::Failed) {
-      emit message(QString::fromStdString("fixed point: " + s.job->error()));
-    }
-  }
+  changed = drainSearches() || changed;
   for (auto& s : series_) { // a MEGNO job that has ended colours its trajectory
     if (!s.megnoJob || s.megnoValue || s.megnoJob->running()) continue;
     if (s.megnoJob->status() == Job::Status::Finished) {

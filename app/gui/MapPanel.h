@@ -36,7 +36,7 @@ class QtVtkWidget;
 class MultipliersWindow;
 class PlotWindow;
 class PoincareTask;
-class FixedPointTask;
+class ToolTask;
 class MegnoTask;
 
 class MapPanel : public QWidget {
@@ -233,7 +233,7 @@ private:
   static std::size_t takePoints(Series& s, std::size_t most);
   struct Search {
     Job* job;
-    FixedPointTask* task; ///< null for a restored record
+    ToolTask* task; ///< the fixedpoint tool's run; null for a restored record
     std::vector<double> x, y;
     int path, point;
     int found = -1; ///< the point found, as a marker of its own
@@ -241,7 +241,10 @@ private:
     std::vector<std::complex<double>> multipliers; ///< of the point found (empty: none yet)
     QString caption;                               ///< the point, its type and multipliers, in words
     std::vector<double> foundAt;                   ///< the point found, on the map (empty: none)
+    int again = 0;                                 ///< the task's startedAgain() its path was drawn for
   };
+  /// Draws the searches' new steps and reports those that ended; true when something was drawn.
+  bool drainSearches();
   /// The colour of a fixed-point search's path and point.
   static constexpr Rgb kSearchColour{0.9, 0.1, 0.1};
   void start(const Eigen::VectorXd& state);

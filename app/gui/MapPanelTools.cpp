@@ -8,7 +8,6 @@
 #include "app/gui/MultipliersWindow.h"
 #include "app/gui/QtVtkWidget.h"
 #include "dynamics/core/Errors.h"
-#include "dynamics/jobs/FixedPointTasks.h"
 #include "dynamics/tools/ToolRegistry.h"
 #include "dynamics/tools/ToolSettings.h"
 #include "scenes/SceneLoader.h"
@@ -23,11 +22,12 @@ void MapPanel::searchFixedPointAt(double x, double y) {
   if (!scene_ || scene_->model->info().mapCoordinates.empty()) return;
   chart_->holdRanges();
   try {
-    MapToolOverrides o;
-    o.guess = mapPoint(x, y);
-    const SceneMap sm(Scene(*scene_), o);
-    auto task = std::make_unique<FixedPointTask>(sm.taskSpec());
-    FixedPointTask* raw = task.get();
+    // the fixedpoint tool's runner from the click, which stays the search's guess when it is edited
+    const std::vector<SceneOverride> guess{{"fixedpoint.guess", nlohmann::json(mapPoint(x, y)).dump()}};
+    const SceneMap sm(sceneFromJson(scene_->document, scene_->source, guess)); // bad settings: said now
+    auto task = std::make_unique<ToolTask>("fixedpoint", std::vector<nlohmann::json>{scene_->document},
+                                           scene_->source, false, guess);
+    ToolTask* raw = task.get();
     Job& job = jobs_.add(std::move(task));
     const int path = chart_->addCurve({x, x}, {y, y}, kSearchColour, 1.5);
     const int point = chart_->addSeries({}, {}, kSearchColour);
@@ -132,6 +132,63 @@ struct RowColumns {
 const Rgb kToolColours[] = {
     {0.95, 0.55, 0.1}, {0.6, 0.2, 0.5}, {0.1, 0.5, 0.2}, {0.55, 0.1, 0.6}, {0.2, 0.4, 0.8}};
 } // namespace
+
+bool MapPanel::drainSearches() {
+  bool changed = false;
+  const std::vector<std::string>& coordinates =
+      scene_ ? scene_->model->info().mapCoordinates : std::vector<std::string>{};
+  std::vector<StreamedRow> steps;
+  for (auto& s : searches_) {
+    if (s.task && s.task->startedAgain() != s.again) { // searching again from the guess: the old path goes
+      s.again = s.task->startedAgain();
+      s.x.clear(), s.y.clear();
+    }
+    if (s.task && s.task->rows().take(steps) > 0) {
+      for (const StreamedRow& row : steps) {
+        const RowColumns c(row, coordinates, "");
+        if (c.x >= 0 && c.y >= 0)
+          s.x.push_back(row.values[static_cast<std::size_t>(c.x)]),
+              s.y.push_back(row.values[static_cast<std::size_t>(c.y)]);
+      }
+      if (s.path >= 0 && s.x.size() >= 2) chart_->setSeries(s.path, s.x, s.y); // a line needs two points
+      chart_->setSeries(s.point, s.x, s.y);
+      changed = true;
+    }
+    // (a record has nothing more to say; a stopped search says it when it ends)
+    if (s.reported || !s.task ||
+        (s.job->status() != Job::Status::Finished && s.job->status() != Job::Status::Failed))
+      continue;
+    s.reported = true;
+    const auto r = s.task->result();
+    if (r && r->fields.contains("point")) {
+      const auto at = r->fields["point"].get<std::vector<double>>();
+      std::vector<std::complex<double>> multipliers;
+      for (const auto& z : r->fields["multipliers"])
+        multipliers.emplace_back(z[0].get<double>(), z[1].get<double>());
+      QString m = QString("fixed point (");
+      for (std::size_t i = 0; i < at.size(); ++i)
+        m += QString(i ? ", %1" : "%1").arg(at[i], 0, 'g', 12);
+      m += QString("): %1; multipliers").arg(QString::fromStdString(r->fields["type"].get<std::string>()));
+      for (auto z : multipliers)
+        m += QString(" %1%2%3i")
+                 .arg(z.real(), 0, 'g', 6)
+                 .arg(z.imag() < 0 ? "" : "+")
+                 .arg(z.imag(), 0, 'g', 6);
+      emit message(m);
+      if (at.size() >= 2) {
+        s.foundAt = {at[0], at[1]};
+        chart_->setSeries(s.found, {at[0]}, {at[1]});
+      }
+      s.multipliers = multipliers; // shown in every multipliers filter, also in one opened later
+      s.caption = m;
+      for (auto& w : multiplierWindows_)
+        if (w) w->showFixedPoint(s.job->id(), m, s.multipliers);
+    } else if (s.job->status() == Job::Status::Failed) {
+      emit message(QString::fromStdString("fixed point: " + s.job->error()));
+    }
+  }
+  return changed;
+}
 
 void MapPanel::startRows(const std::string& id) {
   const ToolEntry* entry = ToolRegistry::global().find(id);

@@ -8,7 +8,6 @@ namespace rv {
 
 struct RunSpec;
 struct SectionSettings;
-struct MapTaskSpec;
 
 /// Edit properties (manual §2.1): the values of an edited scene as each kind of tool reads them (the scenes
 /// layer builds one from a scene; dynamics does not see scenes).
@@ -18,8 +17,6 @@ public:
   /// Problem and method.
   virtual RunSpec run() const = 0;
   virtual SectionSettings section() const = 0;
-  /// A fixed-point search's start: run, section of the map's order, search settings and guess.
-  virtual MapTaskSpec mapTask() const = 0;
   /// The whole scene document as JSON text, for tasks that compute from a scene (charts).
   virtual std::string document() const = 0;
 };

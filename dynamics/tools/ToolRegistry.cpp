@@ -173,8 +173,7 @@ ToolRegistry& ToolRegistry::mutableGlobal() {
                       "with fixedpoint.path = yes (--path): each point of the search and its residual "
                       "(always in Python, as rows)"}},
          .reference = "manual §2.3.4",
-         .computation =
-             "dynamics/tools/FixedPoint.h (findFixedPoint); as a job dynamics/jobs/FixedPointTasks.h"});
+         .computation = "dynamics/tools/FixedPoint.h (findFixedPoint); its runner scenes/MapTools.cpp"});
     add({.id = "continuation",
          .title = "Continuation",
          .parent = "fixedpoint",

@@ -1,6 +1,6 @@
-// Edit properties (manual §2.1) of the fixed-point family: a stopped tool takes an edited scene's values;
-// a search goes on from where it stopped, a continuation starts again with them, a tool keeps its own
-// settings. Known answers on the
+// Edit properties (manual §2.1) of the fixed-point family, which the map window runs as the registry's
+// runners (scenes/ToolTask.h): a stopped tool takes an edited scene's values and starts again with them,
+// keeping its own settings (a search its guess, a separatrix its branch). Known answers on the
 // standard map: the point (pi, 0) has the trace 2 - K.
 #include "dynamics/core/Errors.h"
 #include "dynamics/jobs/JobTree.h"
@@ -34,28 +34,53 @@ void runToEnd(Job& job) {
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
 }
 
-TEST(EditTask, AFixedPointSearchGoesOnWithTheNewProblem) {
-  const SceneMap sm(standardMap(0.9));
+// the map's fixed-point search (the fixedpoint tool's runner from a click: the guess its own) searches again
+// from its guess with the edited problem
+TEST(EditTask, AFixedPointSearchSearchesAgainWithTheNewProblem) {
+  registerBuiltinTools();
   JobTree tree;
-  auto task = std::make_unique<FixedPointTask>(sm.taskSpec());
-  FixedPointTask* search = task.get();
+  auto task =
+      std::make_unique<ToolTask>("fixedpoint", std::vector<json>{standardMap(0.9).document}, "standard.json",
+                                 false, std::vector<SceneOverride>{{"fixedpoint.guess", "[3.2, -0.05]"}});
+  ToolTask* search = task.get();
   Job& job = tree.add(std::move(task));
   runToEnd(job);
   ASSERT_TRUE(search->result());
-  EXPECT_NEAR(search->result()->point[0], std::numbers::pi, 1e-9);
-  const Scene after = standardMap(2.0);
-  bool goesOn = false;
-  job.edit([&](Task& t) { goesOn = editTask(t, after); });
-  EXPECT_TRUE(goesOn);
+  EXPECT_NEAR(search->result()->fields["point"][0].get<double>(), std::numbers::pi, 1e-9);
+  EXPECT_GE(search->rows().total(), 2) << "its path streamed, step by step";
+  bool goesOn = true;
+  job.edit([&](Task& t) { goesOn = editTask(t, standardMap(2.0)); });
+  EXPECT_FALSE(goesOn);
   EXPECT_FALSE(search->result()) << "the old point is not the answer for the new values";
-  EXPECT_EQ(search->spec().guess, sm.taskSpec().guess) << "the guess is the tool's own";
   runToEnd(job);
   const auto found = search->result(); // (a copy: the result is read under the task's lock)
   ASSERT_TRUE(found);
-  const auto& m = found->multipliers;
+  const auto& m = found->fields["multipliers"];
   ASSERT_EQ(m.size(), 2u);
-  EXPECT_NEAR((m[0] + m[1]).real(), 2 - 2.0, 1e-9) << "trace 2 - K at the new K";
-  EXPECT_EQ(found->type, FixedPointType::Elliptic);
+  EXPECT_NEAR(m[0][0].get<double>() + m[1][0].get<double>(), 2 - 2.0, 1e-9) << "trace 2 - K at the new K";
+  EXPECT_EQ(found->fields["type"], "elliptic");
+  // the guess stayed the click's, not the edited scene's (3.1, 0.05): the first step of the path starts there
+  std::vector<StreamedRow> path;
+  search->rows().take(path);
+  ASSERT_FALSE(path.empty());
+  EXPECT_EQ(path.front().names, (std::vector<std::string>{"theta", "p", "residual"}));
+  EXPECT_EQ(path.front().values[0], 3.2);
+  EXPECT_EQ(path.front().values[1], -0.05);
+}
+
+// a search that does not converge fails the job, saying why
+TEST(EditTask, ASearchThatDoesNotConvergeFailsTheJob) {
+  registerBuiltinTools();
+  JobTree tree;
+  json doc = standardMap(0.9).document;
+  doc["fixedpoint"]["max_iterations"] = 1;
+  doc["fixedpoint"]["max_distance"] = 1e-3;
+  Job& job =
+      tree.add(std::make_unique<ToolTask>("fixedpoint", std::vector<json>{doc}, "standard.json", false,
+                                          std::vector<SceneOverride>{{"fixedpoint.guess", "[2.0, 1.0]"}}));
+  runToEnd(job);
+  EXPECT_EQ(job.status(), Job::Status::Failed);
+  EXPECT_NE(job.error().find("no convergence"), std::string::npos) << job.error();
 }
 
 // a family on the map runs as the continuation's registered runner (scenes/ToolTask.h): edited, it starts
