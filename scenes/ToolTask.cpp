@@ -25,12 +25,9 @@ std::string ToolTask::describe() const {
 
 bool ToolTask::run(const ToolControl& control) {
   reset();
-  if (streamed_) ++startedAgain_; // from the start: what an earlier run streamed is stale
+  const int run = ++runs_; // from the start: what an earlier run streamed is stale
   ToolControl streaming = control;
-  streaming.row = [this](const StreamedRow& row) {
-    streamed_ = true;
-    rows_.push(row);
-  };
+  streaming.row = [this, run](const StreamedRow& row) { rows_.push({run, row}); };
   streaming.note = [this](const std::string& note) { notes_.push(note); };
   std::string failure;
   for (std::size_t i = 0; i < documents_.size(); ++i) {

@@ -9,7 +9,6 @@
 #include "scenes/SceneLoader.h"
 #include "scenes/ToolRunner.h"
 
-#include <atomic>
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -37,12 +36,17 @@ public:
   bool edit(const TaskEdit& e) override;
   bool ownsItsScene() const override { return ownScene_; }
   const ToolEntry& tool() const { return tool_; }
-  /// The rows, as they are computed (a run from the start streams them again: startedAgain()).
-  Channel<StreamedRow>& rows() { return rows_; }
+  /// A row as a run computed it: runs are numbered 1, 2, ... (each begins from the start: after a stop, an
+  /// edit), so that a window drops what an earlier run drew when the next run's first row comes, and an
+  /// earlier run's rows that come late.
+  struct RunRow {
+    int run;
+    StreamedRow row;
+  };
+  /// The rows, as they are computed.
+  Channel<RunRow>& rows() { return rows_; }
   /// The notes, as they are said.
   Channel<std::string>& notes() { return notes_; }
-  /// How many runs began after an earlier one had streamed rows: what was drawn of those is stale.
-  int startedAgain() const { return startedAgain_.load(); }
   /// The result of the last complete run (nullopt before, and after a stop). Thread-safe.
   std::optional<ToolResult> result() const;
   /// Which document gave it (0-based; -1 before).
@@ -54,10 +58,9 @@ private:
   std::string source_;
   bool ownScene_;
   std::vector<SceneOverride> kept_;
-  Channel<StreamedRow> rows_;
+  Channel<RunRow> rows_;
   Channel<std::string> notes_;
-  std::atomic<int> startedAgain_{0};
-  bool streamed_ = false; ///< a run streamed rows since the task was made
+  int runs_ = 0; ///< runs begun (read and written by the job's thread only)
   mutable std::mutex mutex_;
   std::optional<ToolResult> result_;
   int used_ = -1;

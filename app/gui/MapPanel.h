@@ -241,7 +241,7 @@ private:
     std::vector<std::complex<double>> multipliers; ///< of the point found (empty: none yet)
     QString caption;                               ///< the point, its type and multipliers, in words
     std::vector<double> foundAt;                   ///< the point found, on the map (empty: none)
-    int again = 0;                                 ///< the task's startedAgain() its path was drawn for
+    int run = 0;                                   ///< the task's run its path is drawn from
   };
   /// Draws the searches' new steps and reports those that ended; true when something was drawn.
   bool drainSearches();

@@ -137,14 +137,12 @@ bool MapPanel::drainSearches() {
   bool changed = false;
   const std::vector<std::string>& coordinates =
       scene_ ? scene_->model->info().mapCoordinates : std::vector<std::string>{};
-  std::vector<StreamedRow> steps;
+  std::vector<ToolTask::RunRow> steps;
   for (auto& s : searches_) {
-    if (s.task && s.task->startedAgain() != s.again) { // searching again from the guess: the old path goes
-      s.again = s.task->startedAgain();
-      s.x.clear(), s.y.clear();
-    }
     if (s.task && s.task->rows().take(steps) > 0) {
-      for (const StreamedRow& row : steps) {
+      for (const auto& [run, row] : steps) {
+        if (run < s.run) continue;                              // a late step of an earlier run
+        if (run > s.run) s.run = run, s.x.clear(), s.y.clear(); // searching again from the guess
         const RowColumns c(row, coordinates, "");
         if (c.x >= 0 && c.y >= 0)
           s.x.push_back(row.values[static_cast<std::size_t>(c.x)]),
@@ -218,17 +216,20 @@ void MapPanel::startMapRows(const std::string& id, const std::vector<SceneOverri
          located = false](ToolSeries& t) mutable {
           t.everyStep = eachElliptic;
           bool drew = false;
-          if (raw->startedAgain() != seen) { // run again from the start: what it drew before goes
-            seen = raw->startedAgain();
-            located = false;
-            t.x.clear(), t.y.clear(), t.along.clear(), t.multipliers.clear();
-            for (auto& w : multiplierWindows_)
-              if (w) w->forget(t.job->id()), w->flush();
-            drew = true;
-          }
-          std::vector<StreamedRow> rows;
+          std::vector<ToolTask::RunRow> rows;
           raw->rows().take(rows);
-          for (const StreamedRow& row : rows) {
+          for (const auto& item : rows) {
+            const int run = item.run;
+            const StreamedRow& row = item.row; // (a name a lambda may capture, unlike a structured binding)
+            if (run < seen) continue;          // a late row of an earlier run
+            if (run > seen) { // a run from the start (after a stop, an edit): what the earlier drew goes
+              seen = run;
+              located = false;
+              t.x.clear(), t.y.clear(), t.along.clear(), t.multipliers.clear();
+              for (auto& w : multiplierWindows_)
+                if (w) w->forget(t.job->id()), w->flush();
+              drew = true;
+            }
             const RowColumns c(row, coordinates, parameter);
             const auto value = [&row](int i) { return row.values[static_cast<std::size_t>(i)]; };
             if (c.x < 0 || c.y < 0) continue;

@@ -170,15 +170,16 @@ TEST(ToolTask, StreamsEachRowAndNoteAsItIsComputed) {
     ASSERT_TRUE(task.run({})) << tool;
     const auto r = task.result();
     ASSERT_TRUE(r);
-    std::vector<StreamedRow> rows;
+    std::vector<ToolTask::RunRow> rows;
     task.rows().take(rows);
     ASSERT_EQ(static_cast<long>(rows.size()), r->table.rows()) << tool;
     ASSERT_GT(rows.size(), 5u);
     for (std::size_t i = 0; i < rows.size(); ++i) {
-      EXPECT_EQ(rows[i].names, r->table.names);
-      EXPECT_EQ(rows[i].values, r->table.row(static_cast<long>(i))) << tool << " row " << i;
-      ASSERT_EQ(rows[i].textNames, std::vector<std::string>{"type"});
-      EXPECT_EQ(rows[i].text[0], r->text[0].values[i]);
+      EXPECT_EQ(rows[i].run, 1);
+      EXPECT_EQ(rows[i].row.names, r->table.names);
+      EXPECT_EQ(rows[i].row.values, r->table.row(static_cast<long>(i))) << tool << " row " << i;
+      ASSERT_EQ(rows[i].row.textNames, std::vector<std::string>{"type"});
+      EXPECT_EQ(rows[i].row.text[0], r->text[0].values[i]);
     }
     std::vector<std::string> notes;
     task.notes().take(notes);
@@ -195,17 +196,17 @@ TEST(ToolTask, StreamsEachRowAndNoteAsItIsComputed) {
   ToolTask branch("separatrix", {standardMapFamily()}, "test", false,
                   {{"separatrix.branches", "[1]"}, {"fixedpoint.guess", "[0.01, 0.01]"}});
   ASSERT_TRUE(branch.run({}));
-  std::vector<StreamedRow> rows;
+  std::vector<ToolTask::RunRow> rows;
   branch.rows().take(rows);
   const auto r = branch.result();
   ASSERT_TRUE(r);
   ASSERT_GT(rows.size(), 20u);
-  EXPECT_EQ(rows.front().names, (std::vector<std::string>{"branch", "theta", "p"}));
+  EXPECT_EQ(rows.front().row.names, (std::vector<std::string>{"branch", "theta", "p"}));
   EXPECT_LE(static_cast<long>(rows.size()), r->table.rows());
 }
 
-// stopped and continued, a run starts again from the start (startedAgain tells the window that drew the first
-// rows) and gives the family an uninterrupted run gives
+// stopped and continued, a run starts again from the start (its rows carry the next run's number, so that a
+// window drops what the first drew) and gives the family an uninterrupted run gives
 TEST(ToolTask, StoppedAndContinuedItGivesTheUninterruptedFamily) {
   registerBuiltinTools();
   ToolTask whole("continuation", {standardMapFamily()}, "test", false);
@@ -220,9 +221,12 @@ TEST(ToolTask, StoppedAndContinuedItGivesTheUninterruptedFamily) {
   seen = parts.rows().total();
   EXPECT_GE(seen, 3);
   EXPECT_LT(seen, reference->table.rows());
-  EXPECT_EQ(parts.startedAgain(), 0);
   ASSERT_TRUE(parts.run({}));
-  EXPECT_EQ(parts.startedAgain(), 1);
+  std::vector<ToolTask::RunRow> rows;
+  parts.rows().take(rows);
+  ASSERT_EQ(static_cast<long>(rows.size()), seen + reference->table.rows());
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    EXPECT_EQ(rows[i].run, static_cast<long>(i) < seen ? 1 : 2) << i;
   const auto r = parts.result();
   ASSERT_TRUE(r);
   EXPECT_EQ(r->table.values, reference->table.values);
