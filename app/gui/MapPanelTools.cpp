@@ -252,8 +252,8 @@ void MapPanel::startMapRows(const std::string& id, const std::vector<SceneOverri
           // once it has ended, the period doublings a family followed from the scene's point located: where
           // Follow the doubled family can switch
           const auto result = located || doubled ? std::nullopt : raw->result();
+          located = located || result.has_value(); // (read once: a result is copied whole)
           if (result && result->fields.contains("changes") && !result->fields.contains("doubled")) {
-            located = true;
             doublings_.clear();
             for (const auto& c : result->fields["changes"])
               if (c.value("kind", "") == toString(TypeChange::Kind::MultiplierMinusOne))
