@@ -99,6 +99,7 @@ ChaplyginBall::ChaplyginBall(const ParameterValues& p) : ModelWithField(staticIn
   for (int i = 0; i < 3; ++i)
     Jinv_[i] = 1.0 / (I_[i] + D_);
   K_ = {p["K1"], p["K2"], p["K3"]};
+  c_ = {{Jinv_[0], Jinv_[1], Jinv_[2]}, {K_[0], K_[1], K_[2]}, D_, R_};
 
   addStandardObservables();
   const auto M = [](const double* x) { return Eigen::Vector3d(x[0], x[1], x[2]); };

@@ -8,8 +8,10 @@
 // The first six components evolve on their own; the rest are kinematics.
 #pragma once
 #include "dynamics/core/ModelWithField.h"
+#include "dynamics/models/ThreeVector.h"
 
 #include <Eigen/Dense>
+#include <array>
 
 namespace rv {
 
@@ -17,8 +19,25 @@ class ChaplyginBall final : public ModelWithField<ChaplyginBall, 16, 6> {
 public:
   explicit ChaplyginBall(const ParameterValues& params);
   static const ModelInfo& staticInfo();
+  static constexpr bool kLaneField = true; ///< no branch on a value: runs on lanes (Lanes.h)
 
-  template <class S> void field(const Vec<S>& x, Vec<S>& dx) const;
+  /// What the field reads, as T: double, or one value per lane (LaneField.h): J^-1 (J = I + D E), the
+  /// gyrostat K, D = m R^2 and R.
+  template <class T> struct Coefficients {
+    std::array<T, 3> Jinv, K;
+    T D, R;
+  };
+  const Coefficients<double>& coefficients() const { return c_; }
+
+  /// (25), (28)-(30) on ThreeVector, always inlined: the one statement of the equations, for one ball and for
+  /// lanes of balls (the lane kernels compile it whole: ThreeVector.h says why).
+  template <class S, class T>
+  [[gnu::always_inline]] static inline void field(const Coefficients<T>& c, const Vec<S>& x, Vec<S>& dx);
+  template <class S> void field(const Vec<S>& x, Vec<S>& dx) const { field(c_, x, dx); }
+  /// omega from M and gamma: M = I omega + D gamma x (omega x gamma), solved in closed form.
+  template <class S, class T>
+  [[gnu::always_inline]] static inline ThreeVector<S>
+  angularVelocityOf(const Coefficients<T>& c, const ThreeVector<S>& M, const ThreeVector<S>& g);
 
   Eigen::VectorXd integrals(const double* x) const override;
   double measureDensity(const double* x) const override;
@@ -48,32 +67,42 @@ private:
   void stateOnSection(double l, double LG, double g0, double G, Eigen::Vector3d& M, Eigen::Vector3d& g) const;
   Eigen::Vector3d I_, Jinv_, K_; // principal moments, J = I + D E (diagonal), gyrostat
   double D_, R_;
+  Coefficients<double> c_; ///< the same, as the field reads them
 };
+
+template <class S, class T>
+ThreeVector<S> ChaplyginBall::angularVelocityOf(const Coefficients<T>& c, const ThreeVector<S>& M,
+                                                const ThreeVector<S>& g) {
+  // J omega = M + D (gamma, omega) gamma  =>  (gamma, omega) = (gamma, J^-1 M) / (1 - D (gamma, J^-1 gamma))
+  const ThreeVector<S> JiM = times(c.Jinv, M), Jig = times(c.Jinv, g);
+  const S s = dot(g, JiM) / (1.0 - c.D * dot(g, Jig));
+  return JiM + (c.D * s) * Jig;
+}
 
 template <class S>
 Eigen::Matrix<S, 3, 1> ChaplyginBall::angularVelocity(const Eigen::Matrix<S, 3, 1>& M,
                                                       const Eigen::Matrix<S, 3, 1>& g) const {
-  // J omega = M + D (gamma, omega) gamma  =>  (gamma, omega) = (gamma, J^-1 M) / (1 - D (gamma, J^-1 gamma))
-  const Eigen::Matrix<S, 3, 1> JiM = Jinv_.cast<S>().cwiseProduct(M), Jig = Jinv_.cast<S>().cwiseProduct(g);
-  const S s = g.dot(JiM) / (S(1) - D_ * g.dot(Jig));
-  return JiM + (D_ * s) * Jig;
+  return angularVelocityOf<S>(c_, ThreeVector<S>::from(M), ThreeVector<S>::from(g)).eigen();
 }
 
-template <class S> void ChaplyginBall::field(const Vec<S>& x, Vec<S>& dx) const {
-  using V3 = Eigen::Matrix<S, 3, 1>;
+template <class S, class T> void ChaplyginBall::field(const Coefficients<T>& c, const Vec<S>& x, Vec<S>& dx) {
   using std::sqrt;
-  const V3 M = x.template segment<3>(0), g = x.template segment<3>(3);
-  const V3 a = x.template segment<3>(6), b = x.template segment<3>(9);
-  const V3 w = angularVelocity<S>(M, g);
-  dx.template segment<3>(0) = (M + K_.cast<S>()).cross(w); // (25)
-  dx.template segment<3>(3) = g.cross(w);
-  dx.template segment<3>(6) = a.cross(w); // (28)
-  dx.template segment<3>(9) = b.cross(w);
-  const S vx = R_ * w.dot(b), vy = -R_ * w.dot(a); // (30), r = -R gamma
+  using Three = ThreeVector<S>;
+  const Three M{{x[0], x[1], x[2]}}, g{{x[3], x[4], x[5]}}, a{{x[6], x[7], x[8]}}, b{{x[9], x[10], x[11]}};
+  const Three w = angularVelocityOf<S>(c, M, g);
+  const Three dM = cross(M + Three::of(c.K), w), dg = cross(g, w); // (25)
+  const Three da = cross(a, w), db = cross(b, w);                  // (28)
+  for (int i = 0; i < 3; ++i) {
+    dx[i] = dM[i];
+    dx[3 + i] = dg[i];
+    dx[6 + i] = da[i];
+    dx[9 + i] = db[i];
+  }
+  const S vx = c.R * dot(w, b), vy = -(c.R * dot(w, a)); // (30), r = -R gamma
   dx[12] = vx;
   dx[13] = vy;
-  dx[14] = sqrt(vx * vx + vy * vy);                            // speed of the contact point on the plane
-  dx[15] = R_ * sqrt(dx.template segment<3>(3).squaredNorm()); // ... and on the ball: |d(-R gamma)/dt|
+  dx[14] = sqrt(vx * vx + vy * vy); // speed of the contact point on the plane
+  dx[15] = c.R * sqrt(dot(dg, dg)); // ... and on the ball: |d(-R gamma)/dt|
 }
 
 } // namespace rv

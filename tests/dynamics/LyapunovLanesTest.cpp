@@ -241,6 +241,28 @@ TEST(LyapunovLanes, ParaboloidExponentsWithEverhartAreTheScalarRunsBitForBit) {
   expectExponentsAreTheScalarRuns(paraboloids(), [] { return std::make_unique<Everhart>(0.01, 15, 12); });
 }
 
+// Chaplygin balls of eight inertias, gyrostats and masses: the ball's Coefficients (J^-1, K, D, R) run on
+// lanes, each lane its own ball's field, its derivatives and its exponents bit for bit
+std::vector<std::unique_ptr<Model>> chaplyginBalls() {
+  std::vector<std::unique_ptr<Model>> models;
+  for (int l = 0; l < 8; ++l)
+    models.push_back(test::makeModel("chaplygin_ball", {{"I1", 1.0 + 0.05 * l},
+                                                        {"I2", 1.4 - 0.03 * l},
+                                                        {"I3", 1.9 + 0.02 * l},
+                                                        {"K1", 0.1 * l},
+                                                        {"K3", 0.3 - 0.05 * l},
+                                                        {"m", 1 + 0.1 * l}}));
+  return models;
+}
+
+TEST(LyapunovLanes, ChaplyginBallKernelsWithAModelPerLaneEqualEachModelAloneBitForBit) {
+  expectKernelsAreEachModelAlone(chaplyginBalls(), "Chaplygin balls");
+}
+
+TEST(LyapunovLanes, ChaplyginBallExponentsWithEverhartAreTheScalarRunsBitForBit) {
+  expectExponentsAreTheScalarRuns(chaplyginBalls(), [] { return std::make_unique<Everhart>(0.01, 15, 12); });
+}
+
 // Adams starts each interval's run orbit by orbit, on each lane's own tangent system (LaneStack::laneSystem)
 TEST(LyapunovLanes, RattlebackExponentsWithAdamsAreTheScalarRunsBitForBit) {
   expectExponentsAreTheScalarRuns(rattlebacks(), [] { return std::make_unique<Adams>(0.005, 12); });

@@ -120,7 +120,7 @@ TEST(TrajectoryLanes, TheKernelsFieldIsEachModelsRightHandSide) {
       }
     }
   }
-  EXPECT_GE(kernels, 4); // henon_heiles, lorenz, ellipsoid_on_plane, paraboloid_on_plane
+  EXPECT_GE(kernels, 5); // henon_heiles, lorenz, ellipsoid_on_plane, paraboloid_on_plane, chaplygin_ball
 }
 
 // each orbit's map points, as a PoincareMap of that orbit alone finds them, bit for bit (the crossing located
