@@ -33,6 +33,8 @@ bool launchedByMpirun() {
 constexpr int kRequestTag = 1; // worker -> rank 0: records, and a request for a chunk
 constexpr int kChunkTag = 2;   // rank 0 -> worker: the indices, {-1}: later, none: no more work
 constexpr int kLastTag = 3;    // worker -> rank 0: the records of its last chunk; it ends
+// a chunk's point indices (long) go as they are
+static_assert(sizeof(long) == sizeof(std::int64_t), "point indices are sent as MPI_INT64_T");
 #endif
 
 } // namespace
@@ -110,9 +112,9 @@ SweepTraffic serveSweep(const MpiSession& mpi, SweepStore& store, const std::fun
     }
     if (!stopping && poll()) stopping = true;
     const ChunkOffer offer = stopping ? ChunkOffer{} : next();
-    std::vector<std::int64_t> chunk(offer.indices.begin(), offer.indices.end());
-    if (offer.kind != ChunkOffer::Kind::Chunk) chunk.clear();
-    if (offer.kind == ChunkOffer::Kind::Later) chunk.push_back(-1);
+    std::vector<long> chunk; // no more work: none
+    if (offer.kind == ChunkOffer::Kind::Chunk) chunk = offer.indices;
+    if (offer.kind == ChunkOffer::Kind::Later) chunk = {-1};
     MPI_Send(chunk.data(), static_cast<int>(chunk.size()), MPI_INT64_T, status.MPI_SOURCE, kChunkTag,
              MPI_COMM_WORLD);
   }
@@ -128,7 +130,7 @@ void workSweep(const MpiSession& mpi, int batch,
 #ifdef ROLLVIZ_HAVE_MPI
   (void)mpi; // the session only has to be alive; records carry their own column count
   std::vector<char> results, sending; // sending: the records on their way while the next are computed
-  std::vector<std::int64_t> chunk;
+  std::vector<long> chunk;
   const auto receive = [&chunk] {
     MPI_Status status;
     MPI_Probe(0, kChunkTag, MPI_COMM_WORLD, &status);
@@ -149,8 +151,7 @@ void workSweep(const MpiSession& mpi, int batch,
     if (chunk.front() < 0) // later: the level's last points are being computed elsewhere
       std::this_thread::sleep_for(std::chrono::milliseconds(1));
     else
-      for (const std::vector<long>& indices :
-           batchesOf(std::vector<long>(chunk.begin(), chunk.end()), batch)) {
+      for (const std::vector<long>& indices : batchesOf(chunk, batch)) {
         const auto records = evaluate(indices);
         for (std::size_t k = 0; k < indices.size(); ++k)
           packRecord(results, indices[k], records.at(k));
