@@ -656,45 +656,35 @@ std::optional<PointsOnLanes> pointsOnLanes(const std::vector<Scene>& scenes) {
   return p;
 }
 
-std::vector<SweepRecord> evaluateSweepPoints(const SweepSpec& spec, const std::vector<long>& indices,
-                                             const ToolControl& control) {
-  std::vector<SweepRecord> records(indices.size());
-  if (sweepBatch(spec) == 1 || indices.size() < 2) {
-    for (std::size_t k = 0; k < indices.size(); ++k)
-      records[k] = evaluateSweepPoint(spec, indices[k], control);
-    return records;
-  }
-  const auto start = std::chrono::steady_clock::now();
-  // the points' scenes; one that has none is that point's failure, evaluated (and failing) alone
-  std::vector<Scene> scenes;
-  std::vector<std::size_t> batched;
-  for (std::size_t k = 0; k < indices.size(); ++k) {
-    try {
-      scenes.push_back(evaluatedScene(spec, indices[k]));
-      batched.push_back(k);
-    } catch (const std::exception&) {
-      records[k] = evaluateSweepPoint(spec, indices[k], control);
-    }
+namespace {
+// the points `indices`, whose scenes are `scenes`, together on lanes; each record to the sink
+void evaluateOnLanes(const SweepSpec& spec, const std::vector<long>& indices,
+                     const std::vector<Scene>& scenes, std::chrono::steady_clock::time_point start,
+                     const ToolControl& control, const RecordSink& sink) {
+  if (indices.size() < 2) { // alone, as a point of a sweep that does not batch
+    for (const long index : indices)
+      sink(index, evaluateSweepPoint(spec, index, control));
+    return;
   }
   std::optional<std::vector<LaneValues>> lanes;
   try {
-    if (!scenes.empty()) lanes = spec.quantity->evaluateLanes(spec, scenes, control);
+    lanes = spec.quantity->evaluateLanes(spec, scenes, control);
   } catch (const Stopped&) {
-    for (std::size_t k : batched)
-      records[k] = {std::vector<double>(spec.columns.size(), kNaN), 0, false, "stopped"};
-    return records;
+    for (const long index : indices)
+      sink(index, {std::vector<double>(spec.columns.size(), kNaN), 0, false, "stopped"});
+    return;
   } catch (const std::exception&) { // bad settings: each point says so, as alone
     lanes.reset();
   }
   if (!lanes) {
-    for (std::size_t k : batched)
-      records[k] = evaluateSweepPoint(spec, indices[k], control);
-    return records;
+    for (const long index : indices)
+      sink(index, evaluateSweepPoint(spec, index, control));
+    return;
   }
   const double share = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() /
-                       static_cast<double>(batched.size());
-  for (std::size_t j = 0; j < batched.size(); ++j) {
-    SweepRecord& r = records[batched[j]];
+                       static_cast<double>(indices.size());
+  for (std::size_t j = 0; j < indices.size(); ++j) {
+    SweepRecord r;
     const LaneValues& lane = (*lanes)[j];
     if (lane.failure) { // the reason as evaluateSweepPoint words it
       try {
@@ -710,6 +700,54 @@ std::vector<SweepRecord> evaluateSweepPoints(const SweepSpec& spec, const std::v
       r.values.resize(spec.columns.size(), kNaN);
     }
     r.seconds = share;
+    sink(indices[j], r);
+  }
+}
+} // namespace
+
+void evaluateSweepPoints(const SweepSpec& spec, const std::vector<long>& indices, const ToolControl& control,
+                         const RecordSink& sink) {
+  const std::size_t width = static_cast<std::size_t>(sweepBatch(spec));
+  std::vector<Scene> scenes;
+  std::vector<long> batched;
+  auto start = std::chrono::steady_clock::now();
+  for (const long index : indices) {
+    if (control.stopRequested()) return;
+    if (width == 1) {
+      sink(index, evaluateSweepPoint(spec, index, control));
+      continue;
+    }
+    try {
+      scenes.push_back(evaluatedScene(spec, index));
+      batched.push_back(index);
+    } catch (const std::exception&) { // no scene at its values: its failure, said alone; its lane is the next
+                                      // point's
+      sink(index, evaluateSweepPoint(spec, index, control));
+      continue;
+    }
+    if (batched.size() == width) {
+      evaluateOnLanes(spec, batched, scenes, start, control, sink);
+      scenes.clear();
+      batched.clear();
+      start = std::chrono::steady_clock::now();
+    }
+  }
+  if (!batched.empty() && !control.stopRequested())
+    evaluateOnLanes(spec, batched, scenes, start, control, sink);
+}
+
+std::vector<SweepRecord> evaluateSweepPoints(const SweepSpec& spec, const std::vector<long>& indices,
+                                             const ToolControl& control) {
+  std::map<long, SweepRecord> computed;
+  evaluateSweepPoints(spec, indices, control,
+                      [&](long index, const SweepRecord& record) { computed[index] = record; });
+  std::vector<SweepRecord> records;
+  records.reserve(indices.size());
+  for (const long index : indices) {
+    const auto found = computed.find(index);
+    records.push_back(found != computed.end()
+                          ? found->second
+                          : SweepRecord{std::vector<double>(spec.columns.size(), kNaN), 0, false, "stopped"});
   }
   return records;
 }

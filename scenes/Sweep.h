@@ -141,9 +141,13 @@ SweepRecord evaluateSweepPoint(const SweepSpec& spec, long index, const ToolCont
 /// How many points evaluateSweepPoints takes at once: where the quantity runs on lanes, options.lanes, or the
 /// CPU's width (laneWidth: 8 with AVX-512, else 4) where that is 0; else 1.
 int sweepBatch(const SweepSpec& spec);
-/// Computes the grid points `indices` (at most sweepBatch), on SIMD lanes where they can go together, else
-/// one by one; a record per index, as evaluateSweepPoint gives (each point's seconds: its share of the
-/// batch).
+/// Computes the grid points `indices` (any number), each record handed to `sink` as it is computed, as
+/// evaluateSweepPoint gives it: where the quantity runs on SIMD lanes, sweepBatch points at once (each
+/// point's seconds: its share of its batch), and a point with no scene at its values takes no lane (the next
+/// point does). Stops between batches when `control` asks (a batch cut short: records "stopped").
+void evaluateSweepPoints(const SweepSpec& spec, const std::vector<long>& indices, const ToolControl& control,
+                         const RecordSink& sink);
+/// The same, the records returned in the order of `indices` (those a stop left out: "stopped").
 std::vector<SweepRecord> evaluateSweepPoints(const SweepSpec& spec, const std::vector<long>& indices,
                                              const ToolControl& control);
 

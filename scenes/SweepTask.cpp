@@ -47,10 +47,10 @@ bool SweepTask::run(const ToolControl& control) {
   return runSweepLevels(spec_, *store_, threads_, [&](ChunkScheduler& scheduler) {
     return runSweepThreads(
         *store_, scheduler,
-        [this](const std::vector<long>& indices, const ToolControl& c) {
-          return evaluateSweepPoints(spec_, indices, c);
+        [this](const std::vector<long>& chunk, const ToolControl& c, const RecordSink& sink) {
+          evaluateSweepPoints(spec_, chunk, c, sink);
         },
-        sweepBatch(spec_), threads_, control);
+        threads_, control);
   });
 }
 

@@ -172,8 +172,7 @@ int runSweep(const SweepOptions& o) {
   if (resolved.empty()) return 2;
   if (!writer) {
     const SweepSpec s = sweepFromJson(nlohmann::json::parse(resolved), o.sweep);
-    workSweep(mpi, sweepBatch(s),
-              [&s](const std::vector<long>& indices) { return evaluateSweepPoints(s, indices, {}); });
+    workSweep(mpi, [&s](const std::vector<long>& chunk) { return evaluateSweepPoints(s, chunk, {}); });
     return 0;
   }
 
@@ -189,11 +188,12 @@ int runSweep(const SweepOptions& o) {
   const long resumed = store.doneCount();
   std::atomic<long> computed{0};
   // several points at once on SIMD lanes where the quantity can (options.lanes, --lanes)
-  const int batch = sweepBatch(*spec);
-  const BatchEvaluator evaluateBatch = [&](const std::vector<long>& indices, const ToolControl& c) {
-    auto records = evaluateSweepPoints(*spec, indices, c);
-    computed += static_cast<long>(records.size());
-    return records;
+  const ChunkEvaluator evaluateChunk = [&](const std::vector<long>& chunk, const ToolControl& c,
+                                           const RecordSink& sink) {
+    evaluateSweepPoints(*spec, chunk, c, [&](long index, const SweepRecord& record) {
+      ++computed;
+      sink(index, record);
+    });
   };
   Progress progress("sweep");
   const auto start = std::chrono::steady_clock::now();
@@ -239,7 +239,7 @@ int runSweep(const SweepOptions& o) {
             const std::lock_guard lock(levelMutex);
             level = &scheduler;
           }
-          bool finished = runSweepThreads(store, scheduler, evaluateBatch, batch, threads, local);
+          bool finished = runSweepThreads(store, scheduler, evaluateChunk, threads, local);
           while (finished && !scheduler.finished()) { // the other ranks' last chunks of the level
             if (interrupted()) finished = false;
             std::this_thread::sleep_for(std::chrono::milliseconds(2));
@@ -273,7 +273,7 @@ int runSweep(const SweepOptions& o) {
     if (failure) std::rethrow_exception(failure);
   } else {
     complete = runSweepLevels(*spec, store, threads, [&](ChunkScheduler& scheduler) {
-      return runSweepThreads(store, scheduler, evaluateBatch, batch, threads, control);
+      return runSweepThreads(store, scheduler, evaluateChunk, threads, control);
     });
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -57,9 +57,10 @@ struct ChunkOffer {
 SweepTraffic serveSweep(const MpiSession& mpi, SweepStore& store, const std::function<ChunkOffer()>& next,
                         const std::function<bool()>& poll);
 
-/// Ranks 1..N-1: asks rank 0 for chunks, computes their points `batch` at a time with
-/// `evaluate` (a record per index: SIMD lanes) and sends the records back, until rank 0 has no more work.
-void workSweep(const MpiSession& mpi, int batch,
+/// Ranks 1..N-1: asks rank 0 for chunks, computes their points with `evaluate` (a record per index, in the
+/// chunk's order; SIMD lanes as it forms its batches) and sends the records back, until rank 0 has no more
+/// work.
+void workSweep(const MpiSession& mpi,
                const std::function<std::vector<SweepRecord>(const std::vector<long>&)>& evaluate);
 
 } // namespace rv

@@ -327,14 +327,15 @@ pyb::object sweep(const std::string& path, int threads, const pyb::object& progr
   // a failure's whole reason for the points this call computes (the store keeps kReasonBytes of it)
   std::mutex reasonsMutex;
   std::map<long, std::string> reasons;
-  const BatchEvaluator evaluate = [&](const std::vector<long>& indices, const ToolControl& pc) {
-    auto records = evaluateSweepPoints(spec, indices, pc);
-    for (std::size_t k = 0; k < records.size(); ++k)
-      if (!records[k].ok && records[k].reason.size() > SweepStore::kReasonBytes) {
+  const ChunkEvaluator evaluate = [&](const std::vector<long>& chunk, const ToolControl& pc,
+                                      const RecordSink& sink) {
+    evaluateSweepPoints(spec, chunk, pc, [&](long index, const SweepRecord& record) {
+      if (!record.ok && record.reason.size() > SweepStore::kReasonBytes) {
         const std::lock_guard lock(reasonsMutex);
-        reasons[indices[k]] = records[k].reason;
+        reasons[index] = record.reason;
       }
-    return records;
+      sink(index, record);
+    });
   };
   std::optional<pyb::error_already_set> interrupted;
   try {
@@ -342,7 +343,7 @@ pyb::object sweep(const std::string& path, int threads, const pyb::object& progr
       ToolControl c = control;
       c.progress = [&](double) { control.progress(static_cast<double>(store.doneCount()) / spec.points()); };
       complete = runSweepLevels(spec, store, threads, [&](ChunkScheduler& scheduler) {
-        return runSweepThreads(store, scheduler, evaluate, sweepBatch(spec), threads, c);
+        return runSweepThreads(store, scheduler, evaluate, threads, c);
       });
     });
   } catch (pyb::error_already_set& e) {

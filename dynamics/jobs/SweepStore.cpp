@@ -205,28 +205,21 @@ bool ChunkScheduler::finished() const {
   return true;
 }
 
-std::vector<std::vector<long>> batchesOf(const std::vector<long>& chunk, int batch) {
-  const std::size_t step = static_cast<std::size_t>(std::max(1, batch));
-  std::vector<std::vector<long>> out;
-  for (std::size_t at = 0; at < chunk.size(); at += step) {
-    const auto from = chunk.begin() + static_cast<std::ptrdiff_t>(at);
-    out.emplace_back(from, from + static_cast<std::ptrdiff_t>(std::min(step, chunk.size() - at)));
-  }
-  return out;
-}
-
 bool runSweepThreads(SweepStore& store, ChunkScheduler& scheduler,
                      const std::function<SweepRecord(long, const ToolControl&)>& evaluate, int threads,
                      const ToolControl& control) {
   return runSweepThreads(
       store, scheduler,
-      [&](const std::vector<long>& indices, const ToolControl& c) {
-        return std::vector<SweepRecord>{evaluate(indices.front(), c)};
+      [&](const std::vector<long>& chunk, const ToolControl& c, const RecordSink& sink) {
+        for (const long index : chunk) {
+          if (c.stopRequested()) return;
+          sink(index, evaluate(index, c));
+        }
       },
-      1, threads, control);
+      threads, control);
 }
 
-bool runSweepThreads(SweepStore& store, ChunkScheduler& scheduler, const BatchEvaluator& evaluate, int batch,
+bool runSweepThreads(SweepStore& store, ChunkScheduler& scheduler, const ChunkEvaluator& evaluate,
                      int threads, const ToolControl& control) {
   std::atomic<bool> stop{false};
   std::exception_ptr failure; // a disk failure ends the run
@@ -239,13 +232,9 @@ bool runSweepThreads(SweepStore& store, ChunkScheduler& scheduler, const BatchEv
       while (!stop.load()) {
         const auto chunk = scheduler.next();
         if (!chunk) break;
-        for (const std::vector<long>& indices : batchesOf(*chunk, batch)) {
-          if (stop.load()) break;
-          const std::vector<SweepRecord> records = evaluate(indices, pointControl);
-          if (stop.load()) break; // points cut short are dropped, not recorded
-          for (std::size_t k = 0; k < indices.size(); ++k)
-            store.write(indices[k], records[k]);
-        }
+        evaluate(*chunk, pointControl, [&](long index, const SweepRecord& record) {
+          if (!stop.load()) store.write(index, record); // points cut short are dropped, not recorded
+        });
       }
     } catch (...) {
       const std::lock_guard lock(failureMutex);

@@ -107,9 +107,6 @@ private:
   bool stopped_ = false;
 };
 
-/// A chunk cut into batches of `batch` points (the last one shorter), in its order.
-std::vector<std::vector<long>> batchesOf(const std::vector<long>& chunk, int batch);
-
 /// Computes every point the scheduler hands out on `threads` threads: `evaluate(index, control)` never
 /// throws (a failure is a record with ok = false), its record is written to the store. `control` stops it
 /// (points in progress are finished or dropped, never half-written); its progress is the fraction of all
@@ -117,10 +114,14 @@ std::vector<std::vector<long>> batchesOf(const std::vector<long>& chunk, int bat
 bool runSweepThreads(SweepStore& store, ChunkScheduler& scheduler,
                      const std::function<SweepRecord(long, const ToolControl&)>& evaluate, int threads,
                      const ToolControl& control);
-/// Computes several points at once (SIMD lanes): a record per index.
-using BatchEvaluator = std::function<std::vector<SweepRecord>(const std::vector<long>&, const ToolControl&)>;
-/// The same, `batch` points of a chunk at a time.
-bool runSweepThreads(SweepStore& store, ChunkScheduler& scheduler, const BatchEvaluator& evaluate, int batch,
+/// Receives the record of a point as soon as it is computed.
+using RecordSink = std::function<void(long index, const SweepRecord& record)>;
+/// Computes the points of a chunk, each record handed to the sink as computed: several points at once on
+/// SIMD lanes where it can, in batches it forms itself (a point that cannot go on a lane -- no state at its
+/// values -- leaves no lane idle: the next point takes it). Stops between batches when the control asks.
+using ChunkEvaluator = std::function<void(const std::vector<long>&, const ToolControl&, const RecordSink&)>;
+/// The same, a chunk at a time; a record computed after a stop (cut short) is dropped, not written.
+bool runSweepThreads(SweepStore& store, ChunkScheduler& scheduler, const ChunkEvaluator& evaluate,
                      int threads, const ToolControl& control);
 
 /// Packs records for sending between ranks: per record the index, status, cost, values and reason.

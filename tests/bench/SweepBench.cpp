@@ -50,10 +50,10 @@ void sweepOnOneThread(const SweepSpec& spec) {
   SweepStore store(storePath(), "bench", spec.points(), static_cast<int>(spec.columns.size()), "bench");
   ChunkScheduler scheduler(store, 1, 0, {}, sweepBatch(spec));
   runSweepThreads(store, scheduler,
-                  [&](const std::vector<long>& indices, const ToolControl& c) {
-                    return evaluateSweepPoints(spec, indices, c);
+                  [&](const std::vector<long>& chunk, const ToolControl& c, const RecordSink& sink) {
+                    evaluateSweepPoints(spec, chunk, c, sink);
                   },
-                  sweepBatch(spec), 1, {});
+                  1, {});
   store.remove();
 }
 

@@ -416,10 +416,9 @@ std::unique_ptr<SweepStore> sweepOnTwoThreads(const SweepSpec& s, const std::str
                                             static_cast<int>(s.columns.size()), "test");
   ChunkScheduler scheduler(*store, 2);
   EXPECT_TRUE(runSweepThreads(*store, scheduler,
-                              [&](const std::vector<long>& indices, const ToolControl& c) {
-                                return evaluateSweepPoints(s, indices, c);
-                              },
-                              sweepBatch(s), 2, {}));
+                              [&](const std::vector<long>& chunk, const ToolControl& c,
+                                  const RecordSink& sink) { evaluateSweepPoints(s, chunk, c, sink); },
+                              2, {}));
   return store;
 }
 
@@ -457,6 +456,46 @@ TEST(Sweep, PointsOnLanesAreThePointsOneAtATime) {
   EXPECT_LT(failed, batched.points());
   a->remove();
   b->remove();
+}
+
+// A point with no state at its values (outside the energy surface) takes no lane: the batches of a chunk are
+// full but for its last, each point handed to the sink once, and the records are the ones a point gets alone
+TEST(Sweep, APointOutsideTheEnergySurfaceLeavesNoLaneIdle) {
+  const SweepSpec plain = sweepFromJson(
+      sweep("henon_heiles", json::array({axis("map.0", -0.45, 0.6, 9), axis("map.1", -0.5, 0.5, 7)}), "megno",
+            {{"megno.time", 20}, {"integrator.method", "rk4"}, {"integrator.step", 0.02}}, {{"lanes", 4}}),
+      "sw.json");
+  SweepQuantity counted = *plain.quantity; // the same quantity, its batches counted
+  std::vector<std::size_t> widths;
+  counted.evaluateLanes = [&](const SweepSpec& s, const std::vector<Scene>& scenes, const ToolControl& c) {
+    widths.push_back(scenes.size());
+    return plain.quantity->evaluateLanes(s, scenes, c);
+  };
+  SweepSpec spec = plain;
+  spec.quantity = &counted;
+  std::vector<long> chunk(static_cast<std::size_t>(spec.points()));
+  std::iota(chunk.begin(), chunk.end(), 0L);
+  std::vector<int> handed(chunk.size(), 0);
+  long outside = 0;
+  evaluateSweepPoints(spec, chunk, {}, [&](long index, const SweepRecord& record) {
+    ++handed[static_cast<std::size_t>(index)];
+    const SweepRecord alone = evaluateSweepPoint(plain, index, {});
+    ASSERT_EQ(record.ok, alone.ok) << index;
+    if (record.ok) {
+      EXPECT_EQ(record.values, alone.values) << index;
+    } else {
+      EXPECT_EQ(record.reason, alone.reason) << index;
+      ++outside;
+    }
+  });
+  for (std::size_t i = 0; i < handed.size(); ++i)
+    EXPECT_EQ(handed[i], 1) << i;
+  ASSERT_GT(outside, 4); // enough points outside to have cut batches short
+  const long inside = spec.points() - outside;
+  // a last batch of one point is computed alone, off the lanes
+  ASSERT_EQ(static_cast<long>(widths.size()), inside / 4 + (inside % 4 >= 2 ? 1 : 0));
+  for (std::size_t b = 0; b + 1 < widths.size(); ++b)
+    EXPECT_EQ(widths[b], 4U) << b;
 }
 
 // The largest Lyapunov exponent of Lorenz over rho with a parameter per lane
