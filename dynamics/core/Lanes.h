@@ -82,6 +82,31 @@ template <int W> LaneVector<W> operator/(const LaneVector<W>& a, const LaneVecto
   r.v = a.v / b.v;
   return r;
 }
+/// A number and lanes: the number in every lane (a field's coefficients, one per lane, with a constant).
+template <int W> LaneVector<W> operator+(double a, const LaneVector<W>& b) {
+  return LaneVector<W>(a) + b;
+}
+template <int W> LaneVector<W> operator+(const LaneVector<W>& a, double b) {
+  return a + LaneVector<W>(b);
+}
+template <int W> LaneVector<W> operator-(double a, const LaneVector<W>& b) {
+  return LaneVector<W>(a) - b;
+}
+template <int W> LaneVector<W> operator-(const LaneVector<W>& a, double b) {
+  return a - LaneVector<W>(b);
+}
+template <int W> LaneVector<W> operator*(double a, const LaneVector<W>& b) {
+  return LaneVector<W>(a) * b;
+}
+template <int W> LaneVector<W> operator*(const LaneVector<W>& a, double b) {
+  return a * LaneVector<W>(b);
+}
+template <int W> LaneVector<W> operator/(double a, const LaneVector<W>& b) {
+  return LaneVector<W>(a) / b;
+}
+template <int W> LaneVector<W> operator/(const LaneVector<W>& a, double b) {
+  return a / LaneVector<W>(b);
+}
 template <int W> LaneVector<W> operator-(const LaneVector<W>& a) {
   LaneVector<W> r;
   r.v = -a.v;

@@ -117,16 +117,21 @@ BallOnEllipsoid::BallOnEllipsoid(const ParameterValues& p)
     throw InputError(os.str());
   }
   c_ = {p["c1"], p["c2"], p["c3"]};
+  coefficients_ = {.ball = ball_on_surface::ballCoefficients(mu_, D_, R_),
+                   .B = {B_[0], B_[1], B_[2]},
+                   .Binv = {Binv_[0], Binv_[1], Binv_[2]},
+                   .twoC = {2 * c_[0], 2 * c_[1], 2 * c_[2]},
+                   .k = k_};
   addStandardObservables();
   const auto M = [](const double* s) { return Eigen::Vector3d(s[0], s[1], s[2]); };
   const auto gam = [](const double* s) { return Eigen::Vector3d(s[3], s[4], s[5]); };
   for (int i = 0; i < 3; ++i) {
     const std::string n = std::to_string(i + 1);
     addObservable("omega" + n, "angular velocity, fixed axis " + n, [=, this](double, const double* s) {
-      return ball_on_surface::omega<double>(M(s), gam(s), mu_, D_)[i];
+      return ball_on_surface::omega(coefficients_.ball, M(s), gam(s))[i];
     });
     addObservable("x" + n, "centre of the ball, fixed axis " + n,
-                  [=, this](double, const double* s) { return centre<double>(gam(s))[i]; });
+                  [=, this](double, const double* s) { return centre(gam(s))[i]; });
   }
   const auto ad = [M, gam](const double* s) { return toAndoyerDeprit(M(s), gam(s)); };
   addObservable("G", "Andoyer-Deprit G = |M|", [ad](double, const double* s) { return ad(s).G; });
@@ -144,19 +149,19 @@ BallOnEllipsoid::BallOnEllipsoid(const ParameterValues& p)
 }
 
 double BallOnEllipsoid::energy(const Eigen::Vector3d& M, const Eigen::Vector3d& g) const {
-  const Eigen::Vector3d x = centre<double>(g);
+  const Eigen::Vector3d x = centre(g);
   double U = 0.5 * k_ * x.squaredNorm();
   for (int i = 0; i < 3; ++i)
-    U += c_[i] / (x[i] * x[i]);
-  return ball_on_surface::kinetic(M, g, mu_, D_) + U;
+    if (c_[i] != 0) U += c_[i] / (x[i] * x[i]); // no term (not 0 / 0) where the centre crosses x_i = 0
+  return ball_on_surface::kinetic(coefficients_.ball, M, g) + U;
 }
 
 double BallOnEllipsoid::integralK(const Eigen::Vector3d& M, const Eigen::Vector3d& g) const {
-  const Eigen::Vector3d w = ball_on_surface::omega<double>(M, g, mu_, D_), gw = g.cross(w);
-  const Eigen::Vector3d x = centre<double>(g);
+  const Eigen::Vector3d w = ball_on_surface::omega(coefficients_.ball, M, g), gw = g.cross(w);
+  const Eigen::Vector3d x = centre(g);
   double field = k_;
   for (int i = 0; i < 3; ++i)
-    field -= 2 * c_[i] / (B_[i] * x[i] * x[i]);
+    if (c_[i] != 0) field -= 2 * c_[i] / (B_[i] * x[i] * x[i]);
   return gw.dot(Binv_.cwiseProduct(gw)) / g.dot(B_.cwiseProduct(g)) -
          x.dot(Binv_.cwiseProduct(Binv_.cwiseProduct(x))) * field / (mu_ + D_);
 }
@@ -178,7 +183,7 @@ std::optional<BodyPose> BallOnEllipsoid::pose(const double* s) const {
   const Eigen::Vector3d g = Eigen::Vector3d(s[3], s[4], s[5]).normalized();
   BodyPose p;
   p.rotation = ball_on_surface::rotation(s + 6);
-  p.center = centre<double>(g);
+  p.center = centre(g);
   p.contact = p.center - R_ * g;
   p.supportNormal = g;
   return p;
@@ -188,7 +193,7 @@ std::optional<SupportSurface> BallOnEllipsoid::support() const {
   return SupportSurface{[this](double u, double v) {
     const double lon = 2 * std::numbers::pi * u, lat = std::numbers::pi * (v - 0.5);
     const Eigen::Vector3d g(std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat));
-    return Eigen::Vector3d(centre<double>(g) - R_ * g); // the surface the ball touches
+    return Eigen::Vector3d(centre(g) - R_ * g); // the surface the ball touches
   }};
 }
 
@@ -222,7 +227,7 @@ Eigen::VectorXd BallOnEllipsoid::stateFromMap(const std::vector<double>& point, 
     fromAndoyerDeprit({.L = LG, .G = 1, .H = HG, .l = l, .g = spec.sectionValue}, e, g);
     const double kinetic = E - energy(Eigen::Vector3d::Zero(), g);
     if (!(kinetic >= 0)) return false;
-    M = std::sqrt(kinetic / ball_on_surface::kinetic(e, g, mu_, D_)) * e;
+    M = std::sqrt(kinetic / ball_on_surface::kinetic(coefficients_.ball, e, g)) * e;
     return true;
   };
   std::ostringstream where;

@@ -17,36 +17,59 @@ public:
   template <class S> using V3 = ball_on_surface::V3<S>;
   explicit BallOnEllipsoid(const ParameterValues& params);
   static const ModelInfo& staticInfo();
+  static constexpr bool kLaneField = true; ///< no branch on a value: runs on lanes (Lanes.h)
 
-  template <class S> V3<S> centre(const V3<S>& g) const {
+  /// What the field reads, as T: double, or one value per lane (LaneField.h): the ball's coefficients, B =
+  /// diag(b_i^2), its inverse, 2 c_i and k of the field.
+  template <class T> struct Coefficients {
+    ball_on_surface::BallCoefficients<T> ball;
+    std::array<T, 3> B, Binv, twoC;
+    T k;
+  };
+  const Coefficients<double>& coefficients() const { return coefficients_; }
+
+  /// The centre x = B g / sqrt(g, B g) on its ellipsoid, for the unit normal g.
+  template <class S, class T>
+  [[gnu::always_inline]] static inline ThreeVector<S> centreOf(const Coefficients<T>& c,
+                                                               const ThreeVector<S>& g) {
     using std::sqrt;
-    const V3<S> Bg = B_.cast<S>().cwiseProduct(g);
-    return Bg / sqrt(g.dot(Bg));
+    const ThreeVector<S> Bg = times(c.B, g);
+    return (1.0 / sqrt(dot(g, Bg))) * Bg;
   }
-  /// -grad U at the centre.
-  template <class S> V3<S> force(const V3<S>& x) const {
-    V3<S> f = -k_ * x;
+  Eigen::Vector3d centre(const Eigen::Vector3d& g) const {
+    return centreOf<double>(coefficients_, ThreeVector<double>::from(g)).eigen();
+  }
+  /// -grad U at the centre x.
+  template <class S, class T>
+  [[gnu::always_inline]] static inline ThreeVector<S> forceOf(const Coefficients<T>& c,
+                                                              const ThreeVector<S>& x) {
+    ThreeVector<S> f;
     for (int i = 0; i < 3; ++i)
-      f[i] += 2.0 * c_[i] / (x[i] * x[i] * x[i]);
+      f.c[static_cast<std::size_t>(i)] =
+          -c.k * x[i] + ball_on_surface::vanishingWith<S>(c.twoC[static_cast<std::size_t>(i)], [&] {
+            return c.twoC[static_cast<std::size_t>(i)] / (x[i] * x[i] * x[i]);
+          });
     return f;
   }
 
-  template <class S> void field(const Vec<S>& s, Vec<S>& ds) const {
+  /// (16) with the field's torque, on ThreeVector, always inlined: the one statement of the equations, for
+  /// one ball and for lanes of balls.
+  template <class S, class T>
+  [[gnu::always_inline]] static inline void field(const Coefficients<T>& c, const Vec<S>& s, Vec<S>& ds) {
     using std::sqrt;
-    const V3<S> M = s.template segment<3>(0), g = s.template segment<3>(3);
-    const V3<S> w = ball_on_surface::omega<S>(M, g, mu_, D_);
-    const S root = sqrt(g.dot(B_.cast<S>().cwiseProduct(g)));
-    const V3<S> dg =
-        (R_ * root / (mu_ + D_)) * g.cross(g.cross(Binv_.cast<S>().cwiseProduct(g.cross(M)))); // (16)
-    ds.template segment<3>(0) = ball_on_surface::momentumRate<S>(g, dg, w, force<S>(centre<S>(g)), D_, R_);
-    ds.template segment<3>(3) = dg;
-    ds.template segment<4>(6) = ball_on_surface::quaternionRate<S>(s.template segment<4>(6), w);
-    // the contact point x - R g moves with x' - R g' on the surface; on the ball, -R g seen from the turning
-    // ball changes at -R (g' - w x g): equal speeds, as rolling without slipping requires
-    const V3<S> dx = R_ * w.cross(g), dq = dx - R_ * dg, onBall = dg - w.cross(g);
-    ds[10] = sqrt(dq.squaredNorm());
-    ds[11] = R_ * sqrt(onBall.squaredNorm());
+    using Three = ThreeVector<S>;
+    const Three M{{s[0], s[1], s[2]}}, g{{s[3], s[4], s[5]}};
+    const Three w = ball_on_surface::omega<S>(c.ball, M, g);
+    const Three Bg = times(c.B, g);
+    const S root = sqrt(dot(g, Bg));
+    const Three dg = (c.ball.RbyMuPlusD * root) * cross(g, cross(g, times(c.Binv, cross(g, M)))); // (16)
+    ball_on_surface::rates<S>(c.ball, g, dg, w, forceOf<S>(c, (1.0 / root) * Bg), ball_on_surface::Part{s, 6},
+                              ball_on_surface::Part{ds, 0}, ball_on_surface::Part{ds, 6},
+                              ball_on_surface::Part{ds, 10});
+    for (int i = 0; i < 3; ++i)
+      ds[3 + i] = dg[i];
   }
+  template <class S> void field(const Vec<S>& s, Vec<S>& ds) const { field(coefficients_, s, ds); }
 
   Eigen::VectorXd integrals(const double* s) const override;
   double measureDensity(const double* s) const override;
@@ -69,6 +92,7 @@ private:
   Eigen::VectorXd stateFrom(const Eigen::Vector3d& M, const Eigen::Vector3d& g) const;
   Eigen::Vector3d B_, Binv_, c_;
   double mu_, D_, R_, k_;
+  Coefficients<double> coefficients_; ///< the same, as the field reads them
 };
 
 } // namespace rv

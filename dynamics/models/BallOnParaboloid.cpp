@@ -88,10 +88,22 @@ BallOnParaboloid::BallOnParaboloid(const ParameterValues& p)
     throw InputError(
         "R: the ball must be smaller than the bowl's least radius of curvature min(p, q) (here " +
         std::to_string(std::min(p_, q_)) + ")");
+  c_ = {.ball = ball_on_surface::ballCoefficients(mu_, D_, R_),
+        .byTwoP = 1 / (2 * p_),
+        .byTwoQ = 1 / (2 * q_),
+        .byP = 1 / p_,
+        .byQ = 1 / q_,
+        .L = {L_[0], L_[1], L_[2], L_[3]},
+        .Lthird = {L_[0] / 3, L_[1] / 3, L_[2] / 3, L_[3] / 3},
+        .twoThirdsL1 = 2 * L_[1] / 3,
+        .twoThirdsL2 = 2 * L_[2] / 3,
+        .twoL0 = 2 * L_[0],
+        .twoL3 = 2 * L_[3],
+        .weight = m_ * g_};
   addStandardObservables();
   const auto n = [this](const double* s) { return normalAt(s[3], s[4]); };
   const auto w = [this, n](const double* s) {
-    return ball_on_surface::omega<double>(Eigen::Vector3d(s[0], s[1], s[2]), n(s), mu_, D_);
+    return ball_on_surface::omega(c_.ball, Eigen::Vector3d(s[0], s[1], s[2]), n(s));
   };
   for (int i = 0; i < 3; ++i) {
     const std::string k = std::to_string(i + 1);
@@ -101,7 +113,7 @@ BallOnParaboloid::BallOnParaboloid(const ParameterValues& p)
                   [n, i](double, const double* s) { return n(s)[i]; });
   }
   addObservable("x3", "height of the centre",
-                [this](double, const double* s) { return height<double>(s[3], s[4]).phi; });
+                [this](double, const double* s) { return height(s[3], s[4]).phi; });
   addObservable("Lsurface", "length of the contact point's trace on the bowl",
                 [](double, const double* s) { return s[9]; });
   addObservable("Lball", "length of the contact point's trace on the ball",
@@ -111,8 +123,7 @@ BallOnParaboloid::BallOnParaboloid(const ParameterValues& p)
 
 double BallOnParaboloid::energy(const double* s) const {
   const Eigen::Vector3d M(s[0], s[1], s[2]);
-  return ball_on_surface::kinetic(M, normalAt(s[3], s[4]), mu_, D_) +
-         m_ * g_ * height<double>(s[3], s[4]).phi;
+  return ball_on_surface::kinetic(c_.ball, M, normalAt(s[3], s[4])) + m_ * g_ * height(s[3], s[4]).phi;
 }
 
 Eigen::VectorXd BallOnParaboloid::integrals(const double* s) const {
@@ -127,7 +138,7 @@ Eigen::VectorXd BallOnParaboloid::integrals(const double* s) const {
 double BallOnParaboloid::measureDensity(const double* s) const {
   // rho = g3^-4 of (23) on (M, gamma); on the sphere |gamma| = 1 parametrised by (g1, g2) the area element is
   // dg1 dg2 / g3, and (g1, g2) -> (u, v) brings the Jacobian determinant
-  const Height<double> h = height<double>(s[3], s[4]);
+  const Height<double> h = height(s[3], s[4]);
   const double w2 = 1 + h.pu * h.pu + h.pv * h.pv, w = std::sqrt(w2), w3 = w2 * w;
   const double su = h.pu * h.puu + h.pv * h.puv, sv = h.pu * h.puv + h.pv * h.pvv;
   const double j11 = -h.puu / w + h.pu * su / w3, j12 = -h.puv / w + h.pu * sv / w3;
@@ -198,7 +209,7 @@ Eigen::VectorXd BallOnParaboloid::stateFromMap(const std::vector<double>& point,
   const double u = point[0], v = spec.sectionValue, w1 = point[1], w2 = point[2], E = params_["energy"];
   const Eigen::Vector3d n = normalAt(u, v);
   // (M, w) = (mu + D)|w|^2 - D (n, w)^2 = 2 (E - m g z): a quadratic in w3
-  const double nw12 = n[0] * w1 + n[1] * w2, kinetic = E - m_ * g_ * height<double>(u, v).phi;
+  const double nw12 = n[0] * w1 + n[1] * w2, kinetic = E - m_ * g_ * height(u, v).phi;
   const double a = 0.5 * ((mu_ + D_) - D_ * n[2] * n[2]), b = -D_ * n[2] * nw12;
   const double c = 0.5 * ((mu_ + D_) * (w1 * w1 + w2 * w2) - D_ * nw12 * nw12) - kinetic;
   const double disc = b * b - 4 * a * c;

@@ -18,46 +18,65 @@ public:
   template <class S> using V3 = ball_on_surface::V3<S>;
   explicit BallOnParaboloid(const ParameterValues& params);
   static const ModelInfo& staticInfo();
+  static constexpr bool kLaneField = true; ///< no branch on a value: runs on lanes (Lanes.h)
+
+  /// What the field reads, as T: double, or one value per lane (LaneField.h): the ball's coefficients, the
+  /// bowl's as the height's terms multiply them (1 / (2 p), 1 / p, Lambda_i / 3, ...: reciprocals, as
+  /// BallCoefficients says why) and the weight m g.
+  template <class T> struct Coefficients {
+    ball_on_surface::BallCoefficients<T> ball;
+    T byTwoP, byTwoQ, byP, byQ;
+    std::array<T, 4> L, Lthird; ///< Lambda_i, Lambda_i / 3
+    T twoThirdsL1, twoThirdsL2, twoL0, twoL3;
+    T weight;
+  };
+  const Coefficients<double>& coefficients() const { return c_; }
 
   /// Height of the centre's surface and its first and second derivatives.
   template <class S> struct Height { S phi, pu, pv, puu, puv, pvv; };
-  template <class S> Height<S> height(const S& u, const S& v) const {
-    const double* L = L_;
-    return {u * u / (2 * p_) + v * v / (2 * q_) +
-                (L[0] * u * u * u + L[1] * u * u * v + L[2] * u * v * v + L[3] * v * v * v) / 3.0,
-            u / p_ + (3.0 * L[0] * u * u + 2.0 * L[1] * u * v + L[2] * v * v) / 3.0,
-            v / q_ + (L[1] * u * u + 2.0 * L[2] * u * v + 3.0 * L[3] * v * v) / 3.0,
-            1.0 / p_ + (6.0 * L[0] * u + 2.0 * L[1] * v) / 3.0,
-            (2.0 * L[1] * u + 2.0 * L[2] * v) / 3.0,
-            1.0 / q_ + (2.0 * L[2] * u + 6.0 * L[3] * v) / 3.0};
+  template <class S, class T>
+  [[gnu::always_inline]] static inline Height<S> heightOf(const Coefficients<T>& c, const S& u, const S& v) {
+    const S uu = u * u, uv = u * v, vv = v * v;
+    return {uu * c.byTwoP + vv * c.byTwoQ +
+                (c.Lthird[0] * (uu * u) + c.Lthird[1] * (uu * v) + c.Lthird[2] * (u * vv) +
+                 c.Lthird[3] * (vv * v)),
+            u * c.byP + (c.L[0] * uu + c.twoThirdsL1 * uv + c.Lthird[2] * vv),
+            v * c.byQ + (c.Lthird[1] * uu + c.twoThirdsL2 * uv + c.L[3] * vv),
+            c.byP + (c.twoL0 * u + c.twoThirdsL1 * v),
+            c.twoThirdsL1 * u + c.twoThirdsL2 * v,
+            c.byQ + (c.twoThirdsL2 * u + c.twoL3 * v)};
   }
+  Height<double> height(double u, double v) const { return heightOf<double>(c_, u, v); }
   /// The upward unit normal at (u, v): (-phi_u, -phi_v, 1) / sqrt(1 + phi_u^2 + phi_v^2).
-  template <class S> V3<S> normal(const Height<S>& h) const {
+  template <class S> [[gnu::always_inline]] static inline ThreeVector<S> normalOf(const Height<S>& h) {
     using std::sqrt;
-    return V3<S>(-h.pu, -h.pv, S(1.0)) / sqrt(1.0 + h.pu * h.pu + h.pv * h.pv);
+    return (1.0 / sqrt(1.0 + h.pu * h.pu + h.pv * h.pv)) * ThreeVector<S>{{-h.pu, -h.pv, S(1.0)}};
   }
 
-  template <class S> void field(const Vec<S>& s, Vec<S>& ds) const {
+  /// The flow of (21)-(22) with the erratum, on ThreeVector, always inlined: the one statement of the
+  /// equations, for one ball and for lanes of balls.
+  template <class S, class T>
+  [[gnu::always_inline]] static inline void field(const Coefficients<T>& c, const Vec<S>& s, Vec<S>& ds) {
     using std::sqrt;
-    const V3<S> M = s.template segment<3>(0);
-    const Height<S> h = height<S>(s[3], s[4]);
-    const V3<S> n = normal<S>(h);
-    const V3<S> w = ball_on_surface::omega<S>(M, n, mu_, D_);
-    const V3<S> dx = R_ * w.cross(n); // the centre's velocity
-    // n' from the second derivatives along (u', v')
-    const S wn = sqrt(1.0 + h.pu * h.pu + h.pv * h.pv);
+    using Three = ThreeVector<S>;
+    const Three M{{s[0], s[1], s[2]}};
+    const Height<S> h = heightOf<S>(c, s[3], s[4]);
+    // the upward unit normal n = (-phi_u, -phi_v, 1) / wn (normalOf) and its rate along (u', v')
+    const S byWn = 1.0 / sqrt(1.0 + h.pu * h.pu + h.pv * h.pv);
+    const Three n = byWn * Three{{-h.pu, -h.pv, S(1.0)}};
+    const Three w = ball_on_surface::omega<S>(c.ball, M, n);
+    const Three dx = c.ball.R * cross(w, n); // the centre's velocity
     const S dpu = h.puu * dx[0] + h.puv * dx[1], dpv = h.puv * dx[0] + h.pvv * dx[1];
-    const S dwn = (h.pu * dpu + h.pv * dpv) / wn;
-    const V3<S> dn = V3<S>(-dpu, -dpv, S(0.0)) / wn - n * (dwn / wn);
-    const V3<S> gravity(S(0.0), S(0.0), S(-m_ * g_));
-    ds.template segment<3>(0) = ball_on_surface::momentumRate<S>(n, dn, w, gravity, D_, R_);
+    const S dwnByWn = (h.pu * dpu + h.pv * dpv) * (byWn * byWn); // wn' / wn
+    const Three dn = byWn * Three{{-dpu, -dpv, S(0.0)}} - dwnByWn * n;
+    const Three gravity{{S(0.0), S(0.0), S(-c.weight)}};
+    ball_on_surface::rates<S>(c.ball, n, dn, w, gravity, ball_on_surface::Part{s, 5},
+                              ball_on_surface::Part{ds, 0}, ball_on_surface::Part{ds, 5},
+                              ball_on_surface::Part{ds, 9});
     ds[3] = dx[0];
     ds[4] = dx[1];
-    ds.template segment<4>(5) = ball_on_surface::quaternionRate<S>(s.template segment<4>(5), w);
-    const V3<S> dq = dx - R_ * dn, onBall = dn - w.cross(n);
-    ds[9] = sqrt(dq.squaredNorm());
-    ds[10] = R_ * sqrt(onBall.squaredNorm());
   }
+  template <class S> void field(const Vec<S>& s, Vec<S>& ds) const { field(c_, s, ds); }
 
   Eigen::VectorXd integrals(const double* s) const override;
   double measureDensity(const double* s) const override;
@@ -75,14 +94,15 @@ public:
                                const std::string& context) const override;
 
   bool unperturbed() const { return L_[0] == 0 && L_[1] == 0 && L_[2] == 0 && L_[3] == 0; }
-  Eigen::Vector3d normalAt(double u, double v) const { return normal<double>(height<double>(u, v)); }
-  Eigen::Vector3d centre(double u, double v) const { return {u, v, height<double>(u, v).phi}; }
+  Eigen::Vector3d normalAt(double u, double v) const { return normalOf<double>(height(u, v)).eigen(); }
+  Eigen::Vector3d centre(double u, double v) const { return {u, v, height(u, v).phi}; }
   double energy(const double* s) const;
 
 private:
   Eigen::VectorXd stateFrom(const Eigen::Vector3d& omega, double u, double v) const;
   double p_, q_, R_, mu_, D_, m_, g_;
   double L_[4];
+  Coefficients<double> c_; ///< the same, as the field reads them
 };
 
 } // namespace rv

@@ -36,7 +36,8 @@ template <class S> struct ThreeVector {
   template <class C> [[gnu::always_inline]] friend ThreeVector operator*(const C& s, const ThreeVector& a) {
     return {{s * a[0], s * a[1], s * a[2]}};
   }
-  [[gnu::always_inline]] friend ThreeVector operator/(const ThreeVector& a, const S& s) {
+  /// Divided by a scalar (S, or a coefficient).
+  template <class C> [[gnu::always_inline]] friend ThreeVector operator/(const ThreeVector& a, const C& s) {
     return {{a[0] / s, a[1] / s, a[2] / s}};
   }
   /// Component by component, with coefficients T.

@@ -10,6 +10,7 @@
 #include "dynamics/models/BallOnParaboloid.h"
 #include "tests/dynamics/TestSupport.h"
 
+#include <cmath>
 #include <gtest/gtest.h>
 
 namespace rv {
@@ -47,7 +48,7 @@ TEST(BallOnEllipsoid, EquationsSixteenAgreeWithNewtonEuler) {
     Eigen::VectorXd ds(12);
     m->rhs(s.data(), ds.data());
     const Eigen::Vector3d M = s.head<3>(), g = s.segment<3>(3);
-    const Eigen::Vector3d x = ball.centre<double>(g);
+    const Eigen::Vector3d x = ball.centre(g);
     EXPECT_NEAR((x.array() / semi.array()).matrix().squaredNorm(), 1.0, 1e-14)
         << "the centre is on its ellipsoid";
     // the normal of the centre's ellipsoid, differentiated numerically along the rolling velocity R w x n
@@ -135,6 +136,30 @@ TEST(BallOnSurfaces, EverhartConservesTheirIntegralsOverAThousand) {
   check(*bowl, bowl->stateFromMap({0.2, 0.1, 0.3}, {}, "t"), 0.05, {0, 1});
   const auto bumpy = test::makeModel("ball_on_paraboloid", {{"Lambda1", 0.1}, {"Lambda3", 0.05}});
   check(*bumpy, bumpy->stateFromMap({0.2, 0.1, 0.3}, {}, "t"), 0.05, {0});
+}
+
+// A ball on the top of the ellipsoid (gamma along an axis, the centre on two coordinate planes) with no
+// barrier c_i / x_i^2: the field, the energy and K are finite (the barrier's term vanishes with c_i, not 0 /
+// 0), and a ball at rest there stays at rest; turning about the normal, it spins in place
+TEST(BallOnEllipsoid, OnTopOfTheEllipsoidWithoutABarrierItsFieldIsFinite) {
+  for (const auto& m : {test::makeModel("ball_on_ellipsoid", {}),
+                        test::makeModel("ball_on_ellipsoid", {{"k", 0.3}, {"c1", 0.01}})}) {
+    const std::map<std::string, double> top{{"M1", 0},     {"M2", 0},     {"M3", 0.25},
+                                            {"gamma1", 0}, {"gamma2", 0}, {"gamma3", 1}};
+    const Eigen::VectorXd s = m->stateFromNamed(top, "t");
+    Eigen::VectorXd ds(s.size());
+    m->rhs(s.data(), ds.data());
+    const bool barrier1 = m->parameters()["c1"] != 0;
+    for (int i = 0; i < 6; ++i) {
+      if (barrier1 && i < 3) continue; // c1 / x1^2 is infinite at x1 = 0: the model says so, as it should
+      EXPECT_TRUE(std::isfinite(ds[i])) << i;
+      EXPECT_EQ(ds[i], 0.0) << i; // spinning about the normal at the top: M and gamma stay
+    }
+    if (!barrier1) {
+      const Eigen::VectorXd I = m->integrals(s.data());
+      EXPECT_TRUE(I.allFinite()) << I.transpose();
+    }
+  }
 }
 
 TEST(BallOnSurfaces, MapPointsAreCompletedOnTheirIntegrals) {

@@ -180,7 +180,7 @@ void expectKernelsAreEachModelAlone(const std::vector<std::unique_ptr<Model>>& a
     const std::vector<const Model*> models(every.begin(), every.begin() + count);
     const auto kernel = laneKernelFor(models);
     ASSERT_NE(kernel, nullptr);
-    for (int k : {1, 3, 6})
+    for (int k : {1, 3, models.front()->info().coreDimension}) // up to every direction of the core
       test::expectKernelRhsIsEachModelAlone(*kernel, models, random, std::to_string(count) + " " + what, k);
   }
 }
@@ -202,13 +202,15 @@ TEST(LyapunovLanes, ParaboloidKernelsWithAModelPerLaneEqualEachModelAloneBitForB
   expectKernelsAreEachModelAlone(paraboloids(), "paraboloids");
 }
 
+// `starts`: one state per model (none: rigid bodies' states on the plane)
 void expectExponentsAreTheScalarRuns(const std::vector<std::unique_ptr<Model>>& models,
-                                     const IntegratorFactory& everhart) {
-  LyapunovSettings s; // all six exponents, as the sweep's scene asks
+                                     const IntegratorFactory& everhart,
+                                     std::vector<Eigen::VectorXd> starts = {}) {
+  LyapunovSettings s; // every exponent, as the sweep's scene asks
   s.maxTime = 6.5;    // a last interval of half the others
   s.interval = 1;
-  std::vector<Eigen::VectorXd> x0s;
-  for (int l = 0; l < 8; ++l)
+  std::vector<Eigen::VectorXd> x0s = std::move(starts);
+  for (int l = static_cast<int>(x0s.size()); l < 8; ++l)
     x0s.push_back(body_state::fromMomentumAndVertical(Eigen::Vector3d(0.01 * l, 0, -0.3),
                                                       Eigen::Vector3d(0, 0.02 + 0.01 * l, 1).normalized()));
   ASSERT_TRUE(lyapunovRunsOnLanes(pointers(models), everhart, s));
@@ -218,7 +220,7 @@ void expectExponentsAreTheScalarRuns(const std::vector<std::unique_ptr<Model>>& 
   for (std::size_t l = 0; l < 8; ++l) {
     ASSERT_FALSE((*lanes)[l].failure) << l;
     const LyapunovResult alone = lyapunovExponents(*models[l], everhart, x0s[l], s);
-    ASSERT_EQ(alone.last.exponents.size(), 6u);
+    ASSERT_EQ(alone.last.exponents.size(), static_cast<std::size_t>(models[l]->info().coreDimension));
     EXPECT_EQ((*lanes)[l].result.last.exponents, alone.last.exponents) << models[l]->info().id << " " << l;
     EXPECT_EQ((*lanes)[l].result.last.time, alone.last.time) << l;
   }
@@ -261,6 +263,50 @@ TEST(LyapunovLanes, ChaplyginBallKernelsWithAModelPerLaneEqualEachModelAloneBitF
 
 TEST(LyapunovLanes, ChaplyginBallExponentsWithEverhartAreTheScalarRunsBitForBit) {
   expectExponentsAreTheScalarRuns(chaplyginBalls(), [] { return std::make_unique<Everhart>(0.01, 15, 12); });
+}
+
+// Balls on an ellipsoid of eight shapes, masses and fields, and in eight bowls (perturbed and not): the
+// balls' Coefficients run on lanes, each lane its own ball's field, derivatives and exponents bit for bit
+std::vector<std::unique_ptr<Model>> ballsOnSurfaces(const char* id) {
+  std::vector<std::unique_ptr<Model>> models;
+  for (int l = 0; l < 8; ++l)
+    models.push_back(std::string(id) == "ball_on_ellipsoid"
+                         ? test::makeModel(id, {{"b1", 1.5 + 0.05 * l},
+                                                {"b3", 0.8 + 0.01 * l},
+                                                {"R", 0.2},
+                                                {"mu", 0.4 + 0.01 * l},
+                                                {"k", 0.1 * l},
+                                                {"c2", l % 2 == 0 ? 0.0 : 0.01 * l}})
+                         : test::makeModel(id, {{"p", 1.0 + 0.1 * l},
+                                                {"D", 1.0 - 0.05 * l},
+                                                {"Lambda1", 0.02 * l},
+                                                {"Lambda3", l % 3 == 0 ? 0.0 : -0.03}}));
+  return models;
+}
+
+TEST(LyapunovLanes, BallsOnSurfacesKernelsWithAModelPerLaneEqualEachModelAloneBitForBit) {
+  expectKernelsAreEachModelAlone(ballsOnSurfaces("ball_on_ellipsoid"), "balls on ellipsoids");
+  expectKernelsAreEachModelAlone(ballsOnSurfaces("ball_on_paraboloid"), "balls in bowls");
+}
+
+TEST(LyapunovLanes, BallsOnSurfacesExponentsWithEverhartAreTheScalarRunsBitForBit) {
+  const IntegratorFactory everhart = [] { return std::make_unique<Everhart>(0.02, 15, 12); };
+  const auto onEllipsoids = ballsOnSurfaces("ball_on_ellipsoid"),
+             inBowls = ballsOnSurfaces("ball_on_paraboloid");
+  std::vector<Eigen::VectorXd> onEllipsoid, inBowl;
+  for (int l = 0; l < 8; ++l) {
+    onEllipsoid.push_back(onEllipsoids[static_cast<std::size_t>(l)]->stateFromNamed({{"M1", 0.3 + 0.01 * l},
+                                                                                     {"M2", 0.8},
+                                                                                     {"M3", 0.2},
+                                                                                     {"gamma1", 0.3},
+                                                                                     {"gamma2", -0.2},
+                                                                                     {"gamma3", 0.9}},
+                                                                                    "t"));
+    inBowl.push_back(inBowls[static_cast<std::size_t>(l)]->stateFromNamed(
+        {{"omega1", 0.3}, {"omega2", 0.1 + 0.02 * l}, {"omega3", 0.2}, {"x1", 0.2}, {"x2", -0.1}}, "t"));
+  }
+  expectExponentsAreTheScalarRuns(onEllipsoids, everhart, onEllipsoid);
+  expectExponentsAreTheScalarRuns(inBowls, everhart, inBowl);
 }
 
 // Adams starts each interval's run orbit by orbit, on each lane's own tangent system (LaneStack::laneSystem)
