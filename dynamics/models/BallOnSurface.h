@@ -80,7 +80,7 @@ template <class S, class T, class In, class Out>
   for (int i = 0; i < 3; ++i)
     dM[i] = momentum[i];
   // d/dt of the quaternion (q0, q1, q2, q3) turning the ball's frame into the fixed one, w in the fixed frame
-  const S q0 = quaternion[0], q1 = quaternion[1], q2 = quaternion[2], q3 = quaternion[3];
+  const S &q0 = quaternion[0], &q1 = quaternion[1], &q2 = quaternion[2], &q3 = quaternion[3];
   dq[0] = -0.5 * (w[0] * q1 + w[1] * q2 + w[2] * q3);
   dq[1] = 0.5 * (w[0] * q0 + w[1] * q3 - w[2] * q2);
   dq[2] = 0.5 * (w[1] * q0 + w[2] * q1 - w[0] * q3);
