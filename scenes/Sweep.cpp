@@ -720,8 +720,8 @@ void evaluateSweepPoints(const SweepSpec& spec, const std::vector<long>& indices
     try {
       scenes.push_back(evaluatedScene(spec, index));
       batched.push_back(index);
-    } catch (const std::exception&) { // no scene at its values: its failure, said alone; its lane is the next
-                                      // point's
+    } catch (const std::exception&) {
+      // no scene at its values: its failure, said alone; its lane is the next point's
       sink(index, evaluateSweepPoint(spec, index, control));
       continue;
     }
