@@ -29,6 +29,13 @@ template <class D> double valueOf(const Eigen::AutoDiffScalar<D>& v) {
 /// dimension (the leading components that evolve on their own); it must equal info().coreDimension. A Derived
 /// whose field has no branch on a value may declare `static constexpr bool kLaneField = true`: then its field
 /// also runs on 4 or 8 states at once (LaneField.h).
+///
+/// Every virtual member is instantiated wherever the class is constructed: the lane kernels (4 and 8 lanes,
+/// up to kMaxFixedVectors tangent vectors, three instruction sets) make that costly. A model constructed in
+/// more than one file declares `extern template class ModelWithField<Derived, N, M>;` after its class and
+/// defines it in its own .cpp (`template class ...;`), so that they are compiled once: the registry's one
+/// list of models (BuiltinModels.cpp) had compiled every model's kernels again, 6 min at -O2 and 9 min under
+/// ASan.
 template <class Derived, int N, int M = N> class ModelWithField : public Model, public LaneField {
 public:
   static constexpr int kDim = N;
@@ -39,80 +46,31 @@ public:
       throw std::logic_error(info.id + ": the state sizes of ModelWithField and ModelInfo disagree");
   }
 
-  void rhs(const double* x, double* dx) const final {
-    const Vec<double> in = Eigen::Map<const Vec<double>>(x);
-    Vec<double> out;
-    self().field(in, out);
-    Eigen::Map<Vec<double>> result(dx);
-    result = out;
-  }
-
-  void jacobian(const double* x, double* jac) const final {
-    using AD = Eigen::AutoDiffScalar<Eigen::Matrix<double, N, 1>>;
-    Vec<AD> xa, fa;
-    for (int i = 0; i < N; ++i)
-      xa[i] = AD(x[i], N, i);
-    self().field(xa, fa);
-    for (int i = 0; i < N; ++i)
-      for (int j = 0; j < N; ++j)
-        jac[i * N + j] = fa[i].derivatives()[j];
-  }
+  void rhs(const double* x, double* dx) const final;
+  void jacobian(const double* x, double* jac) const final;
 
   /// Derivatives with respect to the core components only: cheaper when the kinematics add many components.
-  void coreJacobian(const double* x, double* jac) const final {
-    using D = Eigen::Matrix<double, M, 1>; // M derivatives, fixed size: no heap, unrolled
-    using AD = Eigen::AutoDiffScalar<D>;
-    Vec<AD> xa, fa;
-    for (int i = 0; i < N; ++i)
-      xa[i] = i < M ? AD(x[i], M, i) : AD(x[i], D::Zero());
-    self().field(xa, fa);
-    for (int i = 0; i < M; ++i)
-      for (int j = 0; j < M; ++j)
-        jac[i * M + j] = fa[i].derivatives()[j];
-  }
+  void coreJacobian(const double* x, double* jac) const final;
 
   /// One pass of forward AutoDiff seeded with the tangent vectors (derivative vectors of fixed size for up to
   /// kMaxFixedVectors; more go through the Jacobian): the values are f, the derivatives J V.
-  void tangentRhs(const double* x, const double* V, int k, double* dx, double* dV) const final {
-    if (!withFixedVectors(k, [&]<int K>() { directional<K>(x, V, dx, dV); }))
-      Model::tangentRhs(x, V, k, dx, dV);
-  }
+  void tangentRhs(const double* x, const double* V, int k, double* dx, double* dV) const final;
 
   /// RK4 on (x, V) with the state, the stages and the AutoDiff pass all of fixed size and inlined: what a
   /// hand-written variational system compiles to (Boost.Odeint's chaotic_system example), from the one field.
-  bool tangentRk4(double* x, double* V, int k, double h, long steps) const final {
-    return !isMap() && withFixedVectors(k, [&]<int K>() { fusedRk4<K>(x, V, h, steps); });
-  }
+  bool tangentRk4(double* x, double* V, int k, double h, long steps) const final;
 
   /// The lane kernel of 4 or 8 models of this class: their fields at once, in one AVX2 (4 lanes) or AVX-512
   /// (8 lanes) register per component where the CPU has it (without fused multiply-add: each lane rounds as
   /// the scalar path does), else in SSE2 pairs.
-  std::unique_ptr<LaneKernel> laneKernel(const LaneModels& models) const final {
-    if constexpr (requires { Derived::kLaneField; }) {
-      if (isMap()) return nullptr;
-      if (models.size() == 4) return laneKernelOf<4>(models);
-      if (models.size() == 8) return laneKernelOf<8>(models);
-      return nullptr;
-    } else {
-      (void)models;
-      return nullptr;
-    }
-  }
+  std::unique_ptr<LaneKernel> laneKernel(const LaneModels& models) const final;
 
   /// Tangent vectors up to this many (and the core dimension) get code with their count fixed at compile
   /// time.
   static constexpr int kMaxFixedVectors = 6;
 
   /// The field evaluated on recording scalars: its Taylor expansion for the taylor integrator.
-  void recordField(taylor::Tape& tape, const double* x) const final {
-    taylor::Recording recording(tape, N);
-    Vec<taylor::Var> xa, fa;
-    for (int i = 0; i < N; ++i)
-      xa[i] = tape.input(i, x[i]);
-    self().field(xa, fa);
-    for (int i = 0; i < N; ++i)
-      tape.setOutput(i, fa[i]);
-  }
+  void recordField(taylor::Tape& tape, const double* x) const final;
 
 private:
   const Derived& self() const { return static_cast<const Derived&>(*this); }
@@ -312,5 +270,78 @@ private:
         dV[c * M + i] = fa[i].derivatives().size() ? fa[i].derivatives()[c] : 0.0;
   }
 };
+
+// The virtual members out of the class body: not inline, so that `extern template` keeps a file that
+// constructs a model from compiling them (see above).
+
+template <class Derived, int N, int M>
+void ModelWithField<Derived, N, M>::rhs(const double* x, double* dx) const {
+  const Vec<double> in = Eigen::Map<const Vec<double>>(x);
+  Vec<double> out;
+  self().field(in, out);
+  Eigen::Map<Vec<double>> result(dx);
+  result = out;
+}
+
+template <class Derived, int N, int M>
+void ModelWithField<Derived, N, M>::jacobian(const double* x, double* jac) const {
+  using AD = Eigen::AutoDiffScalar<Eigen::Matrix<double, N, 1>>;
+  Vec<AD> xa, fa;
+  for (int i = 0; i < N; ++i)
+    xa[i] = AD(x[i], N, i);
+  self().field(xa, fa);
+  for (int i = 0; i < N; ++i)
+    for (int j = 0; j < N; ++j)
+      jac[i * N + j] = fa[i].derivatives()[j];
+}
+
+template <class Derived, int N, int M>
+void ModelWithField<Derived, N, M>::coreJacobian(const double* x, double* jac) const {
+  using D = Eigen::Matrix<double, M, 1>; // M derivatives, fixed size: no heap, unrolled
+  using AD = Eigen::AutoDiffScalar<D>;
+  Vec<AD> xa, fa;
+  for (int i = 0; i < N; ++i)
+    xa[i] = i < M ? AD(x[i], M, i) : AD(x[i], D::Zero());
+  self().field(xa, fa);
+  for (int i = 0; i < M; ++i)
+    for (int j = 0; j < M; ++j)
+      jac[i * M + j] = fa[i].derivatives()[j];
+}
+
+template <class Derived, int N, int M>
+void ModelWithField<Derived, N, M>::tangentRhs(const double* x, const double* V, int k, double* dx,
+                                               double* dV) const {
+  if (!withFixedVectors(k, [&]<int K>() { directional<K>(x, V, dx, dV); }))
+    Model::tangentRhs(x, V, k, dx, dV);
+}
+
+template <class Derived, int N, int M>
+bool ModelWithField<Derived, N, M>::tangentRk4(double* x, double* V, int k, double h, long steps) const {
+  return !isMap() && withFixedVectors(k, [&]<int K>() { fusedRk4<K>(x, V, h, steps); });
+}
+
+template <class Derived, int N, int M>
+std::unique_ptr<LaneKernel> ModelWithField<Derived, N, M>::laneKernel(const LaneModels& models) const {
+  if constexpr (requires { Derived::kLaneField; }) {
+    if (isMap()) return nullptr;
+    if (models.size() == 4) return laneKernelOf<4>(models);
+    if (models.size() == 8) return laneKernelOf<8>(models);
+    return nullptr;
+  } else {
+    (void)models;
+    return nullptr;
+  }
+}
+
+template <class Derived, int N, int M>
+void ModelWithField<Derived, N, M>::recordField(taylor::Tape& tape, const double* x) const {
+  taylor::Recording recording(tape, N);
+  Vec<taylor::Var> xa, fa;
+  for (int i = 0; i < N; ++i)
+    xa[i] = tape.input(i, x[i]);
+  self().field(xa, fa);
+  for (int i = 0; i < N; ++i)
+    tape.setOutput(i, fa[i]);
+}
 
 } // namespace rv

@@ -264,4 +264,6 @@ Eigen::VectorXd BallOnEllipsoid::stateFromMap(const std::vector<double>& point, 
   return stateFrom(M, g);
 }
 
+template class ModelWithField<BallOnEllipsoid, 12, 6>;
+
 } // namespace rv

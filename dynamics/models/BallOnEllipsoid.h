@@ -95,4 +95,8 @@ private:
   Coefficients<double> coefficients_; ///< the same, as the field reads them
 };
 
+// compiled once, in BallOnEllipsoid.cpp: constructing the model elsewhere does not compile its kernels again
+// (ModelWithField.h)
+extern template class ModelWithField<BallOnEllipsoid, 12, 6>;
+
 } // namespace rv

@@ -226,4 +226,6 @@ Eigen::VectorXd BallOnParaboloid::stateFromMap(const std::vector<double>& point,
   return stateFrom(Eigen::Vector3d(w1, w2, w3), u, v);
 }
 
+template class ModelWithField<BallOnParaboloid, 11, 5>;
+
 } // namespace rv

@@ -105,4 +105,8 @@ private:
   Coefficients<double> c_; ///< the same, as the field reads them
 };
 
+// compiled once, in BallOnParaboloid.cpp: constructing the model elsewhere does not compile its kernels again
+// (ModelWithField.h)
+extern template class ModelWithField<BallOnParaboloid, 11, 5>;
+
 } // namespace rv

@@ -213,4 +213,6 @@ Eigen::VectorXd ChaplyginBall::stateFromMap(const std::vector<double>& point, co
   return body_state::fromMomentumAndVertical(M, g);
 }
 
+template class ModelWithField<ChaplyginBall, 16, 6>;
+
 } // namespace rv

@@ -105,4 +105,8 @@ template <class S, class T> void ChaplyginBall::field(const Coefficients<T>& c, 
   dx[15] = c.R * sqrt(dot(dg, dg)); // ... and on the ball: |d(-R gamma)/dt|
 }
 
+// compiled once, in ChaplyginBall.cpp: constructing the model elsewhere does not compile its kernels again
+// (ModelWithField.h)
+extern template class ModelWithField<ChaplyginBall, 16, 6>;
+
 } // namespace rv

@@ -93,4 +93,7 @@ EllipsoidOnPlane::EllipsoidOnPlane(const ParameterValues& p)
   addRigidBodyObservables();
 }
 
+template class ModelWithField<EllipsoidOnPlane, 16, 6>;
+template class RigidBodyOnPlane<EllipsoidOnPlane>;
+
 } // namespace rv

@@ -62,4 +62,9 @@ private:
   Surface<double> surface_;
 };
 
+// compiled once, in EllipsoidOnPlane.cpp: constructing the model elsewhere does not compile its kernels again
+// (ModelWithField.h)
+extern template class ModelWithField<EllipsoidOnPlane, 16, 6>;
+extern template class RigidBodyOnPlane<EllipsoidOnPlane>;
+
 } // namespace rv

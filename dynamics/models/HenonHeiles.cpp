@@ -61,4 +61,6 @@ Eigen::VectorXd HenonHeiles::stateFromMap(const std::vector<double>& point, cons
   return s;
 }
 
+template class ModelWithField<HenonHeiles, 4>;
+
 } // namespace rv

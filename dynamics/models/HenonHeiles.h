@@ -30,4 +30,8 @@ public:
   static double hamiltonian(const double* s);
 };
 
+// compiled once, in HenonHeiles.cpp: constructing the model elsewhere does not compile its kernels again
+// (ModelWithField.h)
+extern template class ModelWithField<HenonHeiles, 4>;
+
 } // namespace rv

@@ -25,4 +25,6 @@ Lorenz::Lorenz(const ParameterValues& p)
   addStandardObservables();
 }
 
+template class ModelWithField<Lorenz, 3>;
+
 } // namespace rv

@@ -28,4 +28,8 @@ private:
   Coefficients<double> c_;
 };
 
+// compiled once, in Lorenz.cpp: constructing the model elsewhere does not compile its kernels again
+// (ModelWithField.h)
+extern template class ModelWithField<Lorenz, 3>;
+
 } // namespace rv

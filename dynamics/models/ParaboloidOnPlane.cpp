@@ -66,4 +66,7 @@ ParaboloidOnPlane::ParaboloidOnPlane(const ParameterValues& p)
   addRigidBodyObservables();
 }
 
+template class ModelWithField<ParaboloidOnPlane, 16, 6>;
+template class RigidBodyOnPlane<ParaboloidOnPlane>;
+
 } // namespace rv

@@ -63,4 +63,9 @@ private:
   Surface<double> surface_;
 };
 
+// compiled once, in ParaboloidOnPlane.cpp: constructing the model elsewhere does not compile its kernels
+// again (ModelWithField.h)
+extern template class ModelWithField<ParaboloidOnPlane, 16, 6>;
+extern template class RigidBodyOnPlane<ParaboloidOnPlane>;
+
 } // namespace rv

@@ -44,4 +44,7 @@ StandardMap::StandardMap(const ParameterValues& p) : ModelWithField(staticInfo()
     if (o.id == "theta" || o.id == "p") o.angle = true;
 }
 
+template class ModelWithField<HenonMap, 2>;
+template class ModelWithField<StandardMap, 2>;
+
 } // namespace rv

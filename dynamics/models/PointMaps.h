@@ -45,4 +45,9 @@ private:
   double K_;
 };
 
+// compiled once, in PointMaps.cpp: constructing the model elsewhere does not compile its kernels again
+// (ModelWithField.h)
+extern template class ModelWithField<HenonMap, 2>;
+extern template class ModelWithField<StandardMap, 2>;
+
 } // namespace rv
