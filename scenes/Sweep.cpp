@@ -48,7 +48,7 @@ void integrateTo(const Scene& scene, double time, const ToolControl& control, On
     if (control.stopRequested()) throw Stopped{};
     integ->step();
     if (integ->time() >= time) {
-      integ->interpolate(time, end);
+      integ->sampleAt(time, end);
       onStep(tPrev, prev, time, end);
       return;
     }

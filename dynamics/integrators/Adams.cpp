@@ -112,6 +112,7 @@ void Adams::startingValues(const Model& model, double t0, const Eigen::VectorXd&
   Verner9 starter(1e-15, h_);
   // controlled like the steps that follow (controlBy: a tangent system's orbit alone), per orbit on lanes
   if (controlled_ > 0) starter.controlBy(controlled_ / lanes_);
+  starter.scaleErrorsByBlocks(blockHead_, blockSize_); // a tangent system's orbit and vectors, each its scale
   starter.start(model, t0, x0, direction_);
   Eigen::VectorXd at(x0.size());
   double t = t0;

@@ -122,12 +122,31 @@ void Integrator::hermiteLane(int lane, double t, const Eigen::VectorXd& fPrev, c
     out[i] = h == 0 ? x_[i] : w.prev * xPrev_[i] + w.prevRate * fPrev[i] + w.end * x_[i] + w.endRate * f[i];
 }
 
-double Integrator::laneMaxAbs(const double* v, int lane, int width, Eigen::Index rows) {
+double Integrator::relativeError(const double* err, const double* x, const double* increment, int lane,
+                                 int width, Eigen::Index rows) const {
+  const auto magnitude = [&](Eigen::Index c) {
+    const Eigen::Index i = c * width + lane;
+    return std::max(std::abs(x[i]), std::abs(x[i] + increment[i]));
+  };
   double largest = 0;
-  for (Eigen::Index c = 0; c < rows; ++c) {
-    const double a = std::abs(v[c * width + lane]);
-    if (std::isnan(a)) return a;
-    largest = std::max(largest, a);
+  for (Eigen::Index begin = 0; begin < rows;) {
+    // the block of component `begin`: itself alone, the head, or a block after it
+    Eigen::Index end = begin + 1;
+    if (blockSize_ > 0 || blockHead_ > 0)
+      end = begin < blockHead_ ? std::min<Eigen::Index>(blockHead_, rows)
+                               : std::min<Eigen::Index>(begin + std::max(1, blockSize_), rows);
+    // a block after the head (a tangent vector) is scaled by its own size alone: its length is arbitrary
+    const bool vector = blockSize_ > 0 && begin >= blockHead_;
+    double scale = vector ? 0 : 1;
+    for (Eigen::Index c = begin; c < end; ++c)
+      scale = std::max(scale, magnitude(c));
+    if (scale == 0) scale = 1;
+    for (Eigen::Index c = begin; c < end; ++c) {
+      const double a = std::abs(err[c * width + lane]) / scale;
+      if (std::isnan(a)) return a;
+      largest = std::max(largest, a);
+    }
+    begin = end;
   }
   return largest;
 }
@@ -159,6 +178,7 @@ bool Integrator::advanceLanesTo(double t, Eigen::VectorXd& out, const std::funct
     else
       interpolateLane(l, t, out);
   }
+  requireFinite(out, t, "the solution");
   // the integrator's own time: where the slowest lane stands (every lane at t or past it)
   t_ = *std::min_element(laneTime_.begin(), laneTime_.end());
   return true;

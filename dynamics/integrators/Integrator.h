@@ -23,6 +23,12 @@ public:
   virtual void step() = 0;
   /// State at t in the last step [previousTime(), time()] (either order), from the dense output.
   virtual void interpolate(double t, Eigen::VectorXd& out) const = 0;
+  /// interpolate(), checked: throws ComputationError when the state at t is not finite (a dense output's
+  /// slopes can overflow where the step's end did not). What every sample written anywhere goes through.
+  void sampleAt(double t, Eigen::VectorXd& out) const {
+    interpolate(t, out);
+    requireFinite(out, t, "the solution");
+  }
   /// Saves everything the next steps and the dense output depend on. restore() into an integrator of the same
   /// method and settings, start()ed on the same model, makes its following steps bit-identical (resumable
   /// runs).
@@ -34,16 +40,20 @@ public:
   /// `out` (the step's end where it lands on t, else the dense output). False, writing nothing, when
   /// `stopRequested()` is true before a step. An adaptive method whose lanes step alone (stepLanesAlone)
   /// steps each lane with steps of its own until that lane reaches or passes t, each lane as it would alone.
+  /// Throws ComputationError rather than hand on a state that is not finite (a method of a module that
+  /// checks nothing itself included).
   template <class Stop> bool advanceTo(double t, Eigen::VectorXd& out, Stop&& stopRequested) {
     if (laneSteps_ > 0) return advanceLanesTo(t, out, [&] { return stopRequested(); });
     while (direction_ * (t_ - t) < 0) {
       if (stopRequested()) return false;
       step();
     }
-    if (t_ == t)
+    if (t_ == t) {
       out = x_;
-    else
-      interpolate(t, out);
+      requireFinite(out, t, "the solution");
+    } else {
+      sampleAt(t, out);
+    }
     return true;
   }
   void advanceTo(double t, Eigen::VectorXd& out) {
@@ -56,6 +66,13 @@ public:
   /// only; 0, the default, by all. The integrator of a tangent system set to its orbit's dimension follows
   /// the orbit alone: the orbit does not depend on how many tangent vectors ride along.
   void controlBy(int components) { controlled_ = components; }
+  /// Error control relative to blocks: the first `head` components one block, then blocks of `block` each;
+  /// a component's error is measured against its block's largest magnitude rather than its own -- a tangent
+  /// system's orbit (at least 1: absolute below) and each of its vectors (purely relative: a vector's length
+  /// is arbitrary), so that a component of an orbit grown to 1e16 whose own value is near 0 is not held to
+  /// the rounding of the others. 0: each component against max(1, its own magnitude), the default. Adaptive
+  /// methods with a relative control honour it.
+  void scaleErrorsByBlocks(int head, int block) { blockHead_ = head, blockSize_ = block; }
   /// Takes the state as `width` orbits stacked component-major (component c of orbit l at c * width + l: SIMD
   /// lanes, dynamics/core/Lanes.h) and steps each orbit as alone, bit for bit -- a point's result then cannot
   /// depend on the points beside it. Call before start(); controlBy then counts the components of all lanes
@@ -110,9 +127,12 @@ protected:
   /// hermite() for one lane, each component computed as hermite() computes it.
   void hermiteLane(int lane, double t, const Eigen::VectorXd& fPrev, const Eigen::VectorXd& f,
                    Eigen::VectorXd& out) const;
-  /// The largest |v| of the first `rows` components of a lane (stride `width`); NaN where one is NaN (the
-  /// error of a step, the same on every path whatever the order the components come in).
-  static double laneMaxAbs(const double* v, int lane, int width, Eigen::Index rows);
+  /// A step's error: the largest |err_i| / scale_i over the first `rows` components of a lane (stride
+  /// `width`), scale_i = max(1, |x_i|, |x_i + increment_i|) -- or, with scaleErrorsByBlocks, the largest of
+  /// those over i's block: absolute below 1, relative above (Hairer, Norsett, Wanner, Solving ODE I, eq.
+  /// II.4.10 with atol = rtol). NaN where an error is NaN.
+  double relativeError(const double* err, const double* x, const double* increment, int lane, int width,
+                       Eigen::Index rows) const;
   /// How many leading components of a state of `dimension` control the steps (controlBy).
   Eigen::Index controlled(Eigen::Index dimension) const {
     return controlled_ > 0 && controlled_ < dimension ? controlled_ : dimension;
@@ -123,6 +143,7 @@ protected:
   int direction_ = +1;
   long evaluations_ = 0;
   int controlled_ = 0;
+  int blockHead_ = 0, blockSize_ = 0; ///< scaleErrorsByBlocks
   Eigen::VectorXd x_, xPrev_;
   int laneSteps_ = 0; ///< lanes stepped with steps of their own (takeLaneSteps); 0: one step for the state
   std::vector<double> laneTime_, lanePrevious_; ///< each lane's time and its last step's start

@@ -24,7 +24,7 @@ const ParameterTable& Merson::parameterTable() {
        .defaultValue = 1e-10,
        .min = 1e-16,
        .max = 1,
-       .description = "requested local truncation error per step (max norm)"},
+       .description = "requested local error per step (max norm): absolute where |x| < 1, relative above"},
       {.id = "min_step",
        .label = "Min. step",
        .defaultValue = 1e-10,
@@ -103,7 +103,8 @@ void Merson::step() {
     tmp_ = x_ + (h / 2) * (k1_ - 3 * k3_ + 4 * k4_);
     evaluate(tmp_, k5_);
     err_ = (h / 30) * (2 * k1_ - 9 * k3_ + 8 * k4_ - k5_);
-    const double err = laneMaxAbs(err_.data(), 0, 1, controlled(err_.size()));
+    tmp_ = (h / 6) * (k1_ + 4 * k4_ + k5_); // the increment
+    const double err = relativeError(err_.data(), x_.data(), tmp_.data(), 0, 1, controlled(err_.size()));
     double next = h_;
     if (!judge(err, next, t_)) {
       h_ = next;
@@ -111,7 +112,7 @@ void Merson::step() {
     }
     xPrev_ = x_;
     fPrev_ = k1_;
-    x_ += (h / 6) * (k1_ + 4 * k4_ + k5_);
+    x_ += tmp_;
     tPrev_ = t_;
     t_ += h;
     checkFinite();
@@ -150,7 +151,7 @@ void Merson::stepLanes(const std::vector<char>& behind) {
   for (int l = 0; l < width; ++l) {
     const auto lane = static_cast<std::size_t>(l);
     if (!behind[lane]) continue;
-    const double error = laneMaxAbs(err_.data(), l, width, controlledRows);
+    const double error = relativeError(err_.data(), x_.data(), tmp_.data(), l, width, controlledRows);
     if (!judge(error, laneH_[lane], laneTime_[lane])) continue;
     for (Eigen::Index i = l; i < x_.size(); i += width) {
       xPrev_[i] = x_[i], fPrev_[i] = k1_[i];

@@ -1,8 +1,10 @@
 // Merson.h -- the Runge-Kutta-Merson method: fourth order, five stages, with an embedded estimate of the
-// local error that steers the step within [min step, max step] (manual §2.2.2). Reference: R. H. Merson, An
-// operational method for the study of integration processes (1957); E. Hairer, S. P. Norsett, G. Wanner,
-// Solving ODE I, §II.4 (table 4.1 and the error estimate). Dense output: cubic Hermite interpolation through
-// both ends of the accepted step. On lanes (stepLanesAlone) each orbit has its own step, time and error.
+// local error that steers the step within [min step, max step] (manual §2.2.2) -- the manual's absolute
+// precision where |x| < 1, relative above (the scale sc_i of Hairer, Norsett, Wanner, eq. II.4.10).
+// Reference: R. H. Merson, An operational method for the study of integration processes (1957); E. Hairer,
+// S. P. Norsett, G. Wanner, Solving ODE I, §II.4 (table 4.1 and the error estimate). Dense output: cubic
+// Hermite interpolation through both ends of the accepted step. On lanes (stepLanesAlone) each orbit has its
+// own step, time and error.
 #pragma once
 #include "dynamics/integrators/Integrator.h"
 

@@ -298,11 +298,8 @@ void Verner9::step() {
     }
     // the increment h sum_j b_j K_j (sum_) and the error estimate h sum_j E_j K_j (error_)
     increments(h, K_.data(), x_.size(), sum_.data(), error_.data(), std::make_index_sequence<kStages>());
-    double err = 0;
-    for (Eigen::Index i = 0, c = controlled(x_.size()); i < c; ++i) {
-      const double scale = std::max(1.0, std::max(std::abs(x_[i]), std::abs(x_[i] + sum_[i])));
-      err = std::max(err, std::abs(error_[i]) / (tolerance_ * scale));
-    }
+    double err =
+        relativeError(error_.data(), x_.data(), sum_.data(), 0, 1, controlled(x_.size())) / tolerance_;
     if (!std::isfinite(err)) err = 1e10; // a blow-up inside the step: shorten it (checkFinite decides later)
     // Hairer-Norsett-Wanner (4.13): the error of the 8th-order estimate goes like h^9
     const double grow = err > 0 ? std::clamp(0.9 * std::pow(err, -1.0 / 9), 0.2, 5.0) : 5.0;

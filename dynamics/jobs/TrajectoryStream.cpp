@@ -47,13 +47,18 @@ void TrajectoryStream::run() {
       target = target_;
     }
     // a few steps at a time, so that stop and new targets are seen promptly
+    const auto fail = [this](const std::exception& e) {
+      std::lock_guard lock(mutex_);
+      pending_.error = e.what();
+      stop_ = true; // nothing more can be computed
+    };
     for (int k = 0; k < 64 && dir * (integ.time() - target) < 0; ++k) {
       try {
         integ.step();
+        // a module's method may not check its steps: nothing non-finite is handed on
+        Integrator::requireFinite(integ.state(), integ.time(), "the solution");
       } catch (const std::exception& e) {
-        std::lock_guard lock(mutex_);
-        pending_.error = e.what();
-        stop_ = true; // nothing more can be computed
+        fail(e);
         return;
       }
       std::lock_guard lock(mutex_);
@@ -61,11 +66,16 @@ void TrajectoryStream::run() {
       pending_.states.push_back(integ.state());
     }
     if (dir * (integ.time() - target) >= 0) {
-      if (target != integ.time() && dir * (target - integ.previousTime()) >= 0)
-        integ.interpolate(target, x);
-      else // the step ends at the target, or the target is behind the last step (time went back): show where
-           // we are
-        x = integ.state();
+      try {
+        if (target != integ.time() && dir * (target - integ.previousTime()) >= 0)
+          integ.sampleAt(target, x);
+        else // the step ends at the target, or the target is behind the last step (time went back): show
+             // where we are
+          x = integ.state();
+      } catch (const std::exception& e) {
+        fail(e);
+        return;
+      }
       std::lock_guard lock(mutex_);
       pending_.reached = true;
       pending_.atTime = target;

@@ -106,7 +106,7 @@ void PlotSampler::offerStep(const Integrator& in,
   const int dir = in.direction();
   for (double t = last_ + dir * kept_ * settings_.period; !full() && dir * (in.time() - t) >= 0;
        t = last_ + dir * kept_ * settings_.period) {
-    in.interpolate(t, work_);
+    in.sampleAt(t, work_);
     values_ = valuesAt(t, work_.data());
     ++kept_;
     keep(values_);

@@ -207,7 +207,7 @@ PoincareMap::PoincareMap(const Model& model, std::unique_ptr<Integrator> integra
 std::optional<MapPoint> PoincareMap::next(const ToolControl& control) {
   const int dir = integ_->direction();
   const SectionCrossings::Interpolate interpolate = [this](double t, Eigen::VectorXd& out) {
-    integ_->interpolate(t, out);
+    integ_->sampleAt(t, out);
   };
   while (s_.maxPoints <= 0 || crossings_.points() < s_.maxPoints) {
     if (control.stopRequested() || dir * integ_->time() >= s_.maxTime) return std::nullopt;

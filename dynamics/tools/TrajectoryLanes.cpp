@@ -85,7 +85,7 @@ bool integrateOnLanes(const std::vector<const Model*>& models, const IntegratorF
     if (control.stopRequested()) return false;
     integ.step();
     const bool last = integ.time() >= time;
-    if (last) integ.interpolate(time, end);
+    if (last) integ.sampleAt(time, end);
     const double t = last ? time : integ.time();
     for (int l = 0; l < count; ++l) {
       const auto k = static_cast<std::size_t>(l);
@@ -118,7 +118,7 @@ std::optional<std::vector<std::vector<MapPoint>>> mapPointsOnLanes(const std::ve
   Eigen::VectorXd lane(o.n), stacked;
   int located = 0; // the lane whose crossing is located: the stack's dense output, read at that lane
   const SectionCrossings::Interpolate interpolate = [&](double t, Eigen::VectorXd& out) {
-    integ.interpolate(t, stacked);
+    integ.sampleAt(t, stacked);
     o.lane(stacked, located, out);
   };
   // as PoincareMap::next of each orbit alone: steps until its points are all there or the time is up

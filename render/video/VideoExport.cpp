@@ -21,7 +21,7 @@ void playTo(VisualScene& scene, Integrator& integrator, double t, Eigen::VectorX
   if (integrator.time() == t)
     work = integrator.state();
   else
-    integrator.interpolate(t, work);
+    integrator.sampleAt(t, work);
   scene.show(t, work);
 }
 
