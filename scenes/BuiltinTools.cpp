@@ -207,11 +207,13 @@ private:
 
 // the lyapunov tool's numbers
 nlohmann::json lyapunovFields(const LyapunovResult& l) {
-  return {{"exponents", l.last.exponents},
-          {"max", l.last.exponents.empty() ? 0.0 : l.last.exponents.front()},
-          {"sum", l.last.sum()},
-          {"time", l.last.time},
-          {"converged", l.converged}};
+  nlohmann::json fields{{"exponents", l.last.exponents},
+                        {"max", l.last.exponents.empty() ? 0.0 : l.last.exponents.front()},
+                        {"sum", l.last.sum()},
+                        {"time", l.last.time},
+                        {"converged", l.converged}};
+  if (!l.warning.empty()) fields["warning"] = l.warning; // digits lost all the same, and what helps
+  return fields;
 }
 
 // the Lyapunov exponents along the scene's trajectory (dynamics/tools/Lyapunov.h)
@@ -362,9 +364,10 @@ lyapunovOnLanesOf(const std::string& name, const std::vector<Scene>& scenes, con
   return values;
 }
 // the largest exponent alone: one tangent vector. Its vector is advanced, projected and normalised
-// (Householder's first column) without reading the others, and the steps follow the orbit alone, so L1 is
-// the spectrum's bit for bit; the stopping rule (successes) and the perturbed method's halving read every
-// exponent, so those keep them all.
+// (Householder's first column) without reading the others, so L1 is the spectrum's to the integrator's
+// accuracy (bit for bit with fixed-step rk4; an adaptive method's steps and the intervals see every vector
+// that rides along); the stopping rule (successes) and the perturbed method's halving read every exponent,
+// so those keep them all.
 void narrowLyapunov(const std::string& output, Scene& scene) {
   LyapunovSettings& l = scene.lyapunov;
   if (output == "max" && l.mode == LyapunovSettings::Mode::Tangent && l.successes == 0) l.count = 1;

@@ -147,7 +147,7 @@ struct ToolRunner {
   bool ellipticMultipliersEachRow = false;
   /// Its results are point clouds (ToolResult::cloud): the CLI's -o also writes .vtp poly data.
   bool cloud = false;
-  /// Narrows the scene's settings so that a run computes output `output` alone, faster and to the same bits
+  /// Narrows the scene's settings so that a run computes output `output` alone, faster and to the same value
   /// (a sweep of that output runs it on every point's scene): the lyapunov tool's max follows one tangent
   /// vector, since the largest exponent's vector never sees the others. Empty: nothing to narrow.
   std::function<void(const std::string& output, Scene& scene)> narrowTo = {};

@@ -8,6 +8,8 @@
 #include <Eigen/QR>
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <sstream>
 
 namespace rv {
 
@@ -35,6 +37,21 @@ const ParameterTable& lyapunovTable() {
        .min = 1e-300,
        .max = 1e300,
        .description = "time between re-orthonormalisations (maps: iterations)"},
+      {.id = "spread",
+       .label = "Largest spread in an interval",
+       .defaultValue = d.spread,
+       .min = 0,
+       .max = 1e12,
+       .description = "tangent method: an interval in which a vector shrinks or cancels by more than this "
+                      "factor is taken again at half the length (and grows back to the interval where they "
+                      "keep within); 0: every interval as set"},
+      {.id = "transient",
+       .label = "Transient",
+       .defaultValue = d.transient,
+       .min = 0,
+       .max = 1e300,
+       .description = "time integrated first and discarded (the vectors align with the directions of "
+                      "growth); the exponents are averaged over the time after it"},
       {.id = "perturbation",
        .label = "Initial perturbation",
        .defaultValue = d.perturbation,
@@ -87,7 +104,7 @@ const ParameterTable& lyapunovTable() {
        .defaultValue = d.maxTime,
        .min = 1e-300,
        .max = 1e300,
-       .description = "integration time (maps: iterations)"},
+       .description = "time over which the exponents are averaged, after the transient (maps: iterations)"},
   };
   return t;
 }
@@ -98,6 +115,8 @@ LyapunovSettings lyapunovSettings(const ParameterValues& v) {
       v.choice("mode") == "tangent" ? LyapunovSettings::Mode::Tangent : LyapunovSettings::Mode::Perturbed;
   l.count = static_cast<int>(v["count"]);
   l.interval = v["interval"];
+  l.spread = v["spread"];
+  l.transient = v["transient"];
   l.perturbation = v["perturbation"];
   l.maxPerturbation = v["max_perturbation"];
   l.estimateEvery = static_cast<int>(v["estimate_every"]);
@@ -133,17 +152,28 @@ Eigen::MatrixXd integralNormals(const Model& model, const Eigen::VectorXd& x) {
   return qr.householderQ() * Eigen::MatrixXd::Identity(m, std::min<Eigen::Index>(p, m));
 }
 
-// QR of V in place: V := Q (columns of unit length), the log stretches added to `logs`
-void orthonormalize(Eigen::MatrixXd& V, Eigen::VectorXd& logs) {
+// QR of V: Q (columns of unit length, R's diagonal made positive), the log stretches log |R_jj| and the
+// worst loss of scale of a vector, max_j max(1, |v_j|) / |R_jj|: a vector shrunk by that factor, or cancelled
+// by it against the ones before it (the digits Gram-Schmidt loses); infinite where R_jj is 0 or not finite
+struct Orthonormalized {
+  Eigen::MatrixXd Q;
+  Eigen::VectorXd logs;
+  double loss = 1;
+};
+Orthonormalized orthonormalize(const Eigen::MatrixXd& V) {
   Eigen::HouseholderQR<Eigen::MatrixXd> qr(V);
   const Eigen::MatrixXd R = qr.matrixQR().topRows(V.cols()).triangularView<Eigen::Upper>();
-  Eigen::MatrixXd Q = qr.householderQ() * Eigen::MatrixXd::Identity(V.rows(), V.cols());
+  Orthonormalized o{qr.householderQ() * Eigen::MatrixXd::Identity(V.rows(), V.cols()),
+                    Eigen::VectorXd(V.cols())};
   for (Eigen::Index j = 0; j < V.cols(); ++j) {
     const double r = R(j, j);
-    logs[j] += std::log(std::abs(r));
-    if (r < 0) Q.col(j) = -Q.col(j);
+    o.logs[j] = std::log(std::abs(r));
+    if (r < 0) o.Q.col(j) = -o.Q.col(j);
+    const double loss = std::max(1.0, V.col(j).norm()) / std::abs(r);
+    o.loss = std::isfinite(loss) && std::isfinite(o.logs[j]) ? std::max(o.loss, loss)
+                                                             : std::numeric_limits<double>::infinity();
   }
-  V = Q;
+  return o;
 }
 
 } // namespace
@@ -159,8 +189,11 @@ LyapunovRun::LyapunovRun(const Model& model, IntegratorFactory makeIntegrator, c
   if (!(s_.perturbation > 0) || !(s_.maxPerturbation >= s_.perturbation))
     throw InputError("lyapunov: need 0 < perturbation <= max perturbation");
   if (s_.estimateEvery < 1) throw InputError("lyapunov: estimate_every must be at least 1");
+  if (!(s_.spread == 0 || s_.spread > 1)) throw InputError("lyapunov.spread: 0 (fixed intervals) or above 1");
+  if (!(s_.transient >= 0)) throw InputError("lyapunov.transient: must not be negative");
   interval_ = model.isMap() ? std::max(1.0, std::round(s_.interval)) : s_.interval;
-  nextOutput_ = s_.outputPeriod;
+  span_ = interval_;
+  nextOutput_ = s_.transient + s_.outputPeriod;
   logs_ = Eigen::VectorXd::Zero(k_);
   V_ = Eigen::MatrixXd::Identity(m_, k_);
   x_ = x0;
@@ -172,24 +205,24 @@ LyapunovRun::LyapunovRun(const Model& model, IntegratorFactory makeIntegrator, c
     if (const auto* rk4 = dynamic_cast<const Rk4*>(probe.get()); rk4 && tangent_->rk4Steps(ask, 0, 0))
       fusedStep_ = rk4->stepSize();
   }
-  project();
+  project(x_, V_);
   startAll(0);
 }
 
 LyapunovRun::~LyapunovRun() = default;
 
-void LyapunovRun::project() {
-  if (!s_.renormalizeIntegrals || model_.integrals(x_.data()).size() == 0) return;
-  const Eigen::MatrixXd N = integralNormals(model_, x_);
-  V_ -= N * (N.transpose() * V_);
+void LyapunovRun::project(const Eigen::VectorXd& x, Eigen::MatrixXd& V) const {
+  if (!s_.renormalizeIntegrals || model_.integrals(x.data()).size() == 0) return;
+  const Eigen::MatrixXd N = integralNormals(model_, x);
+  V -= N * (N.transpose() * V);
 }
 
 // tangent mode: one integrator on (x, V); perturbed mode: k + 1 integrators on x and x + d v_i
 void LyapunovRun::startAll(double t0) {
   const auto fresh = [&]() -> std::unique_ptr<Integrator> {
     if (model_.isMap()) return std::make_unique<MapIteration>();
-    auto integrator = make_();
-    if (tangent_) integrator->controlBy(n_); // the orbit alone: the same for any number of exponents
+    auto integrator = make_(); // tangent mode: the steps see the vectors too (a contracting one needs them
+    if (tangent_) integrator->scaleErrorsByBlocks(n_, m_); // short), each vector relative to its own scale
     return integrator;
   };
   integs_.clear();
@@ -217,22 +250,26 @@ void LyapunovRun::startAll(double t0) {
 bool LyapunovRun::interval(const ToolControl& control) {
   double step = nextSpan();
   if (tangent_) {
-    if (const long steps = fusedSteps(step); steps > 0) {
-      if (!advanceFused(steps, control)) {
+    for (;;) { // taken again, shorter, while its vectors spread beyond the bound
+      if (const long steps = fusedSteps(step); steps > 0) {
+        if (!advanceFused(steps, control)) {
+          startAll(t_);
+          return false;
+        }
+      } else {
+        if (integs_.empty()) { // an interval that is not a whole number of rk4 steps (often the last one)
+          integs_.push_back(make_());
+          integs_.back()->scaleErrorsByBlocks(n_, m_);
+          integs_.back()->start(*tangent_, t_, state_);
+        }
+        integs_[0]->advanceTo(t_ + step, state_, [&] { return control.stopRequested(); });
+      }
+      if (control.stopRequested()) {
         startAll(t_);
         return false;
       }
-    } else {
-      if (integs_.empty()) { // an interval that is not a whole number of rk4 steps (often the last one)
-        integs_.push_back(make_());
-        integs_.back()->controlBy(n_);
-        integs_.back()->start(*tangent_, t_, state_);
-      }
-      integs_[0]->advanceTo(t_ + step, state_, [&] { return control.stopRequested(); });
-    }
-    if (control.stopRequested()) {
-      startAll(t_);
-      return false;
+      if (close(step)) return true;
+      step = nextSpan();
     }
   } else {
     for (;;) { // cut the interval short while a perturbation grows beyond its maximum
@@ -261,26 +298,64 @@ bool LyapunovRun::interval(const ToolControl& control) {
   return true;
 }
 
-// the interval of `span` advanced (tangent mode: in state_): orthonormalise, restart
-void LyapunovRun::close(double span) {
-  if (tangent_) {
-    x_ = state_.head(n_);
-    V_ = Eigen::Map<const Eigen::MatrixXd>(state_.data() + n_, m_, k_);
+// the interval of `span` advanced (tangent mode: in state_): orthonormalise, restart. False, back at the
+// interval's start with a shorter span, when the tangent vectors spread beyond the bound in it.
+bool LyapunovRun::close(double span) {
+  Eigen::VectorXd x = tangent_ ? Eigen::VectorXd(state_.head(n_)) : x_;
+  Eigen::MatrixXd V =
+      tangent_ ? Eigen::MatrixXd(Eigen::Map<const Eigen::MatrixXd>(state_.data() + n_, m_, k_)) : V_;
+  project(x, V);
+  Orthonormalized o = orthonormalize(V);
+  const bool adapts = tangent_ && !model_.isMap() && s_.spread > 0; // a map's interval: whole iterations
+  if (adapts && !(o.loss <= s_.spread)) {
+    if (const double shorter = shorterSpan(span); shorter > 0) {
+      span_ = shorter;
+      startAll(t_); // x_ and V_ still hold the interval's start
+      return false;
+    }
+    if (result_.warning.empty()) { // at the shortest interval: go on, and say so once
+      std::ostringstream os;
+      os << "the tangent vectors spread by " << o.loss << " (more than lyapunov.spread = " << s_.spread
+         << ") in an interval of " << span << " at t = " << t_
+         << ": the smallest exponents may have lost digits; "
+         << (fusedStep_ > 0 ? "a smaller integrator.step helps"
+                            : "a smaller integrator step or tolerance helps");
+      result_.warning = os.str();
+    }
   }
+  x_ = std::move(x);
+  V_ = std::move(o.Q);
+  logs_ += o.logs;
   t_ += span;
-  project();
-  orthonormalize(V_, logs_);
+  // where the vectors kept well within the bound, the next interval may be twice as long (up to the setting)
+  if (adapts && o.loss <= std::pow(s_.spread, 0.4)) span_ = std::min(interval_, 2 * span_);
+  if (s_.transient > 0 && tStart_ == 0 && t_ >= s_.transient) { // the transient ends: averaging begins
+    tStart_ = t_;
+    logs_.setZero();
+    history_.clear();
+  }
   startAll(t_);
+  return true;
+}
+
+// half of `span` (a whole number of the fused rk4 steps); 0 where it cannot be shortened further
+double LyapunovRun::shorterSpan(double span) const {
+  if (fusedStep_ > 0) {
+    const double steps = std::floor(std::round(span / fusedStep_) / 2);
+    return steps >= 1 ? steps * fusedStep_ : 0;
+  }
+  return span / 2 >= 1e-9 * interval_ ? span / 2 : 0;
 }
 
 long LyapunovRun::nextFusedSteps() const {
   return tangent_ && !finished() ? fusedSteps(nextSpan()) : 0;
 }
 
-void LyapunovRun::closeAdvancedInterval(const std::function<void(const LyapunovEstimate&)>& onEstimate,
+bool LyapunovRun::closeAdvancedInterval(const std::function<void(const LyapunovEstimate&)>& onEstimate,
                                         const ToolControl& control) {
-  close(nextSpan());
+  if (!close(nextSpan())) return false;
   recordEstimate(onEstimate, control);
+  return true;
 }
 
 // how many rk4 steps make `span` when the fused path applies and they make it exactly; 0 otherwise
@@ -313,7 +388,11 @@ bool LyapunovRun::advanceOneInterval(const std::function<void(const LyapunovEsti
 // the estimate after an interval: the history, the stopping rule, the streamed output
 void LyapunovRun::recordEstimate(const std::function<void(const LyapunovEstimate&)>& onEstimate,
                                  const ToolControl& control) {
-  const Eigen::VectorXd estimate = logs_ / t_;
+  if (s_.transient > 0 && !(t_ > tStart_ && tStart_ > 0)) { // in the transient (or at its very end)
+    control.progress(t_ / endTime());
+    return;
+  }
+  const Eigen::VectorXd estimate = logs_ / (t_ - tStart_);
   result_.last.time = t_;
   result_.last.exponents.assign(estimate.data(), estimate.data() + k_);
   history_.push_back(estimate);
@@ -327,7 +406,7 @@ void LyapunovRun::recordEstimate(const std::function<void(const LyapunovEstimate
     if (onEstimate) onEstimate(result_.last);
     nextOutput_ += s_.outputPeriod;
   }
-  control.progress(t_ / s_.maxTime);
+  control.progress(t_ / endTime());
 }
 
 bool LyapunovRun::run(const std::function<void(const LyapunovEstimate&)>& onEstimate,
@@ -351,6 +430,7 @@ void LyapunovRun::save(Snapshot& s) const {
   const Eigen::VectorXd last = Eigen::Map<const Eigen::VectorXd>(
       result_.last.exponents.data(), static_cast<Eigen::Index>(result_.last.exponents.size()));
   s.put(result_.last.time), s.put(last), s.put(result_.converged ? 1 : 0);
+  s.put(span_), s.put(tStart_);
 }
 
 void LyapunovRun::restore(Snapshot& s) {
@@ -368,6 +448,7 @@ void LyapunovRun::restore(Snapshot& s) {
   s.get(last);
   result_.last.exponents.assign(last.data(), last.data() + last.size());
   result_.converged = s.get() != 0;
+  span_ = s.get(), tStart_ = s.get();
   startAll(t_);
 }
 

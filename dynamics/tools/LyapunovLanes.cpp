@@ -94,6 +94,9 @@ std::optional<std::vector<LyapunovLaneResult>> lyapunovOnLanes(const std::vector
   const std::size_t count = runs.size();
   std::vector<LyapunovLaneResult> results(count);
   std::vector<bool> failed(count, false);
+  // a run whose interval was taken again shorter (its vectors spread: LyapunovRun::closeAdvancedInterval)
+  // no longer shares the lanes' time: it goes on alone, as the scalar run
+  std::vector<bool> solo(count, false);
   const auto active = [&](std::size_t l) { return !failed[l] && !runs[l]->finished(); };
   // an orbit's interval alone: as the scalar run takes it, failing (or not) as it fails alone
   const auto alone = [&](std::size_t l) {
@@ -113,7 +116,6 @@ std::optional<std::vector<LyapunovLaneResult>> lyapunovOnLanes(const std::vector
   };
   const double h = runs.front()->fusedStepSize();
   const int k = runs.front()->exponentCount();
-  const int n = models.front()->dimension();
   const LaneTangents stacked(models, *lanes->kernel, k);
   constexpr long kChunk = 4096; // steps between looks at a stop request and at the state (as LyapunovRun)
   // the next interval of every active run on the lanes, from `lead`, an active run (lanes of runs done and
@@ -121,7 +123,7 @@ std::optional<std::vector<LyapunovLaneResult>> lyapunovOnLanes(const std::vector
   // advanced, false when stopped; the orbits that failed (a blow-up) marked in blewUp
   const auto onLanes = [&](std::size_t leadLane, long steps, std::vector<bool>& blewUp) {
     for (std::size_t l = 0; l < static_cast<std::size_t>(width); ++l) {
-      const Eigen::VectorXd& x = runs[l < count && active(l) ? l : leadLane]->tangentState();
+      const Eigen::VectorXd& x = runs[l < count && active(l) && !solo[l] ? l : leadLane]->tangentState();
       for (int j = 0; j < dimension; ++j)
         y[at(j, l)] = x[j];
     }
@@ -141,8 +143,8 @@ std::optional<std::vector<LyapunovLaneResult>> lyapunovOnLanes(const std::vector
     const double target = lead.time() + lead.nextSpan();
     try {
       auto integ = makeIntegrator();
-      integ->stepLanesAlone(width);
-      integ->controlBy(n * width); // each orbit alone, as LyapunovRun's integrator: x, not the vectors
+      integ->stepLanesAlone(width); // each lane's steps controlled by its orbit and vectors, as alone
+      integ->scaleErrorsByBlocks(models.front()->dimension(), models.front()->info().coreDimension);
       Eigen::VectorXd state =
           Eigen::Map<const Eigen::VectorXd>(y.data(), static_cast<Eigen::Index>(y.size()));
       integ->start(stacked, lead.time(), state);
@@ -153,25 +155,38 @@ std::optional<std::vector<LyapunovLaneResult>> lyapunovOnLanes(const std::vector
     }
     return true;
   };
+  const auto finishAlone = [&] {
+    for (std::size_t l = 0; l < count; ++l)
+      while (solo[l] && active(l))
+        if (!alone(l)) return false;
+    return true;
+  };
   for (;;) {
     // the lanes' next interval: the same span and steps for every active run (one time, one step)
     long steps = -1;
     std::size_t leadLane = 0;
     for (std::size_t l = count; l-- > 0;) {
-      if (!active(l)) continue;
+      if (!active(l) || solo[l]) continue;
       steps = lanes->fused ? runs[l]->nextFusedSteps() : 1;
       leadLane = l;
     }
-    if (steps < 0) break; // every run done
-    if (steps == 0) {     // an interval the fused path does not make: each run alone
+    if (steps < 0) { // every run on the lanes done
+      if (!finishAlone()) return std::vector<LyapunovLaneResult>{};
+      break;
+    }
+    for (std::size_t l = 0; l < count; ++l)
+      if (active(l) && !solo[l] &&
+          (runs[l]->time() != runs[leadLane]->time() || runs[l]->nextSpan() != runs[leadLane]->nextSpan()))
+        solo[l] = true;
+    if (steps == 0) { // an interval the fused path does not make: each run alone
       for (std::size_t l = 0; l < count; ++l)
-        if (active(l) && !alone(l)) return std::vector<LyapunovLaneResult>{};
+        if (active(l) && !solo[l] && !alone(l)) return std::vector<LyapunovLaneResult>{};
       continue;
     }
     std::vector<bool> blewUp(count, false);
     if (!onLanes(leadLane, steps, blewUp)) return std::vector<LyapunovLaneResult>{};
     for (std::size_t l = 0; l < count; ++l) {
-      if (!active(l)) continue;
+      if (!active(l) || solo[l]) continue;
       if (blewUp[l]) { // from the interval's start, alone: the scalar run's failure, at its time
         if (!alone(l)) return std::vector<LyapunovLaneResult>{};
         continue;
@@ -179,7 +194,7 @@ std::optional<std::vector<LyapunovLaneResult>> lyapunovOnLanes(const std::vector
       Eigen::VectorXd& x = runs[l]->tangentState();
       for (int j = 0; j < dimension; ++j)
         x[j] = y[at(j, l)];
-      runs[l]->closeAdvancedInterval({}, control);
+      if (!runs[l]->closeAdvancedInterval({}, control)) solo[l] = true;
     }
   }
   for (std::size_t l = 0; l < count; ++l)
