@@ -50,8 +50,6 @@ protected:
   /// The chart shown (nullptr while there is none yet).
   virtual const Chart* chart() const = 0;
   void setStatus(const QString& text);
-  /// The status line's text.
-  QString status() const;
   /// A fresh chart view in place of the old one (a new chart is never attached to a view that drew another).
   void replaceView();
   /// In place of the chart: a message ("computing …", why it failed) on a white page, not a black view.
@@ -71,6 +69,8 @@ protected:
 public:
   /// The placeholder's text while it shows (empty while the view shows).
   QString placeholder() const;
+  /// The status line's text.
+  QString status() const;
 
 private:
   QtVtkWidget* view_;

@@ -686,8 +686,8 @@ SweepWindow* MainWindow::openSweep(const QString& path) {
     auto* w = new SweepWindow(map_->jobs(), loadSweep(path.toStdString()), this);
     w->setAttribute(Qt::WA_DeleteOnClose);
     const QString origin = "a point of " + QFileInfo(path).fileName();
-    connect(w, &SweepWindow::openScene, this, [this, origin](const nlohmann::json& doc) {
-      if (mayReplaceMap("Opening a point of the sweep")) runDocument(doc, origin);
+    w->setSceneOpener([this, origin](const nlohmann::json& doc) {
+      return mayReplaceMap("Opening a point of the sweep") && runDocument(doc, origin);
     });
     w->show();
     return w;

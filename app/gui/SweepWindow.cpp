@@ -46,7 +46,7 @@ SweepWindow::SweepWindow(JobTree& jobs, SweepSpec spec, QWidget* parent)
   bar()->insertWidget(0, forwardButton_);
   bar()->insertWidget(0, backButton_);
   bar()->insertWidget(0, zoomButton_);
-  band_ = new QRubberBand(QRubberBand::Rectangle, view());
+  band_ = new QRubberBand(QRubberBand::Rectangle, this);
   updateZoomButtons();
   if (spec_.axes.size() == 2) {
     curveButton_ = new QPushButton("Bifurcation curve", this);
@@ -210,11 +210,15 @@ long SweepWindow::pointAt(double x, double y) const {
 
 void SweepWindow::openPoint(long index) {
   try {
-    emit openScene(sweepPointScene(spec_, index).document);
     std::string where;
     for (std::size_t a = 0; a < spec_.axes.size(); ++a)
       where +=
           (where.empty() ? "" : ", ") + spec_.axes[a].id + " = " + std::to_string(spec_.axisValues(index)[a]);
+    const nlohmann::json document = sweepPointScene(spec_, index).document;
+    if (opener_ && !opener_(document)) {
+      setStatus(QString::fromStdString("not opened (" + where + "): the main window kept its map"));
+      return;
+    }
     setStatus(QString::fromStdString("opened " + where));
   } catch (const std::exception& e) {
     setStatus(QString("no scene there: %1").arg(e.what()));
@@ -230,27 +234,36 @@ long SweepWindow::pointUnder(const QPointF& position) const {
 }
 
 bool SweepWindow::eventFilter(QObject* watched, QEvent* event) {
-  // Zoom: press, drag (the rubber band shows the window), release
+  // Zoom: press, drag (the rubber band shows the window), release. The band belongs to this window, not to
+  // the view: a redraw replaces the view (and everything it owns), and the band must outlive it.
   const auto chartAt = [this](const QPointF& p, double& x, double& y) {
     const double dpr = view()->devicePixelRatioF();
     return chart_ && chart_->toChart(p.x() * dpr, (view()->height() - p.y()) * dpr, x, y);
   };
-  if (watched == view() && zoomButton_ && zoomButton_->isChecked() && chart_) {
-    auto* e = static_cast<QMouseEvent*>(event);
+  const auto bandRect = [this](const QPoint& to) {
+    return QRect(view()->mapTo(this, pressed_), view()->mapTo(this, to)).normalized();
+  };
+  const bool mouse = event->type() == QEvent::MouseButtonPress || event->type() == QEvent::MouseMove ||
+                     event->type() == QEvent::MouseButtonRelease;
+  if (watched != view() || !mouse) return FilterWindow::eventFilter(watched, event);
+  auto* e = static_cast<QMouseEvent*>(event);
+  if (zoomButton_ && zoomButton_->isChecked() && chart_) {
     if (event->type() == QEvent::MouseButtonPress && e->button() == Qt::LeftButton) {
       if (chartAt(e->position(), pressedAt_[0], pressedAt_[1])) {
         pressed_ = e->position().toPoint();
-        band_->setGeometry(QRect(pressed_, QSize()));
+        dragging_ = true;
+        band_->setGeometry(bandRect(pressed_));
         band_->show();
+        band_->raise();
       }
       return true;
     }
-    if (event->type() == QEvent::MouseMove && band_->isVisible()) {
-      band_->setGeometry(QRect(pressed_, e->position().toPoint()).normalized());
+    if (event->type() == QEvent::MouseMove && dragging_) {
+      band_->setGeometry(bandRect(e->position().toPoint()));
       return true;
     }
-    if (event->type() == QEvent::MouseButtonRelease && band_->isVisible()) {
-      band_->hide();
+    if (event->type() == QEvent::MouseButtonRelease && dragging_) {
+      endDrag();
       double x = 0, y = 0;
       if (chartAt(e->position(), x, y) && std::abs(e->position().x() - pressed_.x()) > 3) {
         std::vector<double> bounds{std::min(x, pressedAt_[0]), std::max(x, pressedAt_[0])};
@@ -264,19 +277,30 @@ bool SweepWindow::eventFilter(QObject* watched, QEvent* event) {
       return true;
     }
   }
-  if (watched == view() && event->type() == QEvent::MouseButtonPress && chart_) {
-    auto* e = static_cast<QMouseEvent*>(event);
-    if (e->button() == Qt::LeftButton) {
-      if (const long i = pointUnder(e->position()); i >= 0) {
-        if (curveButton_ && curveButton_->isChecked())
-          startCurve(i);
-        else
-          openPoint(i);
-      }
-      return true;
+  // a cell click: pressed and released at (nearly) one place; a drag without Zoom opens nothing
+  if (e->button() != Qt::LeftButton || !chart_) return FilterWindow::eventFilter(watched, event);
+  if (event->type() == QEvent::MouseButtonPress) {
+    clickAt_ = e->position().toPoint();
+    clicking_ = true;
+    return true;
+  }
+  if (event->type() == QEvent::MouseButtonRelease && clicking_) {
+    clicking_ = false;
+    if ((e->position().toPoint() - clickAt_).manhattanLength() > 3) return true;
+    if (const long i = pointUnder(e->position()); i >= 0) {
+      if (curveButton_ && curveButton_->isChecked())
+        startCurve(i);
+      else
+        openPoint(i);
     }
+    return true;
   }
   return FilterWindow::eventFilter(watched, event);
+}
+
+void SweepWindow::endDrag() {
+  dragging_ = false;
+  band_->hide();
 }
 
 void SweepWindow::poll() {
@@ -297,8 +321,9 @@ void SweepWindow::poll() {
     read_.clear();
     done_ = -1;
   }
-  if (done != done_ || redraw_) { // new points or curves: draw again (a chart is never attached to a view
-                                  // that drew another)
+  // new points or curves: draw again (a chart is never attached to a view that drew another) -- but not
+  // under a zoom being dragged: the view it is dragged on stays until the button is released
+  if ((done != done_ || redraw_) && !dragging_) {
     done_ = done;
     redraw_ = false;
     task.updateChartData(data_, read_); // only the points done since the last time are read

@@ -9,6 +9,7 @@
 #include "dynamics/jobs/JobTree.h"
 #include "scenes/Sweep.h"
 
+#include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <vector>
@@ -31,7 +32,10 @@ public:
   long pointAt(double x, double y) const;
   /// The grid point under a position of the view (widget coordinates); -1 where there is none.
   long pointUnder(const QPointF& position) const;
-  /// Opens grid point `index` (emits openScene with its scene document).
+  /// Where a grid point's scene goes: to the main window, which may decline (the map kept): false then.
+  using SceneOpener = std::function<bool(const nlohmann::json& document)>;
+  void setSceneOpener(SceneOpener opener) { opener_ = std::move(opener); }
+  /// Opens grid point `index` with the scene opener; the status says whether it was opened.
   void openPoint(long index);
   const SweepSpec& spec() const { return spec_; }
   /// A chart of two model parameters: follows the bifurcation of grid point `index`'s scene
@@ -54,8 +58,6 @@ public:
   std::size_t zooms() const { return history_.size(); }
 
 signals:
-  /// A grid point's scene, to run in the main window.
-  void openScene(const nlohmann::json& document);
   /// The job ended (finished, stopped or failed).
   void finished();
 
@@ -67,6 +69,7 @@ private:
   void poll();
   void showZoom(std::size_t zoom); // makes history_[zoom] the sweep shown
   void updateZoomButtons();
+  void endDrag(); // hides the band
   struct Zoom {
     SweepSpec spec;
     int jobId;
@@ -77,8 +80,12 @@ private:
   JobTree& jobs_;
   int jobId_;
   QPushButton *zoomButton_ = nullptr, *backButton_ = nullptr, *forwardButton_ = nullptr;
-  QRubberBand* band_ = nullptr;
-  QPoint pressed_;               // where a zoom's drag began (widget coordinates)
+  SceneOpener opener_;
+  QRubberBand* band_ = nullptr; // a child of this window: it outlives the views a redraw replaces
+  bool dragging_ = false;       // a zoom's rectangle is being dragged
+  QPoint pressed_;              // where a zoom's drag began (view coordinates)
+  bool clicking_ = false;       // the left button went down on the chart (a click if released in place)
+  QPoint clickAt_;
   double pressedAt_[2] = {0, 0}; // and there in chart coordinates
   long done_ = -1;
   Job::Status seen_ = Job::Status::Ready;

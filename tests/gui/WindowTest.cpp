@@ -606,6 +606,68 @@ private slots:
     QVERIFY(window_->openScene(QString::fromStdString(defaultScenePath("chaplygin_ball"))));
   }
 
+  // Zoom, then a rectangle dragged while new points arrive: the chart is drawn again under the drag (which
+  // replaced the view and deleted the rubber band it owned -- a crash, 3 of 3 times by hand); the drag now
+  // keeps its view until released, and the zoom it made is computed. Without Zoom a drag opens no cell, and a
+  // cell whose scene the main window declines says so.
+  void sweepZoomDraggedWhilePointsArriveDoesNotCrash() {
+    const QString path = dir_.filePath("hh_zoom_sweep.json");
+    QVERIFY(writeJson(path, nlohmann::json{{"scene", defaultScenePath("henon_heiles")},
+                                           {"axes",
+                                            {{{"id", "map.0"}, {"min", -0.2}, {"max", 0.2}, {"count", 5}},
+                                             {{"id", "map.1"}, {"min", -0.2}, {"max", 0.2}, {"count", 4}}}},
+                                           {"quantity", "megno"},
+                                           {"set", {{"megno.time", 100}}}}));
+    window_->mapPanel()->jobs().pauseNextAt(0.3); // some points drawn, more to come whatever the speed
+    SweepWindow* w = window_->openSweep(path);
+    QVERIFY(w);
+    Job* job = w->job();
+    QTRY_VERIFY_WITH_TIMEOUT(job->status() == Job::Status::Stopped, 60000);
+    QTRY_VERIFY_WITH_TIMEOUT(w->done() > 0 && w->status().startsWith("stopped"), 10000);
+    const long drawn = w->done();
+    QVERIFY2(drawn < 20, "paused before its end");
+    auto* zoom = w->findChild<QPushButton*>("zoom");
+    QVERIFY(zoom);
+    zoom->click();
+    const QPoint from = pixelOver(*w, 6), to = pixelOver(*w, 18);
+    QVERIFY(from.x() >= 0 && to.x() >= 0);
+    QtVtkWidget* dragged = w->view();
+    QTest::mousePress(dragged, Qt::LeftButton, {}, from);
+    QTest::mouseMove(dragged, (from + to) / 2);
+    job->start(); // the rest of the points come while the button is held
+    QTRY_VERIFY_WITH_TIMEOUT(job->status() == Job::Status::Finished, 60000);
+    // the window has seen them (its status counts them) yet keeps the view the drag is on
+    QTRY_VERIFY_WITH_TIMEOUT(w->status().startsWith("20 of 20"), 10000);
+    QCOMPARE(w->view(), dragged);
+    QCOMPARE(w->done(), drawn);
+    QTest::mouseMove(w->view(), to);
+    QTest::mouseRelease(w->view(), Qt::LeftButton, {}, to);
+    QCOMPARE(w->zooms(), std::size_t(2));
+    QCOMPARE(w->zoomLevel(), std::size_t(1));
+    Job* zoomed = w->job();
+    QVERIFY(zoomed && zoomed != job);
+    QTRY_VERIFY_WITH_TIMEOUT(zoomed->status() == Job::Status::Finished, 60000);
+    QTRY_COMPARE_WITH_TIMEOUT(w->done(), 20L, 10000);
+    QVERIFY(varied(w->view()->grabFramebuffer()));
+
+    // without Zoom: a drag is no click, a click is; a declined scene is not called opened
+    int offered = 0;
+    w->setSceneOpener([&offered](const nlohmann::json&) {
+      ++offered;
+      return false;
+    });
+    const QPoint a = pixelOver(*w, 6), b = pixelOver(*w, 18);
+    QVERIFY(a.x() >= 0 && b.x() >= 0);
+    QTest::mousePress(w->view(), Qt::LeftButton, {}, a);
+    QTest::mouseMove(w->view(), b);
+    QTest::mouseRelease(w->view(), Qt::LeftButton, {}, b);
+    QCOMPARE(offered, 0);
+    QTest::mouseClick(w->view(), Qt::LeftButton, {}, a);
+    QCOMPARE(offered, 1);
+    QVERIFY2(w->status().startsWith("not opened"), qPrintable(w->status()));
+    w->close();
+  }
+
   // a chart of regimes over two parameters: "Bifurcation curve" and a click on a cell follow that point's
   // period doubling in the chart's plane as a job and draw the curve over the chart (Henon: a = 3 (1 - b)^2 /
   // 4)
