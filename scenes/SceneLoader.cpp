@@ -437,7 +437,8 @@ Scene sceneFromJson(json doc, const std::string& source, const std::vector<Scene
         list += " " + k;
       for (const auto& t : toolSections())
         list += " " + t.key;
-      (root / key).fail("unknown key (known:" + list + ")");
+      // a tool's section that only a module declares looks like a typo: say where sections come from
+      (root / key).fail("unknown key (known:" + list + "); if it is a tool's section, " + notInAnyModule());
     }
   }
   Scene scene;

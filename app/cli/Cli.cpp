@@ -3,6 +3,7 @@
 #include "app/cli/Commands.h"
 #include "app/cli/Progress.h"
 #include "dynamics/core/Errors.h"
+#include "dynamics/core/ModelRegistry.h"
 #include "dynamics/tools/ToolRegistry.h"
 #include "scenes/ToolRunner.h"
 
@@ -128,6 +129,9 @@ int runCli(int argc, char** argv, const GuiLauncher& gui) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     app.exit(e); // prints the message
+    // a command that only a module provides reads as stray arguments: say where commands come from
+    if (dynamic_cast<const CLI::ExtrasError*>(&e) && app.get_subcommands().empty())
+      fmt::print(stderr, "(not a command of rollviz: {})\n", notInAnyModule());
     return 2;
   }
   installInterruptHandler();

@@ -65,8 +65,8 @@ Command addListCommand(CLI::App& app) {
   return {cmd, [whatPtr] {
             const std::string& what = *whatPtr;
             if (what == "problems")
-              for (const auto& e : ModelRegistry::global().entries())
-                fmt::print("{}\n", e.info->id);
+              for (const auto& e : ModelRegistry::global().entries()) // the id first: scripts read it
+                fmt::print("{:<22} {}\n", e.info->id, e.info->title);
             else if (what == "integrators")
               for (const auto& e : IntegratorRegistry::global().entries())
                 fmt::print("{:<10} {}\n", e.id, e.title);
@@ -110,7 +110,8 @@ Command addDescribeToolCommand(CLI::App& app) {
   return {
       cmd, [idPtr] {
         const ToolEntry& e = ToolRegistry::global().get(*idPtr);
-        fmt::print("{}\n  {}\n  {}\n  reference: {}\n", e.id, e.title, e.description, e.reference);
+        fmt::print("{}\n  {}\n  {}\n", e.id, e.title, e.description);
+        if (!e.reference.empty()) fmt::print("  reference: {}\n", e.reference);
         fmt::print("  in the tool tree under: {}\n", e.parent.empty() ? "(the top)" : e.parent);
         fmt::print("  computation: {}\n", e.computation);
         fmt::print("  command: {}\n", e.command.empty() ? "(none: a chart view)" : "rollviz " + e.command);
@@ -159,8 +160,9 @@ Command addDescribeCommand(CLI::App& app) {
             const auto system = equationSystemOf(entry);
             const auto model = system ? system->create(ParameterValues(info.parameters))
                                       : entry.create(ParameterValues(info.parameters));
-            fmt::print("{}\n  {}\n  reference: {}\n\nparameters (id, default, range, meaning):\n", info.id,
-                       info.title, info.reference);
+            fmt::print("{}\n  {}\n", info.id, info.title);
+            if (!info.reference.empty()) fmt::print("  reference: {}\n", info.reference);
+            fmt::print("\nparameters (id, default, range, meaning):\n");
             printParameters(info.parameters);
             fmt::print("\nstate ({} components; the first {} evolve on their own):\n ",
                        info.stateNames.size(), info.coreDimension);

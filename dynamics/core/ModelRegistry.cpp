@@ -29,6 +29,12 @@ const ModelEntry* ModelRegistry::find(const std::string& id) const {
   return nullptr;
 }
 
+std::string notInAnyModule() {
+  return "provided by no loaded module -- is ROLLVIZ_MODULE_PATH set? (--module FILE loads one; `rollviz "
+         "info` "
+         "lists the loaded ones)";
+}
+
 std::string alreadyRegistered(const std::string& kind, const std::string& id, const std::string& origin) {
   return kind + " '" + id + "' is already registered by " + (origin.empty() ? "rollviz itself" : origin);
 }
@@ -39,7 +45,7 @@ const ModelEntry& ModelRegistry::get(const std::string& id) const {
     if (e.info->id == id) return e;
     known += " " + e.info->id;
   }
-  throw InputError("unknown problem '" + id + "' (known:" + known + ")");
+  throw InputError("unknown problem '" + id + "' (known:" + known + "): " + notInAnyModule());
 }
 
 } // namespace rv

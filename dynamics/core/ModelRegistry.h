@@ -38,6 +38,9 @@ private:
   std::vector<ModelEntry> entries_;
 };
 
+/// What an unknown problem, tool section or command is told: no loaded module provides it, and how modules
+/// are found.
+std::string notInAnyModule();
 /// "KIND 'ID' is already registered by ORIGIN" (rollviz itself when ORIGIN is ""): every registry's refusal.
 std::string alreadyRegistered(const std::string& kind, const std::string& id, const std::string& origin);
 

@@ -102,7 +102,7 @@ def test_continuation_routes_its_keywords_to_the_sections():
 
 
 def test_every_problem_and_tool_is_listed():
-    problems = cli("list", "problems").stdout.split()
+    problems = [line.split()[0] for line in cli("list", "problems").stdout.splitlines()]
     assert [p["id"] for p in rollviz.problems()] == problems
     for p in problems:
         d = rollviz.describe(p)
