@@ -96,6 +96,9 @@ public:
   bool playing() const { return playing_; }
   /// Simulation time shown in the last frame.
   double shownTime() const { return shownTime_; }
+  /// Whether the view shows the time asked for and nothing more is on its way: paused, the picture then
+  /// holds still (what a test waits for instead of a fixed delay).
+  bool caughtUp() const { return stream_ && stream_->idle() && shownTime_ == requested_; }
   QtVtkWidget* view() const { return view_; }
   MapPanel* mapPanel() const { return map_; }
   ControlPanel* controlPanel() const { return control_; }

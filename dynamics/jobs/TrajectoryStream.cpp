@@ -5,7 +5,7 @@
 namespace rv {
 
 TrajectoryStream::TrajectoryStream(std::unique_ptr<Integrator> integrator)
-    : integrator_(std::move(integrator)), target_(integrator_->time()) {
+    : integrator_(std::move(integrator)), target_(integrator_->time()), served_(target_) {
   thread_ = std::thread([this] { run(); });
 }
 
@@ -33,10 +33,16 @@ bool TrajectoryStream::take(Batch& out) {
   return !out.times.empty() || out.reached || !out.error.empty();
 }
 
+bool TrajectoryStream::idle() {
+  std::lock_guard lock(mutex_);
+  return pending_.times.empty() && !pending_.reached && pending_.error.empty() &&
+         (stop_ || served_ == target_);
+}
+
 void TrajectoryStream::run() {
   Integrator& integ = *integrator_;
   const int dir = integ.direction();
-  double served = integ.time(); // the last target whose state was delivered
+  double served = integ.time(); // the last target whose state was delivered (served_ under the lock)
   Eigen::VectorXd x(integ.state().size());
   for (;;) {
     double target;
@@ -80,7 +86,7 @@ void TrajectoryStream::run() {
       pending_.reached = true;
       pending_.atTime = target;
       pending_.at = x;
-      served = target;
+      served = served_ = target;
     }
   }
 }

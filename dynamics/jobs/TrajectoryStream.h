@@ -38,6 +38,9 @@ public:
   void requestUntil(double t);
   /// Moves what has been computed into `out` (clearing it first). Returns true when anything was taken.
   bool take(Batch& out);
+  /// Whether the state at the last requested time has been delivered and everything computed taken: nothing
+  /// more comes until another time is asked for (or the integration failed and its error was taken).
+  bool idle();
 
 private:
   void run();
@@ -45,6 +48,7 @@ private:
   std::mutex mutex_;
   std::condition_variable wake_;
   double target_;
+  double served_; ///< the last target whose state was delivered
   bool stop_ = false;
   Batch pending_;
   std::thread thread_;

@@ -1007,11 +1007,11 @@ class Cli(unittest.TestCase):
         e = dict(os.environ)
         e.pop("DISPLAY", None)
         p = subprocess.Popen([RV, *args, "-o", resumed, "--checkpoint", ck], stderr=subprocess.PIPE, env=e)
-        # Ctrl-C once it computes (the temporary output exists): earlier, no handler is installed yet
-        deadline = time.time() + 30
+        # Ctrl-C once it computes (the temporary output exists): earlier, no handler is installed yet; from
+        # then on a Ctrl-C at any moment saves the checkpoint (app/cli/Checkpoint.cpp), so no further delay
+        deadline = time.time() + 60
         while not any(n.startswith(".res.partial-") for n in os.listdir(self.dir)) and time.time() < deadline:
             time.sleep(0.01)
-        time.sleep(0.1)
         p.send_signal(signal.SIGINT)
         self.assertEqual(p.wait(timeout=60), 130)
         self.assertTrue(os.path.exists(ck))

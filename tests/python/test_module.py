@@ -158,23 +158,39 @@ def test_a_failed_computation_raises_computationerror():
 
 
 def test_the_gil_is_released_during_a_computation():
+    # another thread takes the GIL back 2000 times while one call computes, and the call ends (its progress
+    # callback raises) once it has: no rate measured. Were the GIL held while computing, that thread would get
+    # it only at the caller's progress polls (one every 50 ms): 100 s, past the generous deadline
     s = rollviz.Scene.load(scene_path("chaplygin_ball.json"))
-    ticks, done = [0], [False]
+    under_way, spun = threading.Event(), threading.Event()
+    turns = [0]
 
     def spin():
-        while not done[0]:
-            ticks[0] += 1
-            time.sleep(0.001)
+        under_way.wait()
+        while turns[0] < 2000:
+            turns[0] += 1
+            time.sleep(0.0001)  # lets the GIL go: the next turn takes it again
+        spun.set()
+
+    class Enough(Exception):
+        pass
+
+    deadline = time.monotonic() + 60
+
+    def progress(_):
+        under_way.set()  # (called on the caller's thread, inside the call)
+        if spun.is_set() or time.monotonic() > deadline:
+            raise Enough
 
     th = threading.Thread(target=spin)
     th.start()
-    t0 = time.perf_counter()
-    s.integrate(time=4000, every=1, columns=["t"])
-    elapsed = time.perf_counter() - t0
-    done[0] = True
-    th.join()
-    assert elapsed > 0.2, "the integration should take a while for this test to mean something"
-    assert ticks[0] > 0.3 * elapsed * 1000 / 2, (ticks[0], elapsed)
+    try:
+        with pytest.raises(Enough):  # 10^6 time units: the call would go on for a minute or more
+            s.integrate(time=1e6, every=10, columns=["t"], progress=progress)
+    finally:
+        under_way.set()
+        th.join()
+    assert spun.is_set(), f"{turns[0]} turns of 2000 while the call computed"
 
 
 def test_progress_is_reported_on_the_calling_thread():
@@ -191,20 +207,28 @@ def test_an_exception_in_the_progress_callback_stops_the_call():
     def stop(_):
         raise RuntimeError("enough")
 
-    t0 = time.perf_counter()
+    # 10^8 time units (hours of work): the call returns at all only because the exception stopped it (no
+    # clock: were it not stopped, ctest's timeout says so)
     with pytest.raises(RuntimeError, match="enough"):
-        rollviz.Scene.load(scene_path("chaplygin_ball.json")).integrate(1e6, 1, ["t"], progress=stop)
-    assert time.perf_counter() - t0 < 10
+        rollviz.Scene.load(scene_path("chaplygin_ball.json")).integrate(1e8, 1000, ["t"], progress=stop)
 
 
 def test_ctrl_c_stops_a_long_call_with_keyboardinterrupt():
+    # "started" is said from inside the call (its first progress report), so the signal cannot come before
+    # it, however slowly the child starts; 10^9 time units: it returns at all only because Ctrl-C stopped it
     code = textwrap.dedent(f"""
         import sys, time, rollviz
         s = rollviz.Scene.load({scene_path('chaplygin_ball.json')!r})
-        print("started", flush=True)
+        said = []
+
+        def started(_):
+            if not said:
+                said.append(1)
+                print("started", flush=True)
+
         t0 = time.time()
         try:
-            s.lyapunov(time=1e9)
+            s.lyapunov(time=1e9, progress=started)
         except KeyboardInterrupt:
             print("interrupted after", time.time() - t0, flush=True)
             sys.exit(0)
@@ -212,12 +236,10 @@ def test_ctrl_c_stops_a_long_call_with_keyboardinterrupt():
     """)
     p = subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE, text=True, env=os.environ.copy())
     assert p.stdout.readline().strip() == "started"
-    time.sleep(1.0)
-    sent = time.perf_counter()
     p.send_signal(signal.SIGINT)
-    out, _ = p.communicate(timeout=30)
+    out, _ = p.communicate(timeout=120)
     assert p.returncode == 0, out
-    assert "interrupted" in out and time.perf_counter() - sent < 5
+    assert "interrupted" in out
 
 
 def test_render_is_the_clis_picture(tmp_path):
