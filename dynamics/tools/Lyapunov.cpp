@@ -36,7 +36,8 @@ const ParameterTable& lyapunovTable() {
        .defaultValue = d.interval,
        .min = 1e-300,
        .max = 1e300,
-       .description = "time between re-orthonormalisations (maps: iterations)"},
+       .description = "the longest time between re-orthonormalisations (tangent method: shorter where the "
+                      "vectors spread beyond `spread`; maps: iterations)"},
       {.id = "spread",
        .label = "Largest spread in an interval",
        .defaultValue = d.spread,
@@ -304,8 +305,13 @@ bool LyapunovRun::close(double span) {
   Eigen::VectorXd x = tangent_ ? Eigen::VectorXd(state_.head(n_)) : x_;
   Eigen::MatrixXd V =
       tangent_ ? Eigen::MatrixXd(Eigen::Map<const Eigen::MatrixXd>(state_.data() + n_, m_, k_)) : V_;
+  // the spread is the integration's, measured before a projection on the integrals' level (which leaves the
+  // vectors beyond the level's dimension degenerate on purpose)
+  const bool projects = s_.renormalizeIntegrals && model_.integrals(x.data()).size() > 0;
+  const double spread = projects ? orthonormalize(V).loss : 0;
   project(x, V);
   Orthonormalized o = orthonormalize(V);
+  if (projects) o.loss = spread;
   const bool adapts = tangent_ && !model_.isMap() && s_.spread > 0; // a map's interval: whole iterations
   if (adapts && !(o.loss <= s_.spread)) {
     if (const double shorter = shorterSpan(span); shorter > 0) {
