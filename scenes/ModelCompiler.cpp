@@ -158,6 +158,13 @@ std::string firstLines(const std::string& text, int lines) {
 
 } // namespace
 
+std::size_t largestCompiledSource() {
+  const char* v = std::getenv("ROLLVIZ_COMPILE_MAX_BYTES");
+  char* end = nullptr;
+  const double bytes = v ? std::strtod(v, &end) : 0;
+  return v && end != v && bytes >= 0 ? static_cast<std::size_t>(bytes) : std::size_t{1'000'000};
+}
+
 bool compileModelsByDefault() {
   const char* v = std::getenv("ROLLVIZ_COMPILE_MODELS");
   return !(v && std::string(v) == "0");
@@ -179,6 +186,14 @@ CompiledModelFactory compiledModel(const std::shared_ptr<const EquationSystem>& 
     return {};
   }
   const std::string code = modelCode(*system);
+  // the compiler's time grows faster than the code (a computer-algebra Lagrangian of 100 000 terms waited
+  // more than five minutes); past this size the interpreter, which starts at once, is the faster way
+  if (const std::size_t largest = largestCompiledSource(); code.size() > largest) {
+    note("the model '" + id + "' runs interpreted: its generated code (" +
+         std::to_string(code.size() / 1000) + " kB) is larger than ROLLVIZ_COMPILE_MAX_BYTES (" +
+         std::to_string(largest) + "), past which compiling costs more than it saves");
+    return {};
+  }
   std::string identity = code + "\n" + ROLLVIZ_ABI_STAMP;
   for (const auto& a : compileArguments(t, "SOURCE", "OUT"))
     identity += "\n" + a;

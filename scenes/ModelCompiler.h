@@ -6,6 +6,7 @@
 #pragma once
 #include "dynamics/models/EquationModel.h"
 
+#include <cstddef>
 #include <functional>
 #include <memory>
 #include <string>
@@ -26,5 +27,9 @@ CompiledModelFactory compiledModel(const std::shared_ptr<const EquationSystem>& 
 
 /// Whether model files are compiled on first use: ROLLVIZ_COMPILE_MODELS=0 turns it off (interpreted only).
 bool compileModelsByDefault();
+
+/// The largest generated source compiled (ROLLVIZ_COMPILE_MAX_BYTES, default 1 MB; a model's is ~20 kB): a
+/// larger one runs interpreted, which starts at once, rather than wait minutes on the compiler.
+std::size_t largestCompiledSource();
 
 } // namespace rv

@@ -344,6 +344,23 @@ std::unique_ptr<Model> compiled(const std::string& file, const std::map<std::str
   return factory(p);
 }
 
+// a generated source past ROLLVIZ_COMPILE_MAX_BYTES is not compiled (the interpreter starts at once; a
+// computer-algebra Lagrangian of 100 000 terms waited minutes on the compiler): said, with the setting
+TEST(ModelFileCompiled, ACodeTooLargeToBeWorthCompilingRunsInterpreted) {
+  std::string why;
+  if (!modelCompilationAvailable(&why)) GTEST_SKIP() << why;
+  const ModelEntry& e = modelFileEntry(examples("lorenz.json"));
+  ASSERT_EQ(setenv("ROLLVIZ_COMPILE_MAX_BYTES", "100", 1), 0);
+  std::string notes;
+  const auto factory = compiledModel(equationSystemOf(e), [&](const std::string& n) { notes += n + "\n"; });
+  unsetenv("ROLLVIZ_COMPILE_MAX_BYTES");
+  EXPECT_FALSE(factory);
+  EXPECT_NE(notes.find("runs interpreted"), std::string::npos) << notes;
+  EXPECT_NE(notes.find("ROLLVIZ_COMPILE_MAX_BYTES"), std::string::npos) << notes;
+  EXPECT_EQ(notes.find("compiling"), std::string::npos) << notes; // the compiler was not started
+  EXPECT_GT(largestCompiledSource(), 100000u);                    // the default compiles every example
+}
+
 TEST(ModelFileCompiled, LorenzAndTheChaplyginBallCompiledFollowTheBuiltInModels) {
   std::string why;
   if (!modelCompilationAvailable(&why)) GTEST_SKIP() << why;
