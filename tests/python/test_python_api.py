@@ -170,6 +170,8 @@ def test_a_sweep_defined_in_python_equals_the_sweep_file(tmp_path):
     assert np.array_equal(r.columns["lyapunov.max"], from_file.columns["lyapunov.max"])
     grid = r["values"]["lyapunov.max"]
     assert grid.shape == (5, 3)
+    assert r.values is r["values"]  # the key, not dict.values (the docstring's r.values["megno"])
+    assert len(repr(r)) < 500 and "SweepResult(" in repr(r)
     flat = from_file.columns["lyapunov.max"]
     for i in range(5):
         for j in range(3):

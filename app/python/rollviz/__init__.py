@@ -51,7 +51,13 @@ __all__ = ["ComputationError", "Model", "Result", "Scene", "SweepResult", "Table
 # ---------------------------------------------------------------------------------------------------- results
 
 class Result(dict):
-    """A tool's result: a dict whose keys are also attributes (r.exponents is r["exponents"])."""
+    """A tool's result: a dict whose keys are also attributes (r.exponents is r["exponents"]); a key wins over a
+    dict method of its name (a sweep's r.values is its values, not dict.values)."""
+
+    def __getattribute__(self, name):
+        if not name.startswith("_") and dict.__contains__(self, name):
+            return dict.__getitem__(self, name)
+        return super().__getattribute__(name)
 
     def __getattr__(self, name):
         try:
@@ -60,7 +66,23 @@ class Result(dict):
             raise AttributeError(name) from None
 
     def __dir__(self):
-        return list(self.keys()) + list(super().__dir__())
+        return list(dict.keys(self)) + list(super().__dir__())
+
+    def __repr__(self):
+        return f"{type(self).__name__}({', '.join(f'{k}={_brief(v)}' for k, v in dict.items(self))})"
+
+
+def _brief(value):
+    """A value in a line: arrays and long lists by their shape, dicts by their keys, long text cut."""
+    if isinstance(value, _np.ndarray):
+        return f"array{value.shape}" if value.size > 6 else repr(value.tolist())
+    if isinstance(value, (list, tuple)) and len(value) > 6:
+        return f"[{len(value)} items]"
+    if isinstance(value, dict):
+        keys = list(value)
+        return "{" + ", ".join(map(str, keys[:6])) + (", ..." if len(keys) > 6 else "") + "}"
+    text = repr(value)
+    return text if len(text) <= 80 else text[:77] + "..."
 
 
 def _optional(module, what):
