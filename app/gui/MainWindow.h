@@ -94,6 +94,10 @@ public:
   void offerSavedJobs();
   /// Whether the 3D view's run plays (Space toggles it).
   bool playing() const { return playing_; }
+  /// Every action's shortcut and name, a line each (Help > Keyboard shortcuts).
+  QString shortcutsText() const;
+  /// Where Help > Guide goes: the built guide's index.html, else the folder of its pages.
+  static QString guideLocation();
   /// Simulation time shown in the last frame.
   double shownTime() const { return shownTime_; }
   /// Whether the view shows the time asked for and nothing more is on its way: paused, the picture then

@@ -16,6 +16,7 @@
 #include <QAction>
 #include <QActionGroup>
 #include <QComboBox>
+#include <QDesktopServices>
 #include <QDir>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
@@ -29,6 +30,7 @@
 #include <QMessageBox>
 #include <QSettings>
 #include <QToolBar>
+#include <QUrl>
 #include <algorithm>
 
 namespace rv {
@@ -36,8 +38,7 @@ namespace rv {
 void MainWindow::buildToolBars(QDockWidget* settingsDock) {
   auto* bar = addToolBar("Playback");
   bar->setObjectName("playback");
-  auto* open = bar->addAction("Open…", this, &MainWindow::openDialog);
-  open->setShortcut(QKeySequence::Open);
+  bar->addAction("Open…", this, &MainWindow::openDialog)->setToolTip("Open a scene or a session (Ctrl+O)");
   playAction_ = bar->addAction("Pause", this, &MainWindow::togglePlay);
   playAction_->setShortcut(Qt::Key_Space);
   playAction_->setToolTip("Play / pause (Space)");
@@ -107,8 +108,9 @@ void MainWindow::buildToolBars(QDockWidget* settingsDock) {
 
 void MainWindow::buildMenus() {
   auto* file = menuBar()->addMenu("&File");
-  file->addAction("Open scene…", this, &MainWindow::openDialog)
-      ->setToolTip("a scene file, or a session saved with Save session");
+  auto* open = file->addAction("Open scene…", this, &MainWindow::openDialog);
+  open->setToolTip("a scene file, or a session saved with Save session");
+  open->setShortcut(QKeySequence("Ctrl+O")); // spelled out: some platforms map the standard keys to none
   file->addAction("Gallery…", this,
                   [this] {
                     GalleryDialog gallery(this, [this](const QString& path) {
@@ -122,7 +124,7 @@ void MainWindow::buildMenus() {
                                                       "Model files (*.json)");
     if (!path.isEmpty() && mayReplaceMap("Opening " + QFileInfo(path).fileName())) openModel(path);
   });
-  file->addAction("Save scene as…", this, &MainWindow::saveDialog)->setShortcut(QKeySequence::SaveAs);
+  file->addAction("Save scene as…", this, &MainWindow::saveDialog)->setShortcut(QKeySequence("Ctrl+Shift+S"));
   file->addSeparator();
   file->addAction("Save session…", this, &MainWindow::saveSessionDialog)
       ->setToolTip("the scene, every trajectory of the map (to go on from where it stands), the Results log "
@@ -240,10 +242,39 @@ void MainWindow::buildMenus() {
   auto* help = menuBar()->addMenu("&Help");
   help->addAction("About rollviz…", this, [this] { (new AboutDialog(view_, this))->show(); })
       ->setToolTip("the version, the libraries and the renderers (GPU or software) behind the pictures");
+  help->addAction("Guide", this,
+                  [this] {
+                    const QString where = guideLocation();
+                    if (!QDesktopServices::openUrl(QUrl::fromLocalFile(where)))
+                      report("The guide is at " + where + " (no program here opens it)", 15000);
+                  })
+      ->setToolTip("the guide: getting started, tutorials, the tools and the command line (built by cmake "
+                   "--build build/dev --target docs; else its pages in docs/)");
+  help->addAction("Keyboard shortcuts…", this,
+                  [this] { QMessageBox::information(this, "Keyboard shortcuts", shortcutsText()); })
+      ->setShortcut(QKeySequence::HelpContents);
   // every dock can be shown again from the Windows menu (a closed one has no other handle)
   windows->addSeparator();
   for (QDockWidget* d : findChildren<QDockWidget*>())
     windows->addAction(d->toggleViewAction());
+}
+
+QString MainWindow::shortcutsText() const {
+  QStringList lines;
+  for (const QAction* a : findChildren<QAction*>())
+    if (!a->shortcut().isEmpty())
+      lines << a->shortcut().toString(QKeySequence::NativeText) + "\t" + QString(a->text()).remove('&');
+  lines.sort();
+  lines.removeDuplicates();
+  return lines.join('\n');
+}
+
+QString MainWindow::guideLocation() {
+  // the built guide where a build tree beside the sources has one, else its pages in docs/
+  const QDir root = QFileInfo(QString::fromStdString(scenesDirectory())).dir();
+  for (const char* built : {"build/dev/docs/html/index.html", "build/release/docs/html/index.html"})
+    if (QFileInfo::exists(root.filePath(built))) return root.filePath(built);
+  return root.filePath("docs");
 }
 
 QString MainWindow::askWhereToWrite(const QString& title, QStandardPaths::StandardLocation where,

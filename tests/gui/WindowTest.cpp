@@ -1139,6 +1139,27 @@ private slots:
     QVERIFY(dock->isVisible());
   }
 
+  // Help lists the shortcuts of every action and leads to the guide; the File menu shows its keys
+  void helpListsTheShortcutsAndTheGuide() {
+    QMenu *help = nullptr, *file = nullptr;
+    for (QAction* a : window_->menuBar()->actions()) {
+      if (a->text() == "&Help") help = a->menu();
+      if (a->text() == "&File") file = a->menu();
+    }
+    QVERIFY(help && file);
+    QStringList items;
+    for (QAction* a : help->actions())
+      items << a->text();
+    QVERIFY2(items.contains("Guide") && items.contains("Keyboard shortcuts…"), qPrintable(items.join(", ")));
+    const QString keys = window_->shortcutsText();
+    for (const char* expected :
+         {"Ctrl+O\tOpen scene…", "Space\t", "Ctrl+Shift+S\tSave scene as…", "Ctrl+Shift+R\t"})
+      QVERIFY2(keys.contains(expected), qPrintable(keys));
+    for (QAction* a : file->actions())
+      if (a->text() == "Open scene…") QCOMPARE(a->shortcut(), QKeySequence("Ctrl+O"));
+    QVERIFY(QFileInfo::exists(MainWindow::guideLocation()));
+  }
+
   // Help > About names the window's GL renderer at once and the headless one when `rollviz info` answers
   // (a process of its own), without blocking the window meanwhile
   void aboutNamesTheRenderers() {
