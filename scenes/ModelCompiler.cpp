@@ -162,7 +162,8 @@ std::size_t largestCompiledSource() {
   const char* v = std::getenv("ROLLVIZ_COMPILE_MAX_BYTES");
   char* end = nullptr;
   const double bytes = v ? std::strtod(v, &end) : 0;
-  return v && end != v && bytes >= 0 ? static_cast<std::size_t>(bytes) : std::size_t{1'000'000};
+  if (!v || end == v || !(bytes >= 0)) return 1'000'000;
+  return bytes < 1e15 ? static_cast<std::size_t>(bytes) : std::size_t{1'000'000'000'000'000};
 }
 
 bool compileModelsByDefault() {

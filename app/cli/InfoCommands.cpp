@@ -16,6 +16,7 @@
 #include <fmt/core.h>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <unistd.h>
 
 namespace rv {
 
@@ -65,8 +66,10 @@ Command addListCommand(CLI::App& app) {
   return {cmd, [whatPtr] {
             const std::string& what = *whatPtr;
             if (what == "problems")
-              for (const auto& e : ModelRegistry::global().entries()) // the id first: scripts read it
-                fmt::print("{:<22} {}\n", e.info->id, e.info->title);
+              for (const auto& e : ModelRegistry::global().entries()) // scripts read a bare id a line
+                fmt::print("{}\n", isatty(STDOUT_FILENO) == 1
+                                       ? fmt::format("{:<22} {}", e.info->id, e.info->title)
+                                       : e.info->id);
             else if (what == "integrators")
               for (const auto& e : IntegratorRegistry::global().entries())
                 fmt::print("{:<10} {}\n", e.id, e.title);

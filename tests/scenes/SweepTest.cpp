@@ -142,7 +142,8 @@ TEST(Sweep, LorenzLargestExponentKnownAnswers) {
       *scene.model, [&] { return spec.makeIntegrator(*scene.model); }, scene.initialState, scene.lyapunov);
   ASSERT_TRUE(run.run());
   const SweepRecord at28 = evaluate(s, 1);
-  EXPECT_EQ(at28.values[0], run.result().last.exponents[0]);
+  // (the sweep follows L1's vector alone, whose intervals need not shorten for L3's contraction: to rounding)
+  EXPECT_NEAR(at28.values[0], run.result().last.exponents[0], 1e-9);
   EXPECT_NEAR(at28.values[0], 0.9056, 0.05); // Sprott, Chaos and Time-Series Analysis (2003): 0.9056
 }
 
