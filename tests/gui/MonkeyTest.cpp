@@ -64,8 +64,11 @@ struct EventLog {
   int events = 0;
   bool verbose = false;
   char rendered[16384] = {0};
+  QElapsedTimer clock; // since the seed began: a slow or hanging event shows
   void add(const QString& what) {
-    const std::string line = "#" + std::to_string(count) + " " + what.toStdString();
+    char at[32];
+    std::snprintf(at, sizeof at, " [%.1f s] ", clock.isValid() ? clock.elapsed() / 1000.0 : 0.0);
+    const std::string line = "#" + std::to_string(count) + at + what.toStdString();
     ring[count % kKeep] = line;
     ++count;
     if (verbose) std::fprintf(stderr, "monkey: %s\n", line.c_str());
@@ -160,6 +163,7 @@ class MonkeyTest : public QObject {
   QTimer dialogs_;         // closes modal dialogs, from any event loop
   bool acceptAll_ = false; // while opening every window: the plot dialogs' settings accepted
   int eventsPerPhase_ = 0;
+  QPointer<QWidget> focus_; // the window the phase is about (none: the main window)
 
   int pick(int n) { return std::uniform_int_distribution<int>(0, n - 1)(rng_); }
   bool chance(double p) { return std::uniform_real_distribution<double>(0, 1)(rng_) < p; }
@@ -230,10 +234,9 @@ class MonkeyTest : public QObject {
   // a random visible widget of a random window (itself or one of its children) with room to click in
   QWidget* target() {
     QWidget* popup = QApplication::activePopupWidget();
-    // the main window half the time: it has the most to do
-    QWidget* top = popup                                            ? popup
-                   : window_ && window_->isVisible() && chance(0.5) ? window_.data()
-                                                                    : any(windows());
+    // the phase's own window (the main window, or the sweep's) half the time: it has the most to do
+    QWidget* own = focus_ && focus_->isVisible() ? focus_.data() : window_.data();
+    QWidget* top = popup ? popup : own && own->isVisible() && chance(0.5) ? own : any(windows());
     if (!top) return nullptr;
     QList<QWidget*> candidates{top};
     for (QWidget* c : top->findChildren<QWidget*>())
@@ -506,6 +509,7 @@ private slots:
     gLog.verbose = qEnvironmentVariableIntValue("ROLLVIZ_MONKEY_VERBOSE") != 0;
     gLog.seed = seed;
     gLog.events = events;
+    gLog.clock.start();
     gBad.clear();
     gWarnings.clear();
     QElapsedTimer clock;
@@ -544,7 +548,7 @@ private slots:
         {"flow: lorenz", scene(defaultScenePath("lorenz"))},
         {"map: " + QString::fromStdString(map), scene(defaultScenePath(map))},
         {"rolling body: " + QFileInfo(QString::fromStdString(body)).baseName(), scene(body)},
-        {"sweep", [this, sweepPath] { return window_ && window_->openSweep(sweepPath); }}};
+        {"sweep", [this, sweepPath] { return window_ && (focus_ = window_->openSweep(sweepPath)); }}};
     for (const auto& [name, open] : phases) {
       const bool ok = phase(name, open);
       if (!gBad.isEmpty()) break;
