@@ -51,8 +51,9 @@ namespace rv {
 
 namespace {
 
-const std::vector<unsigned> kDefaultSeeds = {1, 2, 3}; // the list ./test runs
-constexpr int kDefaultEvents = 120;                    // per seed, over the four phases
+// the list ./test runs: between them, both maps, both bodies and both sweeps (the choices a seed makes first)
+const std::vector<unsigned> kDefaultSeeds = {1, 4, 7};
+constexpr int kDefaultEvents = 100; // per seed, over the four phases: about 30 s a seed on a 2-core machine
 
 // the last events, kept for the failure message and pre-rendered for the crash handler (which may only
 // write(2) what is already there)
@@ -430,6 +431,27 @@ class MonkeyTest : public QObject {
       pause();
   }
 
+  // Runs what the monkey does; an exception out of it (out of a slot or an event handler: in the application
+  // it ends the process) fails the test, with what it was, the seed and the last events -- unless it is a
+  // known bug below, counted in the seed's summary (remove its line once the application is fixed)
+  int knownBugs_ = 0;
+  void guarded(const std::function<void()>& f) {
+    // Windows > Charts with an invalid edit in the control panel, not applied (e.g. B11 turned down until
+    // the field matrix B is not positive semi-definite): ChartTask's InputError out of MainWindow::openChart
+    static const char* const known[] = {"must be positive semi-definite"};
+    try {
+      f();
+    } catch (const std::exception& e) {
+      for (const char* k : known)
+        if (std::strstr(e.what(), k)) {
+          gLog.add(QString("known bug: exception out of the event: ") + e.what());
+          ++knownBugs_;
+          return;
+        }
+      gBad << QString("exception out of the event: ") + e.what();
+    }
+  }
+
   // what failed, with the seed and the last events
   QByteArray failure(const QString& why) const {
     return (why + "\n" + QString::fromStdString(gLog.text())).toUtf8();
@@ -445,11 +467,13 @@ class MonkeyTest : public QObject {
       all << charts.takeAt(pick(charts.size()));
     for (QAction* a : all) {
       gLog.add("open window \"" + a->text() + "\" (every window)");
-      if (a->isCheckable())
-        a->setChecked(true);
-      else
-        a->trigger();
-      QCoreApplication::processEvents();
+      guarded([a] {
+        if (a->isCheckable())
+          a->setChecked(true);
+        else
+          a->trigger();
+        QCoreApplication::processEvents();
+      });
     }
     acceptAll_ = false;
   }
@@ -464,10 +488,15 @@ class MonkeyTest : public QObject {
       return false;
     }
     openEveryWindow();
+    if (!gBad.isEmpty()) return false;
     for (int i = 0; i < eventsPerPhase_ && window_; ++i) {
-      closeModal();
-      event();
-      QCoreApplication::processEvents();
+      // an exception out of a slot or an event handler is a failure too (Qt does not promise to survive one);
+      // said with what it was, the seed and the last events
+      guarded([this] {
+        closeModal();
+        event();
+        QCoreApplication::processEvents();
+      });
       if (!gBad.isEmpty()) return false;
     }
     qInfo("seed %u, %s: %.1f s", gLog.seed, qPrintable(name), clock.elapsed() / 1000.0);
@@ -512,6 +541,7 @@ private slots:
     gLog.clock.start();
     gBad.clear();
     gWarnings.clear();
+    knownBugs_ = 0;
     QElapsedTimer clock;
     clock.start();
 
@@ -548,7 +578,8 @@ private slots:
         {"flow: lorenz", scene(defaultScenePath("lorenz"))},
         {"map: " + QString::fromStdString(map), scene(defaultScenePath(map))},
         {"rolling body: " + QFileInfo(QString::fromStdString(body)).baseName(), scene(body)},
-        {"sweep", [this, sweepPath] { return window_ && (focus_ = window_->openSweep(sweepPath)); }}};
+        {"sweep: " + QString::fromStdString(sweep["quantity"].get<std::string>()),
+         [this, sweepPath] { return window_ && (focus_ = window_->openSweep(sweepPath)); }}};
     for (const auto& [name, open] : phases) {
       const bool ok = phase(name, open);
       if (!gBad.isEmpty()) break;
@@ -568,8 +599,8 @@ private slots:
     QString summary;
     for (const auto& [text, n] : gWarnings)
       summary += QString("\n  %1 × %2").arg(n).arg(text);
-    qInfo("seed %u: %d events in %.1f s; Qt warnings:%s", seed, events, clock.elapsed() / 1000.0,
-          summary.isEmpty() ? " none" : qPrintable(summary));
+    qInfo("seed %u: %d events in %.1f s; known bugs met: %d; Qt warnings:%s", seed, events,
+          clock.elapsed() / 1000.0, knownBugs_, summary.isEmpty() ? " none" : qPrintable(summary));
   }
 
   void cleanupTestCase() {
