@@ -663,7 +663,14 @@ ChartWindow* MainWindow::openChart(const std::string& view, const std::string& d
 ChartWindow* MainWindow::openChartOf(const nlohmann::json& document, const std::string& view,
                                      const std::string& diagram) {
   if (!scene_) return nullptr;
-  auto* w = new ChartWindow(map_->jobs(), document, scene_->source, view, this, diagram);
+  ChartWindow* w = nullptr;
+  try { // the document is the control panel's edit, applied or not: it may not make a scene (found by the
+        // monkey)
+    w = new ChartWindow(map_->jobs(), document, scene_->source, view, this, diagram);
+  } catch (const std::exception& e) {
+    report(QString("Cannot open the chart: %1").arg(e.what()), 15000);
+    return nullptr;
+  }
   w->setAttribute(Qt::WA_DeleteOnClose);
   // every outcome in the Results dock: the numbers a finished chart shows (its failures: the tool manager)
   connect(w, &ChartWindow::finished, this, [this, w, view] {
