@@ -117,6 +117,16 @@ bool writeJson(const QString& path, const nlohmann::json& doc) {
   return true;
 }
 
+// MEGNO over 5 x 4 Henon-Heiles starts (map.0, map.1 in [-0.2, 0.2]) to t = 100: a sweep file's document
+nlohmann::json hhMegnoSweep() {
+  return {{"scene", defaultScenePath("henon_heiles")},
+          {"axes",
+           {{{"id", "map.0"}, {"min", -0.2}, {"max", 0.2}, {"count", 5}},
+            {{"id", "map.1"}, {"min", -0.2}, {"max", 0.2}, {"count", 4}}}},
+          {"quantity", "megno"},
+          {"set", {{"megno.time", 100}}}};
+}
+
 // a pixel of a sweep window's view over grid point `index`, or (-1, -1)
 QPoint pixelOver(const SweepWindow& w, long index) {
   for (int y = 0; y < w.view()->height(); y += 3)
@@ -541,12 +551,7 @@ private slots:
   // point's scene (its initial point on the section) in the main window
   void sweepWindowFillsInAndOpensAPointsScene() {
     const QString path = dir_.filePath("hh_sweep.json");
-    QVERIFY(writeJson(path, nlohmann::json{{"scene", defaultScenePath("henon_heiles")},
-                                           {"axes",
-                                            {{{"id", "map.0"}, {"min", -0.2}, {"max", 0.2}, {"count", 5}},
-                                             {{"id", "map.1"}, {"min", -0.2}, {"max", 0.2}, {"count", 4}}}},
-                                           {"quantity", "megno"},
-                                           {"set", {{"megno.time", 100}}}}));
+    QVERIFY(writeJson(path, hhMegnoSweep()));
     SweepWindow* w = window_->openSweep(path);
     QVERIFY(w);
     Job* job = w->job();
@@ -632,12 +637,7 @@ private slots:
   // cell whose scene the main window declines says so.
   void sweepZoomDraggedWhilePointsArriveDoesNotCrash() {
     const QString path = dir_.filePath("hh_zoom_sweep.json");
-    QVERIFY(writeJson(path, nlohmann::json{{"scene", defaultScenePath("henon_heiles")},
-                                           {"axes",
-                                            {{{"id", "map.0"}, {"min", -0.2}, {"max", 0.2}, {"count", 5}},
-                                             {{"id", "map.1"}, {"min", -0.2}, {"max", 0.2}, {"count", 4}}}},
-                                           {"quantity", "megno"},
-                                           {"set", {{"megno.time", 100}}}}));
+    QVERIFY(writeJson(path, hhMegnoSweep()));
     window_->mapPanel()->jobs().pauseNextAt(0.3); // some points drawn, more to come whatever the speed
     SweepWindow* w = window_->openSweep(path);
     QVERIFY(w);
