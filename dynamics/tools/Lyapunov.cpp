@@ -207,6 +207,7 @@ LyapunovRun::LyapunovRun(const Model& model, IntegratorFactory makeIntegrator, c
       fusedStep_ = rk4->stepSize();
   }
   project(x_, V_);
+  V_ = orthonormalize(V_).Q; // the first interval starts from unit vectors too (its spread is then its own)
   startAll(0);
 }
 
@@ -319,6 +320,7 @@ bool LyapunovRun::close(double span) {
       startAll(t_); // x_ and V_ still hold the interval's start
       return false;
     }
+    span_ = interval_; // a vector degenerate whatever the length (R_jj = 0): no halving forever after
     if (result_.warning.empty()) { // at the shortest interval: go on, and say so once
       std::ostringstream os;
       os << "the tangent vectors spread by " << o.loss << " (more than lyapunov.spread = " << s_.spread
