@@ -358,7 +358,7 @@ TEST(ModelFileCompiled, ACodeTooLargeToBeWorthCompilingRunsInterpreted) {
   EXPECT_NE(notes.find("runs interpreted"), std::string::npos) << notes;
   EXPECT_NE(notes.find("ROLLVIZ_COMPILE_MAX_BYTES"), std::string::npos) << notes;
   EXPECT_EQ(notes.find("native code"), std::string::npos) << notes; // the compiler was not started
-  EXPECT_GT(largestCompiledSource(), 100000u);                    // the default compiles every example
+  EXPECT_GT(largestCompiledSource(), 100000u);                      // the default compiles every example
 }
 
 TEST(ModelFileCompiled, LorenzAndTheChaplyginBallCompiledFollowTheBuiltInModels) {
