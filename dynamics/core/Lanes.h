@@ -282,6 +282,22 @@ template <class T, int K> [[gnu::always_inline]] inline Jet<T, K> cos(const Jet<
   return Jet<T, K>::with(cos(a.v), [&](int c) { return a.d[c] * slope; });
 }
 
+/// r where `coefficient` is not 0, else 0 with no derivatives, lane by lane: a term c f(x) that vanishes with
+/// its coefficient c although f is not finite everywhere (BallOnSurface.h's vanishingWith).
+template <class T, int K> Jet<T, K> keptWhereNonzero(const T& coefficient, Jet<T, K> r) {
+  if constexpr (std::is_arithmetic_v<T>) {
+    return coefficient != 0.0 ? r : Jet<T, K>(0.0);
+  } else {
+    using V = typename T::V;
+    const auto kept = coefficient.v != V{}; // all ones where the coefficient is not 0
+    const auto only = [&](T& x) { x.v = kept ? x.v : V{}; };
+    only(r.v);
+    for (T& d : r.d)
+      only(d);
+    return r;
+  }
+}
+
 /// Whether this CPU runs the AVX2 lane kernels (else they run as SSE2 pairs).
 inline bool cpuHasAvx2() {
   static const bool avx2 = __builtin_cpu_supports("avx2");

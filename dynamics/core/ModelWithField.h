@@ -1,6 +1,7 @@
 // ModelWithField.h -- CRTP base: a model writes its right-hand side once, as a template on the scalar
 // type, and gets rhs() in double and an exact Jacobian through Eigen's forward-mode AutoDiff.
 #pragma once
+#include "dynamics/core/JetProgram.h"
 #include "dynamics/core/LaneField.h"
 #include "dynamics/core/Model.h"
 #include "dynamics/core/TaylorTape.h"
@@ -10,6 +11,7 @@
 #include <array>
 #include <bit>
 #include <memory>
+#include <mutex>
 #include <stdexcept>
 #include <unsupported/Eigen/AutoDiff>
 #include <utility>
@@ -29,6 +31,11 @@ template <class D> double valueOf(const Eigen::AutoDiffScalar<D>& v) {
 /// dimension (the leading components that evolve on their own); it must equal info().coreDimension. A Derived
 /// whose field has no branch on a value may declare `static constexpr bool kLaneField = true`: then its field
 /// also runs on 4 or 8 states at once (LaneField.h).
+///
+/// A lane field of more than kInlinedFieldDimension components (the rolling bodies) is recorded once as a
+/// JetProgram: its Jacobians, tangent vectors, fused RK4 and lane kernels run that program (one interpreter,
+/// compiled once), the field itself is compiled for double (rhs) and the Taylor tape only. A smaller one
+/// (Lorenz, Henon-Heiles) is compiled whole into each of them, inlined: cheap to build, and the fastest.
 ///
 /// Every virtual member is instantiated wherever the class is constructed: the lane kernels (4 and 8 lanes,
 /// up to kMaxFixedVectors tangent vectors, three instruction sets) make that costly. A model constructed in
@@ -67,12 +74,124 @@ public:
 
   /// Tangent vectors up to this many (and the core dimension) get code with their count fixed at compile
   /// time.
-  static constexpr int kMaxFixedVectors = 6;
+  static constexpr int kMaxFixedVectors = kJetDirections;
 
   /// The field evaluated on recording scalars: its Taylor expansion for the taylor integrator.
   void recordField(taylor::Tape& tape, const double* x) const final;
 
+  /// Lane fields larger than this are run from their JetProgram (see the class comment).
+  static constexpr int kInlinedFieldDimension = 4;
+
+  /// The recorded program of such a field and its constants at this model's parameters (for tests).
+  template <class D = Derived> const JetProgram& jetProgram() const {
+    static_assert(recordedField(), "only a lane field larger than kInlinedFieldDimension is recorded");
+    return *recorded<D>().program;
+  }
+
 private:
+  // whether the derivatives and lanes come from the recorded program (only read in member bodies: Derived is
+  // complete there)
+  static constexpr bool recordedField() {
+    if constexpr (requires { Derived::kLaneField; })
+      return N > kInlinedFieldDimension;
+    else
+      return false;
+  }
+  // the program and its constants at this model's coefficients
+  struct Recorded {
+    std::shared_ptr<const JetProgram> program;
+    std::vector<double> constants;
+  };
+  // (the members of the recorded path are templates: the explicit instantiation of a class that compiles its
+  // field instead does not instantiate them)
+  template <class D = Derived> const Recorded& recorded() const {
+    std::call_once(recordedOnce_, [this] {
+      auto r = std::make_unique<Recorded>();
+      if constexpr (kCoefficients) {
+        r->program = classProgram<D>(); // the coefficients are its inputs: one recording per class
+        const auto values = coefficientValues<D>(self());
+        r->constants = r->program->bindConstants({values.data()});
+      } else {
+        r->program = recordProgram<D>(this); // the parameters are numbers in it
+        r->constants = r->program->bindConstants({nullptr});
+      }
+      recorded_ = std::move(r);
+    });
+    return *recorded_;
+  }
+  template <class D = Derived> static std::shared_ptr<const JetProgram> classProgram() {
+    static const std::shared_ptr<const JetProgram> program = recordProgram<D>(nullptr);
+    return program;
+  }
+  // the field on recording scalars: of coefficients as inputs (model null), or of this model's parameters
+  template <class D = Derived>
+  static std::shared_ptr<const JetProgram> recordProgram(const ModelWithField* model) {
+    using jet_recording::Var;
+    auto program = std::make_shared<JetProgram>();
+    if constexpr (kCoefficients) {
+      (void)model;
+      using All = typename D::template Coefficients<jet_recording::Constant>;
+      constexpr int count = coefficientCount<D>();
+      static_assert(sizeof(All) == count * sizeof(jet_recording::Constant),
+                    "Coefficients<T> must hold members of type T only");
+      JetRecording recording(*program, N, count);
+      std::array<jet_recording::Constant, count> inputs;
+      for (int i = 0; i < count; ++i)
+        inputs[static_cast<std::size_t>(i)] = program->coefficient(i);
+      const auto coefficients = std::bit_cast<All>(inputs);
+      Vec<Var> xa, fa;
+      for (int i = 0; i < N; ++i)
+        xa[i] = program->input(i);
+      D::field(coefficients, xa, fa);
+      for (int i = 0; i < N; ++i)
+        program->setOutput(i, fa[i]);
+    } else {
+      JetRecording recording(*program, N, 0);
+      Vec<Var> xa, fa;
+      for (int i = 0; i < N; ++i)
+        xa[i] = program->input(i);
+      model->self().field(xa, fa);
+      for (int i = 0; i < N; ++i)
+        program->setOutput(i, fa[i]);
+    }
+    program->finish();
+    return program;
+  }
+  template <class D = Derived> static constexpr int coefficientCount() {
+    return static_cast<int>(sizeof(typename D::template Coefficients<double>) / sizeof(double));
+  }
+  // a model's Coefficients as the doubles they hold
+  template <class D = Derived> static auto coefficientValues(const D& model) {
+    using One = typename D::template Coefficients<double>;
+    static_assert(sizeof(One) == coefficientCount<D>() * sizeof(double),
+                  "Coefficients<T> must hold members of type T only");
+    return std::bit_cast<std::array<double, coefficientCount<D>()>>(static_cast<One>(model.coefficients()));
+  }
+  template <class D = Derived>
+  std::unique_ptr<LaneKernel> recordedLaneKernel(const LaneModels& models) const {
+    std::vector<const D*> lanes(models.size());
+    for (std::size_t l = 0; l < models.size(); ++l) { // another class, or different parameters not read as
+      lanes[l] = dynamic_cast<const D*>(models[l]);   // Coefficients: no kernel
+      if (!lanes[l]) return nullptr;
+      if (!kCoefficients && lanes[l]->parameters().values() != parameters().values()) return nullptr;
+    }
+    if constexpr (kCoefficients) {
+      std::vector<decltype(coefficientValues<D>(*lanes[0]))> values;
+      std::vector<const double*> perLane;
+      values.reserve(lanes.size());
+      for (const D* lane : lanes)
+        perLane.push_back(values.emplace_back(coefficientValues<D>(*lane)).data());
+      return jetProgramLaneKernel(classProgram<D>(), classProgram<D>()->bindConstants(perLane),
+                                  static_cast<int>(lanes.size()), M);
+    } else {
+      const auto& r = recorded();
+      return jetProgramLaneKernel(r.program, r.program->bindConstants({lanes.size(), nullptr}),
+                                  static_cast<int>(lanes.size()), M);
+    }
+  }
+  mutable std::once_flag recordedOnce_;
+  mutable std::unique_ptr<const Recorded> recorded_;
+
   const Derived& self() const { return static_cast<const Derived&>(*this); }
   static constexpr bool kCoefficients = requires { typename Derived::template Coefficients<double>; };
   template <int W> using LaneSelves = std::array<const Derived*, W>;
@@ -272,7 +391,8 @@ private:
 };
 
 // The virtual members out of the class body: not inline, so that `extern template` keeps a file that
-// constructs a model from compiling them (see above).
+// constructs a model from compiling them (see above). Each takes the recorded program or the compiled field
+// in branches of `if constexpr`, so that a recorded field never compiles the other.
 
 template <class Derived, int N, int M>
 void ModelWithField<Derived, N, M>::rhs(const double* x, double* dx) const {
@@ -285,48 +405,93 @@ void ModelWithField<Derived, N, M>::rhs(const double* x, double* dx) const {
 
 template <class Derived, int N, int M>
 void ModelWithField<Derived, N, M>::jacobian(const double* x, double* jac) const {
-  using AD = Eigen::AutoDiffScalar<Eigen::Matrix<double, N, 1>>;
-  Vec<AD> xa, fa;
-  for (int i = 0; i < N; ++i)
-    xa[i] = AD(x[i], N, i);
-  self().field(xa, fa);
-  for (int i = 0; i < N; ++i)
+  if constexpr (recordedField()) {
+    std::array<double, N * N> seeds{}, derivatives;
+    std::array<double, N> values;
     for (int j = 0; j < N; ++j)
-      jac[i * N + j] = fa[i].derivatives()[j];
+      seeds[static_cast<std::size_t>(j * N + j)] = 1;
+    const auto& r = recorded();
+    runJetProgram(*r.program, r.constants.data(), 1, N, x, seeds.data(), N, values.data(), derivatives.data(),
+                  N);
+    for (int i = 0; i < N; ++i)
+      for (int j = 0; j < N; ++j)
+        jac[i * N + j] = derivatives[static_cast<std::size_t>(j * N + i)];
+  } else {
+    using AD = Eigen::AutoDiffScalar<Eigen::Matrix<double, N, 1>>;
+    Vec<AD> xa, fa;
+    for (int i = 0; i < N; ++i)
+      xa[i] = AD(x[i], N, i);
+    self().field(xa, fa);
+    for (int i = 0; i < N; ++i)
+      for (int j = 0; j < N; ++j)
+        jac[i * N + j] = fa[i].derivatives()[j];
+  }
 }
 
 template <class Derived, int N, int M>
 void ModelWithField<Derived, N, M>::coreJacobian(const double* x, double* jac) const {
-  using D = Eigen::Matrix<double, M, 1>; // M derivatives, fixed size: no heap, unrolled
-  using AD = Eigen::AutoDiffScalar<D>;
-  Vec<AD> xa, fa;
-  for (int i = 0; i < N; ++i)
-    xa[i] = i < M ? AD(x[i], M, i) : AD(x[i], D::Zero());
-  self().field(xa, fa);
-  for (int i = 0; i < M; ++i)
+  if constexpr (recordedField()) {
+    std::array<double, M * M> seeds{}, derivatives;
+    std::array<double, N> values;
     for (int j = 0; j < M; ++j)
-      jac[i * M + j] = fa[i].derivatives()[j];
+      seeds[static_cast<std::size_t>(j * M + j)] = 1;
+    const auto& r = recorded();
+    runJetProgram(*r.program, r.constants.data(), 1, M, x, seeds.data(), M, values.data(), derivatives.data(),
+                  M);
+    for (int i = 0; i < M; ++i)
+      for (int j = 0; j < M; ++j)
+        jac[i * M + j] = derivatives[static_cast<std::size_t>(j * M + i)];
+  } else {
+    using D = Eigen::Matrix<double, M, 1>; // M derivatives, fixed size: no heap, unrolled
+    using AD = Eigen::AutoDiffScalar<D>;
+    Vec<AD> xa, fa;
+    for (int i = 0; i < N; ++i)
+      xa[i] = i < M ? AD(x[i], M, i) : AD(x[i], D::Zero());
+    self().field(xa, fa);
+    for (int i = 0; i < M; ++i)
+      for (int j = 0; j < M; ++j)
+        jac[i * M + j] = fa[i].derivatives()[j];
+  }
 }
 
 template <class Derived, int N, int M>
 void ModelWithField<Derived, N, M>::tangentRhs(const double* x, const double* V, int k, double* dx,
                                                double* dV) const {
-  if (!withFixedVectors(k, [&]<int K>() { directional<K>(x, V, dx, dV); }))
-    Model::tangentRhs(x, V, k, dx, dV);
+  if constexpr (recordedField()) {
+    const auto& r = recorded();
+    runJetProgram(*r.program, r.constants.data(), 1, k, x, V, M, dx, dV, M); // any k, in passes
+  } else {
+    if (!withFixedVectors(k, [&]<int K>() { directional<K>(x, V, dx, dV); }))
+      Model::tangentRhs(x, V, k, dx, dV);
+  }
 }
 
 template <class Derived, int N, int M>
 bool ModelWithField<Derived, N, M>::tangentRk4(double* x, double* V, int k, double h, long steps) const {
-  return !isMap() && withFixedVectors(k, [&]<int K>() { fusedRk4<K>(x, V, h, steps); });
+  if constexpr (recordedField()) {
+    if (isMap() || k < 1 || k > std::min(M, kMaxFixedVectors)) return false;
+    if (steps == 0) return true;
+    std::vector<double> y(static_cast<std::size_t>(N + M * k));
+    std::copy(x, x + N, y.begin());
+    std::copy(V, V + M * k, y.begin() + N);
+    const auto& r = recorded();
+    rk4JetProgram(*r.program, r.constants.data(), 1, k, M, y.data(), h, steps);
+    std::copy(y.begin(), y.begin() + N, x);
+    std::copy(y.begin() + N, y.end(), V);
+    return true;
+  } else {
+    return !isMap() && withFixedVectors(k, [&]<int K>() { fusedRk4<K>(x, V, h, steps); });
+  }
 }
 
 template <class Derived, int N, int M>
 std::unique_ptr<LaneKernel> ModelWithField<Derived, N, M>::laneKernel(const LaneModels& models) const {
   if constexpr (requires { Derived::kLaneField; }) {
-    if (isMap()) return nullptr;
-    if (models.size() == 4) return laneKernelOf<4>(models);
-    if (models.size() == 8) return laneKernelOf<8>(models);
-    return nullptr;
+    if (isMap() || (models.size() != 4 && models.size() != 8)) return nullptr;
+    if constexpr (recordedField())
+      return recordedLaneKernel(models);
+    else
+      return models.size() == 4 ? laneKernelOf<4>(models) : laneKernelOf<8>(models);
   } else {
     (void)models;
     return nullptr;

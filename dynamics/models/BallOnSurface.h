@@ -8,6 +8,7 @@
 // (dynamics/core/LaneField.h), so that the balls' fields run on lanes.
 // Reference: A. V. Borisov, I. S. Mamaev, Nonholonomic dynamical systems (2002); errata in design.md.
 #pragma once
+#include "dynamics/core/JetProgram.h"
 #include "dynamics/core/Lanes.h"
 #include "dynamics/core/Model.h"
 #include "dynamics/models/ThreeVector.h"
@@ -28,19 +29,13 @@ template <class S, class T, class Term>
 [[gnu::always_inline]] inline S vanishingWith(const T& coefficient, const Term& term) {
   if constexpr (std::is_arithmetic_v<T>) {
     return coefficient != 0.0 ? S(term()) : S(0.0);
+  } else if constexpr (std::is_same_v<T, jet_recording::Constant>) { // recorded (JetProgram.h)
+    return keptWhereNonzero(coefficient, term());
   } else { // S a Jet of lanes T
-    using V = typename T::V;
-    const auto kept = coefficient.v != V{}; // all ones where the coefficient is not 0
     bool any = false;
     for (int l = 0; l < T::kWidth; ++l)
-      any = any || kept[l] != 0;
-    if (!any) return S(0.0);
-    const auto only = [&](T& x) { x.v = kept ? x.v : V{}; };
-    S r = term();
-    only(r.v);
-    for (T& d : r.d)
-      only(d);
-    return r;
+      any = any || coefficient[l] != 0.0;
+    return any ? keptWhereNonzero(coefficient, term()) : S(0.0);
   }
 }
 
