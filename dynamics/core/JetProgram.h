@@ -17,6 +17,7 @@
 #include "dynamics/core/HeldScalar.h"
 
 #include <Eigen/Core>
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <type_traits>
@@ -167,26 +168,49 @@ private:
 /// The most directions one pass of the interpreter carries (more are taken in passes of this many).
 inline constexpr int kJetDirections = 6;
 
-/// Runs `program` at `width` states (1, 4 or 8), component-major (x[i * width + l]), with its constants
-/// bound for those lanes: dx = f(x) and, for k directions whose seeds are V[(c * seeded + i) * width + l]
-/// for the first `seeded` inputs (the others have none), dV[(c * differentiated + i) * width + l] = the
-/// derivative of output i < `differentiated` along direction c. Any k; more than kJetDirections take several
-/// passes (each giving the same values).
+/// A field compiled for one count of directions (ModelWithField compiles the counts the tools use most, the
+/// program runs the rest): runJetProgram's arguments, `context` what the compiled field reads (its model, or
+/// its lanes' coefficients). It must give the program's bits (JetProgramTest holds them to it).
+using CompiledJets = void (*)(const void* context, const double* x, const double* V, int seeded, double* dx,
+                              double* dV, int differentiated);
+
+/// A program with its constants bound for `width` lanes (1, 4 or 8), and the counts of directions compiled
+/// from the field itself, which run in its place.
+struct JetEvaluator {
+  const JetProgram* program = nullptr;
+  const double* constants = nullptr;
+  int width = 1;
+  std::array<CompiledJets, kJetDirections + 1> compiled{}; ///< by count of directions; null: the program
+  const void* context = nullptr;
+
+  /// At `width` states, component-major (x[i * width + l]): dx = f(x) and, for k directions whose seeds are
+  /// V[(c * seeded + i) * width + l] for the first `seeded` inputs (the others have none),
+  /// dV[(c * differentiated + i) * width + l] = the derivative of output i < `differentiated` along direction
+  /// c. Any k: more than kJetDirections take several passes (each giving the same values).
+  void run(int k, const double* x, const double* V, int seeded, double* dx, double* dV,
+           int differentiated) const;
+  /// `steps` classical RK4 steps of h on `width` orbits with k tangent vectors each (1 <= k <=
+  /// kJetDirections) in the first `core` components: y holds, component-major, each orbit's state and then
+  /// its vectors column after column (TangentSystem's layout). The steps are rk4StepOnArrays's (Rk4Scheme.h).
+  void rk4(int k, int core, double* y, double h, long steps) const;
+};
+
+/// JetEvaluator::run of the program alone.
 void runJetProgram(const JetProgram& program, const double* constants, int width, int k, const double* x,
                    const double* V, int seeded, double* dx, double* dV, int differentiated);
 
-/// `steps` classical RK4 steps of h on `width` orbits with k tangent vectors each (1 <= k <=
-/// kJetDirections) in the first `core` components: y holds, component-major, each orbit's state and then its
-/// vectors column after column (TangentSystem's layout). The steps are rk4StepOnArrays's (Rk4Scheme.h).
+/// JetEvaluator::rk4 of the program alone.
 void rk4JetProgram(const JetProgram& program, const double* constants, int width, int k, int core, double* y,
                    double h, long steps);
 
 class LaneKernel;
 /// The lane kernel (LaneField.h) of `width` models that share `program`, with the constants bound for their
-/// lanes (JetProgram::bindConstants): tangent vectors in the first `core` components, up to
-/// min(core, kJetDirections) of them.
-std::unique_ptr<LaneKernel> jetProgramLaneKernel(std::shared_ptr<const JetProgram> program,
-                                                 std::vector<double> constants, int width, int core);
+/// lanes (JetProgram::bindConstants) and the counts of directions compiled for them (reading `context`):
+/// tangent vectors in the first `core` components, up to min(core, kJetDirections) of them.
+std::unique_ptr<LaneKernel>
+jetProgramLaneKernel(std::shared_ptr<const JetProgram> program, std::vector<double> constants, int width,
+                     int core, const std::array<CompiledJets, kJetDirections + 1>& compiled = {},
+                     std::shared_ptr<const void> context = nullptr);
 
 namespace jet_recording {
 

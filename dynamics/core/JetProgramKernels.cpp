@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <memory>
 #include <stdexcept>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -164,52 +165,72 @@ template <class Body> void withDirections(int k, Body&& body) {
   (std::make_integer_sequence<int, kJetDirections + 1>{});
 }
 
-template <class T> void runAt(const JetProgram& program, int k, const Io& io) {
+template <class T> void interpret(const JetProgram& program, int k, const Io& io) {
   withDirections(k, [&]<int K>() { run<T, K>(program, io); });
 }
 
-template <class T>
-void rk4(const JetProgram& program, const double* constants, int k, int core, double* y, double h,
-         long steps) {
-  constexpr int W = widthOf<T>();
-  const int n = program.inputCount();
-  const long size = static_cast<long>(n + core * k) * W;
-  thread_local std::vector<double> stages;
-  stages.resize(static_cast<std::size_t>(7 * size)); // y0, f0, k2, k3, k4, tmp, y1
-  double *y0 = stages.data(), *f0 = y0 + size, *k2 = f0 + size, *k3 = k2 + size, *k4 = k3 + size,
-         *tmp = k4 + size, *y1 = tmp + size;
-  std::copy(y, y + size, y0);
-  withDirections(k, [&]<int K>() {
-    const auto field = [&](const double* in, double* out) {
-      run<T, K>(program, {constants, in, in + n * W, core, out, out + n * W, core});
-    };
-    for (long s = 0; s < steps; ++s) {
-      field(y0, f0);
-      // elementwise, so any chunk of lanes gives each element's bits: 4 at a time for one orbit too
-      rk4StepOnArrays<W == 1 ? 4 : W>(field, h, size, y0, f0, k2, k3, k4, tmp, y1);
-      std::swap(y0, y1);
-    }
-  });
-  std::copy(y0, y0 + size, y);
+// one pass of at most kJetDirections directions: compiled, or the program
+void pass(const JetEvaluator& e, int k, const Io& io) {
+  if (const CompiledJets compiled = e.compiled[static_cast<std::size_t>(k)])
+    return compiled(e.context, io.x, io.V, io.seeded, io.dx, io.dV, io.differentiated);
+  if (e.width == 1)
+    interpret<double>(*e.program, k, io);
+  else if (e.width == 4)
+    interpret<LaneVector<4>>(*e.program, k, io);
+  else if (e.width == 8)
+    interpret<LaneVector<8>>(*e.program, k, io);
+  else
+    throw std::logic_error("JetEvaluator: a width of " + std::to_string(e.width));
+}
+
+// the RK4 loop of rk4JetProgram, with the stages' arithmetic compiled for W's vector extension
+template <int W, class Field>
+[[gnu::always_inline]] inline void rk4Loop(const Field& field, long size, double* y0, double* f0, double* k2,
+                                           double* k3, double* k4, double* tmp, double* y1, double h,
+                                           long steps, double*& result) {
+  for (long s = 0; s < steps; ++s) {
+    field(y0, f0);
+    rk4StepOnArrays<W>(field, h, size, y0, f0, k2, k3, k4, tmp, y1);
+    std::swap(y0, y1);
+  }
+  result = y0;
+}
+template <class Field>
+[[gnu::target("avx2")]] void rk4LoopAvx2(const Field& field, long size, double* y0, double* f0, double* k2,
+                                         double* k3, double* k4, double* tmp, double* y1, double h,
+                                         long steps, double*& result) {
+  rk4Loop<4>(field, size, y0, f0, k2, k3, k4, tmp, y1, h, steps, result);
+}
+template <class Field>
+[[gnu::target("avx512f")]] void rk4LoopAvx512(const Field& field, long size, double* y0, double* f0,
+                                              double* k2, double* k3, double* k4, double* tmp, double* y1,
+                                              double h, long steps, double*& result) {
+  rk4Loop<8>(field, size, y0, f0, k2, k3, k4, tmp, y1, h, steps, result);
 }
 
 // a program's fields of W models bound together (LaneField.h)
 class JetProgramLaneKernel final : public LaneKernel {
 public:
   JetProgramLaneKernel(std::shared_ptr<const JetProgram> program, std::vector<double> constants, int width,
-                       int core)
-      : program_(std::move(program)), constants_(std::move(constants)), width_(width), core_(core) {}
-  int width() const override { return width_; }
+                       int core, const std::array<CompiledJets, kJetDirections + 1>& compiled,
+                       std::shared_ptr<const void> context)
+      : program_(std::move(program)), constants_(std::move(constants)), context_(std::move(context)),
+        core_(core) {
+    evaluator_ = {program_.get(), constants_.data(), width, compiled, context_.get()};
+  }
+  int width() const override { return evaluator_.width; }
+  bool compiledFor(int k) const override {
+    return k >= 0 && k <= kJetDirections && evaluator_.compiled[static_cast<std::size_t>(k)] != nullptr;
+  }
   bool tangentRhs(const double* x, int k, double* out) const override {
     if (k < 0 || k > maxVectors()) return false;
-    const int n = program_->inputCount();
-    runJetProgram(*program_, constants_.data(), width_, k, x, x + n * width_, core_, out, out + n * width_,
-                  core_);
+    const int n = program_->inputCount() * evaluator_.width;
+    evaluator_.run(k, x, x + n, core_, out, out + n, core_);
     return true;
   }
   bool tangentRk4(double* y, int k, double h, long steps) const override {
     if (k < 1 || k > maxVectors()) return false;
-    if (steps > 0) rk4JetProgram(*program_, constants_.data(), width_, k, core_, y, h, steps);
+    if (steps > 0) evaluator_.rk4(k, core_, y, h, steps);
     return true;
   }
 
@@ -217,48 +238,66 @@ private:
   int maxVectors() const { return std::min(core_, kJetDirections); }
   std::shared_ptr<const JetProgram> program_;
   std::vector<double> constants_;
-  int width_, core_;
+  std::shared_ptr<const void> context_;
+  int core_;
+  JetEvaluator evaluator_;
 };
 
 } // namespace
 
-void runJetProgram(const JetProgram& program, const double* constants, int width, int k, const double* x,
-                   const double* V, int seeded, double* dx, double* dV, int differentiated) {
-  if (k < 0) throw std::logic_error("runJetProgram: a negative count of directions");
+void JetEvaluator::run(int k, const double* x, const double* V, int seeded, double* dx, double* dV,
+                       int differentiated) const {
+  if (k < 0) throw std::logic_error("JetEvaluator: a negative count of directions");
   // more directions than one pass carries: passes of kJetDirections (each computes the same values)
   for (int first = 0;; first += kJetDirections) {
-    const int pass = std::min(k - first, kJetDirections);
-    const Io io{constants,     x,  V + static_cast<std::ptrdiff_t>(first) * seeded * width,
-                seeded,        dx, dV + static_cast<std::ptrdiff_t>(first) * differentiated * width,
-                differentiated};
-    if (width == 1)
-      runAt<double>(program, pass, io);
-    else if (width == 4)
-      runAt<LaneVector<4>>(program, pass, io);
-    else if (width == 8)
-      runAt<LaneVector<8>>(program, pass, io);
-    else
-      throw std::logic_error("runJetProgram: a width of " + std::to_string(width));
-    if (first + pass >= k) break;
+    const int count = std::min(k - first, kJetDirections);
+    pass(*this, count,
+         {constants, x, V + static_cast<std::ptrdiff_t>(first) * seeded * width, seeded, dx,
+          dV + static_cast<std::ptrdiff_t>(first) * differentiated * width, differentiated});
+    if (first + count >= k) break;
   }
+}
+
+void JetEvaluator::rk4(int k, int core, double* y, double h, long steps) const {
+  if (k < 1 || k > kJetDirections) throw std::logic_error("JetEvaluator::rk4: k out of 1..kJetDirections");
+  const int n = program->inputCount() * width;
+  const long size = static_cast<long>(program->inputCount() + core * k) * width;
+  thread_local std::vector<double> stages;
+  stages.resize(static_cast<std::size_t>(7 * size)); // y0, f0, k2, k3, k4, tmp, y1
+  double *y0 = stages.data(), *f0 = y0 + size, *k2 = f0 + size, *k3 = k2 + size, *k4 = k3 + size,
+         *tmp = k4 + size, *y1 = tmp + size, *result = y0;
+  std::copy(y, y + size, y0);
+  const auto field = [&](const double* in, double* out) {
+    pass(*this, k, {constants, in, in + n, core, out, out + n, core});
+  };
+  // elementwise, so any chunk of elements gives each element's bits: one orbit four at a time too
+  if (width == 8 && cpuHasAvx512())
+    rk4LoopAvx512(field, size, y0, f0, k2, k3, k4, tmp, y1, h, steps, result);
+  else if (width == 8)
+    rk4Loop<8>(field, size, y0, f0, k2, k3, k4, tmp, y1, h, steps, result);
+  else if (cpuHasAvx2())
+    rk4LoopAvx2(field, size, y0, f0, k2, k3, k4, tmp, y1, h, steps, result);
+  else
+    rk4Loop<4>(field, size, y0, f0, k2, k3, k4, tmp, y1, h, steps, result);
+  std::copy(result, result + size, y);
+}
+
+void runJetProgram(const JetProgram& program, const double* constants, int width, int k, const double* x,
+                   const double* V, int seeded, double* dx, double* dV, int differentiated) {
+  JetEvaluator{&program, constants, width}.run(k, x, V, seeded, dx, dV, differentiated);
 }
 
 void rk4JetProgram(const JetProgram& program, const double* constants, int width, int k, int core, double* y,
                    double h, long steps) {
-  if (k < 1 || k > kJetDirections) throw std::logic_error("rk4JetProgram: k out of 1..kJetDirections");
-  if (width == 1)
-    rk4<double>(program, constants, k, core, y, h, steps);
-  else if (width == 4)
-    rk4<LaneVector<4>>(program, constants, k, core, y, h, steps);
-  else if (width == 8)
-    rk4<LaneVector<8>>(program, constants, k, core, y, h, steps);
-  else
-    throw std::logic_error("rk4JetProgram: a width of " + std::to_string(width));
+  JetEvaluator{&program, constants, width}.rk4(k, core, y, h, steps);
 }
 
 std::unique_ptr<LaneKernel> jetProgramLaneKernel(std::shared_ptr<const JetProgram> program,
-                                                 std::vector<double> constants, int width, int core) {
-  return std::make_unique<JetProgramLaneKernel>(std::move(program), std::move(constants), width, core);
+                                                 std::vector<double> constants, int width, int core,
+                                                 const std::array<CompiledJets, kJetDirections + 1>& compiled,
+                                                 std::shared_ptr<const void> context) {
+  return std::make_unique<JetProgramLaneKernel>(std::move(program), std::move(constants), width, core,
+                                                compiled, std::move(context));
 }
 
 } // namespace rv

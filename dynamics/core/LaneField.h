@@ -42,6 +42,13 @@ public:
   /// for bit. False, changing nothing, where k is outside the fixed counts of tangentRk4; steps = 0 only
   /// asks.
   virtual bool tangentRk4(double* y, int k, double h, long steps) const = 0;
+  /// Whether k tangent vectors run code compiled for this CPU's vector extension: what the batched tools take
+  /// lanes for. Where not (a count a recorded field interprets, JetProgram.h), one orbit at a time is as fast
+  /// or faster, and the tools run them so; the kernel still computes it, bit for bit.
+  virtual bool compiledFor(int k) const {
+    (void)k;
+    return true;
+  }
 };
 
 class LaneField {

@@ -101,6 +101,7 @@ private:
   struct Recorded {
     std::shared_ptr<const JetProgram> program;
     std::vector<double> constants;
+    JetEvaluator orbit; // the program on one orbit, with the counts of directions compiled for it
   };
   // (the members of the recorded path are templates: the explicit instantiation of a class that compiles its
   // field instead does not instantiate them)
@@ -115,6 +116,9 @@ private:
         r->program = recordProgram<D>(this); // the parameters are numbers in it
         r->constants = r->program->bindConstants({nullptr});
       }
+      r->orbit = {r->program.get(), r->constants.data(), 1, {}, static_cast<const D*>(this)};
+      r->orbit.compiled[1] = &compiledOrbit<1, D>;
+      r->orbit.compiled[kCompiledVectors] = &compiledOrbit<kCompiledVectors, D>;
       recorded_ = std::move(r);
     });
     return *recorded_;
@@ -169,25 +173,118 @@ private:
   }
   template <class D = Derived>
   std::unique_ptr<LaneKernel> recordedLaneKernel(const LaneModels& models) const {
-    std::vector<const D*> lanes(models.size());
-    for (std::size_t l = 0; l < models.size(); ++l) { // another class, or different parameters not read as
-      lanes[l] = dynamic_cast<const D*>(models[l]);   // Coefficients: no kernel
+    return models.size() == 4 ? recordedLaneKernelOf<4, D>(models) : recordedLaneKernelOf<8, D>(models);
+  }
+  template <int W, class D> std::unique_ptr<LaneKernel> recordedLaneKernelOf(const LaneModels& models) const {
+    LaneSelves<W> lanes{};
+    for (int l = 0; l < W; ++l) { // another class, or different parameters not read as Coefficients: no
+      lanes[l] = dynamic_cast<const D*>(models[l]); // kernel
       if (!lanes[l]) return nullptr;
       if (!kCoefficients && lanes[l]->parameters().values() != parameters().values()) return nullptr;
+    }
+    // the field and one direction compiled for the CPU's vector extension; the rest from the program
+    std::array<CompiledJets, kJetDirections + 1> compiled{};
+    if (W == 8 ? cpuHasAvx512() : cpuHasAvx2()) {
+      compiled[0] = &compiledLanes<W, 0, D>;
+      compiled[1] = &compiledLanes<W, 1, D>;
     }
     if constexpr (kCoefficients) {
       std::vector<decltype(coefficientValues<D>(*lanes[0]))> values;
       std::vector<const double*> perLane;
-      values.reserve(lanes.size());
+      values.reserve(W);
       for (const D* lane : lanes)
         perLane.push_back(values.emplace_back(coefficientValues<D>(*lane)).data());
-      return jetProgramLaneKernel(classProgram<D>(), classProgram<D>()->bindConstants(perLane),
-                                  static_cast<int>(lanes.size()), M);
+      const auto gathered = laneCoefficients<W>(lanes);
+      return jetProgramLaneKernel(classProgram<D>(), classProgram<D>()->bindConstants(perLane), W, M,
+                                  compiled, std::make_shared<const decltype(gathered)>(gathered));
     } else {
-      const auto& r = recorded();
-      return jetProgramLaneKernel(r.program, r.program->bindConstants({lanes.size(), nullptr}),
-                                  static_cast<int>(lanes.size()), M);
+      const auto& r = recorded<D>();
+      return jetProgramLaneKernel(
+          r.program, r.program->bindConstants(std::vector<const double*>(W, nullptr)), W, M, compiled,
+          std::shared_ptr<const void>(static_cast<const void*>(lanes[0]), [](const void*) {}));
     }
+  }
+  // The counts of directions compiled from the field itself (the rest run the program, which gives the same
+  // bits): on one orbit 1 (MEGNO, the largest exponent) and kCompiledVectors (a full spectrum, Jacobians in
+  // passes); on lanes 0 (trajectories) and 1 (a sweep's largest exponents and MEGNO). Each costs a compile of
+  // the field; all of them the rolling bodies' 628 s (issue 64).
+  static constexpr int kCompiledVectors = std::min(M, kJetDirections);
+  // f and the derivatives along K directions of one orbit, the field compiled on Eigen's AutoDiff with K
+  // derivatives (Jet's rules are AutoDiff's, so the bits are the program's; AutoDiff's lazy expressions
+  // compute a sum of products' derivatives in one pass, half the time of Jet<double, K>'s temporaries at K =
+  // 6): runJetProgram's layout at width 1
+  template <int K, class D>
+  [[gnu::flatten]] static void compiledOrbit(const void* model, const double* x, const double* V, int seeded,
+                                             double* dx, double* dV, int differentiated) {
+    if constexpr (K == 1) { // one direction: Jet, a value and a derivative, compiles in a third of the time
+      using J = Jet<double, 1>;
+      Vec<J> xa, fa;
+      for (int i = 0; i < N; ++i)
+        xa[i] = J::with(x[i], [&](int) { return i < seeded ? V[i] : 0.0; });
+      static_cast<const D*>(model)->field(xa, fa);
+      for (int i = 0; i < N; ++i)
+        dx[i] = fa[i].v;
+      for (int i = 0; i < differentiated; ++i)
+        dV[i] = fa[i].d[0];
+    } else {
+      using Derivatives = Eigen::Matrix<double, K, 1>;
+      using AD = Eigen::AutoDiffScalar<Derivatives>;
+      Vec<AD> xa, fa;
+      for (int i = 0; i < N; ++i) {
+        Derivatives seed = Derivatives::Zero();
+        if (i < seeded)
+          for (int c = 0; c < K; ++c)
+            seed[c] = V[c * seeded + i];
+        xa[i] = AD(x[i], seed);
+      }
+      static_cast<const D*>(model)->field(xa, fa);
+      for (int i = 0; i < N; ++i)
+        dx[i] = fa[i].value();
+      for (int c = 0; c < K; ++c)
+        for (int i = 0; i < differentiated; ++i)
+          dV[c * differentiated + i] = fa[i].derivatives().size() ? fa[i].derivatives()[c] : 0.0;
+    }
+  }
+  // the same on W lanes, compiled for AVX2 (4 lanes) or AVX-512 (8); `context` the lanes' gathered
+  // Coefficients, or the model
+  template <int W, int K, class D>
+  [[gnu::always_inline]] static void lanesBody(const void* context, const double* x, const double* V,
+                                               int seeded, double* dx, double* dV, int differentiated) {
+    using L = LaneVector<W>;
+    using J = Jet<L, K>;
+    Vec<J> xa, fa;
+    for (int i = 0; i < N; ++i)
+      xa[i] = J::with(L::load(x + i * W),
+                      [&](int c) { return i < seeded ? L::load(V + (c * seeded + i) * W) : L(0.0); });
+    if constexpr (kCoefficients)
+      D::field(*static_cast<const decltype(laneCoefficients<W>(LaneSelves<W>{}))*>(context), xa, fa);
+    else
+      static_cast<const D*>(context)->field(xa, fa);
+    for (int i = 0; i < N; ++i)
+      fa[i].v.store(dx + i * W);
+    for (int c = 0; c < K; ++c)
+      for (int i = 0; i < differentiated; ++i)
+        fa[i].d[static_cast<std::size_t>(c)].store(dV + (c * differentiated + i) * W);
+  }
+  template <int W, int K, class D>
+  static void compiledLanes(const void* context, const double* x, const double* V, int seeded, double* dx,
+                            double* dV, int differentiated) {
+    if constexpr (W == 8)
+      lanesAvx512<K, D>(context, x, V, seeded, dx, dV, differentiated);
+    else
+      lanesAvx2<K, D>(context, x, V, seeded, dx, dV, differentiated);
+  }
+  template <int K, class D>
+  [[gnu::target("avx2"), gnu::flatten, gnu::noinline]] static void
+  lanesAvx2(const void* context, const double* x, const double* V, int seeded, double* dx, double* dV,
+            int differentiated) {
+    lanesBody<4, K, D>(context, x, V, seeded, dx, dV, differentiated);
+  }
+  template <int K, class D>
+  [[gnu::target("avx512f"), gnu::flatten, gnu::noinline]] static void
+  lanesAvx512(const void* context, const double* x, const double* V, int seeded, double* dx, double* dV,
+              int differentiated) {
+    lanesBody<8, K, D>(context, x, V, seeded, dx, dV, differentiated);
   }
   mutable std::once_flag recordedOnce_;
   mutable std::unique_ptr<const Recorded> recorded_;
@@ -410,9 +507,7 @@ void ModelWithField<Derived, N, M>::jacobian(const double* x, double* jac) const
     std::array<double, N> values;
     for (int j = 0; j < N; ++j)
       seeds[static_cast<std::size_t>(j * N + j)] = 1;
-    const auto& r = recorded();
-    runJetProgram(*r.program, r.constants.data(), 1, N, x, seeds.data(), N, values.data(), derivatives.data(),
-                  N);
+    recorded().orbit.run(N, x, seeds.data(), N, values.data(), derivatives.data(), N);
     for (int i = 0; i < N; ++i)
       for (int j = 0; j < N; ++j)
         jac[i * N + j] = derivatives[static_cast<std::size_t>(j * N + i)];
@@ -435,9 +530,7 @@ void ModelWithField<Derived, N, M>::coreJacobian(const double* x, double* jac) c
     std::array<double, N> values;
     for (int j = 0; j < M; ++j)
       seeds[static_cast<std::size_t>(j * M + j)] = 1;
-    const auto& r = recorded();
-    runJetProgram(*r.program, r.constants.data(), 1, M, x, seeds.data(), M, values.data(), derivatives.data(),
-                  M);
+    recorded().orbit.run(M, x, seeds.data(), M, values.data(), derivatives.data(), M);
     for (int i = 0; i < M; ++i)
       for (int j = 0; j < M; ++j)
         jac[i * M + j] = derivatives[static_cast<std::size_t>(j * M + i)];
@@ -458,8 +551,7 @@ template <class Derived, int N, int M>
 void ModelWithField<Derived, N, M>::tangentRhs(const double* x, const double* V, int k, double* dx,
                                                double* dV) const {
   if constexpr (recordedField()) {
-    const auto& r = recorded();
-    runJetProgram(*r.program, r.constants.data(), 1, k, x, V, M, dx, dV, M); // any k, in passes
+    recorded().orbit.run(k, x, V, M, dx, dV, M); // any k, in passes
   } else {
     if (!withFixedVectors(k, [&]<int K>() { directional<K>(x, V, dx, dV); }))
       Model::tangentRhs(x, V, k, dx, dV);
@@ -474,8 +566,7 @@ bool ModelWithField<Derived, N, M>::tangentRk4(double* x, double* V, int k, doub
     std::vector<double> y(static_cast<std::size_t>(N + M * k));
     std::copy(x, x + N, y.begin());
     std::copy(V, V + M * k, y.begin() + N);
-    const auto& r = recorded();
-    rk4JetProgram(*r.program, r.constants.data(), 1, k, M, y.data(), h, steps);
+    recorded().orbit.rk4(k, M, y.data(), h, steps);
     std::copy(y.begin(), y.begin() + N, x);
     std::copy(y.begin() + N, y.end(), V);
     return true;

@@ -33,7 +33,7 @@ std::optional<LaneRuns> lanePlan(const std::vector<const Model*>& models, const 
   if (k < 1 || k > model.info().coreDimension) return std::nullopt; // the scalar run says why
   LaneRuns r;
   r.kernel = laneKernelFor(models);
-  if (!r.kernel) return std::nullopt;
+  if (!r.kernel || !r.kernel->compiledFor(k)) return std::nullopt;
   std::vector<double> probe(1); // the kernel's fixed counts of vectors (the same for tangentRhs)
   if (!r.kernel->tangentRk4(probe.data(), k, 0, 0)) return std::nullopt;
   // rk4 fused with the tangent equations where the model has that path (as LyapunovRun decides), else a

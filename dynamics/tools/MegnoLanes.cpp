@@ -75,7 +75,7 @@ private:
 
 bool megnoRunsOnLanes(const std::vector<const Model*>& models, const IntegratorFactory& makeIntegrator) {
   const auto kernel = laneKernelFor(models);
-  return kernel && makeIntegrator()->stepLanesAlone(kernel->width());
+  return kernel && kernel->compiledFor(1) && makeIntegrator()->stepLanesAlone(kernel->width());
 }
 
 std::vector<MegnoLaneResult> megnoOnLanes(const std::vector<const Model*>& models,

@@ -27,7 +27,7 @@ bool trajectoriesRunOnLanes(const std::vector<const Model*>& models,
                             const IntegratorFactory& makeIntegrator) {
   if (models.empty() || models.front()->isMap()) return false;
   const auto kernel = laneKernelFor(models);
-  if (!kernel) return false;
+  if (!kernel || !kernel->compiledFor(0)) return false;
   const auto integrator = makeIntegrator();
   return integrator->stepLanesAlone(kernel->width()) && !integrator->lanesStepOnTheirOwn();
 }

@@ -206,13 +206,18 @@ TEST(LyapunovLanes, ParaboloidKernelsWithAModelPerLaneEqualEachModelAloneBitForB
 void expectExponentsAreTheScalarRuns(const std::vector<std::unique_ptr<Model>>& models,
                                      const IntegratorFactory& everhart,
                                      std::vector<Eigen::VectorXd> starts = {}) {
-  LyapunovSettings s; // every exponent, as the sweep's scene asks
-  s.maxTime = 6.5;    // a last interval of half the others
+  LyapunovSettings s;
+  s.maxTime = 6.5; // a last interval of half the others
   s.interval = 1;
   std::vector<Eigen::VectorXd> x0s = std::move(starts);
   for (int l = static_cast<int>(x0s.size()); l < 8; ++l)
     x0s.push_back(body_state::fromMomentumAndVertical(Eigen::Vector3d(0.01 * l, 0, -0.3),
                                                       Eigen::Vector3d(0, 0.02 + 0.01 * l, 1).normalized()));
+  // a rolling body's whole spectrum runs one orbit at a time (its lanes interpret six directions, slower than
+  // one orbit's compiled AutoDiff pass: LaneKernel::compiledFor); the largest exponent, what a sweep asks,
+  // runs on lanes
+  ASSERT_FALSE(lyapunovRunsOnLanes(pointers(models), everhart, s));
+  s.count = 1;
   ASSERT_TRUE(lyapunovRunsOnLanes(pointers(models), everhart, s));
   const auto lanes = lyapunovOnLanes(pointers(models), everhart, x0s, s);
   ASSERT_TRUE(lanes.has_value());
@@ -220,7 +225,7 @@ void expectExponentsAreTheScalarRuns(const std::vector<std::unique_ptr<Model>>& 
   for (std::size_t l = 0; l < 8; ++l) {
     ASSERT_FALSE((*lanes)[l].failure) << l;
     const LyapunovResult alone = lyapunovExponents(*models[l], everhart, x0s[l], s);
-    ASSERT_EQ(alone.last.exponents.size(), static_cast<std::size_t>(models[l]->info().coreDimension));
+    ASSERT_EQ(alone.last.exponents.size(), 1u);
     EXPECT_EQ((*lanes)[l].result.last.exponents, alone.last.exponents) << models[l]->info().id << " " << l;
     EXPECT_EQ((*lanes)[l].result.last.time, alone.last.time) << l;
   }
