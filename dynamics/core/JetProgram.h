@@ -177,11 +177,12 @@ using CompiledJets = void (*)(const void* context, const double* x, const double
 /// A program with its constants bound for `width` lanes (1, 4 or 8), and the counts of directions compiled
 /// from the field itself, which run in its place.
 struct JetEvaluator {
-  const JetProgram* program = nullptr;
+  const JetProgram* program = nullptr; ///< null where every count asked is compiled
   const double* constants = nullptr;
   int width = 1;
   std::array<CompiledJets, kJetDirections + 1> compiled{}; ///< by count of directions; null: the program
   const void* context = nullptr;
+  int dimension = 0; ///< the field's components, where there is no program
 
   /// At `width` states, component-major (x[i * width + l]): dx = f(x) and, for k directions whose seeds are
   /// V[(c * seeded + i) * width + l] for the first `seeded` inputs (the others have none),

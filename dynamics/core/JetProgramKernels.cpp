@@ -173,6 +173,8 @@ template <class T> void interpret(const JetProgram& program, int k, const Io& io
 void pass(const JetEvaluator& e, int k, const Io& io) {
   if (const CompiledJets compiled = e.compiled[static_cast<std::size_t>(k)])
     return compiled(e.context, io.x, io.V, io.seeded, io.dx, io.dV, io.differentiated);
+  if (!e.program)
+    throw std::logic_error("JetEvaluator: no program and no compiled form for " + std::to_string(k));
   if (e.width == 1)
     interpret<double>(*e.program, k, io);
   else if (e.width == 4)
@@ -260,8 +262,9 @@ void JetEvaluator::run(int k, const double* x, const double* V, int seeded, doub
 
 void JetEvaluator::rk4(int k, int core, double* y, double h, long steps) const {
   if (k < 1 || k > kJetDirections) throw std::logic_error("JetEvaluator::rk4: k out of 1..kJetDirections");
-  const int n = program->inputCount() * width;
-  const long size = static_cast<long>(program->inputCount() + core * k) * width;
+  const int inputs = program ? program->inputCount() : dimension;
+  const int n = inputs * width;
+  const long size = static_cast<long>(inputs + core * k) * width;
   thread_local std::vector<double> stages;
   stages.resize(static_cast<std::size_t>(7 * size)); // y0, f0, k2, k3, k4, tmp, y1
   double *y0 = stages.data(), *f0 = y0 + size, *k2 = f0 + size, *k3 = k2 + size, *k4 = k3 + size,

@@ -216,26 +216,29 @@ private:
   template <int K, class D>
   [[gnu::flatten]] static void compiledOrbit(const void* model, const double* x, const double* V, int seeded,
                                              double* dx, double* dV, int differentiated) {
-    if constexpr (K == 1) { // one direction: Jet, a value and a derivative, compiles in a third of the time
-      using J = Jet<double, 1>;
+    // one direction of a recorded field (no branch on a value): Jet, a value and a derivative, in a third of
+    // AutoDiff's compile time (for Lorenz, Jet<double, 3> ran at half AutoDiff's speed)
+    if constexpr (K == 1 && recordedField()) {
+      using J = Jet<double, K>;
       Vec<J> xa, fa;
       for (int i = 0; i < N; ++i)
-        xa[i] = J::with(x[i], [&](int) { return i < seeded ? V[i] : 0.0; });
+        xa[i] = J::with(x[i], [&](int c) { return i < seeded ? V[c * seeded + i] : 0.0; });
       static_cast<const D*>(model)->field(xa, fa);
       for (int i = 0; i < N; ++i)
         dx[i] = fa[i].v;
-      for (int i = 0; i < differentiated; ++i)
-        dV[i] = fa[i].d[0];
+      for (int c = 0; c < K; ++c)
+        for (int i = 0; i < differentiated; ++i)
+          dV[c * differentiated + i] = fa[i].d[static_cast<std::size_t>(c)];
     } else {
       using Derivatives = Eigen::Matrix<double, K, 1>;
       using AD = Eigen::AutoDiffScalar<Derivatives>;
       Vec<AD> xa, fa;
+      // written in place: a seed written element by element and then copied whole (two 8-byte stores read as
+      // one 16-byte load) missed store forwarding, half of Lorenz's spectrum time
       for (int i = 0; i < N; ++i) {
-        Derivatives seed = Derivatives::Zero();
-        if (i < seeded)
-          for (int c = 0; c < K; ++c)
-            seed[c] = V[c * seeded + i];
-        xa[i] = AD(x[i], seed);
+        xa[i].value() = x[i];
+        for (int c = 0; c < K; ++c)
+          xa[i].derivatives()[c] = i < seeded ? V[c * seeded + i] : 0.0;
       }
       static_cast<const D*>(model)->field(xa, fa);
       for (int i = 0; i < N; ++i)
@@ -327,7 +330,7 @@ private:
     }
   }
   // f and J V of W states with K tangent vectors, component-major in TangentSystem's layout: the lane form of
-  // directional<K> (a field declared always_inline is compiled into the kernel's vector code: LaneField.h)
+  // compiledOrbit<K> (a field declared always_inline is compiled into the kernel's vector code: LaneField.h)
   template <int W, int K, class C>
   EIGEN_ALWAYS_INLINE void laneDirectional(const C& coefficients, const double* in, double* out) const {
     using L = LaneVector<W>;
@@ -346,7 +349,7 @@ private:
       for (int i = 0; i < M; ++i)
         fa[i].d[c].store(out + (N + c * M + i) * W);
   }
-  // fusedRk4<K> on W orbits with the lanes' f and J V `rhs`: the same steps element by element
+  // JetEvaluator::rk4 on W orbits with the lanes' f and J V `rhs`: the same steps element by element
   // (rk4StepOnArrays)
   template <int W, int K, class Rhs>
   EIGEN_ALWAYS_INLINE static void laneRk4(const Rhs& rhs, double* y, double h, long steps) {
@@ -447,43 +450,16 @@ private:
     }
     (std::make_integer_sequence<int, std::min(M, kMaxFixedVectors)>{});
   }
-  template <int K> void fusedRk4(double* x, double* V, double h, long steps) const {
-    using Y = Eigen::Matrix<double, N + M * K, 1>;
-    using Tangents = Eigen::Matrix<double, M * K, 1>;
-    Y y, f0, k2, k3, k4, tmp, y1;
-    y.template head<N>() = Eigen::Map<const Vec<double>>(x);
-    y.template tail<M * K>() = Eigen::Map<const Tangents>(V);
-    const auto field = [this](const Y& in, Y& out) {
-      directional<K>(in.data(), in.data() + N, out.data(), out.data() + N);
-    };
-    for (long s = 0; s < steps; ++s) {
-      field(y, f0);
-      rk4Step(field, h, y, f0, k2, k3, k4, tmp, y1);
-      y = y1;
-    }
-    Eigen::Map<Vec<double>> xOut(x);
-    Eigen::Map<Tangents> vOut(V);
-    xOut = y.template head<N>();
-    vOut = y.template tail<M * K>();
-  }
-  template <int K>
-  EIGEN_ALWAYS_INLINE void directional(const double* x, const double* V, double* dx, double* dV) const {
-    using D = Eigen::Matrix<double, K, 1>;
-    using AD = Eigen::AutoDiffScalar<D>;
-    Vec<AD> xa, fa;
-    for (int i = 0; i < N; ++i) {
-      D seed = D::Zero();
-      if (i < M)
-        for (int c = 0; c < K; ++c)
-          seed[c] = V[c * M + i];
-      xa[i] = AD(x[i], seed);
-    }
-    self().field(xa, fa);
-    for (int i = 0; i < N; ++i)
-      dx[i] = fa[i].value();
-    for (int i = 0; i < M; ++i)
-      for (int c = 0; c < K; ++c)
-        dV[c * M + i] = fa[i].derivatives().size() ? fa[i].derivatives()[c] : 0.0;
+  // `steps` RK4 steps of one orbit and its k vectors with `orbit`'s passes (JetEvaluator::rk4, whose stages
+  // are rk4StepOnArrays's: each lane of a lane kernel steps as this)
+  static void stepOrbit(const JetEvaluator& orbit, double* x, double* V, int k, double h, long steps) {
+    if (steps == 0) return;
+    std::vector<double> y(static_cast<std::size_t>(N + M * k));
+    std::copy(x, x + N, y.begin());
+    std::copy(V, V + M * k, y.begin() + N);
+    orbit.rk4(k, M, y.data(), h, steps);
+    std::copy(y.begin(), y.begin() + N, x);
+    std::copy(y.begin() + N, y.end(), V);
   }
 };
 
@@ -553,7 +529,7 @@ void ModelWithField<Derived, N, M>::tangentRhs(const double* x, const double* V,
   if constexpr (recordedField()) {
     recorded().orbit.run(k, x, V, M, dx, dV, M); // any k, in passes
   } else {
-    if (!withFixedVectors(k, [&]<int K>() { directional<K>(x, V, dx, dV); }))
+    if (!withFixedVectors(k, [&]<int K>() { compiledOrbit<K, Derived>(this, x, V, M, dx, dV, M); }))
       Model::tangentRhs(x, V, k, dx, dV);
   }
 }
@@ -562,16 +538,19 @@ template <class Derived, int N, int M>
 bool ModelWithField<Derived, N, M>::tangentRk4(double* x, double* V, int k, double h, long steps) const {
   if constexpr (recordedField()) {
     if (isMap() || k < 1 || k > std::min(M, kMaxFixedVectors)) return false;
-    if (steps == 0) return true;
-    std::vector<double> y(static_cast<std::size_t>(N + M * k));
-    std::copy(x, x + N, y.begin());
-    std::copy(V, V + M * k, y.begin() + N);
-    recorded().orbit.rk4(k, M, y.data(), h, steps);
-    std::copy(y.begin(), y.begin() + N, x);
-    std::copy(y.begin() + N, y.end(), V);
+    stepOrbit(recorded().orbit, x, V, k, h, steps);
     return true;
   } else {
-    return !isMap() && withFixedVectors(k, [&]<int K>() { fusedRk4<K>(x, V, h, steps); });
+    if (isMap() || k < 1 || k > std::min(M, kMaxFixedVectors)) return false;
+    JetEvaluator orbit{nullptr, nullptr, 1, {}, static_cast<const Derived*>(this), N};
+    withFixedVectors(std::min(M, kMaxFixedVectors), [&]<int Kmax>() {
+      [&]<int... K>(std::integer_sequence<int, K...>) {
+        ((orbit.compiled[K + 1] = &compiledOrbit<K + 1, Derived>), ...);
+      }
+      (std::make_integer_sequence<int, Kmax>{});
+    });
+    stepOrbit(orbit, x, V, k, h, steps);
+    return true;
   }
 }
 
