@@ -5,6 +5,7 @@
 #include "dynamics/core/LaneField.h"
 #include "dynamics/core/Model.h"
 #include "dynamics/core/TaylorTape.h"
+#include "dynamics/core/ValueOf.h"
 #include "dynamics/integrators/Rk4Scheme.h"
 
 #include <algorithm>
@@ -19,13 +20,6 @@
 
 namespace rv {
 
-/// The plain value of a scalar that may carry derivatives (for branch decisions such as wrapping an angle).
-inline double valueOf(double v) {
-  return v;
-}
-template <class D> double valueOf(const Eigen::AutoDiffScalar<D>& v) {
-  return v.value();
-}
 
 /// Derived must provide `template <class S> void field(const Vec<S>& x, Vec<S>& dx) const`. M is the core
 /// dimension (the leading components that evolve on their own); it must equal info().coreDimension. A Derived
