@@ -1,4 +1,5 @@
-// Cli.h -- the `rollviz` command line (design.md "Command line"): list, describe, integrate, render, video.
+// Cli.h -- the `rollviz` command line (design.md "Command line"): the commands are registered in Cli.cpp and
+// the tools' own in the tool registry (`rollviz --help` lists them all).
 // Exit status: 0 done, 1 a computation that did not succeed, 2 bad input; 130 after Ctrl-C (work kept).
 #pragma once
 #include <functional>

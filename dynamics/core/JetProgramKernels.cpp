@@ -5,7 +5,7 @@
 #include "dynamics/core/JetProgram.h"
 #include "dynamics/core/LaneField.h"
 #include "dynamics/core/Lanes.h"
-#include "dynamics/integrators/Rk4Scheme.h"
+#include "dynamics/core/Rk4Scheme.h"
 
 #include <algorithm>
 #include <memory>
@@ -160,7 +160,7 @@ template <class T, int K> void run(const JetProgram& program, const Io& io) {
 // body.template operator()<K>() for K = k in 0..kJetDirections
 template <class Body> void withDirections(int k, Body&& body) {
   [&]<int... I>(std::integer_sequence<int, I...>) {
-    ((I == k ? (body.template operator()<I>(), true) : false) || ...);
+    (void)((I == k ? (body.template operator()<I>(), true) : false) || ...);
   }
   (std::make_integer_sequence<int, kJetDirections + 1>{});
 }

@@ -10,7 +10,9 @@
 // type T only) with `coefficients()` and a static `field(coefficients, x, dx)`; the lanes then read one
 // coefficient per lane (dynamics/models/Lorenz.h). A model without it runs lanes of equal parameters only.
 // Declare such a field [[gnu::always_inline]]: the kernel then compiles it whole for AVX2 (GCC leaves a large
-// function out of line, compiled for baseline x86-64).
+// function out of line, compiled for baseline x86-64). A large field (more than
+// ModelWithField::kInlinedFieldDimension components: the rolling bodies) is compiled for 0 and 1 tangent
+// direction only and runs its recorded JetProgram for the other counts (compiledFor says which are compiled).
 #pragma once
 #include "dynamics/core/Lanes.h"
 

@@ -4,9 +4,9 @@
 #include "dynamics/core/JetProgram.h"
 #include "dynamics/core/LaneField.h"
 #include "dynamics/core/Model.h"
+#include "dynamics/core/Rk4Scheme.h"
 #include "dynamics/core/TaylorTape.h"
 #include "dynamics/core/ValueOf.h"
-#include "dynamics/integrators/Rk4Scheme.h"
 
 #include <algorithm>
 #include <array>
@@ -20,19 +20,20 @@
 
 namespace rv {
 
-
 /// Derived must provide `template <class S> void field(const Vec<S>& x, Vec<S>& dx) const`. M is the core
 /// dimension (the leading components that evolve on their own); it must equal info().coreDimension. A Derived
 /// whose field has no branch on a value may declare `static constexpr bool kLaneField = true`: then its field
 /// also runs on 4 or 8 states at once (LaneField.h).
 ///
-/// A lane field of more than kInlinedFieldDimension components (the rolling bodies) is recorded once as a
-/// JetProgram: its Jacobians, tangent vectors, fused RK4 and lane kernels run that program (one interpreter,
-/// compiled once), the field itself is compiled for double (rhs) and the Taylor tape only. A smaller one
-/// (Lorenz, Henon-Heiles) is compiled whole into each of them, inlined: cheap to build, and the fastest.
+/// A lane field of more than kInlinedFieldDimension components (the rolling bodies) is compiled only for the
+/// counts of tangent directions the tools use most (one orbit: 1 and min(M, 6); lanes: 0 and 1, for AVX2 and
+/// AVX-512) and recorded once as a JetProgram that runs every other count (one interpreter, compiled once,
+/// giving the same bits): compiling the field for every lane width, count and instruction set had cost the
+/// five rolling bodies 628 s of a cold build. A smaller field (Lorenz, Henon-Heiles) is compiled for all of
+/// them, inlined: cheap to build, and the fastest.
 ///
-/// Every virtual member is instantiated wherever the class is constructed: the lane kernels (4 and 8 lanes,
-/// up to kMaxFixedVectors tangent vectors, three instruction sets) make that costly. A model constructed in
+/// Every virtual member is instantiated wherever the class is constructed: the compiled kernels make that
+/// costly. A model constructed in
 /// more than one file declares `extern template class ModelWithField<Derived, N, M>;` after its class and
 /// defines it in its own .cpp (`template class ...;`), so that they are compiled once: the registry's one
 /// list of models (BuiltinModels.cpp) had compiled every model's kernels again, 6 min at -O2 and 9 min under
@@ -53,12 +54,13 @@ public:
   /// Derivatives with respect to the core components only: cheaper when the kinematics add many components.
   void coreJacobian(const double* x, double* jac) const final;
 
-  /// One pass of forward AutoDiff seeded with the tangent vectors (derivative vectors of fixed size for up to
-  /// kMaxFixedVectors; more go through the Jacobian): the values are f, the derivatives J V.
+  /// One pass of forward differentiation seeded with the tangent vectors: the values are f, the derivatives
+  /// J V (compiled counts, or the recorded program; a small field beyond kMaxFixedVectors goes through the
+  /// Jacobian, a recorded one in passes).
   void tangentRhs(const double* x, const double* V, int k, double* dx, double* dV) const final;
 
-  /// RK4 on (x, V) with the state, the stages and the AutoDiff pass all of fixed size and inlined: what a
-  /// hand-written variational system compiles to (Boost.Odeint's chaotic_system example), from the one field.
+  /// RK4 on (x, V) in one loop (JetEvaluator::rk4: the stages' arithmetic in AVX2 registers around one
+  /// compiled differentiation pass per stage), for 1 <= k <= min(M, kMaxFixedVectors).
   bool tangentRk4(double* x, double* V, int k, double h, long steps) const final;
 
   /// The lane kernel of 4 or 8 models of this class: their fields at once, in one AVX2 (4 lanes) or AVX-512
@@ -444,6 +446,18 @@ private:
     }
     (std::make_integer_sequence<int, std::min(M, kMaxFixedVectors)>{});
   }
+  // jac[i * size + j] = d f_i / d x_j for i, j < size (N: the Jacobian; M: the core one), by the orbit's
+  // evaluator along the unit vectors, in passes of directions
+  template <int size> void recordedJacobian(const double* x, double* jac) const {
+    std::array<double, size * size> seeds{}, derivatives;
+    std::array<double, N> values;
+    for (int j = 0; j < size; ++j)
+      seeds[static_cast<std::size_t>(j) * size + static_cast<std::size_t>(j)] = 1;
+    recorded().orbit.run(size, x, seeds.data(), size, values.data(), derivatives.data(), size);
+    for (int i = 0; i < size; ++i)
+      for (int j = 0; j < size; ++j)
+        jac[i * size + j] = derivatives[static_cast<std::size_t>(j) * size + static_cast<std::size_t>(i)];
+  }
   // `steps` RK4 steps of one orbit and its k vectors with `orbit`'s passes (JetEvaluator::rk4, whose stages
   // are rk4StepOnArrays's: each lane of a lane kernel steps as this)
   static void stepOrbit(const JetEvaluator& orbit, double* x, double* V, int k, double h, long steps) {
@@ -473,14 +487,7 @@ void ModelWithField<Derived, N, M>::rhs(const double* x, double* dx) const {
 template <class Derived, int N, int M>
 void ModelWithField<Derived, N, M>::jacobian(const double* x, double* jac) const {
   if constexpr (recordedField()) {
-    std::array<double, N * N> seeds{}, derivatives;
-    std::array<double, N> values;
-    for (int j = 0; j < N; ++j)
-      seeds[static_cast<std::size_t>(j * N + j)] = 1;
-    recorded().orbit.run(N, x, seeds.data(), N, values.data(), derivatives.data(), N);
-    for (int i = 0; i < N; ++i)
-      for (int j = 0; j < N; ++j)
-        jac[i * N + j] = derivatives[static_cast<std::size_t>(j * N + i)];
+    recordedJacobian<N>(x, jac);
   } else {
     using AD = Eigen::AutoDiffScalar<Eigen::Matrix<double, N, 1>>;
     Vec<AD> xa, fa;
@@ -496,14 +503,7 @@ void ModelWithField<Derived, N, M>::jacobian(const double* x, double* jac) const
 template <class Derived, int N, int M>
 void ModelWithField<Derived, N, M>::coreJacobian(const double* x, double* jac) const {
   if constexpr (recordedField()) {
-    std::array<double, M * M> seeds{}, derivatives;
-    std::array<double, N> values;
-    for (int j = 0; j < M; ++j)
-      seeds[static_cast<std::size_t>(j * M + j)] = 1;
-    recorded().orbit.run(M, x, seeds.data(), M, values.data(), derivatives.data(), M);
-    for (int i = 0; i < M; ++i)
-      for (int j = 0; j < M; ++j)
-        jac[i * M + j] = derivatives[static_cast<std::size_t>(j * M + i)];
+    recordedJacobian<M>(x, jac);
   } else {
     using D = Eigen::Matrix<double, M, 1>; // M derivatives, fixed size: no heap, unrolled
     using AD = Eigen::AutoDiffScalar<D>;

@@ -7,7 +7,7 @@
 //   power   := postfix ('^' unary)?               right-associative: a^b^c = a^(b^c); -x^2 = -(x^2)
 //   postfix := primary ('[' expr (',' expr)? ']')*  components, 1-based: v[1], A[2,3]
 //   primary := NUMBER | NAME | NAME '(' args ')' | '(' expr ')' | '[' expr (',' expr)* ']'
-// Nothing here knows what a name means: ExpressionLowering.h resolves names and types.
+// Nothing here knows what a name means: Lowering.h resolves names and types.
 #pragma once
 #include "dynamics/core/Errors.h"
 

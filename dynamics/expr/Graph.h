@@ -2,7 +2,7 @@
 // (hash-consing) and constants folded, and the flat programs cut from it that evaluate chosen outputs on any
 // scalar type -- double, the recording scalar of the Taylor integrator -- and the exact forward-mode
 // derivatives along given directions (the Jacobian, tangent vectors) in one pass.
-// Every vector and matrix operation of the language is already scalar here (ExpressionLowering.h), so one
+// Every vector and matrix operation of the language is already scalar here (Lowering.h), so one
 // graph serves the interpreter, the derivatives and the generated C++ (ModelCode.h) alike.
 // Reference for the forward mode: A. Griewank, A. Walther, Evaluating Derivatives (2008), ch. 3.
 #pragma once

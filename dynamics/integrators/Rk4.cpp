@@ -1,7 +1,7 @@
 #include "dynamics/integrators/Rk4.h"
 
 #include "dynamics/core/Lanes.h"
-#include "dynamics/integrators/Rk4Scheme.h"
+#include "dynamics/core/Rk4Scheme.h"
 
 namespace rv {
 

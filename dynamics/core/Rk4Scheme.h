@@ -1,8 +1,8 @@
 // Rk4Scheme.h -- the classical fourth-order Runge-Kutta step as one template, shared by the Rk4 integrator
-// and the fused tangent steps of models with a templated field (ModelWithField::tangentRk4), so that the
-// method is written once; and the same step on arrays of doubles four at a time (Lanes.h), for large systems
-// and orbits stacked on lanes. Reference: E. Hairer, S. P. Norsett, G. Wanner, Solving Ordinary Differential
-// Equations I, §II.1.
+// and the fused tangent steps of the templated fields (ModelWithField::tangentRk4, JetEvaluator::rk4) -- in
+// core, below both, so that the method is written once; and the same step on arrays of doubles W at a time
+// (Lanes.h), for large systems and orbits stacked on lanes. Reference: E. Hairer, S. P. Norsett, G. Wanner,
+// Solving Ordinary Differential Equations I, §II.1.
 #pragma once
 #include "dynamics/core/Lanes.h"
 
