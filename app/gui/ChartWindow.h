@@ -1,7 +1,7 @@
-// ChartWindow.h -- a filter window (manual §2.4): any chart view of the scene (the list is scenes/SceneCharts'),
-// computed as a Job of the job tree (scenes/ChartTask) -- listed in the tool manager, where it
-// is stopped, continued, edited and restarted like every tool -- and drawn when the job ends. The GUI thread
-// never computes; closing the window deletes the job.
+// ChartWindow.h -- a filter window (manual §2.4): any chart view of the scene (the list is
+// scenes/SceneCharts'), computed as a Job of the job tree (scenes/ChartTask) -- listed in the tool manager,
+// where it is stopped, continued, edited and restarted like every tool -- and drawn when the job ends. The
+// GUI thread never computes; closing the window deletes the job.
 #pragma once
 #include "app/gui/FilterWindow.h"
 #include "dynamics/jobs/JobTree.h"

@@ -22,6 +22,7 @@
 #include <memory>
 #include <type_traits>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace rv {
@@ -167,6 +168,15 @@ private:
 
 /// The most directions one pass of the interpreter carries (more are taken in passes of this many).
 inline constexpr int kJetDirections = 6;
+
+/// body.template operator()<K>() for the K in [First, Last] equal to k; false where k is outside (the counts
+/// of directions a compiled kernel has, chosen at run time).
+template <int First, int Last, class Body> bool withCount(int k, Body&& body) {
+  return [&]<int... I>(std::integer_sequence<int, I...>) {
+    return ((First + I == k ? (body.template operator()<First + I>(), true) : false) || ...);
+  }
+  (std::make_integer_sequence<int, Last - First + 1>{});
+}
 
 /// A field compiled for one count of directions (ModelWithField compiles the counts the tools use most, the
 /// program runs the rest): runJetProgram's arguments, `context` what the compiled field reads (its model, or

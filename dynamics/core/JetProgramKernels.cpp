@@ -157,16 +157,8 @@ template <class T, int K> void run(const JetProgram& program, const Io& io) {
   runBaseline<T, K>(program, io);
 }
 
-// body.template operator()<K>() for K = k in 0..kJetDirections
-template <class Body> void withDirections(int k, Body&& body) {
-  [&]<int... I>(std::integer_sequence<int, I...>) {
-    (void)((I == k ? (body.template operator()<I>(), true) : false) || ...);
-  }
-  (std::make_integer_sequence<int, kJetDirections + 1>{});
-}
-
 template <class T> void interpret(const JetProgram& program, int k, const Io& io) {
-  withDirections(k, [&]<int K>() { run<T, K>(program, io); });
+  withCount<0, kJetDirections>(k, [&]<int K>() { run<T, K>(program, io); });
 }
 
 // one pass of at most kJetDirections directions: compiled, or the program

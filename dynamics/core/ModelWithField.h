@@ -441,10 +441,16 @@ private:
   };
   // calls body.template operator()<k>() when 1 <= k <= min(M, kMaxFixedVectors); false otherwise
   template <class Body> static bool withFixedVectors(int k, Body&& body) {
-    return [&]<int... I>(std::integer_sequence<int, I...>) {
-      return ((I + 1 == k ? (body.template operator()<I + 1>(), true) : false) || ...);
+    return withCount<1, std::min(M, kMaxFixedVectors)>(k, std::forward<Body>(body));
+  }
+  // every count of a small field compiled on one orbit (compiledOrbit), for its fused RK4
+  static constexpr std::array<CompiledJets, kJetDirections + 1> orbitCompiled() {
+    std::array<CompiledJets, kJetDirections + 1> compiled{};
+    [&]<int... K>(std::integer_sequence<int, K...>) {
+      ((compiled[K + 1] = &compiledOrbit<K + 1, Derived>), ...);
     }
     (std::make_integer_sequence<int, std::min(M, kMaxFixedVectors)>{});
+    return compiled;
   }
   // jac[i * size + j] = d f_i / d x_j for i, j < size (N: the Jacobian; M: the core one), by the orbit's
   // evaluator along the unit vectors, in passes of directions
@@ -536,14 +542,8 @@ bool ModelWithField<Derived, N, M>::tangentRk4(double* x, double* V, int k, doub
     return true;
   } else {
     if (isMap() || k < 1 || k > std::min(M, kMaxFixedVectors)) return false;
-    JetEvaluator orbit{nullptr, nullptr, 1, {}, static_cast<const Derived*>(this), N};
-    withFixedVectors(std::min(M, kMaxFixedVectors), [&]<int Kmax>() {
-      [&]<int... K>(std::integer_sequence<int, K...>) {
-        ((orbit.compiled[K + 1] = &compiledOrbit<K + 1, Derived>), ...);
-      }
-      (std::make_integer_sequence<int, Kmax>{});
-    });
-    stepOrbit(orbit, x, V, k, h, steps);
+    stepOrbit({nullptr, nullptr, 1, orbitCompiled(), static_cast<const Derived*>(this), N}, x, V, k, h,
+              steps);
     return true;
   }
 }

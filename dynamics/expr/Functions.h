@@ -4,8 +4,8 @@
 // file (ModelCode.h). The piecewise ones (abs, sign, min, max) branch on the plain value (valueOf): a Taylor
 // tape that records them is marked as branching.
 #pragma once
-#include "dynamics/core/ValueOf.h"
 #include "dynamics/core/TaylorTape.h"
+#include "dynamics/core/ValueOf.h"
 
 #include <cmath>
 #include <type_traits>
