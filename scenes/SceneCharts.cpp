@@ -1,4 +1,5 @@
 #include "scenes/SceneCharts.h"
+#include "scenes/ScenePage.h"
 
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/Format.h"
@@ -91,28 +92,20 @@ std::unique_ptr<Chart> sceneChart(const Scene& scene, const std::string& view, c
 }
 
 std::unique_ptr<PoincareChart> sessionMapChart(const Session& s) {
-  const Scene scene = sceneFromJson(s.scene, s.scenePath.empty() ? "session" : s.scenePath);
-  const auto names = PoincareMap(*scene.model, scene.startIntegrator(), scene.poincare).coordinateNames();
-  auto chart = std::make_unique<PoincareChart>(names.at(0), names.size() > 1 ? names[1] : "t");
-  for (const auto& t : s.trajectories) {
-    // the range the window showed (Set range): points first..last, 1-based
-    const auto n = static_cast<long>(t.x.size());
-    const long from = std::min(n, t.first - 1), to = t.last > 0 ? std::min(n, t.last) : n;
-    const std::vector<double> x(t.x.begin() + from, t.x.begin() + std::max(from, to));
-    const std::vector<double> y(t.y.begin() + from, t.y.begin() + std::max(from, to));
-    chart->addSeries(x, y, t.colour);
-  }
-  for (const auto& t : s.tools) {
-    if (t.found.empty()) { // a family, a separatrix branch, a tree: their points
-      chart->addSeries(t.x, t.y, t.colour);
-      continue;
+  const PageMap map = sessionPageMap(s); // one definition of what a session's map draws
+  auto chart = std::make_unique<PoincareChart>(map.xName, map.yName);
+  for (const auto& series : map.series)
+    switch (series.kind) {
+    case PageMapSeries::Kind::Points:
+      chart->addSeries(series.x, series.y, series.colour);
+      break;
+    case PageMapSeries::Kind::Curve:
+      chart->addCurve(series.x, series.y, series.colour, 1.5);
+      break;
+    case PageMapSeries::Kind::Markers:
+      chart->addMarkers(series.x, series.y, series.colour);
+      break;
     }
-    // a search found its point: the path it took, its steps, and a cross where it ended (as the window drew
-    // it)
-    chart->addCurve(t.x, t.y, t.colour, 1.5);
-    chart->addSeries(t.x, t.y, t.colour);
-    chart->addMarkers({t.found[0]}, {t.found[1]}, t.colour);
-  }
   return chart;
 }
 

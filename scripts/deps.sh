@@ -7,11 +7,13 @@ BUILD_PKGS=(cmake g++ pkg-config ninja-build ccache
   libavcodec-dev libavformat-dev libswscale-dev libavutil-dev
   libegl-dev libgl1-mesa-dri libosmesa6-dev
   nlohmann-json3-dev libcli11-dev libfmt-dev libfftw3-dev
-  libopenmpi-dev openmpi-bin pybind11-dev python3-dev)
+  libopenmpi-dev openmpi-bin pybind11-dev python3-dev
+  libjs-three)
 TEST_PKGS=(libgtest-dev libgmock-dev libbenchmark-dev libboost-dev
   xvfb xauth xdotool x11-apps ffmpeg python3 python3-numpy python3-pil python3-pytest python3-vtk9 python3-matplotlib
   clang-14 libfuzzer-14-dev clang-tidy poppler-utils librsvg2-bin
-  python3-sphinx python3-myst-parser python3-pandas python3-xarray python3-nbclient python3-ipykernel mypy)
+  python3-sphinx python3-myst-parser python3-pandas python3-xarray python3-nbclient python3-ipykernel mypy
+  chromium chromium-driver python3-selenium)
 want=("${BUILD_PKGS[@]}")
 [ "${1:-build}" = test ] && want+=("${TEST_PKGS[@]}")
 missing=()

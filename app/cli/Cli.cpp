@@ -105,8 +105,9 @@ int runCli(int argc, char** argv, const GuiLauncher& gui) {
                  "repeatable. Also loaded: those in ROLLVIZ_MODULE_PATH and ~/.local/lib/rollviz/modules")
       ->type_name("FILE");
   std::vector<Command> commands{
-      addListCommand(app),   addDescribeCommand(app), addDescribeToolCommand(app), addIntegrateCommand(app),
-      addRenderCommand(app), addVideoCommand(app),    addChartCommand(app),        addInfoCommand(app)};
+      addListCommand(app),      addDescribeCommand(app), addDescribeToolCommand(app),
+      addIntegrateCommand(app), addRenderCommand(app),   addVideoCommand(app),
+      addPageCommand(app),      addChartCommand(app),    addInfoCommand(app)};
   // every tool that runs on a scene, derived from its registry entry and runner (a module's too)
   for (const auto& tool : ToolRegistry::global().entries())
     if (!tool.command.empty() && findToolRunner(tool.id))

@@ -49,6 +49,7 @@ inline constexpr const char* kEglUnavailableVariable = "ROLLVIZ_EGL_UNAVAILABLE"
 Command addIntegrateCommand(CLI::App& app);
 Command addRenderCommand(CLI::App& app);
 Command addVideoCommand(CLI::App& app);
+Command addPageCommand(CLI::App& app);
 Command addChartCommand(CLI::App& app);
 
 /// `rollviz sweep`: a tool over a grid of scenes (scenes/Sweep.h), named and described by the registry's

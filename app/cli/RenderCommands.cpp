@@ -1,4 +1,5 @@
-// RenderCommands.cpp -- `rollviz render` (PNG) and `rollviz video` (MP4), headless on the linked backend.
+// RenderCommands.cpp -- `rollviz render` (PNG), `rollviz chart` (figures), `rollviz video` (MP4), headless on
+// the linked backend, and `rollviz page` (a self-contained web page; no GL needed).
 #include "app/cli/Commands.h"
 #include "app/cli/Progress.h"
 #include "dynamics/core/Errors.h"
@@ -12,6 +13,7 @@
 #include "render/export/VtkXmlFiles.h"
 #include "render/video/VideoExport.h"
 #include "scenes/SceneCharts.h"
+#include "scenes/ScenePage.h"
 #include "scenes/Session.h"
 
 #include <cmath>
@@ -38,6 +40,12 @@ struct ChartOptions {
 struct VideoOptions {
   SceneArgs scene;
   std::string output, size, encoder = "libx264";
+  double duration = 0, speed = 0;
+  int fps = 0;
+};
+struct PageOptions {
+  SceneArgs scene;
+  std::string output;
   double duration = 0, speed = 0;
   int fps = 0;
 };
@@ -189,6 +197,41 @@ Command addVideoCommand(CLI::App& app) {
             });
             ctx->window()->RemoveRenderer(visual.renderer());
             return interrupted() && frames < std::lround(spec.duration * spec.fps) ? 130 : 0;
+          }};
+}
+
+Command addPageCommand(CLI::App& app) {
+  auto* cmd = app.add_subcommand(
+      "page",
+      "write a scene's motion (a session's: with its Poincare map) as one self-contained web page that "
+      "plays, turns and scrubs in any browser, offline");
+  auto o = std::make_shared<PageOptions>();
+  addSceneArgs(cmd, o->scene);
+  cmd->add_option("-o,--output", o->output, "HTML file")->check(writesOneOf({".html", ".htm"}))->required();
+  auto* duration = cmd->add_option("--duration", o->duration,
+                                   "seconds of playback at 1x (default: the scene's video.duration)");
+  auto* fps =
+      cmd->add_option("--fps", o->fps, "poses per second of playback (default: the scene's video.fps)");
+  auto* speed =
+      cmd->add_option("--speed", o->speed, "simulation seconds per second of playback (default: view.speed)");
+  return {cmd, [o, duration, fps, speed] {
+            PageOverrides given;
+            if (duration->count()) given.duration = o->duration;
+            if (fps->count()) given.fps = o->fps;
+            if (speed->count()) given.speed = o->speed;
+            const auto session = readSessionIfAny(o->scene.scene);
+            if (session && !o->scene.sets.empty())
+              throw InputError(
+                  "--set: a session's page shows its map as it was saved (give the scene instead)");
+            const Scene scene = o->scene.load();
+            checkWritable(o->output, "-o");
+            Progress progress("page");
+            const long frames =
+                writeScenePage(scene, session ? &*session : nullptr, o->output, given, [&](long k, long n) {
+                  progress.update(static_cast<double>(k) / n);
+                  return !interrupted();
+                });
+            return frames == 0 ? 130 : 0;
           }};
 }
 
