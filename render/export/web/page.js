@@ -319,7 +319,8 @@
       const g = v.object.userData.line.geometry;
       return Array.from(g.attributes.position.array.subarray(0, 3 * g.drawRange.count));
     },
-    renderedFrames: () => renderer.info ? renderer.info.render.frame : 0,
+    // a session's map: the ranges shown [x0, x1, y0, y1]
+    mapRange: () => (map ? map.range() : null),
   };
 
   // ---------------------------------------------------------------------------------------------------------
@@ -514,7 +515,8 @@
       }
     if (!(lo[0] < hi[0])) (lo[0] -= 1), (hi[0] += 1);
     if (!(lo[1] < hi[1])) (lo[1] -= 1), (hi[1] += 1);
-    const whole = [lo[0], hi[0], lo[1], hi[1]];
+    const margin = [0.04 * (hi[0] - lo[0]), 0.04 * (hi[1] - lo[1])];
+    const whole = [lo[0] - margin[0], hi[0] + margin[0], lo[1] - margin[1], hi[1] + margin[1]];
     let range = whole.slice();
     const pad = { l: 58, r: 12, t: 12, b: 40 };
     const ratio = () => window.devicePixelRatio || 1;
