@@ -75,6 +75,16 @@ ax.imshow(frame)
 ax.axis("off")
 fig.savefig(os.path.join(out, "frame.png"), dpi=100)
 
+# %% [markdown]
+# ## The motion to turn around
+# The same motion as an interactive 3D view: in Jupyter it plays inline (offline: the viewer is inside the
+# page); `ball.page("motion.html")` writes it as a web page to send.
+
+# %%
+view = ball.show(duration=4)
+ball.page(os.path.join(out, "motion.html"), duration=4)
+
+# %%
 with open(os.path.join(out, "summary.json"), "w") as f:
     json.dump({"map_points": points, "energies": energies.tolist(), "largest_lyapunov": largest,
                "frame_shape": list(frame.shape)}, f)

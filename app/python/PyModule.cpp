@@ -20,6 +20,8 @@
 #include "scenes/ModelFile.h"
 #include "scenes/ModuleLoader.h"
 #include "scenes/SceneCharts.h"
+#include "scenes/ScenePage.h"
+#include "scenes/Session.h"
 
 #include <cmath>
 #include <filesystem>
@@ -227,6 +229,23 @@ long video(const Scene& shared, const std::string& path, const pyb::object& dura
   return frames;
 }
 
+/// The page of `scene` (with `session`'s map); the overrides as `rollviz page` takes them.
+long page(const Scene& scene, const Session* session, const std::string& path, const pyb::object& duration,
+          const pyb::object& fps, const pyb::object& speed, const pyb::object& progress) {
+  PageOverrides given{.durationName = "duration", .fpsName = "fps", .speedName = "speed"};
+  if (!duration.is_none()) given.duration = duration.cast<double>();
+  if (!fps.is_none()) given.fps = fps.cast<int>();
+  if (!speed.is_none()) given.speed = speed.cast<double>();
+  long frames = 0;
+  runJob(progress, [&](const ToolControl& control) {
+    frames = writeScenePage(scene, session, path, given, [&](long k, long n) {
+      control.progress(static_cast<double>(k) / n);
+      return !control.stopRequested();
+    });
+  });
+  return frames;
+}
+
 pyb::array_t<unsigned char> chart(const Scene& shared, const std::string& view, const pyb::handle& size,
                                   long points, const std::string& diagram, const pyb::object& path,
                                   const std::string& style, int scale, const pyb::object& progress) {
@@ -379,6 +398,17 @@ PYBIND11_MODULE(_rollviz, m) {
         return out;
       },
       "The integrators: a list of {id, title, parameters}.");
+  m.def(
+      "_session_page",
+      [](const std::string& file, const std::string& path, const pyb::object& duration,
+         const pyb::object& fps, const pyb::object& speed, const pyb::object& progress) {
+        const Session session = readSession(file);
+        const Scene scene = loadScene(file);
+        return page(scene, &session, path, duration, fps, speed, progress);
+      },
+      pyb::arg("file"), pyb::arg("path"), pyb::arg("duration") = pyb::none(), pyb::arg("fps") = pyb::none(),
+      pyb::arg("speed") = pyb::none(), pyb::kw_only(), pyb::arg("progress") = pyb::none(),
+      "The page of a saved session (rollviz page SESSION): its scene's motion beside its map.");
   m.def("scenes_directory", &scenesDirectory, "The folder of the shipped scene files.");
 
   pyb::class_<PyModel>(
@@ -512,6 +542,18 @@ PYBIND11_MODULE(_rollviz, m) {
            "Records the 3D view into an MP4 (rollviz video); duration, fps and size default to the scene's "
            "video "
            "section (with its crf and preset), speed 0 to its view.speed. Returns frames.")
+      .def(
+          "page",
+          [](const Scene& shared, const std::string& path, const pyb::object& duration,
+             const pyb::object& fps, const pyb::object& speed, const pyb::object& progress) {
+            // a copy: another Python thread may set() the scene while this runs without the GIL
+            const Scene scene = shared; // NOLINT(performance-unnecessary-copy-initialization)
+            return page(scene, nullptr, path, duration, fps, speed, progress);
+          },
+          pyb::arg("path"), pyb::arg("duration") = pyb::none(), pyb::arg("fps") = pyb::none(),
+          pyb::arg("speed") = pyb::none(), pyb::kw_only(), pyb::arg("progress") = pyb::none(),
+          "Writes the motion as one self-contained web page (rollviz page): duration and fps default to the "
+          "scene's video section, speed to its view.speed. Returns the frames (0: stopped, nothing written).")
       .def("chart", &chart, pyb::arg("view") = "poincare", pyb::arg("size") = pyb::none(),
            pyb::arg("points") = 0, pyb::arg("diagram") = "", pyb::kw_only(), pyb::arg("path") = pyb::none(),
            pyb::arg("style") = "screen", pyb::arg("scale") = 1, pyb::arg("progress") = pyb::none(),

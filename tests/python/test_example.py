@@ -32,6 +32,8 @@ def test_the_study_runs_headless(tmp_path):
     p = subprocess.run([sys.executable, os.path.join(SOURCE, "examples", "chaplygin_study.py"), out],
                        capture_output=True, text=True, env=env, timeout=300)
     assert p.returncode == 0, p.stderr
+    with open(os.path.join(out, "motion.html"), encoding="utf-8") as f:
+        assert 'id="rollviz-data"' in f.read()
     for name in ("poincare.png", "lyapunov.png", "frame.png"):
         img = np.asarray(Image.open(os.path.join(out, name)).convert("RGB"), dtype=float)
         assert img.std() > 5, f"{name} is blank"
@@ -59,6 +61,11 @@ def test_the_notebook_runs_in_a_jupyter_kernel(tmp_path, monkeypatch):
     images = [o for c in nb.cells if c.cell_type == "code" for o in c.get("outputs", [])
               if "image/png" in o.get("data", {})]
     assert len(images) >= 3, "the map, the exponents and the frame are shown inline"
+    # the motion's interactive view: the page itself, inline, with its data and viewer
+    pages = [o["data"]["text/html"] for c in nb.cells if c.cell_type == "code" for o in c.get("outputs", [])
+             if "text/html" in o.get("data", {}) and "<iframe srcdoc=" in o["data"]["text/html"]]
+    assert len(pages) == 1, "the motion is shown inline once"
+    assert "rollviz-data" in pages[0] and "THREE" in pages[0]
     errors = [o for c in nb.cells if c.cell_type == "code" for o in c.get("outputs", []) if o.output_type == "error"]
     assert not errors, errors
     summary = json.load(open(tmp_path / "study_output" / "summary.json"))

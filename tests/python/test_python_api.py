@@ -238,7 +238,10 @@ def test_the_type_stub_checks_a_study_with_mypy(tmp_path):
         "r = s.lyapunov(time=100, count=1, mode='tangent')\n"
         "t: np.ndarray = s.integrate(1.0, 0.5, ['t', 'E']).t\n"
         "p = s.poincare(points=10)['t']\n"
-        "g = rollviz.sweep(s, axes={'energy': np.linspace(0.08, 0.12, 3)}, quantity='megno')\n")
+        "g = rollviz.sweep(s, axes={'energy': np.linspace(0.08, 0.12, 3)}, quantity='megno')\n"
+        "n: int = s.page('m.html', duration=2.0)\n"
+        "v = rollviz.Session.load('s.json').show()\n"
+        "html: str = v.html if v is not None else ''\n")
     bad = tmp_path / "bad.py"
     bad.write_text("import rollviz\n"
                    "s = rollviz.Scene.load('scenes/henon_heiles.json')\n"
@@ -360,3 +363,49 @@ def test_a_failed_points_status_is_whole():
     long = [x for x in r.status if len(x) > 130]
     assert long, r.status
     assert long[0].startswith("failed: ") and long[0].endswith("(the point lies outside the region of allowed motion))")
+
+
+def test_a_motion_as_a_web_page_and_jupyters_rich_display(tmp_path):
+    """Scene.page / show, Session.page, and what Jupyter displays (issue 63)."""
+    import json
+    s = rollviz.Scene.load(scene_path("ellipsoid_on_plane.json"))
+    path = tmp_path / "m.html"
+    frames = s.page(path, duration=1, fps=10)
+    assert frames == 11
+    text = path.read_text(encoding="utf-8")
+    data = json.loads(re.search(r'id="rollviz-data">(.*?)</script>', text, re.S).group(1))
+    assert data["frames"] == 11 and data["fps"] == 10 and data["variables"] == list(s.state_names)
+    with pytest.raises(ValueError, match=r"\.html"):
+        s.page(tmp_path / "m.png")
+    with pytest.raises(ValueError, match="duration"):
+        s.page(tmp_path / "n.html", duration=-1)
+    assert not (tmp_path / "n.html").exists()
+    # outside IPython, show() returns the view; Jupyter shows it as the page in an iframe
+    view = s.show(duration=1, fps=5)
+    assert isinstance(view, rollviz.PageView) and 'id="rollviz-data"' in view.html
+    assert view._repr_html_().startswith("<iframe srcdoc=") and "&lt;script" in view._repr_html_()
+    assert s._repr_html_().startswith("<iframe srcdoc=")
+    assert s._repr_png_()[:8] == b"\x89PNG\r\n\x1a\n"
+    # a trajectory plays its own time span; its table shows as HTML
+    r = s.integrate(time=2, every=0.5, columns=["t", "E"])
+    assert "<table>" in r._repr_html_() and "<th>E</th>" in r._repr_html_()
+    shown = r.show(duration=1)
+    played = json.loads(re.search(r'id="rollviz-data">(.*?)</script>', shown.html, re.S).group(1))
+    assert played["speed"] == pytest.approx(2.0)
+    # a session: its scene's motion beside its map
+    ring = [(0.2 + 0.05 * np.cos(k / 10), 0.05 * np.sin(k / 10)) for k in range(63)]
+    with open(scene_path("henon_heiles.json")) as f:
+        hh = json.load(f)
+    session = {"rollviz_session": 1, "scene": hh, "scene_path": "", "results": "", "tools": [],
+               "trajectories": [{"start": [0, 0.1, 0.1, 0.3], "parameters": {}, "integrator": {},
+                                 "colour": [1, 0, 0], "x": [p[0] for p in ring], "y": [p[1] for p in ring],
+                                 "z": [], "state": [], "running": False, "first": 1, "last": 0, "origin": ""}]}
+    (tmp_path / "s.json").write_text(json.dumps(session))
+    se = rollviz.Session.load(tmp_path / "s.json")
+    assert se.scene.problem == "henon_heiles"
+    se.page(tmp_path / "s.html", duration=1)
+    page = (tmp_path / "s.html").read_text(encoding="utf-8")
+    m = json.loads(re.search(r'id="rollviz-data">(.*?)</script>', page, re.S).group(1))["map"]
+    assert [m["x"], m["y"]] == ["y", "py"] and len(m["series"]) == 1
+    with pytest.raises(ValueError, match="henon_heiles.json: not a rollviz session"):
+        rollviz.Session.load(scene_path("henon_heiles.json"))

@@ -28,6 +28,7 @@ JSON), so multiprocessing, joblib and Dask can take them.
 
 import copy as _copy
 import difflib as _difflib
+import html as _html
 import inspect as _inspect
 import json as _json
 import math as _math
@@ -42,9 +43,11 @@ import numpy as _np
 from ._rollviz import ComputationError, Model, Scene, __version__, describe, integrators, modules, problems
 from ._rollviz import scenes_directory
 from ._rollviz import _tools
+from ._rollviz import _session_page
 from ._rollviz import sweep as _sweep_file
 
-__all__ = ["ComputationError", "Model", "Result", "Scene", "SweepResult", "Table", "Trajectory", "__version__",
+__all__ = ["ComputationError", "Model", "PageView", "Result", "Scene", "Session", "SweepResult", "Table",
+           "Trajectory", "__version__",
            "describe", "integrators", "modules", "problems", "scenes_directory", "sweep", "tools"]
 
 
@@ -150,6 +153,16 @@ class Table:
     def __repr__(self):
         return f"<rollviz.{type(self).__name__}: {len(self)} rows of {', '.join(self._columns)}>"
 
+    def _repr_html_(self):
+        """Jupyter's view: an HTML table of the first and last rows."""
+        rows = list(range(len(self))) if len(self) <= 12 else list(range(5)) + [None] + list(range(len(self) - 5, len(self)))
+        head = "".join(f"<th>{_html.escape(c)}</th>" for c in self._columns)
+        body = "".join(
+            "<tr>" + "".join("<td>&#8942;</td>" for _ in self._columns) + "</tr>" if k is None else
+            "<tr>" + "".join(f"<td>{v:.10g}</td>" for v in self._data[k]) + "</tr>" for k in rows)
+        return (f"<table><caption>rollviz.{type(self).__name__}: {len(self)} rows</caption>"
+                f"<thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>")
+
     def to_pandas(self):
         """The columns as a pandas DataFrame."""
         pandas = _optional("pandas", "to_pandas()")
@@ -174,6 +187,17 @@ class Trajectory(Table):
         self.final_named = None if final is None else dict(zip(state_names, (float(v) for v in final)))
         self._resume = self._scene = self._every = None  # where integrate(after=this) goes on from
         self._next = 0
+        self._source = None  # the Scene it ran in: show() plays it
+
+    def show(self, duration=10.0, *, height=600):
+        """Plays the trajectory's motion in its scene as an interactive 3D view (Scene.show): its time span in
+        `duration` seconds. In Jupyter it is shown inline; elsewhere the PageView is returned."""
+        if self._source is None or not len(self.t):
+            raise ValueError("show(): this trajectory carries no scene (integrate() results do)")
+        span = float(_np.max(_np.abs(self.t)))
+        if not span > 0:
+            raise ValueError("show(): the trajectory spans no time")
+        return self._source.show(duration=duration, speed=span / duration, height=height)
 
     def to_xarray(self):
         """The columns as an xarray Dataset over the coordinate t."""
@@ -300,6 +324,7 @@ _cpp_parameters = Scene.parameters
 _cpp_render = Scene.render
 _cpp_snapshot = Scene.snapshot
 _cpp_video = Scene.video
+_cpp_page = Scene.page
 
 
 def _set(self, **settings):
@@ -400,6 +425,7 @@ def _integrate(self, time=None, every=None, columns=None, *, t_eval=None, events
     if not times and after is not None:
         r.final, r.final_named = after.final, after.final_named
     r._scene, r._every, r._next = document, every, first + len(times)
+    r._source = scene
     if events is not None:
         r.events = _events(scene, events, times[-1] if times else 0.0, names, progress)
     return r
@@ -428,6 +454,18 @@ def _sampled(scene, times, names, resume, progress):
     r = Trajectory(names, _np.ascontiguousarray(X[:, :len(names)]), _np.asarray(times), final, scene.state_names)
     r._resume = snapshot
     return r
+
+
+def _png_bytes(pixels):
+    """An H x W x 3 uint8 array as PNG bytes (PIL where present)."""
+    import io
+    try:
+        from PIL import Image as image
+    except ImportError:
+        raise ImportError("a picture's PNG needs PIL (Debian: apt install python3-pil)") from None
+    out = io.BytesIO()
+    image.fromarray(_np.ascontiguousarray(pixels)).save(out, format="PNG")
+    return out.getvalue()
 
 
 def _picture_size(call, size):
@@ -469,12 +507,115 @@ def _video(self, path, duration=None, fps=None, size=None, speed=0.0, encoder="l
     return _cpp_video(scene, path, duration, fps, size, speed, encoder, progress=progress)
 
 
+class PageView:
+    """An interactive 3D view of a motion (the page rollviz page writes, in an iframe): Jupyter shows it inline and
+    it plays offline (the viewer is inside it). .html is the page, save(path) writes it."""
+
+    def __init__(self, html, height=600):
+        self.html = html
+        self.height = height
+
+    def _repr_html_(self):
+        return (f'<iframe srcdoc="{_html.escape(self.html, quote=True)}" style="width: 100%; '
+                f'height: {int(self.height)}px; border: 0" sandbox="allow-scripts"></iframe>')
+
+    def save(self, path):
+        """Writes the page (a self-contained .html file)."""
+        with open(_os.fspath(path), "w", encoding="utf-8") as f:
+            f.write(self.html)
+
+    def __repr__(self):
+        return f"<rollviz.PageView: a page of {len(self.html)} characters>"
+
+
+def _page_text(write):
+    """The page `write(path)` writes, read back."""
+    with _tempfile.TemporaryDirectory() as d:
+        path = _os.path.join(d, "page.html")
+        write(path)
+        with open(path, encoding="utf-8") as f:
+            return f.read()
+
+
+def _shown(view):
+    """In a Jupyter (IPython) session the view is displayed and nothing returned; elsewhere the view."""
+    try:
+        from IPython import get_ipython
+        from IPython.display import display
+    except ImportError:
+        return view
+    if get_ipython() is None:
+        return view
+    display(view)
+    return None
+
+
+def _checked_page_path(call, path):
+    path = _os.fspath(path)
+    if not path.lower().endswith((".html", ".htm")):
+        raise ValueError(f"{call}: {path}: a web page is written as .html; "
+                         f"'{_os.path.splitext(path)[1] or path}' is not supported")
+    return path
+
+
+def _page(self, path, duration=None, fps=None, speed=None, *, progress=None, **settings):
+    """Writes the motion as one self-contained web page that plays, turns and scrubs in any browser, offline
+    (rollviz page): duration (seconds at 1x) and fps default to the scene's video section, speed (simulation
+    seconds per second) to its view.speed. Other keywords as for set(). Returns the number of frames."""
+    path = _checked_page_path("page()", path)
+    scene = _set_for("page()", self, settings) if settings else self
+    return _cpp_page(scene, path, duration, fps, speed, progress=progress)
+
+
+def _show(self, duration=None, fps=None, speed=None, *, height=600, **settings):
+    """The motion as an interactive 3D view (the page of page()): in Jupyter shown inline, working offline;
+    elsewhere a PageView is returned (.html, .save(path))."""
+    return _shown(PageView(_page_text(lambda p: _page(self, p, duration, fps, speed, **settings)), height))
+
+
+class Session:
+    """A GUI session (File > Save session): its scene, and its Poincare map, which its page shows beside the
+    motion. Session(path) or Session.load(path)."""
+
+    def __init__(self, path):
+        self.path = _os.fspath(path)
+        self.scene = Scene.load(self.path)  # ValueError naming the file and field for what cannot be read
+        with open(self.path, encoding="utf-8") as f:
+            if "rollviz_session" not in _json.load(f):
+                raise ValueError(f"{self.path}: not a rollviz session (a scene: Scene.load reads it)")
+
+    @classmethod
+    def load(cls, path):
+        """Reads a session file (ValueError when it is not one)."""
+        return cls(path)
+
+    def page(self, path, duration=None, fps=None, speed=None, *, progress=None):
+        """Writes the session as one self-contained web page: its scene's motion beside its map (rollviz page
+        SESSION). Returns the number of frames."""
+        return _session_page(self.path, _checked_page_path("page()", path), duration, fps, speed, progress=progress)
+
+    def show(self, duration=None, fps=None, speed=None, *, height=700):
+        """The session's page inline in Jupyter (elsewhere a PageView is returned)."""
+        return _shown(PageView(_page_text(lambda p: self.page(p, duration, fps, speed)), height))
+
+    def _repr_html_(self):
+        return PageView(_page_text(lambda p: self.page(p)), 700)._repr_html_()
+
+    def __repr__(self):
+        return f"<rollviz.Session {self.path}: {self.scene.problem}>"
+
+
 Scene.set = _set
 Scene.with_state = _with_state
 Scene.integrate = _integrate
 Scene.render = _render
 Scene.snapshot = _snapshot
 Scene.video = _video
+Scene.page = _page
+Scene.show = _show
+# Jupyter's rich display: the interactive view, or the 3D view as a picture where HTML is not shown
+Scene._repr_html_ = lambda self: PageView(_page_text(lambda p: _page(self, p)))._repr_html_()
+Scene._repr_png_ = lambda self: _png_bytes(self.render())
 Scene.parameters = property(lambda self: _types.MappingProxyType(_cpp_parameters.fget(self)),
                             doc="The model parameters' values (read-only: set() returns a scene with others).")
 Scene.__copy__ = lambda self: self.copy()
