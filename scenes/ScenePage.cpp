@@ -77,4 +77,23 @@ long writeScenePage(const Scene& scene, const Session* session, const std::strin
   return writeWebPage(visual, *integrator, spec, progress);
 }
 
+PageTask::PageTask(nlohmann::json document, std::string source, std::optional<Session> session,
+                   std::string path)
+    : document_(std::move(document)), source_(std::move(source)), session_(std::move(session)),
+      path_(std::move(path)) {}
+
+std::string PageTask::describe() const {
+  return "the motion" + std::string(session_ ? " and the map" : "") + " as a web page: " + path_;
+}
+
+bool PageTask::run(const ToolControl& control) {
+  const Scene scene = sceneFromJson(document_, source_);
+  const long frames = writeScenePage(scene, session_ ? &*session_ : nullptr, path_, {}, [&](long k, long n) {
+    control.progress(static_cast<double>(k) / static_cast<double>(n));
+    return !control.stopRequested();
+  });
+  if (frames > 0) control.progress(1);
+  return frames > 0;
+}
+
 } // namespace rv

@@ -78,6 +78,9 @@ public:
   /// to go on from), the Results log and the window's layout, in one JSON file (scenes/Session.h) written
   /// whole; false (the reason in Results and `why`) when it cannot.
   bool saveSessionTo(const QString& path, QString* why = nullptr);
+  /// File > Export web page: the scene's motion (its map beside it) as a self-contained page, written by a
+  /// job of the tool manager (scenes/ScenePage.h PageTask). Returns the job's id (-1: no scene).
+  int exportPageTo(const QString& path);
   /// Opens a session file: its scene, its trajectories in place of the map's (those that ran go on, bit for
   /// bit), its Results log and layout. On failure shows why and keeps what is open.
   bool openSession(const QString& path);
@@ -242,6 +245,9 @@ private:
   /// Opens the chart and sweep windows a session lists (gui.windows).
   void reopenWindows(const nlohmann::json& gui);
   void saveSessionDialog();
+  void exportPageDialog();
+  /// The scene with the control panel's edits, the map's trajectories and tool outputs, the Results log.
+  Session currentSession() const;
   void openSessionDialog();
   /// Puts a session's scene and trajectories in place (no question; with `remember`, what was open becomes an
   /// Undo step). Throws InputError, changing nothing, for a scene that cannot be run.

@@ -141,6 +141,10 @@ void MainWindow::buildMenus() {
       ->setToolTip("a tool's number over a grid of parameters or initial points; click a cell to open it");
   file->addAction("Snapshot…\tCtrl+S", this, &MainWindow::snapshot) // the key is the toolbar action's
       ->setToolTip("the 3D view as a PNG (Ctrl+S; also on the toolbar)");
+  file->addAction("Export web page…", this, &MainWindow::exportPageDialog)
+      ->setToolTip(
+          "the motion (and the map) as one self-contained web page: it plays, turns and scrubs in any "
+          "browser, offline (rollviz page)");
   file->addAction("Export map…", this,
                   [this] {
                     if (scene_)

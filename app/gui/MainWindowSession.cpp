@@ -9,6 +9,7 @@
 #include "dynamics/io/AtomicFile.h"
 #include "scenes/ModelFile.h"
 #include "scenes/SceneLoader.h"
+#include "scenes/ScenePage.h"
 
 #include <QAction>
 #include <QDir>
@@ -19,6 +20,7 @@
 #include <QPlainTextEdit>
 #include <QSaveFile>
 #include <QSettings>
+#include <QTimer>
 #include <fstream>
 
 namespace rv {
@@ -111,8 +113,7 @@ void MainWindow::useSession(const Session& session, const QString& file, bool re
   }
 }
 
-bool MainWindow::saveSessionTo(const QString& path, QString* why) {
-  if (!scene_) return false;
+Session MainWindow::currentSession() const {
   Session session;
   session.scene = documentWithEdits();
   session.scenePath = scenePath_.toStdString();
@@ -120,6 +121,12 @@ bool MainWindow::saveSessionTo(const QString& path, QString* why) {
   session.trajectories = map_->saveTrajectories({}, false, true); // running ones go on
   session.tools = map_->saveToolOutputs({});
   session.results = results().toStdString();
+  return session;
+}
+
+bool MainWindow::saveSessionTo(const QString& path, QString* why) {
+  if (!scene_) return false;
+  Session session = currentSession();
   session.gui = {{"layout", saveState().toBase64().toStdString()}};
   // the chart and sweep windows open, to be opened again (a chart computes again with its document; a
   // sweep goes on from its store)
@@ -141,6 +148,37 @@ bool MainWindow::saveSessionTo(const QString& path, QString* why) {
   report(QString("saved the session (%1 trajectories) to %2").arg(session.trajectories.size()).arg(path),
          5000);
   return true;
+}
+
+int MainWindow::exportPageTo(const QString& path) {
+  if (!scene_) return -1;
+  Session session = currentSession(); // the motion of the scene shown, its map beside it
+  nlohmann::json document = session.scene;
+  Job& job = map_->jobs().add(std::make_unique<PageTask>(std::move(document), scene_->source,
+                                                         std::move(session), path.toStdString()));
+  job.start();
+  report("writing the web page " + path + " (tool manager: its progress, Stop)", 5000);
+  // its outcome in the Results dock once it ends (the job may be removed from the tool manager before)
+  auto* watch = new QTimer(this);
+  const int id = job.id();
+  connect(watch, &QTimer::timeout, this, [this, watch, id, path] {
+    const Job* j = map_->jobs().find(id);
+    if (j && j->running()) return;
+    watch->deleteLater();
+    if (!j) return;
+    if (j->status() == Job::Status::Finished)
+      report("wrote the web page " + path + ": it plays, turns and scrubs in any browser, offline", 8000);
+    else if (j->status() == Job::Status::Failed)
+      report("Cannot write the web page: " + QString::fromStdString(j->error()), 0);
+  });
+  watch->start(200);
+  return id;
+}
+
+void MainWindow::exportPageDialog() {
+  const QString path =
+      askWhereToWrite("Export web page", QStandardPaths::DocumentsLocation, "html", "Web page (*.html)");
+  if (!path.isEmpty()) exportPageTo(path);
 }
 
 bool MainWindow::openSession(const QString& path) {

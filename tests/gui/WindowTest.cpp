@@ -1572,6 +1572,35 @@ private slots:
     QVERIFY(map->trajectoryPoints(map->sceneJobs().back()) == first);
   }
 
+  // Issue 63: File > Export web page writes the motion and the map as a self-contained page, off the GUI
+  // thread (a job of the tool manager), and says so in the Results dock.
+  void theMotionAndTheMapExportAsAWebPage() {
+    nlohmann::json doc = loadScene(defaultScenePath("henon_heiles")).document;
+    doc["poincare"]["points"] = 100;
+    doc["video"] = {{"duration", 1}, {"fps", 10}};
+    QVERIFY(window_->runDocument(doc));
+    MapPanel* map = window_->mapPanel();
+    QVERIFY(finishDrawing(map, map->sceneJobs(), 100));
+    QAction* item = nullptr;
+    for (QAction* a : window_->findChildren<QAction*>())
+      if (a->text() == "Export web page…") item = a;
+    QVERIFY(item); // the menu's entry (its dialog asks for the file, then calls exportPageTo)
+    const QString path = dir_.filePath("motion.html");
+    const int id = window_->exportPageTo(path);
+    QVERIFY(id >= 0);
+    QVERIFY(map->jobs().find(id)); // listed in the tool manager
+    QTRY_VERIFY2_WITH_TIMEOUT(window_->results().contains("wrote the web page"),
+                              qPrintable(window_->results()), 60000);
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QString page = QString::fromUtf8(file.readAll());
+    const auto begin = page.indexOf("id=\"rollviz-data\">") + 18, end = page.indexOf("</script>", begin);
+    const auto data = nlohmann::json::parse(page.mid(begin, end - begin).toStdString());
+    QCOMPARE(data["frames"].get<int>(), 11);
+    QCOMPARE(data["map"]["series"].size(), std::size_t(1));         // the scene's trajectory on the map
+    QVERIFY(QFileInfo(path).dir().entryList({"*.tmp*"}).isEmpty()); // nothing half-written beside it
+  }
+
   // Issue 43, sessions: a session saved and opened (over another scene) gives the same trajectories, point
   // for point, and the Results log; a finished trajectory then goes on with Start, bit for bit the run of the
   // longer length; the session file is also a scene for the command line.
