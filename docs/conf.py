@@ -8,4 +8,6 @@ source_suffix = {".md": "markdown"}
 myst_heading_anchors = 3
 html_theme = "alabaster"
 html_title = "rollviz"
-exclude_patterns = ["_build"]
+exclude_patterns = ["_build", "pages"]
+# the gallery's web pages (docs/generate.py writes them into pages/gallery/): copied beside the guide as they are
+html_extra_path = ["pages"]

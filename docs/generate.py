@@ -78,18 +78,24 @@ with open(os.path.join(out, "problems.md"), "w") as f:
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(docs)), "scripts"))
 import make_gallery  # noqa: E402
 
-scenes = make_gallery.make(rollviz, os.path.join(out, "gallery"))
+scenes = make_gallery.make(rollviz, os.path.join(out, "gallery"), pages=os.path.join(out, "pages", "gallery"))
 source = os.path.dirname(os.path.abspath(docs))
 with open(os.path.join(out, "gallery.md"), "w") as f:
     f.write("# Gallery\n\n")
     f.write("Famous motions, ready to watch: in the GUI open them with **File > Gallery**; on the command line "
             "`rollviz list gallery` lists them. Each picture is the 3D view at the end of the scene's "
             "10-second video, rendered by this build when the guide was made; "
-            "`scripts/make_gallery.py ROLLVIZ OUT --videos` makes the pictures and the videos.\n\n")
+            "`scripts/make_gallery.py ROLLVIZ OUT --videos --pages` makes the pictures, the videos and the web "
+            "pages. Each motion's **web page** plays in your browser, offline: turn the bodies with the mouse, "
+            "scrub with the slider (`rollviz page`, one self-contained file of "
+            f"{min(s['page_bytes'] for s in scenes) / 1e6:.1f}-{max(s['page_bytes'] for s in scenes) / 1e6:.1f} MB "
+            "here, 0.85 MB of it the viewer).\n\n")
     for s in scenes:
         rel = os.path.relpath(s["path"], source)
         f.write(f"## {s['title']}\n\n![{s['title']}](gallery/{s['id']}.png)\n\n{s['description']}\n\n")
-        f.write(f"```sh\nrollviz gui {rel}\nrollviz video {rel} -o {s['id']}.mp4\n"
+        f.write(f'<a href="gallery/{s["id"]}.html">Turn it around in your browser</a> '
+                f"(web page, {s['page_bytes'] / 1e6:.1f} MB)\n\n")
+        f.write(f"```sh\nrollviz gui {rel}\nrollviz video {rel} -o {s['id']}.mp4\nrollviz page {rel} -o {s['id']}.html\n"
                 f"rollviz render {rel} -o {s['id']}.png --time {s['time']:g}\n```\n\n")
 
 # the GUI's pictures, taken by this build (scripts/make_screenshots.py), in place of the marker on the GUI page

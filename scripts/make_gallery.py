@@ -22,8 +22,9 @@ def gallery(rollviz):
     return scenes
 
 
-def make(rollviz, out, videos=False, size="640x400"):
-    """Renders every gallery scene into OUT/ID.png (and OUT/ID.mp4); returns the scenes."""
+def make(rollviz, out, videos=False, size="640x400", pages=None):
+    """Renders every gallery scene into OUT/ID.png (and OUT/ID.mp4; with PAGES a folder, PAGES/ID.html, its web
+    page, whose size in bytes each scene's "page_bytes" holds); returns the scenes."""
     os.makedirs(out, exist_ok=True)
     env = dict(os.environ)
     env.pop("DISPLAY", None)
@@ -34,6 +35,11 @@ def make(rollviz, out, videos=False, size="640x400"):
         if videos:
             subprocess.run([rollviz, "video", s["path"], "-o", os.path.join(out, s["id"] + ".mp4"), "--size",
                             size], check=True, env=env, capture_output=True)
+        if pages:
+            os.makedirs(pages, exist_ok=True)
+            page = os.path.join(pages, s["id"] + ".html")
+            subprocess.run([rollviz, "page", s["path"], "-o", page], check=True, env=env, capture_output=True)
+            s["page_bytes"] = os.path.getsize(page)
     return scenes
 
 
@@ -43,6 +49,7 @@ if __name__ == "__main__":
     p.add_argument("out")
     p.add_argument("--videos", action="store_true", help="also the 10-second videos (MP4)")
     p.add_argument("--size", default="640x400")
+    p.add_argument("--pages", action="store_true", help="also the web pages (OUT/ID.html)")
     a = p.parse_args()
-    for s in make(a.rollviz, a.out, a.videos, a.size):
+    for s in make(a.rollviz, a.out, a.videos, a.size, a.out if a.pages else None):
         print(os.path.join(a.out, s["id"] + ".png"), "-", s["title"])
