@@ -333,4 +333,17 @@ void VisualScene::placeCamera() {
   placed_ = cameraState(cam);
 }
 
+void playTo(VisualScene& scene, Integrator& integrator, double t, Eigen::VectorXd& work) {
+  const int dir = integrator.direction();
+  while (dir * (integrator.time() - t) < 0) {
+    integrator.step();
+    if (dir * (integrator.time() - t) < 0) scene.advance(integrator.time(), integrator.state());
+  }
+  if (integrator.time() == t)
+    work = integrator.state();
+  else
+    integrator.sampleAt(t, work);
+  scene.show(t, work);
+}
+
 } // namespace rv

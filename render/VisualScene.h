@@ -3,6 +3,7 @@
 // in snapshots and in videos.
 #pragma once
 #include "dynamics/core/Model.h"
+#include "dynamics/integrators/Integrator.h"
 #include "render/ViewOptions.h"
 #include "render/objects/VisualObject.h"
 
@@ -84,5 +85,9 @@ private:
   std::map<std::string, std::vector<vtkProp*>> props_; ///< by object name; the objects own them
   unsigned long floorObserver_ = 0;                    ///< the renderer's StartEvent observer
 };
+
+/// Integrates until `t` (in the integrator's direction), feeding every step to the scene, then shows the
+/// state at exactly `t` (what a video's or a web page's frame shows). `work` is scratch space.
+void playTo(VisualScene& scene, Integrator& integrator, double t, Eigen::VectorXd& work);
 
 } // namespace rv

@@ -4,7 +4,6 @@
 #include "dynamics/io/AtomicFile.h"
 #include "render/VisualScene.h"
 #include "render/export/WebAssets.h"
-#include "render/video/VideoExport.h"
 
 #include <algorithm>
 #include <cmath>

@@ -12,19 +12,6 @@
 
 namespace rv {
 
-void playTo(VisualScene& scene, Integrator& integrator, double t, Eigen::VectorXd& work) {
-  const int dir = integrator.direction();
-  while (dir * (integrator.time() - t) < 0) {
-    integrator.step();
-    if (dir * (integrator.time() - t) < 0) scene.advance(integrator.time(), integrator.state());
-  }
-  if (integrator.time() == t)
-    work = integrator.state();
-  else
-    integrator.sampleAt(t, work);
-  scene.show(t, work);
-}
-
 VideoExporter::VideoExporter(VisualScene& scene, vtkRenderWindow* window, Integrator& integrator,
                              const VideoSpec& spec)
     : scene_(scene), window_(window), integrator_(integrator), spec_(spec),

@@ -18,10 +18,6 @@ namespace rv {
 
 class Mp4Writer;
 
-/// Integrates until `t` (in the integrator's direction), feeding every step to the scene, then shows the
-/// state at exactly `t`. `work` is scratch space.
-void playTo(VisualScene& scene, Integrator& integrator, double t, Eigen::VectorXd& work);
-
 struct VideoSpec {
   std::string path;
   int width = 1280, height = 720;
