@@ -74,6 +74,11 @@ public:
   bool undo();
   /// What Undo would bring back, in words ("" when nothing).
   QString undoText() const;
+  /// Edit > Redo (Ctrl+Shift+Z): puts back the map as it stood before the last Undo (a new change forgets
+  /// what was undone). False when there is nothing.
+  bool redo();
+  /// What Redo would put back, in words ("" when nothing).
+  QString redoText() const;
   /// File > Save session: the scene as shown, every trajectory of the map (points, colour, range, the state
   /// to go on from), the Results log and the window's layout, in one JSON file (scenes/Session.h) written
   /// whole; false (the reason in Results and `why`) when it cannot.
@@ -232,7 +237,12 @@ private:
     std::vector<SavedToolOutput> deletedTools;
   };
   std::vector<UndoStep> undo_;
+  std::vector<UndoStep> redo_; ///< what Undo took back, newest last: each the whole map before the undo
   QAction* undoAction_ = nullptr;
+  QAction* redoAction_ = nullptr;
+  void updateUndoActions();
+  /// The map as it stands (its scene, trajectories stopped, tool outputs): what Undo and Redo go back to.
+  Session mapAsItStands() const;
   static constexpr std::size_t kUndoSteps = 20;
   void pushUndo(UndoStep step);
   /// The map as it stands, as an Undo step, before it is replaced.

@@ -199,6 +199,12 @@ void MainWindow::buildMenus() {
   undoAction_->setObjectName("undo");
   undoAction_->setShortcut(QKeySequence::Undo);
   undoAction_->setEnabled(false);
+  redoAction_ = edit->addAction("Redo", this, [this] {
+    if (!redo()) report("nothing to redo", 3000);
+  });
+  redoAction_->setObjectName("redo");
+  redoAction_->setShortcut(QKeySequence::Redo);
+  redoAction_->setEnabled(false);
   auto* windows = menuBar()->addMenu("&Windows");
   windows->addAction("2D plot…", this, [this] { plotDialog(2); })
       ->setToolTip("observables against each other along the 3D view's run and every trajectory of the map, "

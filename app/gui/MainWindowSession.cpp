@@ -40,8 +40,29 @@ bool MainWindow::mayReplaceMap(const QString& action) {
 void MainWindow::pushUndo(UndoStep step) {
   undo_.push_back(std::move(step));
   if (undo_.size() > kUndoSteps) undo_.erase(undo_.begin());
-  undoAction_->setEnabled(true);
-  undoAction_->setText("Undo " + undo_.back().what);
+  redo_.clear(); // a new change: what was undone stays undone
+  updateUndoActions();
+}
+
+void MainWindow::updateUndoActions() {
+  undoAction_->setEnabled(!undo_.empty());
+  undoAction_->setText(undo_.empty() ? QString("Undo") : "Undo " + undo_.back().what);
+  redoAction_->setEnabled(!redo_.empty());
+  redoAction_->setText(redo_.empty() ? QString("Redo") : "Redo " + redo_.back().what);
+}
+
+QString MainWindow::redoText() const {
+  return redo_.empty() ? QString() : redo_.back().what;
+}
+
+Session MainWindow::mapAsItStands() const {
+  Session map;
+  map.scene = scene_->document;
+  map.scenePath = scenePath_.toStdString();
+  map.origin = origin_.toStdString();
+  map.trajectories = map_->saveTrajectories({}, false, false); // they stop: the map is replaced next
+  map.tools = map_->saveToolOutputs({});
+  return map;
 }
 
 QString MainWindow::undoText() const {
@@ -49,12 +70,7 @@ QString MainWindow::undoText() const {
 }
 
 void MainWindow::rememberMapForUndo() {
-  Session map;
-  map.scene = scene_->document;
-  map.scenePath = scenePath_.toStdString();
-  map.origin = origin_.toStdString();
-  map.trajectories = map_->saveTrajectories({}, false, false); // they stop: the map is replaced next
-  map.tools = map_->saveToolOutputs({});
+  Session map = mapAsItStands();
   const QString name = origin_.isEmpty() ? QFileInfo(scenePath_).fileName() : origin_;
   QString what = QString("(back to %1 with %2 trajectories").arg(name).arg(map.trajectories.size());
   what += map.tools.empty() ? QString(")") : QString(" and %1 tool outputs)").arg(map.tools.size());
@@ -79,11 +95,11 @@ void MainWindow::rememberDeletedForUndo(const std::vector<int>& roots) {
 }
 
 bool MainWindow::undo() {
-  if (undo_.empty()) return false;
+  if (undo_.empty() || !scene_) return false;
   UndoStep step = std::move(undo_.back());
   undo_.pop_back();
-  undoAction_->setEnabled(!undo_.empty());
-  undoAction_->setText(undo_.empty() ? QString("Undo") : "Undo " + undo_.back().what);
+  // Redo puts back the map as it stands now, whatever the step was (a replaced map, a delete)
+  Session now = mapAsItStands();
   try {
     if (step.map)
       useSession(*step.map, QString::fromStdString(step.map->scenePath), false);
@@ -92,10 +108,33 @@ bool MainWindow::undo() {
       map_->restoreToolOutputs(step.deletedTools);
     }
   } catch (const std::exception& e) {
+    updateUndoActions();
     report(QString("cannot undo %1: %2").arg(step.what, e.what()), 0);
     return false;
   }
+  redo_.push_back({step.what, std::move(now), {}, {}});
+  updateUndoActions();
   report("undone: " + step.what, 5000);
+  return true;
+}
+
+bool MainWindow::redo() {
+  if (redo_.empty() || !scene_) return false;
+  UndoStep step = std::move(redo_.back());
+  redo_.pop_back();
+  Session now = mapAsItStands();
+  try {
+    useSession(*step.map, QString::fromStdString(step.map->scenePath), false);
+  } catch (const std::exception& e) {
+    updateUndoActions();
+    report(QString("cannot redo %1: %2").arg(step.what, e.what()), 0);
+    return false;
+  }
+  // Undo again goes back to the map before this redo (not through pushUndo: the other redos stay)
+  undo_.push_back({step.what, std::move(now), {}, {}});
+  if (undo_.size() > kUndoSteps) undo_.erase(undo_.begin());
+  updateUndoActions();
+  report("redone: " + step.what, 5000);
   return true;
 }
 

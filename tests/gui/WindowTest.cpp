@@ -1570,6 +1570,24 @@ private slots:
     QVERIFY(window_->undo());
     QCOMPARE(map->trajectories(), 4);
     QVERIFY(map->trajectoryPoints(map->sceneJobs().back()) == first);
+    // Redo (Edit > Redo, Ctrl+Shift+Z) deletes it again, Undo brings it back once more
+    auto* redo = window_->findChild<QAction*>("redo");
+    QVERIFY(redo && redo->isEnabled());
+    QCOMPARE(redo->shortcut(), QKeySequence(QKeySequence::Redo));
+    QVERIFY2(window_->redoText().contains("1 trajectory"), qPrintable(window_->redoText()));
+    redo->trigger();
+    QCOMPARE(map->trajectories(), 3);
+    QVERIFY(!redo->isEnabled());
+    QVERIFY(window_->undo());
+    QCOMPARE(map->trajectories(), 4);
+    QVERIFY(map->trajectoryPoints(map->sceneJobs().back()) == first);
+    QVERIFY(redo->isEnabled()); // the delete, to do again
+    // a new change forgets what was undone
+    tools->refresh();
+    tools->select(map->sceneJobs().front());
+    tools->deleteSelected();
+    QVERIFY(!redo->isEnabled());
+    QVERIFY(!window_->redo());
   }
 
   // Issue 63: File > Export web page writes the motion and the map as a self-contained page, off the GUI
