@@ -324,10 +324,54 @@ std::vector<double> MapPanel::mapPoint(double x, double y) const {
   return point;
 }
 
+QString MapPanel::startOnSection(double x, double y) {
+  // The click names the map's two coordinates; where they (and the section's observable) are state variables,
+  // the scene's state takes them, so that the trajectory starts on the section at the point clicked; the rest
+  // of the state is the scene's.
+  const auto& names = scene_->model->info().stateNames;
+  const auto index = [&](const std::string& name) {
+    const auto it = std::find(names.begin(), names.end(), name);
+    return it == names.end() ? -1 : static_cast<int>(it - names.begin());
+  };
+  const auto axes =
+      PoincareMap(*scene_->model, scene_->startIntegrator(), scene_->poincare).coordinateNames();
+  Eigen::VectorXd state = scene_->initialState;
+  QStringList set;
+  for (std::size_t k = 0; k < std::min<std::size_t>(2, axes.size()); ++k)
+    if (const int i = index(axes[k]); i >= 0) {
+      state[i] = k == 0 ? x : y;
+      set << QString("%1 = %2").arg(QString::fromStdString(axes[k])).arg(state[i], 0, 'g', 6);
+    }
+  const std::string section =
+      scene_->poincare.observable.empty() ? scene_->model->info().section : scene_->poincare.observable;
+  if (const int i = index(section); i >= 0 && !set.isEmpty()) {
+    state[i] = scene_->poincare.value;
+    set << QString("%1 = %2 (the section)").arg(QString::fromStdString(section)).arg(state[i], 0, 'g', 6);
+  }
+  start(state);
+  series_.back().origin = set.isEmpty() ? QString("the scene's state") : set.join(", ");
+  const QString id = QString::fromStdString(scene_->model->info().id);
+  return set.isEmpty()
+             ? QString(
+                   "from the scene's state: %1 has no map coordinates and the map's axes are not its state "
+                   "variables (give the start in the control panel)")
+                   .arg(id)
+             : QString(
+                   "at %1, the rest of the state the scene's (%2 has no map coordinates of its own: a click "
+                   "sets the map's axes and the section's variable)")
+                   .arg(set.join(", "), id);
+}
+
 bool MapPanel::startAt(double x, double y) {
   if (!scene_) return false;
   chart_->holdRanges(); // the next click lands where the user aims: the new points do not rescale the axes
   try {
+    const auto& info = scene_->model->info();
+    if (info.mapCoordinates.empty()) { // a flow whose map has no coordinates of its own (Lorenz)
+      const QString how = startOnSection(x, y);
+      emit message(QString("trajectory #%1 started %2").arg(series_.back().job->id()).arg(how));
+      return true;
+    }
     const MapPointSpec spec{.sectionValue = scene_->poincare.value,
                             .root = std::max(1, scene_->poincare.root)};
     start(scene_->model->stateFromMap(mapPoint(x, y), spec, "map point"));

@@ -61,7 +61,9 @@ public:
   std::vector<int> sceneJobs() const;
   /// sceneJobs() less the trajectory setScene started: what the user added.
   std::vector<int> addedJobs() const;
-  /// Starts a trajectory at map coordinates (x, y); false (with a message) when there is no state there.
+  /// Starts a trajectory at map coordinates (x, y); false (with a message) when there is no state there. A
+  /// flow without map coordinates of its own (Lorenz) starts from the scene's state with the map's axes and
+  /// the section's variable set to the point clicked (where they are state variables), and says so.
   bool startAt(double x, double y);
   /// Starts a fixed-point search (the scene's fixedpoint settings) from map coordinates (x, y).
   void searchFixedPointAt(double x, double y);
@@ -195,6 +197,8 @@ protected:
   bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
+  /// startAt for a flow without map coordinates: returns what it did, in words.
+  QString startOnSection(double x, double y);
   struct Series {
     Job* job;
     PoincareTask* task;

@@ -1590,6 +1590,25 @@ private slots:
     QVERIFY(!window_->redo());
   }
 
+  // Issue 61 (4): a click on the map of a flow without map coordinates (Lorenz) starts a trajectory on the
+  // section at the point clicked (the map's axes and the section's variable set, the rest the scene's state)
+  // and says so -- it used to fail with "lorenz has no map coordinates".
+  void aClickOnLorenzsMapStartsATrajectoryOnTheSection() {
+    nlohmann::json doc = loadScene(defaultScenePath("lorenz")).document;
+    doc["poincare"]["points"] = 30;
+    QVERIFY(window_->runDocument(doc));
+    MapPanel* map = window_->mapPanel();
+    const int before = map->trajectories();
+    QVERIFY(map->startAt(-6.5, 3.25));
+    QCOMPARE(map->trajectories(), before + 1);
+    const int id = map->sceneJobs().back();
+    QVERIFY2(window_->results().contains("x = -6.5, y = 3.25, z = 27 (the section)"),
+             qPrintable(window_->results()));
+    QVERIFY(finishDrawing(map, {id}, 30)); // it crosses the section: its points are drawn
+    const auto points = map->trajectoryPoints(id);
+    QCOMPARE(points.first.size(), std::size_t(30));
+  }
+
   // Issue 63: File > Export web page writes the motion and the map as a self-contained page, off the GUI
   // thread (a job of the tool manager), and says so in the Results dock.
   void theMotionAndTheMapExportAsAWebPage() {
