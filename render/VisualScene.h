@@ -53,6 +53,8 @@ public:
   /// frames the growing curve at every frame, until the user turns, moves or zooms it: from then on the
   /// camera is the user's (playing or not) until the next reset.
   void resetCamera();
+  /// Whether the user has turned, moved or zoomed the camera since it was last placed (resetCamera).
+  bool cameraMoved() const { return !cameraAsPlaced(); }
   /// Whether the camera is carried along with the body as it rolls (view.camera.follow): the user's toggle,
   /// taking effect from the next frame on, the camera left where it is.
   void setFollow(bool on) { options_.camera.follow = on; }

@@ -53,6 +53,7 @@
 #include <fstream>
 #include <functional>
 #include <map>
+#include <vtkCamera.h>
 #include <vtkChartXY.h>
 #include <vtkPlot.h>
 #include <vtkRenderer.h>
@@ -376,6 +377,13 @@ void MainWindow::useScene(std::unique_ptr<Scene> scene, const QString& path, con
   const bool newStart = keep && (scene_->initialState.size() != scene->initialState.size() ||
                                  scene_->initialState != scene->initialState);
   if (mapUse == MapUse::Replace && scene_) rememberMapForUndo();
+  // the camera the user placed stays where it is unless the view's settings change (the camera moves only
+  // when the user asks: an Apply with nothing changed used to put it back)
+  vtkNew<vtkCamera> userCamera;
+  const bool keepCamera =
+      keep && visual_ && visual_->cameraMoved() && scene_->model->info().id == scene->model->info().id &&
+      scene_->document.value("view", nlohmann::json()) == scene->document.value("view", nlohmann::json());
+  if (keepCamera) userCamera->DeepCopy(visual_->renderer()->GetActiveCamera());
   stream_.reset();
   if (!keep) map_->stopAll(); // its jobs hold the old scene's model until setScene replaces them
   if (visual_) view_->renderWindow()->RemoveRenderer(visual_->renderer());
@@ -407,6 +415,11 @@ void MainWindow::useScene(std::unique_ptr<Scene> scene, const QString& path, con
   control_->setScene(*scene_);
   watchModelFile();
   restart();
+  if (keepCamera) {
+    visual_->renderer()->GetActiveCamera()->DeepCopy(userCamera);
+    visual_->renderer()->ResetCameraClippingRange();
+    view_->update();
+  }
   if (apexWindow_ && apexWindow_->isVisible()) openApexWindow();
 }
 

@@ -1609,6 +1609,33 @@ private slots:
     QCOMPARE(points.first.size(), std::size_t(30));
   }
 
+  // Issue 61 (4): Apply with nothing changed leaves the camera the user turned where it is; a change of the
+  // view's own settings places it anew.
+  void applyLeavesTheUsersCameraWhereItIs() {
+    nlohmann::json doc = loadScene(defaultScenePath("chaplygin_ball")).document;
+    doc["view"]["camera"]["follow"] = false;
+    QVERIFY(window_->runDocument(doc));
+    vtkCamera* cam = window_->visual()->renderer()->GetActiveCamera();
+    cam->Azimuth(40);
+    cam->Elevation(15);
+    cam->OrthogonalizeViewUp();
+    std::array<double, 6> turned{};
+    cam->GetPosition(&turned[0]);
+    cam->GetFocalPoint(&turned[3]);
+    QVERIFY(window_->applyDocument(window_->scene()->document)); // nothing changed
+    vtkCamera* now = window_->visual()->renderer()->GetActiveCamera();
+    std::array<double, 6> kept{};
+    now->GetPosition(&kept[0]);
+    now->GetFocalPoint(&kept[3]);
+    QVERIFY(kept == turned);
+    nlohmann::json other = window_->scene()->document;
+    other["view"]["camera"]["azimuth"] = 75; // the view's settings changed: the camera placed as they say
+    QVERIFY(window_->applyDocument(other));
+    now = window_->visual()->renderer()->GetActiveCamera();
+    now->GetPosition(&kept[0]);
+    QVERIFY(std::abs(kept[0] - turned[0]) + std::abs(kept[1] - turned[1]) > 1e-6);
+  }
+
   // Issue 63: File > Export web page writes the motion and the map as a self-contained page, off the GUI
   // thread (a job of the tool manager), and says so in the Results dock.
   void theMotionAndTheMapExportAsAWebPage() {
