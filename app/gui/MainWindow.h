@@ -243,6 +243,8 @@ private:
   void updateUndoActions();
   /// The map as it stands (its scene, trajectories stopped, tool outputs): what Undo and Redo go back to.
   Session mapAsItStands() const;
+  /// Shows a map Undo or Redo kept: its scene, trajectories and tool outputs, and the user's zoom.
+  void useMapOf(const Session& map);
   static constexpr std::size_t kUndoSteps = 20;
   void pushUndo(UndoStep step);
   /// The map as it stands, as an Undo step, before it is replaced.

@@ -62,7 +62,14 @@ Session MainWindow::mapAsItStands() const {
   map.origin = origin_.toStdString();
   map.trajectories = map_->saveTrajectories({}, false, false); // they stop: the map is replaced next
   map.tools = map_->saveToolOutputs({});
+  if (map_->chart().rangesHeld()) map.gui["map_ranges"] = map_->chart().ranges(); // the user's zoom
   return map;
+}
+
+void MainWindow::useMapOf(const Session& map) {
+  useSession(map, QString::fromStdString(map.scenePath), false);
+  if (const auto r = map.gui.find("map_ranges"); r != map.gui.end())
+    map_->setMapRanges(r->get<std::array<double, 4>>());
 }
 
 QString MainWindow::undoText() const {
@@ -102,7 +109,7 @@ bool MainWindow::undo() {
   Session now = mapAsItStands();
   try {
     if (step.map)
-      useSession(*step.map, QString::fromStdString(step.map->scenePath), false);
+      useMapOf(*step.map);
     else {
       map_->restoreTrajectories(step.deleted);
       map_->restoreToolOutputs(step.deletedTools);
@@ -124,7 +131,7 @@ bool MainWindow::redo() {
   redo_.pop_back();
   Session now = mapAsItStands();
   try {
-    useSession(*step.map, QString::fromStdString(step.map->scenePath), false);
+    useMapOf(*step.map);
   } catch (const std::exception& e) {
     updateUndoActions();
     report(QString("cannot redo %1: %2").arg(step.what, e.what()), 0);

@@ -313,6 +313,12 @@ std::pair<std::vector<double>, std::vector<double>> MapPanel::trajectoryPoints(i
   return {};
 }
 
+void MapPanel::setMapRanges(const std::array<double, 4>& r) {
+  chart_->setRanges(r[0], r[1], r[2], r[3]);
+  chart_->holdRanges();
+  view_->update();
+}
+
 std::vector<double> MapPanel::mapPoint(double x, double y) const {
   std::vector<double> point{x, y};
   if (scene_->model->info().mapCoordinates.size() == 3) { // a 3D map: Z from the scene's initial point

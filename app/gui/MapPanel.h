@@ -187,6 +187,8 @@ public:
   QtVtkWidget* view() const { return view_; }
   /// The map chart (to export it).
   const PoincareChart& chart() const { return *chart_; }
+  /// Zooms the map to these ranges (x0, x1, y0, y1), held as a user's zoom is.
+  void setMapRanges(const std::array<double, 4>& r);
 
 signals:
   void message(const QString& text);

@@ -291,6 +291,10 @@ std::array<double, 4> PoincareChart::ranges() const {
   return {ax->GetMinimum(), ax->GetMaximum(), ay->GetMinimum(), ay->GetMaximum()};
 }
 
+bool PoincareChart::rangesHeld() const {
+  return chart_->GetAxis(vtkAxis::BOTTOM)->GetBehavior() == vtkAxis::FIXED;
+}
+
 void PoincareChart::holdRanges() {
   for (int a : {vtkAxis::BOTTOM, vtkAxis::LEFT})
     chart_->GetAxis(a)->SetBehavior(vtkAxis::FIXED);

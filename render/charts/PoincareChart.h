@@ -46,6 +46,8 @@ public:
   std::array<double, 4> ranges() const;
   /// Keeps the axes where they are now (new data no longer rescales them; zoom and pan still move them).
   void holdRanges();
+  /// Whether the axes are held (a zoom, a pan, setRanges, holdRanges) rather than following the data.
+  bool rangesHeld() const;
   /// Ranges around every point drawn now, held; the axes follow the data again while there is none.
   void fitToData();
   /// Recolours series `index`.

@@ -1636,6 +1636,25 @@ private slots:
     QVERIFY(std::abs(kept[0] - turned[0]) + std::abs(kept[1] - turned[1]) > 1e-6);
   }
 
+  // Issue 61 (4): Undo (and Redo) bring the map back with the user's zoom.
+  void undoKeepsTheMapsZoom() {
+    nlohmann::json doc = loadScene(defaultScenePath("henon_heiles")).document;
+    doc["poincare"]["points"] = 50;
+    QVERIFY(window_->runDocument(doc));
+    MapPanel* map = window_->mapPanel();
+    const std::array<double, 4> zoom{-0.11, 0.13, -0.07, 0.09};
+    map->setMapRanges(zoom);
+    QVERIFY(map->chart().rangesHeld());
+    doc["parameters"]["energy"] = 0.1;
+    QVERIFY(window_->applyDocument(doc)); // another energy: another map, its axes following its points
+    QVERIFY(!map->chart().rangesHeld());
+    QVERIFY(window_->undo());
+    QVERIFY(map->chart().rangesHeld());
+    QVERIFY(map->chart().ranges() == zoom);
+    QVERIFY(window_->redo()); // the other energy's map, not zoomed
+    QVERIFY(!map->chart().rangesHeld());
+  }
+
   // Issue 63: File > Export web page writes the motion and the map as a self-contained page, off the GUI
   // thread (a job of the tool manager), and says so in the Results dock.
   void theMotionAndTheMapExportAsAWebPage() {
