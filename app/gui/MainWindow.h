@@ -241,8 +241,9 @@ private:
   QAction* undoAction_ = nullptr;
   QAction* redoAction_ = nullptr;
   void updateUndoActions();
-  /// The map as it stands (its scene, trajectories stopped, tool outputs): what Undo and Redo go back to.
-  Session mapAsItStands() const;
+  /// The map as it stands (its scene, trajectories, tool outputs, the user's zoom): what Undo and Redo go
+  /// back to. `goOn`: the running trajectories go on (else they stop: the map is replaced next).
+  Session mapAsItStands(bool goOn) const;
   /// Shows a map Undo or Redo kept: its scene, trajectories and tool outputs, and the user's zoom.
   void useMapOf(const Session& map);
   static constexpr std::size_t kUndoSteps = 20;

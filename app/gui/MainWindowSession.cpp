@@ -55,12 +55,12 @@ QString MainWindow::redoText() const {
   return redo_.empty() ? QString() : redo_.back().what;
 }
 
-Session MainWindow::mapAsItStands() const {
+Session MainWindow::mapAsItStands(bool goOn) const {
   Session map;
   map.scene = scene_->document;
   map.scenePath = scenePath_.toStdString();
   map.origin = origin_.toStdString();
-  map.trajectories = map_->saveTrajectories({}, false, false); // they stop: the map is replaced next
+  map.trajectories = map_->saveTrajectories({}, false, goOn);
   map.tools = map_->saveToolOutputs({});
   if (map_->chart().rangesHeld()) map.gui["map_ranges"] = map_->chart().ranges(); // the user's zoom
   return map;
@@ -77,7 +77,7 @@ QString MainWindow::undoText() const {
 }
 
 void MainWindow::rememberMapForUndo() {
-  Session map = mapAsItStands();
+  Session map = mapAsItStands(false); // they stop: the map is replaced next
   const QString name = origin_.isEmpty() ? QFileInfo(scenePath_).fileName() : origin_;
   QString what = QString("(back to %1 with %2 trajectories").arg(name).arg(map.trajectories.size());
   what += map.tools.empty() ? QString(")") : QString(" and %1 tool outputs)").arg(map.tools.size());
@@ -105,8 +105,9 @@ bool MainWindow::undo() {
   if (undo_.empty() || !scene_) return false;
   UndoStep step = std::move(undo_.back());
   undo_.pop_back();
-  // Redo puts back the map as it stands now, whatever the step was (a replaced map, a delete)
-  Session now = mapAsItStands();
+  // Redo puts back the map as it stands now, whatever the step was (a replaced map, a delete); its running
+  // trajectories go on (a delete's undo keeps the map)
+  Session now = mapAsItStands(true);
   try {
     if (step.map)
       useMapOf(*step.map);
@@ -129,7 +130,7 @@ bool MainWindow::redo() {
   if (redo_.empty() || !scene_) return false;
   UndoStep step = std::move(redo_.back());
   redo_.pop_back();
-  Session now = mapAsItStands();
+  Session now = mapAsItStands(true);
   try {
     useMapOf(*step.map);
   } catch (const std::exception& e) {
