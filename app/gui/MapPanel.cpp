@@ -224,6 +224,7 @@ std::vector<SavedTrajectory> MapPanel::saveTrajectories(const std::vector<int>& 
     t.running = running;
     t.first = s.first, t.last = s.last;
     t.origin = s.origin.toStdString();
+    t.id = s.job->id();
     out.push_back(std::move(t));
     if (goOn && running) s.job->start();
   }
@@ -267,7 +268,7 @@ int MapPanel::restoreTrajectories(const std::vector<SavedTrajectory>& saved) {
   for (std::size_t n = 0; n < saved.size(); ++n) {
     const SavedTrajectory& t = saved[n];
     PoincareTask* raw = tasks[n].get();
-    Job& job = jobs_.add(std::move(tasks[n]));
+    Job& job = jobs_.add(std::move(tasks[n]), nullptr, t.id); // its number, where it is free
     const int plot = chart_->addSeries({}, {}, t.colour);
     series_.push_back({&job, raw, t.x, t.y, t.z, plot, t.colour});
     Series& s = series_.back();
@@ -470,13 +471,17 @@ bool MapPanel::drain() {
       applyColour(s);
       changed = true;
       // <Y> near 2 is a torus; on a chaotic orbit it grows like lambda t / 2 (the rate tends to lambda)
-      emit message(QString("trajectory #%1: MEGNO <Y> = %2 at t = %3, rate %4")
+      emit message(QString("MEGNO (tool #%1) of trajectory #%2: <Y> = %3 at t = %4, rate %5")
+                       .arg(s.megnoJob->id())
                        .arg(s.job->id())
                        .arg(last.megno, 0, 'g', 6)
                        .arg(last.time, 0, 'g', 6)
                        .arg(last.megnoRate, 0, 'g', 4));
     } else if (s.megnoJob->status() == Job::Status::Failed) {
-      emit message(QString::fromStdString("MEGNO: " + s.megnoJob->error()));
+      emit message(QString("MEGNO (tool #%1) of trajectory #%2 failed: %3")
+                       .arg(s.megnoJob->id())
+                       .arg(s.job->id())
+                       .arg(QString::fromStdString(s.megnoJob->error())));
       s.megnoValue = std::numeric_limits<double>::quiet_NaN(); // reported once; drawn in its own colour
     }
   }

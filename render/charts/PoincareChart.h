@@ -58,6 +58,10 @@ public:
   void setTitle(const std::string& title);
   /// Names series `index` in the chart's legend (shown once a series has a name; unnamed ones are left out).
   void setLegend(int index, const std::string& name);
+  /// How the legend orders its entries, in words ("largest first"; empty: as they were added): what a front
+  /// end that reads the legend's numbers out says with them.
+  void setLegendOrder(std::string order) { legendOrder_ = std::move(order); }
+  const std::string& legendOrder() const { return legendOrder_; }
   /// Puts the legend in the plot area's top left corner (the default is the top right).
   void legendTopLeft();
   /// Removes every series.
@@ -78,6 +82,7 @@ public:
   bool changedSincePainted() const;
 
 private:
+  std::string legendOrder_;
   vtkSmartPointer<vtkContextView> view_;
   vtkSmartPointer<vtkChartXY> chart_;
   /// Series too big to draw point by point on software GL: redrawn as one point per occupied cell of the
