@@ -17,9 +17,11 @@
 #include <QCheckBox>
 #include <QColor>
 #include <QComboBox>
+#include <QContextMenuEvent>
 #include <QElapsedTimer>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QMenu>
 #include <QMouseEvent>
 #include <QPushButton>
 #include <QVBoxLayout>
@@ -619,6 +621,20 @@ bool MapPanel::eventFilter(QObject* watched, QEvent* event) {
   }
   if (watched == view_ && event->type() == QEvent::Leave) cursorLabel_->clear();
   if (watched == view_ && chart_ && event->type() == QEvent::Wheel) chart_->holdRanges(); // a zoom stays
+  if (watched == view_ && event->type() == QEvent::ContextMenu && chart_) { // on a fixed point found
+    const auto* e = static_cast<QContextMenuEvent*>(event);
+    if (const int id = fixedPointAt(e->pos()); id >= 0) {
+      auto* menu = new QMenu(this);
+      menu->setObjectName("fixed_point_menu");
+      menu->setAttribute(Qt::WA_DeleteOnClose);
+      menu->addAction(QString("Continue this fixed point (tool #%1)").arg(id), this,
+                      [this, id] { continueFixedPoint(id); })
+          ->setToolTip(
+              "its family in the parameter of the control panel's continuation tab, to its end value");
+      menu->popup(e->globalPos());
+      return true;
+    }
+  }
   if (watched == view_ && event->type() == QEvent::MouseButtonPress && chart_) {
     auto* e = static_cast<QMouseEvent*>(event);
     const bool ctrl = e->modifiers() & Qt::ControlModifier, shift = e->modifiers() & Qt::ShiftModifier;

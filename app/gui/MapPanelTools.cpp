@@ -15,6 +15,7 @@
 #include "scenes/ToolTask.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace rv {
 
@@ -77,6 +78,35 @@ void MapPanel::startSeparatrices() {
 
 void MapPanel::startContinuation() {
   startMapRows("continuation", {}, "continuing the scene's fixed point");
+}
+
+bool MapPanel::continueFixedPoint(int id) {
+  const auto s =
+      std::find_if(searches_.begin(), searches_.end(), [id](const Search& s) { return s.job->id() == id; });
+  if (s == searches_.end() || s->foundAt.empty()) {
+    emit message(QString("tool #%1 found no fixed point to continue").arg(id));
+    return false;
+  }
+  const std::vector<double> point = mapPoint(s->foundAt[0], s->foundAt[1]);
+  startMapRows("continuation", {{"fixedpoint.guess", nlohmann::json(point).dump()}},
+               QString("continuing the fixed point tool #%1 found, (%2, %3)")
+                   .arg(id)
+                   .arg(s->foundAt[0], 0, 'g', 10)
+                   .arg(s->foundAt[1], 0, 'g', 10));
+  return true;
+}
+
+int MapPanel::fixedPointAt(const QPoint& at) const {
+  const double dpr = view_->devicePixelRatioF();
+  const double ax = at.x() * dpr, ay = (view_->height() - at.y()) * dpr, near = 8 * dpr;
+  int best = -1;
+  double closest = near;
+  for (const auto& s : searches_) {
+    double px, py;
+    if (s.foundAt.empty() || !chart_->toPixels(s.foundAt[0], s.foundAt[1], px, py)) continue;
+    if (const double d = std::hypot(px - ax, py - ay); d <= closest) closest = d, best = s.job->id();
+  }
+  return best;
 }
 
 void MapPanel::startBifurcationTree() {

@@ -68,6 +68,8 @@ public:
   void clear();
   /// Map coordinates of a point of the scene (pixels from the bottom left); false outside the plot area.
   bool toChart(double px, double py, double& x, double& y) const override;
+  /// The pixel (from the bottom left) of chart point (x, y); false outside the plot area.
+  bool toPixels(double x, double y, double& px, double& py) const;
   /// Draws series `index` emphasised (-1: none).
   void select(int index);
   /// Draws into `window` (the chart's view takes it over).

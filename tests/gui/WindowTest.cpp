@@ -37,6 +37,7 @@
 #include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
+#include <QContextMenuEvent>
 #include <QDir>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
@@ -45,7 +46,9 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QLabel>
+#include <QLineEdit>
 #include <QListWidget>
+#include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QOpenGLContext>
@@ -1880,6 +1883,81 @@ private slots:
     QCOMPARE(values.size(), std::size_t(4));
     QVERIFY2(std::is_sorted(values.rbegin(), values.rend()), qPrintable(line));
     chart->close();
+  }
+
+  // Issue 61 (2): a continuation set up entirely from the GUI -- the continuation tab's fields (the
+  // parameter, chosen among the problem's; its end value; the step; the method) -- continues a fixed point
+  // found by a Shift+click, from the map's context menu on it, on Henon-Heiles, whose scene holds no
+  // continuation settings (it used to fail: "give the parameter to continue in"). The straight-line orbit's
+  // point is (0, sqrt(E/2)) at every energy.
+  void aContinuationIsSetUpFromTheGui() {
+    nlohmann::json doc = loadScene(defaultScenePath("henon_heiles")).document;
+    doc["poincare"]["points"] = 50;
+    doc.erase("continuation");
+    QVERIFY(window_->runDocument(doc));
+    MapPanel* map = window_->mapPanel();
+    const std::vector<int> kept = map->sceneJobs();
+    ControlPanel* panel = window_->controlPanel();
+    auto* parameter = panel->findChild<QComboBox*>("continuation_parameter");
+    auto* to = panel->findChild<QLineEdit*>("continuation_to");
+    QVERIFY(parameter && to);
+    QCOMPARE(parameter->currentText(), QString()); // the scene's: none
+    QVERIFY(to->text().isEmpty());
+    QVERIFY(parameter->findText("energy") >= 0); // the problem's parameters, from its table
+    parameter->setCurrentIndex(parameter->findText("energy"));
+    emit parameter->activated(parameter->currentIndex());
+    QTest::keyClicks(to, "0.1");
+    auto* step = qobject_cast<QDoubleSpinBox*>(panel->form("continuation")->editor("step"));
+    auto* method = qobject_cast<QComboBox*>(panel->form("continuation")->editor("method"));
+    QVERIFY(step && method);
+    step->setValue(-0.005);
+    method->setCurrentIndex(method->findText("natural"));
+    QVERIFY(panel->pending());
+    const nlohmann::json edited = panel->editedDocument();
+    QCOMPARE(edited["continuation"]["parameter"].get<std::string>(), std::string("energy"));
+    QCOMPARE(edited["continuation"]["to"].get<double>(), 0.1);
+    QCOMPARE(edited["continuation"]["step"].get<double>(), -0.005);
+    QVERIFY(window_->applyDocument(edited)); // Apply: the map stays (nothing that defines it changed)
+    QCOMPARE(map->sceneJobs(), kept);
+    QCOMPARE(panel->findChild<QComboBox*>("continuation_parameter")->currentText(), QString("energy"));
+    // Shift+click near the straight-line orbit's point: a search that finds it
+    map->searchFixedPointAt(0.02, 0.23);
+    const int search = map->jobs().jobs().back()->id();
+    QTRY_COMPARE_WITH_TIMEOUT(map->fixedPointsFound(), 1, 60000);
+    // the context menu on the point found offers to continue it (Fit first: the axes held by the click show
+    // what was drawn before the search, which need not reach the point)
+    QVERIFY(QTest::qWaitForWindowExposed(map->window()));
+    map->drain();
+    map->findChild<QPushButton*>("fit_map")->click(); // (the chart lays out when it draws: asked until then)
+    double px = 0, py = 0;
+    QTRY_VERIFY_WITH_TIMEOUT(map->chart().toPixels(0.0, std::sqrt(0.125 / 2), px, py), 60000);
+    const double dpr = map->view()->devicePixelRatioF();
+    const QPoint at(static_cast<int>(std::lround(px / dpr)),
+                    map->view()->height() - static_cast<int>(std::lround(py / dpr)));
+    QCOMPARE(map->fixedPointAt(at), search);
+    QContextMenuEvent menuEvent(QContextMenuEvent::Mouse, at, map->view()->mapToGlobal(at));
+    QApplication::sendEvent(map->view(), &menuEvent);
+    auto* menu = map->findChild<QMenu*>("fixed_point_menu");
+    QVERIFY(menu && !menu->actions().isEmpty());
+    QVERIFY2(menu->actions().front()->text().contains(QString("tool #%1").arg(search)),
+             qPrintable(menu->actions().front()->text()));
+    menu->actions().front()->trigger();
+    menu->close();
+    Job* family = map->jobs().jobs().back();
+    QCOMPARE(family->task().name(), std::string("Continuation"));
+    QTRY_VERIFY_WITH_TIMEOUT(!family->running(), 60000);
+    QVERIFY2(family->status() == Job::Status::Finished, family->error().c_str());
+    // the family, drawn as it came: energy 0.125 down to 0.1 by 0.005, the point at (0, sqrt(E/2))
+    QTRY_COMPARE_WITH_TIMEOUT(map->toolPoints(family->id()).size(), std::size_t(6), 60000);
+    const auto points = map->toolPoints(family->id());
+    QVERIFY(std::abs(points.back().first) < 1e-8);
+    QVERIFY2(std::abs(points.back().second - std::sqrt(0.1 / 2)) < 1e-8,
+             qPrintable(QString::number(points.back().second, 'g', 12)));
+    QTRY_VERIFY2_WITH_TIMEOUT(
+        window_->results().contains(
+            QString("(tool #%1) ended: 6 points, energy from 0.125 to 0.1").arg(family->id())),
+        qPrintable(window_->results()), 60000);
+    QVERIFY(!window_->results().contains(QString("tool %1 (Continuation) failed").arg(family->id())));
   }
 
   // Issue 43, item 2: the map window's dock floated and docked again still draws its map (a floating dock is
