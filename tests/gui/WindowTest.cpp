@@ -57,6 +57,7 @@
 #include <QPushButton>
 #include <QScopeGuard>
 #include <QSignalSpy>
+#include <QSpinBox>
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QStyle>
@@ -224,6 +225,57 @@ class MainWindowTest : public QObject {
   Q_OBJECT
   MainWindow* window_ = nullptr;
   QTemporaryDir dir_;
+
+  // sets the control panel's continuation tab as a user does: the parameter chosen, the end value typed, the
+  // step and the method set (Apply is the caller's)
+  void setUpContinuation(const QString& parameter, const QString& to, double step, const QString& method) {
+    ControlPanel* panel = window_->controlPanel();
+    auto* choice = panel->findChild<QComboBox*>("continuation_parameter");
+    auto* end = panel->findChild<QLineEdit*>("continuation_to");
+    auto* stepBox = qobject_cast<QDoubleSpinBox*>(panel->form("continuation")->editor("step"));
+    auto* methodBox = qobject_cast<QComboBox*>(panel->form("continuation")->editor("method"));
+    QVERIFY(choice && end && stepBox && methodBox);
+    choice->setCurrentIndex(choice->findText(parameter));
+    QVERIFY(choice->currentIndex() > 0);
+    emit choice->activated(choice->currentIndex());
+    end->clear();
+    QTest::keyClicks(end, to);
+    stepBox->setValue(step);
+    methodBox->setCurrentIndex(methodBox->findText(method));
+    QVERIFY(methodBox->currentIndex() >= 0);
+    QVERIFY(panel->pending());
+  }
+  // Shift+click at (gx, gy): the search finds the point (px, py); the map's context menu on it continues it.
+  // The family's job once it has ended; nullptr (a failed check) otherwise.
+  Job* continueAShiftClickedPoint(double gx, double gy, double px, double py) {
+    MapPanel* map = window_->mapPanel();
+    const int found = map->fixedPointsFound();
+    map->searchFixedPointAt(gx, gy);
+    const int search = map->jobs().jobs().back()->id();
+    if (!QTest::qWaitFor([&] { return map->fixedPointsFound() == found + 1; }, 60000)) return nullptr;
+    // Fit first: the axes the click held show what was drawn before, which need not reach the point
+    if (!QTest::qWaitForWindowExposed(map->window())) return nullptr;
+    map->drain();
+    map->findChild<QPushButton*>("fit_map")->click();
+    double x = 0, y = 0; // the point's pixel, once the chart has laid out in a frame
+    if (!QTest::qWaitFor([&] { return map->chart().toPixels(px, py, x, y); }, 60000)) return nullptr;
+    const double dpr = map->view()->devicePixelRatioF();
+    const QPoint at(static_cast<int>(std::lround(x / dpr)),
+                    map->view()->height() - static_cast<int>(std::lround(y / dpr)));
+    if (map->fixedPointAt(at) != search) return nullptr;
+    QContextMenuEvent menuEvent(QContextMenuEvent::Mouse, at, map->view()->mapToGlobal(at));
+    QApplication::sendEvent(map->view(), &menuEvent);
+    auto* menu = map->findChild<QMenu*>("fixed_point_menu");
+    if (!menu || menu->actions().isEmpty() ||
+        !menu->actions().front()->text().contains(QString("tool #%1").arg(search)))
+      return nullptr;
+    menu->actions().front()->trigger();
+    menu->close();
+    Job* family = map->jobs().jobs().back();
+    if (family->task().name() != "Continuation") return nullptr;
+    if (!QTest::qWaitFor([&] { return !family->running(); }, 60000)) return nullptr;
+    return family;
+  }
 
 private slots:
   void initTestCase() {
@@ -1887,9 +1939,9 @@ private slots:
 
   // Issue 61 (2): a continuation set up entirely from the GUI -- the continuation tab's fields (the
   // parameter, chosen among the problem's; its end value; the step; the method) -- continues a fixed point
-  // found by a Shift+click, from the map's context menu on it, on Henon-Heiles, whose scene holds no
-  // continuation settings (it used to fail: "give the parameter to continue in"). The straight-line orbit's
-  // point is (0, sqrt(E/2)) at every energy.
+  // found by a Shift+click, from the map's context menu on it, on a scene that holds no continuation settings
+  // (it used to fail: "give the parameter to continue in"). Henon-Heiles: the straight-line orbit's point is
+  // (0, sqrt(E/2)) at every energy.
   void aContinuationIsSetUpFromTheGui() {
     nlohmann::json doc = loadScene(defaultScenePath("henon_heiles")).document;
     doc["poincare"]["points"] = 50;
@@ -1904,15 +1956,8 @@ private slots:
     QCOMPARE(parameter->currentText(), QString()); // the scene's: none
     QVERIFY(to->text().isEmpty());
     QVERIFY(parameter->findText("energy") >= 0); // the problem's parameters, from its table
-    parameter->setCurrentIndex(parameter->findText("energy"));
-    emit parameter->activated(parameter->currentIndex());
-    QTest::keyClicks(to, "0.1");
-    auto* step = qobject_cast<QDoubleSpinBox*>(panel->form("continuation")->editor("step"));
-    auto* method = qobject_cast<QComboBox*>(panel->form("continuation")->editor("method"));
-    QVERIFY(step && method);
-    step->setValue(-0.005);
-    method->setCurrentIndex(method->findText("natural"));
-    QVERIFY(panel->pending());
+    setUpContinuation("energy", "0.1", -0.005, "natural");
+    if (QTest::currentTestFailed()) return;
     const nlohmann::json edited = panel->editedDocument();
     QCOMPARE(edited["continuation"]["parameter"].get<std::string>(), std::string("energy"));
     QCOMPARE(edited["continuation"]["to"].get<double>(), 0.1);
@@ -1920,32 +1965,8 @@ private slots:
     QVERIFY(window_->applyDocument(edited)); // Apply: the map stays (nothing that defines it changed)
     QCOMPARE(map->sceneJobs(), kept);
     QCOMPARE(panel->findChild<QComboBox*>("continuation_parameter")->currentText(), QString("energy"));
-    // Shift+click near the straight-line orbit's point: a search that finds it
-    map->searchFixedPointAt(0.02, 0.23);
-    const int search = map->jobs().jobs().back()->id();
-    QTRY_COMPARE_WITH_TIMEOUT(map->fixedPointsFound(), 1, 60000);
-    // the context menu on the point found offers to continue it (Fit first: the axes held by the click show
-    // what was drawn before the search, which need not reach the point)
-    QVERIFY(QTest::qWaitForWindowExposed(map->window()));
-    map->drain();
-    map->findChild<QPushButton*>("fit_map")->click(); // (the chart lays out when it draws: asked until then)
-    double px = 0, py = 0;
-    QTRY_VERIFY_WITH_TIMEOUT(map->chart().toPixels(0.0, std::sqrt(0.125 / 2), px, py), 60000);
-    const double dpr = map->view()->devicePixelRatioF();
-    const QPoint at(static_cast<int>(std::lround(px / dpr)),
-                    map->view()->height() - static_cast<int>(std::lround(py / dpr)));
-    QCOMPARE(map->fixedPointAt(at), search);
-    QContextMenuEvent menuEvent(QContextMenuEvent::Mouse, at, map->view()->mapToGlobal(at));
-    QApplication::sendEvent(map->view(), &menuEvent);
-    auto* menu = map->findChild<QMenu*>("fixed_point_menu");
-    QVERIFY(menu && !menu->actions().isEmpty());
-    QVERIFY2(menu->actions().front()->text().contains(QString("tool #%1").arg(search)),
-             qPrintable(menu->actions().front()->text()));
-    menu->actions().front()->trigger();
-    menu->close();
-    Job* family = map->jobs().jobs().back();
-    QCOMPARE(family->task().name(), std::string("Continuation"));
-    QTRY_VERIFY_WITH_TIMEOUT(!family->running(), 60000);
+    Job* family = continueAShiftClickedPoint(0.02, 0.23, 0.0, std::sqrt(0.125 / 2));
+    QVERIFY(family);
     QVERIFY2(family->status() == Job::Status::Finished, family->error().c_str());
     // the family, drawn as it came: energy 0.125 down to 0.1 by 0.005, the point at (0, sqrt(E/2))
     QTRY_COMPARE_WITH_TIMEOUT(map->toolPoints(family->id()).size(), std::size_t(6), 60000);
@@ -1953,11 +1974,41 @@ private slots:
     QVERIFY(std::abs(points.back().first) < 1e-8);
     QVERIFY2(std::abs(points.back().second - std::sqrt(0.1 / 2)) < 1e-8,
              qPrintable(QString::number(points.back().second, 'g', 12)));
-    QTRY_VERIFY2_WITH_TIMEOUT(
-        window_->results().contains(
-            QString("(tool #%1) ended: 6 points, energy from 0.125 to 0.1").arg(family->id())),
-        qPrintable(window_->results()), 60000);
+    QTRY_VERIFY2_WITH_TIMEOUT(window_->results().contains(QString("(tool #%1) ended: 6 points, energy from "
+                                                                  "0.125 to 0.1")
+                                                              .arg(family->id())),
+                              qPrintable(window_->results()), 60000);
     QVERIFY(!window_->results().contains(QString("tool %1 (Continuation) failed").arg(family->id())));
+  }
+
+  // Issue 61 (2): the Henon map's fixed point at a = 0 (x = 1/(1 - b)) followed by arclength through its fold
+  // at a = -(1 - b)^2/4 = -0.1225 (x = 2/(1 - b) there) and back along the other branch, set up from the GUI
+  // alone (docs/continuation.md gives the same run on the command line).
+  void anArclengthContinuationFromTheGuiPassesTheFold() {
+    nlohmann::json doc = loadScene(defaultScenePath("henon_map")).document;
+    doc["parameters"] = {{"a", 0.0}, {"b", 0.3}};
+    doc["poincare"]["points"] = 50;
+    doc.erase("continuation");
+    QVERIFY(window_->runDocument(doc));
+    setUpContinuation("a", "-0.5", -0.01, "arclength");
+    if (QTest::currentTestFailed()) return;
+    auto* points = qobject_cast<QSpinBox*>(window_->controlPanel()->form("continuation")->editor("points"));
+    QVERIFY(points);
+    points->setValue(200);
+    QVERIFY(window_->applyDocument(window_->controlPanel()->editedDocument()));
+    Job* family = continueAShiftClickedPoint(1.43, 0.43, 1 / 0.7, 0.3 / 0.7);
+    QVERIFY(family);
+    QVERIFY2(family->status() == Job::Status::Finished, family->error().c_str());
+    MapPanel* map = window_->mapPanel();
+    QTRY_VERIFY_WITH_TIMEOUT(map->toolPoints(family->id()).size() >= 100, 60000);
+    double widest = 0;
+    for (const auto& [x, y] : map->toolPoints(family->id())) {
+      QVERIFY2(std::abs(y - 0.3 * x) < 1e-8, qPrintable(QString("%1 %2").arg(x).arg(y))); // fixed: y = b x
+      widest = std::max(widest, x);
+    }
+    QVERIFY2(widest > 2 / 0.7 + 0.1, qPrintable(QString::number(widest))); // past the fold's x = 2/(1 - b)
+    QTRY_VERIFY2_WITH_TIMEOUT(window_->results().contains("fold at a = -0.1225"),
+                              qPrintable(window_->results()), 60000);
   }
 
   // Issue 43, item 2: the map window's dock floated and docked again still draws its map (a floating dock is
