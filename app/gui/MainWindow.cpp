@@ -690,8 +690,8 @@ ChartWindow* MainWindow::openChartOf(const nlohmann::json& document, const std::
   // every outcome in the Results dock: the numbers a finished chart shows (its failures: the tool manager)
   connect(w, &ChartWindow::finished, this, [this, w, view] {
     if (!w->ready() || !w->failure().isEmpty()) return;
-    if (const QString numbers = numbersOf(*w->drawn());
-        !numbers.isEmpty()) // with its number, as the manager's
+    // with its job's number, as the tool manager lists it
+    if (const QString numbers = numbersOf(*w->drawn()); !numbers.isEmpty())
       report(QString("%1 (tool #%2): %3")
                  .arg(QString::fromStdString(chartTitle(view)))
                  .arg(w->jobId())
