@@ -129,20 +129,38 @@ std::unique_ptr<Chart> spectrumChart(const Scene&, const ToolResult& r) {
 // the history's curves against t, each with its last value in the legend (the number the chart is read for);
 // `curves` picks columns and names them in the legend (empty: every column, by its own name)
 using LegendNames = std::vector<std::pair<std::string, std::string>>; // column, its name in the legend
+/// How a history chart orders its curves in the legend.
+enum class CurveOrder { AsComputed, LargestFirst };
 std::unique_ptr<Chart> historyChart(const ToolResult& r, const std::string& title, const std::string& yTitle,
-                                    const LegendNames& curves) {
+                                    const LegendNames& curves, CurveOrder order = CurveOrder::AsComputed) {
   const auto& t = r.table;
   auto chart = std::make_unique<PoincareChart>("t", yTitle);
-  std::vector<std::vector<double>> ys;
-  std::vector<std::string> names;
+  struct Curve {
+    const std::vector<double>* y;
+    std::string name;
+    double last;
+  };
+  std::vector<Curve> drawn;
   for (std::size_t c = 1; c < t.names.size(); ++c) {
     const auto picked = std::find_if(curves.begin(), curves.end(),
                                      [&](const auto& curve) { return curve.first == t.names[c]; });
     if (!curves.empty() && picked == curves.end()) continue;
-    ys.push_back(t.values[c]);
     const std::string& label = curves.empty() ? t.names[c] : picked->second;
-    names.push_back(format("%s = %.6g", label.c_str(), t.values[c].empty() ? 0.0 : t.values[c].back()));
+    const double last = t.values[c].empty() ? 0.0 : t.values[c].back();
+    drawn.push_back({&t.values[c], format("%s = %.6g", label.c_str(), last), last});
   }
+  // a spectrum: its values at the end, largest first (a finite time's estimates need not come in order; NaN
+  // last)
+  if (order == CurveOrder::LargestFirst) {
+    const auto key = [](const Curve& c) { return std::isnan(c.last) ? -HUGE_VAL : c.last; };
+    std::stable_sort(drawn.begin(), drawn.end(),
+                     [&](const Curve& a, const Curve& b) { return key(a) > key(b); });
+    chart->setLegendOrder("largest first");
+  }
+  std::vector<std::vector<double>> ys;
+  std::vector<std::string> names;
+  for (const Curve& c : drawn)
+    ys.push_back(*c.y), names.push_back(c.name);
   if (!t.names.empty()) drawCurves(*chart, t.values[0], ys, {}, names);
   chart->setTitle(title);
   return chart;
@@ -223,7 +241,7 @@ void registerBuiltinCharts() {
     addToolChart("surface", gridChart);
     addToolChart("ram", gridChart);
     addToolChart("lyapunov", [](const Scene&, const ToolResult& r) {
-      return historyChart(r, "Lyapunov exponents", "Lyapunov exponents", {});
+      return historyChart(r, "Lyapunov exponents", "Lyapunov exponents", {}, CurveOrder::LargestFirst);
     });
     addToolChart("megno", [](const Scene&, const ToolResult& r) {
       return historyChart(r, "MEGNO and FLI", "MEGNO <Y>", {{"megno", "<Y>"}});

@@ -211,6 +211,7 @@ struct TextKey {
   const char* description = ""; ///< what it is (Python's signatures; the flag's help where `flag`)
   const char* type = "text";    ///< text, number or numbers (SectionTextKeys.h)
   bool flag = false;            ///< a flag `--KEY` of the tool's generic command
+  bool parameter = false;       ///< names one of the problem's parameters (SectionTextKeys.h)
 };
 const TextKey textKeys[] = {
     {"section", "poincare", "",
@@ -237,7 +238,7 @@ const TextKey textKeys[] = {
        if (scene.model->info().parameters.find(scene.continuationParameter) < 0)
          w.fail("not a parameter of " + scene.model->info().id);
      },
-     "the model parameter to continue in"},
+     "the model parameter to continue in", "text", false, true},
     {"to", "continuation", "belongs to the \"continuation\" section",
      [](const json& j, const Where& w, Scene& scene) { scene.continuationTo = number(j, w); },
      "the finite value of the parameter", "number"},
@@ -248,7 +249,7 @@ const TextKey textKeys[] = {
        if (scene.model->info().parameters.find(id) < 0)
          w.fail("not a parameter of " + scene.model->info().id);
      },
-     "the second parameter of the curve (the first is continuation.parameter)", "text", true},
+     "the second parameter of the curve (the first is continuation.parameter)", "text", true, true},
     {"level", "grid", "belongs to the \"grid\" section",
      // read where it is used (scenes/GridTools.cpp), from the document; checked here
      [](const json& j, const Where& w, Scene& scene) {
@@ -584,7 +585,8 @@ std::string defaultScenePath(const std::string& problemId) {
 std::vector<SectionTextKey> sectionTextKeys(const std::string& section, bool flagsOnly) {
   std::vector<SectionTextKey> keys;
   for (const auto& t : textKeys)
-    if (section == t.section && (t.flag || !flagsOnly)) keys.push_back({t.key, t.description, t.type});
+    if (section == t.section && (t.flag || !flagsOnly))
+      keys.push_back({t.key, t.description, t.type, t.parameter});
   return keys;
 }
 

@@ -11,6 +11,7 @@ struct SectionTextKey {
   std::string key;         ///< e.g. "second_parameter"
   std::string description; ///< one line, for `--help`
   std::string type;        ///< "text", "number" or "numbers" (an array)
+  bool parameter = false;  ///< a text that names one of the problem's parameters (the GUI offers them)
 };
 
 /// The text keys of scene section `section` (none for most); with flagsOnly, those a generic tool command

@@ -6,6 +6,7 @@
 #include "scenes/SnapshotJson.h"
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -23,6 +24,18 @@ const nlohmann::json& field(const nlohmann::json& j, const char* key, const Wher
   if (!j.contains(key)) w.fail(std::string("the field '") + key + "' is missing");
   return j[key];
 }
+// a tool number as saved (0, or absent in older files: none known)
+int numberField(const nlohmann::json& j, const Where& w) {
+  if (!j.contains("id")) return 0;
+  const double n = number(j["id"], w / "id");
+  if (!(n >= 0 && n <= 1e9) || n != std::floor(n))
+    (w / "id").fail("must be a tool's number: 1, 2, ... (0: none)");
+  return static_cast<int>(n);
+}
+constexpr std::pair<SavedToolOutput::Outcome, const char*> kOutcomes[] = {
+    {SavedToolOutput::Outcome::Finished, "finished"},
+    {SavedToolOutput::Outcome::Stopped, "stopped"},
+    {SavedToolOutput::Outcome::Failed, "failed"}};
 Rgb colourField(const nlohmann::json& j, const Where& w) {
   const auto colour = numbers(field(j, "colour", w), w / "colour");
   if (colour.size() != 3 ||
@@ -44,7 +57,8 @@ nlohmann::json toJson(const SavedTrajectory& t) {
           {"running", t.running},
           {"first", t.first},
           {"last", t.last},
-          {"origin", t.origin}};
+          {"origin", t.origin},
+          {"id", t.id}};
 }
 
 SavedTrajectory savedTrajectoryFromJson(const nlohmann::json& j, const Where& w) {
@@ -66,6 +80,7 @@ SavedTrajectory savedTrajectoryFromJson(const nlohmann::json& j, const Where& w)
   t.last = j.contains("last") ? static_cast<long>(number(j["last"], w / "last")) : 0;
   if (t.first < 1) (w / "first").fail("must be 1 or more");
   t.origin = j.contains("origin") ? text(j["origin"], w / "origin") : std::string{};
+  t.id = numberField(j, w);
   return t;
 }
 
@@ -77,9 +92,19 @@ nlohmann::json toJson(const SavedToolOutput& t) {
       values.push_back({z.real(), z.imag()});
     multipliers.push_back({{"parameter", parameter}, {"multipliers", values}});
   }
-  return {
-      {"name", t.name}, {"summary", t.summary}, {"colour", t.colour},          {"x", t.x},
-      {"y", t.y},       {"found", t.found},     {"fixed_points", multipliers}, {"every_step", t.everyStep}};
+  const char* outcome = "";
+  for (const auto& [o, name] : kOutcomes)
+    if (o == t.outcome) outcome = name;
+  return {{"name", t.name},
+          {"summary", t.summary},
+          {"colour", t.colour},
+          {"x", t.x},
+          {"y", t.y},
+          {"found", t.found},
+          {"fixed_points", multipliers},
+          {"every_step", t.everyStep},
+          {"outcome", outcome},
+          {"id", t.id}};
 }
 
 SavedToolOutput savedToolOutputFromJson(const nlohmann::json& j, const Where& w) {
@@ -94,6 +119,14 @@ SavedToolOutput savedToolOutputFromJson(const nlohmann::json& j, const Where& w)
   if (j.contains("found")) t.found = numbers(j["found"], w / "found");
   if (!t.found.empty() && t.found.size() != 2) (w / "found").fail("must be a point of the map: [x, y]");
   if (j.contains("every_step")) t.everyStep = boolean(j["every_step"], w / "every_step");
+  if (j.contains("outcome")) { // (older files: finished)
+    const std::string outcome = text(j["outcome"], w / "outcome");
+    const auto* o = std::find_if(std::begin(kOutcomes), std::end(kOutcomes),
+                                 [&outcome](const auto& k) { return outcome == k.second; });
+    if (o == std::end(kOutcomes)) (w / "outcome").fail("must be finished, stopped or failed");
+    t.outcome = o->first;
+  }
+  t.id = numberField(j, w);
   if (j.contains("fixed_points")) {
     const auto& list = j["fixed_points"];
     if (!list.is_array()) (w / "fixed_points").fail("must be an array");

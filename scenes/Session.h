@@ -29,12 +29,15 @@ struct SavedTrajectory {
   bool running = false;        ///< it ran when saved: it goes on when opened
   long first = 1, last = 0;    ///< the range of points shown (Set range)
   std::string origin;          ///< where a click started it, in map coordinates ("" for none)
+  int id = 0;                  ///< its number in the tool manager, kept when it is put back (0: none known)
 };
 
 /// What a fixed-point tool of the map drew (a search, a family, a separatrix branch, a bifurcation tree):
 /// kept as drawn, with the fixed points' multipliers; a session opens it as a finished record (not computed
 /// again: a family can take minutes).
 struct SavedToolOutput {
+  /// How its job ended (one that ran when saved is kept as stopped: a record computes nothing more).
+  enum class Outcome { Finished, Stopped, Failed };
   std::string name;    ///< the tool manager's name ("Fixed point", "Continuation", ...)
   std::string summary; ///< its outcome in words, as the Results dock said it
   Rgb colour{0, 0, 0};
@@ -43,6 +46,8 @@ struct SavedToolOutput {
   /// The multipliers of its fixed points, each with the family's parameter (a search: one, parameter 0).
   std::vector<std::pair<double, std::vector<std::complex<double>>>> multipliers;
   bool everyStep = false; ///< a tree: the multipliers filter shows each step (not by its period)
+  Outcome outcome = Outcome::Finished;
+  int id = 0; ///< its number in the tool manager, kept when it is put back (0: none known)
 };
 
 nlohmann::json toJson(const SavedTrajectory& t);

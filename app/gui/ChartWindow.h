@@ -34,6 +34,8 @@ public:
   void cancel();
   /// The job computing the chart (nullptr once deleted from the tool manager).
   Job* job() const;
+  /// Its job's number in the tool manager (kept after the job is deleted).
+  int jobId() const { return jobId_; }
   /// Why the computation failed (empty while running or when it succeeded).
   const QString& failure() const { return failure_; }
   const std::string& viewName() const { return viewName_; }

@@ -5,9 +5,14 @@
 #include "dynamics/tools/ToolRegistry.h"
 #include "dynamics/tools/ToolSettings.h"
 #include "scenes/ModelFile.h"
+#include "scenes/SectionTextKeys.h"
 
 #include <QComboBox>
+#include <QDoubleValidator>
+#include <QFormLayout>
 #include <QLabel>
+#include <QLineEdit>
+#include <QLocale>
 #include <QMenu>
 #include <QPushButton>
 #include <QScrollArea>
@@ -120,9 +125,9 @@ void ControlPanel::setScene(const Scene& scene) {
     if (w != toolsTab_) w->deleteLater();
   }
   forms_.clear();
-  // a tab: an optional chooser above the form of a parameter table
+  // a tab: optional fields above the form of a parameter table
   const auto add = [&](const std::string& key, const QString& title, const ParameterTable& table,
-                       const ParameterValues& values, QComboBox* chooser = nullptr) {
+                       const ParameterValues& values, QWidget* chooser = nullptr) {
     auto* form = new ParameterForm(table);
     connect(form, &ParameterForm::rejected, this, &ControlPanel::message);
     connect(form, &ParameterForm::edited, this, [this] {
@@ -189,25 +194,61 @@ void ControlPanel::setScene(const Scene& scene) {
         add("method", "Method", *scene.integratorEntry->parameters, *scene.integratorParameters, methodBox_);
   }
   tabs_->addTab(toolsTab_, "Tools");
-  observables_.clear();
+  choosers_.clear();
+  numbers_.clear();
   for (const auto& t : toolSections()) {
     if (t.table->size() == 0) continue; // text keys only (the diagram's): the tool's chart window picks them
-    QComboBox* chooser = nullptr;
+    const auto& section = scene.document.value(t.key, nlohmann::json::object());
+    auto* above = new QWidget;
+    auto* fields = new QFormLayout(above);
+    fields->setContentsMargins(4, 0, 4, 0);
+    // a choice among `ids` for text key `key` ("": the scene's default), the scene's value shown
+    const auto choice = [&](const std::string& key, const std::vector<std::string>& ids,
+                            const std::string& tip) {
+      auto* chooser = new QComboBox;
+      chooser->setObjectName(QString::fromStdString(t.key + "_" + key));
+      chooser->addItem("");
+      for (const auto& id : ids)
+        chooser->addItem(QString::fromStdString(id));
+      if (section.contains(key) && section[key].is_string())
+        chooser->setCurrentText(QString::fromStdString(section[key].get<std::string>()));
+      chooser->setToolTip(QString::fromStdString(key + ": " + tip));
+      connect(chooser, &QComboBox::activated, this, [this] { setPending(true); });
+      choosers_.emplace_back(t.key + "." + key, chooser);
+      fields->addRow(QString::fromStdString(key), chooser);
+    };
     // the observable a section names (the Poincare section, the spectrum's function): a flow's observables
     if (!t.observableKey.empty() && !scene.model->isMap()) {
-      chooser = new QComboBox;
-      chooser->setObjectName(QString::fromStdString(t.key + "_" + t.observableKey));
-      chooser->addItem(""); // the scene's default
+      std::vector<std::string> ids;
       for (const auto& o : scene.model->observables())
-        chooser->addItem(QString::fromStdString(o.id));
-      const auto& section = scene.document.value(t.key, nlohmann::json::object());
-      if (section.contains(t.observableKey) && section[t.observableKey].is_string())
-        chooser->setCurrentText(QString::fromStdString(section[t.observableKey].get<std::string>()));
-      chooser->setToolTip(QString::fromStdString(t.observableKey + ": the observable of " + t.title));
-      connect(chooser, &QComboBox::activated, this, [this] { setPending(true); });
-      observables_.emplace_back(t.key + "." + t.observableKey, chooser);
+        ids.push_back(o.id);
+      choice(t.observableKey, ids, "the observable of " + t.title);
     }
-    add(t.key, QString::fromStdString(t.title), *t.table, scene.tool(t.key), chooser);
+    // its settings that are no numbers of its table (continuation.parameter and .to), as the scene loader
+    // declares them: a problem's parameter chosen, a number typed (empty: not set)
+    for (const auto& k : sectionTextKeys(t.key, false)) {
+      if (k.parameter) {
+        std::vector<std::string> ids;
+        for (const auto& spec : scene.model->info().parameters.specs())
+          ids.push_back(spec.id);
+        choice(k.key, ids, k.description);
+      } else if (k.type == "number") {
+        auto* edit = new QLineEdit;
+        edit->setObjectName(QString::fromStdString(t.key + "_" + k.key));
+        auto* valid = new QDoubleValidator(edit);
+        valid->setLocale(QLocale::c());
+        edit->setValidator(valid);
+        if (section.contains(k.key) && section[k.key].is_number())
+          edit->setText(QString::number(section[k.key].get<double>(), 'g', 17));
+        edit->setPlaceholderText("not set");
+        edit->setToolTip(QString::fromStdString(k.key + ": " + k.description));
+        connect(edit, &QLineEdit::textEdited, this, [this] { setPending(true); });
+        numbers_.emplace_back(t.key + "." + k.key, edit);
+        fields->addRow(QString::fromStdString(k.key), edit);
+      }
+    }
+    if (fields->rowCount() == 0) delete above, above = nullptr;
+    add(t.key, QString::fromStdString(t.title), *t.table, scene.tool(t.key), above);
   }
   for (int i = 0; i < tabs_->count(); ++i)
     if (tabs_->tabText(i) == shown) tabs_->setCurrentIndex(i);
@@ -296,11 +337,26 @@ nlohmann::json ControlPanel::editedDocument() const {
         doc[section][id] = v[id];
     }
   }
-  for (const auto& [path, chooser] : observables_) {
-    const std::string section = path.substr(0, path.find('.')), key = path.substr(path.find('.') + 1);
+  const auto split = [](const std::string& path) {
+    return std::pair{path.substr(0, path.find('.')), path.substr(path.find('.') + 1)};
+  };
+  for (const auto& [path, chooser] : choosers_) {
+    const auto [section, key] = split(path);
     const std::string chosen = chooser->currentText().toStdString();
     const auto& old = scene_->document.value(section, nlohmann::json::object());
     if (!chosen.empty() && old.value(key, std::string()) != chosen) doc[section][key] = chosen;
+  }
+  for (const auto& [path, edit] : numbers_) {
+    const auto [section, key] = split(path);
+    const auto& old = scene_->document.value(section, nlohmann::json::object());
+    const QString typed = edit->text().trimmed();
+    bool ok = false;
+    const double value = QLocale::c().toDouble(typed, &ok);
+    if (typed.isEmpty()) { // cleared: not set
+      if (old.contains(key)) doc[section].erase(key);
+    } else if (ok && (!old.contains(key) || !old[key].is_number() || old[key].get<double>() != value)) {
+      doc[section][key] = value;
+    }
   }
   return doc;
 }

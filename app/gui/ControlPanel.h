@@ -10,6 +10,7 @@
 #include <vector>
 
 class QComboBox;
+class QLineEdit;
 class QPushButton;
 class QLabel;
 class QScrollArea;
@@ -77,7 +78,9 @@ private:
   QComboBox* methodBox_ = nullptr;
   QScrollArea* methodScroll_ = nullptr;
   std::vector<std::pair<std::string, ParameterForm*>> forms_;
-  std::vector<std::pair<std::string, QComboBox*>> observables_; ///< "section.key" and its chooser
+  /// "section.key" and its chooser: an observable or a parameter a section names ("": the scene's default)
+  std::vector<std::pair<std::string, QComboBox*>> choosers_;
+  std::vector<std::pair<std::string, QLineEdit*>> numbers_; ///< "section.key" and the number typed there
 };
 
 } // namespace rv

@@ -61,7 +61,8 @@
 namespace rv {
 
 namespace {
-/// The numbers a chart's legend names ("L1 = 0.091", "<Y> = 2.01", ...), joined; empty when it names none.
+/// The numbers a chart's legend names ("L1 = 0.091", "<Y> = 2.01", ...), joined, and in what order where the
+/// legend orders them; empty when it names none.
 QString numbersOf(const Chart& chart) {
   const auto* plane = dynamic_cast<const PoincareChart*>(&chart);
   if (!plane) return {};
@@ -71,7 +72,8 @@ QString numbersOf(const Chart& chart) {
     const QString label = QString::fromStdString(plot->GetLabel());
     if (plot->GetLegendVisibility() && label.contains(" = ")) named << label;
   }
-  return named.join(", ");
+  if (named.isEmpty() || plane->legendOrder().empty()) return named.join(", ");
+  return QString::fromStdString(plane->legendOrder()) + ": " + named.join(", ");
 }
 } // namespace
 
@@ -688,8 +690,13 @@ ChartWindow* MainWindow::openChartOf(const nlohmann::json& document, const std::
   // every outcome in the Results dock: the numbers a finished chart shows (its failures: the tool manager)
   connect(w, &ChartWindow::finished, this, [this, w, view] {
     if (!w->ready() || !w->failure().isEmpty()) return;
+    // with its job's number, as the tool manager lists it
     if (const QString numbers = numbersOf(*w->drawn()); !numbers.isEmpty())
-      report(QString::fromStdString(chartTitle(view)) + ": " + numbers, 8000);
+      report(QString("%1 (tool #%2): %3")
+                 .arg(QString::fromStdString(chartTitle(view)))
+                 .arg(w->jobId())
+                 .arg(numbers),
+             8000);
   });
   // cascaded from the main window's corner, not every window on one spot
   int open = 0;

@@ -17,9 +17,11 @@
 #include <QCheckBox>
 #include <QColor>
 #include <QComboBox>
+#include <QContextMenuEvent>
 #include <QElapsedTimer>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QMenu>
 #include <QMouseEvent>
 #include <QPushButton>
 #include <QVBoxLayout>
@@ -224,6 +226,7 @@ std::vector<SavedTrajectory> MapPanel::saveTrajectories(const std::vector<int>& 
     t.running = running;
     t.first = s.first, t.last = s.last;
     t.origin = s.origin.toStdString();
+    t.id = s.job->id();
     out.push_back(std::move(t));
     if (goOn && running) s.job->start();
   }
@@ -267,7 +270,7 @@ int MapPanel::restoreTrajectories(const std::vector<SavedTrajectory>& saved) {
   for (std::size_t n = 0; n < saved.size(); ++n) {
     const SavedTrajectory& t = saved[n];
     PoincareTask* raw = tasks[n].get();
-    Job& job = jobs_.add(std::move(tasks[n]));
+    Job& job = jobs_.add(std::move(tasks[n]), nullptr, t.id); // its number, where it is free
     const int plot = chart_->addSeries({}, {}, t.colour);
     series_.push_back({&job, raw, t.x, t.y, t.z, plot, t.colour});
     Series& s = series_.back();
@@ -476,13 +479,17 @@ bool MapPanel::drain() {
       applyColour(s);
       changed = true;
       // <Y> near 2 is a torus; on a chaotic orbit it grows like lambda t / 2 (the rate tends to lambda)
-      emit message(QString("trajectory #%1: MEGNO <Y> = %2 at t = %3, rate %4")
+      emit message(QString("MEGNO (tool #%1) of trajectory #%2: <Y> = %3 at t = %4, rate %5")
+                       .arg(s.megnoJob->id())
                        .arg(s.job->id())
                        .arg(last.megno, 0, 'g', 6)
                        .arg(last.time, 0, 'g', 6)
                        .arg(last.megnoRate, 0, 'g', 4));
     } else if (s.megnoJob->status() == Job::Status::Failed) {
-      emit message(QString::fromStdString("MEGNO: " + s.megnoJob->error()));
+      emit message(QString("MEGNO (tool #%1) of trajectory #%2 failed: %3")
+                       .arg(s.megnoJob->id())
+                       .arg(s.job->id())
+                       .arg(QString::fromStdString(s.megnoJob->error())));
       s.megnoValue = std::numeric_limits<double>::quiet_NaN(); // reported once; drawn in its own colour
     }
   }
@@ -620,6 +627,20 @@ bool MapPanel::eventFilter(QObject* watched, QEvent* event) {
   }
   if (watched == view_ && event->type() == QEvent::Leave) cursorLabel_->clear();
   if (watched == view_ && chart_ && event->type() == QEvent::Wheel) chart_->holdRanges(); // a zoom stays
+  if (watched == view_ && event->type() == QEvent::ContextMenu && chart_) { // on a fixed point found
+    const auto* e = static_cast<QContextMenuEvent*>(event);
+    if (const int id = fixedPointAt(e->pos()); id >= 0) {
+      auto* menu = new QMenu(this);
+      menu->setObjectName("fixed_point_menu");
+      menu->setAttribute(Qt::WA_DeleteOnClose);
+      menu->addAction(QString("Continue this fixed point (tool #%1)").arg(id), this,
+                      [this, id] { continueFixedPoint(id); })
+          ->setToolTip(
+              "its family in the parameter of the control panel's continuation tab, to its end value");
+      menu->popup(e->globalPos());
+      return true;
+    }
+  }
   if (watched == view_ && event->type() == QEvent::MouseButtonPress && chart_) {
     auto* e = static_cast<QMouseEvent*>(event);
     const bool ctrl = e->modifiers() & Qt::ControlModifier, shift = e->modifiers() & Qt::ShiftModifier;

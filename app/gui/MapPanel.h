@@ -73,6 +73,13 @@ public:
   /// Continues the scene's fixed point (its continuation settings); the family is drawn on the map and each
   /// change of type reported.
   void startContinuation();
+  /// Continues the fixed point search `id` found (a Shift+click's) with the scene's continuation settings
+  /// (the control panel's continuation tab: parameter, end value, step, method); false (with a message)
+  /// when that search found no point. The map's context menu on a found point offers it.
+  bool continueFixedPoint(int id);
+  /// The search whose fixed point is drawn within a few pixels of the view's pixel `at` (Qt's, from the top
+  /// left), or -1: what the map's context menu offers to continue.
+  int fixedPointAt(const QPoint& at) const;
   /// The period doublings the last continuation of the scene's fixed point located, in the order found, each
   /// as "period doubling at a = ...": where followDoubledFamily(k) can switch.
   const std::vector<QString>& locatedDoublings() const { return doublings_; }

@@ -15,6 +15,7 @@
 #include "scenes/ToolTask.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace rv {
 
@@ -77,6 +78,35 @@ void MapPanel::startSeparatrices() {
 
 void MapPanel::startContinuation() {
   startMapRows("continuation", {}, "continuing the scene's fixed point");
+}
+
+bool MapPanel::continueFixedPoint(int id) {
+  const auto s =
+      std::find_if(searches_.begin(), searches_.end(), [id](const Search& s) { return s.job->id() == id; });
+  if (s == searches_.end() || s->foundAt.empty()) {
+    emit message(QString("tool #%1 found no fixed point to continue").arg(id));
+    return false;
+  }
+  const std::vector<double> point = mapPoint(s->foundAt[0], s->foundAt[1]);
+  startMapRows("continuation", {{"fixedpoint.guess", nlohmann::json(point).dump()}},
+               QString("continuing the fixed point tool #%1 found, (%2, %3)")
+                   .arg(id)
+                   .arg(s->foundAt[0], 0, 'g', 10)
+                   .arg(s->foundAt[1], 0, 'g', 10));
+  return true;
+}
+
+int MapPanel::fixedPointAt(const QPoint& at) const {
+  const double dpr = view_->devicePixelRatioF();
+  const double ax = at.x() * dpr, ay = (view_->height() - at.y()) * dpr, near = 8 * dpr;
+  int best = -1;
+  double closest = near;
+  for (const auto& s : searches_) {
+    double px, py;
+    if (s.foundAt.empty() || !chart_->toPixels(s.foundAt[0], s.foundAt[1], px, py)) continue;
+    if (const double d = std::hypot(px - ax, py - ay); d <= closest) closest = d, best = s.job->id();
+  }
+  return best;
 }
 
 void MapPanel::startBifurcationTree() {
@@ -299,26 +329,51 @@ int MapPanel::fixedPointsFound() const {
 }
 
 namespace {
-/// A tool's output as a session or Undo kept it: drawn already, nothing to compute.
+/// A tool's output as a session or Undo kept it: drawn already, nothing to compute; its job ends as the
+/// tool's did (a failure with its outcome in words as the reason).
 class RecordedTask final : public Task {
 public:
-  RecordedTask(std::string name, std::string summary)
-      : name_(std::move(name)), summary_(std::move(summary)) {}
+  RecordedTask(std::string name, std::string summary, SavedToolOutput::Outcome outcome)
+      : name_(std::move(name)), summary_(std::move(summary)), outcome_(outcome) {}
   std::string name() const override { return name_; }
   std::string describe() const override { return "restored from a saved record: " + summary_; }
-  bool run(const ToolControl&) override { return true; }
+  bool run(const ToolControl&) override {
+    if (outcome_ == SavedToolOutput::Outcome::Failed) throw ComputationError(summary_);
+    return outcome_ == SavedToolOutput::Outcome::Finished;
+  }
   void reset() override {}
+  bool isRecord() const override { return true; }
 
 private:
   std::string name_, summary_;
+  SavedToolOutput::Outcome outcome_;
 };
+
+/// How a tool's job ended, as a record keeps it (one running is kept as stopped).
+SavedToolOutput::Outcome outcomeOf(const Job& j) {
+  switch (j.status()) {
+  case Job::Status::Finished:
+    return SavedToolOutput::Outcome::Finished;
+  case Job::Status::Failed:
+    return SavedToolOutput::Outcome::Failed;
+  default:
+    return SavedToolOutput::Outcome::Stopped;
+  }
+}
 } // namespace
 
 std::vector<SavedToolOutput> MapPanel::saveToolOutputs(const std::vector<int>& ids) const {
   const auto wanted = [&ids](const Job* j) { return ids.empty() || std::ranges::count(ids, j->id()) > 0; };
   const auto sofar = [](const Job* j, std::size_t points) {
+    const QString name = QString::fromStdString(j->task().name());
+    if (j->status() == Job::Status::Failed) // (a record's reason is its outcome in words already)
+      return j->task().isRecord() ? QString::fromStdString(j->error())
+                                  : QString("%1 (tool #%2) failed: %3")
+                                        .arg(name)
+                                        .arg(j->id())
+                                        .arg(QString::fromStdString(j->error()));
     return QString("%1 (tool #%2): %3 points so far, %4 when saved")
-        .arg(QString::fromStdString(j->task().name()))
+        .arg(name)
         .arg(j->id())
         .arg(points)
         .arg(j->running() ? "running" : "stopped");
@@ -326,7 +381,8 @@ std::vector<SavedToolOutput> MapPanel::saveToolOutputs(const std::vector<int>& i
   std::vector<SavedToolOutput> out;
   for (const auto& s : searches_) {
     if (!wanted(s.job)) continue;
-    SavedToolOutput o{s.job->task().name(), {}, kSearchColour, s.x, s.y, s.foundAt, {}, false};
+    SavedToolOutput o{s.job->task().name(), {},         kSearchColour, s.x, s.y, s.foundAt, {}, false,
+                      outcomeOf(*s.job),    s.job->id()};
     o.summary = (s.reported ? s.caption : sofar(s.job, s.x.size())).toStdString();
     if (s.reported && s.caption.isEmpty()) o.summary = "fixed point: " + s.job->error();
     if (!s.multipliers.empty()) o.multipliers.emplace_back(0.0, s.multipliers);
@@ -342,15 +398,17 @@ std::vector<SavedToolOutput> MapPanel::saveToolOutputs(const std::vector<int>& i
                    t.y,
                    {},
                    t.multipliers,
-                   t.everyStep});
+                   t.everyStep,
+                   outcomeOf(*t.job),
+                   t.job->id()});
   }
   return out;
 }
 
 void MapPanel::restoreToolOutputs(const std::vector<SavedToolOutput>& saved) {
   for (const auto& o : saved) {
-    Job& job = jobs_.add(std::make_unique<RecordedTask>(o.name, o.summary));
-    job.start(); // finishes at once: a record
+    Job& job = jobs_.add(std::make_unique<RecordedTask>(o.name, o.summary, o.outcome), nullptr, o.id);
+    job.start(); // ends at once as the tool did: a record
     const QString summary = QString::fromStdString(o.summary);
     if (!o.found.empty()) { // a search that found its point: its path, its steps and the point's cross
       Search s{&job,

@@ -123,7 +123,8 @@ void ToolManager::refresh() {
     if (j->status() == Job::Status::Failed) {
       const QString why = inGuiWords(j->error());
       status += ": " + why;
-      if (failuresSaid_.insert(j->id()).second) // every outcome reaches the Results dock, a failure with why
+      // every outcome reaches the Results dock, a failure with why (a record's was said when it failed)
+      if (failuresSaid_.insert(j->id()).second && !j->task().isRecord())
         emit message(QString("tool %1 (%2) failed: %3")
                          .arg(j->id())
                          .arg(QString::fromStdString(j->task().name()), why));

@@ -9,10 +9,21 @@ JobTree::~JobTree() {
   removeAll();
 }
 
-Job& JobTree::add(std::unique_ptr<Task> task, Job* parent) {
-  jobs_.push_back(std::make_unique<Job>(nextId_++, std::move(task), parent));
-  jobs_.back()->pauseAt(std::exchange(pauseNext_, std::numeric_limits<double>::infinity()));
-  return *jobs_.back();
+Job& JobTree::add(std::unique_ptr<Task> task, Job* parent, int number) {
+  const bool free = number > 0 && !find(number) && !windowIds_.contains(number);
+  const int id = free ? number : nextId_;
+  nextId_ = std::max(nextId_, id + 1);
+  if (task->ownsItsScene()) windowIds_.insert(id);
+  // by number, after its parent (a new job's number is the largest: it goes last)
+  auto at = std::find_if(jobs_.begin(), jobs_.end(), [id](const auto& j) { return j->id() > id; });
+  if (parent) {
+    const auto p =
+        std::find_if(jobs_.begin(), jobs_.end(), [parent](const auto& j) { return j.get() == parent; });
+    if (p != jobs_.end() && at <= p) at = p + 1;
+  }
+  at = jobs_.insert(at, std::make_unique<Job>(id, std::move(task), parent));
+  (*at)->pauseAt(std::exchange(pauseNext_, std::numeric_limits<double>::infinity()));
+  return **at;
 }
 
 std::vector<Job*> JobTree::children(const Job& job) const {

@@ -6,6 +6,7 @@
 
 #include <limits>
 #include <memory>
+#include <set>
 #include <vector>
 
 namespace rv {
@@ -13,8 +14,11 @@ namespace rv {
 class JobTree {
 public:
   ~JobTree();
-  /// Adds a job (not started) under `parent` (nullptr: a root).
-  Job& add(std::unique_ptr<Task> task, Job* parent = nullptr);
+  /// Adds a job (not started) under `parent` (nullptr: a root). `number` > 0 asks for that id: a job put back
+  /// (Undo, a session) keeps the number the user knows it by. It is given when no job has it and it never
+  /// went to a job that owns its scene (a window holds that number); else the next number is. The jobs are
+  /// listed by number, each after its parent.
+  Job& add(std::unique_ptr<Task> task, Job* parent = nullptr, int number = 0);
   /// The next job added pauses once its progress reaches `fraction` (Job::pauseAt, set before anything can
   /// start it): for scripts and tests that stop a job a front end creates and starts at once.
   void pauseNextAt(double fraction) { pauseNext_ = fraction; }
@@ -31,6 +35,7 @@ public:
 private:
   std::vector<std::unique_ptr<Job>> jobs_;
   int nextId_ = 1;
+  std::set<int> windowIds_; ///< numbers given to jobs that own their scene: never given again
   double pauseNext_ = std::numeric_limits<double>::infinity();
 };
 

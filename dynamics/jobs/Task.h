@@ -40,6 +40,9 @@ public:
   /// Whether it computes from a scene of its own and belongs to a window (a chart, a sweep), so that another
   /// scene in the main window leaves it be; the map's tools (false) belong to the scene shown.
   virtual bool ownsItsScene() const { return false; }
+  /// Whether it only stands for an outcome computed earlier (a session or Undo put it back): its failure was
+  /// said when it happened.
+  virtual bool isRecord() const { return false; }
 };
 
 } // namespace rv

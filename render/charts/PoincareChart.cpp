@@ -423,6 +423,18 @@ bool PoincareChart::toChart(double px, double py, double& x, double& y) const {
   return true;
 }
 
+bool PoincareChart::toPixels(double x, double y, double& px, double& py) const {
+  const int* p1 = chart_->GetPoint1();
+  const int* p2 = chart_->GetPoint2();
+  vtkAxis* ax = chart_->GetAxis(vtkAxis::BOTTOM);
+  vtkAxis* ay = chart_->GetAxis(vtkAxis::LEFT);
+  const double wx = ax->GetMaximum() - ax->GetMinimum(), wy = ay->GetMaximum() - ay->GetMinimum();
+  if (wx == 0 || wy == 0) return false;
+  px = p1[0] + (x - ax->GetMinimum()) / wx * (p2[0] - p1[0]);
+  py = p1[1] + (y - ay->GetMinimum()) / wy * (p2[1] - p1[1]);
+  return px >= p1[0] && px <= p2[0] && py >= p1[1] && py <= p2[1];
+}
+
 void PoincareChart::select(int index) {
   for (vtkIdType i = 0; i < chart_->GetNumberOfPlots(); ++i)
     if (auto* points = vtkPlotPoints::SafeDownCast(chart_->GetPlot(i)))

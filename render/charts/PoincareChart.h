@@ -60,12 +60,18 @@ public:
   void setTitle(const std::string& title);
   /// Names series `index` in the chart's legend (shown once a series has a name; unnamed ones are left out).
   void setLegend(int index, const std::string& name);
+  /// How the legend orders its entries, in words ("largest first"; empty: as they were added): what a front
+  /// end that reads the legend's numbers out says with them.
+  void setLegendOrder(std::string order) { legendOrder_ = std::move(order); }
+  const std::string& legendOrder() const { return legendOrder_; }
   /// Puts the legend in the plot area's top left corner (the default is the top right).
   void legendTopLeft();
   /// Removes every series.
   void clear();
   /// Map coordinates of a point of the scene (pixels from the bottom left); false outside the plot area.
   bool toChart(double px, double py, double& x, double& y) const override;
+  /// The pixel (from the bottom left) of chart point (x, y); false outside the plot area.
+  bool toPixels(double x, double y, double& px, double& py) const;
   /// Draws series `index` emphasised (-1: none).
   void select(int index);
   /// Draws into `window` (the chart's view takes it over).
@@ -80,6 +86,7 @@ public:
   bool changedSincePainted() const;
 
 private:
+  std::string legendOrder_;
   vtkSmartPointer<vtkContextView> view_;
   vtkSmartPointer<vtkChartXY> chart_;
   /// Series too big to draw point by point on software GL: redrawn as one point per occupied cell of the

@@ -242,6 +242,38 @@ TEST(JobTree, ToolsHangUnderTheirTrajectoryAndGoWithIt) {
   EXPECT_TRUE(tree.jobs().empty());
 }
 
+// issue 61 (3): a job put back (Undo, a session) keeps its number; a number a window's job had is never given
+// again (the window finds its job by it); the tree lists the jobs by number, each after its parent
+TEST(JobTree, AJobPutBackKeepsItsNumber) {
+  class WindowTask : public CountingTask {
+  public:
+    bool ownsItsScene() const override { return true; }
+  };
+  JobTree tree;
+  Job& a = tree.add(std::make_unique<CountingTask>());
+  Job& b = tree.add(std::make_unique<CountingTask>());
+  Job& chart = tree.add(std::make_unique<WindowTask>());
+  Job& c = tree.add(std::make_unique<CountingTask>(), &a);
+  EXPECT_EQ(std::vector<int>({a.id(), b.id(), chart.id(), c.id()}), std::vector<int>({1, 2, 3, 4}));
+  tree.remove(b);
+  tree.remove(chart);
+  EXPECT_EQ(tree.add(std::make_unique<CountingTask>(), nullptr, 2).id(), 2); // put back: its number
+  const auto ids = [&tree] {
+    std::vector<int> out;
+    for (const Job* j : tree.jobs())
+      out.push_back(j->id());
+    return out;
+  };
+  EXPECT_EQ(ids(), std::vector<int>({1, 2, 4}));
+  EXPECT_EQ(tree.add(std::make_unique<CountingTask>(), nullptr, 2).id(), 5); // taken: the next number
+  EXPECT_EQ(tree.add(std::make_unique<CountingTask>(), nullptr, 3).id(), 6); // a window's: never again
+  EXPECT_EQ(tree.add(std::make_unique<CountingTask>(), nullptr, 9).id(), 9); // a saved one from a session
+  EXPECT_EQ(tree.add(std::make_unique<CountingTask>()).id(), 10);            // new ones go on from there
+  EXPECT_EQ(ids(), std::vector<int>({1, 2, 4, 5, 6, 9, 10}));
+  EXPECT_EQ(tree.add(std::make_unique<CountingTask>(), tree.find(10), 7).id(), 7);
+  EXPECT_EQ(ids(), std::vector<int>({1, 2, 4, 5, 6, 9, 10, 7})) << "a child after its parent";
+}
+
 TEST(JobTree, StressManyJobsInRandomOrder) {
   JobTree tree;
   std::mt19937 rng(42);
