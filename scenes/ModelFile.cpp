@@ -4,6 +4,7 @@
 #include "dynamics/models/EquationModel.h"
 #include "scenes/JsonFields.h"
 #include "scenes/ModelCompiler.h"
+#include "scenes/RollingModel.h"
 #include "scenes/SceneLoader.h"
 
 #include <algorithm>
@@ -366,12 +367,30 @@ const ModelEntry& entryOf(const std::string& key, const std::string& file, const
   const std::lock_guard lock(loadedMutex());
   for (const Loaded& l : loaded())
     if (l.key == key) return l.entry;
-  EquationModelSpec spec = Reader(doc, ordered, source).read();
   std::shared_ptr<const EquationSystem> system;
-  try {
-    system = EquationSystem::build(std::move(spec));
-  } catch (const InputError& e) {
-    throw InputError(source + ":" + e.what());
+  if (isRollingModel(doc)) { // derived equations (RollingModel.h); errors named at the field the user wrote
+    const RollingEquations rolling = rollingEquations(doc, ordered, source);
+    const json derived = json::parse(rolling.model.dump());
+    const auto atTheUsersField = [&](std::string what) {
+      for (const auto& [generated, written] : rolling.origins)
+        for (const std::string& form : {":" + generated + ":", ":" + generated + " "})
+          if (const auto at = what.find(form); at != std::string::npos)
+            what.replace(at + 1, generated.size(), written);
+      return what;
+    };
+    try {
+      system = EquationSystem::build(Reader(derived, &rolling.model, source).read());
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      throw InputError(atTheUsersField(what.rfind(source + ":", 0) == 0 ? what : source + ":" + what));
+    }
+  } else {
+    EquationModelSpec spec = Reader(doc, ordered, source).read();
+    try {
+      system = EquationSystem::build(std::move(spec));
+    } catch (const InputError& e) {
+      throw InputError(source + ":" + e.what());
+    }
   }
   Loaded& l = loaded().emplace_back(Loaded{key, file, system, {}, doc.value("initial", json())});
   l.entry.info = &system->info();

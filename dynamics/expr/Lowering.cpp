@@ -1,5 +1,8 @@
 #include "dynamics/expr/Lowering.h"
 
+#include "dynamics/expr/Derivative.h"
+
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -33,8 +36,9 @@ const std::vector<std::string>& functionNames() {
     for (const auto& [name, op] : scalarFunctions())
       v.push_back(name);
     for (const char* n :
-         {"atan2", "pow", "min", "max", "vec", "rows", "cols", "diag", "identity", "dot", "cross", "norm",
-          "normalize", "outer", "transpose", "inverse", "solve", "det", "trace"})
+         {"atan2",    "pow", "min",   "max",        "vec",       "rows",    "cols",      "diag",
+          "identity", "dot", "cross", "norm",       "normalize", "outer",   "transpose", "inverse",
+          "solve",    "det", "trace", "derivative", "gradient",  "jacobian"})
       v.emplace_back(n);
     return v;
   }();
@@ -300,6 +304,39 @@ Value Lowering::call(const Expression& e, const Node& n) {
     for (int i = 0; i < args[0].rows; ++i)
       s = g_.make(Op::Add, s, args[0].at(i, i));
     return Value::of(s);
+  }
+  if (n.name == "derivative" || n.name == "gradient" || n.name == "jacobian") {
+    // exact derivatives through the graph (Derivative.h): derivative(f, x, v) is f's rate when x moves at
+    // the rate v; gradient(f, x) and jacobian(f, x) take x's components one by one
+    const bool along = n.name == "derivative";
+    argc(along ? 3 : 2);
+    const Value& x = args[1];
+    for (std::size_t i = 0; i < x.n.size(); ++i)
+      need(1, !g_.isConstant(x.n[i]) && std::count(x.n.begin(), x.n.end(), x.n[i]) == 1,
+           "variables (state components or expressions of them, each once), not constants");
+    if (along) {
+      need(2, args[2].rows == x.rows && args[2].cols == x.cols, "the shape of argument 2");
+      std::vector<std::pair<int, int>> seeds;
+      for (std::size_t i = 0; i < x.n.size(); ++i)
+        seeds.emplace_back(x.n[i], args[2].n[i]);
+      Value r = args[0];
+      r.n = directionalDerivative(g_, args[0].n, seeds);
+      return r;
+    }
+    const bool gradient = n.name == "gradient";
+    need(0, gradient ? args[0].scalar() : isVector(args[0]), gradient ? "a scalar" : "a vector");
+    need(1, isVector(x), "a vector");
+    const int rows = gradient ? x.rows : args[0].rows, cols = gradient ? 1 : x.rows;
+    Value r{rows, cols, std::vector<int>(idx(rows * cols))};
+    for (int j = 0; j < x.rows; ++j) {
+      const std::vector<int> d = directionalDerivative(g_, args[0].n, {{x.n[idx(j)], g_.constant(1)}});
+      if (gradient)
+        r.n[idx(j)] = d[0];
+      else
+        for (int i = 0; i < rows; ++i)
+          r.n[idx(i * cols + j)] = d[idx(i)];
+    }
+    return r;
   }
   const std::string near = nearestName(n.name, functionNames());
   throw ExprError(n.column, "unknown function '" + n.name + "'" +

@@ -1,0 +1,462 @@
+#include "scenes/RollingModel.h"
+
+#include "dynamics/core/Errors.h"
+#include "scenes/JsonFields.h"
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+namespace rv {
+
+using nlohmann::json;
+using nlohmann::ordered_json;
+
+bool isRollingModel(const json& doc) {
+  return doc.is_object() && doc.contains("kind") && doc["kind"] == "rolling";
+}
+
+namespace {
+
+enum class Contact { Marble, Rubber, Sliding };
+
+/// The contact point s(gamma) of a named shape, relative to the shape's own origin, where the body's outward
+/// normal is -gamma (the inverse Gauss map), as an expression of gamma and the body_* size definitions; and
+/// how the 3D view draws the shape.
+struct Shape {
+  std::string contact;
+  ordered_json view;
+};
+
+class Generator {
+public:
+  Generator(const json& doc, const ordered_json* ordered, std::string source)
+      : doc_(doc), ordered_(ordered), root_{std::move(source), ""} {}
+
+  RollingEquations run() {
+    requireObject(doc_, root_);
+    onlyKeys(doc_, root_,
+             {"id",      "title",   "reference", "description", "kind",    "parameters", "definitions",
+              "body",    "support", "contact",   "friction",    "gravity", "potential",  "observables",
+              "section", "map",     "complete",  "initial",     "view",    "measure"});
+    for (const char* key :
+         {"id", "title", "reference", "description", "parameters", "section", "map", "initial", "measure"})
+      if (doc_.contains(key)) out_[key] = source(key);
+    out_["kind"] = "flow";
+    readContact();
+    readSupport();
+    readBody();
+    userDefinitions();
+    if (contact_ == Contact::Sliding)
+      sliding();
+    else
+      rolling();
+    observables();
+    view();
+    RollingEquations r;
+    r.model = std::move(out_);
+    r.origins = std::move(origins_);
+    return r;
+  }
+
+private:
+  /// The description's value at `key` (from the root), with its own key order when known.
+  ordered_json source(const std::string& key) const {
+    if (ordered_ && ordered_->contains(key)) return (*ordered_)[key];
+    return ordered_json::parse(doc_[key].dump());
+  }
+
+  /// An expression the user wrote (a string, or a number), under a generated definition `name`.
+  void userExpression(const std::string& name, const json& j, const Where& w) {
+    std::string e;
+    if (j.is_number())
+      e = j.dump();
+    else if (j.is_string())
+      e = j.get<std::string>();
+    else
+      w.fail("expected an expression (a string or a number)");
+    define(name, e);
+    origins_.emplace_back("definitions." + name, w.path);
+  }
+
+  void define(const std::string& name, const std::string& expression) {
+    out_["definitions"][name] = expression;
+    generated_.insert(name);
+  }
+
+  void readContact() {
+    const std::string c = doc_.contains("contact") ? text(doc_["contact"], root_ / "contact") : "marble";
+    if (c == "marble")
+      contact_ = Contact::Marble;
+    else if (c == "rubber")
+      contact_ = Contact::Rubber;
+    else if (c == "sliding")
+      contact_ = Contact::Sliding;
+    else
+      (root_ / "contact")
+          .fail("expected \"marble\" (rolling without slipping), \"rubber\" (without slipping and without "
+                "spinning about the normal) or \"sliding\" (viscous friction at the contact)");
+    if (contact_ == Contact::Sliding) {
+      if (!doc_.contains("friction"))
+        root_.fail("missing \"friction\": a sliding contact needs its viscous friction coefficient mu "
+                   "(the force -mu v at the contact point)");
+      userExpression("friction_mu", doc_["friction"], root_ / "friction");
+    } else if (doc_.contains("friction")) {
+      (root_ / "friction").fail("only a \"sliding\" contact has friction (a rolling one does no work)");
+    }
+    userExpression("gravity_g", doc_.contains("gravity") ? doc_["gravity"] : json(0), root_ / "gravity");
+    if (doc_.contains("potential")) {
+      userExpression("potential_U", doc_["potential"], root_ / "potential");
+      potential_ = true;
+    }
+  }
+
+  void readSupport() {
+    if (!doc_.contains("support")) return;
+    const Where w = root_ / "support";
+    const json& s = doc_["support"];
+    const std::string name =
+        s.is_object() && s.contains("surface") ? text(s["surface"], w / "surface") : text(s, w);
+    if (name != "plane")
+      w.fail(
+          "the support '" + name +
+          "' is not derived yet: a rolling model rolls on the \"plane\" (a ball on a curved support is the "
+          "built-in ball_on_ellipsoid and ball_on_paraboloid)");
+  }
+
+  void readBody() {
+    const Where w = root_ / "body";
+    if (!doc_.contains("body")) root_.fail("missing \"body\" (its shape, sizes, mass and inertia)");
+    const json& b = requireObject(doc_["body"], w);
+    onlyKeys(b, w,
+             {"shape", "radius", "semi_axes", "p", "q", "height", "centre", "mass", "inertia",
+              "principal_axes", "gyrostat", "axis"});
+    if (!b.contains("shape")) w.fail("missing \"shape\" (sphere, ellipsoid, paraboloid or disk)");
+    shape_ = text(b["shape"], w / "shape");
+    const auto need = [&](const char* key, const std::string& name) {
+      if (!b.contains(key)) w.fail("a " + shape_ + " needs \"" + key + "\"");
+      userExpression(name, b[key], w / key);
+    };
+    Shape s;
+    if (shape_ == "sphere") {
+      need("radius", "body_radius");
+      s.contact = "-body_radius*gamma";
+      s.view = {{"body", "ball"}, {"radius", "body_radius"}};
+    } else if (shape_ == "ellipsoid") {
+      need("semi_axes", "body_semi_axes");
+      define("body_axes_squared", "diag(body_semi_axes)*diag(body_semi_axes)");
+      s.contact = "-(body_axes_squared*gamma)/sqrt(dot(gamma, body_axes_squared*gamma))";
+      s.view = {{"body", "ellipsoid"}, {"semi_axes", "body_semi_axes"}};
+    } else if (shape_ ==
+               "paraboloid") { // z = x^2/(2p) + y^2/(2q), the vertex at the origin, opening along +3
+      need("p", "body_p");
+      need("q", "body_q");
+      s.contact = "[-body_p*gamma[1]/gamma[3], -body_q*gamma[2]/gamma[3], "
+                  "(body_p*gamma[1]^2 + body_q*gamma[2]^2)/(2*gamma[3]^2)]";
+      s.view = {{"body", "paraboloid"}, {"p", "body_p"}, {"q", "body_q"}};
+      if (b.contains("height")) {
+        userExpression("body_height", b["height"], w / "height");
+        s.view["height"] = "body_height";
+      } else {
+        s.view["height"] = "2*max(body_p, body_q)";
+      }
+    } else if (shape_ == "disk") { // a thin disk in the plane of axes 1, 2, touching with its edge
+      need("radius", "body_radius");
+      s.contact = "-(body_radius/sqrt(gamma[1]^2 + gamma[2]^2))*[gamma[1], gamma[2], 0]";
+      s.view = {{"body", "ellipsoid"}, {"semi_axes", "[body_radius, body_radius, body_radius/40]"}};
+    } else {
+      (w / "shape").fail("expected \"sphere\", \"ellipsoid\", \"paraboloid\" or \"disk\"");
+    }
+    for (const char* key : {"radius", "semi_axes", "p", "q", "height"})
+      if (b.contains(key) && !out_["definitions"].contains(std::string("body_") + key))
+        (w / key).fail("a " + shape_ + " has no \"" + key + "\"");
+    shapeContact_ = s.contact;
+    shapeView_ = s.view;
+    if (b.contains("centre"))
+      userExpression("body_centre", b["centre"], w / "centre");
+    else
+      define("body_centre", "[0, 0, 0]");
+    if (!b.contains("mass")) w.fail("missing \"mass\"");
+    userExpression("body_mass", b["mass"], w / "mass");
+    if (!b.contains("inertia"))
+      w.fail("missing \"inertia\" (the central principal moments [I1, I2, I3], or the tensor as a matrix)");
+    const json& I = b["inertia"];
+    if (I.is_array()) { // principal moments, along the body axes or along the rows of principal_axes
+      if (I.size() != 3) (w / "inertia").fail("expected three principal moments");
+      std::string moments;
+      for (std::size_t i = 0; i < 3; ++i) {
+        const std::string name = "body_I" + std::to_string(i + 1);
+        userExpression(name, I[i], w / "inertia" / std::to_string(i));
+        moments += (i ? ", " : "") + name;
+      }
+      if (b.contains("principal_axes")) {
+        userExpression("body_principal_axes", b["principal_axes"], w / "principal_axes");
+        define("body_inertia", "transpose(body_principal_axes)*diag(" + moments + ")*body_principal_axes");
+      } else {
+        define("body_inertia", "diag(" + moments + ")");
+      }
+    } else {
+      if (b.contains("principal_axes"))
+        (w / "principal_axes").fail("principal axes go with three principal moments, not a full tensor");
+      userExpression("body_inertia", I, w / "inertia");
+    }
+    if (b.contains("gyrostat")) {
+      userExpression("body_gyrostat", b["gyrostat"], w / "gyrostat");
+      gyrostat_ = true;
+    }
+    if (b.contains("axis")) {
+      userExpression("body_axis", b["axis"], w / "axis");
+      axis_ = true;
+    }
+  }
+
+  /// The user's definitions, after checking none takes a name the derivation uses.
+  void userDefinitions() {
+    static const std::set<std::string> names{"M",
+                                             "gamma",
+                                             "alpha",
+                                             "beta",
+                                             "omega",
+                                             "v",
+                                             "x",
+                                             "y",
+                                             "r",
+                                             "dr",
+                                             "dgamma",
+                                             "A",
+                                             "A_gamma",
+                                             "omega_free",
+                                             "contact_s",
+                                             "potential",
+                                             "dM_free",
+                                             "dA_omega",
+                                             "spin_couple",
+                                             "v_contact",
+                                             "v_slip",
+                                             "friction_force",
+                                             "L",
+                                             "I_inverse",
+                                             "v_free",
+                                             "omega_per_N",
+                                             "normal_force",
+                                             "first",
+                                             "seed",
+                                             "alpha0"};
+    const auto taken = [&](const std::string& name) { return names.count(name) || generated_.count(name); };
+    if (doc_.contains("parameters") && doc_["parameters"].is_object())
+      for (const auto& [name, value] : doc_["parameters"].items())
+        if (taken(name))
+          (root_ / "parameters" / name)
+              .fail("'" + name + "' is a name the rolling model's derivation uses: choose another");
+    if (!doc_.contains("definitions")) return;
+    const ordered_json defs = source("definitions");
+    if (!defs.is_object()) (root_ / "definitions").fail("expected an object of named expressions");
+    for (const auto& [name, value] : defs.items()) {
+      if (taken(name))
+        (root_ / "definitions" / name)
+            .fail("'" + name + "' is a name the rolling model's derivation uses: choose another");
+      out_["definitions"][name] = value;
+    }
+  }
+
+  std::string gyrostat() const { return gyrostat_ ? " + body_gyrostat" : ""; }
+
+  /// The torque of the user's potential U(gamma): gamma x dU/dgamma (the contact's rate is tangent, so a
+  /// potential of the orientation alone has no other).
+  std::string potentialTorque() const {
+    return potential_ ? " + cross(gamma, gradient(potential_U, gamma))" : "";
+  }
+
+  void frame(ordered_json& state, ordered_json& vectors) {
+    for (const char* v : {"gamma", "alpha", "beta"}) {
+      ordered_json names = ordered_json::array();
+      for (int i = 1; i <= 3; ++i) {
+        const std::string n = std::string(v) + std::to_string(i);
+        state.push_back(n);
+        names.push_back(n);
+      }
+      vectors[v] = names;
+    }
+  }
+
+  void common() {
+    define("contact_s", shapeContact_);
+    define("r", "contact_s + body_centre");
+    define("dgamma", "cross(gamma, omega)");
+    define("dr", "derivative(r, gamma, dgamma)");
+    define("potential",
+           "-body_mass*gravity_g*dot(r, gamma)" + std::string(potential_ ? " + potential_U" : ""));
+    // a frame completing gamma: alpha normal to it, beta = gamma x alpha
+    define("first", "(1 + sign(0.9 - abs(gamma1)))/2");
+    define("seed", "[first, 1 - first, 0]");
+    define("alpha0", "normalize(seed - dot(seed, gamma)*gamma)");
+    ordered_json& c = out_["complete"];
+    for (int i = 1; i <= 3; ++i) {
+      c["alpha" + std::to_string(i)] = "alpha0[" + std::to_string(i) + "]";
+      c["beta" + std::to_string(i)] = "cross(gamma, alpha0)[" + std::to_string(i) + "]";
+    }
+    c["x"] = "0";
+    c["y"] = "0";
+  }
+
+  void rolling() {
+    ordered_json state = ordered_json::array(), vectors;
+    for (const char* n : {"M1", "M2", "M3"})
+      state.push_back(n);
+    vectors["M"] = {"M1", "M2", "M3"};
+    frame(state, vectors);
+    for (const char* n : {"x", "y", "s_plane", "s_body"})
+      state.push_back(n);
+    out_["state"] = state;
+    out_["vectors"] = vectors;
+    common();
+    define("A", "body_inertia + body_mass*(dot(r, r)*identity() - outer(r, r))");
+    const std::string forces =
+        "body_mass*cross(dr, cross(omega, r)) + body_mass*gravity_g*cross(r, gamma)" + potentialTorque();
+    ordered_json& eq = out_["equations"];
+    if (contact_ == Contact::Marble) {
+      define("omega", "inverse(A)*M");
+      eq["M"] = "cross(M" + gyrostat() + ", omega) + " + forces;
+    } else { // rubber: omega normal to gamma by construction, the couple lambda gamma keeps M = A omega
+      define("omega_free", "inverse(A)*M");
+      define("A_gamma", "inverse(A)*gamma");
+      define("omega", "omega_free - (dot(gamma, omega_free)/dot(gamma, A_gamma))*A_gamma");
+      define("dM_free", "cross(A*omega" + gyrostat() + ", omega) + " + forces);
+      define("dA_omega", "body_mass*(2*dot(r, dr)*omega - dot(r, omega)*dr - dot(dr, omega)*r)");
+      define("spin_couple", "-dot(A_gamma, dM_free - dA_omega)/dot(gamma, A_gamma)");
+      eq["M"] = "dM_free + spin_couple*gamma";
+    }
+    define("v", "-cross(omega, r)");
+    eq["gamma"] = "dgamma";
+    eq["alpha"] = "cross(alpha, omega)";
+    eq["beta"] = "cross(beta, omega)";
+    eq["x"] = "dot(v, alpha)";
+    eq["y"] = "dot(v, beta)";
+    eq["s_plane"] = "sqrt(dot(alpha, dr)^2 + dot(beta, dr)^2)";
+    eq["s_body"] = "norm(dr)";
+    out_["complete"]["s_plane"] = "0";
+    out_["complete"]["s_body"] = "0";
+    energy_ =
+        contact_ == Contact::Marble ? "dot(M, omega)/2 + potential" : "dot(omega, A*omega)/2 + potential";
+  }
+
+  void sliding() {
+    ordered_json state = ordered_json::array(), vectors;
+    for (const char* v : {"omega", "v"}) {
+      ordered_json names = ordered_json::array();
+      for (int i = 1; i <= 3; ++i) {
+        const std::string n = std::string(v) + std::to_string(i);
+        state.push_back(n);
+        names.push_back(n);
+      }
+      vectors[v] = names;
+    }
+    frame(state, vectors);
+    for (const char* n : {"x", "y"})
+      state.push_back(n);
+    out_["state"] = state;
+    out_["vectors"] = vectors;
+    common();
+    define("v_contact", "v + cross(omega, r)");
+    define("v_slip", "v_contact - dot(v_contact, gamma)*gamma");
+    define("friction_force", "-friction_mu*v_slip");
+    define("L", "body_inertia*omega" + gyrostat());
+    define("I_inverse", "inverse(body_inertia)");
+    define("omega_free", "I_inverse*(cross(r, friction_force) - cross(omega, L)" + potentialTorque() + ")");
+    define("v_free", "friction_force/body_mass - gravity_g*gamma - cross(omega, v)");
+    define("omega_per_N", "I_inverse*cross(r, gamma)");
+    define("normal_force", "-(dot(v_free + cross(omega_free, r) + cross(omega, dr), gamma) + "
+                           "dot(v_contact, dgamma))/(1/body_mass + dot(omega_per_N, cross(r, gamma)))");
+    ordered_json& eq = out_["equations"];
+    eq["omega"] = "omega_free + normal_force*omega_per_N";
+    eq["v"] = "v_free + (normal_force/body_mass)*gamma";
+    eq["gamma"] = "dgamma";
+    eq["alpha"] = "cross(alpha, omega)";
+    eq["beta"] = "cross(beta, omega)";
+    eq["x"] = "dot(v, alpha)";
+    eq["y"] = "dot(v, beta)";
+    for (int i = 1; i <= 3; ++i) // a start that gives no velocity rolls: the contact at rest
+      out_["complete"]["v" + std::to_string(i)] = "-cross(omega, r)[" + std::to_string(i) + "]";
+    energy_ = "body_mass*dot(v, v)/2 + dot(omega, body_inertia*omega)/2 + potential";
+  }
+
+  void observables() {
+    ordered_json o;
+    const bool conservative = contact_ != Contact::Sliding;
+    o["E"] = {{"value", energy_},
+              {"description", conservative ? "energy" : "energy (friction at the contact dissipates it)"}};
+    if (conservative) o["E"]["integral"] = true;
+    o["geometric"] = {
+        {"value", "dot(gamma, gamma)"}, {"description", "geometric integral"}, {"integral", true}};
+    if (contact_ != Contact::Sliding)
+      for (int i = 1; i <= 3; ++i)
+        o["omega" + std::to_string(i)] = {
+            {"value", "omega[" + std::to_string(i) + "]"},
+            {"description", "angular velocity, body axis " + std::to_string(i)}};
+    o["spin_normal"] = {{"value", "dot(omega, gamma)"},
+                        {"description", "spin about the normal at the contact (zero in rubber rolling)"}};
+    if (contact_ == Contact::Rubber) o["spin_normal"]["integral"] = true;
+    o["Z"] = {{"value", "-dot(r, gamma)"}, {"description", "height of the centre of mass above the plane"}};
+    if (axis_)
+      o["axis_up"] = {{"value", "dot(gamma, normalize(body_axis))"},
+                      {"description", "cosine between the body's axis and the upward vertical"}};
+    if (shape_ == "sphere") { // Jellett (1872): (L, r) for a sphere whose centre of mass is on its axis
+      o["jellett"] = {{"value", "dot(body_inertia*omega" + gyrostat() + ", r)"},
+                      {"description",
+                       "Jellett's quantity (L, r): L about the centre of mass, r to the contact; "
+                       "an integral for an axisymmetric body with its centre of mass on the axis"}};
+      if (axis_ && !gyrostat_ && !potential_ && contact_ != Contact::Rubber) o["jellett"]["integral"] = true;
+    }
+    if (contact_ == Contact::Sliding) {
+      o["normal_force"] = {{"value", "normal_force"}, {"description", "the plane's normal reaction"}};
+      o["slip"] = {{"value", "norm(v_slip)"}, {"description", "speed of the contact point along the plane"}};
+    }
+    if (doc_.contains("observables")) {
+      const ordered_json user = source("observables");
+      if (!user.is_object()) (root_ / "observables").fail("expected an object of observables");
+      for (const auto& [name, value] : user.items())
+        o[name] = value; // a user's observable of a generated name replaces it
+    }
+    out_["observables"] = o;
+    if (doc_.contains("complete")) {
+      const ordered_json user = source("complete");
+      if (!user.is_object()) (root_ / "complete").fail("expected an object of expressions");
+      for (const auto& [name, value] : user.items())
+        out_["complete"][name] = value;
+    }
+  }
+
+  void view() {
+    ordered_json v = shapeView_;
+    v["centre"] = "body_centre";
+    v["rotation"] = "rows(alpha, beta, gamma)";
+    v["position"] = "[x, y, -dot(r, gamma)]";
+    v["contact"] = "[x, y, -dot(r, gamma)] + rows(alpha, beta, gamma)*r";
+    if (doc_.contains("view")) {
+      const ordered_json user = source("view");
+      if (!user.is_object()) (root_ / "view").fail("expected an object");
+      for (const auto& [name, value] : user.items())
+        v[name] = value;
+    }
+    out_["view"] = v;
+  }
+
+  const json& doc_;
+  const ordered_json* ordered_;
+  Where root_;
+  ordered_json out_;
+  std::vector<std::pair<std::string, std::string>> origins_;
+  std::set<std::string> generated_;
+  Contact contact_ = Contact::Marble;
+  std::string shape_, shapeContact_, energy_;
+  ordered_json shapeView_;
+  bool potential_ = false, gyrostat_ = false, axis_ = false;
+};
+
+} // namespace
+
+RollingEquations rollingEquations(const json& doc, const ordered_json* ordered, const std::string& source) {
+  return Generator(doc, ordered, source).run();
+}
+
+} // namespace rv

@@ -1,0 +1,49 @@
+// RollingModel.h -- a rolling body described by its geometry (a model file of "kind": "rolling",
+// docs/rolling.md): its surface, centre of mass, mass, inertia tensor, an optional gyrostat and potential,
+// the support and the contact (marble, rubber, sliding). rollviz derives the equations of motion from it and
+// writes them as an ordinary equation model (docs/models.md), so the expression graph, its exact derivatives,
+// native compilation, every tool and the 3D view work on it as on a model written by hand: a new body is
+// data, not another translation unit.
+//
+// The derivation (written out in docs/rolling.md). Body axes; gamma is the upward vertical, so the body's
+// outward normal at the contact is -gamma and the contact point s(gamma) is the inverse Gauss map of the
+// surface (closed form for the named shapes); r = s + centre is the contact relative to the centre of mass
+// and r' = (dr/dgamma) gamma' its rate, taken exactly by derivative() (expr/Derivative.h).
+//  - marble (no slip): M = A omega, A = I + m (|r|^2 E - r r^T) (the angular momentum about the contact),
+//    M' = (M + k) x omega + m r' x (omega x r) + m g r x gamma + gamma x dU/dgamma, gamma' = gamma x omega
+//    (A. V. Borisov, I. S. Mamaev, Rolling of a rigid body on a plane and sphere. Hierarchy of dynamics,
+//    Regul. Chaotic Dyn. 7 (2002) 177-200, eq. (2.1)-(2.5)); the five built-in rolling problems are cases.
+//  - rubber (no slip, no spin about the normal): the same with the reaction couple lambda gamma, lambda from
+//    d/dt (omega, gamma) = 0 and omega kept normal to gamma by construction (A. V. Borisov, I. S. Mamaev,
+//    I. A. Bizyaev, The hierarchy of dynamics of a rigid body rolling without slipping and spinning on a
+//    plane and a sphere, Nelin. Dinam. 9 (2013) 141-202, section 2).
+//  - sliding with viscous friction F = -mu v_P (the contact's velocity along the plane): Newton-Euler for
+//    omega and the centre of mass's velocity v in body axes, the normal force N from d/dt (v_P, gamma) = 0
+//    (the contact stays on the plane): the classical smooth tippe top (N. M. Bou-Rabee, J. E. Marsden,
+//    L. A. Romero, Tippe top inversion as a dissipation-induced instability, SIAM J. Appl. Dyn. Syst. 3
+//    (2004) 352-377; S. Rauch-Wojciechowski, N. Rutstam, SIGMA 10 (2014) 017).
+#pragma once
+#include <nlohmann/json.hpp>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace rv {
+
+/// Whether a model document describes a rolling body ("kind": "rolling").
+bool isRollingModel(const nlohmann::json& doc);
+
+/// The equation model of a rolling body, and where each expression it copied from the description came
+/// from: {generated JSON path, the description's JSON path}, so that an error in a user's expression is
+/// reported at the field the user wrote.
+struct RollingEquations {
+  nlohmann::ordered_json model;
+  std::vector<std::pair<std::string, std::string>> origins;
+};
+
+/// Derives the equations of the rolling body `doc` (with its key order from `ordered` when given). Throws
+/// InputError "SOURCE:path: what is wrong" for a malformed description.
+RollingEquations rollingEquations(const nlohmann::json& doc, const nlohmann::ordered_json* ordered,
+                                  const std::string& source);
+
+} // namespace rv
