@@ -13,6 +13,7 @@
 #include "scenes/ModelCompiler.h"
 #include "scenes/SceneLoader.h"
 #include "tests/dynamics/TestSupport.h"
+#include "tests/scenes/ModelFileSupport.h"
 
 #include <Eigen/LU>
 #include <cmath>
@@ -25,89 +26,9 @@
 
 namespace rv {
 namespace {
+using namespace testing_model_files; // NOLINT(google-build-using-namespace): the shared helpers, unqualified
 
 using nlohmann::json;
-
-std::string examples(const std::string& file) {
-  const char* root = std::getenv("ROLLVIZ_SOURCE_DIR");
-  return std::string(root ? root : ".") + "/examples/models/" + file;
-}
-
-struct Pair {
-  std::unique_ptr<Model> builtin, file;
-};
-
-Pair pairOf(const std::string& id, const std::string& file, const std::map<std::string, double>& set = {}) {
-  const ModelEntry& b = ModelRegistry::global().get(id);
-  const ModelEntry& f = modelFileEntry(examples(file));
-  ParameterValues pb(b.info->parameters), pf(f.info->parameters);
-  for (const auto& [k, v] : set) {
-    pb.set(k, v);
-    pf.set(k, v);
-  }
-  return {b.create(pb), f.create(pf)};
-}
-
-std::unique_ptr<Integrator> verner(double tolerance) {
-  const IntegratorEntry& e = IntegratorRegistry::global().get("verner9");
-  ParameterValues p(*e.parameters);
-  p.set("tolerance", tolerance);
-  return e.create(p);
-}
-
-/// The largest difference of the states over [0, T], sampled at every unit of time.
-double trajectoryDifference(const Model& a, const Model& b, const Eigen::VectorXd& x0, double T) {
-  auto ia = verner(1e-13), ib = verner(1e-13);
-  ia->start(a, 0, x0);
-  ib->start(b, 0, x0);
-  double worst = 0;
-  Eigen::VectorXd ya(x0.size()), yb(x0.size());
-  for (double t = 1; t <= T; t += 1) {
-    while (ia->time() < t)
-      ia->step();
-    while (ib->time() < t)
-      ib->step();
-    ia->interpolate(t, ya);
-    ib->interpolate(t, yb);
-    worst = std::max(worst, (ya - yb).cwiseAbs().maxCoeff());
-  }
-  return worst;
-}
-
-/// Field, Jacobian (exact: forward mode against Eigen's AutoDiff of the built-in), tangent products,
-/// integrals and measure at a state.
-void expectSameField(const Model& a, const Model& b, const Eigen::VectorXd& x) {
-  const int n = a.dimension();
-  ASSERT_EQ(n, b.dimension());
-  ASSERT_EQ(a.info().coreDimension, b.info().coreDimension);
-  Eigen::VectorXd fa(n), fb(n);
-  a.rhs(x.data(), fa.data());
-  b.rhs(x.data(), fb.data());
-  EXPECT_LT((fa - fb).cwiseAbs().maxCoeff(), 1e-13 * (1 + fa.cwiseAbs().maxCoeff())) << fa.transpose() << "\n"
-                                                                                     << fb.transpose();
-  Eigen::MatrixXd ja(n, n), jb(n, n);
-  a.jacobian(x.data(), ja.data());
-  b.jacobian(x.data(), jb.data());
-  EXPECT_LT((ja - jb).cwiseAbs().maxCoeff(), 1e-12 * (1 + ja.cwiseAbs().maxCoeff()));
-  const int m = a.info().coreDimension, k = 2;
-  Eigen::MatrixXd V = Eigen::MatrixXd::Random(m, k), dVa(m, k), dVb(m, k);
-  a.tangentRhs(x.data(), V.data(), k, fa.data(), dVa.data());
-  b.tangentRhs(x.data(), V.data(), k, fb.data(), dVb.data());
-  EXPECT_LT((dVa - dVb).cwiseAbs().maxCoeff(), 1e-12 * (1 + dVa.cwiseAbs().maxCoeff()));
-  const Eigen::VectorXd ia = a.integrals(x.data()), ib = b.integrals(x.data());
-  ASSERT_EQ(ia.size(), ib.size());
-  if (ia.size() > 0) {
-    EXPECT_LT((ia - ib).cwiseAbs().maxCoeff(), 1e-13 * (1 + ia.cwiseAbs().maxCoeff()));
-  }
-  EXPECT_NEAR(a.measureDensity(x.data()), b.measureDensity(x.data()), 1e-13);
-  for (const auto& o : a.observables()) { // every observable the file also has agrees
-    const int i = b.findObservable(o.id);
-    if (i < 0) continue;
-    const double va = o.value(0.5, x.data()),
-                 vb = b.observables()[static_cast<std::size_t>(i)].value(0.5, x.data());
-    EXPECT_NEAR(va, vb, 1e-12 * (1 + std::abs(va))) << o.id;
-  }
-}
 
 /// The fixed point of the default Poincare map found from `guess` on both models: the same point (1e-9) and
 /// multipliers (1e-8).
@@ -122,10 +43,6 @@ void expectSameFixedPoint(const Model& a, const Model& b, const Eigen::VectorXd&
   ASSERT_EQ(ra.multipliers.size(), rb.multipliers.size());
   for (std::size_t i = 0; i < ra.multipliers.size(); ++i)
     EXPECT_LT(std::abs(ra.multipliers[i] - rb.multipliers[i]), 1e-8);
-}
-
-Eigen::VectorXd named(const Model& m, const std::map<std::string, double>& values) {
-  return m.stateFromNamed(values, "initial.state");
 }
 
 TEST(ModelFile, LorenzFollowsTheBuiltInModel) {

@@ -1,0 +1,289 @@
+// Rolling bodies from their geometry (scenes/RollingModel.h, examples/rolling): the model language's exact
+// derivatives against derivatives taken by hand; each built-in body on a plane, restated by its geometry,
+// gives the built-in model's field, Jacobian, integrals, measure and trajectory; marble and rubber rolling
+// keep their energy, rubber rolling its zero spin about the normal; the tippe top turns over exactly inside
+// its inertia window (Bou-Rabee, Marsden & Romero 2004; Rauch-Wojciechowski & Rutstam 2014) with Jellett's
+// integral kept; a malformed description is named at the field the user wrote.
+#include "scenes/RollingModel.h"
+#include "dynamics/core/Errors.h"
+#include "scenes/ModelFile.h"
+#include "tests/scenes/ModelFileSupport.h"
+
+#include <cmath>
+#include <gtest/gtest.h>
+
+namespace rv {
+namespace {
+using namespace testing_model_files; // NOLINT(google-build-using-namespace): the shared helpers, unqualified
+using nlohmann::json;
+
+std::unique_ptr<Model> instance(const ModelEntry& e, const std::map<std::string, double>& set = {}) {
+  ParameterValues p(e.info->parameters);
+  for (const auto& [k, v] : set)
+    p.set(k, v);
+  return e.create(p);
+}
+
+double observable(const Model& m, const std::string& id, const double* x) {
+  const int i = m.findObservable(id);
+  EXPECT_GE(i, 0) << id;
+  return i < 0 ? NAN : m.observables()[static_cast<std::size_t>(i)].value(0, x);
+}
+
+TEST(ModelLanguage, DerivativeGradientAndJacobianAreTheDerivativesTakenByHand) {
+  const json model = {
+      {"id", "derivatives_by_hand"},
+      {"state", {"x", "y"}},
+      {"definitions", {{"f", "x^3*sin(y) + exp(x*y) + atan2(y, x) + sqrt(x^2 + y^2) + max(x, 2*y)"}}},
+      {"equations", {{"x", "derivative(f, [x, y], [2, 3])"}, {"y", "gradient(f, [x, y])[1]"}}},
+      {"observables",
+       {{"fy", {{"value", "jacobian([f, x*y], [x, y])[1, 2]"}}},
+        {"dxy_dx", {{"value", "jacobian([f, x*y], [x, y])[2, 1]"}}}}}};
+  const auto m = instance(modelEntryFromJson(model, "<derivatives>"));
+  const double x = 0.7, y = 0.4, r = std::hypot(x, y), s[2] = {x, y};
+  // by hand; max(x, 2y) takes 2y here
+  const double fx = 3 * x * x * std::sin(y) + y * std::exp(x * y) - y / (r * r) + x / r;
+  const double fy = x * x * x * std::cos(y) + x * std::exp(x * y) + x / (r * r) + y / r + 2;
+  double f[2];
+  m->rhs(s, f);
+  EXPECT_NEAR(f[0], 2 * fx + 3 * fy, 1e-13);
+  EXPECT_NEAR(f[1], fx, 1e-14);
+  EXPECT_NEAR(observable(*m, "fy", s), fy, 1e-14);
+  EXPECT_NEAR(observable(*m, "dxy_dx", s), y, 1e-15);
+  // the field's own Jacobian goes through the derivative nodes: second derivatives, against differences
+  Eigen::Matrix<double, 2, 2, Eigen::RowMajor> J;
+  m->jacobian(s, J.data());
+  const double h = 1e-6;
+  for (int j = 0; j < 2; ++j) {
+    double plus[2] = {x, y}, minus[2] = {x, y}, fp[2], fm[2];
+    plus[j] += h;
+    minus[j] -= h;
+    m->rhs(plus, fp);
+    m->rhs(minus, fm);
+    for (int i = 0; i < 2; ++i)
+      EXPECT_NEAR(J(i, j), (fp[i] - fm[i]) / (2 * h), 1e-7 * (1 + std::abs(J(i, j))));
+  }
+}
+
+std::string errorOf(const json& model) {
+  try {
+    modelEntryFromJson(model, "<bad>");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ModelLanguage, ADerivativeNeedsVariablesAndARateOfTheirShape) {
+  json model = {{"id", "bad_derivative"}, {"state", {"x", "y"}}, {"equations", {{"x", "y"}, {"y", ""}}}};
+  model["equations"]["y"] = "derivative(x^2, 2, 1)";
+  EXPECT_NE(errorOf(model).find("argument 2 of 'derivative' must be variables"), std::string::npos)
+      << errorOf(model);
+  model["equations"]["y"] = "derivative(x^2, x, [1, 2])";
+  EXPECT_NE(errorOf(model).find("argument 3 of 'derivative' must be the shape of argument 2"),
+            std::string::npos)
+      << errorOf(model);
+}
+
+/// The built-in and the restated field agree where the motion lives (|gamma| = 1; off it the two may extend
+/// the field differently): the field, its Jacobian along directions that keep |gamma|, the tangent products,
+/// the measure and every observable of the same name.
+void expectTheSameMotion(const Model& a, const Model& b, const Eigen::VectorXd& x) {
+  using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  const int n = a.dimension(), m = a.info().coreDimension, k = 4;
+  ASSERT_EQ(n, b.dimension());
+  ASSERT_EQ(m, b.info().coreDimension);
+  // directions along the motion's manifold: the frame (gamma, alpha, beta) turned together by a random eta
+  const auto& names = a.info().stateNames;
+  const auto at = [&](const char* name) {
+    return static_cast<int>(std::find(names.begin(), names.end(), name) - names.begin());
+  };
+  Eigen::MatrixXd V = Eigen::MatrixXd::Random(n, k);
+  for (int c = 0; c < k; ++c) {
+    const Eigen::Vector3d eta = Eigen::Vector3d::Random();
+    for (const char* frame : {"gamma1", "alpha1", "beta1"})
+      if (const int i = at(frame); i < n) V.col(c).segment<3>(i) = x.segment<3>(i).cross(eta);
+  }
+  Eigen::VectorXd fa(n), fb(n);
+  a.rhs(x.data(), fa.data());
+  b.rhs(x.data(), fb.data());
+  EXPECT_LT((fa - fb).cwiseAbs().maxCoeff(), 1e-13 * (1 + fa.cwiseAbs().maxCoeff()));
+  RowMajor ja(n, n), jb(n, n);
+  a.jacobian(x.data(), ja.data());
+  b.jacobian(x.data(), jb.data());
+  EXPECT_LT((ja * V - jb * V).cwiseAbs().maxCoeff(), 1e-12 * (1 + (ja * V).cwiseAbs().maxCoeff()));
+  const Eigen::MatrixXd W = V.topRows(m);
+  Eigen::MatrixXd dWa(m, k), dWb(m, k);
+  a.tangentRhs(x.data(), W.data(), k, fa.data(), dWa.data());
+  b.tangentRhs(x.data(), W.data(), k, fb.data(), dWb.data());
+  EXPECT_LT((dWa - dWb).cwiseAbs().maxCoeff(), 1e-12 * (1 + dWa.cwiseAbs().maxCoeff()));
+  EXPECT_NEAR(a.measureDensity(x.data()), b.measureDensity(x.data()), 1e-13);
+  int same = 0;
+  for (const auto& o : a.observables()) {
+    const int i = b.findObservable(o.id);
+    if (i < 0) continue;
+    ++same;
+    const double va = o.value(0.5, x.data()),
+                 vb = b.observables()[static_cast<std::size_t>(i)].value(0.5, x.data());
+    EXPECT_NEAR(va, vb, 1e-12 * (1 + std::abs(va))) << o.id;
+  }
+  EXPECT_GE(same, 5);
+}
+
+struct Restated {
+  const char* id;
+  std::map<std::string, double> parameters, state;
+};
+
+TEST(RollingModel, EachBuiltInBodyOnAPlaneRestatedByItsGeometryIsTheBuiltInModel) {
+  const double g3 = std::sqrt(1 - 0.005);
+  const std::vector<Restated> bodies{
+      {"ellipsoid_on_plane",
+       {{"B11", 0.1}, {"B12", 0.02}, {"B22", 0.05}, {"a1", 0.05}, {"phi", 0.3}, {"theta", 0.2}},
+       {{"M1", 0.1}, {"M2", 0.05}, {"M3", 0.3}, {"gamma1", 0.05}, {"gamma2", 0.05}, {"gamma3", g3}}},
+      {"paraboloid_on_plane",
+       {{"h", 0.7}, {"delta", 0.4}},
+       {{"M1", 0.3},
+        {"M2", -0.2},
+        {"M3", 0.5},
+        {"gamma1", 0.1},
+        {"gamma2", 0.2},
+        {"gamma3", std::sqrt(0.95)}}},
+      {"chaplygin_ball",
+       {{"K1", 0.1}, {"K3", -0.2}, {"R", 0.8}},
+       {{"M1", 0.3}, {"M2", 0.5}, {"M3", 0.4}, {"gamma1", 0.0}, {"gamma2", 0.6}, {"gamma3", 0.8}}}};
+  for (const Restated& b : bodies) {
+    SCOPED_TRACE(b.id);
+    const Pair p = pairOf(b.id, std::string("rolling/") + b.id + ".json", b.parameters);
+    const Eigen::VectorXd x = named(*p.builtin, b.state);
+    EXPECT_LT((x - named(*p.file, b.state)).cwiseAbs().maxCoeff(), 1e-15); // the frame completed alike
+    expectTheSameMotion(*p.builtin, *p.file, x);
+    EXPECT_LT(trajectoryDifference(*p.builtin, *p.file, x, 10), 1e-9);
+    const auto pa = p.builtin->pose(x.data()), pb = p.file->pose(x.data());
+    ASSERT_TRUE(pa && pb);
+    EXPECT_LT((pa->center - pb->center).norm() + (pa->contact - pb->contact).norm() +
+                  (pa->rotation - pb->rotation).norm(),
+              1e-13);
+    EXPECT_EQ(p.builtin->geometry()->shape, p.file->geometry()->shape);
+  }
+}
+
+/// A run of an example model from `start` to T, its states every `every`.
+struct ExampleRun {
+  std::vector<Eigen::VectorXd> states;
+  std::unique_ptr<Model> model;
+};
+
+ExampleRun runExample(const std::string& file, const std::map<std::string, double>& set,
+                      const std::map<std::string, double>& start, double T, double every) {
+  ExampleRun r{{}, instance(modelFileEntry(examples(file, "rolling")), set)};
+  auto integrator = verner(1e-13);
+  integrator->start(*r.model, 0, named(*r.model, start));
+  Eigen::VectorXd y(r.model->dimension());
+  for (double t = 0; t <= T + 1e-12; t += every) {
+    while (integrator->time() < t)
+      integrator->step();
+    integrator->interpolate(t, y);
+    r.states.push_back(y);
+  }
+  return r;
+}
+
+std::vector<double> along(const ExampleRun& r, const std::string& id) {
+  std::vector<double> v;
+  for (const Eigen::VectorXd& x : r.states)
+    v.push_back(observable(*r.model, id, x.data()));
+  return v;
+}
+
+double relativeDrift(const std::vector<double>& v) {
+  double worst = 0;
+  for (double e : v)
+    worst = std::max(worst, std::abs(e - v.front()));
+  return worst / std::abs(v.front());
+}
+
+TEST(RollingModel, MarbleAndRubberRollingKeepTheirEnergyAndRubberNeverSpinsAboutTheNormal) {
+  const ExampleRun rubber = runExample("rubber_rattleback.json", {},
+                                       {{"M1", 0.1},
+                                        {"M2", 0.3},
+                                        {"M3", 0.2}, // its normal part is the constraint's
+                                        {"gamma1", 0.05},
+                                        {"gamma2", 0.05},
+                                        {"gamma3", std::sqrt(1 - 0.005)}},
+                                       20, 0.5);
+  EXPECT_LT(relativeDrift(along(rubber, "E")), 1e-10);
+  for (double s : along(rubber, "spin_normal"))
+    EXPECT_LT(std::abs(s), 1e-13);
+  const ExampleRun disk = runExample("disk.json", {},
+                                     {{"M1", 0.0},
+                                      {"M2", 0.1},
+                                      {"M3", 2.0},
+                                      {"gamma1", 0.0},
+                                      {"gamma2", 0.9},
+                                      {"gamma3", std::sqrt(1 - 0.81)}},
+                                     20, 0.5);
+  EXPECT_LT(relativeDrift(along(disk, "E")), 1e-10);
+  double lowest = 1;
+  for (double z : along(disk, "Z"))
+    lowest = std::min(lowest, z);
+  EXPECT_GT(lowest, 0.3); // it leans into its turn and rolls on, never falling flat
+}
+
+TEST(RollingModel, TheTippeTopTurnsOverOnlyInsideItsInertiaWindowAndKeepsJellettsIntegral) {
+  // offset 0.3, I3 = 0.4: inversion needs 0.7 < I1/I3 < 1.3
+  const std::map<std::string, double> spun{{"omega1", 0}, {"omega2", 0},
+                                           {"omega3", 6}, {"gamma1", std::sin(0.1)},
+                                           {"gamma2", 0}, {"gamma3", std::cos(0.1)}};
+  for (const double I1 : {0.35, 0.6}) {
+    SCOPED_TRACE(I1);
+    const ExampleRun top = runExample("tippe_top.json", {{"I1", I1}}, spun, 50, 0.25);
+    const std::vector<double> up = along(top, "axis_up"), E = along(top, "E"), N = along(top, "normal_force");
+    EXPECT_LT(relativeDrift(along(top, "jellett")), 1e-10);
+    EXPECT_GT(up.front(), 0.99);
+    for (std::size_t i = 1; i < E.size(); ++i)
+      EXPECT_LE(E[i], E[i - 1] + 1e-12); // friction only takes energy
+    for (double n : N)
+      EXPECT_GT(n, 0); // it never leaves the plane
+    const double lowest = *std::min_element(up.begin(), up.end());
+    if (I1 / 0.4 < 1.3) {
+      EXPECT_LT(lowest, -0.95);
+      EXPECT_LT(up.back(), -0.9);
+      EXPECT_GT(observable(*top.model, "Z", top.states.back().data()), 1.0); // the centre of mass went up
+    } else {
+      EXPECT_GT(lowest, -0.8); // tilts over to a steady slant, never onto its stem
+    }
+  }
+}
+
+TEST(RollingModel, AMalformedBodyIsNamedAtTheFieldTheUserWrote) {
+  const json top = json::parse(R"({"kind": "rolling", "id": "bad_top", "parameters": {"R": {"default": 1}},
+      "body": {"shape": "sphere", "radius": "R", "mass": 1, "inertia": [1, 1, 1]}, "contact": "marble"})");
+  EXPECT_EQ(errorOf(top), ""); // the good one loads
+  const auto expect = [&](json bad, const std::string& part) {
+    const std::string what = errorOf(bad);
+    EXPECT_NE(what.find(part), std::string::npos) << what;
+  };
+  json bad = top;
+  bad["id"] = "bad_top2";
+  bad["body"]["radius"] = "Rr";
+  expect(bad, "<bad>:body.radius: column 1: unknown name 'Rr' (did you mean 'R'?)");
+  bad = top;
+  bad["body"]["shape"] = "cube";
+  expect(bad, "<bad>:body.shape: expected \"sphere\"");
+  bad = top;
+  bad["contact"] = "sliding";
+  expect(bad, "missing \"friction\"");
+  bad = top;
+  bad["parameters"]["omega"] = {{"default", 1}};
+  expect(bad, "<bad>:parameters.omega: 'omega' is a name the rolling model's derivation uses");
+  bad = top;
+  bad["support"] = "sphere";
+  expect(bad, "<bad>:support: the support 'sphere' is not derived yet");
+  bad = top;
+  bad["body"]["semi_axes"] = "[1, 2, 3]";
+  expect(bad, "<bad>:body.semi_axes: a sphere has no \"semi_axes\"");
+}
+
+} // namespace
+} // namespace rv
