@@ -1,6 +1,9 @@
-// Models written as equations (examples/models, interpreted) beside the built-in model they restate, in one
-// run: right-hand sides, Jacobians, an adaptive integration and a Lyapunov spectrum. Report the ratios
-// (<Case>/file over <Case>/builtin), and the time to read, check and build a model file.
+// Models written as equations (examples/models) and rolling bodies described by their geometry
+// (examples/rolling, equations derived by rollviz) beside the built-in model they restate, in one run:
+// right-hand sides, Jacobians, an adaptive integration and a Lyapunov spectrum. Model files run as their
+// native code when ROLLVIZ_COMPILE_MODELS allows (the default), interpreted with ROLLVIZ_COMPILE_MODELS=0.
+// Report the ratios (<Case>/file and <Case>/rolling over <Case>/builtin), and the time to read, check and
+// build a model file.
 #include "dynamics/integrators/Integrator.h"
 #include "dynamics/tools/Lyapunov.h"
 #include "scenes/ModelFile.h"
@@ -13,16 +16,27 @@ namespace {
 
 using namespace rv;
 
-std::string examples(const std::string& file) {
+std::string examples(const std::string& file, const char* folder = "models") {
   const char* root = std::getenv("ROLLVIZ_SOURCE_DIR");
-  return std::string(root ? root : ROLLVIZ_SOURCE_DIR) + "/examples/models/" + file;
+  return std::string(root ? root : ROLLVIZ_SOURCE_DIR) + "/examples/" + folder + "/" + file;
 }
 
-const ModelEntry& entryOf(const std::string& id, bool file) {
-  return file ? modelFileEntry(examples(id + ".json")) : ModelRegistry::global().get(id);
+/// Where a benchmarked model comes from.
+enum class Source { Builtin, File, Rolling };
+
+const ModelEntry& entryOf(const std::string& id, Source from) {
+  switch (from) {
+  case Source::File:
+    return modelFileEntry(examples(id + ".json"));
+  case Source::Rolling:
+    return modelFileEntry(examples(id + ".json", "rolling"));
+  case Source::Builtin:
+    break;
+  }
+  return ModelRegistry::global().get(id);
 }
 
-std::unique_ptr<Model> make(const std::string& id, bool file) {
+std::unique_ptr<Model> make(const std::string& id, Source file) {
   const ModelEntry& e = entryOf(id, file);
   return e.create(ParameterValues(e.info->parameters));
 }
@@ -40,7 +54,7 @@ std::unique_ptr<Integrator> verner(double tolerance) {
   return e.create(p);
 }
 
-void RightHandSide(benchmark::State& state, const std::string& id, bool file) {
+void RightHandSide(benchmark::State& state, const std::string& id, Source file) {
   const auto m = make(id, file);
   const Eigen::VectorXd x = startOf(*m);
   Eigen::VectorXd dx(x.size());
@@ -51,7 +65,7 @@ void RightHandSide(benchmark::State& state, const std::string& id, bool file) {
   state.SetItemsProcessed(state.iterations());
 }
 
-void Jacobian(benchmark::State& state, const std::string& id, bool file) {
+void Jacobian(benchmark::State& state, const std::string& id, Source file) {
   const auto m = make(id, file);
   const Eigen::VectorXd x = startOf(*m);
   Eigen::MatrixXd J(x.size(), x.size());
@@ -61,7 +75,7 @@ void Jacobian(benchmark::State& state, const std::string& id, bool file) {
   }
 }
 
-void Integrate(benchmark::State& state, const std::string& id, bool file) {
+void Integrate(benchmark::State& state, const std::string& id, Source file) {
   const auto m = make(id, file);
   const Eigen::VectorXd x = startOf(*m);
   for (auto _ : state) {
@@ -73,7 +87,7 @@ void Integrate(benchmark::State& state, const std::string& id, bool file) {
   }
 }
 
-void Lyapunov(benchmark::State& state, const std::string& id, bool file) {
+void Lyapunov(benchmark::State& state, const std::string& id, Source file) {
   const auto m = make(id, file);
   const Eigen::VectorXd x = startOf(*m);
   LyapunovSettings s;
@@ -98,8 +112,10 @@ void ReadModelFile(benchmark::State& state) {
 } // namespace
 
 #define RV_PAIR(FN, ID)                                                                                      \
-  BENCHMARK_CAPTURE(FN, ID##_builtin, std::string(#ID), false)->Name(#FN "/" #ID "/builtin");                \
-  BENCHMARK_CAPTURE(FN, ID##_file, std::string(#ID), true)->Name(#FN "/" #ID "/file")
+  BENCHMARK_CAPTURE(FN, ID##_builtin, std::string(#ID), Source::Builtin)->Name(#FN "/" #ID "/builtin");      \
+  BENCHMARK_CAPTURE(FN, ID##_file, std::string(#ID), Source::File)->Name(#FN "/" #ID "/file")
+#define RV_ROLLING(FN, ID)                                                                                   \
+  BENCHMARK_CAPTURE(FN, ID##_rolling, std::string(#ID), Source::Rolling)->Name(#FN "/" #ID "/rolling")
 RV_PAIR(RightHandSide, lorenz);
 RV_PAIR(RightHandSide, chaplygin_ball);
 RV_PAIR(Jacobian, lorenz);
@@ -108,4 +124,16 @@ RV_PAIR(Integrate, lorenz)->Unit(benchmark::kMillisecond);
 RV_PAIR(Integrate, chaplygin_ball)->Unit(benchmark::kMillisecond);
 RV_PAIR(Lyapunov, lorenz)->Unit(benchmark::kMillisecond);
 RV_PAIR(Lyapunov, chaplygin_ball)->Unit(benchmark::kMillisecond);
+RV_PAIR(RightHandSide, ellipsoid_on_plane);
+RV_ROLLING(RightHandSide, ellipsoid_on_plane);
+RV_ROLLING(RightHandSide, chaplygin_ball);
+RV_PAIR(Jacobian, ellipsoid_on_plane);
+RV_ROLLING(Jacobian, ellipsoid_on_plane);
+RV_ROLLING(Jacobian, chaplygin_ball);
+RV_PAIR(Integrate, ellipsoid_on_plane)->Unit(benchmark::kMillisecond);
+RV_ROLLING(Integrate, ellipsoid_on_plane)->Unit(benchmark::kMillisecond);
+RV_ROLLING(Integrate, chaplygin_ball)->Unit(benchmark::kMillisecond);
+RV_PAIR(Lyapunov, ellipsoid_on_plane)->Unit(benchmark::kMillisecond);
+RV_ROLLING(Lyapunov, ellipsoid_on_plane)->Unit(benchmark::kMillisecond);
+RV_ROLLING(Lyapunov, chaplygin_ball)->Unit(benchmark::kMillisecond);
 BENCHMARK(ReadModelFile)->Unit(benchmark::kMillisecond);
