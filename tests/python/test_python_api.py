@@ -409,3 +409,23 @@ def test_a_motion_as_a_web_page_and_jupyters_rich_display(tmp_path):
     assert [m["x"], m["y"]] == ["y", "py"] and len(m["series"]) == 1
     with pytest.raises(ValueError, match="henon_heiles.json: not a rollviz session"):
         rollviz.Session.load(scene_path("henon_heiles.json"))
+
+
+def test_a_rolling_body_described_in_python_turns_over_as_the_tippe_top_does():
+    """A dozen lines of geometry (docs/rolling.md): rollviz derives the equations; every call works on them."""
+    top = rollviz.Model({
+        "kind": "rolling", "id": "python_tippe_top",
+        "parameters": {"I1": {"default": 0.35}, "mu": {"default": 1.0}},
+        "body": {"shape": "sphere", "radius": 1, "centre": "[0, 0, 0.3]", "axis": "[0, 0, 1]",
+                 "mass": 1, "inertia": ["I1", "I1", 0.4]},
+        "gravity": 1, "contact": "sliding", "friction": "mu"})
+    start = {"omega1": 0, "omega2": 0, "omega3": 6, "gamma1": np.sin(0.1), "gamma2": 0, "gamma3": np.cos(0.1)}
+    scene = rollviz.Scene(top, **{"initial.state": start, "integrator.method": "verner9",
+                                  "integrator.tolerance": 1e-12})
+    run = scene.integrate(50, 0.5, columns=["t", "axis_up", "jellett", "E"])
+    up, jellett, energy = (np.asarray(run[c]) for c in ("axis_up", "jellett", "E"))
+    assert up[0] > 0.99 and up.min() < -0.95 and up[-1] < -0.9
+    assert np.ptp(jellett) < 1e-9 * abs(jellett[0]) and energy[-1] < energy[0]
+    # outside the inertia window (I1/I3 > 1 + 0.3) the same top never stands on its stem
+    tilted = scene.set(I1=0.6).integrate(50, 0.5, columns=["t", "axis_up"])
+    assert np.asarray(tilted["axis_up"]).min() > -0.8
