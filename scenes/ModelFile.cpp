@@ -370,7 +370,8 @@ const ModelEntry& entryOf(const std::string& key, const std::string& file, const
   std::shared_ptr<const EquationSystem> system;
   if (isRollingModel(doc)) { // derived equations (RollingModel.h); errors named at the field the user wrote
     const RollingEquations rolling = rollingEquations(doc, ordered, source);
-    const json derived = json::parse(rolling.model.dump());
+    const json derived = json::parse(rolling.model);
+    const ordered_json order = ordered_json::parse(rolling.model);
     const auto atTheUsersField = [&](std::string what) {
       for (const auto& [generated, written] : rolling.origins)
         for (const std::string& form : {":" + generated + ":", ":" + generated + " "})
@@ -379,7 +380,7 @@ const ModelEntry& entryOf(const std::string& key, const std::string& file, const
       return what;
     };
     try {
-      system = EquationSystem::build(Reader(derived, &rolling.model, source).read());
+      system = EquationSystem::build(Reader(derived, &order, source).read());
     } catch (const InputError& e) {
       const std::string what = e.what();
       throw InputError(atTheUsersField(what.rfind(source + ":", 0) == 0 ? what : source + ":" + what));

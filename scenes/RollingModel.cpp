@@ -20,14 +20,6 @@ namespace {
 
 enum class Contact { Marble, Rubber, Sliding };
 
-/// The contact point s(gamma) of a named shape, relative to the shape's own origin, where the body's outward
-/// normal is -gamma (the inverse Gauss map), as an expression of gamma and the body_* size definitions; and
-/// how the 3D view draws the shape.
-struct Shape {
-  std::string contact;
-  ordered_json view;
-};
-
 class Generator {
 public:
   Generator(const json& doc, const ordered_json* ordered, std::string source)
@@ -54,7 +46,7 @@ public:
     observables();
     view();
     RollingEquations r;
-    r.model = std::move(out_);
+    r.model = out_.dump();
     r.origins = std::move(origins_);
     return r;
   }
@@ -115,6 +107,7 @@ private:
     if (!doc_.contains("support")) return;
     const Where w = root_ / "support";
     const json& s = doc_["support"];
+    if (s.is_object()) onlyKeys(s, w, {"surface"});
     const std::string name =
         s.is_object() && s.contains("surface") ? text(s["surface"], w / "surface") : text(s, w);
     if (name != "plane")
@@ -137,41 +130,40 @@ private:
       if (!b.contains(key)) w.fail("a " + shape_ + " needs \"" + key + "\"");
       userExpression(name, b[key], w / key);
     };
-    Shape s;
+    // the contact point s(gamma) relative to the shape's own origin, where the body's outward normal is
+    // -gamma (the inverse Gauss map), and how the 3D view draws the shape
     if (shape_ == "sphere") {
       need("radius", "body_radius");
-      s.contact = "-body_radius*gamma";
-      s.view = {{"body", "ball"}, {"radius", "body_radius"}};
+      shapeContact_ = "-body_radius*gamma";
+      shapeView_ = {{"body", "ball"}, {"radius", "body_radius"}};
     } else if (shape_ == "ellipsoid") {
       need("semi_axes", "body_semi_axes");
       define("body_axes_squared", "diag(body_semi_axes)*diag(body_semi_axes)");
-      s.contact = "-(body_axes_squared*gamma)/sqrt(dot(gamma, body_axes_squared*gamma))";
-      s.view = {{"body", "ellipsoid"}, {"semi_axes", "body_semi_axes"}};
+      shapeContact_ = "-(body_axes_squared*gamma)/sqrt(dot(gamma, body_axes_squared*gamma))";
+      shapeView_ = {{"body", "ellipsoid"}, {"semi_axes", "body_semi_axes"}};
     } else if (shape_ ==
                "paraboloid") { // z = x^2/(2p) + y^2/(2q), the vertex at the origin, opening along +3
       need("p", "body_p");
       need("q", "body_q");
-      s.contact = "[-body_p*gamma[1]/gamma[3], -body_q*gamma[2]/gamma[3], "
-                  "(body_p*gamma[1]^2 + body_q*gamma[2]^2)/(2*gamma[3]^2)]";
-      s.view = {{"body", "paraboloid"}, {"p", "body_p"}, {"q", "body_q"}};
+      shapeContact_ = "[-body_p*gamma[1]/gamma[3], -body_q*gamma[2]/gamma[3], "
+                      "(body_p*gamma[1]^2 + body_q*gamma[2]^2)/(2*gamma[3]^2)]";
+      shapeView_ = {{"body", "paraboloid"}, {"p", "body_p"}, {"q", "body_q"}};
       if (b.contains("height")) {
         userExpression("body_height", b["height"], w / "height");
-        s.view["height"] = "body_height";
+        shapeView_["height"] = "body_height";
       } else {
-        s.view["height"] = "2*max(body_p, body_q)";
+        shapeView_["height"] = "2*max(body_p, body_q)";
       }
     } else if (shape_ == "disk") { // a thin disk in the plane of axes 1, 2, touching with its edge
       need("radius", "body_radius");
-      s.contact = "-(body_radius/sqrt(gamma[1]^2 + gamma[2]^2))*[gamma[1], gamma[2], 0]";
-      s.view = {{"body", "ellipsoid"}, {"semi_axes", "[body_radius, body_radius, body_radius/40]"}};
+      shapeContact_ = "-(body_radius/sqrt(gamma[1]^2 + gamma[2]^2))*[gamma[1], gamma[2], 0]";
+      shapeView_ = {{"body", "ellipsoid"}, {"semi_axes", "[body_radius, body_radius, body_radius/40]"}};
     } else {
       (w / "shape").fail("expected \"sphere\", \"ellipsoid\", \"paraboloid\" or \"disk\"");
     }
     for (const char* key : {"radius", "semi_axes", "p", "q", "height"})
       if (b.contains(key) && !out_["definitions"].contains(std::string("body_") + key))
         (w / key).fail("a " + shape_ + " has no \"" + key + "\"");
-    shapeContact_ = s.contact;
-    shapeView_ = s.view;
     if (b.contains("centre"))
       userExpression("body_centre", b["centre"], w / "centre");
     else
@@ -181,7 +173,24 @@ private:
     if (!b.contains("inertia"))
       w.fail("missing \"inertia\" (the central principal moments [I1, I2, I3], or the tensor as a matrix)");
     const json& I = b["inertia"];
-    if (I.is_array()) { // principal moments, along the body axes or along the rows of principal_axes
+    if (I.is_array() && !I.empty() && I[0].is_array()) { // the full tensor as a JSON matrix
+      if (I.size() != 3) (w / "inertia").fail("expected three rows of three expressions");
+      std::string matrix = "[";
+      for (std::size_t i = 0; i < 3; ++i) {
+        const Where row = w / "inertia" / std::to_string(i);
+        if (!I[i].is_array() || I[i].size() != 3) row.fail("expected a row of three expressions");
+        matrix += i ? ", [" : "[";
+        for (std::size_t j = 0; j < 3; ++j) {
+          const json& e = I[i][j];
+          if (!e.is_string() && !e.is_number()) (row / std::to_string(j)).fail("expected an expression");
+          matrix += (j ? ", " : "") + (e.is_string() ? "(" + e.get<std::string>() + ")" : e.dump());
+        }
+        matrix += "]";
+      }
+      if (b.contains("principal_axes"))
+        (w / "principal_axes").fail("principal axes go with three principal moments, not a full tensor");
+      userExpression("body_inertia", json(matrix + "]"), w / "inertia");
+    } else if (I.is_array()) { // principal moments, along the body axes or along the rows of principal_axes
       if (I.size() != 3) (w / "inertia").fail("expected three principal moments");
       std::string moments;
       for (std::size_t i = 0; i < 3; ++i) {
@@ -242,7 +251,15 @@ private:
                                              "first",
                                              "seed",
                                              "alpha0"};
-    const auto taken = [&](const std::string& name) { return names.count(name) || generated_.count(name); };
+    const auto component = [](const std::string& name) { // M1, gamma2, ..., x, y, s_plane, s_body
+      for (const char* v : {"M", "gamma", "alpha", "beta", "omega", "v"})
+        for (const char* i : {"1", "2", "3"})
+          if (name == std::string(v) + i) return true;
+      return name == "s_plane" || name == "s_body";
+    };
+    const auto taken = [&](const std::string& name) {
+      return names.count(name) || generated_.count(name) || component(name);
+    };
     if (doc_.contains("parameters") && doc_["parameters"].is_object())
       for (const auto& [name, value] : doc_["parameters"].items())
         if (taken(name))
@@ -324,7 +341,10 @@ private:
       define("dM_free", "cross(A*omega" + gyrostat() + ", omega) + " + forces);
       define("dA_omega", "body_mass*(2*dot(r, dr)*omega - dot(r, omega)*dr - dot(dr, omega)*r)");
       define("spin_couple", "-dot(A_gamma, dM_free - dA_omega)/dot(gamma, A_gamma)");
-      eq["M"] = "dM_free + spin_couple*gamma";
+      // A omega = M - spin_gauge*gamma: the part of M along gamma that the projection removes turns with
+      // gamma
+      define("spin_gauge", "dot(gamma, omega_free)/dot(gamma, A_gamma)");
+      eq["M"] = "dM_free + spin_couple*gamma + spin_gauge*dgamma";
     }
     define("v", "-cross(omega, r)");
     eq["gamma"] = "dgamma";

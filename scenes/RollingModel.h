@@ -37,7 +37,7 @@ bool isRollingModel(const nlohmann::json& doc);
 /// from: {generated JSON path, the description's JSON path}, so that an error in a user's expression is
 /// reported at the field the user wrote.
 struct RollingEquations {
-  nlohmann::ordered_json model;
+  std::string model; ///< the equation model's JSON text, keys in the order written (parameters, observables)
   std::vector<std::pair<std::string, std::string>> origins;
 };
 

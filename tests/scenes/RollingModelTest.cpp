@@ -215,6 +215,20 @@ TEST(RollingModel, MarbleAndRubberRollingKeepTheirEnergyAndRubberNeverSpinsAbout
   EXPECT_LT(relativeDrift(along(rubber, "E")), 1e-10);
   for (double s : along(rubber, "spin_normal"))
     EXPECT_LT(std::abs(s), 1e-13);
+  // M's part along gamma is the constraint's to choose: 0.3 more of it is the same motion
+  const ExampleRun shifted = runExample("rubber_rattleback.json", {},
+                                        {{"M1", 0.1 + 0.3 * 0.05},
+                                         {"M2", 0.3 + 0.3 * 0.05},
+                                         {"M3", 0.2 + 0.3 * std::sqrt(1 - 0.005)},
+                                         {"gamma1", 0.05},
+                                         {"gamma2", 0.05},
+                                         {"gamma3", std::sqrt(1 - 0.005)}},
+                                        20, 0.5);
+  for (const char* id : {"omega1", "omega2", "omega3", "gamma1", "gamma2", "gamma3", "E"}) {
+    const std::vector<double> a = along(rubber, id), b = along(shifted, id);
+    for (std::size_t i = 0; i < a.size(); ++i)
+      EXPECT_NEAR(a[i], b[i], 1e-8) << id << " at t = " << 0.5 * static_cast<double>(i);
+  }
   const ExampleRun disk = runExample("disk.json", {},
                                      {{"M1", 0.0},
                                       {"M2", 0.1},
@@ -260,7 +274,11 @@ TEST(RollingModel, AMalformedBodyIsNamedAtTheFieldTheUserWrote) {
   const json top = json::parse(R"({"kind": "rolling", "id": "bad_top", "parameters": {"R": {"default": 1}},
       "body": {"shape": "sphere", "radius": "R", "mass": 1, "inertia": [1, 1, 1]}, "contact": "marble"})");
   EXPECT_EQ(errorOf(top), ""); // the good one loads
-  const auto expect = [&](json bad, const std::string& part) {
+  json tensor = top;
+  tensor["id"] = "tensor_top";
+  tensor["body"]["inertia"] = json::parse(R"([[1, 0, 0], [0, "R", 0], [0, 0, 1]])");
+  EXPECT_EQ(errorOf(tensor), ""); // the full tensor as a JSON matrix
+  const auto expect = [&](const json& bad, const std::string& part) {
     const std::string what = errorOf(bad);
     EXPECT_NE(what.find(part), std::string::npos) << what;
   };
@@ -277,6 +295,12 @@ TEST(RollingModel, AMalformedBodyIsNamedAtTheFieldTheUserWrote) {
   bad = top;
   bad["parameters"]["omega"] = {{"default", 1}};
   expect(bad, "<bad>:parameters.omega: 'omega' is a name the rolling model's derivation uses");
+  bad = top;
+  bad["parameters"]["gamma1"] = {{"default", 1}};
+  expect(bad, "<bad>:parameters.gamma1: 'gamma1' is a name the rolling model's derivation uses");
+  bad = top;
+  bad["support"] = {{"surface", "plane"}, {"centre", "[0, 0, 1]"}};
+  expect(bad, "<bad>:support");
   bad = top;
   bad["support"] = "sphere";
   expect(bad, "<bad>:support: the support 'sphere' is not derived yet");
