@@ -176,7 +176,7 @@ with open(os.path.join(out, "benchmarks.md"), "w") as f:
 # source; a comment after `#` is not part of the command
 tutorials = os.path.join(out, "tutorials")
 pages = [os.path.join("tutorials", p) for p in sorted(os.listdir(tutorials)) if p.endswith(".md")]
-pages += ["getting-started.md", "continuation.md", "models.md", "sweeps.md"]
+pages += ["getting-started.md", "continuation.md", "models.md", "rolling.md", "sweeps.md"]
 for page in pages:
     with open(os.path.join(out, page)) as f:
         blocks = re.findall(r"```sh\n(.*?)```", f.read(), re.S)
