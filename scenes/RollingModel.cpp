@@ -3,8 +3,7 @@
 #include "dynamics/core/Errors.h"
 #include "scenes/JsonFields.h"
 
-#include <algorithm>
-#include <map>
+#include <initializer_list>
 #include <set>
 
 namespace rv {
@@ -284,15 +283,17 @@ private:
     return potential_ ? " + cross(gamma, gradient(potential_U, gamma))" : "";
   }
 
-  void frame(ordered_json& state, ordered_json& vectors) {
-    for (const char* v : {"gamma", "alpha", "beta"}) {
-      ordered_json names = ordered_json::array();
+  /// State vectors v1, v2, v3 for each name, in order.
+  static void addVectors(ordered_json& state, ordered_json& vectors,
+                         std::initializer_list<const char*> names) {
+    for (const char* v : names) {
+      ordered_json components = ordered_json::array();
       for (int i = 1; i <= 3; ++i) {
         const std::string n = std::string(v) + std::to_string(i);
         state.push_back(n);
-        names.push_back(n);
+        components.push_back(n);
       }
-      vectors[v] = names;
+      vectors[v] = components;
     }
   }
 
@@ -318,10 +319,7 @@ private:
 
   void rolling() {
     ordered_json state = ordered_json::array(), vectors;
-    for (const char* n : {"M1", "M2", "M3"})
-      state.push_back(n);
-    vectors["M"] = {"M1", "M2", "M3"};
-    frame(state, vectors);
+    addVectors(state, vectors, {"M", "gamma", "alpha", "beta"});
     for (const char* n : {"x", "y", "s_plane", "s_body"})
       state.push_back(n);
     out_["state"] = state;
@@ -362,16 +360,7 @@ private:
 
   void sliding() {
     ordered_json state = ordered_json::array(), vectors;
-    for (const char* v : {"omega", "v"}) {
-      ordered_json names = ordered_json::array();
-      for (int i = 1; i <= 3; ++i) {
-        const std::string n = std::string(v) + std::to_string(i);
-        state.push_back(n);
-        names.push_back(n);
-      }
-      vectors[v] = names;
-    }
-    frame(state, vectors);
+    addVectors(state, vectors, {"omega", "v", "gamma", "alpha", "beta"});
     for (const char* n : {"x", "y"})
       state.push_back(n);
     out_["state"] = state;
