@@ -297,6 +297,15 @@ private:
     }
   }
 
+  /// The space frame seen from the body turns against omega; the centre of mass moves with v.
+  static void frameEquations(ordered_json& eq) {
+    eq["gamma"] = "dgamma";
+    eq["alpha"] = "cross(alpha, omega)";
+    eq["beta"] = "cross(beta, omega)";
+    eq["x"] = "dot(v, alpha)";
+    eq["y"] = "dot(v, beta)";
+  }
+
   void common() {
     define("contact_s", shapeContact_);
     define("r", "contact_s + body_centre");
@@ -345,11 +354,7 @@ private:
       eq["M"] = "dM_free + spin_couple*gamma + spin_gauge*dgamma";
     }
     define("v", "-cross(omega, r)");
-    eq["gamma"] = "dgamma";
-    eq["alpha"] = "cross(alpha, omega)";
-    eq["beta"] = "cross(beta, omega)";
-    eq["x"] = "dot(v, alpha)";
-    eq["y"] = "dot(v, beta)";
+    frameEquations(eq);
     eq["s_plane"] = "sqrt(dot(alpha, dr)^2 + dot(beta, dr)^2)";
     eq["s_body"] = "norm(dr)";
     out_["complete"]["s_plane"] = "0";
@@ -379,11 +384,7 @@ private:
     ordered_json& eq = out_["equations"];
     eq["omega"] = "omega_free + normal_force*omega_per_N";
     eq["v"] = "v_free + (normal_force/body_mass)*gamma";
-    eq["gamma"] = "dgamma";
-    eq["alpha"] = "cross(alpha, omega)";
-    eq["beta"] = "cross(beta, omega)";
-    eq["x"] = "dot(v, alpha)";
-    eq["y"] = "dot(v, beta)";
+    frameEquations(eq);
     for (int i = 1; i <= 3; ++i) // a start that gives no velocity rolls: the contact at rest
       out_["complete"]["v" + std::to_string(i)] = "-cross(omega, r)[" + std::to_string(i) + "]";
     energy_ = "body_mass*dot(v, v)/2 + dot(omega, body_inertia*omega)/2 + potential";
