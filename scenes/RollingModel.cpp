@@ -38,7 +38,9 @@ public:
     readSupport();
     readBody();
     userDefinitions();
-    if (contact_ == Contact::Sliding)
+    if (!support_.empty())
+      ballOnSupport();
+    else if (contact_ == Contact::Sliding)
       sliding();
     else
       rolling();
@@ -102,18 +104,69 @@ private:
     }
   }
 
+  /// The support: the plane, or a fixed surface a balanced ball rolls on -- given by its inverse Gauss map
+  /// (sphere, ellipsoid, paraboloid: the point whose normal towards the ball is gamma) or, for the surface
+  /// the ball's centre moves on, as a height over the plane ("graph"). "describes": "centre" gives the sizes
+  /// of the surface the centre moves on (the manual's way) instead of the support's own.
   void readSupport() {
     if (!doc_.contains("support")) return;
     const Where w = root_ / "support";
     const json& s = doc_["support"];
-    if (s.is_object()) onlyKeys(s, w, {"surface"});
-    const std::string name =
-        s.is_object() && s.contains("surface") ? text(s["surface"], w / "surface") : text(s, w);
-    if (name != "plane")
-      w.fail(
-          "the support '" + name +
-          "' is not derived yet: a rolling model rolls on the \"plane\" (a ball on a curved support is the "
-          "built-in ball_on_ellipsoid and ball_on_paraboloid)");
+    if (s.is_string()) {
+      if (text(s, w) == "plane") return;
+      w.fail("a curved support is an object: {\"surface\": \"sphere\", \"radius\": ...}");
+    }
+    requireObject(s, w);
+    onlyKeys(s, w, {"surface", "radius", "semi_axes", "p", "q", "side", "height", "describes"});
+    if (!s.contains("surface")) w.fail("missing \"surface\" (plane, sphere, ellipsoid, paraboloid or graph)");
+    support_ = text(s["surface"], w / "surface");
+    if (support_ == "plane") {
+      if (s.size() > 1) w.fail("the plane has no sizes");
+      support_.clear();
+      return;
+    }
+    const auto need = [&](const char* key, const std::string& name) {
+      if (!s.contains(key)) w.fail("a " + support_ + " support needs \"" + key + "\"");
+      userExpression(name, s[key], w / key);
+    };
+    const std::string describes = s.contains("describes") ? text(s["describes"], w / "describes") : "support";
+    if (describes != "support" && describes != "centre")
+      (w / "describes")
+          .fail("expected \"support\" (the sizes are the support's) or \"centre\" (the sizes are of the "
+                "surface the ball's centre moves on)");
+    centreSurface_ = describes == "centre";
+    const std::string side = s.contains("side") ? text(s["side"], w / "side") : "";
+    if (support_ == "sphere") {
+      need("radius", "support_radius");
+      if (!side.empty() && side != "outside" && side != "inside")
+        (w / "side").fail("expected \"outside\" (the ball rolls on the sphere) or \"inside\" (in it)");
+      inside_ = side == "inside";
+      supportContact_ = inside_ ? "-support_radius*gamma" : "support_radius*gamma";
+      supportView_ = {{"surface", "sphere"}, {"radius", "support_radius"}};
+    } else if (support_ == "ellipsoid") {
+      need("semi_axes", "support_semi_axes");
+      define("support_axes_squared", "diag(support_semi_axes)*diag(support_semi_axes)");
+      supportContact_ = "(support_axes_squared*gamma)/sqrt(dot(gamma, support_axes_squared*gamma))";
+      supportView_ = {{"surface", "ellipsoid"}, {"semi_axes", "support_semi_axes"}};
+    } else if (support_ == "paraboloid") { // a bowl z = x^2/(2p) + y^2/(2q); gamma its upward normal
+      need("p", "support_p");
+      need("q", "support_q");
+      inside_ = true;
+      supportContact_ = "[-support_p*gamma[1]/gamma[3], -support_q*gamma[2]/gamma[3], "
+                        "(support_p*gamma[1]^2 + support_q*gamma[2]^2)/(2*gamma[3]^2)]";
+      supportView_ = {{"surface", "paraboloid"}, {"p", "support_p"}, {"q", "support_q"}};
+    } else if (support_ == "graph") { // the centre's height over the plane, z = height(x1, x2)
+      need("height", "support_height");
+      if (!centreSurface_)
+        (w / "describes")
+            .fail("a graph gives the height of the surface the centre moves on: \"describes\": \"centre\"");
+    } else {
+      (w / "surface").fail("expected \"plane\", \"sphere\", \"ellipsoid\", \"paraboloid\" or \"graph\"");
+    }
+    for (const char* key : {"radius", "semi_axes", "p", "q", "height"})
+      if (s.contains(key) && !out_["definitions"].contains(std::string("support_") + key))
+        (w / key).fail("a " + support_ + " support has no \"" + key + "\"");
+    if (s.contains("side") && support_ != "sphere") (w / "side").fail("only a sphere has a side");
   }
 
   void readBody() {
@@ -215,6 +268,15 @@ private:
     if (b.contains("axis")) {
       userExpression("body_axis", b["axis"], w / "axis");
       axis_ = true;
+    }
+    if (!support_.empty()) { // a ball on a curved support: balanced and dynamically symmetric, so far
+      if (shape_ != "sphere") (w / "shape").fail("on a curved support the body is a \"sphere\" (so far)");
+      if (b.contains("centre") || b.contains("gyrostat") || b.contains("principal_axes"))
+        w.fail("on a curved support the ball is balanced (no \"centre\") and has no gyrostat (so far)");
+      if (I.is_array())
+        (w / "inertia").fail("on a curved support give the ball's one central moment of inertia (so far)");
+      if (contact_ != Contact::Marble)
+        (root_ / "contact").fail("on a curved support the contact is \"marble\" (so far)");
     }
   }
 
@@ -390,8 +452,67 @@ private:
     energy_ = "body_mass*dot(v, v)/2 + dot(omega, body_inertia*omega)/2 + potential";
   }
 
-  void observables() {
-    ordered_json o;
+  /// A balanced ball (central moment mu, D = m R^2) rolling without slipping on a fixed surface, in the
+  /// fixed frame (Borisov & Mamaev 2002; manual section 3.3, (11)-(14)): gamma the unit normal at the contact
+  /// towards the centre, x the centre on the surface parallel to the support, M = mu w + D g x (w x g),
+  /// x' = R w x g, M' = D g' x (w x g) + R g x F (F the force on the centre), q' = (0, w) q / 2; g' from x'
+  /// through the centre surface's Gauss map, inverse(dx/dgamma + gamma gamma^T) x' (exact, by jacobian()).
+  void ballOnSupport() {
+    const bool graph = support_ == "graph";
+    ordered_json state = ordered_json::array(), vectors;
+    addVectors(state, vectors, {"M"});
+    if (graph) {
+      state.push_back("x1");
+      state.push_back("x2");
+    } else {
+      addVectors(state, vectors, {"gamma"});
+    }
+    for (const char* n : {"q0", "q1", "q2", "q3", "s_surface", "s_ball"})
+      state.push_back(n);
+    out_["state"] = state;
+    out_["vectors"] = vectors;
+    define("ball_D", "body_mass*body_radius^2");
+    if (graph) {
+      define("height_slope", "gradient(support_height, [x1, x2])");
+      define("gamma", "normalize([-height_slope[1], -height_slope[2], 1])");
+      define("x", "[x1, x2, support_height]");
+    } else {
+      define("centre_surface", // the centre lies R along the normal from the contact, on either side
+             centreSurface_ ? supportContact_ : supportContact_ + " + body_radius*gamma");
+      define("x", "centre_surface");
+    }
+    define("omega", "(M + (ball_D/body_inertia)*dot(gamma, M)*gamma)/(body_inertia + ball_D)");
+    define("dx", "body_radius*cross(omega, gamma)");
+    define("dgamma", graph ? "derivative(gamma, [x1, x2], [dx[1], dx[2]])"
+                           : "inverse(jacobian(centre_surface, gamma) + outer(gamma, gamma))*dx");
+    define("force", "-body_mass*gravity_g*[0, 0, 1]" +
+                        std::string(potential_ ? " - gradient(potential_U, [x[1], x[2], x[3]])" : ""));
+    define("potential", "body_mass*gravity_g*x[3]" + std::string(potential_ ? " + potential_U" : ""));
+    define("rotation", "[[q0^2 + q1^2 - q2^2 - q3^2, 2*(q1*q2 - q0*q3), 2*(q1*q3 + q0*q2)], "
+                       "[2*(q1*q2 + q0*q3), q0^2 - q1^2 + q2^2 - q3^2, 2*(q2*q3 - q0*q1)], "
+                       "[2*(q1*q3 - q0*q2), 2*(q2*q3 + q0*q1), q0^2 - q1^2 - q2^2 + q3^2]]");
+    ordered_json& eq = out_["equations"];
+    eq["M"] = "ball_D*cross(dgamma, cross(omega, gamma)) + body_radius*cross(gamma, force)";
+    if (graph) {
+      eq["x1"] = "dx[1]";
+      eq["x2"] = "dx[2]";
+    } else {
+      eq["gamma"] = "dgamma";
+    }
+    eq["q0"] = "-(omega[1]*q1 + omega[2]*q2 + omega[3]*q3)/2";
+    eq["q1"] = "(omega[1]*q0 + omega[2]*q3 - omega[3]*q2)/2";
+    eq["q2"] = "(omega[2]*q0 + omega[3]*q1 - omega[1]*q3)/2";
+    eq["q3"] = "(omega[3]*q0 + omega[1]*q2 - omega[2]*q1)/2";
+    eq["s_surface"] = "norm(dx - body_radius*dgamma)";
+    eq["s_ball"] = "body_radius*norm(dgamma - cross(omega, gamma))";
+    ordered_json& c = out_["complete"];
+    c["q0"] = "1";
+    for (const char* n : {"q1", "q2", "q3", "s_surface", "s_ball"})
+      c[n] = "0";
+    energy_ = "dot(M, omega)/2 + potential";
+  }
+
+  void planeObservables(ordered_json& o) const {
     const bool conservative = contact_ != Contact::Sliding;
     o["E"] = {{"value", energy_},
               {"description", conservative ? "energy" : "energy (friction at the contact dissipates it)"}};
@@ -421,6 +542,27 @@ private:
       o["normal_force"] = {{"value", "normal_force"}, {"description", "the plane's normal reaction"}};
       o["slip"] = {{"value", "norm(v_slip)"}, {"description", "speed of the contact point along the plane"}};
     }
+  }
+
+  void observables() {
+    ordered_json o;
+    if (!support_.empty()) { // a ball on a curved support
+      o["E"] = {{"value", energy_}, {"description", "energy"}, {"integral", true}};
+      if (support_ != "graph")
+        o["geometric"] = {
+            {"value", "dot(gamma, gamma)"}, {"description", "geometric integral"}, {"integral", true}};
+      for (int i = 1; i <= 3; ++i) {
+        const std::string k = std::to_string(i);
+        o["omega" + k] = {{"value", "omega[" + k + "]"},
+                          {"description", "angular velocity, fixed axis " + k}};
+        if (support_ != "graph" || i == 3)
+          o["x" + k] = {{"value", "x[" + k + "]"}, {"description", "centre of the ball, fixed axis " + k}};
+      }
+      o["spin_normal"] = {{"value", "dot(omega, gamma)"},
+                          {"description", "spin about the normal at the contact"}};
+    } else {
+      planeObservables(o);
+    }
     if (doc_.contains("observables")) {
       const ordered_json user = source("observables");
       if (!user.is_object()) (root_ / "observables").fail("expected an object of observables");
@@ -439,9 +581,24 @@ private:
   void view() {
     ordered_json v = shapeView_;
     v["centre"] = "body_centre";
-    v["rotation"] = "rows(alpha, beta, gamma)";
-    v["position"] = "[x, y, -dot(r, gamma)]";
-    v["contact"] = "[x, y, -dot(r, gamma)] + rows(alpha, beta, gamma)*r";
+    if (support_.empty()) {
+      v["rotation"] = "rows(alpha, beta, gamma)";
+      v["position"] = "[x, y, -dot(r, gamma)]";
+      v["contact"] = "[x, y, -dot(r, gamma)] + rows(alpha, beta, gamma)*r";
+    } else {
+      v["rotation"] = "rotation";
+      v["position"] = "x";
+      v["contact"] = "x - body_radius*gamma";
+      if (!supportView_
+               .is_null()) { // the support itself; sizes of the centre's surface drawn less the radius
+        ordered_json s = supportView_;
+        if (centreSurface_ && support_ == "sphere")
+          s["radius"] = inside_ ? "support_radius + body_radius" : "support_radius - body_radius";
+        if (centreSurface_ && support_ == "ellipsoid")
+          s["semi_axes"] = "support_semi_axes - body_radius*[1, 1, 1]";
+        v["support"] = s;
+      }
+    }
     if (doc_.contains("view")) {
       const ordered_json user = source("view");
       if (!user.is_object()) (root_ / "view").fail("expected an object");
@@ -461,6 +618,9 @@ private:
   std::string shape_, shapeContact_, energy_;
   ordered_json shapeView_;
   bool potential_ = false, gyrostat_ = false, axis_ = false;
+  std::string support_, supportContact_; ///< a curved support ("" for the plane), its inverse Gauss map
+  ordered_json supportView_;
+  bool centreSurface_ = false, inside_ = false;
 };
 
 } // namespace

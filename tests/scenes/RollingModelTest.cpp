@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <gtest/gtest.h>
+#include <tuple>
 
 namespace rv {
 namespace {
@@ -101,7 +102,7 @@ void expectTheSameMotion(const Model& a, const Model& b, const Eigen::VectorXd& 
   Eigen::MatrixXd V = Eigen::MatrixXd::Random(n, k);
   for (int c = 0; c < k; ++c) {
     const Eigen::Vector3d eta = Eigen::Vector3d::Random();
-    for (const char* frame : {"gamma1", "alpha1", "beta1"})
+    for (const char* frame : {"gamma1", "alpha1", "beta1"}) // those the model has
       if (const int i = at(frame); i < n) V.col(c).segment<3>(i) = x.segment<3>(i).cross(eta);
   }
   Eigen::VectorXd fa(n), fb(n);
@@ -135,7 +136,7 @@ struct Restated {
   std::map<std::string, double> parameters, state;
 };
 
-TEST(RollingModel, EachBuiltInBodyOnAPlaneRestatedByItsGeometryIsTheBuiltInModel) {
+TEST(RollingModel, EachBuiltInRollingBodyRestatedByItsGeometryIsTheBuiltInModel) {
   const double g3 = std::sqrt(1 - 0.005);
   const std::vector<Restated> bodies{
       {"ellipsoid_on_plane",
@@ -151,7 +152,18 @@ TEST(RollingModel, EachBuiltInBodyOnAPlaneRestatedByItsGeometryIsTheBuiltInModel
         {"gamma3", std::sqrt(0.95)}}},
       {"chaplygin_ball",
        {{"K1", 0.1}, {"K3", -0.2}, {"R", 0.8}},
-       {{"M1", 0.3}, {"M2", 0.5}, {"M3", 0.4}, {"gamma1", 0.0}, {"gamma2", 0.6}, {"gamma3", 0.8}}}};
+       {{"M1", 0.3}, {"M2", 0.5}, {"M3", 0.4}, {"gamma1", 0.0}, {"gamma2", 0.6}, {"gamma3", 0.8}}},
+      {"ball_on_ellipsoid", // on a curved support: the ellipsoid the centre moves on, in a field
+       {{"k", 0.5}, {"R", 0.25}},
+       {{"M1", 0.2},
+        {"M2", -0.1},
+        {"M3", 0.3},
+        {"gamma1", 0.3 / std::sqrt(0.98)},
+        {"gamma2", 0.5 / std::sqrt(0.98)},
+        {"gamma3", 0.8 / std::sqrt(0.98)}}},
+      {"ball_on_paraboloid", // the centre's surface as a height over the plane, perturbed
+       {{"Lambda1", 0.1}, {"Lambda3", 0.05}, {"Lambda4", -0.02}},
+       {{"M1", 0.05}, {"M2", 0.1}, {"M3", 0.02}, {"x1", 0.2}, {"x2", 0.1}}}};
   for (const Restated& b : bodies) {
     SCOPED_TRACE(b.id);
     const Pair p = pairOf(b.id, std::string("rolling/") + b.id + ".json", b.parameters);
@@ -174,9 +186,9 @@ struct ExampleRun {
   std::unique_ptr<Model> model;
 };
 
-ExampleRun runExample(const std::string& file, const std::map<std::string, double>& set,
-                      const std::map<std::string, double>& start, double T, double every) {
-  ExampleRun r{{}, instance(modelFileEntry(examples(file, "rolling")), set)};
+ExampleRun runModel(std::unique_ptr<Model> model, const std::map<std::string, double>& start, double T,
+                    double every) {
+  ExampleRun r{{}, std::move(model)};
   auto integrator = verner(1e-13);
   integrator->start(*r.model, 0, named(*r.model, start));
   Eigen::VectorXd y(r.model->dimension());
@@ -187,6 +199,11 @@ ExampleRun runExample(const std::string& file, const std::map<std::string, doubl
     r.states.push_back(y);
   }
   return r;
+}
+
+ExampleRun runExample(const std::string& file, const std::map<std::string, double>& set,
+                      const std::map<std::string, double>& start, double T, double every) {
+  return runModel(instance(modelFileEntry(examples(file, "rolling")), set), start, T, every);
 }
 
 std::vector<double> along(const ExampleRun& r, const std::string& id) {
@@ -242,6 +259,42 @@ TEST(RollingModel, MarbleAndRubberRollingKeepTheirEnergyAndRubberNeverSpinsAbout
   for (double z : along(disk, "Z"))
     lowest = std::min(lowest, z);
   EXPECT_GT(lowest, 0.3); // it leans into its turn and rolls on, never falling flat
+}
+
+TEST(RollingModel, ABallInASphericalBowlFromItsGeometryFollowsTheBowlWrittenByHand) {
+  // the same ball (radius b = 0.2, k = 2/5, in a sphere of radius a = 1 under gravity 9.81) described by its
+  // geometry, and written by hand in other variables (examples/models/ball_in_spherical_bowl.json: w, n from
+  // the bowl's centre to the contact; here M about the contact and gamma = -n)
+  const json geometry = json::parse(R"({"kind": "rolling", "id": "ball_in_a_bowl_by_geometry",
+      "body": {"shape": "sphere", "radius": 0.2, "mass": 1, "inertia": "0.4*0.2^2"},
+      "support": {"surface": "sphere", "radius": 1, "side": "inside"}, "gravity": 9.81})");
+  const Eigen::Vector3d w(1, 4, 2), n(std::sin(0.5), 0, -std::cos(0.5)), gamma = -n;
+  const double mu = 0.4 * 0.04, D = 0.04;
+  const Eigen::Vector3d M = mu * w + D * gamma.cross(w.cross(gamma));
+  const std::map<std::string, double> a{{"M1", M[0]},         {"M2", M[1]},         {"M3", M[2]},
+                                        {"gamma1", gamma[0]}, {"gamma2", gamma[1]}, {"gamma3", gamma[2]}};
+  std::map<std::string, double> b{{"w1", 1}, {"w2", 4}, {"w3", 2}, {"n1", n[0]}, {"n2", n[1]}, {"n3", n[2]}};
+  for (const char* e : {"e11", "e22", "e33"})
+    b[e] = 1;
+  for (const char* e : {"e12", "e13", "e21", "e23", "e31", "e32"})
+    b[e] = 0;
+  const ExampleRun ra = runModel(instance(modelEntryFromJson(geometry, "<bowl>")), a, 10, 0.5);
+  const ExampleRun rb =
+      runModel(instance(modelFileEntry(examples("ball_in_spherical_bowl.json"))), b, 10, 0.5);
+  for (const auto& [mine, theirs, sign] :
+       std::vector<std::tuple<std::string, std::string, double>>{{"omega1", "w1", 1},
+                                                                 {"omega2", "w2", 1},
+                                                                 {"omega3", "w3", 1},
+                                                                 {"gamma1", "n1", -1},
+                                                                 {"gamma3", "n3", -1},
+                                                                 {"E", "E", 1}}) {
+    const std::vector<double> x = along(ra, mine), y = along(rb, theirs);
+    for (std::size_t i = 0; i < x.size(); ++i)
+      EXPECT_NEAR(x[i], sign * y[i], 1e-9 * (1 + std::abs(y[i])))
+          << mine << " at t = " << 0.5 * static_cast<double>(i);
+  }
+  EXPECT_LT(relativeDrift(along(ra, "E")), 1e-11);
+  EXPECT_LT(relativeDrift(along(ra, "spin_normal")), 1e-10); // Routh: the spin about the normal is kept
 }
 
 TEST(RollingModel, TheTippeTopTurnsOverOnlyInsideItsInertiaWindowAndKeepsJellettsIntegral) {
@@ -302,8 +355,11 @@ TEST(RollingModel, AMalformedBodyIsNamedAtTheFieldTheUserWrote) {
   bad["support"] = {{"surface", "plane"}, {"centre", "[0, 0, 1]"}};
   expect(bad, "<bad>:support");
   bad = top;
-  bad["support"] = "sphere";
-  expect(bad, "<bad>:support: the support 'sphere' is not derived yet");
+  bad["support"] = {{"surface", "cube"}};
+  expect(bad, "<bad>:support.surface: expected \"plane\", \"sphere\"");
+  bad = top;
+  bad["support"] = {{"surface", "sphere"}, {"radius", 2}};
+  expect(bad, "<bad>:body.inertia: on a curved support give the ball's one central moment of inertia");
   bad = top;
   bad["body"]["semi_axes"] = "[1, 2, 3]";
   expect(bad, "<bad>:body.semi_axes: a sphere has no \"semi_axes\"");
