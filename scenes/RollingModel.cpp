@@ -1,9 +1,12 @@
 #include "scenes/RollingModel.h"
 
 #include "dynamics/core/Errors.h"
+#include "dynamics/expr/Expression.h"
 #include "scenes/JsonFields.h"
 
+#include <algorithm>
 #include <initializer_list>
+#include <optional>
 #include <set>
 
 namespace rv {
@@ -169,12 +172,70 @@ private:
     if (s.contains("side") && support_ != "sphere") (w / "side").fail("only a sphere has a side");
   }
 
+  /// An implicit surface's F: parsed here, so that an error is named at body.F, and its names checked (x, y,
+  /// z, the parameters, the user's definitions).
+  void readImplicit(const json& j, const Where& w) {
+    if (!j.is_string()) w.fail("expected an expression of x, y, z (a string)");
+    try {
+      implicit_ = expr::parse(j.get<std::string>());
+    } catch (const expr::ExprError& e) {
+      w.fail(e.what());
+    }
+    std::vector<std::string> known{"x", "y", "z", "pi"};
+    for (const char* section : {"parameters", "definitions"})
+      if (doc_.contains(section) && doc_[section].is_object())
+        for (const auto& [name, value] : doc_[section].items())
+          known.push_back(name);
+    for (const std::string& name : expr::namesUsed(*implicit_))
+      if (std::find(known.begin(), known.end(), name) == known.end()) {
+        const std::string near = expr::nearestName(name, known);
+        w.fail("unknown name '" + name + "' (F reads x, y, z, the parameters and your definitions" +
+               (near.empty() ? ")" : "; did you mean '" + near + "'?)"));
+      }
+  }
+
+  /// F at the point named `p` (a 3-vector expression).
+  std::string implicitAt(const std::string& p) const {
+    return expr::renamed(*implicit_, {{"x", p + "[1]"}, {"y", p + "[2]"}, {"z", p + "[3]"}});
+  }
+
+  /// One Newton step `to` from the point `from` towards the contact: onto F = 0 along the gradient, then
+  /// along the surface so that the outward normal turns to -gamma (the shape operator's inverse, from the
+  /// Hessian, as the closed forms' contact rate uses it). Quadratic from a point near the contact.
+  void newtonStep(const std::string& from, const std::string& to) {
+    define(to + "_F0", implicitAt(from));
+    define(to + "_g0", "gradient(" + to + "_F0, " + from + ")");
+    define(to + "_on", from + " - (" + to + "_F0/dot(" + to + "_g0, " + to + "_g0))*" + to + "_g0");
+    define(to + "_F", implicitAt(to + "_on"));
+    define(to + "_g", "gradient(" + to + "_F, " + to + "_on)");
+    define(to + "_n", "normalize(" + to + "_g)");
+    define(to + "_P", "identity() - outer(" + to + "_n, " + to + "_n)");
+    define(to + "_K", to + "_P*jacobian(" + to + "_g, " + to + "_on)*" + to + "_P/norm(" + to +
+                          "_g) + outer(" + to + "_n, " + to + "_n)");
+    define(to, to + "_on - inverse(" + to + "_K)*(" + to + "_P*gamma)");
+  }
+
+  /// The implicit body's contact: two Newton steps from the one carried in the state (which follows the
+  /// contact's rate), and a start for it from gamma alone.
+  void implicitContact() {
+    newtonStep("contact", "contact_newton_1");
+    newtonStep("contact_newton_1", "contact_newton_2");
+    define("contact_start_0", "-body_size*normalize(gamma)");
+    constexpr int kStartSteps = 16;
+    for (int k = 1; k <= kStartSteps; ++k)
+      newtonStep("contact_start_" + std::to_string(k - 1), "contact_start_" + std::to_string(k));
+    for (int i = 1; i <= 3; ++i)
+      out_["complete"]["contact" + std::to_string(i)] =
+          "contact_start_" + std::to_string(kStartSteps) + "[" + std::to_string(i) + "]";
+    out_["equations"]["contact"] = "derivative(contact_s, gamma, dgamma)";
+  }
+
   void readBody() {
     const Where w = root_ / "body";
     if (!doc_.contains("body")) root_.fail("missing \"body\" (its shape, sizes, mass and inertia)");
     const json& b = requireObject(doc_["body"], w);
     onlyKeys(b, w,
-             {"shape", "radius", "semi_axes", "p", "q", "height", "centre", "mass", "inertia",
+             {"shape", "radius", "semi_axes", "p", "q", "height", "F", "size", "centre", "mass", "inertia",
               "principal_axes", "gyrostat", "axis"});
     if (!b.contains("shape")) w.fail("missing \"shape\" (sphere, ellipsoid, paraboloid or disk)");
     shape_ = text(b["shape"], w / "shape");
@@ -210,12 +271,22 @@ private:
       need("radius", "body_radius");
       shapeContact_ = "-(body_radius/sqrt(gamma[1]^2 + gamma[2]^2))*[gamma[1], gamma[2], 0]";
       shapeView_ = {{"body", "ellipsoid"}, {"semi_axes", "[body_radius, body_radius, body_radius/40]"}};
+    } else if (shape_ == "implicit") { // F(x, y, z) = 0, F < 0 inside: the contact found by Newton's method
+      if (!b.contains("F")) w.fail("an implicit body needs \"F\": its surface F(x, y, z) = 0, F < 0 inside");
+      readImplicit(b["F"], w / "F");
+      if (b.contains("size"))
+        userExpression("body_size", b["size"], w / "size");
+      else
+        define("body_size", "1");
+      shapeContact_ = "contact_newton_2";
+      shapeView_ = {{"body", "none"}};
     } else {
-      (w / "shape").fail("expected \"sphere\", \"ellipsoid\", \"paraboloid\" or \"disk\"");
+      (w / "shape").fail("expected \"sphere\", \"ellipsoid\", \"paraboloid\", \"disk\" or \"implicit\"");
     }
-    for (const char* key : {"radius", "semi_axes", "p", "q", "height"})
+    for (const char* key : {"radius", "semi_axes", "p", "q", "height", "size"})
       if (b.contains(key) && !out_["definitions"].contains(std::string("body_") + key))
         (w / key).fail("a " + shape_ + " has no \"" + key + "\"");
+    if (b.contains("F") && shape_ != "implicit") (w / "F").fail("only an \"implicit\" body has \"F\"");
     if (b.contains("centre"))
       userExpression("body_centre", b["centre"], w / "centre");
     else
@@ -313,7 +384,7 @@ private:
                                              "seed",
                                              "alpha0"};
     const auto component = [](const std::string& name) { // M1, gamma2, ..., x, y, s_plane, s_body
-      for (const char* v : {"M", "gamma", "alpha", "beta", "omega", "v"})
+      for (const char* v : {"M", "gamma", "alpha", "beta", "omega", "v", "contact"})
         for (const char* i : {"1", "2", "3"})
           if (name == std::string(v) + i) return true;
       return name == "s_plane" || name == "s_body";
@@ -369,6 +440,7 @@ private:
   }
 
   void common() {
+    if (implicit_) implicitContact();
     define("contact_s", shapeContact_);
     define("r", "contact_s + body_centre");
     define("dgamma", "cross(gamma, omega)");
@@ -390,7 +462,10 @@ private:
 
   void rolling() {
     ordered_json state = ordered_json::array(), vectors;
-    addVectors(state, vectors, {"M", "gamma", "alpha", "beta"});
+    if (implicit_)
+      addVectors(state, vectors, {"M", "gamma", "contact", "alpha", "beta"});
+    else
+      addVectors(state, vectors, {"M", "gamma", "alpha", "beta"});
     for (const char* n : {"x", "y", "s_plane", "s_body"})
       state.push_back(n);
     out_["state"] = state;
@@ -427,7 +502,10 @@ private:
 
   void sliding() {
     ordered_json state = ordered_json::array(), vectors;
-    addVectors(state, vectors, {"omega", "v", "gamma", "alpha", "beta"});
+    if (implicit_)
+      addVectors(state, vectors, {"omega", "v", "gamma", "contact", "alpha", "beta"});
+    else
+      addVectors(state, vectors, {"omega", "v", "gamma", "alpha", "beta"});
     for (const char* n : {"x", "y"})
       state.push_back(n);
     out_["state"] = state;
@@ -528,6 +606,11 @@ private:
                         {"description", "spin about the normal at the contact (zero in rubber rolling)"}};
     if (contact_ == Contact::Rubber) o["spin_normal"]["integral"] = true;
     o["Z"] = {{"value", "-dot(r, gamma)"}, {"description", "height of the centre of mass above the plane"}};
+    if (implicit_)
+      o["contact_drift"] = {{"value", "norm(contact - contact_s)"},
+                            {"description",
+                             "how far the contact carried in the state is from the one solved for "
+                             "(Newton's method corrects it at every step)"}};
     if (axis_)
       o["axis_up"] = {{"value", "dot(gamma, normalize(body_axis))"},
                       {"description", "cosine between the body's axis and the upward vertical"}};
@@ -618,7 +701,8 @@ private:
   std::string shape_, shapeContact_, energy_;
   ordered_json shapeView_;
   bool potential_ = false, gyrostat_ = false, axis_ = false;
-  std::string support_, supportContact_; ///< a curved support ("" for the plane), its inverse Gauss map
+  std::optional<expr::Expression> implicit_; ///< an implicit body's F
+  std::string support_, supportContact_;     ///< a curved support ("" for the plane), its inverse Gauss map
   ordered_json supportView_;
   bool centreSurface_ = false, inside_ = false;
 };

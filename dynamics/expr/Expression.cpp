@@ -268,6 +268,18 @@ std::vector<std::string> namesUsed(const Expression& e) {
   return names;
 }
 
+std::string renamed(const Expression& e, const std::map<std::string, std::string>& replace) {
+  std::vector<std::pair<std::size_t, const Node*>> at; // where each name to replace starts, last first
+  for (const Node& n : e.nodes)
+    if (n.kind == Node::Kind::Name && replace.count(n.name))
+      at.emplace_back(static_cast<std::size_t>(n.column - 1), &n);
+  std::sort(at.begin(), at.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::string text = e.text;
+  for (const auto& [start, n] : at)
+    text.replace(start, n->name.size(), "(" + replace.at(n->name) + ")");
+  return text;
+}
+
 std::string nearestName(const std::string& name, const std::vector<std::string>& known) {
   std::string best;
   std::size_t bestDistance = std::max<std::size_t>(2, name.size() / 3) + 1;

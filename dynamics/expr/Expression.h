@@ -11,6 +11,7 @@
 #pragma once
 #include "dynamics/core/Errors.h"
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -52,6 +53,11 @@ Expression parse(const std::string& text);
 
 /// Names used by an expression (variables, not called functions), in order of first use.
 std::vector<std::string> namesUsed(const Expression& e);
+
+/// The expression's text with each name in `replace` (a variable, not a called function) written as its
+/// replacement in parentheses: an expression of x, y, z evaluated at a point p is renamed(F, {{"x", "p[1]"},
+/// ...}) (a rolling body's implicit surface, scenes/RollingModel.h).
+std::string renamed(const Expression& e, const std::map<std::string, std::string>& replace);
 
 /// The known name nearest to `name` by edit distance (for "did you mean"), or "" when none is close.
 std::string nearestName(const std::string& name, const std::vector<std::string>& known);

@@ -10,6 +10,7 @@
 #include "tests/scenes/ModelFileSupport.h"
 
 #include <cmath>
+#include <fstream>
 #include <gtest/gtest.h>
 #include <tuple>
 
@@ -261,6 +262,41 @@ TEST(RollingModel, MarbleAndRubberRollingKeepTheirEnergyAndRubberNeverSpinsAbout
   EXPECT_GT(lowest, 0.3); // it leans into its turn and rolls on, never falling flat
 }
 
+TEST(RollingModel, AnEllipsoidGivenByItsImplicitSurfaceRollsAsTheClosedFormEllipsoid) {
+  // the rattleback's ellipsoid as F = (x/b1)^2 + (y/b2)^2 + (z/b3)^2 - 1: the contact by Newton's method,
+  // carried in the state, against the closed-form inverse Gauss map
+  json implicit = json::parse(std::ifstream(examples("ellipsoid_on_plane.json", "rolling")));
+  implicit["id"] = "implicit_rattleback";
+  implicit["body"]["shape"] = "implicit";
+  implicit["body"].erase("semi_axes");
+  implicit["body"]["F"] = "(x/b1)^2 + (y/b2)^2 + (z/b3)^2 - 1";
+  implicit["body"]["size"] = "b2";
+  const std::map<std::string, double> set{{"a1", 0.05}, {"B11", 0.1}, {"B12", 0.02}};
+  const std::map<std::string, double> start{{"M1", 0.1},      {"M2", 0.05},
+                                            {"M3", 0.3},      {"gamma1", 0.05},
+                                            {"gamma2", 0.05}, {"gamma3", std::sqrt(1 - 0.005)}};
+  const ExampleRun a =
+      runModel(instance(modelFileEntry(examples("ellipsoid_on_plane.json", "rolling")), set), start, 10, 0.5);
+  const ExampleRun b = runModel(instance(modelEntryFromJson(implicit, "<implicit>"), set), start, 10, 0.5);
+  for (const char* id : {"omega1", "omega2", "omega3", "gamma1", "gamma2", "gamma3", "Z", "E"}) {
+    const std::vector<double> x = along(a, id), y = along(b, id);
+    for (std::size_t i = 0; i < x.size(); ++i)
+      EXPECT_NEAR(x[i], y[i], 1e-9) << id << " at t = " << 0.5 * static_cast<double>(i);
+  }
+  for (double d : along(b, "contact_drift"))
+    EXPECT_LT(d, 1e-9);
+}
+
+TEST(RollingModel, ARoundedCubeGivenOnlyByItsSurfaceKeepsItsEnergy) {
+  const ExampleRun cube = runExample(
+      "rounded_cube.json", {},
+      {{"M1", 0.4}, {"M2", 0.1}, {"M3", 0.6}, {"gamma1", 0.2}, {"gamma2", 0.1}, {"gamma3", std::sqrt(0.95)}},
+      20, 0.5);
+  EXPECT_LT(relativeDrift(along(cube, "E")), 1e-10);
+  for (double d : along(cube, "contact_drift"))
+    EXPECT_LT(d, 1e-9);
+}
+
 TEST(RollingModel, ABallInASphericalBowlFromItsGeometryFollowsTheBowlWrittenByHand) {
   // the same ball (radius b = 0.2, k = 2/5, in a sphere of radius a = 1 under gravity 9.81) described by its
   // geometry, and written by hand in other variables (examples/models/ball_in_spherical_bowl.json: w, n from
@@ -354,6 +390,11 @@ TEST(RollingModel, AMalformedBodyIsNamedAtTheFieldTheUserWrote) {
   bad = top;
   bad["support"] = {{"surface", "plane"}, {"centre", "[0, 0, 1]"}};
   expect(bad, "<bad>:support");
+  bad = top;
+  bad["body"] = {{"shape", "implicit"}, {"F", "x^2 + y^2 + w^2 - 1"}, {"mass", 1}, {"inertia", {1, 1, 1}}};
+  expect(bad, "<bad>:body.F: unknown name 'w'");
+  bad["body"]["F"] = "x^2 + (y";
+  expect(bad, "<bad>:body.F: column");
   bad = top;
   bad["support"] = {{"surface", "cube"}};
   expect(bad, "<bad>:support.surface: expected \"plane\", \"sphere\"");
