@@ -11,7 +11,10 @@
 #include <string>
 #include <vtkAlgorithm.h>
 #include <vtkCellArray.h>
+#include <vtkContourFilter.h>
+#include <vtkDoubleArray.h>
 #include <vtkFloatArray.h>
+#include <vtkImageData.h>
 #include <vtkOBJReader.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
@@ -96,6 +99,38 @@ vtkSmartPointer<vtkPolyData> readBodyMesh(const BodyMeshFile& file) {
   if (out->GetNumberOfPolys() == 0)
     throw InputError(file.path + ": the mesh holds no triangles (not a readable " +
                      (stlFile ? "STL" : "OBJ") + " file?)");
+  return out;
+}
+
+vtkSmartPointer<vtkPolyData> sampleImplicitSurface(const ImplicitSurface& surface) {
+  constexpr int kSamples = 56; // per axis: smooth enough at a body's size on screen, ~0.2 s
+  const double reach = 1.25 * surface.size, step = 2 * reach / (kSamples - 1);
+  vtkNew<vtkImageData> grid;
+  grid->SetDimensions(kSamples, kSamples, kSamples);
+  grid->SetOrigin(-reach, -reach, -reach);
+  grid->SetSpacing(step, step, step);
+  vtkNew<vtkDoubleArray> values;
+  values->SetNumberOfValues(static_cast<vtkIdType>(kSamples) * kSamples * kSamples);
+  vtkIdType id = 0;
+  for (int k = 0; k < kSamples; ++k) // x fastest, as vtkImageData orders its points
+    for (int j = 0; j < kSamples; ++j)
+      for (int i = 0; i < kSamples; ++i) {
+        const double F = surface.F(Eigen::Vector3d(-reach + i * step, -reach + j * step, -reach + k * step));
+        values->SetValue(id++, std::isfinite(F) ? F : 1.0);
+      }
+  grid->GetPointData()->SetScalars(values);
+  vtkNew<vtkContourFilter> contour;
+  contour->SetInputData(grid);
+  contour->SetValue(0, 0.0);
+  vtkNew<vtkPolyDataNormals> normals;
+  normals->SetInputConnection(contour->GetOutputPort());
+  normals->ConsistencyOn();
+  normals->AutoOrientNormalsOn(); // outward, whatever the contour's orientation
+  normals->Update();
+  vtkSmartPointer<vtkPolyData> out = normals->GetOutput();
+  if (out->GetNumberOfPolys() == 0)
+    throw InputError("the body's surface F = 0 is not within " + std::to_string(reach) +
+                     " of its centre: give its \"size\"");
   return out;
 }
 

@@ -28,6 +28,10 @@ vtkSmartPointer<vtkPolyData> readBodyMesh(const BodyMeshFile& file);
 /// The ellipsoid of a mesh's bounding box (centre, half-extents): the size and axes the view gives it.
 BodyGeometry boundingGeometry(vtkPolyData* mesh);
 
+/// The surface F = 0 of an implicit body sampled on a grid over [-1.25 size, 1.25 size]^3 (marching cubes,
+/// outward normals); InputError when F has no zero there.
+vtkSmartPointer<vtkPolyData> sampleImplicitSurface(const ImplicitSurface& surface);
+
 /// A length that sets the scene's scale: the largest half-extent of the body.
 double bodySize(const BodyGeometry& geometry);
 

@@ -54,11 +54,13 @@ VisualScene::VisualScene(const Model& model, const ViewOptions& options, const E
   const long cap = options.maxTracePoints;
   auto geometry = model.geometry();
   vtkSmartPointer<vtkPolyData> mesh; // a body drawn from a file: its box sets the sizes and axes
-  if (const auto* drawn = dynamic_cast<const DrawnFromMesh*>(&model))
-    if (const auto file = drawn->bodyMesh()) {
+  if (const auto* drawn = dynamic_cast<const DrawnFromMesh*>(&model)) {
+    if (const auto file = drawn->bodyMesh())
       mesh = readBodyMesh(*file);
-      geometry = boundingGeometry(mesh);
-    }
+    else if (const auto surface = drawn->bodySurface())
+      mesh = sampleImplicitSurface(*surface);
+    if (mesh) geometry = boundingGeometry(mesh);
+  }
   std::array<double, 3> lo{}, hi{}; // where the scene axes go unless the scene gives their range
   if (geometry && pose && options.kind == ViewKind::Apex) {
     scale_ = 1; // the unit sphere

@@ -254,20 +254,28 @@ private:
   void readView(EquationModelSpec& s, const Where& w) {
     const json& j = requireObject(doc_["view"], w);
     onlyKeys(j, w,
-             {"body", "radius", "semi_axes", "centre", "p", "q", "height", "mesh", "scale", "support",
-              "rotation", "position", "contact", "normal"});
+             {"body", "radius", "semi_axes", "centre", "p", "q", "height", "mesh", "scale", "F", "size",
+              "support", "rotation", "position", "contact", "normal"});
     EquationModelSpec::View v;
     v.body = readShape(j, w, "body",
                        {{"none", BodyShape::None},
                         {"ball", BodyShape::Ball},
                         {"ellipsoid", BodyShape::Ellipsoid},
                         {"paraboloid", BodyShape::Paraboloid},
-                        {"mesh", BodyShape::None}});
+                        {"mesh", BodyShape::None},
+                        {"implicit", BodyShape::None}});
     const bool mesh = j.contains("body") && j["body"] == "mesh";
     if (mesh != j.contains("mesh"))
       (w / (mesh ? "body" : "mesh")).fail("a mesh body names its file in \"mesh\" (with \"body\": \"mesh\")");
     if (mesh) v.mesh = meshFile(j["mesh"], w / "mesh");
     if (j.contains("scale")) v.meshScale = exprText(j["scale"], w / "scale");
+    const bool implicit = j.contains("body") && j["body"] == "implicit";
+    if (implicit != j.contains("F"))
+      (w / (implicit ? "body" : "F"))
+          .fail("an implicit body gives its surface in \"F\": F(x, y, z) = 0, F < 0 inside (with \"body\": "
+                "\"implicit\")");
+    if (implicit) v.surface = exprText(j["F"], w / "F");
+    if (j.contains("size")) v.surfaceSize = exprText(j["size"], w / "size");
     if (j.contains("support")) {
       const Where ws = w / "support";
       const json& support = requireObject(j["support"], ws);

@@ -215,11 +215,11 @@ private:
     define(to, to + "_on - inverse(" + to + "_K)*(" + to + "_P*gamma)");
   }
 
-  /// The implicit body's contact: two Newton steps from the one carried in the state (which follows the
-  /// contact's rate), and a start for it from gamma alone.
+  /// The implicit body's contact: one Newton step from the one carried in the state, which follows the
+  /// contact's rate (so it is off by the integration's error, squared by the step), and a start for it from
+  /// gamma alone.
   void implicitContact() {
-    newtonStep("contact", "contact_newton_1");
-    newtonStep("contact_newton_1", "contact_newton_2");
+    newtonStep("contact", "contact_newton");
     define("contact_start_0", "-body_size*normalize(gamma)");
     constexpr int kStartSteps = 16;
     for (int k = 1; k <= kStartSteps; ++k)
@@ -278,8 +278,8 @@ private:
         userExpression("body_size", b["size"], w / "size");
       else
         define("body_size", "1");
-      shapeContact_ = "contact_newton_2";
-      shapeView_ = {{"body", "none"}};
+      shapeContact_ = "contact_newton";
+      shapeView_ = {{"body", "implicit"}, {"F", b["F"]}, {"size", "body_size"}};
     } else {
       (w / "shape").fail("expected \"sphere\", \"ellipsoid\", \"paraboloid\", \"disk\" or \"implicit\"");
     }

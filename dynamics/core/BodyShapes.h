@@ -5,6 +5,7 @@
 #pragma once
 #include "dynamics/core/Model.h"
 
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -24,13 +25,23 @@ struct BodyMeshFile {
   double scale = 1; ///< the mesh's coordinates are multiplied by it
 };
 
-/// A capability of some models (those written as equations whose view names a mesh), found by dynamic_cast
-/// from a Model: the render layer reads the file and draws it instead of the geometry's shape.
+/// A body's surface as F(p) = 0, F < 0 inside, p in the body's frame relative to the pose's centre (a rolling
+/// body given by its implicit surface, scenes/RollingModel.h); `size` bounds |p| on the surface.
+struct ImplicitSurface {
+  std::function<double(const Eigen::Vector3d&)> F;
+  double size = 1;
+};
+
+/// A capability of some models (those written as equations whose view names a mesh or an implicit surface),
+/// found by dynamic_cast from a Model: the render layer reads the file, or samples the surface, and draws it
+/// instead of the geometry's shape.
 class DrawnFromMesh {
 public:
   virtual ~DrawnFromMesh() = default;
   /// The body's mesh; nullopt when it has none.
   virtual std::optional<BodyMeshFile> bodyMesh() const = 0;
+  /// The body's implicit surface; nullopt when it has none.
+  virtual std::optional<ImplicitSurface> bodySurface() const { return std::nullopt; }
 };
 
 } // namespace rv

@@ -224,7 +224,7 @@ EquationSystem::EquationSystem(EquationModelSpec spec) : spec_(std::move(spec)),
     for (const EquationModelSpec::Shape* shape : {&v.body, &v.support})
       for (const auto* t : {&shape->semiAxes, &shape->centre, &shape->p, &shape->q, &shape->height})
         if (*t) parse(**t);
-    for (const auto* t : {&v.meshScale, &v.normal})
+    for (const auto* t : {&v.meshScale, &v.normal, &v.surface, &v.surfaceSize})
       if (*t) parse(**t);
     for (const ExprText* t : {&v.rotation, &v.position, &v.contact})
       parse(*t);
@@ -547,7 +547,30 @@ EquationModel::EquationModel(std::shared_ptr<const EquationSystem> system, const
     if (support_ && support_->shape != BodyShape::Paraboloid && v.support.height) // a bowl: the lower part
       supportCap_ = constant(v.support.height, 1, "the height", 1)[0];
     if (!v.mesh.empty()) mesh_ = BodyMeshFile{v.mesh, constant(v.meshScale, 1, "the mesh's scale", 1)[0]};
+    if (v.surface) { // F of the point (x, y, z) alone, the parameters folded in: a scope of its own
+      std::map<std::string, Value> point;
+      for (int i = 0; i < 3; ++i)
+        point[std::string(1, "xyz"[i])] = Value::of(graph_.input(i));
+      const auto& specs = info_->parameters.specs();
+      for (std::size_t i = 0; i < specs.size(); ++i)
+        point[specs[i].id] = Value::of(graph_.constant(params.values()[i]));
+      Scope local(sys, graph_, std::move(point));
+      surface_ = expr::Program(graph_, local.lower(*v.surface, 1, 1, "the surface F").n);
+      surfaceSize_ = constant(v.surfaceSize, 1, "the surface's size", 1)[0];
+    }
   }
+}
+
+std::optional<ImplicitSurface> EquationModel::bodySurface() const {
+  if (!surface_) return std::nullopt;
+  const Eigen::Vector3d centre = geometry_ ? geometry_->centre : Eigen::Vector3d::Zero();
+  return ImplicitSurface{[program = *surface_, centre](const Eigen::Vector3d& p) {
+                           const Eigen::Vector3d q = p - centre;
+                           double F = 0;
+                           program.evaluate(q.data(), &F);
+                           return F;
+                         },
+                         surfaceSize_ + centre.norm()};
 }
 
 namespace {

@@ -5,6 +5,7 @@
 // its inertia window (Bou-Rabee, Marsden & Romero 2004; Rauch-Wojciechowski & Rutstam 2014) with Jellett's
 // integral kept; a malformed description is named at the field the user wrote.
 #include "scenes/RollingModel.h"
+#include "dynamics/core/BodyShapes.h"
 #include "dynamics/core/Errors.h"
 #include "scenes/ModelFile.h"
 #include "tests/scenes/ModelFileSupport.h"
@@ -295,6 +296,25 @@ TEST(RollingModel, ARoundedCubeGivenOnlyByItsSurfaceKeepsItsEnergy) {
   EXPECT_LT(relativeDrift(along(cube, "E")), 1e-10);
   for (double d : along(cube, "contact_drift"))
     EXPECT_LT(d, 1e-9);
+}
+
+TEST(RollingModel, AnImplicitBodyIsDrawnFromItsOwnSurfaceThroughTheContact) {
+  const auto cube = instance(modelFileEntry(examples("rounded_cube.json", "rolling")), {{"h", 0.2}});
+  const auto* drawn = dynamic_cast<const DrawnFromMesh*>(cube.get());
+  ASSERT_TRUE(drawn && drawn->bodySurface());
+  const ImplicitSurface surface = *drawn->bodySurface();
+  const Eigen::VectorXd x = named(
+      *cube,
+      {{"M1", 0.4}, {"M2", 0.1}, {"M3", 0.6}, {"gamma1", 0.2}, {"gamma2", 0.1}, {"gamma3", std::sqrt(0.95)}});
+  const auto pose = cube->pose(x.data());
+  ASSERT_TRUE(pose);
+  // the contact, in the body's frame about the pose's centre (the centre of mass), is on the drawn surface
+  const Eigen::Vector3d contact = pose->rotation.transpose() * (pose->contact - pose->center);
+  EXPECT_NEAR(surface.F(contact), 0, 1e-12);
+  EXPECT_LT(surface.F(Eigen::Vector3d::Zero()), 0); // the centre of mass inside
+  EXPECT_GE(surface.size, contact.norm());
+  EXPECT_NEAR(contact.dot(Eigen::Vector3d(0.2, 0.1, std::sqrt(0.95))), -(pose->center[2] - pose->contact[2]),
+              1e-12);
 }
 
 TEST(RollingModel, ABallInASphericalBowlFromItsGeometryFollowsTheBowlWrittenByHand) {
