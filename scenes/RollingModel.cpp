@@ -5,6 +5,7 @@
 #include "scenes/JsonFields.h"
 
 #include <algorithm>
+#include <cmath>
 #include <initializer_list>
 #include <optional>
 #include <set>
@@ -37,6 +38,7 @@ public:
          {"id", "title", "reference", "description", "parameters", "section", "map", "initial", "measure"})
       if (doc_.contains(key)) out_[key] = source(key);
     out_["kind"] = "flow";
+    if (!doc_.contains("section")) out_["section"] = "gamma1"; // graph supports: set in ballOnSupport()
     readContact();
     readSupport();
     readBody();
@@ -537,6 +539,7 @@ private:
   /// through the centre surface's Gauss map, inverse(dx/dgamma + gamma gamma^T) x' (exact, by jacobian()).
   void ballOnSupport() {
     const bool graph = support_ == "graph";
+    if (graph && !doc_.contains("section")) out_["section"] = "x1";
     ordered_json state = ordered_json::array(), vectors;
     addVectors(state, vectors, {"M"});
     if (graph) {
@@ -711,6 +714,71 @@ private:
 
 RollingEquations rollingEquations(const json& doc, const ordered_json* ordered, const std::string& source) {
   return Generator(doc, ordered, source).run();
+}
+
+ordered_json rollingModelDocument(const RollingBodyForm& f) {
+  ordered_json doc;
+  doc["kind"] = "rolling";
+  doc["id"] = f.id;
+  doc["title"] = f.title.empty() ? "A " + f.shape + " rolling on a plane (File > New rolling body)" : f.title;
+  doc["parameters"] = ordered_json::object(); // filled last: a reference into doc would not outlive its growth
+  ordered_json p;
+  const auto parameter = [&](const std::string& id, double value, const std::string& what, bool positive) {
+    p[id] = {{"default", value}, {"description", what}};
+    if (positive) p[id]["min"] = 0;
+    return id;
+  };
+  ordered_json body;
+  body["shape"] = f.shape;
+  if (f.shape == "sphere" || f.shape == "disk") {
+    body["radius"] = parameter("R", f.sizes[0], "radius", true);
+  } else if (f.shape == "ellipsoid") {
+    std::string axes;
+    for (int i = 0; i < 3; ++i)
+      axes += (i ? ", " : "") + parameter("b" + std::to_string(i + 1), f.sizes[static_cast<std::size_t>(i)],
+                                          "semi-axis along body axis " + std::to_string(i + 1), true);
+    body["semi_axes"] = "[" + axes + "]";
+  } else if (f.shape == "paraboloid") {
+    body["p"] = parameter("p", f.sizes[0], "radius of curvature at the vertex along body axis 1", true);
+    body["q"] = parameter("q", f.sizes[1], "radius of curvature at the vertex along body axis 2", true);
+  } else if (f.shape == "implicit") {
+    body["F"] = f.surface;
+    body["size"] = f.size;
+  }
+  std::string centre;
+  for (int i = 0; i < 3; ++i)
+    centre += (i ? ", " : "") +
+              parameter("c" + std::to_string(i + 1), f.centre[static_cast<std::size_t>(i)],
+                        "the shape's centre seen from the centre of mass, body axis " + std::to_string(i + 1),
+                        false);
+  body["centre"] = "[" + centre + "]";
+  body["mass"] = parameter("m", f.mass, "mass", true);
+  body["inertia"] = ordered_json::array();
+  for (int i = 0; i < 3; ++i)
+    body["inertia"].push_back(
+        parameter("I" + std::to_string(i + 1), f.inertia[static_cast<std::size_t>(i)],
+                  "central principal moment of inertia, body axis " + std::to_string(i + 1), true));
+  if (f.symmetryAxis) body["axis"] = "[0, 0, 1]";
+  doc["body"] = body;
+  doc["gravity"] = parameter("g", f.gravity, "acceleration of gravity", true);
+  doc["contact"] = f.contact;
+  if (f.contact == "sliding")
+    doc["friction"] = parameter("mu", f.friction, "viscous friction at the contact", true);
+  // a start tilted from rest, spinning about body axis 3 (a disk stands on its edge)
+  const double tilt = 0.2;
+  const std::array<double, 3> gamma = f.shape == "disk"
+                                          ? std::array<double, 3>{0, std::cos(tilt), std::sin(tilt)}
+                                          : std::array<double, 3>{std::sin(tilt), 0, std::cos(tilt)};
+  ordered_json start;
+  const char* spin = f.contact == "sliding" ? "omega" : "M";
+  const double spinValue = f.contact == "sliding" ? 5.0 : 2.0 * f.inertia[2];
+  for (int i = 0; i < 3; ++i)
+    start[spin + std::to_string(i + 1)] = i == 2 ? spinValue : 0.0;
+  for (int i = 0; i < 3; ++i)
+    start["gamma" + std::to_string(i + 1)] = gamma[static_cast<std::size_t>(i)];
+  doc["initial"] = {{"state", start}};
+  doc["parameters"] = p;
+  return doc;
 }
 
 } // namespace rv

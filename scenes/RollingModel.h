@@ -23,6 +23,7 @@
 //    L. A. Romero, Tippe top inversion as a dissipation-induced instability, SIAM J. Appl. Dyn. Syst. 3
 //    (2004) 352-377; S. Rauch-Wojciechowski, N. Rutstam, SIGMA 10 (2014) 017).
 #pragma once
+#include <array>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <utility>
@@ -45,5 +46,25 @@ struct RollingEquations {
 /// InputError "SOURCE:path: what is wrong" for a malformed description.
 RollingEquations rollingEquations(const nlohmann::json& doc, const nlohmann::ordered_json* ordered,
                                   const std::string& source);
+
+/// What File > New rolling body asks of a body on the plane. Every number becomes a parameter of the model
+/// written (so the GUI's fields, --set, sweeps and continuation reach it).
+struct RollingBodyForm {
+  std::string id = "my_body", title;
+  std::string shape = "ellipsoid"; ///< sphere, ellipsoid, paraboloid, disk or implicit
+  std::array<double, 3> sizes{1, 0.6,
+                              0.4};      ///< sphere, disk: the radius first; ellipsoid: the semi-axes; p, q
+  std::string surface;                   ///< implicit: F(x, y, z), F < 0 inside
+  double size = 1;                       ///< implicit: a length that bounds the surface
+  std::array<double, 3> centre{0, 0, 0}; ///< the shape's origin seen from the centre of mass
+  double mass = 1;
+  std::array<double, 3> inertia{0.2, 0.3, 0.4}; ///< central principal moments along the body axes
+  std::string contact = "marble";               ///< marble, rubber or sliding
+  double friction = 0.3, gravity = 1;
+  bool symmetryAxis = false; ///< body axis 3 is an axis of symmetry (axis_up, Jellett)
+};
+
+/// The rolling model file of a form, with a start that suits its shape (tilted from rest, spinning).
+nlohmann::ordered_json rollingModelDocument(const RollingBodyForm& form);
 
 } // namespace rv

@@ -10,6 +10,7 @@
 #include "app/gui/MapPanel.h"
 #include "app/gui/PlotFilterDialog.h"
 #include "app/gui/QtVtkWidget.h"
+#include "app/gui/RollingBodyDialog.h"
 #include "scenes/SceneCharts.h"
 #include "scenes/SceneLoader.h"
 
@@ -124,6 +125,14 @@ void MainWindow::buildMenus() {
                                                       "Model files (*.json)");
     if (!path.isEmpty() && mayReplaceMap("Opening " + QFileInfo(path).fileName())) openModel(path);
   });
+  file->addAction("New rolling body…", this,
+                  [this] {
+                    RollingBodyDialog dialog(this, [this](const QString& path) {
+                      if (mayReplaceMap("Opening " + QFileInfo(path).fileName())) openModel(path);
+                    });
+                    dialog.exec();
+                  })
+      ->setToolTip("a body described by its shape, masses and contact; rollviz derives its equations");
   file->addAction("Save scene as…", this, &MainWindow::saveDialog)->setShortcut(QKeySequence("Ctrl+Shift+S"));
   file->addSeparator();
   file->addAction("Save session…", this, &MainWindow::saveSessionDialog)

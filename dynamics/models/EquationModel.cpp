@@ -330,6 +330,9 @@ EquationSystem::EquationSystem(EquationModelSpec spec) : spec_(std::move(spec)),
     info_.section = "strobe";
   }
   info_.hasMeasure = spec_.measure.has_value();
+  // a flow that names no section is cut where its first state variable crosses the scene's value (every
+  // map needs one: the GUI opens a model with its Poincare map)
+  if (flow && info_.section.empty()) info_.section = info_.stateNames.front();
   if (!info_.section.empty() && !observableIds.count(info_.section))
     throw InputError("section: '" + info_.section + "' is not an observable of the model");
   for (const auto& c : info_.mapCoordinates)

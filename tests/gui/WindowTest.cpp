@@ -13,6 +13,7 @@
 #include "app/gui/ParameterForm.h"
 #include "app/gui/PlotWindow.h"
 #include "app/gui/QtVtkWidget.h"
+#include "app/gui/RollingBodyDialog.h"
 #include "app/gui/SweepWindow.h"
 #include "app/gui/ToolManager.h"
 #include "app/gui/VisualizerSettings.h"
@@ -2484,6 +2485,60 @@ private slots:
 
   // File > Open model...: a model file runs at its own "initial", joins the problem list, and saving it while
   // it is open reloads it (a broken save keeps the model running and says why)
+  // File > New rolling body: the tippe top described in the form (sphere, centre of mass off centre, sliding)
+  // is written as a rolling model file and opened; its parameters are the form's numbers; a body that makes
+  // no model says why in the dialog and writes nothing
+  void aRollingBodyDescribedInTheFormOpens() {
+    bool inMenu = false;
+    for (auto* action : window_->menuBar()->actions())
+      if (action->text() == "&File")
+        for (auto* item : action->menu()->actions())
+          inMenu = inMenu || item->text() == "New rolling body…";
+    QVERIFY(inMenu);
+    setModelCompilation(ModelCompilation::Off); // the compiled path has its own tests
+    QString opened;
+    RollingBodyDialog dialog(window_, [&](const QString& path) {
+      opened = path;
+      window_->openModel(path);
+    });
+    const auto box = [&](const char* name) { return dialog.findChild<QDoubleSpinBox*>(name); };
+    dialog.findChild<QLineEdit*>("id")->setText("gui_tippe_top");
+    dialog.findChild<QComboBox*>("shape")->setCurrentText("sphere");
+    QVERIFY(box("size1")->isVisibleTo(&dialog)); // a sphere has a radius only
+    QVERIFY(!box("size2")->isVisibleTo(&dialog));
+    box("size1")->setValue(1);
+    box("centre3")->setValue(0.3);
+    box("I1")->setValue(0.35);
+    box("I2")->setValue(0.35);
+    box("I3")->setValue(0.4);
+    dialog.findChild<QComboBox*>("contact")->setCurrentText("sliding");
+    QVERIFY(box("friction")->isEnabled());
+    box("friction")->setValue(1);
+    dialog.findChild<QCheckBox*>("axis")->setChecked(true);
+    // first a surface that names what does not exist: said in the dialog, nothing written
+    dialog.findChild<QComboBox*>("shape")->setCurrentText("implicit");
+    dialog.findChild<QLineEdit*>("F")->setText("x^2 + y^2 + w^2 - 1");
+    const QString file = dir_.filePath("gui_tippe_top.json");
+    dialog.findChild<QLineEdit*>("file")->setText(file);
+    QVERIFY(!dialog.create());
+    QVERIFY2(dialog.findChild<QLabel*>("error")->text().contains("body.F: unknown name 'w'"),
+             qPrintable(dialog.findChild<QLabel*>("error")->text()));
+    QVERIFY(!QFile::exists(file));
+    dialog.findChild<QComboBox*>("shape")->setCurrentText("sphere");
+    dialog.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&dialog));
+    QVERIFY(keep(dialog.grab().toImage(), "window_new_rolling_body.png"));
+    QVERIFY(dialog.create());
+    QCOMPARE(opened, file);
+    QVERIFY(QFile::exists(file));
+    QCOMPARE(window_->scene()->model->info().id, std::string("gui_tippe_top"));
+    const ParameterValues& p = window_->scene()->model->parameters();
+    QCOMPARE(p["mu"], 1.0);
+    QCOMPARE(p["c3"], 0.3);
+    QVERIFY(window_->scene()->model->findObservable("jellett") >= 0);
+    QVERIFY(window_->scene()->model->findObservable("axis_up") >= 0);
+  }
+
   void aModelFileOpensAndReloadsWhenSaved() {
     if (!window_->playing()) window_->togglePlay(); // it needs the 3D view's run going
     setModelCompilation(ModelCompilation::Off);     // the compiled path has its own tests
