@@ -348,8 +348,8 @@ private:
         w.fail("on a curved support the ball is balanced (no \"centre\") and has no gyrostat (so far)");
       if (I.is_array())
         (w / "inertia").fail("on a curved support give the ball's one central moment of inertia (so far)");
-      if (contact_ != Contact::Marble)
-        (root_ / "contact").fail("on a curved support the contact is \"marble\" (so far)");
+      if (contact_ == Contact::Sliding)
+        (root_ / "contact").fail("on a curved support the contact is \"marble\" or \"rubber\" (so far)");
     }
   }
 
@@ -562,7 +562,14 @@ private:
              centreSurface_ ? supportContact_ : supportContact_ + " + body_radius*gamma");
       define("x", "centre_surface");
     }
-    define("omega", "(M + (ball_D/body_inertia)*dot(gamma, M)*gamma)/(body_inertia + ball_D)");
+    const std::string omegaOfM = "(M + (ball_D/body_inertia)*dot(gamma, M)*gamma)/(body_inertia + ball_D)";
+    if (contact_ == Contact::Rubber) { // omega normal to gamma (A^-1 gamma = gamma/mu): as on the plane
+      define("omega_free", omegaOfM);
+      define("omega", "omega_free - dot(gamma, omega_free)*gamma");
+      define("spin_gauge", "body_inertia*dot(gamma, omega_free)");
+    } else {
+      define("omega", omegaOfM);
+    }
     define("dx", "body_radius*cross(omega, gamma)");
     define("dgamma", graph ? "derivative(gamma, [x1, x2], [dx[1], dx[2]])"
                            : "inverse(jacobian(centre_surface, gamma) + outer(gamma, gamma))*dx");
@@ -573,7 +580,13 @@ private:
                        "[2*(q1*q2 + q0*q3), q0^2 - q1^2 + q2^2 - q3^2, 2*(q2*q3 - q0*q1)], "
                        "[2*(q1*q3 - q0*q2), 2*(q2*q3 + q0*q1), q0^2 - q1^2 - q2^2 + q3^2]]");
     ordered_json& eq = out_["equations"];
-    eq["M"] = "ball_D*cross(dgamma, cross(omega, gamma)) + body_radius*cross(gamma, force)";
+    if (contact_ == Contact::Rubber) { // the couple lambda gamma keeps (omega, gamma) = 0
+      define("dM_free", "ball_D*cross(dgamma, cross(omega, gamma)) + body_radius*cross(gamma, force)");
+      define("spin_couple", "-dot(gamma, dM_free) - (ball_D + body_inertia)*dot(dgamma, omega)");
+      eq["M"] = "dM_free + spin_couple*gamma + spin_gauge*dgamma";
+    } else {
+      eq["M"] = "ball_D*cross(dgamma, cross(omega, gamma)) + body_radius*cross(gamma, force)";
+    }
     if (graph) {
       eq["x1"] = "dx[1]";
       eq["x2"] = "dx[2]";
@@ -646,6 +659,7 @@ private:
       }
       o["spin_normal"] = {{"value", "dot(omega, gamma)"},
                           {"description", "spin about the normal at the contact"}};
+      if (contact_ == Contact::Rubber) o["spin_normal"]["integral"] = true;
     } else {
       planeObservables(o);
     }
@@ -721,7 +735,8 @@ ordered_json rollingModelDocument(const RollingBodyForm& f) {
   doc["kind"] = "rolling";
   doc["id"] = f.id;
   doc["title"] = f.title.empty() ? "A " + f.shape + " rolling on a plane (File > New rolling body)" : f.title;
-  doc["parameters"] = ordered_json::object(); // filled last: a reference into doc would not outlive its growth
+  doc["parameters"] =
+      ordered_json::object(); // filled last: a reference into doc would not outlive its growth
   ordered_json p;
   const auto parameter = [&](const std::string& id, double value, const std::string& what, bool positive) {
     p[id] = {{"default", value}, {"description", what}};

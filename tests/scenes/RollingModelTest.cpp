@@ -353,6 +353,36 @@ TEST(RollingModel, ABallInASphericalBowlFromItsGeometryFollowsTheBowlWrittenByHa
   EXPECT_LT(relativeDrift(along(ra, "spin_normal")), 1e-10); // Routh: the spin about the normal is kept
 }
 
+TEST(RollingModel, ARubberBallInASphericalBowlRollsAsTheMarbleOneThatDoesNotSpin) {
+  // on a sphere a marble ball keeps its spin about the normal (Routh): started without it, it needs no
+  // couple, and the rubber ball -- which cannot spin -- follows the same motion; M's part along gamma is the
+  // rubber constraint's to choose
+  json rubber = json::parse(std::ifstream(examples("rubber_ball_on_sphere.json", "rolling")));
+  json marble = rubber;
+  marble["id"] = "marble_ball_in_a_bowl";
+  marble["contact"] = "marble";
+  const Eigen::Vector3d gamma(std::sin(0.5), 0, std::cos(0.5));
+  const Eigen::Vector3d M = Eigen::Vector3d(0.05, -0.02, 0.03).cross(gamma); // normal to gamma: no spin
+  const auto start = [&](double along) {
+    const Eigen::Vector3d m = M + along * gamma;
+    return std::map<std::string, double>{{"M1", m[0]},         {"M2", m[1]},         {"M3", m[2]},
+                                         {"gamma1", gamma[0]}, {"gamma2", gamma[1]}, {"gamma3", gamma[2]}};
+  };
+  const ExampleRun a = runModel(instance(modelEntryFromJson(marble, "<marble>")), start(0), 20, 0.5);
+  const ExampleRun b = runModel(instance(modelEntryFromJson(rubber, "<rubber>")), start(0), 20, 0.5);
+  const ExampleRun c = runModel(instance(modelEntryFromJson(rubber, "<rubber>")), start(0.04), 20, 0.5);
+  for (const char* id : {"omega1", "omega2", "omega3", "x1", "x2", "x3", "E"}) {
+    const std::vector<double> x = along(a, id), y = along(b, id), z = along(c, id);
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      EXPECT_NEAR(x[i], y[i], 1e-9) << id << " at t = " << 0.5 * static_cast<double>(i);
+      EXPECT_NEAR(y[i], z[i], 1e-9) << id << " at t = " << 0.5 * static_cast<double>(i);
+    }
+  }
+  EXPECT_LT(relativeDrift(along(c, "E")), 1e-11);
+  for (double s : along(c, "spin_normal"))
+    EXPECT_LT(std::abs(s), 1e-13);
+}
+
 TEST(RollingModel, TheTippeTopTurnsOverOnlyInsideItsInertiaWindowAndKeepsJellettsIntegral) {
   // offset 0.3, I3 = 0.4: inversion needs 0.7 < I1/I3 < 1.3
   const std::map<std::string, double> spun{{"omega1", 0}, {"omega2", 0},
