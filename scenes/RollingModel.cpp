@@ -262,6 +262,10 @@ private:
       need("q", "body_q");
       shapeContact_ = "[-body_p*gamma[1]/gamma[3], -body_q*gamma[2]/gamma[3], "
                       "(body_p*gamma[1]^2 + body_q*gamma[2]^2)/(2*gamma[3]^2)]";
+      // it touches with its vertex side only (gamma3 > 0): past that the run stops, named after this
+      // definition
+      define("turns_over", "(1 - max(0, sign(gamma[3])))/max(0, sign(gamma[3]))");
+      shapeContact_ += " + [0, 0, turns_over]";
       shapeView_ = {{"body", "paraboloid"}, {"p", "body_p"}, {"q", "body_q"}};
       if (b.contains("height")) {
         userExpression("body_height", b["height"], w / "height");
@@ -525,7 +529,10 @@ private:
                            "dot(v_contact, dgamma))/(1/body_mass + dot(omega_per_N, cross(r, gamma)))");
     ordered_json& eq = out_["equations"];
     eq["omega"] = "omega_free + normal_force*omega_per_N";
-    eq["v"] = "v_free + (normal_force/body_mass)*gamma";
+    // where the plane would have to pull (N < 0) the body leaves it: the model no longer holds, so the run
+    // stops there (a non-finite rate, named after this definition)
+    define("leaves_the_plane", "(1 - max(0, sign(normal_force)))/max(0, sign(normal_force))");
+    eq["v"] = "v_free + (normal_force/body_mass + leaves_the_plane)*gamma";
     frameEquations(eq);
     for (int i = 1; i <= 3; ++i) // a start that gives no velocity rolls: the contact at rest
       out_["complete"]["v" + std::to_string(i)] = "-cross(omega, r)[" + std::to_string(i) + "]";

@@ -402,7 +402,8 @@ template <int N> void Everhart::stepWith() {
           throw ComputationError(
               format("Everhart: the adaptive step fell to %g at t = %.12g (the tolerance %g "
                      "cannot be met; the solution may be singular there)",
-                     next, t_, tolerance_));
+                     next, t_, tolerance_) +
+              nonFiniteField());
         h_ = next;
         continue;
       }

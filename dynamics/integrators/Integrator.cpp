@@ -76,6 +76,15 @@ void Integrator::checkFinite() const {
   }
 }
 
+std::string Integrator::nonFiniteField() const {
+  Eigen::VectorXd f(x_.size());
+  model_->rhs(x_.data(), f.data());
+  if (std::isfinite(f.sum())) return "";
+  const auto* explains = dynamic_cast<const ExplainsNonFinite*>(model_);
+  const std::string cause = explains ? explains->nonFiniteCause(x_.data()) : "";
+  return "; the field is not finite there" + (cause.empty() ? std::string() : ": " + cause);
+}
+
 void Integrator::advanceCompensated(double h, const Eigen::VectorXd& increment,
                                     Eigen::VectorXd& compensation) {
   xPrev_ = x_;

@@ -309,7 +309,8 @@ void Verner9::step() {
       if (attempt >= 50 || h_ < 1e-14 * std::max(1.0, std::abs(t_)))
         throw ComputationError(format("verner9: the step fell to %g at t = %.12g (the tolerance %g cannot "
                                       "be met; the solution may be singular there)",
-                                      h_, t_, tolerance_));
+                                      h_, t_, tolerance_) +
+                               nonFiniteField());
       continue;
     }
     advanceCompensated(h, sum_, compensation_); // x1 = x0 + h sum_j b_j K_j

@@ -409,6 +409,19 @@ TEST(RollingModel, TheTippeTopTurnsOverOnlyInsideItsInertiaWindowAndKeepsJellett
   }
 }
 
+TEST(RollingModel, ATopThatWouldLeaveThePlaneStopsTheRunSayingSo) {
+  // weightless, the spinning top's plane would have to pull (N < 0): the sliding model no longer holds
+  const std::map<std::string, double> spun{{"omega1", 0}, {"omega2", 0},
+                                           {"omega3", 6}, {"gamma1", std::sin(0.1)},
+                                           {"gamma2", 0}, {"gamma3", std::cos(0.1)}};
+  try {
+    runExample("tippe_top.json", {{"g", 0}}, spun, 5, 1);
+    ADD_FAILURE() << "the run went on";
+  } catch (const ComputationError& e) {
+    EXPECT_NE(std::string(e.what()).find("definitions.leaves_the_plane"), std::string::npos) << e.what();
+  }
+}
+
 TEST(RollingModel, AMalformedBodyIsNamedAtTheFieldTheUserWrote) {
   const json top = json::parse(R"({"kind": "rolling", "id": "bad_top", "parameters": {"R": {"default": 1}},
       "body": {"shape": "sphere", "radius": "R", "mass": 1, "inertia": [1, 1, 1]}, "contact": "marble"})");
