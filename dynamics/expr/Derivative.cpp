@@ -1,6 +1,7 @@
 #include "dynamics/expr/Derivative.h"
 
 #include <algorithm>
+#include <string>
 
 namespace rv::expr {
 
@@ -26,7 +27,10 @@ std::vector<int> directionalDerivative(Graph& g, const std::vector<int>& outputs
   const auto one = [&] { return g.constant(1); };
   for (int n = std::max(first, 0); n <= last; ++n) {
     int& out = t[static_cast<std::size_t>(n)];
-    if (out != kZero) continue;  // a seed
+    if (out != kZero) continue; // a seed
+    if (g.size() > kMaxDerivativeGraph)
+      throw InputError("the derivatives make more than " + std::to_string(kMaxDerivativeGraph) +
+                       " operations (derivatives of derivatives grow geometrically)");
     const GraphNode k = g.at(n); // a copy: make() may grow the graph
     const int ta = tan(k.a), tb = tan(k.b);
     if (ta == kZero && tb == kZero) continue;

@@ -14,10 +14,14 @@
 
 namespace rv::expr {
 
+/// The most nodes a graph may hold while derivatives are written into it: each derivative multiplies the
+/// operations a few times, so derivatives of derivatives grow geometrically (an error, not a hang).
+constexpr int kMaxDerivativeGraph = 250'000;
+
 /// The nodes d(output)/dt when each seed's node `first` moves at the rate given by node `second` and every
 /// other node that does not depend on a seed stands still (a partial derivative through the seeds' nodes).
 /// A seed that is a constant node is an error of the caller. Min, max, abs and sign differentiate as the
-/// branch taken.
+/// branch taken. Throws InputError when the graph would pass kMaxDerivativeGraph nodes.
 std::vector<int> directionalDerivative(Graph& graph, const std::vector<int>& outputs,
                                        const std::vector<std::pair<int, int>>& seeds);
 

@@ -309,6 +309,15 @@ Value Lowering::call(const Expression& e, const Node& n) {
     // exact derivatives through the graph (Derivative.h): derivative(f, x, v) is f's rate when x moves at
     // the rate v; gradient(f, x) and jacobian(f, x) take x's components one by one
     const bool along = n.name == "derivative";
+    const auto derive = [&](const std::vector<int>& outputs, const std::vector<std::pair<int, int>>& seeds) {
+      try {
+        return directionalDerivative(g_, outputs, seeds);
+      } catch (const ExprError&) {
+        throw;
+      } catch (const InputError& e) {
+        throw ExprError(n.column, e.what());
+      }
+    };
     argc(along ? 3 : 2);
     const Value& x = args[1];
     for (std::size_t i = 0; i < x.n.size(); ++i)
@@ -320,7 +329,7 @@ Value Lowering::call(const Expression& e, const Node& n) {
       for (std::size_t i = 0; i < x.n.size(); ++i)
         seeds.emplace_back(x.n[i], args[2].n[i]);
       Value r = args[0];
-      r.n = directionalDerivative(g_, args[0].n, seeds);
+      r.n = derive(args[0].n, seeds);
       return r;
     }
     const bool gradient = n.name == "gradient";
@@ -329,7 +338,7 @@ Value Lowering::call(const Expression& e, const Node& n) {
     const int rows = gradient ? x.rows : args[0].rows, cols = gradient ? 1 : x.rows;
     Value r{rows, cols, std::vector<int>(idx(rows * cols))};
     for (int j = 0; j < x.rows; ++j) {
-      const std::vector<int> d = directionalDerivative(g_, args[0].n, {{x.n[idx(j)], g_.constant(1)}});
+      const std::vector<int> d = derive(args[0].n, {{x.n[idx(j)], g_.constant(1)}});
       if (gradient)
         r.n[idx(j)] = d[0];
       else
