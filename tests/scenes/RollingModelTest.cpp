@@ -86,6 +86,15 @@ TEST(ModelLanguage, ADerivativeNeedsVariablesAndARateOfTheirShape) {
   EXPECT_NE(errorOf(model).find("argument 3 of 'derivative' must be the shape of argument 2"),
             std::string::npos)
       << errorOf(model);
+  // derivatives of derivatives grow geometrically: an error naming where, not a hang
+  json nested = {{"id", "nested_derivatives"}, {"state", {"x", "y"}}};
+  nested["definitions"]["f1"] = "sin(x*y)*exp(x)/(1 + y^2)";
+  for (int k = 2; k <= 30; ++k)
+    nested["definitions"]["f" + std::to_string(k)] = "gradient(f" + std::to_string(k - 1) + ", [x, y])[1]";
+  nested["equations"] = {{"x", "f30"}, {"y", "x"}};
+  EXPECT_NE(errorOf(nested).find("operations (derivatives of derivatives grow geometrically)"),
+            std::string::npos)
+      << errorOf(nested);
 }
 
 /// The built-in and the restated field agree where the motion lives (|gamma| = 1; off it the two may extend
