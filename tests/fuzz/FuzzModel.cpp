@@ -1,7 +1,7 @@
 // libFuzzer target: any bytes as a model file (docs/models.md). Reading either succeeds -- and the model then
 // gives its field, Jacobian and integrals at a state and takes a few integration steps -- or fails with
 // InputError / ComputationError; any other exception, a crash, a sanitizer report, a hang or unbounded memory
-// is a bug. Seeded with examples/models/ (tests/fuzz/run.sh).
+// is a bug. Seeded with examples/models/ and examples/rolling/ (tests/fuzz/run.sh).
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/ExplainsNonFinite.h"
 #include "dynamics/integrators/Integrator.h"

@@ -1,5 +1,5 @@
 #!/bin/bash
-# Runs the libFuzzer targets of build/fuzz for SECONDS each (default 30), seeded with scenes/, examples/models/ and the inputs that
+# Runs the libFuzzer targets of build/fuzz for SECONDS each (default 30), seeded with scenes/, examples/models/, examples/rolling/ and the inputs that
 # once found bugs (tests/fuzz/regressions/, replayed first: each must pass). A crash, a sanitizer report, a hang
 # (over 5 s on one input) or memory over 2 GB fails the run and leaves the input in build/fuzz/findings/.
 # Usage: tests/fuzz/run.sh [SECONDS]   (./test runs it briefly; a longer run: tests/fuzz/run.sh 3600)
@@ -18,10 +18,10 @@ for target in scene override sweep model; do
     echo "== fuzz_$target: replaying $(ls "$regressions" | wc -l) inputs that once found bugs"
     "$exe" -runs=0 -timeout=5 "$regressions"/*
   fi
-  seeds=tests/fuzz/seeds/$target
-  [ "$target" = scene ] && seeds=scenes
-  [ "$target" = model ] && seeds=examples/models
+  seeds=(tests/fuzz/seeds/$target)
+  [ "$target" = scene ] && seeds=(scenes)
+  [ "$target" = model ] && seeds=(examples/models examples/rolling)
   echo "== fuzz_$target: ${seconds} s"
   "$exe" -max_total_time="$seconds" -timeout=5 -rss_limit_mb=2048 -max_len=8192 -print_final_stats=1 \
-    -artifact_prefix="$findings/$target-" "$corpus" "$seeds"
+    -artifact_prefix="$findings/$target-" "$corpus" "${seeds[@]}"
 done
