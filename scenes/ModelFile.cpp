@@ -488,7 +488,8 @@ const ModelEntry& sceneModelEntry(const json& scene, const std::string& source) 
   try {
     return modelFileEntry(file.string());
   } catch (const InputError& e) {
-    if (!fs::exists(file)) (root / "problem").fail(e.what());
+    std::error_code ec; // a name too long for the system is no file either (not a filesystem_error)
+    if (!fs::exists(file, ec)) (root / "problem").fail(e.what());
     throw;
   }
 }

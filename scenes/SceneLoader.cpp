@@ -38,10 +38,11 @@ std::array<double, 3> triple(const json& j, const Where& w, bool positive) {
 std::string texturePath(const std::string& name, const Where& w) {
   namespace fs = std::filesystem;
   if (name == "none") return name;
+  std::error_code ec; // a name too long for the system is no file either (not a filesystem_error)
   const fs::path own = fs::path(w.file).parent_path() / name;
-  if (fs::is_regular_file(own)) return fs::absolute(own).string();
+  if (fs::is_regular_file(own, ec)) return fs::absolute(own, ec).string();
   const fs::path asset = fs::path(scenesDirectory()).parent_path() / "assets" / "textures" / (name + ".png");
-  if (fs::is_regular_file(asset)) return asset.string();
+  if (fs::is_regular_file(asset, ec)) return asset.string();
   w.fail("no texture \"" + name + "\" (a PNG next to the scene, a name in assets/textures, or none)");
 }
 
