@@ -587,12 +587,14 @@ private:
                        "[2*(q1*q2 + q0*q3), q0^2 - q1^2 + q2^2 - q3^2, 2*(q2*q3 - q0*q1)], "
                        "[2*(q1*q3 - q0*q2), 2*(q2*q3 + q0*q1), q0^2 - q1^2 - q2^2 + q3^2]]");
     ordered_json& eq = out_["equations"];
+    const std::string rolling =
+        "ball_D*cross(dgamma, cross(omega, gamma)) + body_radius*cross(gamma, force)"; // M' of a marble ball
     if (contact_ == Contact::Rubber) { // the couple lambda gamma keeps (omega, gamma) = 0
-      define("dM_free", "ball_D*cross(dgamma, cross(omega, gamma)) + body_radius*cross(gamma, force)");
+      define("dM_free", rolling);
       define("spin_couple", "-dot(gamma, dM_free) - (ball_D + body_inertia)*dot(dgamma, omega)");
       eq["M"] = "dM_free + spin_couple*gamma + spin_gauge*dgamma";
     } else {
-      eq["M"] = "ball_D*cross(dgamma, cross(omega, gamma)) + body_radius*cross(gamma, force)";
+      eq["M"] = rolling;
     }
     if (graph) {
       eq["x1"] = "dx[1]";
