@@ -189,6 +189,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   status_ = new QLabel(this);
   statusBar()->addWidget(status_, 1);
   connect(map_, &MapPanel::message, this, [this](const QString& m) { report(m, 8000); });
+  // a tool started on the map runs with what the control panel shows: pending edits are applied first (with
+  // the usual question when they would replace the map)
+  map_->setBeforeTool([this] { return !control_->pending() || applyDocument(control_->editedDocument()); });
 
   connect(&timer_, &QTimer::timeout, this, &MainWindow::tick);
   timer_.start(16);

@@ -486,11 +486,8 @@ bool MapPanel::drain() {
                        .arg(last.time, 0, 'g', 6)
                        .arg(last.megnoRate, 0, 'g', 4));
     } else if (s.megnoJob->status() == Job::Status::Failed) {
-      emit message(QString("MEGNO (tool #%1) of trajectory #%2 failed: %3")
-                       .arg(s.megnoJob->id())
-                       .arg(s.job->id())
-                       .arg(QString::fromStdString(s.megnoJob->error())));
-      s.megnoValue = std::numeric_limits<double>::quiet_NaN(); // reported once; drawn in its own colour
+      // drawn in its own colour; why it failed is said once, by the tool manager (as every job's failure)
+      s.megnoValue = std::numeric_limits<double>::quiet_NaN();
     }
   }
   // the points a few milliseconds allow in this turn of the event loop (the map's frame comes after them in

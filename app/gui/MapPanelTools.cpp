@@ -20,6 +20,7 @@
 namespace rv {
 
 void MapPanel::searchFixedPointAt(double x, double y) {
+  if (beforeTool_ && !beforeTool_()) return;
   if (!scene_ || scene_->model->info().mapCoordinates.empty()) return;
   chart_->holdRanges();
   try {
@@ -77,7 +78,14 @@ void MapPanel::startSeparatrices() {
 }
 
 void MapPanel::startContinuation() {
-  startMapRows("continuation", {}, "continuing the scene's fixed point");
+  // the fixed point found last (a Shift+click's, or the guess's search) is the one the user means; the
+  // scene's guess only when none was found
+  const auto found = std::find_if(searches_.rbegin(), searches_.rend(),
+                                  [](const Search& s) { return !s.foundAt.empty(); });
+  if (found != searches_.rend())
+    continueFixedPoint(found->job->id());
+  else
+    startMapRows("continuation", {}, "continuing the fixed point near the scene's guess (none found yet)");
 }
 
 bool MapPanel::continueFixedPoint(int id) {
@@ -225,6 +233,7 @@ void MapPanel::startRows(const std::string& id) {
 
 void MapPanel::startMapRows(const std::string& id, const std::vector<SceneOverride>& overrides,
                             const QString& said, std::optional<Rgb> colour) {
+  if (beforeTool_ && !beforeTool_()) return;
   if (!scene_ || scene_->model->info().mapCoordinates.empty()) {
     emit message("this problem has no map coordinates");
     return;
@@ -314,6 +323,7 @@ void MapPanel::startMapRows(const std::string& id, const std::vector<SceneOverri
 }
 
 void MapPanel::searchFromGuess() {
+  if (beforeTool_ && !beforeTool_()) return;
   if (!scene_ || scene_->guess.size() < 2) {
     emit message("the scene has no fixedpoint.guess (set it in the Fixed point tab, or Shift+click the map)");
     return;

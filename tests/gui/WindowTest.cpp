@@ -2001,6 +2001,90 @@ private slots:
     QVERIFY(!window_->results().contains(QString("tool %1 (Continuation) failed").arg(family->id())));
   }
 
+  // Issue 61 (2), the rest: Tools > Continue the fixed point continues the point found last (not the scene's
+  // guess -- this scene has none), and the continuation tab's edits count without Apply: the search that
+  // found the point applied them first (the map stays: they define no map).
+  void toolsContinueTakesTheFoundPointAndTheTabAsShown() {
+    nlohmann::json doc = loadScene(defaultScenePath("henon_heiles")).document;
+    doc["poincare"]["points"] = 50;
+    doc.erase("continuation");
+    QVERIFY(!doc.contains("fixedpoint"));
+    QVERIFY(window_->runDocument(doc));
+    MapPanel* map = window_->mapPanel();
+    const std::vector<int> kept = map->sceneJobs();
+    setUpContinuation("energy", "0.1", -0.005, "natural");
+    if (QTest::currentTestFailed()) return;
+    const int found = map->fixedPointsFound();
+    map->searchFixedPointAt(0.02, 0.23);
+    QVERIFY(!window_->controlPanel()->pending()); // applied by the search
+    QCOMPARE(map->sceneJobs().front(), kept.front()); // and the map kept
+    QTRY_COMPARE_WITH_TIMEOUT(map->fixedPointsFound(), found + 1, 60000);
+    QAction* cont = nullptr;
+    for (QAction* a : window_->findChildren<QAction*>())
+      if (a->text() == "Continue the fixed point") cont = a;
+    QVERIFY(cont);
+    cont->trigger();
+    Job* family = map->jobs().jobs().back();
+    QCOMPARE(QString::fromStdString(family->task().name()), QString("Continuation"));
+    QTRY_VERIFY_WITH_TIMEOUT(!family->running(), 60000);
+    QVERIFY2(family->status() == Job::Status::Finished, family->error().c_str());
+    QTRY_COMPARE_WITH_TIMEOUT(map->toolPoints(family->id()).size(), std::size_t(6), 60000);
+    const auto points = map->toolPoints(family->id());
+    QVERIFY(std::abs(points.front().second - std::sqrt(0.125 / 2)) < 1e-8);
+    QVERIFY(std::abs(points.back().second - std::sqrt(0.1 / 2)) < 1e-8);
+  }
+
+  // Issue 61 (2), two parameters: the Bifurcation curve tab set up from the GUI alone (its second parameter
+  // chosen among the problem's, the kind and the box typed; the continuation tab's parameter and end) on a
+  // scene that holds neither, then Tools > Create: the Henon map's period-doubling curve a = 3 (1 - b)^2 / 4.
+  void aBifurcationCurveIsSetUpFromTheGui() {
+    nlohmann::json doc = loadScene(defaultScenePath("henon_map")).document;
+    doc["fixedpoint"]["guess"] = {0.63, 0.19};
+    doc.erase("continuation"), doc.erase("bifurcation_curve");
+    QVERIFY(window_->runDocument(doc));
+    setUpContinuation("a", "0", -0.05, "natural");
+    if (QTest::currentTestFailed()) return;
+    ControlPanel* panel = window_->controlPanel();
+    auto* second = panel->findChild<QComboBox*>("bifurcation_curve_second_parameter");
+    QVERIFY(second);
+    QCOMPARE(second->currentText(), QString());
+    second->setCurrentIndex(second->findText("b"));
+    QVERIFY(second->currentIndex() > 0);
+    emit second->activated(second->currentIndex());
+    ParameterForm* form = panel->form("bifurcation_curve");
+    QVERIFY(form);
+    auto* kind = qobject_cast<QComboBox*>(form->editor("kind"));
+    QVERIFY(kind);
+    kind->setCurrentIndex(kind->findText("period_doubling"));
+    QVERIFY(kind->currentIndex() >= 0);
+    for (const auto& [key, value] : {std::pair{"second_min", -0.5}, std::pair{"second_max", 0.5}}) {
+      auto* box = qobject_cast<QDoubleSpinBox*>(form->editor(key));
+      QVERIFY2(box, key);
+      box->setValue(value);
+    }
+    const nlohmann::json edited = panel->editedDocument();
+    QCOMPARE(edited["bifurcation_curve"]["second_parameter"].get<std::string>(), std::string("b"));
+    QCOMPARE(edited["bifurcation_curve"]["second_max"].get<double>(), 0.5);
+    const auto before = window_->findChildren<ChartWindow*>();
+    window_->createTool("bifurcation_curve");
+    ChartWindow* chart = nullptr;
+    for (auto* w : window_->findChildren<ChartWindow*>())
+      if (!before.contains(w)) chart = w;
+    QVERIFY(chart);
+    QTRY_VERIFY_WITH_TIMEOUT(chart->ready() || !chart->failure().isEmpty(), 120000);
+    QVERIFY2(chart->ready(), qPrintable(chart->failure()));
+    auto* plane = dynamic_cast<PoincareChart*>(chart->drawn().get());
+    QVERIFY(plane && plane->chart()->GetNumberOfPlots() > 0);
+    vtkTable* table = plane->chart()->GetPlot(0)->GetInput();
+    QVERIFY(table && table->GetNumberOfRows() > 10);
+    for (vtkIdType i = 0; i < table->GetNumberOfRows(); ++i) { // the chart's plane is (a, b)
+      const double a = table->GetValue(i, 0).ToDouble(), b = table->GetValue(i, 1).ToDouble();
+      QVERIFY2(std::abs(a - 0.75 * (1 - b) * (1 - b)) < 1e-8, qPrintable(QString("%1 %2").arg(a).arg(b)));
+      QVERIFY(b >= -0.5 - 1e-12 && b <= 0.5 + 1e-12);
+    }
+    chart->close();
+  }
+
   // Issue 61 (2): the Henon map's fixed point at a = 0 (x = 1/(1 - b)) followed by arclength through its fold
   // at a = -(1 - b)^2/4 = -0.1225 (x = 2/(1 - b) there) and back along the other branch, set up from the GUI
   // alone (docs/continuation.md gives the same run on the command line).
