@@ -25,6 +25,7 @@
 #include "scenes/ToolRunner.h"
 
 #include <QAction>
+#include <QApplication>
 #include <QCloseEvent>
 #include <QComboBox>
 #include <QDir>
@@ -408,9 +409,8 @@ void MainWindow::useScene(std::unique_ptr<Scene> scene, const QString& path, con
                                    : run.left(run.indexOf(')') + 1); // the method and its settings
   speedBox_->setValue(scene_->view.speed);
   // named by where it came from: its file, or (a sweep's cell) the sweep's point
-  setWindowTitle(QString("rollviz — %1 (%2)")
-                     .arg(origin.isEmpty() ? QFileInfo(path).fileName() : origin,
-                          QString::fromStdString(scene_->model->info().id)));
+  setWindowTitle(
+      QString("rollviz — %1 (%2)").arg(sceneName(), QString::fromStdString(scene_->model->info().id)));
   if (keep) {
     map_->keepScene(*scene_);
     if (newStart) map_->startSceneTrajectory();
@@ -525,9 +525,17 @@ void MainWindow::tick() {
   if (!mapFrame) view_->update(); // else on the next tick
 }
 
+QString MainWindow::sceneName() const {
+  return origin_.isEmpty() ? QFileInfo(scenePath_).fileName() : origin_;
+}
+
+QString MainWindow::statusText() const {
+  return status_->text();
+}
+
 void MainWindow::showStatus() {
   QString s = QString("%1   t = %2   %3")
-                  .arg(QFileInfo(scenePath_).fileName())
+                  .arg(sceneName())
                   .arg(shownTime_, 0, 'f', 3)
                   .arg(playing_ ? "playing" : "paused");
   if (visual_ && visual_->energyError()) s += QString("   dE/E = %1").arg(*visual_->energyError(), 0, 'e', 2);
@@ -701,11 +709,7 @@ ChartWindow* MainWindow::openChartOf(const nlohmann::json& document, const std::
                  .arg(numbers),
              8000);
   });
-  // cascaded from the main window's corner, not every window on one spot
-  int open = 0;
-  for (const ChartWindow* other : findChildren<ChartWindow*>())
-    open += other != w && other->isVisible();
-  w->move(frameGeometry().topLeft() + QPoint(40 + 32 * (open % 10), 60 + 32 * (open % 10)));
+  placeWindow(w);
   w->show();
   if (view == "bifurcation") map_->addDiagramWindow(w); // the map's trajectories are points on it
   return w;
@@ -719,6 +723,7 @@ SweepWindow* MainWindow::openSweep(const QString& path) {
     w->setSceneOpener([this, origin](const nlohmann::json& doc) {
       return mayReplaceMap("Opening a point of the sweep") && runDocument(doc, origin);
     });
+    placeWindow(w);
     w->show();
     return w;
   } catch (const std::exception& e) {
@@ -727,11 +732,21 @@ SweepWindow* MainWindow::openSweep(const QString& path) {
   }
 }
 
+void MainWindow::placeWindow(QWidget* w) const {
+  // over the 3D view, below the menu and the toolbars (a window put at the main window's corner hid them),
+  // cascaded so that windows do not open on one spot
+  int open = 0;
+  for (const QWidget* other : QApplication::topLevelWidgets())
+    open += other != w && other != this && other->isVisible() && other->parentWidget() == this;
+  w->move(view_->mapToGlobal(QPoint(24 + 32 * (open % 10), 24 + 32 * (open % 10))));
+}
+
 PlotWindow* MainWindow::openPlotWindow(const PlotView& plot) {
   if (!scene_) return nullptr;
   try {
     auto* w = new PlotWindow(*scene_->model, plot, this);
     w->setAttribute(Qt::WA_DeleteOnClose);
+    placeWindow(w);
     w->show();
     map_->addPlotWindow(w);
     return w;
@@ -744,6 +759,7 @@ PlotWindow* MainWindow::openPlotWindow(const PlotView& plot) {
 MultipliersWindow* MainWindow::openMultipliersWindow() {
   auto* w = new MultipliersWindow(this);
   w->setAttribute(Qt::WA_DeleteOnClose);
+  placeWindow(w);
   w->show();
   map_->addMultipliersWindow(w);
   return w;
@@ -754,6 +770,7 @@ QWidget* MainWindow::openApexWindow() {
   if (!apexWindow_) {
     apexView_ = QtVtkWidget::inOwnWindow(this, "rollviz — apex motion");
     apexWindow_ = apexView_->window();
+    placeWindow(apexWindow_);
   }
   if (!apex_ && scene_->model->geometry()) {
     ViewOptions v = effectiveView(scene_->view);

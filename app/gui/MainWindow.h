@@ -122,6 +122,11 @@ public:
   void report(const QString& text, int timeoutMs = 8000);
   /// The Results dock's text.
   QString results() const;
+  /// The scene's name as the title and the status bar say it: its file, or where it came from ("a point of
+  /// SWEEP.json" for a sweep's cell).
+  QString sceneName() const;
+  /// The status bar's text (the scene, its time, the method).
+  QString statusText() const;
 
   /// Saves the scene as shown -- the settings' edits and the Results dock's lines (`results`) written in --
   /// through a temporary name; false (the reason in Results) when it cannot.
@@ -196,6 +201,8 @@ protected:
   void dropEvent(QDropEvent* e) override;
 
 private:
+  /// Puts a new top-level window over the 3D view, below the menu and toolbars, cascaded.
+  void placeWindow(QWidget* w) const;
   /// The model file changed on disk: the scene runs again on the file's new content.
   void reloadModel();
   /// Watches the open scene's model file, if it has one.

@@ -78,8 +78,7 @@ QString MainWindow::undoText() const {
 
 void MainWindow::rememberMapForUndo() {
   Session map = mapAsItStands(false); // they stop: the map is replaced next
-  const QString name = origin_.isEmpty() ? QFileInfo(scenePath_).fileName() : origin_;
-  QString what = QString("(back to %1 with %2 trajectories").arg(name).arg(map.trajectories.size());
+  QString what = QString("(back to %1 with %2 trajectories").arg(sceneName()).arg(map.trajectories.size());
   what += map.tools.empty() ? QString(")") : QString(" and %1 tool outputs)").arg(map.tools.size());
   pushUndo({what, std::move(map), {}});
 }

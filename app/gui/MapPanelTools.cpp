@@ -80,8 +80,8 @@ void MapPanel::startSeparatrices() {
 void MapPanel::startContinuation() {
   // the fixed point found last (a Shift+click's, or the guess's search) is the one the user means; the
   // scene's guess only when none was found
-  const auto found = std::find_if(searches_.rbegin(), searches_.rend(),
-                                  [](const Search& s) { return !s.foundAt.empty(); });
+  const auto found =
+      std::find_if(searches_.rbegin(), searches_.rend(), [](const Search& s) { return !s.foundAt.empty(); });
   if (found != searches_.rend())
     continueFixedPoint(found->job->id());
   else

@@ -66,6 +66,7 @@
 #include <QTabWidget>
 #include <QTemporaryDir>
 #include <QTimer>
+#include <QToolBar>
 #include <QTreeWidget>
 #include <QtTest>
 #include <array>
@@ -226,6 +227,19 @@ class MainWindowTest : public QObject {
   Q_OBJECT
   MainWindow* window_ = nullptr;
   QTemporaryDir dir_;
+
+  // whether a new top-level window leaves the main window's menu and toolbars free
+  bool belowTheToolbars(const QWidget* w) const {
+    int bottom = window_->menuBar()->mapToGlobal(QPoint(0, window_->menuBar()->height())).y();
+    for (const QToolBar* bar : window_->findChildren<QToolBar*>())
+      if (bar->isVisible() && bar->window() == window_)
+        bottom = std::max(bottom, bar->mapToGlobal(QPoint(0, bar->height())).y());
+    const bool below = w->frameGeometry().top() >= bottom;
+    if (!below)
+      qWarning("window %s at %d, the toolbars end at %d", qPrintable(w->windowTitle()),
+               w->frameGeometry().top(), bottom);
+    return below;
+  }
 
   // sets the control panel's continuation tab as a user does: the parameter chosen, the end value typed, the
   // step and the method set (Apply is the caller's)
@@ -612,6 +626,8 @@ private slots:
     QVERIFY(writeJson(path, hhMegnoSweep()));
     SweepWindow* w = window_->openSweep(path);
     QVERIFY(w);
+    QVERIFY(QTest::qWaitForWindowExposed(w));
+    QVERIFY(belowTheToolbars(w)); // issue 61 (6): it opened over them
     Job* job = w->job();
     QVERIFY(job);
     ToolManager* tools = window_->toolManager();
@@ -639,6 +655,8 @@ private slots:
     // the title names the sweep's point and its problem, not the scene open before
     QVERIFY2(window_->windowTitle() == "rollviz — a point of hh_sweep.json (henon_heiles)",
              qPrintable(window_->windowTitle()));
+    // and so does the status bar (issue 61 (5): it kept the old scene's file)
+    QVERIFY2(window_->statusText().startsWith("a point of hh_sweep.json"), qPrintable(window_->statusText()));
     const auto point = window_->scene()->document["initial"]["map"];
     QCOMPARE(point.size(), std::size_t(2));
     QCOMPARE(point[0].get<double>(), w->spec().axisValues(13)[0]);
@@ -2016,7 +2034,7 @@ private slots:
     if (QTest::currentTestFailed()) return;
     const int found = map->fixedPointsFound();
     map->searchFixedPointAt(0.02, 0.23);
-    QVERIFY(!window_->controlPanel()->pending()); // applied by the search
+    QVERIFY(!window_->controlPanel()->pending());     // applied by the search
     QCOMPARE(map->sceneJobs().front(), kept.front()); // and the map kept
     QTRY_COMPARE_WITH_TIMEOUT(map->fixedPointsFound(), found + 1, 60000);
     QAction* cont = nullptr;
@@ -2411,6 +2429,7 @@ private slots:
       for (auto* w : window_->findChildren<ChartWindow*>())
         if (!before.contains(w)) chart = w;
       QVERIFY2(chart, tool.id.c_str());
+      QVERIFY(belowTheToolbars(chart));
       QVERIFY(window_->findChild<ToolManager*>());
       QTRY_VERIFY_WITH_TIMEOUT(chart->ready() || !chart->failure().isEmpty(), 120000);
       QVERIFY2(chart->ready(), qPrintable(QString::fromStdString(tool.id) + ": " + chart->failure()));
