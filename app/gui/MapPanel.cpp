@@ -137,15 +137,21 @@ void MapPanel::setScene(const Scene& scene, bool startTrajectory) {
     chart_->setTitles(axisNames_[0], axisNames_[1]);
   }
   sceneStart_ = -1;
-  if (!startTrajectory) return;
-  start(scene.initialState);
-  sceneStart_ = series_.back().job->id();
+  if (startTrajectory) startSceneTrajectory();
 }
 
 void MapPanel::startSceneTrajectory() {
   if (!scene_) return;
   start(scene_->initialState);
   sceneStart_ = series_.back().job->id();
+  // where the scene says it starts (its first map point is one iteration or crossing later)
+  const nlohmann::json map =
+      scene_->document.value("initial", nlohmann::json::object()).value("map", nlohmann::json());
+  QStringList at;
+  if (map.is_array())
+    for (const auto& v : map)
+      if (v.is_number()) at << QString::number(v.get<double>(), 'g', 6);
+  series_.back().origin = at.isEmpty() ? QString("the scene's initial state") : "(" + at.join(", ") + ")";
 }
 
 std::vector<int> MapPanel::addedJobs() const {
@@ -163,6 +169,7 @@ void MapPanel::start(const Eigen::VectorXd& state) {
   const Rgb colour = seriesColor(static_cast<int>(series_.size()));
   const int plot = chart_->addSeries({}, {}, colour);
   series_.push_back({&job, raw, {}, {}, {}, plot, colour});
+  series_.back().since.start();
   feedPlots(series_.back());
   if (colourByMegno_) startMegno(series_.back());
   chart_->select(plot);
@@ -501,7 +508,21 @@ bool MapPanel::drain() {
       if (got == 0) break;
       taken += got;
     }
-    if (taken == 0) continue;
+    if (taken == 0) {
+      if (s.x.empty() && !s.noCrossingSaid && s.job->running() && !scene_->model->isMap() &&
+          s.since.elapsed() > kNoCrossingMilliseconds) {
+        s.noCrossingSaid = true; // once: e.g. the Chaplygin sleigh's spin dies out and never changes sign
+        const SectionSettings& section = s.task->settings();
+        emit message(
+            QString("trajectory #%1 has not crossed the section %2 = %3 yet: its orbit may never reach "
+                    "it (the Poincaré map tab chooses another section)")
+                .arg(s.job->id())
+                .arg(QString::fromStdString(section.observable.empty() ? scene_->model->info().section
+                                                                       : section.observable))
+                .arg(section.value));
+      }
+      continue;
+    }
     drawSeries(s);
     changed = true;
   }

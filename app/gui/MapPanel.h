@@ -16,6 +16,7 @@
 #include "scenes/SceneLoader.h"
 #include "scenes/Session.h"
 
+#include <QElapsedTimer>
 #include <QPointer>
 #include <QWidget>
 #include <array>
@@ -226,7 +227,11 @@ private:
     QString origin;                   ///< where a click started it (map coordinates); else its first point
     std::vector<MapPoint> pending;    ///< points taken from the job, drawn from pendingAt on
     std::size_t pendingAt = 0;
+    QElapsedTimer since;         ///< since it started: a flow's orbit that never crosses the section
+    bool noCrossingSaid = false; ///< is said once that it has not crossed it yet
   };
+  /// How long a trajectory of a flow may run without a point before the map says why it may stay empty.
+  static constexpr qint64 kNoCrossingMilliseconds = 4000;
   /// The most points of one trajectory a drain draws: a job can hand over 2^18 at once, and copying and
   /// drawing them in one turn would keep the window from answering for tens of milliseconds.
   static constexpr std::size_t kDrainPerTick = 1 << 16;

@@ -2019,6 +2019,28 @@ private slots:
     QVERIFY(!window_->results().contains(QString("tool %1 (Continuation) failed").arg(family->id())));
   }
 
+  // Issue 61 (6): the tool manager's "start" of the scene's own trajectory is the scene's initial.map, not
+  // the first map point (one iteration later); a trajectory clicked on the map starts where it was clicked
+  void theScenesTrajectoryStartsAtItsInitialMapPoint() {
+    QVERIFY(window_->openScene(QString::fromStdString(defaultScenePath("standard_map"))));
+    MapPanel* map = window_->mapPanel();
+    QCOMPARE(map->trajectoryStart(map->sceneJobs().front()), QString("(3, 1.9)"));
+    QVERIFY(map->startAt(1.5, 0.25));
+    QCOMPARE(map->trajectoryStart(map->sceneJobs().back()), QString("(1.5, 0.25)"));
+  }
+
+  // Issue 61 (6): the Chaplygin sleigh's map stayed empty ("running 0 %") with no word why: its spin dies out
+  // and never crosses the section omega = 0. The map says so, once.
+  void aMapWhoseOrbitNeverCrossesTheSectionSaysSo() {
+    QVERIFY(window_->openScene(QString(qgetenv("ROLLVIZ_SOURCE_DIR")) +
+                               "/examples/models/chaplygin_sleigh.scene.json"));
+    const QString said = QString("trajectory #%1 has not crossed the section omega = 0 yet")
+                             .arg(window_->mapPanel()->sceneJobs().front());
+    QTRY_VERIFY2_WITH_TIMEOUT(window_->results().contains(said), qPrintable(window_->results()), 60000);
+    QCOMPARE(window_->results().count(said), 1);
+    QVERIFY(window_->mapPanel()->jobs().find(window_->mapPanel()->sceneJobs().front())->running());
+  }
+
   // Issue 61 (2), the rest: Tools > Continue the fixed point continues the point found last (not the scene's
   // guess -- this scene has none), and the continuation tab's edits count without Apply: the search that
   // found the point applied them first (the map stays: they define no map).
