@@ -131,7 +131,7 @@ void ControlPanel::setScene(const Scene& scene) {
     auto* form = new ParameterForm(table);
     connect(form, &ParameterForm::rejected, this, &ControlPanel::message);
     connect(form, &ParameterForm::edited, this, [this] {
-      setPending(true);
+      refreshPending();
       checkProblem();
     });
     form->setValues(values);
@@ -213,7 +213,7 @@ void ControlPanel::setScene(const Scene& scene) {
       if (section.contains(key) && section[key].is_string())
         chooser->setCurrentText(QString::fromStdString(section[key].get<std::string>()));
       chooser->setToolTip(QString::fromStdString(key + ": " + tip));
-      connect(chooser, &QComboBox::activated, this, [this] { setPending(true); });
+      connect(chooser, &QComboBox::activated, this, &ControlPanel::refreshPending);
       choosers_.emplace_back(t.key + "." + key, chooser);
       fields->addRow(QString::fromStdString(key), chooser);
     };
@@ -242,7 +242,7 @@ void ControlPanel::setScene(const Scene& scene) {
           edit->setText(QString::number(section[k.key].get<double>(), 'g', 17));
         edit->setPlaceholderText("not set");
         edit->setToolTip(QString::fromStdString(k.key + ": " + k.description));
-        connect(edit, &QLineEdit::textEdited, this, [this] { setPending(true); });
+        connect(edit, &QLineEdit::textEdited, this, &ControlPanel::refreshPending);
         numbers_.emplace_back(t.key + "." + k.key, edit);
         fields->addRow(QString::fromStdString(k.key), edit);
       }
@@ -265,13 +265,13 @@ bool ControlPanel::chooseMethod(const std::string& id) {
   // the scene's own values for its method, the table's defaults for another
   auto* form = new ParameterForm(*entry->parameters);
   connect(form, &ParameterForm::rejected, this, &ControlPanel::message);
-  connect(form, &ParameterForm::edited, this, [this] { setPending(true); });
-  setPending(true);
+  connect(form, &ParameterForm::edited, this, &ControlPanel::refreshPending);
   form->setValues(id == scene_->integratorEntry->id ? *scene_->integratorParameters
                                                     : ParameterValues(*entry->parameters));
   methodScroll_->setWidget(form); // deletes the old form
   for (auto& [key, f] : forms_)
     if (key == "method") f = form;
+  refreshPending();
   return true;
 }
 
@@ -310,6 +310,11 @@ QString ControlPanel::inPanelWords(const std::string& error, const std::string& 
   else
     return QString::fromStdString(error); // not a tab's value (the initial state, the view): as it is
   return QString::fromStdString(tab + " tab, " + (m[2].matched ? m[2].str() + ": " : "") + m[3].str());
+}
+
+void ControlPanel::refreshPending() {
+  // pending while what Apply would run differs from the scene: a value put back to the scene's is not
+  setPending(scene_ && editedDocument() != scene_->document);
 }
 
 void ControlPanel::setPending(bool pending) {

@@ -66,6 +66,7 @@ signals:
 
 private:
   void setPending(bool pending);
+  void refreshPending();
   void checkProblem();
   QLabel* objection_ = nullptr;
   bool pending_ = false;

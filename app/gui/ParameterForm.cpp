@@ -111,12 +111,14 @@ ParameterForm::ParameterForm(const ParameterTable& table, QWidget* parent) : QWi
 
 void ParameterForm::touch(std::size_t i) {
   if (blocked_) return;
-  touched_[i] = true;
-  // a changed value not yet run: its label says so until Apply (or another scene) sets the values again
-  QFont bold = labels_[i]->font();
-  bold.setBold(true);
-  labels_[i]->setFont(bold);
-  labels_[i]->setProperty("pending", true);
+  // a changed value not yet run: its label says so until Apply (or another scene) sets the values again, or
+  // the value is put back to what was set
+  const bool changed = i >= set_.size() || values().values()[i] != set_[i];
+  touched_[i] = changed;
+  QFont font = labels_[i]->font();
+  font.setBold(changed);
+  labels_[i]->setFont(font);
+  labels_[i]->setProperty("pending", changed);
   emit edited();
 }
 
@@ -145,6 +147,7 @@ void ParameterForm::setValues(const ParameterValues& values) {
     else if (auto* d = qobject_cast<QDoubleSpinBox*>(editors_[i]))
       d->setValue(v);
   }
+  set_ = this->values().values(); // as the fields show them (a spin box rounds to its decimals)
   blocked_ = false;
 }
 

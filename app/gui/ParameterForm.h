@@ -42,6 +42,7 @@ private:
   std::vector<QLabel*> problems_;
   std::vector<QLabel*> labels_;
   std::vector<bool> touched_;
+  std::vector<double> set_; ///< the values setValues showed: a field put back to its value is not pending
 };
 
 } // namespace rv

@@ -131,6 +131,14 @@ private slots:
     // a changed value waits for Apply, and shows it: its label bold, Apply bold with a dot
     QVERIFY(panel.pending() && applyButton->font().bold() && applyButton->text().contains("●"));
     QVERIFY(labelOf("energy")->font().bold());
+    // put back to the scene's value: nothing waits (issue 61 (6): it stayed marked pending)
+    auto* energy = qobject_cast<QDoubleSpinBox*>(panel.form("problem")->editor("energy"));
+    const double was = scene.model->parameters()["energy"];
+    energy->setValue(was);
+    QVERIFY(!panel.pending() && !applyButton->font().bold() && !labelOf("energy")->font().bold());
+    QCOMPARE(panel.editedDocument(), scene.document);
+    energy->setValue(0.75);
+    QVERIFY(panel.pending() && labelOf("energy")->font().bold());
     qobject_cast<QComboBox*>(panel.form("fixedpoint")->editor("method"))->setCurrentText("gradient");
     QSignalSpy applied(&panel, &ControlPanel::apply);
     QTest::mouseClick(panel.findChild<QPushButton*>("apply"), Qt::LeftButton);
