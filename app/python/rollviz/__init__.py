@@ -575,8 +575,18 @@ def _load(path, **settings):
     try:
         scene = _cpp_load(path)
     except ValueError:  # perhaps what the keywords give is missing (a model without a start): as the CLI reads it
-        return _cpp_load(path, **_settings_keys("Scene.load()", "the scene", {}, [], {
-            k: v for k, v in settings.items() if "." in k}))
+        keys = {}
+        for k, v in settings.items():
+            if "." in k:
+                _check_finite("Scene.load()", k, v)
+            else:
+                _check_type("Scene.load()", k, "number", v)
+            keys[k] = _plain(v)
+        try:
+            return _cpp_load(path, **keys)
+        except ValueError as e:
+            raise _in_python_words("Scene.load()", None, {("parameters." + k if "." not in k else k): k
+                                                          for k in keys}, e) from None
     return _set_for("Scene.load()", scene, settings)
 
 
