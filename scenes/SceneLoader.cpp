@@ -172,14 +172,27 @@ ViewOptions readView(const json& j, const Where& w) {
 Eigen::VectorXd readInitial(const json& j, const Where& w, const Model& model,
                             const SectionSettings& poincare) {
   requireObject(j, w);
-  onlyKeys(j, w, {"map", "root", "state"});
+  onlyKeys(j, w, {"map", "root", "state", "exact"});
   if (j.contains("map") == j.contains("state")) w.fail("give exactly one of \"map\" or \"state\"");
+  const bool exact = j.contains("exact") && boolean(j["exact"], w / "exact");
+  if (exact && !j.contains("state")) (w / "exact").fail("takes a \"state\" (every component named)");
   if (j.contains("state")) {
     const Where ws = w / "state";
     std::map<std::string, double> named;
     for (const auto& [k, v] : requireObject(j["state"], ws).items())
       named[k] = number(v, ws / k);
-    return model.stateFromNamed(named, ws.str());
+    if (!exact) return model.stateFromNamed(named, ws.str());
+    // every component as given, none derived or projected: a run goes on bit for bit from where another
+    // ended (Python's with_state), where the model would renormalise an integrated unit vector
+    const auto& names = model.info().stateNames;
+    Eigen::VectorXd x(static_cast<Eigen::Index>(names.size()));
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      const auto it = named.find(names[i]);
+      if (it == named.end()) ws.fail("exact: missing state component '" + names[i] + "'");
+      x[static_cast<Eigen::Index>(i)] = it->second;
+    }
+    if (named.size() != names.size()) model.stateFromNamed(named, ws.str()); // names no component: its error
+    return x;
   }
   const Where wm = w / "map";
   const std::vector<double> point = numbers(j["map"], wm);

@@ -106,16 +106,17 @@ pyb::array_t<unsigned char> toPicture(Image&& image) {
   return toArray(std::move(image.rgb), {h, w, 3});
 }
 
-// integrate_at(times, columns, resume): the observables at given times, forward from t = 0 when they are >= 0
-// and backward when they are <= 0, from the dense output of one integration; with `resume` (what a former
+// integrate_at(times, columns, resume, t0): the observables at given times, forward from t0 when they are >=
+// t0 and backward when they are <= t0, from the dense output of one integration; with `resume` (what a former
 // call returned) the integration goes on from where that one's integrator stopped, bit for bit as one call.
 // Returns (X, the integrator's snapshot at the end).
 pyb::tuple integrateAt(const Scene& shared, const std::vector<double>& times,
                        const std::vector<std::string>& ids, const pyb::object& resume,
-                       const pyb::object& progress) {
+                       const pyb::object& progress, double t0) {
   // a copy: another Python thread may change the scene object while this runs without the GIL
   const Scene scene = shared; // NOLINT(performance-unnecessary-copy-initialization)
-  const bool backward = !times.empty() && times.back() < 0;
+  if (!std::isfinite(t0)) throw InputError("t0 must be a finite number");
+  const bool backward = !times.empty() && times.back() < t0;
   const std::vector<int> cols = observableColumns(*scene.model, ids, "columns");
   const auto& obs = scene.model->observables();
   Snapshot saved;
@@ -124,13 +125,13 @@ pyb::tuple integrateAt(const Scene& shared, const std::vector<double>& times,
   x.reserve(times.size() * cols.size());
   runJob(progress, [&](const ToolControl& control) {
     auto integrator = scene.runSpec().makeIntegrator(*scene.model);
-    integrator->start(*scene.model, 0.0, scene.initialState, backward ? -1 : +1);
+    integrator->start(*scene.model, t0, scene.initialState, backward ? -1 : +1);
     if (!saved.values.empty()) integrator->restore(saved);
-    const double span = times.empty() ? 0 : std::abs(times.back());
+    const double span = times.empty() ? 0 : std::abs(times.back() - t0);
     sampleAt(*integrator, times, [&](double t, const Eigen::VectorXd& state) {
       for (const int c : cols)
         x.push_back(obs[static_cast<std::size_t>(c)].value(t, state.data()));
-      control.progress(span > 0 ? std::abs(t) / span : 1.0);
+      control.progress(span > 0 ? std::abs(t - t0) / span : 1.0);
       return !control.stopRequested();
     });
     saved = Snapshot{};
@@ -522,7 +523,7 @@ PYBIND11_MODULE(_rollviz, m) {
       .def("__repr__",
            [](const Scene& s) { return "<rollviz.Scene " + s.model->info().id + " from " + s.source + ">"; })
       .def("_integrate_at", &integrateAt, pyb::arg("times"), pyb::arg("columns"), pyb::kw_only(),
-           pyb::arg("resume") = pyb::none(), pyb::arg("progress") = pyb::none(),
+           pyb::arg("resume") = pyb::none(), pyb::arg("progress") = pyb::none(), pyb::arg("t0") = 0.0,
            "The columns at the given times (one direction from t = 0): what integrate(t_eval=...) calls.")
       .def(
           "render", &render, pyb::arg("size") = std::pair<int, int>{640, 480}, pyb::arg("time") = 10.0,

@@ -9,6 +9,7 @@
 #include "app/python/PyJob.h"
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/ModelRegistry.h"
+#include "dynamics/tools/PoincareMap.h"
 #include "dynamics/tools/ToolSettings.h"
 #include "scenes/SceneTools.h"
 #include "scenes/SectionTextKeys.h"
@@ -39,10 +40,14 @@ pyb::array_t<double> table(std::vector<double>&& flat, std::size_t columns) {
 // the scene sections a plain keyword of the tool may belong to: its own, its ancestors' in the tree, then the
 // others it reads
 std::vector<std::string> sectionsOf(const ToolEntry& tool) {
+  // Lyapunov exponents and MEGNO follow the trajectory, not its crossings of the section: the Poincare map's
+  // settings (points, section, direction, its crossing accuracy) would be taken and do nothing
+  const bool followsTrajectory = tool.id == "lyapunov" || tool.id == "megno";
   std::vector<std::string> out;
   for (const ToolEntry* t = &tool; t;
        t = t->parent.empty() ? nullptr : &ToolRegistry::global().get(t->parent))
-    if (!t->section.empty() && std::find(out.begin(), out.end(), t->section) == out.end())
+    if (!t->section.empty() && std::find(out.begin(), out.end(), t->section) == out.end() &&
+        !(followsTrajectory && t->section == "poincare"))
       out.push_back(t->section);
   for (const auto& s : tool.alsoSections)
     if (std::find(out.begin(), out.end(), s) == out.end()) out.push_back(s);
@@ -298,6 +303,23 @@ pyb::dict toolDict(const ToolEntry& e) {
   return d;
 }
 
+// each axis' name for xarray: a map axis (map.0) by the map coordinate it is (x, px), the others by their ids
+std::vector<std::string> axisNames(const SweepSpec& spec) {
+  std::vector<std::string> coordinates;
+  try {
+    coordinates =
+        PoincareMap(*spec.base.model, spec.base.startIntegrator(), spec.base.poincare).coordinateNames();
+  } catch (const std::exception&) { // no section (no map axis either): the ids
+  }
+  std::vector<std::string> names;
+  for (const auto& a : spec.axes) {
+    const bool onMap = a.id.rfind("map.", 0) == 0;
+    const auto k = onMap ? static_cast<std::size_t>(std::stoi(a.id.substr(4))) : 0;
+    names.push_back(onMap && k < coordinates.size() ? coordinates[k] : a.id);
+  }
+  return names;
+}
+
 // rollviz.sweep(path): the sweep on threads, its columns as arrays (rollviz sweep). With a checkpoint the
 // points are kept in that file and a later call goes on from them; on Ctrl-C the KeyboardInterrupt carries
 // the points finished so far as its second argument.
@@ -383,6 +405,7 @@ pyb::object sweep(const std::string& path, int threads, const pyb::object& progr
     values[spec.columns[k].c_str()] = toArray(std::move(columns[k]));
   pyb::dict d;
   d["columns"] = values;
+  d["axis_names"] = axisNames(spec);
   d["seconds"] = toArray(std::move(seconds));
   d["status"] = status;
   std::vector<int> shape;

@@ -183,9 +183,18 @@ LyapunovRun::LyapunovRun(const Model& model, IntegratorFactory makeIntegrator, c
                          LyapunovSettings settings)
     : model_(model), make_(std::move(makeIntegrator)), s_(settings) {
   m_ = model.info().coreDimension, n_ = model.dimension();
-  k_ = s_.count > 0 ? s_.count : m_;
+  // kept on the integrals' level set, the vectors span its tangent space only: p integrals leave m - p
+  // exponents, the others would be the logarithm of a projected-away (zero) stretch, -inf
+  const int integrals = s_.renormalizeIntegrals ? static_cast<int>(model.integrals(x0.data()).size()) : 0;
+  const int free = std::max(1, m_ - integrals);
+  k_ = s_.count > 0 ? s_.count : free;
   if (k_ > m_)
     throw InputError("lyapunov: at most " + std::to_string(m_) + " exponents for " + model.info().id);
+  if (k_ > free)
+    throw InputError("lyapunov.count: at most " + std::to_string(free) +
+                     " exponents with renormalize = yes (" + model.info().id + " has " +
+                     std::to_string(integrals) +
+                     " first integrals, whose gradients the vectors are kept orthogonal to)");
   if (!(s_.interval > 0)) throw InputError("lyapunov: the interval must be positive");
   if (!(s_.perturbation > 0) || !(s_.maxPerturbation >= s_.perturbation))
     throw InputError("lyapunov: need 0 < perturbation <= max perturbation");
@@ -205,6 +214,14 @@ LyapunovRun::LyapunovRun(const Model& model, IntegratorFactory makeIntegrator, c
     Eigen::VectorXd ask = Eigen::VectorXd::Zero(tangent_->dimension());
     if (const auto* rk4 = dynamic_cast<const Rk4*>(probe.get()); rk4 && tangent_->rk4Steps(ask, 0, 0))
       fusedStep_ = rk4->stepSize();
+  }
+  if (integrals > 0) {
+    // k vectors orthogonal to the gradients: the first unit vectors projected may be dependent (a gradient
+    // in their span), a pivoted QR of all m projected ones picks k independent
+    Eigen::MatrixXd all = Eigen::MatrixXd::Identity(m_, m_);
+    project(x_, all);
+    const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(all);
+    V_ = qr.householderQ() * Eigen::MatrixXd::Identity(m_, k_);
   }
   project(x_, V_);
   V_ = orthonormalize(V_).Q; // the first interval starts from unit vectors too (its spread is then its own)

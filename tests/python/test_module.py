@@ -396,11 +396,13 @@ def test_a_model_file_from_python_equals_the_cli(tmp_path, monkeypatch):
 def test_the_fixed_point_family_in_python_is_its_runners():
     """The runners' flags as keywords, and the table's columns beside the family's arrays."""
     sm = rollviz.Scene.load(scene_path("tools/continuation.json"))
-    a = sm.continuation(to=4.2, doubled=True)  # a flag argument: continuation.switch = 1
+    with pytest.warns(DeprecationWarning, match="use switch=1"):
+        a = sm.continuation(to=4.2, doubled=True)  # the deprecated flag argument: continuation.switch = 1
     b = sm.continuation(to=4.2, switch=1)
     assert a.order == 2 and np.array_equal(a.parameter_values, b.parameter_values)
     assert a.parent.parameter_values[0] == 3.5
-    c = sm.continuation(doubled=False)  # a flag given False is not given
+    with pytest.warns(DeprecationWarning):
+        c = sm.continuation(doubled=False)  # a flag given False is not given
     assert "order" not in c and c.multipliers.dtype == np.complex128
     # the columns of the CLI's CSV, by name: the trace of the Jacobian at (pi, 0) is 2 - K
     assert np.array_equal(c.K, c.parameter_values) and c.type == c.types

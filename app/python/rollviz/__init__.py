@@ -26,6 +26,7 @@ KeyboardInterrupt. A Scene is a value: set() and with_state() return new scenes,
 JSON), so multiprocessing, joblib and Dask can take them.
 """
 
+import collections.abc as _abc
 import copy as _copy
 import difflib as _difflib
 import html as _html
@@ -34,14 +35,16 @@ import json as _json
 import math as _math
 import numbers as _numbers
 import os as _os
+import re as _re
 import tempfile as _tempfile
 import types as _types
 import typing as _typing
+import warnings as _warnings
 
 import numpy as _np
 
-from ._rollviz import ComputationError, Model, Scene, __version__, describe, integrators, modules, problems
-from ._rollviz import scenes_directory
+from . import _rollviz as _core
+from ._rollviz import ComputationError, Model, Scene, __version__
 from ._rollviz import _tools
 from ._rollviz import _session_page
 from ._rollviz import sweep as _sweep_file
@@ -53,26 +56,77 @@ __all__ = ["ComputationError", "Model", "PageView", "Result", "Scene", "Session"
 
 # ---------------------------------------------------------------------------------------------------- results
 
-class Result(dict):
-    """A tool's result: a dict whose keys are also attributes (r.exponents is r["exponents"]); a key wins over a
-    dict method of its name (a sweep's r.values is its values, not dict.values)."""
+class Result:
+    """A tool's result: a read-only mapping (a collections.abc.Mapping) whose keys are also attributes
+    (r.exponents is r["exponents"]); a key wins over a method of its name (a sweep's r.values is its values, not
+    a method). dict(r) gives a plain dict."""
+
+    __slots__ = ("_fields",)
+
+    def __init__(self, fields=None):
+        object.__setattr__(self, "_fields", dict(fields or {}))
 
     def __getattribute__(self, name):
-        if not name.startswith("_") and dict.__contains__(self, name):
-            return dict.__getitem__(self, name)
-        return super().__getattribute__(name)
+        if not name.startswith("_"):
+            fields = object.__getattribute__(self, "_fields")
+            if name in fields:
+                return fields[name]
+        return object.__getattribute__(self, name)
 
     def __getattr__(self, name):
-        try:
-            return self[name]
-        except KeyError:
-            raise AttributeError(name) from None
+        raise AttributeError(f"{type(self).__name__} has no field {name!r} (fields: {', '.join(self._fields)})")
+
+    def __getitem__(self, key):
+        return self._fields[key]
+
+    def __iter__(self):
+        return iter(self._fields)
+
+    def __len__(self):
+        return len(self._fields)
+
+    def __contains__(self, key):
+        return key in self._fields
+
+    def __eq__(self, other):
+        return isinstance(other, (Result, dict)) and self._fields == dict(other)
+
+    __hash__ = None
+
+    def keys(self):
+        """The fields' names."""
+        return self._fields.keys()
+
+    def items(self):
+        """(name, value) of each field."""
+        return self._fields.items()
+
+    def values(self):
+        """The fields' values."""
+        return self._fields.values()
+
+    def get(self, key, default=None):
+        """The field `key`, or `default`."""
+        return self._fields.get(key, default)
 
     def __dir__(self):
-        return list(dict.keys(self)) + list(super().__dir__())
+        return [k for k in self._fields if isinstance(k, str)] + list(super().__dir__())
+
+    def __reduce__(self):
+        return (type(self), (self._fields,))
 
     def __repr__(self):
-        return f"{type(self).__name__}({', '.join(f'{k}={_brief(v)}' for k, v in dict.items(self))})"
+        return f"{type(self).__name__}({', '.join(f'{k}={_brief(v)}' for k, v in self._fields.items())})"
+
+    def _repr_html_(self):
+        """Jupyter's view: the fields in a small table (arrays by their shape)."""
+        rows = "".join(f"<tr><th style='text-align: left'>{_html.escape(str(k))}</th>"
+                       f"<td style='text-align: left'>{_html.escape(_brief(v))}</td></tr>"
+                       for k, v in self._fields.items())
+        return f"<table><caption>rollviz.{type(self).__name__}</caption><tbody>{rows}</tbody></table>"
+
+
+_abc.Mapping.register(Result)
 
 
 def _brief(value):
@@ -81,7 +135,7 @@ def _brief(value):
         return f"array{value.shape}" if value.size > 6 else repr(value.tolist())
     if isinstance(value, (list, tuple)) and len(value) > 6:
         return f"[{len(value)} items]"
-    if isinstance(value, dict):
+    if isinstance(value, (dict, Result)):
         keys = list(value)
         return "{" + ", ".join(map(str, keys[:6])) + (", ..." if len(keys) > 6 else "") + "}"
     text = repr(value)
@@ -186,7 +240,7 @@ class Trajectory(Table):
         self.final = None if final is None else _np.asarray(final)
         self.final_named = None if final is None else dict(zip(state_names, (float(v) for v in final)))
         self._resume = self._scene = self._every = None  # where integrate(after=this) goes on from
-        self._next = 0
+        self._next, self._t0 = 0, 0.0
         self._source = None  # the Scene it ran in: show() plays it
 
     def show(self, duration=10.0, *, height=600):
@@ -208,14 +262,37 @@ class Trajectory(Table):
 
 class SweepResult(Result):
     """A sweep's result: values[name] an array shaped like the grid (the first axis first), axes[id] each axis'
-    coordinates, columns the flat columns as the CSV has them (first axis fastest), shape, status per point
-    (whole), seconds, quantity, complete. to_xarray() gives a Dataset over the axes."""
+    coordinates, axis_names the axes' names (a map axis, map.0, by its map coordinate: x, px), columns the flat
+    columns as the CSV has them (first axis fastest), shape, status per point (whole), seconds, quantity,
+    complete. to_xarray() gives a Dataset over the axes."""
+
+    __slots__ = ()
 
     def to_xarray(self):
+        """The values as an xarray Dataset, its dimensions named after the axes (map axes by their map
+        coordinates)."""
         xarray = _optional("xarray", "to_xarray()")
-        dims = list(self.axes)
+        ids = list(self.axes)
+        dims = list(self._fields.get("axis_names") or ids)
         return xarray.Dataset({k: (dims, v) for k, v in self["values"].items()},
-                              coords={d: self.axes[d] for d in dims})
+                              coords={d: self.axes[i] for d, i in zip(dims, ids)})
+
+    def __repr__(self):
+        names = self._fields.get("axis_names") or list(self.axes)
+        grid = " x ".join(f"{n}({c})" for n, c in zip(names, self.shape))
+        done = "complete" if self.complete else f"{list(self.status).count('ok')} computed, incomplete"
+        return f"<rollviz.SweepResult {self.quantity} over {grid}: {done}>"
+
+    def _repr_html_(self):
+        names = self._fields.get("axis_names") or list(self.axes)
+        rows = "".join(
+            f"<tr><th style='text-align: left'>{_html.escape(k)}</th><td>{_np.nanmin(v):.6g}</td>"
+            f"<td>{_np.nanmax(v):.6g}</td></tr>" if _np.isfinite(v).any() else
+            f"<tr><th style='text-align: left'>{_html.escape(k)}</th><td colspan=2>not computed</td></tr>"
+            for k, v in self["values"].items())
+        grid = " &times; ".join(f"{_html.escape(n)} ({c})" for n, c in zip(names, self.shape))
+        return (f"<table><caption>rollviz.SweepResult: {_html.escape(self.quantity)} over {grid}</caption>"
+                f"<thead><tr><th></th><th>min</th><th>max</th></tr></thead><tbody>{rows}</tbody></table>")
 
 
 def _wrap(value):
@@ -231,23 +308,39 @@ def _shaped(value, table=""):
     runner names (megno's history) as a Table."""
     if "_table" in value:
         return Table(value["_table"]["columns"], value["_table"]["rows"])
-    r = _wrap(value)
-    if table and isinstance(r.get(table), dict):
-        h = r[table]
+    fields = {k: _wrap(v) for k, v in value.items()}
+    if table and isinstance(value.get(table), dict):
+        h = value[table]
         names = ["t"] + [n for n in h if n != "t"] if "t" in h else list(h)
-        r[table] = Table(names, _np.column_stack([_np.asarray(h[n], dtype=float) for n in names]))
-    return r
+        fields[table] = Table(names, _np.column_stack([_np.asarray(h[n], dtype=float) for n in names]))
+    return Result(fields)
 
 
 # ------------------------------------------------------------------------------------------ the keyword rule
+
+def _is_flag(choices):
+    """A choice of no/yes: a flag, which takes True/False."""
+    return choices is not None and sorted(choices) == ["no", "yes"]
+
+
+def _flag_value(value):
+    """A flag's value as the scene takes it: True/False (and NumPy's bools); 'yes'/'no', the scene files'
+    spelling, are still taken as they are."""
+    if isinstance(value, (bool, _np.bool_)):
+        return "yes" if value else "no"
+    return value
+
 
 def _check_type(call, name, kind, value, choices=None):
     """A keyword's value against what it takes: TypeError for the wrong type, ValueError for NaN or a choice
     not offered."""
     def number(v):
-        return isinstance(v, _numbers.Real) and not isinstance(v, bool)
+        return isinstance(v, _numbers.Real) and not isinstance(v, (bool, _np.bool_))
 
-    if kind in ("number", "integer"):
+    if kind == "choice" and _is_flag(choices):
+        if not isinstance(value, (bool, _np.bool_)) and value not in ("yes", "no"):
+            raise TypeError(f"{call}: {name} takes True or False, not {value!r}")
+    elif kind in ("number", "integer"):
         if not number(value):
             raise TypeError(f"{call}: {name} takes a number, not {type(value).__name__} ({value!r})")
         if not _math.isfinite(value):  # a scene is JSON: no NaN, no infinity
@@ -265,6 +358,20 @@ def _check_type(call, name, kind, value, choices=None):
     elif kind == "numbers":
         if isinstance(value, (str, bytes)) or not all(number(v) for v in _np.ravel(_np.asarray(value, object))):
             raise TypeError(f"{call}: {name} takes a sequence of numbers, not {value!r}")
+        _check_finite(call, name, value)
+
+
+def _check_finite(call, name, value):
+    """ValueError naming the argument for a NaN or an infinity anywhere in `value` (a scene is JSON)."""
+    if isinstance(value, dict):
+        for k, v in value.items():
+            _check_finite(call, f"{name}: {k}" if name else str(k), v)
+    elif isinstance(value, (list, tuple, _np.ndarray)):
+        for v in _np.ravel(_np.asarray(value, dtype=object)):
+            _check_finite(call, name, v)
+    elif isinstance(value, _numbers.Real) and not isinstance(value, (bool, _np.bool_)):
+        if not _math.isfinite(value):
+            raise ValueError(f"{call}: {name} must be a finite number, got {float(value)}")
 
 
 def _plain(value):
@@ -280,45 +387,138 @@ def _plain(value):
     return value
 
 
-def _unknown(call, key, known, what):
+def _did_you_mean(key, known):
+    """ "did you mean 'time'?" for the nearest known names, or ""."""
     near = _difflib.get_close_matches(key, known, n=3, cutoff=0.6)
-    return TypeError(f"{call} got an unexpected keyword argument {key!r}"
-                     + (f" (did you mean {', '.join(near)}?" if near else " (")
-                     + (" " if near else "") + f"{what})")
+    if not near:
+        return ""
+    quoted = [repr(n) for n in near]
+    return "did you mean " + (quoted[0] if len(quoted) == 1 else ", ".join(quoted[:-1]) + " or " + quoted[-1]) + "?"
+
+
+def _unknown(call, key, known, what):
+    """Python's own TypeError for an unexpected keyword, with the nearest known ones."""
+    near = _did_you_mean(key, known)
+    return TypeError(f"{call} got an unexpected keyword argument {key!r}" + (f"; {near}" if near else "")
+                     + f" ({what})")
+
+
+def _deprecated(call, old, new):
+    _warnings.warn(f"{call}: {old} is deprecated; use {new}", DeprecationWarning, stacklevel=3)
 
 
 def _in_python_words(call, scene, places, error):
     """The scene loader's message about a keyword's value ("scenes/x.json:lyapunov.time: ...") as the call's
     ("lyapunov(): time: ..."); `places` maps each scene key of the call to the keyword the user wrote."""
     text = str(error)
+    source = getattr(scene, "source", scene)
     for place, keyword in places.items():
-        for prefix in (f"{scene.source}:{place}: ", f"--set {place}: "):
+        for prefix in (f"{source}:{place}: ", f"--set {place}: "):
             if text.startswith(prefix):
                 return ValueError(f"{call}: {keyword}: {text[len(prefix):]}")
+        if scene is None and f":{place}: " in text:  # a scene read for the call (Scene(problem)): its file
+            return ValueError(f"{call}: {keyword}: {text.split(f':{place}: ', 1)[1]}")
+    if text.startswith("--set "):  # no keyword of the call: the command line's wording all the same
+        return ValueError(f"{call}: {text[len('--set '):]}")
     return error
 
 
-def _model_parameter_keys(scene, call, kw):
-    """Plain model parameters and dotted keys as set() takes them; TypeError for anything else."""
+def _settings_keys(call, problem, parameters, state_names, kw):
+    """Plain model parameters and dotted keys as set() takes them; TypeError for anything else, ValueError
+    naming the argument for a NaN or an infinity."""
     out = {}
-    parameters = scene.parameters
     for key, value in kw.items():
         if "." in key:
             if key == "initial.state" and not isinstance(value, dict):
-                value = dict(zip(scene.state_names, _plain(_np.ravel(_np.asarray(value, float)))))
+                values = _np.ravel(_np.asarray(value, float))
+                if len(values) != len(state_names):
+                    raise ValueError(f"{call}: initial.state: {len(values)} values for the {len(state_names)} "
+                                     f"components of {problem}'s state ({', '.join(state_names)})")
+                value = dict(zip(state_names, _plain(values)))
+            _check_finite(call, key, value)
             out[key] = _plain(value)
         elif key in parameters:
             _check_type(call, key, "number", value)
             out[key] = _plain(value)
         else:
             raise _unknown(call, key, list(parameters),
-                           f"takes the parameters of {scene.problem} ({', '.join(parameters)}) and dotted scene "
+                           f"takes the parameters of {problem} ({', '.join(parameters)}) and dotted scene "
                            "keys such as **{'integrator.method': 'verner9'}")
     return out
 
 
+def _model_parameter_keys(scene, call, kw):
+    return _settings_keys(call, scene.problem, scene.parameters, scene.state_names, kw)
+
+
+# ------------------------------------------------------------------- the lists and models (with signatures)
+
+def describe(problem):
+    """A problem's parameters, state, first integrals, map coordinates and observables (rollviz describe):
+    `problem` a problem's id or a model file's path."""
+    return _core.describe(_os.fspath(problem))
+
+
+def integrators():
+    """The integrators: a list of {id, title, parameters}."""
+    return _core.integrators()
+
+
+def modules():
+    """The modules loaded (ROLLVIZ_MODULE_PATH, ~/.local/lib/rollviz/modules): path, problems, tools,
+    integrators each added."""
+    return _core.modules()
+
+
+def problems():
+    """The problems (models): a list of {id, title}."""
+    return _core.problems()
+
+
+def scenes_directory():
+    """The folder of the shipped scene files."""
+    return _core.scenes_directory()
+
+
+_cpp_model_init = Model.__init__
+_cpp_model_load = Model.load
+_cpp_model_describe = Model.describe
+
+
+def _model_init(self, model):
+    """A model from a dict with the content of a model file (docs/models.md)."""
+    if not isinstance(model, _abc.Mapping):
+        raise TypeError(f"Model(): model takes a dict (a model file's content), not {type(model).__name__}; "
+                        "Model.load(path) reads a file")
+    _check_finite("Model()", "model", dict(model))
+    _cpp_model_init(self, dict(model))
+
+
+def _model_load(path):
+    """Loads a model file (docs/models.md)."""
+    return _cpp_model_load(_os.fspath(path))
+
+
+def _model_describe(self):
+    """Its parameters, state, integrals, map coordinates and observables (as rollviz.describe)."""
+    return _cpp_model_describe(self)
+
+
+Model.__init__ = _model_init
+Model.load = staticmethod(_model_load)
+Model.describe = _model_describe
+
+
 # ------------------------------------------------------------------------------------------ scenes as values
 
+_cpp_init = Scene.__init__
+_cpp_load = Scene.load
+_cpp_from_json = Scene.from_json
+_cpp_copy = Scene.copy
+_cpp_to_json = Scene.to_json
+_cpp_save = Scene.save
+_cpp_export_view = Scene.export_view
+_cpp_chart = Scene.chart
 _cpp_set = Scene.set
 _cpp_parameters = Scene.parameters
 _cpp_render = Scene.render
@@ -349,9 +549,110 @@ def _set_for(call, scene, settings):
         raise _in_python_words(call, scene, places, e) from None
 
 
+def _scene_init(self, problem, **settings):
+    """A scene of `problem`: a problem's id (its shipped scene, scenes/<problem>.json) or a Model (a system
+    written as equations; give its start as **{'initial.state': {...}} unless its file has one), with model
+    parameters (energy=0.4) and dotted scene keys (**{'integrator.method': 'verner9'}) set."""
+    if isinstance(problem, Model):
+        info = problem.describe()
+    elif isinstance(problem, str):
+        info = describe(problem)  # ValueError listing the problems
+    else:
+        raise TypeError(f"Scene(): problem takes a problem's id (str) or a Model, not {type(problem).__name__}")
+    keys = _settings_keys("Scene()", info["id"], [p["id"] for p in info["parameters"]], info["state"], settings)
+    try:
+        _cpp_init(self, problem, **keys)
+    except ValueError as e:
+        raise _in_python_words("Scene()", None, {("parameters." + k if "." not in k else k): k for k in keys},
+                               e) from None
+
+
+def _load(path, **settings):
+    """Reads a scene file; keywords (model parameters, dotted scene keys) as for set()."""
+    path = _os.fspath(path)
+    if not settings:
+        return _cpp_load(path)
+    try:
+        scene = _cpp_load(path)
+    except ValueError:  # perhaps what the keywords give is missing (a model without a start): as the CLI reads it
+        keys = {}
+        for k, v in settings.items():
+            if "." in k:
+                _check_finite("Scene.load()", k, v)
+            else:
+                _check_type("Scene.load()", k, "number", v)
+            keys[k] = _plain(v)
+        try:
+            return _cpp_load(path, **keys)
+        except ValueError as e:
+            raise _in_python_words("Scene.load()", None, {("parameters." + k if "." not in k else k): k
+                                                          for k in keys}, e) from None
+    return _set_for("Scene.load()", scene, settings)
+
+
+def _from_json(text, source="<json>"):
+    """A scene from its JSON text (what to_json() gives); `source` names it in messages."""
+    if not isinstance(text, str):
+        raise TypeError(f"Scene.from_json(): text takes a str, not {type(text).__name__}")
+
+    def no_constant(name):
+        raise ValueError(f"Scene.from_json(): {name} is not a number a scene can hold (JSON has no NaN or infinity)")
+
+    try:
+        _json.loads(text, parse_constant=no_constant)
+    except _json.JSONDecodeError as e:
+        raise ValueError(f"Scene.from_json(): not JSON: {e}") from None
+    return _cpp_from_json(text, source)
+
+
+def _copy_scene(self):
+    """An independent copy (a Scene is a value: set() and with_state() already return new ones)."""
+    return _cpp_copy(self)
+
+
+def _to_json(self):
+    """The scene file's text (what save() writes)."""
+    return _cpp_to_json(self)
+
+
+def _save(self, path):
+    """Writes the scene file (through a temporary name, so a reader never sees half of it)."""
+    return _cpp_save(self, _os.fspath(path))
+
+
+def _export_view(self, path, time=10.0):
+    """Writes the 3D view at `time` as a ParaView multiblock (.vtm: bodies, plane, traces; rollviz render -o
+    view.vtm)."""
+    return _cpp_export_view(self, _os.fspath(path), time)
+
+
+class Picture(_np.ndarray):
+    """An H x W x 3 uint8 image (a NumPy array) that Jupyter shows as a PNG: what render() and chart() give."""
+
+    def _repr_png_(self):
+        return _png_bytes(_np.asarray(self))
+
+
+def _picture(pixels):
+    return _np.asarray(pixels).view(Picture)
+
+
+def _chart(self, view="poincare", size=None, points=0, diagram="", *, path=None, style="screen", scale=1,
+           progress=None):
+    """A chart of the scene (rollviz chart --view VIEW) as an H x W x 3 uint8 array (a Picture, shown in
+    Jupyter); with path, also written as a figure in the format its extension names (.png, or .svg or .pdf:
+    vectors, text as text). size: (width, height), default (800, 800); style 'paper': white, black axes and
+    text, the type of a 3.5-inch journal column at 300 dpi (1050 x 788 unless size is given); scale N: N x the
+    pixels with text and pens N x as large."""
+    if size is not None:
+        size = _picture_size("chart()", size)
+    return _picture(_cpp_chart(self, view, size, points, diagram, path=None if path is None else _os.fspath(path),
+                               style=style, scale=scale, progress=progress))
+
+
 def _with_initial(scene, initial):
     doc = _json.loads(scene.to_json())
-    kept = {k: v for k, v in doc.get("initial", {}).items() if k not in ("map", "state", "root")}
+    kept = {k: v for k, v in doc.get("initial", {}).items() if k not in ("map", "state", "root", "exact")}
     doc["initial"] = {**kept, **initial}
     return doc
 
@@ -365,18 +666,32 @@ def _from_document(scene, doc, keys=None):
 
 def _with_state(self, state, **settings):
     """A new scene that starts from `state`: an array of the state's components (Scene.state_names, as
-    Trajectory.final) or a mapping {name: value}; other keywords as for set()."""
-    if not isinstance(state, dict):
+    Trajectory.final) or a mapping {name: value}; other keywords as for set(). A whole state (every component)
+    is taken exactly as given, none projected by the model, so s.with_state(r.final).integrate(..., t0=r.t[-1])
+    goes on from where r ended (a fixed-step method bit for bit where the step divides the time); a partial
+    mapping is completed by the model as a scene file's "initial.state" is."""
+    if isinstance(state, _abc.Mapping):
+        state = dict(state)
+    else:
         values = _np.ravel(_np.asarray(state, dtype=float))
         if len(values) != len(self.state_names):
             raise ValueError(f"with_state(): {len(values)} values for the {len(self.state_names)} components of "
                              f"{self.problem}'s state ({', '.join(self.state_names)})")
         state = dict(zip(self.state_names, values))
-    return _set(self, **{"initial.state": {k: float(v) for k, v in state.items()}}, **settings)
+    for k, v in state.items():
+        _check_type("with_state()", f"state {k}" if not isinstance(k, str) else k, "number", v)
+    state = {k: float(v) for k, v in state.items()}  # repr() of a float reads back exactly: no digit lost
+    keys = _model_parameter_keys(self, "with_state()", settings)
+    try:
+        doc = _with_initial(self, {"state": state, **({"exact": True} if set(state) == set(self.state_names) else {})})
+        return _from_document(self, doc, keys)
+    except ValueError as e:
+        raise _in_python_words("with_state()", self, {("parameters." + k if "." not in k else k): k for k in keys},
+                               e) from None
 
 
-def _integrate(self, time=None, every=None, columns=None, *, t_eval=None, events=None, after=None, progress=None,
-               **settings):
+def _integrate(self, time=None, every=None, columns=None, *, t_eval=None, events=None, after=None, t0=0.0,
+               progress=None, **settings):
     """Integrates and samples observables at t = 0, every, 2 every, ... up to time (rollviz integrate); a
     negative time integrates backward (t = 0, -every, ...); t_eval gives the times instead (ascending from 0, or
     descending from 0 for a backward run), from the dense output of one integration. columns: observable ids, a
@@ -384,9 +699,19 @@ def _integrate(self, time=None, every=None, columns=None, *, t_eval=None, events
     samples after r's last one, bit for bit what one longer call gives. events=(observable, level) or
     (observable, level, "positive"|"negative"|"both"): the crossings of that level on the way, located on the
     dense output as the Poincare map locates them (r.events, a Trajectory of the same columns at the crossing
-    times). Other keywords: model parameters and dotted scene keys for this call (as set()). Returns a
+    times). t0: the time the scene's state is at (samples at t0, t0 + every, ...; time is the span and t_eval
+    absolute times): s.with_state(r.final).integrate(time, every, t0=r.t[-1]) goes on where r ended, its clock
+    too. Other keywords: model parameters and dotted scene keys for this call (as set()). Returns a
     Trajectory: r["E"] a column, r.t the times, np.asarray(r) the rows, r.final the whole state at the last
     sample (Scene.with_state(r.final) is a new scene that starts there)."""
+    for key in settings:
+        if "." not in key and key not in self.parameters:
+            raise _unknown("integrate()", key, ["time", "every", "columns", "t_eval", "events", "after", "t0",
+                                                "progress"] + list(self.parameters),
+                           f"takes time, every, columns, t_eval, events, after, t0, progress, the parameters of "
+                           f"{self.problem} ({', '.join(self.parameters)}) and dotted scene keys")
+    _check_type("integrate()", "t0", "number", t0)
+    t0 = float(t0)
     scene = _set_for("integrate()", self, settings) if settings else self
     if isinstance(columns, str):
         columns = [columns]
@@ -398,7 +723,7 @@ def _integrate(self, time=None, every=None, columns=None, *, t_eval=None, events
     if after is not None:
         if not isinstance(after, Trajectory) or after._resume is None:
             raise TypeError("integrate(): after takes a Trajectory that integrate() returned")
-        if after._scene != document:
+        if after._scene != document or after._t0 != t0:
             raise ValueError("integrate(after=r): r comes from another scene (its parameters, integrator or start "
                              "differ); Scene.with_state(r.final) starts a new one there")
     if t_eval is not None:
@@ -420,18 +745,18 @@ def _integrate(self, time=None, every=None, columns=None, *, t_eval=None, events
         sign = -1.0 if time < 0 else 1.0
         # t_k = k every, as the CLI's sampler computes them (rollviz integrate gives the same rows)
         count = int(_math.floor(abs(time) / every * (1 + 1e-12))) + 1
-        times = [0.0 + sign * k * every for k in range(first, count)]
-    r = _sampled(scene, times, names, None if after is None else after._resume, progress)
+        times = [t0 + sign * k * every for k in range(first, count)]
+    r = _sampled(scene, times, names, None if after is None else after._resume, progress, t0)
     if not times and after is not None:
         r.final, r.final_named = after.final, after.final_named
-    r._scene, r._every, r._next = document, every, first + len(times)
+    r._scene, r._every, r._next, r._t0 = document, every, first + len(times), t0
     r._source = scene
     if events is not None:
-        r.events = _events(scene, events, times[-1] if times else 0.0, names, progress)
+        r.events = _events(scene, events, (times[-1] if times else t0) - t0, names, progress, t0)
     return r
 
 
-def _events(scene, events, end, names, progress):
+def _events(scene, events, end, names, progress, t0=0.0):
     """The crossings of an observable's level up to time `end`: the Poincare tool's section on that level."""
     if not isinstance(events, (tuple, list)) or len(events) not in (2, 3) or not isinstance(events[0], str):
         raise TypeError(f"integrate(): events takes (observable, level) or (observable, level, direction), "
@@ -443,13 +768,17 @@ def _events(scene, events, end, names, progress):
     section = scene.set(**{"poincare.section": observable, "poincare.value": float(level),
                            "poincare.direction": direction, "poincare.points": 10 ** 15,
                            "poincare.max_time": abs(end), "poincare.integrate": "backward" if end < 0 else "forward"})
-    return _sampled(scene, [t for t in section.poincare()["t"] if abs(t) <= abs(end)], names, None, progress)
+    # the models are autonomous: a crossing tau after the start is at t0 + tau
+    return _sampled(scene, [t0 + t for t in section.poincare()["t"] if abs(t) <= abs(end)], names, None, progress,
+                    t0)
 
 
-def _sampled(scene, times, names, resume, progress):
-    """The named columns at `times` from one integration (going on from `resume`, an integrator's snapshot). The
-    state's components ride along as columns (each is an observable): the last row gives the final state."""
-    X, snapshot = scene._integrate_at(times, names + list(scene.state_names), resume=resume, progress=progress)
+def _sampled(scene, times, names, resume, progress, t0=0.0):
+    """The named columns at `times` from one integration from t0 (going on from `resume`, an integrator's
+    snapshot). The state's components ride along as columns (each is an observable): the last row gives the
+    final state."""
+    X, snapshot = scene._integrate_at(times, names + list(scene.state_names), resume=resume, progress=progress,
+                                      t0=t0)
     final = X[-1, len(names):] if len(times) else None
     r = Trajectory(names, _np.ascontiguousarray(X[:, :len(names)]), _np.asarray(times), final, scene.state_names)
     r._resume = snapshot
@@ -479,7 +808,7 @@ def _render(self, size=(640, 480), time=10.0, *, transparent=False, **settings):
     """The 3D view at `time` (the trace covers [0, time]) as an H x W x 3 uint8 array, rendered headless as
     rollviz render draws it. Other keywords: model parameters and dotted scene keys for this call."""
     scene = _set_for("render()", self, settings) if settings else self
-    return _cpp_render(scene, _picture_size("render()", size), time, 1, transparent)
+    return _picture(_cpp_render(scene, _picture_size("render()", size), time, 1, transparent))
 
 
 def _snapshot(self, path, size=(1280, 720), time=10.0, *, transparent=False, **settings):
@@ -605,6 +934,14 @@ class Session:
         return f"<rollviz.Session {self.path}: {self.scene.problem}>"
 
 
+Scene.__init__ = _scene_init
+Scene.load = staticmethod(_load)
+Scene.from_json = staticmethod(_from_json)
+Scene.copy = _copy_scene
+Scene.to_json = _to_json
+Scene.save = _save
+Scene.export_view = _export_view
+Scene.chart = _chart
 Scene.set = _set
 Scene.with_state = _with_state
 Scene.integrate = _integrate
@@ -615,7 +952,7 @@ Scene.page = _page
 Scene.show = _show
 # Jupyter's rich display: the interactive view, or the 3D view as a picture where HTML is not shown
 Scene._repr_html_ = lambda self: PageView(_page_text(lambda p: _page(self, p)))._repr_html_()
-Scene._repr_png_ = lambda self: _png_bytes(self.render())
+Scene._repr_png_ = lambda self: _png_bytes(self.render(size=(480, 360)))
 Scene.parameters = property(lambda self: _types.MappingProxyType(_cpp_parameters.fget(self)),
                             doc="The model parameters' values (read-only: set() returns a scene with others).")
 Scene.__copy__ = lambda self: self.copy()
@@ -649,23 +986,66 @@ def _keywords(tool):
     return out
 
 
-def _default(k):
-    d = k["default"]
-    return int(d) if k["type"] == "integer" and d is not None else d
+# Names the tool calls took besides their settings' own, kept for a while: (argument, the keyword to use, its
+# value from the old one's; None: nothing set)
+_DEPRECATED_ARGUMENTS = {
+    "param": ("parameter", lambda v: v),
+    "arclength": ("method='arclength'", lambda v: ("method", "arclength") if v else None),
+    "doubled": ("switch=1", lambda v: ("switch", 1) if v else None),
+}
+# keywords a call took that never did anything there, ignored with a warning: (tool, keyword) -> why
+_IGNORED = {("megno", "accuracy"): "it was the Poincare section's crossing accuracy (poincare.accuracy), which "
+                                   "MEGNO, following the whole trajectory, never used"}
+# keywords a call has beyond its scene sections': id -> (type, default, description)
+_EXTRA_KEYWORDS = {
+    "megno": {"transient": ("number", 0.0,
+                            "time integrated first and discarded (the orbit settles, e.g. on its attractor); "
+                            "MEGNO then starts there from t = 0 with a fresh tangent vector (Python only: a sweep "
+                            "integrates from its points)")},
+}
+# the Python result's fields where they differ from the CLI's JSON (the registry's outputs describe that)
+_PYTHON_OUTPUTS = {
+    "continuation": [
+        ("parameter", "the continued parameter's name"),
+        ("parameter_values", "the parameter at each of the family's N points (an array of N)"),
+        ("coordinates", "the names of the map coordinates"),
+        ("points", "the fixed points: an N x d array, row i the map coordinates (coordinates) at "
+                   "parameter_values[i]"),
+        ("multipliers", "their multipliers: an N x d complex array"),
+        ("residual", "|Map^n(x) - x| at each point (an array of N)"),
+        ("types", "each point's type (a list of N)"),
+        ("changes", "where the type changes: a list of {kind, parameter, point, ...}"),
+        ("end", "why the family ends"),
+        ("failure", "what failed, or ''"),
+        ("<columns>", "the CLI table's columns by name too (the parameter's, re1, im1, ..., type)"),
+        ("order, parent", "with switch (branch switching): the doubled family's order, and the family it was "
+                          "born from"),
+    ],
+}
 
 
 def _settings_doc(tool):
     lines = [f"{tool['title']}: {tool['description']}.", ""]
     keywords = _keywords(tool)
-    if keywords:
+    extra = _EXTRA_KEYWORDS.get(tool["id"], {})
+    if keywords or extra:
         lines.append("Keyword settings, for this call only (omitted: the scene's value, which defaults to the one "
                      "shown):")
         for k in keywords:
-            kind = f"one of {', '.join(k['choices'])}" if k["type"] == "choice" else k["type"]
-            default = "" if k["default"] is None else f" = {_default(k)!r}"
+            if _is_flag(k.get("choices")):
+                kind, default = "bool", f" = {_default(k)!r}"
+            else:
+                kind = f"one of {', '.join(k['choices'])}" if k["type"] == "choice" else k["type"]
+                default = "" if k["default"] is None else f" = {_default(k)!r}"
             lines.append(f"    {k['id']}{default} ({k['section']}.{k['id']}, {kind}): {k['description']}")
-    if tool["arguments_help"]:
-        lines.append("Arguments: " + tool["arguments_help"])
+        for name, (kind, default, description) in extra.items():
+            lines.append(f"    {name} = {default!r} ({kind}): {description}")
+    arguments = [a for a in tool["arguments_help"].split("; ") if a and a.split(":")[0] not in _DEPRECATED_ARGUMENTS]
+    if arguments:
+        lines.append("Arguments: " + "; ".join(arguments))
+    deprecated = [f"{a} (use {_DEPRECATED_ARGUMENTS[a][0]})" for a in tool["arguments"] if a in _DEPRECATED_ARGUMENTS]
+    if deprecated:
+        lines.append("Deprecated (a DeprecationWarning): " + ", ".join(deprecated) + ".")
     lines.append("Also: the model's parameters by name (energy=0.4) and dotted scene keys, for this call.")
     lines.append("progress: None or a callable taking the fraction done.")
     if tool["id"] == "plot":
@@ -674,8 +1054,8 @@ def _settings_doc(tool):
         lines.append("")
         lines.append("Returns:" + (" a Table of the map's points (the map coordinates, t, sheet)"
                                    if tool["id"] in ("poincare", "map3d") else
-                                   " a Result (a dict whose keys are attributes):"))
-        for name, description in tool["outputs"]:
+                                   " a Result (a mapping whose keys are attributes):"))
+        for name, description in _PYTHON_OUTPUTS.get(tool["id"], tool["outputs"]):
             lines.append(f"    {name}: {description}")
     if tool["reference"]:
         lines.append(f"Reference: {tool['reference']}")
@@ -686,13 +1066,18 @@ def _signature(tool):
     P = _inspect.Parameter
     params = [P("self", P.POSITIONAL_ONLY)]
     for k in _keywords(tool):
+        if _is_flag(k.get("choices")):
+            params.append(P(k["id"], P.KEYWORD_ONLY, default=_default(k), annotation=bool))
+            continue
         annotation = (_typing.Literal[tuple(k["choices"])] if k["type"] == "choice"
                       else _ANNOTATIONS.get(k["type"], _typing.Any))
         if k["default"] is None:
             annotation = _typing.Optional[annotation]
         params.append(P(k["id"], P.KEYWORD_ONLY, default=_default(k), annotation=annotation))
+    for name, (kind, default, _) in _EXTRA_KEYWORDS.get(tool["id"], {}).items():
+        params.append(P(name, P.KEYWORD_ONLY, default=default, annotation=_ANNOTATIONS[kind]))
     for a in tool["arguments"]:
-        if a not in {p.name for p in params}:
+        if a not in {p.name for p in params} and a not in _DEPRECATED_ARGUMENTS:
             params.append(P(a, P.KEYWORD_ONLY, default=None))
     params.append(P("progress", P.KEYWORD_ONLY, default=None,
                     annotation=_typing.Optional[_typing.Callable[[float], None]]))
@@ -700,9 +1085,17 @@ def _signature(tool):
     return _inspect.Signature(params)
 
 
+def _default(k):
+    d = k["default"]
+    if _is_flag(k.get("choices")):
+        return d == "yes"
+    return int(d) if k["type"] == "integer" and d is not None else d
+
+
 def _make_method(tool):
     tool_id = tool["id"]
     keywords = {k["id"]: k for k in _keywords(tool)}
+    extra = _EXTRA_KEYWORDS.get(tool_id, {})
     arguments = set(tool["arguments"])
     call = f"{tool_id}()"
 
@@ -711,9 +1104,34 @@ def _make_method(tool):
             first = next(iter(keywords), "time")
             raise TypeError(f"{call} takes keyword arguments only ({len(args)} given by position): "
                             f"e.g. {tool_id}({first}=...)")
-        settings, parameters = {}, {}
-        for key, value in kw.items():
-            if key in arguments or "." in key:
+        settings, parameters, extras = {}, {}, {}
+        for key, value in list(kw.items()):
+            if key in arguments and key in _DEPRECATED_ARGUMENTS:
+                use, convert = _DEPRECATED_ARGUMENTS[key]
+                _deprecated(call, key, use)
+                if key == "param":
+                    key = "parameter"
+                else:
+                    given = convert(value)
+                    if given is None:
+                        continue
+                    key, value = given
+                if key in kw:
+                    raise TypeError(f"{call}: give {key} only (not {key} and its deprecated name)")
+            if (tool_id, key) in _IGNORED:
+                _warnings.warn(f"{call}: {key} is deprecated and ignored: {_IGNORED[(tool_id, key)]}",
+                               DeprecationWarning, stacklevel=2)
+                continue
+            if key in extra:
+                _check_type(call, key, extra[key][0], value)
+                extras[key] = value
+            elif key in keywords and _is_flag(keywords[key].get("choices")):
+                # by its scene key: a flag argument of the same name (fixedpoint's path) takes any value as set
+                _check_type(call, key, "choice", value, keywords[key]["choices"])
+                settings[f"{keywords[key]['section']}.{key}"] = _flag_value(value)
+            elif key in arguments or "." in key:
+                if "." in key:
+                    _check_finite(call, key, value)
                 settings[key] = _plain(value)
             elif key in keywords:
                 k = keywords[key]
@@ -722,10 +1140,13 @@ def _make_method(tool):
             elif key in self.parameters:
                 parameters[key] = value
             else:
-                raise _unknown(call, key, list(keywords) + list(arguments) + list(self.parameters),
-                               f"settings: {', '.join(keywords) or 'none'}; the parameters of {self.problem}; "
-                               "or a dotted scene key")
+                raise _unknown(call, key, list(keywords) + list(extra) + list(arguments - set(_DEPRECATED_ARGUMENTS))
+                               + list(self.parameters),
+                               f"settings: {', '.join(list(keywords) + list(extra)) or 'none'}; the parameters of "
+                               f"{self.problem}; or a dotted scene key")
         scene = _set_for(call, self, parameters) if parameters else self
+        if extras.get("transient"):
+            scene = _after_transient(call, scene, float(extras["transient"]))
         try:
             raw = scene._run(tool_id, progress=progress, **settings)
         except ValueError as e:
@@ -739,6 +1160,14 @@ def _make_method(tool):
     method.__doc__ = _settings_doc(tool)
     method.__signature__ = _signature(tool)
     return method
+
+
+def _after_transient(call, scene, transient):
+    """The scene started where its trajectory is after `transient` (the whole state carried exactly)."""
+    if transient < 0:
+        raise ValueError(f"{call}: transient must not be negative, got {transient}")
+    end = scene.integrate(t_eval=[transient], columns=[scene.observables[0]])
+    return scene.with_state(end.final)
 
 
 # one method per registered tool that runs on a scene (a sweep runs over many: rollviz.sweep)
@@ -794,6 +1223,8 @@ def sweep(scene, axes=None, quantity=None, threads=0, progress=None, checkpoint=
         raise TypeError("sweep(scene): quantity takes the name of a sweep quantity (str), e.g. 'megno'")
     if options is not None and not isinstance(options, dict):
         raise TypeError("sweep(scene): options takes a dict of the sweep's options, e.g. {'refine': 2}")
+    for k, v in settings.items():
+        _check_finite("sweep()", k, v)
     with _tempfile.TemporaryDirectory(prefix="rollviz-sweep-") as folder:
         scene.save(_os.path.join(folder, "scene.json"))
         spec = {"scene": "scene.json", "axes": [_axis(k, v) for k, v in axes.items()], "quantity": quantity,
@@ -806,25 +1237,44 @@ def sweep(scene, axes=None, quantity=None, threads=0, progress=None, checkpoint=
         path = _os.path.join(folder, "sweep.json")
         with open(path, "w") as f:
             _json.dump(spec, f)
-        return _run_sweep(path, threads, progress, checkpoint)
+        # the files are this call's own: its messages name the call and the scene, not where they lay
+        said = {path + ":": "sweep(): ", path: "sweep()", _os.path.join(folder, "scene.json"): scene.source,
+                folder + _os.sep: ""}
+        return _run_sweep(path, threads, progress, checkpoint, said)
 
 
-def _run_sweep(path, threads, progress, checkpoint):
+def _without_paths(text, said):
+    for path, words in said.items():
+        text = text.replace(path, words)
+    # the temporary store of the points (no checkpoint): its name says nothing to the caller
+    return _re.sub(r"\S*rollviz-\d+-\d+\.sweep-part", "the sweep's temporary store", text)
+
+
+def _run_sweep(path, threads, progress, checkpoint, said=None):
+    said = said or {}
     try:
-        return _sweep_result(_sweep_file(path, threads, progress=progress, checkpoint=checkpoint))
+        raw = _sweep_file(path, threads, progress=progress, checkpoint=checkpoint)
     except KeyboardInterrupt as stopped:
         if len(stopped.args) == 2 and isinstance(stopped.args[1], dict):
-            stopped.partial = _sweep_result(stopped.args[1])
+            stopped.partial = _sweep_result(stopped.args[1], said)
         raise
+    except (ValueError, ComputationError) as e:
+        text = _without_paths(str(e), said)
+        if text == str(e):
+            raise
+        raise type(e)(text) from None
+    return _sweep_result(raw, said)
 
 
-def _sweep_result(raw):
-    r = SweepResult(_wrap(raw))
-    shape = list(r.shape)
-    names = list(r.columns)
-    axis_ids = names[:len(shape)]
+def _sweep_result(raw, said=None):
+    r = dict(raw)
+    if said:
+        r["status"] = [_without_paths(x, said) for x in r["status"]]
+    shape = list(r["shape"])
+    columns = dict(r["columns"])
+    axis_ids = list(columns)[:len(shape)]
     # the flat columns run first axis fastest: Fortran order gives grid[i0, i1]
-    r["values"] = {k: _np.asarray(v).reshape(shape, order="F") for k, v in r.columns.items() if k not in axis_ids}
-    r["axes"] = {k: _np.asarray(r.columns[k]).reshape(shape, order="F")[
+    r["values"] = {k: _np.asarray(v).reshape(shape, order="F") for k, v in columns.items() if k not in axis_ids}
+    r["axes"] = {k: _np.asarray(columns[k]).reshape(shape, order="F")[
         tuple(slice(None) if j == i else 0 for j in range(len(shape)))] for i, k in enumerate(axis_ids)}
-    return r
+    return SweepResult(r)
