@@ -193,7 +193,7 @@ class Module(unittest.TestCase):
         # the registry's tools that run through scenes/ToolRunner.h: each declared output comes out of the CLI
         # (--json fields or -o columns), out of Python, and the chart view draws
         pyenv = {"PYTHONPATH": os.path.join(BUILD, "python")}
-        listing = subprocess.run([sys.executable, "-c", "import rollviz, json; print(json.dumps(rollviz.tools()))"],
+        listing = subprocess.run([sys.executable, "-c", "import rollviz, json; print(json.dumps([t.as_dict() for t in rollviz.tools()]))"],
                                  capture_output=True, text=True, env=env(**pyenv))
         self.assertEqual(listing.returncode, 0, listing.stderr)
         tools = [t for t in json.loads(listing.stdout) if t["runner"]]

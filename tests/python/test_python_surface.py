@@ -246,3 +246,16 @@ def test_sweep_dimensions_are_the_maps_coordinates_and_errors_cite_no_temporary_
     with pytest.raises(ValueError, match=r"sweep\(\): initial.state: x must be a finite number"):
         rollviz.sweep(s, axes={"map.0": (-0.1, 0.1, 3)}, quantity="megno", **{"initial.state": {"x": np.nan}})
     assert os.path.isdir(os.path.dirname(rollviz.__file__))
+
+
+def test_a_result_is_json_ready_through_as_dict():
+    """A Result is a Mapping, not a dict: json.dumps refuses it; as_dict() is the plain copy that it takes."""
+    import json
+    tools = rollviz.tools()
+    with pytest.raises(TypeError):
+        json.dumps(tools[0])
+    back = json.loads(json.dumps([t.as_dict() for t in tools]))
+    assert [t["id"] for t in back] == [t.id for t in tools]
+    r = rollviz.Scene("henon_heiles").lyapunov(time=20)
+    plain = json.loads(json.dumps(r.as_dict()))
+    assert plain["exponents"] == [float(x) for x in r.exponents]

@@ -109,6 +109,11 @@ class Result:
         """The field `key`, or `default`."""
         return self._fields.get(key, default)
 
+    def as_dict(self):
+        """A plain copy ready for json.dumps: nested results as dicts, NumPy arrays and numbers as lists and
+        Python numbers (a Result is a Mapping, not a dict: json.dumps(r) alone refuses it)."""
+        return _plain(self)
+
     def __dir__(self):
         return [k for k in self._fields if isinstance(k, str)] + list(super().__dir__())
 
@@ -127,6 +132,18 @@ class Result:
 
 
 _abc.Mapping.register(Result)
+
+
+def _plain(value):
+    if isinstance(value, (Result, dict)):
+        return {k: _plain(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_plain(v) for v in value]
+    if isinstance(value, _np.ndarray):
+        return value.tolist()
+    if isinstance(value, _np.generic):
+        return value.item()
+    return value
 
 
 def _brief(value):
