@@ -255,9 +255,10 @@ void VisualScene::show(double t, const Eigen::VectorXd& x) {
     if (!haveEnergy0_) energy0_ = e, haveEnergy0_ = true;
     const double rel = (e - energy0_) / (energy0_ != 0 ? std::abs(energy0_) : 1.0);
     energyError_ = rel;
-    std::snprintf(text, sizeof text, "t = %9.3f    dE/E = %+.2e", t, rel);
+    // compact: at a gallery thumbnail's 320 pixels the padded line ("t =     40.000    dE/E = ...") was cut
+    std::snprintf(text, sizeof text, "t = %.3f   dE/E = %+.2e", t, rel);
   } else {
-    std::snprintf(text, sizeof text, "t = %9.3f", t);
+    std::snprintf(text, sizeof text, "t = %.3f", t);
   }
   overlay_->SetInput(text);
   if (!pose && cameraAsPlaced()) placeCamera(); // the growing curve framed, until the user takes the camera

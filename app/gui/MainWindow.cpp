@@ -190,9 +190,21 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   status_ = new QLabel(this);
   statusBar()->addWidget(status_, 1);
   connect(map_, &MapPanel::message, this, [this](const QString& m) { report(m, 8000); });
-  // a tool started on the map runs with what the control panel shows: pending edits are applied first (with
-  // the usual question when they would replace the map)
-  map_->setBeforeTool([this] { return !control_->pending() || applyDocument(control_->editedDocument()); });
+  // a tool started on the map runs with its tabs as the control panel shows them (no Apply needed); what
+  // defines the map -- the problem, the method, the initial state, the section -- stays the scene's
+  map_->setToolDocument([this] {
+    nlohmann::json doc = scene_->document;
+    if (!control_->pending()) return doc;
+    const nlohmann::json edited = control_->editedDocument();
+    for (const auto& t : toolSections()) {
+      if (t.key == "poincare") continue;
+      if (edited.contains(t.key))
+        doc[t.key] = edited[t.key];
+      else
+        doc.erase(t.key);
+    }
+    return doc;
+  });
 
   connect(&timer_, &QTimer::timeout, this, &MainWindow::tick);
   timer_.start(16);
@@ -320,16 +332,16 @@ void MainWindow::reloadModel() {
   try {
     scene = std::make_unique<Scene>(sceneFromJson(scene_->document, scene_->source));
   } catch (const std::exception& e) { // kept running on the old model: the file is being edited
-    results_->appendPlainText(
-        QString("%1 changed but cannot be read; the model running is the one before:\n%2")
-            .arg(QFileInfo(file).fileName(), e.what()));
+    report(QString("%1 changed but cannot be read; the model running is the one before:\n%2")
+               .arg(QFileInfo(file).fileName(), e.what()),
+           8000);
     return;
   }
   useScene(std::move(scene), scenePath_);
-  results_->appendPlainText(
-      QString("%1 changed: the model was reloaded%2")
-          .arg(QFileInfo(file).fileName(),
-               jobs ? QString("; the %1 job(s) of the old model were stopped").arg(jobs) : QString()));
+  report(QString("%1 changed: the model was reloaded%2")
+             .arg(QFileInfo(file).fileName(),
+                  jobs ? QString("; the %1 job(s) of the old model were stopped").arg(jobs) : QString()),
+         8000);
 }
 
 bool MainWindow::chooseProblem(const std::string& id) {

@@ -303,7 +303,7 @@ void MapPanel::replaceTrajectories(const std::vector<SavedTrajectory>& saved,
   sceneStart_ = -1;
   restoreTrajectories(saved);
   restoreToolOutputs(tools);
-  if (!series_.empty()) chart_->select(series_.back().plot);
+  chart_->select(-1); // nothing is selected in the tool manager: none emphasised (the last one was)
 }
 
 bool MapPanel::morePoints(int id, long more) {

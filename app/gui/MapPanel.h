@@ -98,10 +98,11 @@ public:
   void startRows(const std::string& id);
   /// A fixed-point search from the scene's fixedpoint.guess.
   void searchFromGuess();
-  /// Called before a search or a map tool starts; false stops it. The main window applies the control
-  /// panel's pending edits there, so a tool runs with the settings shown (its tab's parameter, end value and
-  /// step) without an Apply first.
-  void setBeforeTool(std::function<bool()> beforeTool) { beforeTool_ = std::move(beforeTool); }
+  /// The scene document a search or a map tool runs on (default: the scene's). The main window gives the
+  /// scene with the control panel's tool tabs as they are shown, so a tool runs with its settings (the
+  /// continuation's parameter, end value and step) without an Apply first; what defines the map (problem,
+  /// method, section) stays the scene's.
+  void setToolDocument(std::function<nlohmann::json()> document) { toolDocument_ = std::move(document); }
   /// The trajectories `ids` (empty: all; with `onlyRunning`, those running), each with its points and the
   /// state to go on from: stopped to be read, and started again with `goOn`.
   std::vector<SavedTrajectory> saveTrajectories(const std::vector<int>& ids, bool onlyRunning, bool goOn);
@@ -211,7 +212,8 @@ protected:
   bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
-  std::function<bool()> beforeTool_;
+  std::function<nlohmann::json()> toolDocument_;
+  nlohmann::json toolDocument() const { return toolDocument_ ? toolDocument_() : scene_->document; }
   /// startAt for a flow without map coordinates: returns what it did, in words.
   QString startOnSection(double x, double y);
   struct Series {

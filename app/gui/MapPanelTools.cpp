@@ -20,14 +20,14 @@
 namespace rv {
 
 void MapPanel::searchFixedPointAt(double x, double y) {
-  if (beforeTool_ && !beforeTool_()) return;
   if (!scene_ || scene_->model->info().mapCoordinates.empty()) return;
   chart_->holdRanges();
   try {
     // the fixedpoint tool's runner from the click, which stays the search's guess when it is edited
     const std::vector<SceneOverride> guess{{"fixedpoint.guess", nlohmann::json(mapPoint(x, y)).dump()}};
-    const SceneMap sm(sceneFromJson(scene_->document, scene_->source, guess)); // bad settings: said now
-    auto task = std::make_unique<ToolTask>("fixedpoint", std::vector<nlohmann::json>{scene_->document},
+    const nlohmann::json document = toolDocument();
+    const SceneMap sm(sceneFromJson(document, scene_->source, guess)); // bad settings: said now
+    auto task = std::make_unique<ToolTask>("fixedpoint", std::vector<nlohmann::json>{document},
                                            scene_->source, false, guess);
     ToolTask* raw = task.get();
     Job& job = jobs_.add(std::move(task));
@@ -233,7 +233,6 @@ void MapPanel::startRows(const std::string& id) {
 
 void MapPanel::startMapRows(const std::string& id, const std::vector<SceneOverride>& overrides,
                             const QString& said, std::optional<Rgb> colour) {
-  if (beforeTool_ && !beforeTool_()) return;
   if (!scene_ || scene_->model->info().mapCoordinates.empty()) {
     emit message("this problem has no map coordinates");
     return;
@@ -241,9 +240,10 @@ void MapPanel::startMapRows(const std::string& id, const std::vector<SceneOverri
   const ToolRunner* runner = findToolRunner(id);
   if (!runner) return;
   try {
-    const Scene scene = sceneFromJson(scene_->document, scene_->source, overrides);
-    auto task = std::make_unique<ToolTask>(id, std::vector<nlohmann::json>{scene_->document}, scene_->source,
-                                           false, overrides);
+    const nlohmann::json document = toolDocument();
+    const Scene scene = sceneFromJson(document, scene_->source, overrides);
+    auto task = std::make_unique<ToolTask>(id, std::vector<nlohmann::json>{document}, scene_->source, false,
+                                           overrides);
     ToolTask* raw = task.get();
     const std::vector<std::string> coordinates = scene.model->info().mapCoordinates;
     const std::string parameter = scene.continuationParameter;
@@ -323,12 +323,19 @@ void MapPanel::startMapRows(const std::string& id, const std::vector<SceneOverri
 }
 
 void MapPanel::searchFromGuess() {
-  if (beforeTool_ && !beforeTool_()) return;
-  if (!scene_ || scene_->guess.size() < 2) {
+  if (!scene_) return;
+  std::vector<double> guess; // the Fixed point tab's, as shown
+  try {
+    guess = sceneFromJson(toolDocument(), scene_->source).guess;
+  } catch (const InputError& e) {
+    emit message(QString::fromStdString(e.what()));
+    return;
+  }
+  if (guess.size() < 2) {
     emit message("the scene has no fixedpoint.guess (set it in the Fixed point tab, or Shift+click the map)");
     return;
   }
-  searchFixedPointAt(scene_->guess[0], scene_->guess[1]);
+  searchFixedPointAt(guess[0], guess[1]);
 }
 
 int MapPanel::fixedPointsFound() const {

@@ -7,7 +7,9 @@
 #include <functional>
 #include <vtkActor2D.h>
 #include <vtkActor2DCollection.h>
+#include <vtkActorCollection.h>
 #include <vtkAxis.h>
+#include <vtkAxisActor.h>
 #include <vtkChartLegend.h>
 #include <vtkChartXY.h>
 #include <vtkContextActor.h>
@@ -194,6 +196,18 @@ ScaledPicture::ScaledPicture(vtkRenderWindow* window, int scale) : window_(windo
       text->GetTextProperty()->SetFontSize(texts_.back().fontSize * scale_);
       text->SetPosition(at[0] * scale_, at[1] * scale_);
     }
+    // the scene axes' numbers and titles, screen text too (vtkAxisActor's 2D mode): tiny in a large picture
+    vtkActorCollection* props = renderer->GetActors();
+    props->InitTraversal();
+    while (vtkActor* actor = props->GetNextActor()) {
+      auto* axis = vtkAxisActor::SafeDownCast(actor);
+      if (!axis || !axis->GetUse2DMode()) continue;
+      for (vtkTextProperty* p : {axis->GetLabelTextProperty(), axis->GetTitleTextProperty()}) {
+        axisTexts_.push_back({p, p->GetFontSize()});
+        p->SetFontSize(p->GetFontSize() * scale_);
+      }
+      axis->Modified();
+    }
   });
 }
 
@@ -206,6 +220,8 @@ ScaledPicture::~ScaledPicture() {
     t.actor->GetTextProperty()->SetFontSize(t.fontSize);
     t.actor->SetPosition(t.x, t.y);
   }
+  for (const auto& [property, size] : axisTexts_)
+    property->SetFontSize(size);
 }
 
 } // namespace rv

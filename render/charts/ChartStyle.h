@@ -9,6 +9,7 @@
 
 class vtkAxis;
 class vtkRenderWindow;
+class vtkTextProperty;
 class vtkTextActor;
 
 namespace rv {
@@ -29,7 +30,8 @@ void styleCharts(vtkRenderWindow* window, const ChartStyle& style);
 
 /// A larger picture of a window as it stands (a GUI's 2x / 4x save): while it lives, every chart's type,
 /// pens, markers and distances are `scale` x as large and its ticks those of the last render (the screen's),
-/// and a 3D view's text in display pixels (the time line) is `scale` x as large and as far from its corner;
+/// a 3D view's text in display pixels (the time line) is `scale` x as large and as far from its corner, and
+/// so are the scene axes' numbers and titles;
 /// when it goes, everything is as it was. Nothing for scale 1.
 class ScaledPicture {
 public:
@@ -47,7 +49,8 @@ private:
     int fontSize;
     double x, y;
   };
-  std::vector<Text> texts_; ///< the text actors it scaled, as they were
+  std::vector<Text> texts_;                                 ///< the text actors it scaled, as they were
+  std::vector<std::pair<vtkTextProperty*, int>> axisTexts_; ///< the 3D axes' text, with its font size
 };
 
 } // namespace rv

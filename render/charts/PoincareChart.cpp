@@ -71,6 +71,7 @@ PoincareChart::PoincareChart(const std::string& xTitle, const std::string& yTitl
   beforeRender->SetClientData(this);
   beforeRender->SetCallback([](vtkObject*, unsigned long, void* self, void*) {
     static_cast<PoincareChart*>(self)->thinLargeSeries();
+    static_cast<PoincareChart*>(self)->fitTickDigits();
   });
   view_->GetRenderer()->AddObserver(vtkCommand::StartEvent, beforeRender);
   chart_->GetAxis(vtkAxis::BOTTOM)->SetTitle(xTitle);
@@ -78,6 +79,26 @@ PoincareChart::PoincareChart(const std::string& xTitle, const std::string& yTitl
   for (int a : {vtkAxis::BOTTOM, vtkAxis::LEFT}) {
     chart_->GetAxis(a)->GetTitleProperties()->SetFontSize(16);
     chart_->GetAxis(a)->GetLabelProperties()->SetFontSize(13);
+  }
+}
+
+void PoincareChart::fitTickDigits() {
+  for (int a : {vtkAxis::BOTTOM, vtkAxis::LEFT}) {
+    vtkAxis* axis = chart_->GetAxis(a);
+    // VTK's labels have six digits: zoomed into 3.14159 +- 1e-6 they all read "3.14159"; give them the digits
+    // of the tick step (about a fifth of the range) beyond the numbers' magnitude
+    const double lo = axis->GetMinimum(), hi = axis->GetMaximum();
+    const double step = std::abs(hi - lo) / 5, big = std::max(std::abs(lo), std::abs(hi));
+    int digits = 6;
+    if (step > 0 && big > 0 && std::isfinite(big / step))
+      digits = std::clamp(static_cast<int>(std::ceil(std::log10(big / step))) + 2, 6, 17);
+    if (digits == 6) { // VTK's own labels, as always
+      if (axis->GetNotation() != vtkAxis::STANDARD_NOTATION) axis->SetNotation(vtkAxis::STANDARD_NOTATION);
+    } else if (const std::string format = "%." + std::to_string(digits) + "g";
+               axis->GetNotation() != vtkAxis::PRINTF_NOTATION || axis->GetLabelFormat() != format) {
+      axis->SetNotation(vtkAxis::PRINTF_NOTATION);
+      axis->SetLabelFormat(format);
+    }
   }
 }
 

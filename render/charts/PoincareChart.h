@@ -74,6 +74,11 @@ public:
   bool toPixels(double x, double y, double& px, double& py) const;
   /// Draws series `index` emphasised (-1: none).
   void select(int index);
+  /// The series drawn emphasised (-1: none).
+  int selected() const { return selected_; }
+  /// Before each frame: tick labels with as many digits as the ranges need to tell ticks apart (called by
+  /// the renderer's StartEvent; public for tests).
+  void fitTickDigits();
   /// Draws into `window` (the chart's view takes it over).
   void attach(vtkRenderWindow* window) override;
   void writeCsv(std::ostream& out) const override;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <vtkActor.h>
 #include <vtkAxisActor.h>
+#include <vtkCommand.h>
 #include <vtkOutlineSource.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
@@ -56,8 +57,14 @@ void SceneAxesObject::setLift(double dz) {
   box_->SetPosition(0, 0, dz);
 }
 
+SceneAxesObject::~SceneAxesObject() {
+  if (renderer_) renderer_->RemoveObserver(observer_);
+}
+
 void SceneAxesObject::attach(vtkRenderer* renderer) {
+  if (renderer_) renderer_->RemoveObserver(observer_);
   renderer_ = renderer;
+  observer_ = renderer->AddObserver(vtkCommand::StartEvent, this, &SceneAxesObject::fitLabelsToView);
   for (auto& a : axis_) {
     a->SetCamera(renderer->GetActiveCamera());
     renderer->AddActor(a);
@@ -153,11 +160,11 @@ void SceneAxesObject::rebuild() {
     a->SetMinorRangeStart(ticks.front());
     a->SetDeltaRangeMinor(step / (axes_.subticks + 1));
     a->SetTitle(titles_[i].c_str());
-    vtkNew<vtkStringArray> labels;
     const double span = std::abs(ticks.back() - ticks.front());
+    labelTexts_[i].clear();
     for (double v : ticks)
-      labels->InsertNextValue(format("%.4g", std::abs(v) < 1e-12 * span ? 0.0 : v));
-    a->SetLabels(labels);
+      labelTexts_[i].push_back(format("%.4g", std::abs(v) < 1e-12 * span ? 0.0 : v));
+    labelStride_[i] = 0; // written by fitLabelsToView
     a->SetMajorTickSize(0.02 * extent);
     a->SetMinorTickSize(0.01 * extent);
     a->SetLabelOffset(0.05 * extent);
@@ -172,6 +179,49 @@ void SceneAxesObject::rebuild() {
   }
   outline_->SetBounds(bounds);
   box_->SetVisibility(shown && axes_.style == AxesOptions::Style::Box);
+  fitLabelsToView();
+}
+
+bool SceneAxesObject::labelsShown(int i) const {
+  return axis_[i]->GetVisibility() && axis_[i]->GetLabelVisibility();
+}
+
+void SceneAxesObject::fitLabelsToView() {
+  if (!renderer_ || renderer_->GetSize()[0] <= 0) return;
+  const auto toDisplay = [this](const double* p) {
+    renderer_->SetWorldPoint(p[0], p[1], p[2], 1.0);
+    renderer_->WorldToDisplay();
+    const double* d = renderer_->GetDisplayPoint();
+    return std::array<double, 2>{d[0], d[1]};
+  };
+  for (int i = 0; i < 3; ++i) {
+    auto& a = axis_[i];
+    const auto& texts = labelTexts_[i];
+    if (texts.empty()) continue;
+    const auto p = toDisplay(a->GetPoint1()), q = toDisplay(a->GetPoint2());
+    // a label needs its width along the axis (about 0.6 of the font size a character, and a gap): where the
+    // foreshortened axis has less room a tick, every k-th is labelled; an axis seen end-on has none
+    const double length = std::hypot(q[0] - p[0], q[1] - p[1]);
+    std::size_t chars = 1;
+    for (const auto& t : texts)
+      chars = std::max(chars, t.size());
+    const double width = 0.6 * a->GetLabelTextProperty()->GetFontSize() * static_cast<double>(chars) + 6;
+    const double perTick = length / static_cast<double>(std::max<std::size_t>(1, texts.size() - 1));
+    const double k = std::isfinite(perTick) && perTick > 0 ? std::ceil(width / perTick) : 1e9;
+    // two labels at least, on an axis a few labels long (a short one ends among the others at a corner)
+    const bool room =
+        k <= std::max<double>(1, static_cast<double>(texts.size() - 1) / 2) && length >= 2.5 * width;
+    const int stride = room ? static_cast<int>(k) : 0;
+    if (stride != labelStride_[i] && stride > 0) {
+      vtkNew<vtkStringArray> labels;
+      for (std::size_t n = 0; n < texts.size(); ++n)
+        labels->InsertNextValue(n % static_cast<std::size_t>(stride) == 0 ? texts[n] : std::string());
+      a->SetLabels(labels);
+    }
+    labelStride_[i] = stride;
+    a->SetLabelVisibility(axes_.ticks && room);
+    a->SetTitleVisibility(room);
+  }
 }
 
 } // namespace rv

@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 #include <vtkSmartPointer.h>
+#include <vtkWeakPointer.h>
 
 class vtkActor;
 class vtkAxisActor;
@@ -23,6 +24,7 @@ public:
   /// `fallbackMin/Max`: the range when the options give none (the region the scene is drawn in).
   SceneAxesObject(std::string name, const AxesOptions& axes, const std::array<double, 3>& fallbackMin,
                   const std::array<double, 3>& fallbackMax);
+  ~SceneAxesObject() override;
   void attach(vtkRenderer* renderer) override;
   void apply(const ObjectOptions& options) override;
   /// Without a range of its own the box grows to hold the motion: the contact point of a body, the first
@@ -46,9 +48,16 @@ public:
   /// The numbers written at the major ticks of axis i (0, 1, 2), lowest first: the multiples of a round step
   /// (1, 2 or 5 x 10^k) inside the axis' range, about `tickmarks` intervals apart.
   std::vector<double> majorTicks(int axis) const;
+  /// Whether axis `i` (0, 1, 2) shows its labels in the last frame.
+  bool labelsShown(int i) const;
 
 private:
   void rebuild();
+  /// Before each frame: labels that would fall on one another along a foreshortened axis ("-20-100 10") are
+  /// thinned to every k-th tick; an axis seen nearly end-on ("3210-1-2-3" at a corner) shows its ticks but
+  /// neither labels nor title.
+  void fitLabelsToView();
+
   AxesOptions axes_;
   std::array<double, 3> lo_, hi_, fallbackLo_, fallbackHi_, startLo_, startHi_;
   bool enabled_ = true;
@@ -56,9 +65,12 @@ private:
   std::optional<std::array<double, 3>> labelLo_, labelHi_;
   std::array<std::string, 3> titles_ = {"x", "y", "z"};
   std::array<vtkSmartPointer<vtkAxisActor>, 3> axis_;
+  std::array<std::vector<std::string>, 3> labelTexts_; ///< every major tick's number
+  std::array<int, 3> labelStride_ = {0, 0, 0};         ///< every k-th labelled in the last frame (0: none)
   vtkSmartPointer<vtkOutlineSource> outline_;
   vtkSmartPointer<vtkActor> box_;
-  vtkRenderer* renderer_ = nullptr;
+  vtkWeakPointer<vtkRenderer> renderer_;
+  unsigned long observer_ = 0;
 };
 
 } // namespace rv

@@ -56,6 +56,7 @@
 #include <QOpenGLFunctions>
 #include <QPointer>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QScopeGuard>
 #include <QSignalSpy>
 #include <QSpinBox>
@@ -1787,6 +1788,7 @@ private slots:
     QVERIFY(window_->openScene(path)); // File > Open scene takes a session too
     QCOMPARE(window_->scene()->model->info().id, std::string("henon_heiles"));
     QVERIFY(window_->results().contains("a line the session keeps"));
+    QCOMPARE(map->chart().selected(), -1); // nothing selected, none emphasised (issue 61 (6): the last was)
     ChartWindow* again = nullptr;
     for (ChartWindow* w : window_->findChildren<ChartWindow*>())
       if (w->isVisible() && w->viewName() == "poincare") again = w;
@@ -2042,8 +2044,8 @@ private slots:
   }
 
   // Issue 61 (2), the rest: Tools > Continue the fixed point continues the point found last (not the scene's
-  // guess -- this scene has none), and the continuation tab's edits count without Apply: the search that
-  // found the point applied them first (the map stays: they define no map).
+  // guess -- this scene has none), and the continuation tab's edits count without Apply (a map tool runs with
+  // its tabs as shown; the map stays the scene's).
   void toolsContinueTakesTheFoundPointAndTheTabAsShown() {
     nlohmann::json doc = loadScene(defaultScenePath("henon_heiles")).document;
     doc["poincare"]["points"] = 50;
@@ -2056,8 +2058,8 @@ private slots:
     if (QTest::currentTestFailed()) return;
     const int found = map->fixedPointsFound();
     map->searchFixedPointAt(0.02, 0.23);
-    QVERIFY(!window_->controlPanel()->pending());     // applied by the search
-    QCOMPARE(map->sceneJobs().front(), kept.front()); // and the map kept
+    QVERIFY(window_->controlPanel()->pending()); // not applied: still shown as waiting
+    QCOMPARE(map->sceneJobs().front(), kept.front());
     QTRY_COMPARE_WITH_TIMEOUT(map->fixedPointsFound(), found + 1, 60000);
     QAction* cont = nullptr;
     for (QAction* a : window_->findChildren<QAction*>())
@@ -2691,6 +2693,9 @@ private slots:
     rewrite("\"default\": 28", "\"default\": 20");
     QTRY_VERIFY_WITH_TIMEOUT(window_->results().contains("lorenz_copy.json changed: the model was reloaded"),
                              60000);
+    // with its time, as every line of the Results dock (issue 61 (6))
+    QVERIFY(window_->results().contains(
+        QRegularExpression("(^|\\n)\\d\\d:\\d\\d:\\d\\d  lorenz_copy.json changed: the model was reloaded")));
     QCOMPARE(window_->scene()->model->parameters()["rho"], 20.0);
     rewrite("sigma*(y - x)", "sigma*(y - x");
     QTRY_VERIFY_WITH_TIMEOUT(window_->results().contains("lorenz_copy.json changed but cannot be read"),

@@ -16,6 +16,7 @@
 #include "tests/render/Play.h"
 #include <Eigen/LU>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -25,11 +26,14 @@
 #include <numbers>
 #include <tuple>
 #include <unistd.h>
+#include <vtkAxis.h>
 #include <vtkCamera.h>
+#include <vtkChartXY.h>
 #include <vtkImageData.h>
 #include <vtkPNGReader.h>
 #include <vtkPolyData.h>
 #include <vtkRenderer.h>
+#include <vtkStringArray.h>
 
 namespace rv {
 namespace {
@@ -118,6 +122,24 @@ TEST(ApexView, HasAKeyToItsColours) {
         n += px[axis] > 120 && px[axis] > px[(axis + 1) % 3] + 60 && px[axis] > px[(axis + 2) % 3] + 60;
       }
     EXPECT_GT(n, 30) << "axis " << axis;
+  }
+}
+
+// issue 61 (6): seen from straight above (the standard map's view) the z axis points at the viewer and its
+// labels fell on one another at a corner ("3210-1-2-3"); they are left out, x's and y's stay, and from the
+// side all three show
+TEST(SceneAxes, AnAxisSeenEndOnShowsNoLabels) {
+  for (const double elevation : {90.0, 25.0}) {
+    const auto p = play("standard_map", 10.0,
+                        {"view.axes.style=box", "view.camera.elevation=" + std::to_string(elevation)});
+    auto ctx = createHeadlessContext(640, 360);
+    p->visual->addTo(ctx->window());
+    ASSERT_TRUE(test::isVaried(capture(ctx->window())));
+    const auto* axes = dynamic_cast<const SceneAxesObject*>(p->visual->find("scene_axes"));
+    ASSERT_NE(axes, nullptr);
+    EXPECT_TRUE(axes->labelsShown(0) && axes->labelsShown(1)) << elevation;
+    EXPECT_EQ(axes->labelsShown(2), elevation != 90.0);
+    ctx->window()->RemoveRenderer(p->visual->renderer());
   }
 }
 
@@ -515,6 +537,31 @@ void standardMapSea(int n, double th, double p, std::vector<double>& x, std::vec
 
 // a series of 150 000 points is thinned to one point per screen cell; the picture stays that of all points
 // (the same points drawn as ten series of 15 000, which are not thinned)
+// issue 61 (6): zoomed deep (the standard map near theta = pi) the ticks read "3.14159 3.14159 ..."; their
+// labels now differ, and at ordinary ranges they are VTK's own
+TEST(Chart, TickLabelsTellTicksApartAtAnyZoom) {
+  PoincareChart chart("theta", "p");
+  chart.addSeries({3.14159, 3.1416}, {0.5, 0.6}, seriesColor(0));
+  const auto labels = [&](double x0, double x1) {
+    chart.setRanges(x0, x1, 0, 1);
+    auto ctx = createHeadlessContext(500, 400);
+    chart.attach(ctx->window());
+    (void)capture(ctx->window());
+    vtkStringArray* l = chart.chart()->GetAxis(vtkAxis::BOTTOM)->GetTickLabels();
+    std::vector<std::string> out;
+    for (vtkIdType i = 0; l && i < l->GetNumberOfValues(); ++i)
+      out.push_back(l->GetValue(i));
+    return out;
+  };
+  const auto deep = labels(3.1415920, 3.1415930);
+  ASSERT_GE(deep.size(), 3u);
+  for (std::size_t i = 1; i < deep.size(); ++i)
+    EXPECT_NE(deep[i], deep[i - 1]) << deep[i];
+  const auto ordinary = labels(0, 8);
+  EXPECT_EQ(std::count(ordinary.begin(), ordinary.end(), "4"), 1);
+  EXPECT_EQ(chart.chart()->GetAxis(vtkAxis::BOTTOM)->GetNotation(), vtkAxis::STANDARD_NOTATION);
+}
+
 TEST(Chart, ALargeSeriesIsThinnedWithoutChangingThePicture) {
   std::vector<double> x, y;
   standardMapSea(150000, 0.1, 0.2, x, y);
