@@ -206,6 +206,7 @@ Command addRegisteredToolCommand(CLI::App* cmd, const ToolEntry& tool) {
             } catch (const InputError& e) {
               rethrowNamingTheFlag(e, given);
             }
+            progress.clear(); // what follows may print on the same terminal
             ToolResult r = run->result();
             r.stopped = !finished;
             if (r.failure.empty()) checkToolResult(tool, r);
