@@ -550,6 +550,33 @@ TEST(ModelFileErrors, ASquareRootOfANegativeNumberInsideAStepIsNamed) {
   EXPECT_NE(e.find("equations.x: 'sqrt' of -"), std::string::npos) << e;
 }
 
+// compiled, the same message: the stage that went non-finite inside the step is traced back to the expression
+TEST(ModelFileCompiled, ASquareRootOfANegativeNumberInsideAStepIsNamed) {
+  std::string why;
+  if (!modelCompilationAvailable(&why)) GTEST_SKIP() << why;
+  const json model = {{"id", "sqrt_compiled"}, {"state", {"x"}}, {"equations", {{"x", "-sqrt(x)"}}}};
+  const ModelEntry& e = modelEntryFromJson(model, "sqrt.json");
+  std::string notes;
+  const auto factory = compiledModel(equationSystemOf(e), [&](const std::string& n) { notes += n + "\n"; });
+  ASSERT_TRUE(factory) << notes;
+  const auto m = factory(ParameterValues(e.info->parameters));
+  ASSERT_FALSE(dynamic_cast<const EquationModel*>(m.get())); // native code, not the interpreter
+  const IntegratorEntry& rk4 = IntegratorRegistry::global().get("rk4");
+  ParameterValues v(*rk4.parameters);
+  v.set("step", 0.3);
+  auto integrator = rk4.create(v);
+  integrator->start(*m, 0, Eigen::VectorXd::Ones(1));
+  std::string message;
+  try {
+    for (int i = 0; i < 100; ++i)
+      integrator->step();
+  } catch (const ComputationError& error) {
+    message = error.what();
+  }
+  EXPECT_NE(message.find("stopped being finite"), std::string::npos) << message;
+  EXPECT_NE(message.find("equations.x: 'sqrt' of -"), std::string::npos) << message;
+}
+
 TEST(ModelFile, ScenesNameAModelFileRelativeToThemselves) {
   const Scene s = sceneFromJson(json::parse(R"({"problem": "lorenz.json", "parameters": {"rho": 20},
       "initial": {"state": {"x": 1, "y": 2, "z": 3}}})"),
