@@ -1183,6 +1183,23 @@ class Cli(unittest.TestCase):
         self.assertIn("compilation was stopped", err)
         self.wait_for(lambda: self.dead(compiler), "the compiler outlived Ctrl-C")
 
+    def test_json_help_promises_no_output_the_object_lacks(self):
+        import re
+        for tool, scene, args in [("lyapunov", "lorenz.json", ["--time", "50"]), ("megno", "lorenz.json", ["--time", "50"]),
+                                  ("poincare", "henon_heiles.json", ["--points", "5"])]:
+            path = os.path.join(SRC, "scenes", scene)
+            r = run(tool, path, *args, "--json")
+            self.assertEqual(r.returncode, 0, r.stderr)
+            keys = set(json.loads(r.stdout))
+            described = run("describe-tool", tool).stdout.split("outputs:")[1].split("\n\n")[0]
+            outputs = [line.split()[0] for line in described.splitlines() if line.strip()]
+            usage = run(tool, "--help").stdout
+            said = usage[usage.index("--json"):].split("\n  -")[0]
+            for name in outputs:
+                if name not in keys:
+                    self.assertIsNone(re.search(r"(?<![\w<])%s(?![\w>])" % re.escape(name), said),
+                                      "%s --json help names '%s', which its object lacks: %s" % (tool, name, said))
+
     def test_scene_path_problems_and_duplicate_keys_are_bad_input(self):
         out = self.path("a.csv")
         args = ["--time", "1", "--every", "1", "--columns", "t", "-o", out]
