@@ -1183,6 +1183,28 @@ class Cli(unittest.TestCase):
         self.assertIn("compilation was stopped", err)
         self.wait_for(lambda: self.dead(compiler), "the compiler outlived Ctrl-C")
 
+        # past the wait, the run goes on interpreted while the compiler goes on in its own process: Ctrl-C
+        # stops both (and a run that ends by itself leaves it running, as the test above shows)
+        os.remove(slow + ".pid")
+        e["ROLLVIZ_COMPILE_WAIT"] = "0"
+        out = self.path("long.csv")
+        p = subprocess.Popen([RV, "integrate", scene, "--time", "1e9", "--every", "1e9", "-o", out],
+                             stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, env=e)
+        try:
+            self.wait_for(lambda: self.pid_in(slow + ".pid") and
+                          any(n.startswith(".long.partial-") for n in os.listdir(self.dir)), "it did not start")
+            compiler = self.pid_in(slow + ".pid")
+            p.send_signal(signal.SIGINT)
+            status = p.wait(timeout=60)
+        finally:
+            if p.poll() is None:
+                p.kill()
+        err = p.stderr.read().decode()
+        p.stderr.close()
+        self.assertEqual(status, 130, err)
+        self.assertIn("runs interpreted for now", err)
+        self.wait_for(lambda: self.dead(compiler), "the detached compiler outlived Ctrl-C")
+
     def test_json_help_promises_no_output_the_object_lacks(self):
         import re
         for tool, scene, args in [("lyapunov", "lorenz.json", ["--time", "50"]), ("megno", "lorenz.json", ["--time", "50"]),
