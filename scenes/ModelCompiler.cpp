@@ -6,7 +6,11 @@
 #include "rollviz/Toolchain.h"
 #include "rollviz/Version.h"
 
+#include <algorithm>
+#include <atomic>
+#include <cerrno>
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <dlfcn.h>
@@ -17,7 +21,9 @@
 #include <mutex>
 #include <spawn.h>
 #include <sstream>
+#include <sys/file.h>
 #include <sys/wait.h>
+#include <thread>
 #include <unistd.h>
 #include <vector>
 
@@ -88,12 +94,16 @@ const Toolchain& toolchain() {
       t.problem = "Eigen's headers are missing (" + t.eigen + ")";
       return t;
     }
-    if (access(ROLLVIZ_CXX_COMPILER, X_OK) != 0) {
-      t.problem =
-          std::string("the C++ compiler that built rollviz is missing (") + ROLLVIZ_CXX_COMPILER + ")";
+    // another compiler (a wrapper, or a test's slow stand-in); part of the cache key like every argument
+    const char* other = std::getenv("ROLLVIZ_MODEL_COMPILER");
+    const std::string compiler = other && *other ? other : ROLLVIZ_CXX_COMPILER;
+    if (access(compiler.c_str(), X_OK) != 0) {
+      t.problem = (other && *other ? "the compiler ROLLVIZ_MODEL_COMPILER names is missing ("
+                                   : "the C++ compiler that built rollviz is missing (") +
+                  compiler + ")";
       return t;
     }
-    t.compiler = ROLLVIZ_CXX_COMPILER;
+    t.compiler = compiler;
     return t;
   }();
   return t;
@@ -109,12 +119,21 @@ std::vector<std::string> compileArguments(const Toolchain& t, const std::string&
   return a;
 }
 
-/// Runs argv[0] with `argv` (no shell), its output into `log`; the exit status, or -1 when it cannot start.
-int run(const std::vector<std::string>& argv, const std::string& log) {
+/// Starts argv[0] with `argv` (no shell), its output into `log` (/dev/null when empty), in a process group of
+/// its own when `ownGroup` (a terminal's Ctrl-C then does not reach it); its pid, or -1 when it cannot start.
+pid_t spawn(const std::vector<std::string>& argv, const std::string& log, bool ownGroup) {
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, 1, log.empty() ? "/dev/null" : log.c_str(),
+                                   O_WRONLY | O_CREAT | O_TRUNC, 0644);
   posix_spawn_file_actions_adddup2(&actions, 1, 2);
+  posix_spawnattr_t attributes;
+  posix_spawnattr_init(&attributes);
+  if (ownGroup) {
+    posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);
+    posix_spawnattr_setpgroup(&attributes, 0);
+  }
   std::vector<char*> args;
   args.reserve(argv.size() + 1);
   for (const auto& s : argv)
@@ -122,13 +141,24 @@ int run(const std::vector<std::string>& argv, const std::string& log) {
         const_cast<char*>(s.c_str())); // NOLINT(cppcoreguidelines-pro-type-const-cast): exec's type
   args.push_back(nullptr);
   pid_t pid = 0;
-  const int started = posix_spawn(&pid, argv[0].c_str(), &actions, nullptr, args.data(), environ);
+  const int started = posix_spawn(&pid, argv[0].c_str(), &actions, &attributes, args.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
-  if (started != 0) return -1;
+  posix_spawnattr_destroy(&attributes);
+  return started == 0 ? pid : -1;
+}
+
+/// The exit status of a child that ended (-1 when a signal ended it); blocks.
+int waitFor(pid_t pid) {
   int status = 0;
-  while (waitpid(pid, &status, 0) < 0) {
-  }
+  while (waitpid(pid, &status, 0) < 0)
+    if (errno != EINTR) return -1;
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+/// Runs argv[0] with `argv` (no shell), its output into `log`; the exit status, or -1 when it cannot start.
+int run(const std::vector<std::string>& argv, const std::string& log) {
+  const pid_t pid = spawn(argv, log, false);
+  return pid < 0 ? -1 : waitFor(pid);
 }
 
 /// The library's recorded hash (written after a successful compilation) matches its bytes.
@@ -177,8 +207,169 @@ bool modelCompilationAvailable(std::string* why) {
   return !t.compiler.empty();
 }
 
+namespace {
+
+// What outlives a call: libraries loaded and compilations left running. Never destroyed, since threads that
+// finish a compilation may still use them while the process exits.
+std::mutex& stateMutex() {
+  static auto* m = new std::mutex;
+  return *m;
+}
+std::map<std::string, CompiledModelCreate>& loadedLibraries() {
+  static auto* m = new std::map<std::string, CompiledModelCreate>;
+  return *m;
+}
+struct Running {
+  pid_t pid;
+  bool detached; // a `compile-model` process of its own, meant to outlive this one
+};
+std::vector<Running>& running() {
+  static auto* r = new std::vector<Running>;
+  return *r;
+}
+std::string& compilerProgram() {
+  static auto* p = new std::string;
+  return *p;
+}
+std::function<bool()>& interruptedHook() {
+  static auto* f = new std::function<bool()>;
+  return *f;
+}
+
+void forget(pid_t pid) {
+  const std::lock_guard lock(stateMutex());
+  auto& r = running();
+  r.erase(std::remove_if(r.begin(), r.end(), [pid](const Running& x) { return x.pid == pid; }), r.end());
+}
+
+void stop(const Running& r) {
+  kill(r.detached ? -r.pid : r.pid, SIGTERM); // a detached one: its whole group (the compiler with it)
+}
+
+/// The cache's files of one key.
+struct CacheFiles {
+  fs::path dir, source, lib, sum, log;
+};
+CacheFiles cacheFiles(const fs::path& dir, const std::string& key) {
+  return {dir, dir / (key + ".cpp"), dir / (key + ".so"), dir / (key + ".sum"), dir / (key + ".log")};
+}
+
+std::string cacheKey(const Toolchain& t, const std::string& code) {
+  std::string identity = code + "\n" + ROLLVIZ_ABI_STAMP;
+  for (const auto& a : compileArguments(t, "SOURCE", "OUT"))
+    identity += "\n" + a;
+  return contentHash(identity);
+}
+
+/// After the compiler wrote `out` successfully: its hash recorded, then renamed into the cache. "" or why
+/// not.
+std::string install(const CacheFiles& f, const fs::path& out) {
+  try {
+    writeFileAtomically(f.sum.string(), contentHash(readAll(out)) + "\n");
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  std::error_code ec;
+  fs::rename(out, f.lib, ec);
+  if (ec) return "cannot rename " + out.string() + ": " + ec.message();
+  return intact(f.lib, f.sum) ? "" : "its compiled library changed after it was written";
+}
+
+/// The library loaded (once per process); null and `why` when it cannot be.
+CompiledModelCreate loadLibrary(const std::string& key, const fs::path& lib, std::string& why) {
+  const std::lock_guard lock(stateMutex());
+  if (const auto it = loadedLibraries().find(key); it != loadedLibraries().end()) return it->second;
+  void* handle = dlopen(lib.c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (!handle) {
+    why = dlerror();
+    return nullptr;
+  }
+  const auto stamp = reinterpret_cast<const char* (*)()>(dlsym(handle, kCompiledModelStamp));
+  const auto create = reinterpret_cast<CompiledModelCreate>(dlsym(handle, kCompiledModelCreate));
+  if (!stamp || !create || std::string(stamp()) != ROLLVIZ_ABI_STAMP) {
+    why = lib.string() + " was built for another rollviz";
+    return nullptr; // the handle stays open: nothing of it was used
+  }
+  loadedLibraries().emplace(key, create); // never unloaded: models made by it may outlive every scene
+  return create;
+}
+
+CompiledModelFactory factoryOf(const std::shared_ptr<const EquationSystem>& system,
+                               CompiledModelCreate create) {
+  return [system, create](const ParameterValues& p) { return std::unique_ptr<Model>(create(&system, &p)); };
+}
+
+std::string seconds(double s) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.1f", s);
+  return text;
+}
+
+/// An in-process compiler still running at exit is stopped (a detached one goes on: it fills the cache).
+void stopCompilersAtExit() {
+  const std::lock_guard lock(stateMutex());
+  for (const Running& r : running())
+    if (!r.detached) stop(r);
+}
+
+} // namespace
+
+double compileWaitSeconds() {
+  const char* v = std::getenv("ROLLVIZ_COMPILE_WAIT");
+  char* end = nullptr;
+  const double s = v ? std::strtod(v, &end) : 0;
+  return v && end != v && *end == '\0' && s >= 0 ? s : 5.0; // "inf" waits for as long as it takes
+}
+
+void setModelCompilerProgram(std::string program) {
+  const std::lock_guard lock(stateMutex());
+  compilerProgram() = std::move(program);
+}
+
+void setModelCompilationInterrupted(std::function<bool()> interrupted) {
+  const std::lock_guard lock(stateMutex());
+  interruptedHook() = std::move(interrupted);
+}
+
+void stopModelCompilations() {
+  const std::lock_guard lock(stateMutex());
+  for (const Running& r : running())
+    stop(r);
+}
+
+int compileCachedModel(const std::string& sourcePath, std::string& why) {
+  const Toolchain& t = toolchain();
+  if (t.compiler.empty()) {
+    why = t.problem;
+    return 1;
+  }
+  const fs::path source(sourcePath);
+  const std::string key = source.stem().string();
+  const std::string code = readAll(source);
+  // the name is the hash of the code and of this rollviz's compiler line: the library is what the run wants
+  if (code.empty() || cacheKey(t, code) != key) {
+    why = sourcePath + ": not a model source written by this rollviz into its cache";
+    return 2;
+  }
+  const CacheFiles f = cacheFiles(source.parent_path(), key);
+  // one at a time per library (an mpirun's ranks start one each): the others find it done
+  const int lock = open((f.dir / (key + ".lock")).c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  if (lock >= 0) flock(lock, LOCK_EX); // released when the process ends
+  if (intact(f.lib, f.sum)) return 0;  // another process was faster
+  const fs::path out = f.dir / (key + "." + std::to_string(getpid()) + ".tmp.so");
+  std::error_code ec;
+  if (run(compileArguments(t, f.source.string(), out.string()), f.log.string()) != 0) {
+    fs::remove(out, ec);
+    why = "its generated code did not compile (" + f.log.string() + ")";
+    return 1;
+  }
+  why = install(f, out);
+  fs::remove(out, ec);
+  return why.empty() ? 0 : 1;
+}
+
 CompiledModelFactory compiledModel(const std::shared_ptr<const EquationSystem>& system,
-                                   const std::function<void(const std::string&)>& note) {
+                                   const std::function<void(const std::string&)>& note, double waitSeconds) {
   const Toolchain& t = toolchain();
   const std::string& id = system->info().id;
   if (t.compiler.empty()) {
@@ -195,68 +386,117 @@ CompiledModelFactory compiledModel(const std::shared_ptr<const EquationSystem>& 
          std::to_string(largest) + "), past which compiling costs more than it saves");
     return {};
   }
-  std::string identity = code + "\n" + ROLLVIZ_ABI_STAMP;
-  for (const auto& a : compileArguments(t, "SOURCE", "OUT"))
-    identity += "\n" + a;
-  const std::string key = contentHash(identity);
-  static std::mutex mutex;
-  static std::map<std::string, CompiledModelCreate> loaded;
-  const std::lock_guard lock(mutex);
-  CompiledModelCreate create = nullptr;
-  if (const auto it = loaded.find(key); it != loaded.end()) create = it->second;
-  if (!create) {
-    const fs::path dir = cacheDirectory();
-    std::error_code ec;
-    fs::create_directories(dir, ec);
-    const fs::path lib = dir / (key + ".so"), sum = dir / (key + ".sum"), source = dir / (key + ".cpp");
-    if (!intact(lib, sum)) {
-      note("compiling the model '" + id + "' to native code (first use; cached in " + dir.string() + ") ...");
-      const auto started = std::chrono::steady_clock::now();
-      const std::string unique = "." + std::to_string(getpid()) + ".tmp";
-      try {
-        writeFileAtomically(source.string(), code);
-      } catch (const std::exception& e) {
-        note("model files run interpreted: cannot write the generated code: " + std::string(e.what()));
-        return {};
-      }
-      const fs::path out = dir / (key + unique + ".so"), log = dir / (key + ".log");
-      if (run(compileArguments(t, source.string(), out.string()), log.string()) != 0) {
-        fs::remove(out, ec);
-        note("the model '" + id + "' runs interpreted: its generated code did not compile (" + log.string() +
-             "):\n" + firstLines(readAll(log), 6));
-        return {};
-      }
-      try {
-        writeFileAtomically(sum.string(), contentHash(readAll(out)) + "\n");
-      } catch (const std::exception& e) {
-        note("model files run interpreted: " + std::string(e.what()));
-        return {};
-      }
-      fs::rename(out, lib, ec);
-      const double seconds =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-      char text[64];
-      std::snprintf(text, sizeof text, "%.1f", seconds);
-      note("compiled the model '" + id + "' in " + text + " s");
-      if (!intact(lib, sum)) {
-        note("the model '" + id + "' runs interpreted: its compiled library changed after it was written");
-        return {};
-      }
-    }
-    void* handle = dlopen(lib.c_str(), RTLD_NOW | RTLD_LOCAL);
-    if (!handle) {
-      note("the model '" + id + "' runs interpreted: " + std::string(dlerror()));
+  const std::string key = cacheKey(t, code);
+  std::string why;
+  {
+    const std::lock_guard lock(stateMutex());
+    if (const auto it = loadedLibraries().find(key); it != loadedLibraries().end())
+      return factoryOf(system, it->second);
+  }
+  std::error_code ec;
+  fs::create_directories(cacheDirectory(), ec);
+  const CacheFiles f = cacheFiles(cacheDirectory(), key);
+  if (!intact(f.lib, f.sum)) {
+    note("compiling the model '" + id + "' to native code (first use; cached in " + f.dir.string() + ") ...");
+    const auto started = std::chrono::steady_clock::now();
+    try {
+      writeFileAtomically(f.source.string(), code);
+    } catch (const std::exception& e) {
+      note("model files run interpreted: cannot write the generated code: " + std::string(e.what()));
       return {};
     }
-    const auto stamp = reinterpret_cast<const char* (*)()>(dlsym(handle, kCompiledModelStamp));
-    create = reinterpret_cast<CompiledModelCreate>(dlsym(handle, kCompiledModelCreate));
-    if (!stamp || !create || std::string(stamp()) != ROLLVIZ_ABI_STAMP) {
-      note("the model '" + id + "' runs interpreted: " + lib.string() + " was built for another rollviz");
-      return {}; // the handle stays open: nothing of it was used
+    // a program of its own (`rollviz compile-model`) when there is one: it goes on after this process ends
+    // and fills the cache; else the compiler, finished here
+    std::string program;
+    std::function<bool()> interrupted;
+    {
+      const std::lock_guard lock(stateMutex());
+      program = compilerProgram();
+      interrupted = interruptedHook();
     }
-    loaded.emplace(key, create); // never unloaded: models made by it may outlive every scene
+    const bool detached = !program.empty();
+    static std::atomic<int> made{0}; // two entries of one code in one process compile side by side
+    const fs::path out =
+        f.dir / (key + "." + std::to_string(getpid()) + "." + std::to_string(made++) + ".tmp.so");
+    const pid_t pid =
+        detached ? spawn({program, "compile-model", f.source.string()}, "", true)
+                 : spawn(compileArguments(t, f.source.string(), out.string()), f.log.string(), false);
+    if (pid < 0) {
+      note("the model '" + id + "' runs interpreted: " + (detached ? program : t.compiler) +
+           " did not start");
+      return {};
+    }
+    {
+      const std::lock_guard lock(stateMutex());
+      running().push_back({pid, detached});
+    }
+    // what the compiler leaves behind, once it ended: "" when the library is in the cache, else why not
+    const auto finish = [f, out, detached](int status) -> std::string {
+      std::error_code ec;
+      if (status != 0) {
+        if (!detached) fs::remove(out, ec);
+        return "its generated code did not compile (" + f.log.string() + "):\n" +
+               firstLines(readAll(f.log), 6);
+      }
+      return detached ? (intact(f.lib, f.sum) ? "" : "its compiled library is not in the cache")
+                      : install(f, out);
+    };
+    // wait for it up to the budget (and not past a Ctrl-C), then go on interpreted while it goes on
+    const auto deadline = started + std::chrono::duration<double>(std::min(waitSeconds, 1e9));
+    int status = 0;
+    bool ended = false;
+    while (true) {
+      int raw = 0;
+      const pid_t done = waitpid(pid, &raw, WNOHANG);
+      if (done == pid || (done < 0 && errno != EINTR)) {
+        ended = true;
+        status = done == pid && WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+        break;
+      }
+      if (interrupted && interrupted()) {
+        stop({pid, detached});
+        waitFor(pid);
+        forget(pid);
+        if (!detached) fs::remove(out, ec);
+        note("the model '" + id + "' runs interpreted: its compilation was stopped");
+        return {};
+      }
+      if (std::chrono::steady_clock::now() >= deadline) break;
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    if (!ended) {
+      note("the model '" + id + "' runs interpreted for now: its compilation takes longer than " +
+           "ROLLVIZ_COMPILE_WAIT (" + seconds(waitSeconds) + " s); it goes on " +
+           (detached ? "in the background (process " + std::to_string(pid) +
+                           ") and fills the cache for the "
+                           "next run"
+                     : "while this process runs") +
+           "; Ctrl-C stops it");
+      if (!detached) {
+        static std::once_flag registered;
+        std::call_once(registered, [] { std::atexit(stopCompilersAtExit); });
+      }
+      // it ends on its own: the library is installed (here, when not detached) for the next process
+      std::thread([pid, finish] {
+        finish(waitFor(pid));
+        forget(pid);
+      }).detach();
+      return {};
+    }
+    forget(pid);
+    if (const std::string failed = finish(status); !failed.empty()) {
+      note("the model '" + id + "' runs interpreted: " + failed);
+      return {};
+    }
+    note("compiled the model '" + id + "' in " +
+         seconds(std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count()) + " s");
   }
-  return [system, create](const ParameterValues& p) { return std::unique_ptr<Model>(create(&system, &p)); };
+  const CompiledModelCreate create = loadLibrary(key, f.lib, why);
+  if (!create) {
+    note("the model '" + id + "' runs interpreted: " + why);
+    return {};
+  }
+  return factoryOf(system, create);
 }
 
 } // namespace rv

@@ -416,7 +416,11 @@ const ModelEntry& entryOf(const std::string& key, const std::string& file, const
             const std::lock_guard lock(notesMutex());
             compilationNotes()(text);
           };
-          auto factory = compiledModel(system, note);
+          // the command line and Python wait up to a budget, then stay interpreted: a run (a sweep) is all
+          // one or all the other, whatever the compiler's speed
+          auto factory = when == ModelCompilation::OnFirstUse
+                             ? compiledModel(system, note, compileWaitSeconds())
+                             : compiledModel(system, note);
           if (factory && when == ModelCompilation::InBackground)
             note("runs of '" + system->info().id + "' started from now use its native code");
           const std::lock_guard lock(compilation->mutex);

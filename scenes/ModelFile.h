@@ -44,7 +44,8 @@ std::vector<const ModelEntry*> loadedModelFiles();
 std::string modelFileOf(const ModelEntry& entry);
 
 /// When a model file's field is compiled to native code (ModelCompiler.h): on its first instance, which waits
-/// for the compiler (the command line, Python); in the background, instances made before it is ready
+/// for the compiler up to ROLLVIZ_COMPILE_WAIT seconds and then runs interpreted while the compilation goes
+/// on (the command line, Python); in the background, instances made before it is ready
 /// running interpreted (the GUI, whose thread never waits); or never. ROLLVIZ_COMPILE_MODELS=0 means never.
 enum class ModelCompilation { OnFirstUse, InBackground, Off };
 void setModelCompilation(ModelCompilation when);

@@ -1,7 +1,6 @@
 #include "scenes/Scene.h"
 
 #include "dynamics/core/Errors.h"
-#include "dynamics/integrators/TimeSampler.h"
 
 #include <array>
 #include <cmath>
@@ -43,17 +42,25 @@ std::vector<int> observableColumns(const Model& model, const std::vector<std::st
 }
 
 bool sampleColumns(const Scene& scene, double time, double every, const std::vector<int>& columns,
-                   const std::function<bool(double, const std::vector<double>&)>& visit) {
+                   const std::function<bool(double, const std::vector<double>&)>& visit,
+                   const std::function<bool(double)>& keepGoing) {
   // a time that is a whole number of periods up to rounding still gets its last row
   const long rows = static_cast<long>(std::floor(time / every * (1 + 1e-12))) + 1;
   const auto& obs = scene.model->observables();
   auto integrator = scene.startIntegrator();
+  const int dir = integrator->direction();
+  Eigen::VectorXd x(integrator->state().size());
   std::vector<double> row(columns.size());
-  return sampleUniform(*integrator, every, rows, [&](double t, const Eigen::VectorXd& x) {
-    for (std::size_t k = 0; k < columns.size(); ++k)
-      row[k] = obs[columns[k]].value(t, x.data());
-    return visit(t, row);
-  });
+  // TimeSampler's sampleUniform, with a question at every step: rows may lie many steps apart
+  const auto stop = [&] { return keepGoing && !keepGoing(integrator->time()); };
+  for (long k = 0; k < rows; ++k) {
+    const double t = dir * static_cast<double>(k) * every;
+    if (!integrator->advanceTo(t, x, stop)) return false;
+    for (std::size_t c = 0; c < columns.size(); ++c)
+      row[c] = obs[columns[c]].value(t, x.data());
+    if (!visit(t, row)) return false;
+  }
+  return true;
 }
 
 bool sameMap(const Scene& a, const Scene& b) {

@@ -73,8 +73,10 @@ std::vector<int> observableColumns(const Model& model, const std::vector<std::st
 
 /// What `rollviz integrate` samples: the scene integrated from its initial state, visit(t, row) with the
 /// columns' values at t = 0, every, 2 every, ... up to `time`. Stops early (returns false) when visit returns
-/// false; throws ComputationError when a step fails.
+/// false, or when `keepGoing`, asked at every step with the time reached, returns false (a Ctrl-C polled, a
+/// progress line, between rows far apart); throws ComputationError when a step fails.
 bool sampleColumns(const Scene& scene, double time, double every, const std::vector<int>& columns,
-                   const std::function<bool(double, const std::vector<double>&)>& visit);
+                   const std::function<bool(double, const std::vector<double>&)>& visit,
+                   const std::function<bool(double)>& keepGoing = {});
 
 } // namespace rv

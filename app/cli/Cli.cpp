@@ -9,6 +9,7 @@
 
 #include "render/context/HeadlessContext.h"
 #include "render/export/VtkXmlFiles.h"
+#include "scenes/ModelCompiler.h"
 #include "scenes/ModuleLoader.h"
 
 #include <cstdlib>
@@ -88,6 +89,14 @@ void handOverToOsMesa(char** argv, const char* why) {
 } // namespace
 
 int runCli(int argc, char** argv, const GuiLauncher& gui) {
+  // hidden: a model's compilation in a process of its own, started by a run that would not wait for it
+  // (scenes/ModelCompiler.h); it outlives that run and fills the cache
+  if (argc == 3 && std::string(argv[1]) == "compile-model") {
+    std::string why;
+    const int status = compileCachedModel(argv[2], why);
+    if (status != 0) fmt::print(stderr, "rollviz compile-model: {}\n", why);
+    return status;
+  }
   // modules first: the commands, problems and integrators they add must exist before the command line is
   // built
   try {
@@ -136,6 +145,16 @@ int runCli(int argc, char** argv, const GuiLauncher& gui) {
     return 2;
   }
   installInterruptHandler();
+  // a model compiled for the run goes on in a process of its own past the wait budget; Ctrl-C stops it
+  std::error_code ec;
+  if (const auto self = std::filesystem::read_symlink("/proc/self/exe", ec); !ec)
+    setModelCompilerProgram(self.string());
+  setModelCompilationInterrupted(interrupted);
+  struct StopCompilationsOnCtrlC {
+    ~StopCompilationsOnCtrlC() {
+      if (interrupted()) stopModelCompilations();
+    }
+  } stopCompilations;
   try {
     for (const auto& c : commands)
       if (c.app->parsed()) return c.run();

@@ -5,6 +5,7 @@
 #include "dynamics/io/AtomicFile.h"
 #include "render/export/VtkXmlFiles.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -50,14 +51,21 @@ Command addIntegrateCommand(CLI::App& app) {
                 ids.push_back(observable.id);
             const std::vector<int> cols = observableColumns(*scene.model, ids, "--columns");
             const auto& obs = scene.model->observables();
-            Progress progress("integrate");
-            // every row goes to `emit`; the answer says whether the run went to its end
+            // rows printed on the terminal show how far it got, and would share the progress line
+            Progress progress("integrate", !output.empty() || !stdoutIsTerminal());
+            // every row goes to `emit`; the answer says whether the run went to its end. Ctrl-C and the
+            // progress are polled at every step: rows may lie many steps apart
             const auto sample = [&](const std::function<void(double, const std::vector<double>&)>& emit) {
-              return sampleColumns(scene, time, every, cols, [&](double t, const std::vector<double>& row) {
-                emit(t, row);
-                progress.update(time > 0 ? std::abs(t) / time : 1.0);
-                return !interrupted();
-              });
+              return sampleColumns(
+                  scene, time, every, cols,
+                  [&](double t, const std::vector<double>& row) {
+                    emit(t, row);
+                    return !interrupted();
+                  },
+                  [&](double t) {
+                    progress.update(time > 0 ? std::min(1.0, std::abs(t) / time) : 1.0);
+                    return !interrupted();
+                  });
             };
 
             if (hasExtension(output, ".vtp")) {

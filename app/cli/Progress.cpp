@@ -25,10 +25,15 @@ bool interrupted() {
   return g_interrupted.load();
 }
 
-Progress::Progress(std::string label) : label_(std::move(label)), tty_(::isatty(STDERR_FILENO) == 1) {}
+bool stdoutIsTerminal() {
+  return ::isatty(STDOUT_FILENO) == 1;
+}
+
+Progress::Progress(std::string label, bool show)
+    : label_(std::move(label)), tty_(show && ::isatty(STDERR_FILENO) == 1) {}
 
 Progress::~Progress() {
-  if (tty_ && last_ >= 0) std::fprintf(stderr, "\r\033[K");
+  clear();
 }
 
 void Progress::update(double fraction) {
@@ -39,10 +44,19 @@ void Progress::update(double fraction, const std::string& detail) {
   if (!tty_) return;
   const int pct = static_cast<int>(fraction * 100);
   const auto now = std::chrono::steady_clock::now();
-  if ((pct == last_ && detail.empty()) || now - shown_ < std::chrono::milliseconds(200)) return;
-  last_ = pct, shown_ = now;
+  const std::lock_guard lock(mutex_); // a sweep's threads report at once
+  if (shown_ && ((pct == last_ && detail.empty()) || now - at_ < std::chrono::milliseconds(200))) return;
+  last_ = pct, at_ = now, shown_ = true;
   std::fprintf(stderr, "\r\033[K%s: %3d%%%s%s", label_.c_str(), pct, detail.empty() ? "" : "  ",
                detail.c_str());
+  std::fflush(stderr);
+}
+
+void Progress::clear() {
+  const std::lock_guard lock(mutex_);
+  if (!shown_) return;
+  shown_ = false;
+  std::fprintf(stderr, "\r\033[K");
   std::fflush(stderr);
 }
 

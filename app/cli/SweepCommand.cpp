@@ -276,6 +276,7 @@ int runSweep(const SweepOptions& o) {
       return runSweepThreads(store, scheduler, evaluateChunk, threads, control);
     });
   }
+  progress.clear(); // the summary below takes its line
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (complete) writeResults(*spec, store, o);
   const long failed = store.failedCount();

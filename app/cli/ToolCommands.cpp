@@ -135,10 +135,10 @@ Command addRegisteredToolCommand(CLI::App* cmd, const ToolEntry& tool) {
       cmd->add_flag("--" + a.name, o->flags[a.name], a.description);
     else
       cmd->add_option("--" + a.name, o->arguments[a.name], a.description)->type_name(a.valueName);
-  std::string fields;
-  for (const auto& out : tool.outputs)
-    fields += (fields.empty() ? "" : ", ") + out.name;
-  cmd->add_flag("--json", o->json, "print one JSON object: " + fields);
+  // the outputs mix the result's fields with its table's columns, which the object does not hold
+  cmd->add_flag("--json", o->json,
+                "print the result's fields as one JSON object (of the outputs `rollviz describe-tool " + tool.id +
+                    "` lists, those that are not the table's columns); -o FILE writes the table");
   std::vector<std::string> formats{".csv"};
   std::string what =
       runner.tableIsResult ? "CSV file (default: standard output)" : "CSV file: the tool's table";
@@ -206,6 +206,7 @@ Command addRegisteredToolCommand(CLI::App* cmd, const ToolEntry& tool) {
             } catch (const InputError& e) {
               rethrowNamingTheFlag(e, given);
             }
+            progress.clear(); // what follows may print on the same terminal
             ToolResult r = run->result();
             r.stopped = !finished;
             if (r.failure.empty()) checkToolResult(tool, r);

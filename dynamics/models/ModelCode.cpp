@@ -41,7 +41,10 @@ std::string modelCode(const EquationSystem& system) {
        "#include \"dynamics/expr/Functions.h\"\n"
        "#include \"dynamics/models/EquationModel.h\"\n"
        "#include \"rollviz/Version.h\"\n\n"
-       "#include <limits>\n\n"
+       "#include <cmath>\n"
+       "#include <limits>\n"
+       "#include <type_traits>\n"
+       "#include <vector>\n\n"
        "namespace {\n\n"
        "class Compiled final : public rv::ModelWithField<Compiled, "
     << n << ", " << m
@@ -125,7 +128,13 @@ std::string modelCode(const EquationSystem& system) {
     c << "    dx[" << i << "] = " << (invariant[static_cast<std::size_t>(r)] ? "S(c_[" : "r") << r
       << (invariant[static_cast<std::size_t>(r)] ? "])" : "") << ";\n";
   }
-  c << "  }\n\n"
+  // the input of an evaluation that went non-finite from a finite state (a stage inside a step, which the
+  // integrator does not keep), so that nonFiniteCause can name the expression as the interpreter does
+  c << "    if constexpr (std::is_same_v<S, double>)\n"
+       "      if (!std::isfinite(dx.sum()) && std::isfinite(x.sum())) {\n"
+       "        lastNonFinite().assign(x.data(), x.data() + x.size());\n"
+       "      }\n"
+       "  }\n\n"
        "  Eigen::VectorXd integrals(const double* x) const override { return interpreted_->integrals(x); }\n"
        "  double measureDensity(const double* x) const override { return interpreted_->measureDensity(x); }\n"
        "  bool hasInvariantMeasure() const override { return interpreted_->hasInvariantMeasure(); }\n"
@@ -154,9 +163,17 @@ std::string modelCode(const EquationSystem& system) {
        "  }\n"
        "  std::string nonFiniteCause(const double* x) const override {\n"
        "    const auto* e = dynamic_cast<const rv::ExplainsNonFinite*>(interpreted_.get());\n"
-       "    return e ? e->nonFiniteCause(x) : std::string();\n"
+       "    std::string cause = e ? e->nonFiniteCause(x) : std::string();\n"
+       "    if (e && cause.empty() && !lastNonFinite().empty()) cause = "
+       "e->nonFiniteCause(lastNonFinite().data());\n"
+       "    lastNonFinite().clear();\n"
+       "    return cause;\n"
        "  }\n\n"
        "private:\n"
+       "  static std::vector<double>& lastNonFinite() {\n"
+       "    thread_local std::vector<double> x; // this thread's last non-finite field from a finite state\n"
+       "    return x;\n"
+       "  }\n"
        "  std::unique_ptr<rv::Model> interpreted_;\n"
        "  double p_["
     << (parameters > 0 ? parameters : 1)

@@ -114,8 +114,11 @@ std::unique_ptr<Model> MegnoRun::system(const Model& model) {
 void MegnoRun::start() {
   if (model_.isMap()) return;
   integ_ = make_();
-  integ_->controlBy(
-      model_.dimension()); // steps follow the orbit alone, as REBOUND's IAS15 ignores variations
+  // steps follow the orbit and the tangent vector, each measured against its own scale (as Lyapunov's): on a
+  // dissipative flow a vector along a contracting direction needs shorter steps than the orbit allows. The
+  // sums that make the averages are quadratures of these and do not control the steps.
+  integ_->controlBy(n_ + m_);
+  integ_->scaleErrorsByBlocks(n_, m_);
   integ_->start(*system_, t_, state_);
 }
 

@@ -130,7 +130,8 @@ std::vector<MegnoLaneResult> megnoOnLanes(const std::vector<const Model*>& model
       auto integ = makeIntegrator();
       if (!integ->stepLanesAlone(width))
         throw std::logic_error("megnoOnLanes: the method does not step lanes as alone");
-      integ->controlBy(n * width); // the orbits' components alone (as MegnoRun: x, not w)
+      integ->controlBy((n + m) * width); // each orbit and its vector, each its own scale (as MegnoRun)
+      integ->scaleErrorsByBlocks(n, m);
       integ->start(system, t, y);
       if (!integ->advanceTo(target, y, [&] { return control.stopRequested(); })) return {};
     } catch (const ComputationError&) {

@@ -1019,6 +1019,209 @@ class Cli(unittest.TestCase):
         self.assertEqual(r.returncode, 0, r.stderr)
         self.assertEqual(open(full).read(), open(resumed).read())
 
+    @staticmethod
+    def on_a_terminal(*args):
+        """runs rollviz with stdout and stderr on one pseudo-terminal: its exit status and all it printed"""
+        import pty
+        e = dict(os.environ)
+        e.pop("DISPLAY", None)
+        master, slave = pty.openpty()
+        p = subprocess.Popen([RV, *args], stdin=subprocess.DEVNULL, stdout=slave, stderr=slave, env=e)
+        os.close(slave)
+        out = b""
+        while True:
+            try:
+                chunk = os.read(master, 65536)
+            except OSError:  # EIO: the last writer closed the terminal
+                break
+            if not chunk:
+                break
+            out += chunk
+        os.close(master)
+        return p.wait(timeout=300), out.decode()
+
+    def test_progress_on_a_terminal_is_one_line_erased_before_anything_else_is_printed(self):
+        lorenz = os.path.join(SRC, "scenes", "lorenz.json")
+        status, out = self.on_a_terminal("lyapunov", lorenz, "--time", "2000")
+        self.assertEqual(status, 0, out)
+        self.assertIn("\r\x1b[Klyapunov:", out)  # the line, rewritten in place
+        # erased before the result: nothing of it after the result, no result glued to a percentage
+        self.assertIn("exponents =", out.split("\x1b[K")[-1], out)
+        self.assertNotRegex(out, r"%\s*exponents")
+        # rows printed on the terminal are the progress: no line beside them
+        status, out = self.on_a_terminal("integrate", lorenz, "--time", "3", "--every", "1")
+        self.assertEqual(status, 0, out)
+        self.assertNotIn("integrate:", out)
+        self.assertEqual(len([line for line in out.splitlines() if line]), 5, out)
+        # to a file: the line, erased at the end
+        csv_out = self.path("t.csv")
+        status, out = self.on_a_terminal("integrate", lorenz, "--time", "300", "--every", "300", "-o", csv_out)
+        self.assertEqual(status, 0, out)
+        self.assertIn("integrate:", out)
+        self.assertTrue(out.endswith("\r\x1b[K"), repr(out[-80:]))
+        # not a terminal: no progress at all
+        r = run("lyapunov", lorenz, "--time", "2000")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertNotIn("lyapunov:", r.stderr)
+        self.assertNotIn("\r", r.stderr)
+
+    def test_ctrl_c_stops_a_run_between_rows_far_apart_keeping_the_rows_written(self):
+        lorenz = os.path.join(SRC, "scenes", "lorenz.json")
+        out = self.path("far.csv")
+        e = dict(os.environ)
+        e.pop("DISPLAY", None)
+        # rows at t = 0 and t = 1e9 only: hours of steps between them, during which Ctrl-C must be heard
+        p = subprocess.Popen([RV, "integrate", lorenz, "--time", "1e9", "--every", "1e9", "-o", out],
+                             stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, env=e)
+        deadline = time.time() + 60  # computing once the temporary output exists (the handler is in)
+        while not any(n.startswith(".far.partial-") for n in os.listdir(self.dir)) and time.time() < deadline:
+            self.assertIsNone(p.poll(), "it ended before it computed")
+            time.sleep(0.01)
+        p.send_signal(signal.SIGINT)
+        try:
+            status = p.wait(timeout=60)
+        finally:
+            if p.poll() is None:
+                p.kill()
+        err = p.stderr.read().decode()
+        p.stderr.close()
+        self.assertEqual(status, 130, err)
+        # what was finished is kept (design.md: the rows written, whole), nothing half-written is left
+        self.assertEqual(open(out).read().splitlines(), ["t,x,y,z", "0,1,1,1"])
+        self.assertEqual(sorted(os.listdir(self.dir)), ["far.csv"])
+
+    def compiler_stand_in(self, body):
+        """a model compiler (ROLLVIZ_MODEL_COMPILER) that writes its pid, then runs `body` (sh)"""
+        path = self.path("cc.sh")
+        with open(path, "w") as f:
+            f.write("#!/bin/sh\necho $$ > %s.pid\n%s\n" % (path, body))
+        os.chmod(path, 0o755)
+        return path
+
+    @staticmethod
+    def pid_in(path):
+        """the pid a compiler stand-in wrote, or None before it did"""
+        try:
+            with open(path) as f:
+                return int(f.read())
+        except (OSError, ValueError):
+            return None
+
+    @staticmethod
+    def dead(pid):
+        """whether a process ended (a zombie nobody reaps has ended too)"""
+        try:
+            with open("/proc/%d/stat" % pid) as f:
+                return f.read().rsplit(")", 1)[1].split()[0] == "Z"
+        except OSError:
+            return True
+
+    def wait_for(self, condition, what, seconds=120):
+        deadline = time.time() + seconds
+        while not condition():
+            self.assertLess(time.time(), deadline, what)
+            time.sleep(0.02)
+
+    def test_a_model_compilation_never_blocks_a_run_and_fills_the_cache_for_the_next(self):
+        scene = os.path.join(SRC, "examples", "models", "lorenz.scene.json")
+        cache = self.path("cache")
+        args = ["integrate", scene, "--time", "1", "--every", "0.5"]
+        env = {"ROLLVIZ_MODEL_CACHE": cache, "ROLLVIZ_COMPILE_WAIT": "0.2"}
+        # a compiler that would take ten minutes: the run goes on interpreted, says so once, and is right
+        slow = self.compiler_stand_in("exec sleep 600")
+        r = run(*args, env={**env, "ROLLVIZ_MODEL_COMPILER": slow}, timeout=120)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertEqual(r.stderr.count("runs interpreted for now"), 1, r.stderr)
+        self.assertIn("ROLLVIZ_COMPILE_WAIT", r.stderr)
+        self.assertEqual(r.stdout, run(*args, env={"ROLLVIZ_COMPILE_MODELS": "0"}).stdout)
+        # its compilation goes on after the run, in a process of its own: stopped here
+        helper = int(r.stderr.split("(process ")[1].split(")")[0])
+        self.wait_for(lambda: self.pid_in(slow + ".pid"), "the compiler did not start")
+        compiler = self.pid_in(slow + ".pid")
+        self.assertFalse(self.dead(compiler), "the compiler ended with the run")
+        os.killpg(helper, signal.SIGTERM)
+        self.wait_for(lambda: self.dead(compiler), "the compiler was not stopped")
+
+        # a real compiler that starts only once the run has ended: the next run finds its library cached
+        real = run("info").stdout.split("compiled to native code")[1].split("(")[1].split(",")[0]
+        go = self.path("go")
+        delayed = self.compiler_stand_in('while [ ! -e %s ]; do sleep 0.05; done\nexec %s "$@"' % (go, real))
+        delayed_env = {**env, "ROLLVIZ_MODEL_COMPILER": delayed}
+        r = run(*args, env=delayed_env, timeout=120)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("runs interpreted for now", r.stderr)
+        open(go, "w").close()
+        self.wait_for(lambda: any(n.endswith(".sum") for n in os.listdir(cache)), "nothing was cached", 600)
+        again = run(*args, env=delayed_env, timeout=120)
+        self.assertEqual(again.returncode, 0, again.stderr)
+        self.assertNotIn("compiling", again.stderr)  # loaded from the cache
+        self.assertNotIn("interpreted", again.stderr)
+        rows = [[float(v) for v in line.split(",")] for line in again.stdout.splitlines()[1:]]
+        for a, b in zip(rows, [[float(v) for v in line.split(",")] for line in r.stdout.splitlines()[1:]]):
+            for x, y in zip(a, b):
+                self.assertAlmostEqual(x, y, delta=1e-9 * max(1, abs(y)))
+
+    def test_ctrl_c_stops_a_model_compilation_a_run_waits_for(self):
+        scene = os.path.join(SRC, "examples", "models", "lorenz.scene.json")
+        slow = self.compiler_stand_in("exec sleep 600")
+        e = dict(os.environ, ROLLVIZ_MODEL_CACHE=self.path("cache"), ROLLVIZ_COMPILE_WAIT="inf",
+                 ROLLVIZ_MODEL_COMPILER=slow)
+        e.pop("DISPLAY", None)
+        p = subprocess.Popen([RV, "integrate", scene, "--time", "1", "--every", "0.5"], stdout=subprocess.DEVNULL,
+                             stderr=subprocess.PIPE, env=e)
+        try:
+            self.wait_for(lambda: self.pid_in(slow + ".pid"), "the compiler did not start")
+            compiler = self.pid_in(slow + ".pid")
+            p.send_signal(signal.SIGINT)
+            status = p.wait(timeout=60)
+        finally:
+            if p.poll() is None:
+                p.kill()
+        err = p.stderr.read().decode()
+        p.stderr.close()
+        self.assertEqual(status, 130, err)
+        self.assertIn("compilation was stopped", err)
+        self.wait_for(lambda: self.dead(compiler), "the compiler outlived Ctrl-C")
+
+        # past the wait, the run goes on interpreted while the compiler goes on in its own process: Ctrl-C
+        # stops both (and a run that ends by itself leaves it running, as the test above shows)
+        os.remove(slow + ".pid")
+        e["ROLLVIZ_COMPILE_WAIT"] = "0"
+        out = self.path("long.csv")
+        p = subprocess.Popen([RV, "integrate", scene, "--time", "1e9", "--every", "1e9", "-o", out],
+                             stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, env=e)
+        try:
+            self.wait_for(lambda: self.pid_in(slow + ".pid") and
+                          any(n.startswith(".long.partial-") for n in os.listdir(self.dir)), "it did not start")
+            compiler = self.pid_in(slow + ".pid")
+            p.send_signal(signal.SIGINT)
+            status = p.wait(timeout=60)
+        finally:
+            if p.poll() is None:
+                p.kill()
+        err = p.stderr.read().decode()
+        p.stderr.close()
+        self.assertEqual(status, 130, err)
+        self.assertIn("runs interpreted for now", err)
+        self.wait_for(lambda: self.dead(compiler), "the detached compiler outlived Ctrl-C")
+
+    def test_json_help_promises_no_output_the_object_lacks(self):
+        import re
+        for tool, scene, args in [("lyapunov", "lorenz.json", ["--time", "50"]), ("megno", "lorenz.json", ["--time", "50"]),
+                                  ("poincare", "henon_heiles.json", ["--points", "5"])]:
+            path = os.path.join(SRC, "scenes", scene)
+            r = run(tool, path, *args, "--json")
+            self.assertEqual(r.returncode, 0, r.stderr)
+            keys = set(json.loads(r.stdout))
+            described = run("describe-tool", tool).stdout.split("outputs:")[1].split("\n\n")[0]
+            outputs = [line.split()[0] for line in described.splitlines() if line.strip()]
+            usage = run(tool, "--help").stdout
+            said = usage[usage.index("--json"):].split("\n  -")[0]
+            for name in outputs:
+                if name not in keys:
+                    self.assertIsNone(re.search(r"(?<![\w<])%s(?![\w>])" % re.escape(name), said),
+                                      "%s --json help names '%s', which its object lacks: %s" % (tool, name, said))
+
     def test_scene_path_problems_and_duplicate_keys_are_bad_input(self):
         out = self.path("a.csv")
         args = ["--time", "1", "--every", "1", "--columns", "t", "-o", out]

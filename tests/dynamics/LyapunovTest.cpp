@@ -1,12 +1,14 @@
 // Lyapunov exponents against known answers: Lorenz (0.906, 0, -14.572, sum -(sigma + 1 + beta) = -41/3), the
 // Henon map (sum ln b, largest 0.419), and the integrable Chaplygin ball (all exponents tend to zero).
 #include "dynamics/tools/Lyapunov.h"
+#include "dynamics/tools/Megno.h"
 #include "dynamics/core/ModelWithField.h"
 #include "dynamics/integrators/Everhart.h"
 #include "dynamics/integrators/Rk4.h"
 #include "dynamics/integrators/Verner9.h"
 #include "tests/dynamics/TestSupport.h"
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/QR>
 #include <cmath>
 #include <gtest/gtest.h>
@@ -200,6 +202,33 @@ TEST(Lyapunov, TheSumOfADissipativeFlowsExponentsIsItsDivergence) {
       EXPECT_NEAR(r.last.sum() / (-41.0 / 3.0), 1, test::tol(1e-6)) << name << ", interval " << interval;
       EXPECT_TRUE(r.warning.empty()) << name << ": " << r.warning;
     }
+}
+
+// MEGNO's vector takes part in the step control, each against its own scale (as Lyapunov's vectors): an orbit
+// along the linear flow's expanding direction allows steps that the vector's parts along -33 and -60 do not
+// (followed by the orbit alone, verner9's steps there are far outside its region of stability). The fast
+// Lyapunov indicator is then ln |exp(A T) w0|, exactly known, with every adaptive method at its defaults.
+TEST(Megno, AVectorAlongStronglyContractingDirectionsIsIntegratedToTheTolerance) {
+  const Eigen::Vector4d eigenvalues(0.5, -7, -33, -60);
+  const RotatedLinear m(eigenvalues);
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> eigen(m.A);
+  const Eigen::Vector4d x0 = eigen.eigenvectors().col(3); // the eigenvalue 0.5: the largest, sorted last
+  MegnoSettings s;
+  s.maxTime = 20;
+  const Eigen::Vector4d w0 = Eigen::Vector4d(1, 1.0 / 2, 1.0 / 3, 1.0 / 4).normalized(); // as MegnoRun's
+  Eigen::Vector4d growth;
+  for (int i = 0; i < 4; ++i)
+    growth[i] = std::exp(eigen.eigenvalues()[i] * s.maxTime);
+  const double exact = std::log(
+      (eigen.eigenvectors() * growth.asDiagonal() * eigen.eigenvectors().transpose() * w0).norm());
+  int adaptive = 0;
+  for (const auto& [name, make] : everyIntegratorAtItsDefaults()) {
+    if (make()->fixedStep()) continue; // the user's step: nothing to control
+    ++adaptive;
+    const MegnoResult r = megno(m, make, x0, s);
+    EXPECT_NEAR(r.last.fli / exact, 1, test::tol(1e-6)) << name << ": " << r.last.fli << " vs " << exact;
+  }
+  EXPECT_GE(adaptive, 2);
 }
 
 // the transient is integrated and discarded: nothing is estimated in it, and the exponents are averaged over

@@ -71,6 +71,14 @@ class Module(unittest.TestCase):
         self.assertEqual(r.returncode, 0, f"{args}: {r.stderr}")
         return r
 
+    def test_the_sdk_is_installed_without_debug_info(self):
+        # a dev build's librollviz_dynamics.so carries ~350 MB of it (cmake/Sdk.cmake strips it on install)
+        for name in ("librollviz_dynamics.so", "librollviz_render.so", "librollviz_scenes.so"):
+            found = [os.path.join(d, name) for d, _, files in os.walk(os.path.join(TMP, "prefix")) if name in files]
+            self.assertEqual(len(found), 1, name)
+            with open(found[0], "rb") as f:
+                self.assertNotIn(b".debug_info", f.read(), f"{found[0]} keeps its debug info")
+
     def test_every_list_and_info_names_what_it_added(self):
         self.assertIn("rossler", self.ok("list", "problems").stdout.split())
         self.assertIn("return_times", self.ok("list", "tools").stdout)
