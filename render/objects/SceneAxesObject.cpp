@@ -186,6 +186,10 @@ bool SceneAxesObject::labelsShown(int i) const {
   return axis_[i]->GetVisibility() && axis_[i]->GetLabelVisibility();
 }
 
+int SceneAxesObject::labelFontSize(int i) const {
+  return axis_[i]->GetLabelTextProperty()->GetFontSize();
+}
+
 void SceneAxesObject::fitLabelsToView() {
   if (!renderer_ || renderer_->GetSize()[0] <= 0) return;
   const auto toDisplay = [this](const double* p) {

@@ -50,6 +50,8 @@ public:
   std::vector<double> majorTicks(int axis) const;
   /// Whether axis `i` (0, 1, 2) shows its labels in the last frame.
   bool labelsShown(int i) const;
+  /// The font size (pixels) of axis `i`'s numbers.
+  int labelFontSize(int i) const;
 
 private:
   void rebuild();

@@ -1,6 +1,7 @@
 // The apex view, the scene axes, textures, snapshots (large, transparent), long traces and a cancelled video:
 // built with RenderTest.cpp, so it runs on EGL and on OSMesa.
 #include "render/GrowingPolyline.h"
+#include "render/charts/ChartStyle.h"
 #include "render/charts/PoincareChart.h"
 #include "render/objects/PlaneObject.h"
 
@@ -141,6 +142,24 @@ TEST(SceneAxes, AnAxisSeenEndOnShowsNoLabels) {
     EXPECT_EQ(axes->labelsShown(2), elevation != 90.0);
     ctx->window()->RemoveRenderer(p->visual->renderer());
   }
+}
+
+// issue 61 (6): the axes' numbers were tiny in a large picture (a 1920x1080 snapshot of a small view): while
+// a ScaledPicture lives they are `scale` times as large, and as they were after
+TEST(SceneAxes, TheirNumbersGrowWithALargePicture) {
+  const auto p = play("chaplygin_ball", 1.0, {"view.axes.style=box"});
+  auto ctx = createHeadlessContext(320, 200);
+  p->visual->addTo(ctx->window());
+  (void)capture(ctx->window());
+  const auto* axes = dynamic_cast<const SceneAxesObject*>(p->visual->find("scene_axes"));
+  ASSERT_NE(axes, nullptr);
+  const int before = axes->labelFontSize(0);
+  {
+    const ScaledPicture scaled(ctx->window(), 3);
+    EXPECT_EQ(axes->labelFontSize(0), 3 * before);
+  }
+  EXPECT_EQ(axes->labelFontSize(0), before);
+  ctx->window()->RemoveRenderer(p->visual->renderer());
 }
 
 TEST(SceneAxes, TicksAreWhereTheRangeAndCountsPutThem) {
@@ -542,10 +561,10 @@ void standardMapSea(int n, double th, double p, std::vector<double>& x, std::vec
 TEST(Chart, TickLabelsTellTicksApartAtAnyZoom) {
   PoincareChart chart("theta", "p");
   chart.addSeries({3.14159, 3.1416}, {0.5, 0.6}, seriesColor(0));
+  auto ctx = createHeadlessContext(500, 400);
+  chart.attach(ctx->window());
   const auto labels = [&](double x0, double x1) {
     chart.setRanges(x0, x1, 0, 1);
-    auto ctx = createHeadlessContext(500, 400);
-    chart.attach(ctx->window());
     (void)capture(ctx->window());
     vtkStringArray* l = chart.chart()->GetAxis(vtkAxis::BOTTOM)->GetTickLabels();
     std::vector<std::string> out;

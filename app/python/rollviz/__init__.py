@@ -110,8 +110,9 @@ class Result:
         return self._fields.get(key, default)
 
     def as_dict(self):
-        """A plain copy ready for json.dumps: nested results as dicts, NumPy arrays and numbers as lists and
-        Python numbers (a Result is a Mapping, not a dict: json.dumps(r) alone refuses it)."""
+        """A plain copy ready for json.dumps: nested results as dicts, tables as dicts of their columns, NumPy
+        arrays and numbers as lists and Python numbers (a Result is a Mapping, not a dict: json.dumps(r) alone
+        refuses it)."""
         return _plain(self)
 
     def __dir__(self):
@@ -132,18 +133,6 @@ class Result:
 
 
 _abc.Mapping.register(Result)
-
-
-def _plain(value):
-    if isinstance(value, (Result, dict)):
-        return {k: _plain(v) for k, v in value.items()}
-    if isinstance(value, (list, tuple)):
-        return [_plain(v) for v in value]
-    if isinstance(value, _np.ndarray):
-        return value.tolist()
-    if isinstance(value, _np.generic):
-        return value.item()
-    return value
 
 
 def _brief(value):
@@ -392,15 +381,18 @@ def _check_finite(call, name, value):
 
 
 def _plain(value):
-    """A value as the scene loader reads it (NumPy scalars and arrays as Python's)."""
+    """A value as the scene loader and json read it (NumPy scalars and arrays as Python's, results as dicts, a
+    table as a dict of its columns)."""
     if isinstance(value, _np.ndarray):
         return value.tolist()
     if isinstance(value, _np.generic):
         return value.item()
     if isinstance(value, (list, tuple)):
         return [_plain(v) for v in value]
-    if isinstance(value, dict):
+    if isinstance(value, (dict, Result)):
         return {k: _plain(v) for k, v in value.items()}
+    if isinstance(value, Table):
+        return {c: _plain(value[c]) for c in value.columns}
     return value
 
 
