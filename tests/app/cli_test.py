@@ -37,6 +37,21 @@ def varied(px):
     return var ** 0.5 > 5 and len(set(px)) > 50
 
 
+def interrupt(p):
+    """Ctrl-C to a run started with stderr=PIPE (killed if it is still there after a minute): its status and
+    what it said."""
+    try:
+        if p.poll() is None:
+            p.send_signal(signal.SIGINT)
+            p.wait(timeout=60)
+    finally:
+        if p.poll() is None:
+            p.kill()
+            p.wait()
+    err = p.stderr.read().decode()
+    p.stderr.close()
+    return p.returncode, err
+
 class Cli(unittest.TestCase):
     def setUp(self):
         self.tmp = tempfile.TemporaryDirectory()
@@ -1172,13 +1187,8 @@ class Cli(unittest.TestCase):
         try:
             self.wait_for(lambda: self.pid_in(slow + ".pid"), "the compiler did not start")
             compiler = self.pid_in(slow + ".pid")
-            p.send_signal(signal.SIGINT)
-            status = p.wait(timeout=60)
         finally:
-            if p.poll() is None:
-                p.kill()
-        err = p.stderr.read().decode()
-        p.stderr.close()
+            status, err = interrupt(p)
         self.assertEqual(status, 130, err)
         self.assertIn("compilation was stopped", err)
         self.wait_for(lambda: self.dead(compiler), "the compiler outlived Ctrl-C")
@@ -1194,13 +1204,8 @@ class Cli(unittest.TestCase):
             self.wait_for(lambda: self.pid_in(slow + ".pid") and
                           any(n.startswith(".long.partial-") for n in os.listdir(self.dir)), "it did not start")
             compiler = self.pid_in(slow + ".pid")
-            p.send_signal(signal.SIGINT)
-            status = p.wait(timeout=60)
         finally:
-            if p.poll() is None:
-                p.kill()
-        err = p.stderr.read().decode()
-        p.stderr.close()
+            status, err = interrupt(p)
         self.assertEqual(status, 130, err)
         self.assertIn("runs interpreted for now", err)
         self.wait_for(lambda: self.dead(compiler), "the detached compiler outlived Ctrl-C")
