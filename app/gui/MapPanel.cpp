@@ -125,7 +125,8 @@ void MapPanel::setScene(const Scene& scene, bool startTrajectory) {
   scene_ = &scene;
   resetMap3D(false);
   const auto names = PoincareMap(*scene.model, scene.startIntegrator(), scene.poincare).coordinateNames();
-  axisNames_ = {names.at(0), names.size() > 1 ? names[1] : "t"};
+  // a map of one coordinate is drawn against the crossing time ("time": a rotated "t" read as an arrow)
+  axisNames_ = {names.at(0), names.size() > 1 ? names[1] : "time"};
   // one chart for the panel's life: replacing it would leave the window's interactor (and its timers)
   // driving a destroyed chart scene
   if (!chart_) {

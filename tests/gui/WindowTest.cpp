@@ -29,6 +29,7 @@
 #include "scenes/SweepTask.h"
 #include "scenes/ToolRunner.h"
 #include "tests/gui/JobStatusText.h"
+#include <vtkAxis.h>
 #include <vtkCamera.h>
 #include <vtkChartXY.h>
 #include <vtkGenericOpenGLRenderWindow.h>
@@ -2041,6 +2042,8 @@ private slots:
     QTRY_VERIFY2_WITH_TIMEOUT(window_->results().contains(said), qPrintable(window_->results()), 60000);
     QCOMPARE(window_->results().count(said), 1);
     QVERIFY(window_->mapPanel()->jobs().find(window_->mapPanel()->sceneJobs().front())->running());
+    // its one map coordinate is drawn against the crossing time, titled so (a rotated "t" read as an arrow)
+    QCOMPARE(window_->mapPanel()->chart().chart()->GetAxis(vtkAxis::LEFT)->GetTitle(), vtkStdString("time"));
   }
 
   // Issue 61 (2), the rest: Tools > Continue the fixed point continues the point found last (not the scene's
