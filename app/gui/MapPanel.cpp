@@ -282,6 +282,7 @@ int MapPanel::restoreTrajectories(const std::vector<SavedTrajectory>& saved) {
     const int plot = chart_->addSeries({}, {}, t.colour);
     series_.push_back({&job, raw, t.x, t.y, t.z, plot, t.colour});
     Series& s = series_.back();
+    s.since.start();
     s.first = t.first, s.last = t.last;
     s.origin = QString::fromStdString(t.origin);
     drawSeries(s);
