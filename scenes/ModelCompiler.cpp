@@ -10,6 +10,7 @@
 #include <atomic>
 #include <cerrno>
 #include <chrono>
+#include <condition_variable>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -305,11 +306,29 @@ std::string seconds(double s) {
   return text;
 }
 
-/// An in-process compiler still running at exit is stopped (a detached one goes on: it fills the cache).
+/// The threads that wait for an in-process compiler left running past the wait budget.
+struct Waiters {
+  std::mutex mutex;
+  std::condition_variable ended;
+  int count = 0;
+};
+Waiters& waiters() {
+  static auto* w = new Waiters;
+  return *w;
+}
+
+/// An in-process compiler still running at exit is stopped (a detached one goes on: it fills the cache), and
+/// the threads waiting for them end before the process does: one still cleaning the cache while the process
+/// exited crashed LeakSanitizer's exit check.
 void stopCompilersAtExit() {
-  const std::lock_guard lock(stateMutex());
-  for (const Running& r : running())
-    if (!r.detached) stop(r);
+  {
+    const std::lock_guard lock(stateMutex());
+    for (const Running& r : running())
+      if (!r.detached) stop(r);
+  }
+  Waiters& w = waiters();
+  std::unique_lock lock(w.mutex);
+  w.ended.wait_for(lock, std::chrono::seconds(10), [&w] { return w.count == 0; });
 }
 
 } // namespace
@@ -477,9 +496,18 @@ CompiledModelFactory compiledModel(const std::shared_ptr<const EquationSystem>& 
         std::call_once(registered, [] { std::atexit(stopCompilersAtExit); });
       }
       // it ends on its own: the library is installed (here, when not detached) for the next process
-      std::thread([pid, finish] {
+      if (!detached) {
+        const std::lock_guard lock(waiters().mutex);
+        ++waiters().count;
+      }
+      std::thread([pid, finish, detached] {
         finish(waitFor(pid));
         forget(pid);
+        if (detached) return;
+        Waiters& w = waiters();
+        const std::lock_guard lock(w.mutex);
+        --w.count;
+        w.ended.notify_all();
       }).detach();
       return {};
     }
