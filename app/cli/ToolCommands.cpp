@@ -137,8 +137,8 @@ Command addRegisteredToolCommand(CLI::App* cmd, const ToolEntry& tool) {
       cmd->add_option("--" + a.name, o->arguments[a.name], a.description)->type_name(a.valueName);
   // the outputs mix the result's fields with its table's columns, which the object does not hold
   cmd->add_flag("--json", o->json,
-                "print the result's fields as one JSON object (of the outputs `rollviz describe-tool " + tool.id +
-                    "` lists, those that are not the table's columns); -o FILE writes the table");
+                "print the result's fields as one JSON object (of the outputs `rollviz describe-tool " +
+                    tool.id + "` lists, those that are not the table's columns); -o FILE writes the table");
   std::vector<std::string> formats{".csv"};
   std::string what =
       runner.tableIsResult ? "CSV file (default: standard output)" : "CSV file: the tool's table";

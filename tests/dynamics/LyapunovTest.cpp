@@ -1,11 +1,11 @@
 // Lyapunov exponents against known answers: Lorenz (0.906, 0, -14.572, sum -(sigma + 1 + beta) = -41/3), the
 // Henon map (sum ln b, largest 0.419), and the integrable Chaplygin ball (all exponents tend to zero).
 #include "dynamics/tools/Lyapunov.h"
-#include "dynamics/tools/Megno.h"
 #include "dynamics/core/ModelWithField.h"
 #include "dynamics/integrators/Everhart.h"
 #include "dynamics/integrators/Rk4.h"
 #include "dynamics/integrators/Verner9.h"
+#include "dynamics/tools/Megno.h"
 #include "tests/dynamics/TestSupport.h"
 
 #include <Eigen/Eigenvalues>
@@ -219,8 +219,8 @@ TEST(Megno, AVectorAlongStronglyContractingDirectionsIsIntegratedToTheTolerance)
   Eigen::Vector4d growth;
   for (int i = 0; i < 4; ++i)
     growth[i] = std::exp(eigen.eigenvalues()[i] * s.maxTime);
-  const double exact = std::log(
-      (eigen.eigenvectors() * growth.asDiagonal() * eigen.eigenvectors().transpose() * w0).norm());
+  const double exact =
+      std::log((eigen.eigenvectors() * growth.asDiagonal() * eigen.eigenvectors().transpose() * w0).norm());
   int adaptive = 0;
   for (const auto& [name, make] : everyIntegratorAtItsDefaults()) {
     if (make()->fixedStep()) continue; // the user's step: nothing to control
