@@ -2,6 +2,7 @@
 // playback, snapshots and recordings, and the chart, sweep, plot and apex windows it opens.
 #include "app/gui/MainWindow.h"
 
+#include "app/gui/ApexWindow.h"
 #include "app/gui/ChartWindow.h"
 #include "app/gui/ControlPanel.h"
 #include "app/gui/FilterWindow.h"
@@ -129,11 +130,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   });
   connect(tools_, &ToolManager::message, this, [this](const QString& m) { report(m, 8000); });
   connect(tools_, &ToolManager::selectedJob, map_, &MapPanel::highlightJob);
+  apex_ = std::make_unique<ApexWindow>(this, [this](QWidget* w) { placeWindow(w); });
   connect(tools_, &ToolManager::selectedJob, this, [this](int id) {
-    if (apex_) followInApex(id);
+    if (scene_ && apex_) apex_->follow(id, *map_, *scene_, shownTime_);
   });
   connect(map_, &MapPanel::jobRemoved, this, [this](int id) {
-    if (apex_ && id == apexSource_) followInApex(-1);
+    if (scene_ && apex_) apex_->forget(id, *map_, *scene_, shownTime_);
   });
   tools_->setRowLook([this](int id) {
     ToolManager::RowLook look{map_->trajectoryStart(id), std::nullopt};
@@ -229,7 +231,6 @@ MainWindow::~MainWindow() {
   map_->stopAll();
   stream_.reset();
   if (visual_) view_->renderWindow()->RemoveRenderer(visual_->renderer());
-  if (apex_ && apexView_) apexView_->renderWindow()->RemoveRenderer(apex_->renderer());
   apex_.reset();
 }
 
@@ -245,10 +246,9 @@ ViewOptions MainWindow::effectiveView(const ViewOptions& base) const {
 void MainWindow::editObject(const std::string& name, const ObjectOptions& o) {
   edits_.objects[name] = o;
   if (visual_) visual_->setOptions(name, o);
-  if (apex_ && apex_->find(name)) apex_->setOptions(name, o);
+  apex_->setOptions(name, o);
   showViewSettings();
   view_->update();
-  if (apexView_) apexView_->update();
 }
 
 void MainWindow::editAxes(const AxesOptions& a) {
@@ -406,10 +406,7 @@ void MainWindow::useScene(std::unique_ptr<Scene> scene, const QString& path, con
   if (!keep) map_->stopAll(); // its jobs hold the old scene's model until setScene replaces them
   if (visual_) view_->renderWindow()->RemoveRenderer(visual_->renderer());
   visual_.reset();
-  if (apex_ && apexView_) apexView_->renderWindow()->RemoveRenderer(apex_->renderer());
-  apex_.reset();
-  if (apexTap_) apexTap_->closed = true;
-  apexTap_.reset(), apexSource_ = -1;
+  apex_->dropScene();
   if (!keep)
     for (PlotWindow* p : map_->plotWindows()) // they read the old model's observables
       delete p;
@@ -437,7 +434,7 @@ void MainWindow::useScene(std::unique_ptr<Scene> scene, const QString& path, con
     visual_->renderer()->ResetCameraClippingRange();
     view_->update();
   }
-  if (apexWindow_ && apexWindow_->isVisible()) openApexWindow();
+  if (apex_->visible()) openApexWindow();
 }
 
 void MainWindow::watchModelFile() {
@@ -469,10 +466,7 @@ void MainWindow::restart() {
     visual_->show(0.0, scene_->initialState);
     visual_->resetCamera();
   }
-  if (apex_ && !apexTap_) { // (following a map trajectory, it goes on)
-    apex_->clear();
-    apex_->show(0.0, scene_->initialState);
-  }
+  apex_->restart(*scene_);
   for (PlotWindow* p : map_->plotWindows())
     p->clear();
   error_.clear();
@@ -504,7 +498,7 @@ void MainWindow::tick() {
   // sum
   const bool mapFrame = !mapWaits_ && map_->drain();
   mapWaits_ = mapFrame;
-  feedApexFromMap();
+  if (scene_) apex_->feedFromMap(*scene_);
   if (!stream_) return;
   if (playing_ && error_.isEmpty()) {
     // never run further ahead of what is shown than a fraction of a second of work
@@ -518,15 +512,15 @@ void MainWindow::tick() {
       lastStep_ = std::abs(batch_.times[i] - *lastStepEnd_);
     lastStepEnd_ = batch_.times[i];
     visual_->advance(batch_.times[i], batch_.states[i]);
-    if (apex_ && !apexTap_) apex_->advance(batch_.times[i], batch_.states[i]);
+    apex_->advance(batch_.times[i], batch_.states[i]);
     for (PlotWindow* p : plots)
       p->offer(batch_.times[i], batch_.states[i].data());
   }
   if (batch_.reached) {
     visual_->show(batch_.atTime, batch_.at);
-    if (apex_ && !apexTap_) apex_->show(batch_.atTime, batch_.at), apexTime_ = batch_.atTime;
+    apex_->show(batch_.atTime, batch_.at);
     shownTime_ = batch_.atTime;
-    if (apexView_ && apexWindow_->isVisible()) apexView_->update();
+    apex_->update();
   }
   if (!batch_.error.empty()) {
     error_ = QString::fromStdString(batch_.error);
@@ -779,48 +773,7 @@ MultipliersWindow* MainWindow::openMultipliersWindow() {
 
 QWidget* MainWindow::openApexWindow() {
   if (!scene_) return nullptr;
-  if (!apexWindow_) {
-    apexView_ = QtVtkWidget::inOwnWindow(this, "rollviz — apex motion");
-    apexWindow_ = apexView_->window();
-    placeWindow(apexWindow_);
-  }
-  if (!apex_ && scene_->model->geometry()) {
-    ViewOptions v = effectiveView(scene_->view);
-    v.kind = ViewKind::Apex;
-    v.axes.style = AxesOptions::Style::Box;
-    v.axes.tickmarks = 4, v.axes.subticks = 1;
-    apex_ = std::make_unique<VisualScene>(*scene_->model, v, scene_->initialState);
-    apex_->addTo(apexView_->renderWindow());
-  }
-  apexWindow_->show();
-  apexWindow_->raise();
-  apexView_->update();
-  return apexWindow_;
-}
-
-void MainWindow::followInApex(int id) {
-  if (apexTap_) apexTap_->closed = true;
-  apexTap_ = map_->tapTrajectory(
-      id, PlotSettings{.condition = "t", .period = 0.04, .maxPoints = 1L << 40, .wholeState = true});
-  apexSource_ = apexTap_ ? id : -1;
-  apex_->clear(); // a new trajectory: its own traces
-  if (!apexTap_) apex_->show(shownTime_, scene_->initialState);
-  apexWindow_->setWindowTitle(apexTap_ ? QString("rollviz — apex motion: trajectory %1").arg(id)
-                                       : QString("rollviz — apex motion: the 3D view's run"));
-}
-
-void MainWindow::feedApexFromMap() {
-  if (!apexTap_ || !apex_) return;
-  std::vector<std::vector<double>> states;
-  if (apexTap_->points.take(states) == 0) return;
-  Eigen::VectorXd x(scene_->model->dimension());
-  for (const auto& v : states) { // (t, x...)
-    x = Eigen::Map<const Eigen::VectorXd>(v.data() + 1, x.size());
-    apex_->advance(v[0], x);
-  }
-  apex_->show(states.back()[0], x);
-  apexTime_ = states.back()[0];
-  if (apexWindow_->isVisible()) apexView_->update();
+  return apex_->open(*scene_, effectiveView(scene_->view));
 }
 
 void MainWindow::closeEvent(QCloseEvent* e) {

@@ -2,8 +2,10 @@
 // around it (control panel, map, tool manager, Results). The motion is integrated on a TrajectoryStream
 // thread; the GUI thread only draws. Its rooms: MainWindow.cpp (the scene, its run, pictures and videos, the
 // windows it opens), MainWindowMenus.cpp (toolbars, menus and their dialogs), MainWindowSession.cpp (scenes
-// and sessions saved and opened, Undo, the jobs kept at exit).
+// and sessions saved and opened, Undo, the jobs kept at exit); beside it ApexWindow (the apex motion window)
+// and MapHistory (Undo's and Redo's steps).
 #pragma once
+#include "app/gui/MapHistory.h"
 #include "dynamics/jobs/PlotTap.h"
 #include "dynamics/jobs/TrajectoryStream.h"
 #include "render/VisualScene.h"
@@ -35,6 +37,7 @@ class QPlainTextEdit;
 
 namespace rv {
 
+class ApexWindow;
 class QtVtkWidget;
 class ChartWindow;
 class SweepWindow;
@@ -167,15 +170,12 @@ public:
   /// map trajectory selected in the tool manager (manual §2.4.5: the Poincaré map outputs into it as it
   /// integrates, every 1/25 of a time unit).
   QWidget* openApexWindow();
-  /// The trajectory the apex window follows: a map trajectory's job id, or -1 for the 3D view's run.
-  int apexSource() const { return apexSource_; }
-  /// Time of the last state the apex window was given.
-  double apexTime() const { return apexTime_; }
+  /// The apex motion window (app/gui/ApexWindow.h): what it follows and draws.
+  const ApexWindow& apex() const { return *apex_; }
   VisualizerSettings* settings() const { return settings_; }
   /// The appearance edits kept over re-runs (settings panel, toolbar).
   const ViewOptions& viewEdits() const { return edits_; }
   VisualScene* visual() const { return visual_.get(); }
-  VisualScene* apexVisual() const { return apex_.get(); }
 
 public slots:
   void togglePlay();
@@ -236,15 +236,8 @@ private:
   std::unique_ptr<Scene> sceneOf(const nlohmann::json& document);
   void useScene(std::unique_ptr<Scene> scene, const QString& source, const QString& origin = {},
                 MapUse map = MapUse::Replace);
-  /// One step of Edit > Undo: a replaced map (its scene and trajectories), or trajectories deleted.
-  struct UndoStep {
-    QString what;
-    std::optional<Session> map;
-    std::vector<SavedTrajectory> deleted;
-    std::vector<SavedToolOutput> deletedTools;
-  };
-  std::vector<UndoStep> undo_;
-  std::vector<UndoStep> redo_; ///< what Undo took back, newest last: each the whole map before the undo
+  /// Edit > Undo and Redo's steps (app/gui/MapHistory.h); the menu's actions show them.
+  MapHistory history_{[this] { updateUndoActions(); }};
   QAction* undoAction_ = nullptr;
   QAction* redoAction_ = nullptr;
   void updateUndoActions();
@@ -253,8 +246,6 @@ private:
   Session mapAsItStands(bool goOn) const;
   /// Shows a map Undo or Redo kept: its scene, trajectories and tool outputs, and the user's zoom.
   void useMapOf(const Session& map);
-  static constexpr std::size_t kUndoSteps = 20;
-  void pushUndo(UndoStep step);
   /// The map as it stands, as an Undo step, before it is replaced.
   void rememberMapForUndo();
   /// The trajectories and tool outputs among jobs `roots` (and those under them), before Delete takes them.
@@ -281,17 +272,7 @@ private:
   bool editedAxes_ = false;
   std::optional<bool> editedFollow_; ///< the toolbar's Follow body, once toggled (over view.camera.follow)
   QAction* followAction_ = nullptr;
-  // the apex window (a second visualizer fed with the same states)
-  QWidget* apexWindow_ = nullptr;
-  QtVtkWidget* apexView_ = nullptr;
-  std::unique_ptr<VisualScene> apex_;
-  int apexSource_ = -1;
-  std::shared_ptr<PlotTap> apexTap_; ///< the followed map trajectory's states
-  double apexTime_ = 0;
-  /// Follows map trajectory `id` in the apex window (-1 or a job that is not one: the 3D view's run).
-  void followInApex(int id);
-  /// Gives the apex window what the followed map trajectory computed since the last frame.
-  void feedApexFromMap();
+  std::unique_ptr<ApexWindow> apex_;
   // a recording in progress: the view's pictures into a ScreenRecorder, timed by a wall clock
   struct Recording;
   std::unique_ptr<Recording> recorder_;

@@ -37,22 +37,21 @@ bool MainWindow::mayReplaceMap(const QString& action) {
              QMessageBox::Yes | QMessageBox::No, QMessageBox::No) == QMessageBox::Yes;
 }
 
-void MainWindow::pushUndo(UndoStep step) {
-  undo_.push_back(std::move(step));
-  if (undo_.size() > kUndoSteps) undo_.erase(undo_.begin());
-  redo_.clear(); // a new change: what was undone stays undone
-  updateUndoActions();
+void MainWindow::updateUndoActions() {
+  if (!undoAction_) return; // (before the menus are built)
+  const QString undo = history_.undoText(), redo = history_.redoText();
+  undoAction_->setEnabled(!undo.isEmpty());
+  undoAction_->setText(undo.isEmpty() ? QString("Undo") : "Undo " + undo);
+  redoAction_->setEnabled(!redo.isEmpty());
+  redoAction_->setText(redo.isEmpty() ? QString("Redo") : "Redo " + redo);
 }
 
-void MainWindow::updateUndoActions() {
-  undoAction_->setEnabled(!undo_.empty());
-  undoAction_->setText(undo_.empty() ? QString("Undo") : "Undo " + undo_.back().what);
-  redoAction_->setEnabled(!redo_.empty());
-  redoAction_->setText(redo_.empty() ? QString("Redo") : "Redo " + redo_.back().what);
+QString MainWindow::undoText() const {
+  return history_.undoText();
 }
 
 QString MainWindow::redoText() const {
-  return redo_.empty() ? QString() : redo_.back().what;
+  return history_.redoText();
 }
 
 Session MainWindow::mapAsItStands(bool goOn) const {
@@ -72,15 +71,11 @@ void MainWindow::useMapOf(const Session& map) {
     map_->setMapRanges(r->get<std::array<double, 4>>());
 }
 
-QString MainWindow::undoText() const {
-  return undo_.empty() ? QString() : undo_.back().what;
-}
-
 void MainWindow::rememberMapForUndo() {
   Session map = mapAsItStands(false); // they stop: the map is replaced next
   QString what = QString("(back to %1 with %2 trajectories").arg(sceneName()).arg(map.trajectories.size());
   what += map.tools.empty() ? QString(")") : QString(" and %1 tool outputs)").arg(map.tools.size());
-  pushUndo({what, std::move(map), {}});
+  history_.push({what, std::move(map), {}, {}});
 }
 
 void MainWindow::rememberDeletedForUndo(const std::vector<int>& roots) {
@@ -97,51 +92,47 @@ void MainWindow::rememberDeletedForUndo(const std::vector<int>& roots) {
   if (!deleted.empty())
     parts << QString("%1 trajector%2").arg(deleted.size()).arg(deleted.size() > 1 ? "ies" : "y");
   if (!tools.empty()) parts << QString("%1 tool output%2").arg(tools.size()).arg(tools.size() > 1 ? "s" : "");
-  pushUndo({"(delete of " + parts.join(" and ") + ")", std::nullopt, std::move(deleted), std::move(tools)});
+  history_.push(
+      {"(delete of " + parts.join(" and ") + ")", std::nullopt, std::move(deleted), std::move(tools)});
 }
 
 bool MainWindow::undo() {
-  if (undo_.empty() || !scene_) return false;
-  UndoStep step = std::move(undo_.back());
-  undo_.pop_back();
+  if (!scene_) return false;
+  std::optional<MapHistory::Step> step = history_.takeUndo();
+  if (!step) return false;
   // Redo puts back the map as it stands now, whatever the step was (a replaced map, a delete); its running
   // trajectories go on (a delete's undo keeps the map)
   Session now = mapAsItStands(true);
   try {
-    if (step.map)
-      useMapOf(*step.map);
+    if (step->map)
+      useMapOf(*step->map);
     else {
-      map_->restoreTrajectories(step.deleted);
-      map_->restoreToolOutputs(step.deletedTools);
+      map_->restoreTrajectories(step->deleted);
+      map_->restoreToolOutputs(step->deletedTools);
     }
   } catch (const std::exception& e) {
-    updateUndoActions();
-    report(QString("cannot undo %1: %2").arg(step.what, e.what()), 0);
+    report(QString("cannot undo %1: %2").arg(step->what, e.what()), 0);
     return false;
   }
-  redo_.push_back({step.what, std::move(now), {}, {}});
-  updateUndoActions();
-  report("undone: " + step.what, 5000);
+  history_.undone(step->what, std::move(now));
+  report("undone: " + step->what, 5000);
   return true;
 }
 
 bool MainWindow::redo() {
-  if (redo_.empty() || !scene_) return false;
-  UndoStep step = std::move(redo_.back());
-  redo_.pop_back();
+  if (!scene_) return false;
+  std::optional<MapHistory::Step> step = history_.takeRedo();
+  if (!step) return false;
   Session now = mapAsItStands(true);
   try {
-    useMapOf(*step.map);
+    useMapOf(*step->map);
   } catch (const std::exception& e) {
-    updateUndoActions();
-    report(QString("cannot redo %1: %2").arg(step.what, e.what()), 0);
+    report(QString("cannot redo %1: %2").arg(step->what, e.what()), 0);
     return false;
   }
-  // Undo again goes back to the map before this redo (not through pushUndo: the other redos stay)
-  undo_.push_back({step.what, std::move(now), {}, {}});
-  if (undo_.size() > kUndoSteps) undo_.erase(undo_.begin());
-  updateUndoActions();
-  report("redone: " + step.what, 5000);
+  // Undo again goes back to the map before this redo
+  history_.redone(step->what, std::move(now));
+  report("redone: " + step->what, 5000);
   return true;
 }
 

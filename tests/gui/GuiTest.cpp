@@ -1,8 +1,10 @@
 // Qt Tests of the widgets (offscreen platform). The control panel: forms generated from the parameter tables
 // (every parameter of the problem, the method and the tools has an editor), edits written into the scene
 // document (only the touched fields, choices by name), and Apply emitting the document. The tool manager: the
-// jobs as a tree, stop / continue / restart / delete on the selected one.
+// jobs as a tree, stop / continue / restart / delete on the selected one. The map's Undo / Redo history: its
+// order and bounds.
 #include "app/gui/ControlPanel.h"
+#include "app/gui/MapHistory.h"
 #include "app/gui/ParameterForm.h"
 #include "app/gui/PlotFilterDialog.h"
 #include "app/gui/ToolManager.h"
@@ -299,6 +301,44 @@ private slots:
   }
 };
 
+class MapHistoryTest : public QObject {
+  Q_OBJECT
+private slots:
+  // newest first, at most kSteps; a new change forgets what was undone; a redo keeps the other redos
+  void keepsStepsInOrderAndForgetsRedoOnANewChange() {
+    int changes = 0;
+    MapHistory history([&] { ++changes; });
+    const auto step = [](int k) { return MapHistory::Step{QString("step %1").arg(k), std::nullopt, {}, {}}; };
+    for (int k = 1; k <= int(MapHistory::kSteps) + 5; ++k)
+      history.push(step(k));
+    QCOMPARE(changes, int(MapHistory::kSteps) + 5);
+    int undone = 0;
+    QString last;
+    while (auto s = history.takeUndo())
+      ++undone, last = s->what;
+    QCOMPARE(undone, int(MapHistory::kSteps)); // the oldest five are gone
+    QCOMPARE(last, QString("step 6"));
+    QVERIFY(history.undoText().isEmpty());
+
+    history.push(step(1));
+    history.push(step(2));
+    auto s = history.takeUndo();
+    history.undone(s->what, Session{}); // the map before the undo, for Redo
+    s = history.takeUndo();
+    history.undone(s->what, Session{});
+    QCOMPARE(history.redoText(), QString("step 1"));
+    auto r = history.takeRedo();
+    QCOMPARE(r->what, QString("step 1"));
+    QVERIFY(r->map.has_value());
+    history.redone(r->what, Session{});
+    QCOMPARE(history.undoText(), QString("step 1"));
+    QCOMPARE(history.redoText(), QString("step 2")); // the other redo stays
+    history.push(step(3));
+    QVERIFY(history.redoText().isEmpty()); // a new change: what was undone stays undone
+    QCOMPARE(history.undoText(), QString("step 3"));
+  }
+};
+
 } // namespace rv
 
 int main(int argc, char** argv) {
@@ -310,6 +350,10 @@ int main(int argc, char** argv) {
   }
   {
     rv::ToolManagerTest t;
+    failed += QTest::qExec(&t, argc, argv);
+  }
+  {
+    rv::MapHistoryTest t;
     failed += QTest::qExec(&t, argc, argv);
   }
   return failed ? 1 : 0;

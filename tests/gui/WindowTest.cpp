@@ -3,6 +3,7 @@
 // and record write a real PNG and a valid MP4 (ffprobe) while the event loop keeps running; a chart (filter)
 // window and the apex window draw real pictures. Screenshots of each window are kept in ROLLVIZ_TEST_OUTPUT.
 #include "app/gui/AboutDialog.h"
+#include "app/gui/ApexWindow.h"
 #include "app/gui/ChartWindow.h"
 #include "app/gui/ControlPanel.h"
 #include "app/gui/FilterWindow.h"
@@ -817,15 +818,15 @@ private slots:
   void apexWindowShowsTheApexes() {
     if (!window_->playing()) window_->togglePlay(); // it needs the 3D view's run going
     QWidget* w = window_->openApexWindow();
-    QVERIFY(w && window_->apexVisual());
-    QVERIFY(window_->apexVisual()->find("apex_z"));
-    QTRY_VERIFY_WITH_TIMEOUT(window_->apexTime() > 0.1, 60000); // it has drawn the run for a while
+    QVERIFY(w && window_->apex().visual());
+    QVERIFY(window_->apex().visual()->find("apex_z"));
+    QTRY_VERIFY_WITH_TIMEOUT(window_->apex().time() > 0.1, 60000); // it has drawn the run for a while
     auto* view = w->findChild<QtVtkWidget*>();
     QVERIFY(view);
     const QImage img = view->grabFramebuffer();
     QVERIFY(keep(img, "window_apex.png"));
     QVERIFY(varied(img));
-    QCOMPARE(window_->apexSource(), -1); // the 3D view's run
+    QCOMPARE(window_->apex().source(), -1); // the 3D view's run
     // manual §2.4.5: the Poincaré map outputs into it -- selecting a map trajectory in the tool manager makes
     // the apex window follow that job's integration (far ahead of the 3D view's real-time run), on its level
     MapPanel* map = window_->mapPanel();
@@ -835,10 +836,10 @@ private slots:
     QTRY_VERIFY_WITH_TIMEOUT(window_->results().contains(QString("trajectory #%1 started").arg(id)), 60000);
     window_->toolManager()->refresh();
     window_->toolManager()->select(id);
-    QCOMPARE(window_->apexSource(), id);
-    QTRY_VERIFY_WITH_TIMEOUT(window_->apexTime() > window_->shownTime() + 20, 60000);
+    QCOMPARE(window_->apex().source(), id);
+    QTRY_VERIFY_WITH_TIMEOUT(window_->apex().time() > window_->shownTime() + 20, 60000);
     map->removeJob(*map->jobs().find(id)); // the apex window goes back to the 3D view's run
-    QCOMPARE(window_->apexSource(), -1);
+    QCOMPARE(window_->apex().source(), -1);
   }
 
   // the manual's workflow: a problem, a click on the map starts a trajectory whose points arrive; stop it,
