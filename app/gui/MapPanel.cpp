@@ -10,7 +10,6 @@
 #include "dynamics/jobs/MegnoTask.h"
 #include "dynamics/jobs/PoincareTask.h"
 #include "dynamics/tools/ToolSettings.h"
-#include "render/charts/Chart3D.h"
 #include "scenes/SceneLoader.h"
 #include "scenes/SceneTools.h"
 
@@ -31,7 +30,7 @@
 
 namespace rv {
 
-MapPanel::MapPanel(QWidget* parent) : QWidget(parent) {
+MapPanel::MapPanel(QWidget* parent) : QWidget(parent), map3D_(std::make_unique<Map3DWindow>(this)) {
   view_ = new QtVtkWidget(this);
   // the chart's scene asks for a frame 40 ms after every change; drain() has painted it by then
   view_->setRenderWanted([this] { return chart_ && chart_->changedSincePainted(); });
@@ -533,7 +532,7 @@ bool MapPanel::drain() {
   markDiagrams(false);
   if (changed) {
     view_->update();
-    feedMap3D();
+    map3D_->feed(map3DTracks());
   }
   return changed;
 }
@@ -690,10 +689,7 @@ void MapPanel::highlightJob(int id) {
   // every window that draws it (manual §2.1)
   for (PlotWindow* p : plotWindows())
     p->highlight(id);
-  if (map3D_) {
-    map3D_->select(index); // its series follow the trajectories' order
-    if (map3DWindow_->isVisible()) map3DView_->update();
-  }
+  map3D_->select(index); // its series follow the trajectories' order
 }
 
 std::pair<long, long> MapPanel::shownSpan(const Series& s) {
@@ -799,14 +795,19 @@ long MapPanel::shownPoints(int id) const {
   return 0;
 }
 
+std::vector<Map3DWindow::Track> MapPanel::map3DTracks() const {
+  std::vector<Map3DWindow::Track> tracks;
+  tracks.reserve(series_.size());
+  for (const auto& s : series_)
+    tracks.push_back({&s.x, &s.y, &s.z});
+  return tracks;
+}
+
 void MapPanel::resetMap3D(bool reopen) {
-  if (!map3D_) return;
-  map3DView_->renderWindow()->RemoveRenderer(map3D_->renderer()); // the window's context is alive here
-  map3D_.reset();
-  if (reopen && map3DWindow_->isVisible())
-    openMap3D();
-  else
-    map3DWindow_->hide();
+  if (!map3D_->open()) return;
+  const bool again = reopen && map3D_->visible();
+  map3D_->reset(again);
+  if (again) openMap3D();
 }
 
 QWidget* MapPanel::openMap3D() {
@@ -818,37 +819,11 @@ QWidget* MapPanel::openMap3D() {
         "Map3D: this map is two-dimensional (Windows > Charts > map3d shows it on its energy level)");
     return nullptr;
   }
-  if (!map3DWindow_) {
-    map3DView_ = QtVtkWidget::inOwnWindow(this, "rollviz — Map3D");
-    map3DWindow_ = map3DView_->window();
-  }
-  if (!map3D_) {
-    map3D_ = std::make_unique<Chart3D>(std::array<std::string, 3>{names[0], names[1], names[2]});
-    map3DSeries_ = 0;
-    feedMap3D();
-    map3D_->attach(map3DView_->renderWindow());
-  }
-  map3DWindow_->show();
-  map3DWindow_->raise();
-  return map3DWindow_;
-}
-
-void MapPanel::feedMap3D() {
-  if (!map3D_) return;
-  for (; map3DSeries_ < series_.size(); ++map3DSeries_)
-    map3D_->addSeries({}, {}, {}, seriesColor(static_cast<int>(map3DSeries_)), 3);
-  for (std::size_t k = 0; k < series_.size(); ++k)
-    if (series_[k].z.size() == series_[k].x.size())
-      map3D_->setSeries(static_cast<int>(k), series_[k].x, series_[k].y, series_[k].z);
-  if (map3DWindow_ && map3DWindow_->isVisible()) map3DView_->update();
+  return map3D_->open({names[0], names[1], names[2]}, map3DTracks());
 }
 
 long MapPanel::map3DPoints() const {
-  if (!map3D_) return 0;
-  long n = 0;
-  for (const auto& s : series_)
-    n += static_cast<long>(s.z.size());
-  return n;
+  return map3D_->points();
 }
 
 } // namespace rv

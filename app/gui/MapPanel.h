@@ -9,6 +9,7 @@
 // threads; this panel only draws. The fixed-point tools on the map live in MapPanelTools.cpp.
 #pragma once
 #include "app/gui/ChartWindow.h"
+#include "app/gui/Map3DWindow.h"
 #include "dynamics/jobs/JobTree.h"
 #include "dynamics/jobs/PlotTap.h"
 #include "render/charts/PoincareChart.h"
@@ -313,13 +314,11 @@ private:
   ClickMode clickMode_ = ClickMode::Trajectory;
   QComboBox* modeBox_;
   std::unique_ptr<PoincareChart> chart_;
-  void feedMap3D();
+  /// Every trajectory's points, for the Map3D window.
+  std::vector<Map3DWindow::Track> map3DTracks() const;
   /// Drops the Map3D chart (its series follow the trajectories); draws it again if `reopen` and it shows.
   void resetMap3D(bool reopen);
-  QWidget* map3DWindow_ = nullptr;
-  QtVtkWidget* map3DView_ = nullptr;
-  std::unique_ptr<class Chart3D> map3D_;
-  std::size_t map3DSeries_ = 0; ///< trajectories the Map3D chart has a series for
+  std::unique_ptr<Map3DWindow> map3D_;
   const Scene* scene_ = nullptr;
   int sceneStart_ = -1; ///< the job of the trajectory setScene started
   JobTree jobs_;
