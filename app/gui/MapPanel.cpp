@@ -116,11 +116,7 @@ void MapPanel::setScene(const Scene& scene, bool startTrajectory) {
   series_.clear();
   searches_.clear();
   tools_.clear();
-  for (auto& w : multiplierWindows_) // the families of another problem
-    if (w) w->clear();
-  for (auto& w : diagramWindows_) // drawn for the old scene: they keep their chart, no longer marked
-    if (w) w->setMarks({});
-  diagramWindows_.clear(), marked_.clear(), diagrams_.reset();
+  filters_.newScene();
   scene_ = &scene;
   resetMap3D(false);
   const auto names = PoincareMap(*scene.model, scene.startIntegrator(), scene.poincare).coordinateNames();
@@ -408,37 +404,29 @@ void MapPanel::feedPlots(const Series& s) {
 }
 
 void MapPanel::addPlotWindow(PlotWindow* window) {
-  plots_.emplace_back(window);
+  filters_.addPlot(window);
   for (const auto& s : series_)
     s.task->taps().add(window->follow(s.job->id(), s.colour));
 }
 
 void MapPanel::addDiagramWindow(ChartWindow* window) {
-  diagramWindows_.emplace_back(window);
+  filters_.addDiagram(window);
   markDiagrams(true);
 }
 
 void MapPanel::markDiagrams(bool force) {
-  std::erase_if(diagramWindows_, [](const QPointer<ChartWindow>& w) { return w.isNull(); });
-  if (diagramWindows_.empty() || !scene_) return;
-  if (!diagrams_) diagrams_ = scene_->model->diagrams(); // built once per scene, not on every drain
-  const std::vector<Diagram>& diagrams = *diagrams_;
-  std::vector<std::vector<ChartWindow::Mark>> marks; // per window: its diagram's plane
-  for (auto& w : diagramWindows_) {
-    auto& m = marks.emplace_back();
-    try {
-      const Diagram& d = findDiagram(diagrams, w->diagram(), "diagram", scene_->model->info().id);
-      for (const auto& s : series_) {
-        const DiagramPoint p = d.place(s.task->levelState().data());
-        m.push_back({p[0], p[1], s.colour});
-      }
-    } catch (const InputError&) { // none such: the window says why its chart failed
-    }
-  }
-  if (!force && marks == marked_) return;
-  marked_ = marks;
-  for (std::size_t i = 0; i < diagramWindows_.size(); ++i)
-    diagramWindows_[i]->setMarks(marks[i]);
+  if (!scene_) return;
+  filters_.markDiagrams(
+      *scene_->model,
+      [this](const Diagram& d) {
+        std::vector<ChartWindow::Mark> marks;
+        for (const auto& s : series_) {
+          const DiagramPoint p = d.place(s.task->levelState().data());
+          marks.push_back({p[0], p[1], s.colour});
+        }
+        return marks;
+      },
+      force);
 }
 
 std::shared_ptr<PlotTap> MapPanel::tapTrajectory(int id, const PlotSettings& settings) {
@@ -457,11 +445,7 @@ std::shared_ptr<PlotTap> MapPanel::tapTrajectory(int id, const PlotSettings& set
 }
 
 std::vector<PlotWindow*> MapPanel::plotWindows() {
-  std::erase_if(plots_, [](const QPointer<PlotWindow>& p) { return p.isNull(); });
-  std::vector<PlotWindow*> out;
-  for (auto& p : plots_)
-    out.push_back(p.data());
-  return out;
+  return filters_.plots();
 }
 
 bool MapPanel::drain() {
@@ -527,8 +511,7 @@ bool MapPanel::drain() {
     drawSeries(s);
     changed = true;
   }
-  for (auto& w : multiplierWindows_)
-    if (w) w->flush();
+  filters_.flush();
   markDiagrams(false);
   if (changed) {
     view_->update();
@@ -557,16 +540,14 @@ void MapPanel::removeJob(Job& job) {
   for (auto it = tools_.begin(); it != tools_.end();)
     if (isGone(it->job)) {
       chart_->setSeries(it->plot, {}, {});
-      for (auto& w : multiplierWindows_)
-        if (w) w->forget(it->job->id()), w->flush();
+      filters_.forget(it->job->id());
       it = tools_.erase(it);
     } else {
       ++it;
     }
   for (auto it = searches_.begin(); it != searches_.end();)
     if (isGone(it->job)) {
-      for (auto& w : multiplierWindows_)
-        if (w) w->forget(it->job->id()), w->flush();
+      filters_.forget(it->job->id());
       chart_->setSeries(it->point, {}, {});
       chart_->setSeries(it->found, {}, {});
       if (it->path >= 0) chart_->setSeries(it->path, {}, {});
@@ -603,14 +584,12 @@ void MapPanel::clearOutput(int id) {
     if (t.job->id() == id) {
       t.x.clear(), t.y.clear(), t.multipliers.clear(), t.endSaid = false;
       chart_->setSeries(t.plot, {}, {});
-      for (auto& w : multiplierWindows_)
-        if (w) w->forget(id), w->flush();
+      filters_.forget(id);
     }
   for (auto& s : searches_)
     if (s.job->id() == id) {
       s.x.clear(), s.y.clear(), s.reported = false, s.multipliers.clear(), s.foundAt.clear();
-      for (auto& w : multiplierWindows_)
-        if (w) w->forget(id), w->flush();
+      filters_.forget(id);
       chart_->setSeries(s.point, {}, {});
       chart_->setSeries(s.found, {}, {});
       if (s.path >= 0) chart_->setSeries(s.path, {}, {});

@@ -10,6 +10,7 @@
 #pragma once
 #include "app/gui/ChartWindow.h"
 #include "app/gui/Map3DWindow.h"
+#include "app/gui/MapFilters.h"
 #include "dynamics/jobs/JobTree.h"
 #include "dynamics/jobs/PlotTap.h"
 #include "render/charts/PoincareChart.h"
@@ -249,7 +250,6 @@ private:
   std::array<std::string, 2> axisNames_{"x", "y"};
   /// Gives the trajectory's job a tap of each open plot filter.
   void feedPlots(const Series& s);
-  std::vector<QPointer<PlotWindow>> plots_;
   /// The points of a trajectory its range shows: [first, second) of its indices.
   static std::pair<long, long> shownSpan(const Series& s);
   /// Draws the part of a trajectory its range shows.
@@ -304,12 +304,10 @@ private:
                  std::function<QString(const ToolSeries&)> ended = {});
   /// A fixed point of a family: kept, and offered to the open multipliers filters.
   void offerMultipliers(ToolSeries& t, double parameter, const std::vector<std::complex<double>>& m);
-  std::vector<QPointer<MultipliersWindow>> multiplierWindows_;
   /// Where each trajectory lies on the scene's first bifurcation diagram; marks the diagram windows with it.
   void markDiagrams(bool force);
-  std::vector<QPointer<ChartWindow>> diagramWindows_;
-  std::optional<std::vector<Diagram>> diagrams_;       ///< the scene's, once a diagram window is open
-  std::vector<std::vector<ChartWindow::Mark>> marked_; ///< the marks drawn, per window
+  /// The plot, multipliers and diagram windows the map feeds (app/gui/MapFilters.h).
+  MapFilters filters_;
   QtVtkWidget* view_;
   ClickMode clickMode_ = ClickMode::Trajectory;
   QComboBox* modeBox_;

@@ -53,13 +53,11 @@ void MapPanel::startTool(std::unique_ptr<Task> task, const Rgb& colour, std::fun
 
 void MapPanel::offerMultipliers(ToolSeries& t, double parameter, const std::vector<std::complex<double>>& m) {
   t.multipliers.emplace_back(parameter, m);
-  std::erase_if(multiplierWindows_, [](const QPointer<MultipliersWindow>& w) { return w.isNull(); });
-  for (auto& w : multiplierWindows_)
-    w->offer(t.job->id(), parameter, m, t.everyStep);
+  filters_.offer(t.job->id(), parameter, m, t.everyStep);
 }
 
 void MapPanel::addMultipliersWindow(MultipliersWindow* window) {
-  multiplierWindows_.emplace_back(window);
+  filters_.addMultipliers(window);
   for (const auto& t : tools_)
     for (const auto& [parameter, m] : t.multipliers)
       window->offer(t.job->id(), parameter, m, t.everyStep);
@@ -217,8 +215,7 @@ bool MapPanel::drainSearches() {
       }
       s.multipliers = multipliers; // shown in every multipliers filter, also in one opened later
       s.caption = m;
-      for (auto& w : multiplierWindows_)
-        if (w) w->showFixedPoint(s.job->id(), m, s.multipliers);
+      filters_.showFixedPoint(s.job->id(), m, s.multipliers);
     } else if (s.job->status() == Job::Status::Failed) {
       emit message(QString::fromStdString("fixed point: " + s.job->error()));
     }
@@ -265,8 +262,7 @@ void MapPanel::startMapRows(const std::string& id, const std::vector<SceneOverri
               seen = run;
               located = false;
               t.x.clear(), t.y.clear(), t.along.clear(), t.multipliers.clear();
-              for (auto& w : multiplierWindows_)
-                if (w) w->forget(t.job->id()), w->flush();
+              filters_.forget(t.job->id());
               drew = true;
             }
             const RowColumns c(row, coordinates, parameter);
@@ -438,8 +434,7 @@ void MapPanel::restoreToolOutputs(const std::vector<SavedToolOutput>& saved) {
       s.reported = true;
       if (!o.multipliers.empty()) s.multipliers = o.multipliers.front().second;
       s.caption = summary, s.foundAt = o.found;
-      for (auto& w : multiplierWindows_)
-        if (w && !s.multipliers.empty()) w->showFixedPoint(job.id(), s.caption, s.multipliers);
+      if (!s.multipliers.empty()) filters_.showFixedPoint(job.id(), s.caption, s.multipliers);
       searches_.push_back(std::move(s));
       continue;
     }
@@ -452,8 +447,7 @@ void MapPanel::restoreToolOutputs(const std::vector<SavedToolOutput>& saved) {
       offerMultipliers(t, parameter, m);
     tools_.push_back(std::move(t));
   }
-  for (auto& w : multiplierWindows_)
-    if (w) w->flush();
+  filters_.flush();
   view_->update();
 }
 
