@@ -234,17 +234,8 @@ MainWindow::~MainWindow() {
   apex_.reset();
 }
 
-ViewOptions MainWindow::effectiveView(const ViewOptions& base) const {
-  ViewOptions v = base;
-  for (const auto& [name, o] : edits_.objects)
-    v.objects[name] = o;
-  if (editedAxes_) v.axes = edits_.axes;
-  if (editedFollow_) v.camera.follow = *editedFollow_;
-  return v;
-}
-
 void MainWindow::editObject(const std::string& name, const ObjectOptions& o) {
-  edits_.objects[name] = o;
+  edits_.setObject(name, o);
   if (visual_) visual_->setOptions(name, o);
   apex_->setOptions(name, o);
   showViewSettings();
@@ -252,8 +243,7 @@ void MainWindow::editObject(const std::string& name, const ObjectOptions& o) {
 }
 
 void MainWindow::editAxes(const AxesOptions& a) {
-  edits_.axes = a;
-  editedAxes_ = true;
+  edits_.setAxes(a);
   if (visual_) visual_->setAxes(a);
   showViewSettings();
   view_->update();
@@ -299,8 +289,7 @@ bool MainWindow::openScene(const QString& path) {
   }
   QSettings().setValue("lastScene", QFileInfo(path).absoluteFilePath());
   rememberRecent(QFileInfo(path).absoluteFilePath());
-  edits_ = {}; // another file: its own appearance
-  editedAxes_ = false, editedFollow_.reset();
+  edits_.clear(); // another file: its own appearance
   if (const auto r = scene->document.find("results"); r != scene->document.end()) // kept when it was saved
     for (const auto& line : *r)
       results_->appendPlainText(QString::fromStdString(line.get<std::string>()));
@@ -317,8 +306,7 @@ bool MainWindow::openModel(const QString& path) {
     QMessageBox::warning(this, "rollviz", QString("Cannot open the model:\n%1").arg(e.what()));
     return false;
   }
-  edits_ = {};
-  editedAxes_ = false, editedFollow_.reset();
+  edits_.clear();
   useScene(std::move(scene), file);
   return true;
 }
@@ -457,8 +445,7 @@ void MainWindow::restart() {
   if (!scene_) return;
   stream_.reset(); // joins the worker before anything it uses changes
   if (!visual_) {
-    visual_ =
-        std::make_unique<VisualScene>(*scene_->model, effectiveView(scene_->view), scene_->initialState);
+    visual_ = std::make_unique<VisualScene>(*scene_->model, edits_.over(scene_->view), scene_->initialState);
     visual_->addTo(view_->renderWindow());
     showViewSettings();
   } else {
@@ -633,28 +620,7 @@ void MainWindow::stopRecording() {
 
 nlohmann::json MainWindow::documentWithEdits() const {
   nlohmann::json doc = scene_->document;
-  for (const auto& [name, o] : edits_.objects) { // the settings panel's edits go into the document
-    auto& j = doc["view"]["objects"][name];
-    j["enabled"] = o.enabled;
-    if (o.color) j["color"] = colorText(*o.color);
-    if (o.traceColor) j["trace_color"] = colorText(*o.traceColor);
-    if (o.opacity) j["opacity"] = *o.opacity;
-    if (o.gridDensity != 1) j["grid_density"] = o.gridDensity;
-    if (!o.trace) j["trace"] = false;
-    j["style"] = o.style == SurfaceStyle::Grid ? "grid" : o.style == SurfaceStyle::Both ? "both" : "fill";
-  }
-  if (editedAxes_) {
-    const AxesOptions& a = edits_.axes;
-    auto& j = doc["view"]["axes"];
-    j["style"] = a.style == AxesOptions::Style::Box      ? "box"
-                 : a.style == AxesOptions::Style::Normal ? "normal"
-                                                         : "none";
-    j["ticks"] = a.ticks;
-    if (a.min && a.max) j["min"] = *a.min, j["max"] = *a.max;
-    j["tickmarks"] = a.tickmarks;
-    j["subticks"] = a.subticks;
-  }
-  if (editedFollow_) doc["view"]["camera"]["follow"] = *editedFollow_;
+  edits_.writeInto(doc); // the settings panel's edits go into the document
   // the Results dock goes with the scene: what was found is there when the scene is opened again
   doc.erase("results");
   for (const QString& line : results().split('\n', Qt::SkipEmptyParts))
@@ -773,7 +739,7 @@ MultipliersWindow* MainWindow::openMultipliersWindow() {
 
 QWidget* MainWindow::openApexWindow() {
   if (!scene_) return nullptr;
-  return apex_->open(*scene_, effectiveView(scene_->view));
+  return apex_->open(*scene_, edits_.over(scene_->view));
 }
 
 void MainWindow::closeEvent(QCloseEvent* e) {

@@ -6,6 +6,7 @@
 // and MapHistory (Undo's and Redo's steps).
 #pragma once
 #include "app/gui/MapHistory.h"
+#include "app/gui/ViewEdits.h"
 #include "dynamics/jobs/PlotTap.h"
 #include "dynamics/jobs/TrajectoryStream.h"
 #include "render/VisualScene.h"
@@ -173,8 +174,6 @@ public:
   /// The apex motion window (app/gui/ApexWindow.h): what it follows and draws.
   const ApexWindow& apex() const { return *apex_; }
   VisualizerSettings* settings() const { return settings_; }
-  /// The appearance edits kept over re-runs (settings panel, toolbar).
-  const ViewOptions& viewEdits() const { return edits_; }
   VisualScene* visual() const { return visual_.get(); }
 
 public slots:
@@ -210,8 +209,6 @@ private:
   void tick();
   /// The scene's document with the settings panel's edits written in (what Save and Record use).
   nlohmann::json documentWithEdits() const;
-  /// The scene's view with the user's edits laid over it.
-  ViewOptions effectiveView(const ViewOptions& base) const;
   void editObject(const std::string& name, const ObjectOptions& o);
   void editAxes(const AxesOptions& a);
   void setStyleOfAll(SurfaceStyle style);
@@ -268,9 +265,7 @@ private:
   VisualizerSettings* settings_;
   QMenu* recentMenu_;
   QAction* recordAction_;
-  ViewOptions edits_;
-  bool editedAxes_ = false;
-  std::optional<bool> editedFollow_; ///< the toolbar's Follow body, once toggled (over view.camera.follow)
+  ViewEdits edits_; ///< the appearance edits kept over re-runs (settings panel, toolbar)
   QAction* followAction_ = nullptr;
   std::unique_ptr<ApexWindow> apex_;
   // a recording in progress: the view's pictures into a ScreenRecorder, timed by a wall clock

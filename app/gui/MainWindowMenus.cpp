@@ -80,7 +80,7 @@ void MainWindow::buildToolBars(QDockWidget* settingsDock) {
   followAction_->setToolTip("Carry the camera along with the body as it rolls (else it stays where you put "
                             "it); either way you turn, move and zoom it");
   connect(followAction_, &QAction::toggled, this, [this](bool on) {
-    editedFollow_ = on;
+    edits_.setFollow(on);
     if (visual_) visual_->setFollow(on);
   });
   auto* style = styleBox_ = new QComboBox(this);
@@ -96,7 +96,8 @@ void MainWindow::buildToolBars(QDockWidget* settingsDock) {
   axes->addItems({"no axes", "normal axes", "box axes"});
   axes->setToolTip("the scene's coordinate axes (ticks and range: settings, tab axis)");
   connect(axes, &QComboBox::currentIndexChanged, this, [this](int i) {
-    AxesOptions a = visual_ ? visual_->options().axes : edits_.axes; // the rest as shown
+    AxesOptions a =
+        visual_ ? visual_->options().axes : edits_.axes().value_or(AxesOptions{}); // the rest as shown
     a.style = static_cast<AxesOptions::Style>(i);
     editAxes(a);
   });

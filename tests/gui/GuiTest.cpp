@@ -2,12 +2,13 @@
 // (every parameter of the problem, the method and the tools has an editor), edits written into the scene
 // document (only the touched fields, choices by name), and Apply emitting the document. The tool manager: the
 // jobs as a tree, stop / continue / restart / delete on the selected one. The map's Undo / Redo history: its
-// order and bounds.
+// order and bounds. The 3D view's appearance edits: saved into the scene, read back as shown.
 #include "app/gui/ControlPanel.h"
 #include "app/gui/MapHistory.h"
 #include "app/gui/ParameterForm.h"
 #include "app/gui/PlotFilterDialog.h"
 #include "app/gui/ToolManager.h"
+#include "app/gui/ViewEdits.h"
 #include "dynamics/core/ModelRegistry.h"
 #include "dynamics/jobs/JobTree.h"
 #include "dynamics/jobs/MegnoTask.h"
@@ -339,6 +340,53 @@ private slots:
   }
 };
 
+class ViewEditsTest : public QObject {
+  Q_OBJECT
+private slots:
+  // what Save writes of the user's edits, the scene loader reads back as the view that was shown
+  void editsSavedIntoTheSceneReadBackAsShown() {
+    const Scene scene = loadScene(defaultScenePath("ellipsoid_on_plane"));
+    ViewEdits edits;
+    ObjectOptions body = scene.view.object("body");
+    body.color = Rgb{0.2, 0.4, 0.6};
+    body.style = SurfaceStyle::Grid;
+    body.opacity = 0.5;
+    body.gridDensity = 2;
+    ObjectOptions trace = scene.view.object("trace");
+    trace.enabled = false;
+    edits.setObject("body", body);
+    edits.setObject("trace", trace);
+    AxesOptions axes;
+    axes.style = AxesOptions::Style::Box;
+    axes.tickmarks = 3, axes.subticks = 2;
+    axes.min = std::array<double, 3>{-1, -2, -3}, axes.max = std::array<double, 3>{1, 2, 3};
+    edits.setAxes(axes);
+    edits.setFollow(!scene.view.camera.follow);
+    const ViewOptions shown = edits.over(scene.view);
+
+    nlohmann::json doc = scene.document;
+    edits.writeInto(doc);
+    const ViewOptions read = sceneFromJson(doc, "edited").view;
+    const ObjectOptions& b = read.object("body");
+    QVERIFY(b.color && *b.color == *shown.object("body").color);
+    QVERIFY(b.style == SurfaceStyle::Grid);
+    QVERIFY(b.opacity && *b.opacity == 0.5);
+    QCOMPARE(b.gridDensity, 2.0);
+    QVERIFY(!read.object("trace").enabled);
+    QVERIFY(read.axes.style == AxesOptions::Style::Box);
+    QCOMPARE(read.axes.tickmarks, 3);
+    QCOMPARE(read.axes.subticks, 2);
+    QVERIFY(read.axes.min == axes.min && read.axes.max == axes.max);
+    QCOMPARE(read.camera.follow, shown.camera.follow);
+    QVERIFY(read.camera.follow != scene.view.camera.follow);
+
+    edits.clear(); // another scene: none
+    nlohmann::json untouched = scene.document;
+    edits.writeInto(untouched);
+    QCOMPARE(untouched, scene.document);
+  }
+};
+
 } // namespace rv
 
 int main(int argc, char** argv) {
@@ -354,6 +402,10 @@ int main(int argc, char** argv) {
   }
   {
     rv::MapHistoryTest t;
+    failed += QTest::qExec(&t, argc, argv);
+  }
+  {
+    rv::ViewEditsTest t;
     failed += QTest::qExec(&t, argc, argv);
   }
   return failed ? 1 : 0;
