@@ -56,7 +56,7 @@ void ApexWindow::restart(const Scene& scene) {
 void ApexWindow::follow(int id, MapPanel& map, const Scene& scene, double shownTime) {
   if (!visual_) return;
   if (tap_) tap_->closed = true;
-  tap_ = map.tapTrajectory(
+  tap_ = map.trajectories().tap(
       id, PlotSettings{.condition = "t", .period = 0.04, .maxPoints = 1L << 40, .wholeState = true});
   source_ = tap_ ? id : -1;
   visual_->clear(); // a new trajectory: its own traces

@@ -69,7 +69,7 @@ int runGui(int argc, char** argv, const GuiOptions& options) {
         line, sizeof line,
         "shown t = %.6g, map trajectories = %d, map points = %ld, fixed point searches = %d, found = %d, "
         "tool jobs = %d, jobs in the tool manager = %d, playing = %s\n",
-        window.shownTime(), window.mapPanel()->trajectories(), window.mapPanel()->points(),
+        window.shownTime(), window.mapPanel()->trajectories().count(), window.mapPanel()->points(),
         window.mapPanel()->searches(), window.mapPanel()->fixedPointsFound(), window.mapPanel()->toolJobs(),
         static_cast<int>(window.mapPanel()->jobs().jobs().size()), window.playing() ? "yes" : "no");
     return std::string(line);

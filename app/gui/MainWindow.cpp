@@ -123,7 +123,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   connect(tools_, &ToolManager::aboutToDelete, this,
           [this](const std::vector<int>& roots) { rememberDeletedForUndo(roots); });
   tools_->setMore([this](int id) { // as many points again as the scene gives a trajectory
-    if (!scene_ || !map_->morePoints(id, scene_->poincare.maxPoints)) return false;
+    if (!scene_ || !map_->trajectories().morePoints(id, scene_->poincare.maxPoints)) return false;
     report(QString("trajectory #%1 goes on for %2 more points").arg(id).arg(scene_->poincare.maxPoints),
            5000);
     return true;
@@ -138,12 +138,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     if (scene_ && apex_) apex_->forget(id, *map_, *scene_, shownTime_);
   });
   tools_->setRowLook([this](int id) {
-    ToolManager::RowLook look{map_->trajectoryStart(id), std::nullopt};
-    if (map_->isTrajectory(id)) look.colour = map_->shownColour(id);
+    ToolManager::RowLook look{map_->trajectories().origin(id), std::nullopt};
+    if (map_->trajectories().contains(id)) look.colour = map_->trajectories().shownColour(id);
     return look;
   });
-  tools_->setOutputActions([this](int id, const Rgb& c) { return map_->setJobColor(id, c); },
-                           [this](int id, long a, long b) { return map_->setJobRange(id, a, b); });
+  tools_->setOutputActions(
+      [this](int id, const Rgb& c) { return map_->trajectories().setColour(id, c); },
+      [this](int id, long a, long b) { return map_->trajectories().setRange(id, a, b); });
   auto* toolsDock = new QDockWidget("Tool manager", this);
   toolsDock->setObjectName("tools");
   toolsDock->setWidget(tools_);
@@ -641,7 +642,7 @@ void MainWindow::createTool(const std::string& id) {
     map_->startRows(id);
     return;
   case ToolWindow::MapTrajectory:
-    map_->startFrom(scene_->initialState);
+    map_->trajectories().start(scene_->initialState);
     return;
   case ToolWindow::MapSearch:
     map_->searchFromGuess();

@@ -59,7 +59,7 @@ Session MainWindow::mapAsItStands(bool goOn) const {
   map.scene = scene_->document;
   map.scenePath = scenePath_.toStdString();
   map.origin = origin_.toStdString();
-  map.trajectories = map_->saveTrajectories({}, false, goOn);
+  map.trajectories = map_->trajectories().save({}, false, goOn);
   map.tools = map_->saveToolOutputs({});
   if (map_->chart().rangesHeld()) map.gui["map_ranges"] = map_->chart().ranges(); // the user's zoom
   return map;
@@ -85,7 +85,7 @@ void MainWindow::rememberDeletedForUndo(const std::vector<int>& roots) {
       for (const Job* k : map_->jobs().subtree(*j))
         ids.push_back(k->id());
   if (ids.empty()) return;
-  auto deleted = map_->saveTrajectories(ids, false, false);
+  auto deleted = map_->trajectories().save(ids, false, false);
   auto tools = map_->saveToolOutputs(ids);
   if (deleted.empty() && tools.empty()) return; // nothing drawn among them: nothing Undo could give back
   QStringList parts;
@@ -107,7 +107,7 @@ bool MainWindow::undo() {
     if (step->map)
       useMapOf(*step->map);
     else {
-      map_->restoreTrajectories(step->deleted);
+      map_->trajectories().restore(step->deleted);
       map_->restoreToolOutputs(step->deletedTools);
     }
   } catch (const std::exception& e) {
@@ -155,7 +155,7 @@ Session MainWindow::currentSession() const {
   session.scene = documentWithEdits();
   session.scenePath = scenePath_.toStdString();
   session.origin = origin_.toStdString();
-  session.trajectories = map_->saveTrajectories({}, false, true); // running ones go on
+  session.trajectories = map_->trajectories().save({}, false, true); // running ones go on
   session.tools = map_->saveToolOutputs({});
   session.results = results().toStdString();
   return session;

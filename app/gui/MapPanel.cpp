@@ -30,7 +30,10 @@
 
 namespace rv {
 
-MapPanel::MapPanel(QWidget* parent) : QWidget(parent), map3D_(std::make_unique<Map3DWindow>(this)) {
+MapPanel::MapPanel(QWidget* parent)
+    : QWidget(parent), map3D_(std::make_unique<Map3DWindow>(this)),
+      trajectories_(
+          jobs_, filters_, [this](const QString& m) { emit message(m); }, [this] { view_->update(); }) {
   view_ = new QtVtkWidget(this);
   // the chart's scene asks for a frame 40 ms after every change; drain() has painted it by then
   view_->setRenderWanted([this] { return chart_ && chart_->changedSincePainted(); });
@@ -53,7 +56,7 @@ MapPanel::MapPanel(QWidget* parent) : QWidget(parent), map3D_(std::make_unique<M
   // the colour scale, shown while colouring: three swatches of megnoColour
   QString legend = "&lt;Y&gt;:";
   for (const double y : {2.0, 5.0, 8.0}) {
-    const Rgb c = megnoColour(y);
+    const Rgb c = MapTrajectories::megnoColour(y);
     legend += QString(" <span style='color:%1'>&#9632;</span> %2")
                   .arg(QColor::fromRgbF(static_cast<float>(c[0]), static_cast<float>(c[1]),
                                         static_cast<float>(c[2]))
@@ -113,11 +116,12 @@ void MapPanel::setScene(const Scene& scene, bool startTrajectory) {
   // its own scene
   for (int id : sceneJobs()) // by id: removing one removes the tools under it
     if (Job* j = jobs_.find(id)) jobs_.remove(*j);
-  series_.clear();
+  trajectories_.clear();
   searches_.clear();
   tools_.clear();
   filters_.newScene();
   scene_ = &scene;
+  trajectories_.setScene(scene_);
   resetMap3D(false);
   const auto names = PoincareMap(*scene.model, scene.startIntegrator(), scene.poincare).coordinateNames();
   // a map of one coordinate is drawn against the crossing time ("time": a rotated "t" read as an arrow)
@@ -128,6 +132,7 @@ void MapPanel::setScene(const Scene& scene, bool startTrajectory) {
     chart_ = std::make_unique<PoincareChart>(axisNames_[0], axisNames_[1]);
     chart_->setPointLabel(false); // the cursor's coordinates show in cursorLabel_
     chart_->attach(view_->renderWindow());
+    trajectories_.setChart(chart_.get());
   } else {
     chart_->clear();
     chart_->setTitles(axisNames_[0], axisNames_[1]);
@@ -138,8 +143,6 @@ void MapPanel::setScene(const Scene& scene, bool startTrajectory) {
 
 void MapPanel::startSceneTrajectory() {
   if (!scene_) return;
-  start(scene_->initialState);
-  sceneStart_ = series_.back().job->id();
   // where the scene says it starts (its first map point is one iteration or crossing later)
   const nlohmann::json map =
       scene_->document.value("initial", nlohmann::json::object()).value("map", nlohmann::json());
@@ -147,7 +150,10 @@ void MapPanel::startSceneTrajectory() {
   if (map.is_array())
     for (const auto& v : map)
       if (v.is_number()) at << QString::number(v.get<double>(), 'g', 6);
-  series_.back().origin = at.isEmpty() ? QString("the scene's initial state") : "(" + at.join(", ") + ")";
+  sceneStart_ = trajectories_
+                    .start(scene_->initialState,
+                           at.isEmpty() ? QString("the scene's initial state") : "(" + at.join(", ") + ")")
+                    .id();
 }
 
 std::vector<int> MapPanel::addedJobs() const {
@@ -156,89 +162,13 @@ std::vector<int> MapPanel::addedJobs() const {
   return ids;
 }
 
-void MapPanel::start(const Eigen::VectorXd& state) {
-  RunSpec spec = scene_->runSpec();
-  spec.initialState = state;
-  auto task = std::make_unique<PoincareTask>(spec, scene_->poincare);
-  PoincareTask* raw = task.get();
-  Job& job = jobs_.add(std::move(task));
-  const Rgb colour = seriesColor(static_cast<int>(series_.size()));
-  const int plot = chart_->addSeries({}, {}, colour);
-  series_.push_back({&job, raw, {}, {}, {}, plot, colour});
-  series_.back().since.start();
-  feedPlots(series_.back());
-  if (colourByMegno_) startMegno(series_.back());
-  chart_->select(plot);
-  job.start();
-}
-
-namespace {
-std::map<std::string, double> valuesMap(const ParameterValues& v) {
-  std::map<std::string, double> m;
-  for (const auto& spec : v.table().specs())
-    m[spec.id] = v[spec.id];
-  return m;
-}
-void setValues(ParameterValues& v, const std::map<std::string, double>& m, const std::string& what) {
-  for (const auto& [id, value] : m)
-    v.set(id, value, what + "." + id);
-}
-} // namespace
-
-std::size_t MapPanel::takePoints(Series& s, std::size_t most) {
-  if (s.pendingAt >= s.pending.size()) {
-    s.task->points().take(s.pending);
-    s.pendingAt = 0;
-  }
-  const std::size_t end = s.pendingAt + std::min(most, s.pending.size() - s.pendingAt);
-  for (std::size_t k = s.pendingAt; k < end; ++k) {
-    MapPoint& p = s.pending[k];
-    s.x.push_back(p.coordinates.at(0));
-    s.y.push_back(p.coordinates.size() > 1 ? p.coordinates[1] : p.time);
-    if (p.coordinates.size() > 2) s.z.push_back(p.coordinates[2]);
-    // freed now, a few thousand a turn, not all at once when the next batch replaces this one (10^5 frees
-    // in one turn of the event loop)
-    std::vector<double>().swap(p.coordinates);
-  }
-  const std::size_t taken = end - s.pendingAt;
-  s.pendingAt = end;
-  return taken;
-}
-
-std::vector<SavedTrajectory> MapPanel::saveTrajectories(const std::vector<int>& ids, bool onlyRunning,
-                                                        bool goOn) {
-  std::vector<SavedTrajectory> out;
-  for (auto& s : series_) {
-    const bool wanted = ids.empty() || std::find(ids.begin(), ids.end(), s.job->id()) != ids.end();
-    const bool running = s.job->running();
-    if (!wanted || (onlyRunning && !running)) continue;
-    s.job->stop(); // (its state is read only while it does not run)
-    // what was produced before the stop, drawn or not yet, is part of what is saved
-    while (takePoints(s, std::numeric_limits<std::size_t>::max()) > 0) {
-    }
-    Snapshot state;
-    s.task->save(state);
-    const RunSpec& spec = s.task->spec();
-    SavedTrajectory t;
-    t.start.assign(spec.initialState.data(), spec.initialState.data() + spec.initialState.size());
-    t.parameters = valuesMap(spec.modelParameters);
-    t.integrator = valuesMap(spec.integratorParameters);
-    t.colour = s.colour;
-    t.x = s.x, t.y = s.y, t.z = s.z;
-    t.state = std::move(state.values);
-    t.running = running;
-    t.first = s.first, t.last = s.last;
-    t.origin = s.origin.toStdString();
-    t.id = s.job->id();
-    out.push_back(std::move(t));
-    if (goOn && running) s.job->start();
-  }
-  return out;
+Job& MapPanel::start(const Eigen::VectorXd& state, const QString& origin) {
+  return trajectories_.start(state, origin);
 }
 
 nlohmann::json MapPanel::saveRunning() {
   nlohmann::json out = nlohmann::json::array();
-  for (const auto& t : saveTrajectories({}, true, false))
+  for (const auto& t : trajectories_.save({}, true, false))
     out.push_back(toJson(t));
   return out;
 }
@@ -248,49 +178,12 @@ int MapPanel::resume(const nlohmann::json& saved) {
   std::vector<SavedTrajectory> list;
   for (std::size_t i = 0; i < saved.size(); ++i)
     list.push_back(savedTrajectoryFromJson(saved[i], Where{"saved jobs", "[" + std::to_string(i) + "]"}));
-  return restoreTrajectories(list);
-}
-
-int MapPanel::restoreTrajectories(const std::vector<SavedTrajectory>& saved) {
-  if (!scene_) return 0;
-  // checked whole first: a list that does not fit the scene adds nothing
-  std::vector<std::unique_ptr<PoincareTask>> tasks;
-  for (std::size_t n = 0; n < saved.size(); ++n) {
-    const SavedTrajectory& t = saved[n];
-    const std::string what = "saved trajectory " + std::to_string(n + 1);
-    RunSpec spec = scene_->runSpec();
-    if (static_cast<Eigen::Index>(t.start.size()) != spec.initialState.size())
-      throw InputError(what + ": made for another problem");
-    spec.initialState =
-        Eigen::Map<const Eigen::VectorXd>(t.start.data(), static_cast<Eigen::Index>(t.start.size()));
-    setValues(spec.modelParameters, t.parameters, what + ".parameters");
-    setValues(spec.integratorParameters, t.integrator, what + ".integrator");
-    auto task = std::make_unique<PoincareTask>(spec, scene_->poincare);
-    Snapshot state{t.state, 0};
-    task->restore(state);
-    tasks.push_back(std::move(task));
-  }
-  for (std::size_t n = 0; n < saved.size(); ++n) {
-    const SavedTrajectory& t = saved[n];
-    PoincareTask* raw = tasks[n].get();
-    Job& job = jobs_.add(std::move(tasks[n]), nullptr, t.id); // its number, where it is free
-    const int plot = chart_->addSeries({}, {}, t.colour);
-    series_.push_back({&job, raw, t.x, t.y, t.z, plot, t.colour});
-    Series& s = series_.back();
-    s.since.start();
-    s.first = t.first, s.last = t.last;
-    s.origin = QString::fromStdString(t.origin);
-    drawSeries(s);
-    feedPlots(s);
-    if (colourByMegno_) startMegno(s);
-    // a finished one finishes again at once (its limit is reached); one the user had stopped stays so
-    if (t.running || (raw->limit() > 0 && raw->produced() >= raw->limit())) job.start();
-  }
-  return static_cast<int>(saved.size());
+  return trajectories_.restore(list);
 }
 
 void MapPanel::keepScene(const Scene& scene) {
   scene_ = &scene; // the trajectories run on their own copies of what defines them
+  trajectories_.setScene(scene_);
 }
 
 void MapPanel::replaceTrajectories(const std::vector<SavedTrajectory>& saved,
@@ -298,26 +191,9 @@ void MapPanel::replaceTrajectories(const std::vector<SavedTrajectory>& saved,
   for (int id : sceneJobs())
     if (Job* j = jobs_.find(id)) removeJob(*j);
   sceneStart_ = -1;
-  restoreTrajectories(saved);
+  trajectories_.restore(saved);
   restoreToolOutputs(tools);
   chart_->select(-1); // nothing is selected in the tool manager: none emphasised (the last one was)
-}
-
-bool MapPanel::morePoints(int id, long more) {
-  for (auto& s : series_)
-    if (s.job->id() == id) {
-      if (s.job->running() || s.task->limit() <= 0) return false;
-      s.job->edit([more](Task& t) { static_cast<PoincareTask&>(t).extend(more); });
-      s.job->start();
-      return true;
-    }
-  return false;
-}
-
-std::pair<std::vector<double>, std::vector<double>> MapPanel::trajectoryPoints(int id) const {
-  for (const auto& s : series_)
-    if (s.job->id() == id) return {s.x, s.y};
-  return {};
 }
 
 void MapPanel::setMapRanges(const std::array<double, 4>& r) {
@@ -337,7 +213,7 @@ std::vector<double> MapPanel::mapPoint(double x, double y) const {
   return point;
 }
 
-QString MapPanel::startOnSection(double x, double y) {
+std::pair<QString, int> MapPanel::startOnSection(double x, double y) {
   // The click names the map's two coordinates; where they (and the section's observable) are state variables,
   // the scene's state takes them, so that the trajectory starts on the section at the point clicked; the rest
   // of the state is the scene's.
@@ -361,18 +237,17 @@ QString MapPanel::startOnSection(double x, double y) {
     state[i] = scene_->poincare.value;
     set << QString("%1 = %2 (the section)").arg(QString::fromStdString(section)).arg(state[i], 0, 'g', 6);
   }
-  start(state);
-  series_.back().origin = set.isEmpty() ? QString("the scene's state") : set.join(", ");
+  const int job = start(state, set.isEmpty() ? QString("the scene's state") : set.join(", ")).id();
   const QString id = QString::fromStdString(scene_->model->info().id);
-  return set.isEmpty()
-             ? QString(
-                   "from the scene's state: %1 has no map coordinates and the map's axes are not its state "
-                   "variables (give the start in the control panel)")
-                   .arg(id)
-             : QString(
-                   "at %1, the rest of the state the scene's (%2 has no map coordinates of its own: a click "
-                   "sets the map's axes and the section's variable)")
-                   .arg(set.join(", "), id);
+  return {
+      set.isEmpty()
+          ? QString("from the scene's state: %1 has no map coordinates and the map's axes are not its state "
+                    "variables (give the start in the control panel)")
+                .arg(id)
+          : QString("at %1, the rest of the state the scene's (%2 has no map coordinates of its own: a click "
+                    "sets the map's axes and the section's variable)")
+                .arg(set.join(", "), id),
+      job};
 }
 
 bool MapPanel::startAt(double x, double y) {
@@ -381,16 +256,16 @@ bool MapPanel::startAt(double x, double y) {
   try {
     const auto& info = scene_->model->info();
     if (info.mapCoordinates.empty()) { // a flow whose map has no coordinates of its own (Lorenz)
-      const QString how = startOnSection(x, y);
-      emit message(QString("trajectory #%1 started %2").arg(series_.back().job->id()).arg(how));
+      const auto [how, job] = startOnSection(x, y);
+      emit message(QString("trajectory #%1 started %2").arg(job).arg(how));
       return true;
     }
     const MapPointSpec spec{.sectionValue = scene_->poincare.value,
                             .root = std::max(1, scene_->poincare.root)};
-    start(scene_->model->stateFromMap(mapPoint(x, y), spec, "map point"));
-    series_.back().origin = QString("(%1, %2)").arg(x, 0, 'g', 6).arg(y, 0, 'g', 6);
+    const Job& job = trajectories_.start(scene_->model->stateFromMap(mapPoint(x, y), spec, "map point"),
+                                         QString("(%1, %2)").arg(x, 0, 'g', 6).arg(y, 0, 'g', 6));
     // numbered as the tool manager numbers its jobs
-    emit message(QString("trajectory #%1 started at (%2, %3)").arg(series_.back().job->id()).arg(x).arg(y));
+    emit message(QString("trajectory #%1 started at (%2, %3)").arg(job.id()).arg(x).arg(y));
     return true;
   } catch (const InputError& e) {
     emit message(QString::fromStdString(e.what()));
@@ -398,15 +273,9 @@ bool MapPanel::startAt(double x, double y) {
   }
 }
 
-void MapPanel::feedPlots(const Series& s) {
-  for (PlotWindow* p : plotWindows())
-    s.task->taps().add(p->follow(s.job->id(), s.colour));
-}
-
 void MapPanel::addPlotWindow(PlotWindow* window) {
   filters_.addPlot(window);
-  for (const auto& s : series_)
-    s.task->taps().add(window->follow(s.job->id(), s.colour));
+  trajectories_.follow(window);
 }
 
 void MapPanel::addDiagramWindow(ChartWindow* window) {
@@ -417,31 +286,7 @@ void MapPanel::addDiagramWindow(ChartWindow* window) {
 void MapPanel::markDiagrams(bool force) {
   if (!scene_) return;
   filters_.markDiagrams(
-      *scene_->model,
-      [this](const Diagram& d) {
-        std::vector<ChartWindow::Mark> marks;
-        for (const auto& s : series_) {
-          const DiagramPoint p = d.place(s.task->levelState().data());
-          marks.push_back({p[0], p[1], s.colour});
-        }
-        return marks;
-      },
-      force);
-}
-
-std::shared_ptr<PlotTap> MapPanel::tapTrajectory(int id, const PlotSettings& settings) {
-  for (const auto& s : series_)
-    if (s.job->id() == id) {
-      try {
-        PlotSampler check(*scene_->model, settings); // fail here, not on the job's thread
-      } catch (const InputError&) {
-        return nullptr;
-      }
-      auto tap = std::make_shared<PlotTap>(settings);
-      s.task->taps().add(tap);
-      return tap;
-    }
-  return nullptr;
+      *scene_->model, [this](const Diagram& d) { return trajectories_.marks(d); }, force);
 }
 
 std::vector<PlotWindow*> MapPanel::plotWindows() {
@@ -463,59 +308,12 @@ bool MapPanel::drain() {
     }
   }
   changed = drainSearches() || changed;
-  for (auto& s : series_) { // a MEGNO job that has ended colours its trajectory
-    if (!s.megnoJob || s.megnoValue || s.megnoJob->running()) continue;
-    if (s.megnoJob->status() == Job::Status::Finished) {
-      const auto& last = s.megno->result().last;
-      s.megnoValue = last.megno;
-      applyColour(s);
-      changed = true;
-      // <Y> near 2 is a torus; on a chaotic orbit it grows like lambda t / 2 (the rate tends to lambda)
-      emit message(QString("MEGNO (tool #%1) of trajectory #%2: <Y> = %3 at t = %4, rate %5")
-                       .arg(s.megnoJob->id())
-                       .arg(s.job->id())
-                       .arg(last.megno, 0, 'g', 6)
-                       .arg(last.time, 0, 'g', 6)
-                       .arg(last.megnoRate, 0, 'g', 4));
-    } else if (s.megnoJob->status() == Job::Status::Failed) {
-      // drawn in its own colour; why it failed is said once, by the tool manager (as every job's failure)
-      s.megnoValue = std::numeric_limits<double>::quiet_NaN();
-    }
-  }
-  // the points a few milliseconds allow in this turn of the event loop (the map's frame comes after them in
-  // the same turn), at most kDrainPerTick a series
-  QElapsedTimer spent;
-  spent.start();
-  for (auto& s : series_) {
-    std::size_t taken = 0;
-    while (taken < kDrainPerTick && (taken == 0 || spent.elapsed() < kDrainMilliseconds)) {
-      const std::size_t got = takePoints(s, std::min<std::size_t>(kDrainPerTick - taken, 4096));
-      if (got == 0) break;
-      taken += got;
-    }
-    if (taken == 0) {
-      if (s.x.empty() && !s.noCrossingSaid && s.job->running() && !scene_->model->isMap() &&
-          s.since.elapsed() > kNoCrossingMilliseconds) {
-        s.noCrossingSaid = true; // once: e.g. the Chaplygin sleigh's spin dies out and never changes sign
-        const SectionSettings& section = s.task->settings();
-        emit message(
-            QString("trajectory #%1 has not crossed the section %2 = %3 yet: its orbit may never reach "
-                    "it (the Poincaré map tab chooses another section)")
-                .arg(s.job->id())
-                .arg(QString::fromStdString(section.observable.empty() ? scene_->model->info().section
-                                                                       : section.observable))
-                .arg(section.value));
-      }
-      continue;
-    }
-    drawSeries(s);
-    changed = true;
-  }
+  changed = trajectories_.drain() || changed;
   filters_.flush();
   markDiagrams(false);
   if (changed) {
     view_->update();
-    map3D_->feed(map3DTracks());
+    map3D_->feed(trajectories_.tracks());
   }
   return changed;
 }
@@ -523,20 +321,7 @@ bool MapPanel::drain() {
 void MapPanel::removeJob(Job& job) {
   const std::vector<Job*> gone = jobs_.subtree(job);
   const auto isGone = [&](const Job* j) { return std::find(gone.begin(), gone.end(), j) != gone.end(); };
-  for (auto& s : series_)
-    if (s.megnoJob && isGone(s.megnoJob) && !isGone(s.job)) { // its MEGNO alone: back to its own colour
-      s.megnoJob = nullptr, s.megno = nullptr, s.megnoValue.reset();
-      chart_->setColor(s.plot, s.colour);
-    }
-  for (auto it = series_.begin(); it != series_.end();)
-    if (isGone(it->job)) {
-      chart_->setSeries(it->plot, {}, {});
-      for (PlotWindow* p : plotWindows())
-        p->unfollow(it->job->id());
-      it = series_.erase(it);
-    } else {
-      ++it;
-    }
+  trajectories_.remove(isGone);
   for (auto it = tools_.begin(); it != tools_.end();)
     if (isGone(it->job)) {
       chart_->setSeries(it->plot, {}, {});
@@ -573,13 +358,7 @@ void MapPanel::editJob(Job& job, const Scene& edited) {
 }
 
 void MapPanel::clearOutput(int id) {
-  for (auto& s : series_)
-    if (s.job->id() == id) {
-      s.x.clear(), s.y.clear(), s.z.clear();
-      drawSeries(s);
-      for (PlotWindow* p : plotWindows())
-        p->clear(id);
-    }
+  trajectories_.clearOutput(id);
   for (auto& t : tools_)
     if (t.job->id() == id) {
       t.x.clear(), t.y.clear(), t.multipliers.clear(), t.endSaid = false;
@@ -603,10 +382,7 @@ void MapPanel::stopAll() {
 }
 
 long MapPanel::points() const {
-  long n = 0;
-  for (const auto& s : series_)
-    n += static_cast<long>(s.x.size());
-  return n;
+  return trajectories_.points();
 }
 
 bool MapPanel::eventFilter(QObject* watched, QEvent* event) {
@@ -660,9 +436,7 @@ bool MapPanel::eventFilter(QObject* watched, QEvent* event) {
 
 void MapPanel::highlightJob(int id) {
   if (!chart_) return;
-  int plot = -1, index = -1;
-  for (std::size_t k = 0; k < series_.size(); ++k)
-    if (series_[k].job->id() == id) plot = series_[k].plot, index = static_cast<int>(k);
+  const auto [plot, index] = trajectories_.plotOf(id);
   chart_->select(plot);
   view_->update();
   // every window that draws it (manual §2.1)
@@ -671,115 +445,10 @@ void MapPanel::highlightJob(int id) {
   map3D_->select(index); // its series follow the trajectories' order
 }
 
-std::pair<long, long> MapPanel::shownSpan(const Series& s) {
-  const long n = static_cast<long>(s.x.size());
-  const long a = std::clamp(s.first - 1, 0L, n), b = s.last > 0 ? std::clamp(s.last, a, n) : n;
-  return {a, b};
-}
-
-void MapPanel::drawSeries(const Series& s) {
-  if (s.first <= 1 && s.last <= 0) return chart_->setSeries(s.plot, s.x, s.y);
-  const auto [a, b] = shownSpan(s);
-  chart_->setSeries(s.plot, {s.x.begin() + a, s.x.begin() + b}, {s.y.begin() + a, s.y.begin() + b});
-}
-
-bool MapPanel::isTrajectory(int id) const {
-  return std::any_of(series_.begin(), series_.end(), [&](const Series& s) { return s.job->id() == id; });
-}
-
-QString MapPanel::trajectoryStart(int id) const {
-  for (const auto& s : series_)
-    if (s.job->id() == id) {
-      if (!s.origin.isEmpty() || s.x.empty()) return s.origin;
-      return QString("(%1, %2)").arg(s.x[0], 0, 'g', 6).arg(s.y[0], 0, 'g', 6);
-    }
-  return {};
-}
-
-bool MapPanel::setJobColor(int id, const Rgb& color) {
-  for (auto& s : series_)
-    if (s.job->id() == id) {
-      s.colour = color;
-      applyColour(s); // its own colour shows unless it is coloured by its MEGNO
-      for (PlotWindow* p : plotWindows())
-        p->setColor(id, color);
-      view_->update();
-      return true;
-    }
-  return false;
-}
-
-Rgb MapPanel::megnoColour(double megno) {
-  // 2 and below blue (hue 240), 8 and above red (hue 0); NaN (a failed job) falls to blue
-  const double t = std::clamp((megno - 2) / 6, 0.0, 1.0);
-  const QColor c = QColor::fromHsvF(static_cast<float>(2.0 / 3.0 * (1 - t)), 0.85f, 0.9f);
-  return {c.redF(), c.greenF(), c.blueF()};
-}
-
-void MapPanel::startMegno(Series& s) {
-  if (s.megnoJob) return;
-  auto task = std::make_unique<MegnoTask>(s.task->spec(), scene_->megno);
-  s.megno = task.get();
-  s.megnoJob = &jobs_.add(std::move(task), s.job);
-  s.megnoJob->start();
-}
-
-void MapPanel::applyColour(const Series& s) {
-  const Rgb c = shownColour(s.job->id());
-  chart_->setColor(s.plot, c);
-  view_->update();
-}
-
 void MapPanel::setColourByMegno(bool on) {
-  colourByMegno_ = on;
   if (megnoBox_->isChecked() != on) megnoBox_->setChecked(on);
   megnoLegend_->setVisible(on);
-  for (auto& s : series_) {
-    if (on) startMegno(s);
-    applyColour(s);
-  }
-}
-
-std::optional<double> MapPanel::trajectoryMegno(int id) const {
-  for (const auto& s : series_)
-    if (s.job->id() == id) return s.megnoValue;
-  return std::nullopt;
-}
-
-Rgb MapPanel::shownColour(int id) const {
-  for (const auto& s : series_)
-    if (s.job->id() == id)
-      return colourByMegno_ && s.megnoValue && !std::isnan(*s.megnoValue) ? megnoColour(*s.megnoValue)
-                                                                          : s.colour;
-  return {0, 0, 0};
-}
-
-bool MapPanel::setJobRange(int id, long first, long last) {
-  for (auto& s : series_)
-    if (s.job->id() == id) {
-      s.first = std::max(1L, first), s.last = last;
-      drawSeries(s);
-      view_->update();
-      return true;
-    }
-  return false;
-}
-
-long MapPanel::shownPoints(int id) const {
-  for (const auto& s : series_)
-    if (s.job->id() == id) {
-      const auto [a, b] = shownSpan(s);
-      return b - a;
-    }
-  return 0;
-}
-
-std::vector<Map3DWindow::Track> MapPanel::map3DTracks() const {
-  std::vector<Map3DWindow::Track> tracks;
-  tracks.reserve(series_.size());
-  for (const auto& s : series_)
-    tracks.push_back({&s.x, &s.y, &s.z});
-  return tracks;
+  trajectories_.setColourByMegno(on);
 }
 
 void MapPanel::resetMap3D(bool reopen) {
@@ -798,7 +467,7 @@ QWidget* MapPanel::openMap3D() {
         "Map3D: this map is two-dimensional (Windows > Charts > map3d shows it on its energy level)");
     return nullptr;
   }
-  return map3D_->open({names[0], names[1], names[2]}, map3DTracks());
+  return map3D_->open({names[0], names[1], names[2]}, trajectories_.tracks());
 }
 
 long MapPanel::map3DPoints() const {

@@ -11,6 +11,7 @@
 #include "app/gui/ChartWindow.h"
 #include "app/gui/Map3DWindow.h"
 #include "app/gui/MapFilters.h"
+#include "app/gui/MapTrajectories.h"
 #include "dynamics/jobs/JobTree.h"
 #include "dynamics/jobs/PlotTap.h"
 #include "render/charts/PoincareChart.h"
@@ -91,8 +92,6 @@ public:
   void followDoubledFamily(int k);
   /// The map points a tool's job (a family, a tree, a separatrix) has drawn so far; empty for another job.
   std::vector<std::pair<double, double>> toolPoints(int id) const;
-  /// A trajectory from a full state (the scene's initial one for the Tools tab's Create).
-  void startFrom(const Eigen::VectorXd& state) { start(state); }
   /// The period-doubling tree of the scene's fixed point (bifurcation_tree section); its families drawn.
   void startBifurcationTree();
   /// Runs registered tool `id` (ToolWindow::MapRows) on the scene as a job of the map window that draws its
@@ -105,12 +104,6 @@ public:
   /// continuation's parameter, end value and step) without an Apply first; what defines the map (problem,
   /// method, section) stays the scene's.
   void setToolDocument(std::function<nlohmann::json()> document) { toolDocument_ = std::move(document); }
-  /// The trajectories `ids` (empty: all; with `onlyRunning`, those running), each with its points and the
-  /// state to go on from: stopped to be read, and started again with `goOn`.
-  std::vector<SavedTrajectory> saveTrajectories(const std::vector<int>& ids, bool onlyRunning, bool goOn);
-  /// Adds saved trajectories to the map under the current scene, each with its points, colour and range;
-  /// those that ran go on (bit for bit). Throws InputError, adding none, when one does not fit the scene.
-  int restoreTrajectories(const std::vector<SavedTrajectory>& saved);
   /// Deletes every trajectory and tool of the map and puts the saved trajectories and tool outputs in their
   /// place (Undo, Open session).
   void replaceTrajectories(const std::vector<SavedTrajectory>& saved,
@@ -121,9 +114,6 @@ public:
   /// Draws saved tool outputs again, each as a finished job of the tool manager that computes nothing (a
   /// record: its multipliers reach the filters, Delete and Undo work on it as on any tool).
   void restoreToolOutputs(const std::vector<SavedToolOutput>& saved);
-  /// A finished trajectory goes on for `more` points (bit for bit one longer run); false for a job that is
-  /// not a trajectory, runs, or has no limit.
-  bool morePoints(int id, long more);
   /// The running trajectories, stopped and saved (their settings, whole state and points) to go on after a
   /// restart (MainWindow saves them when it closes); an empty array when none runs.
   nlohmann::json saveRunning();
@@ -147,31 +137,10 @@ public:
   void clearOutput(int id);
   /// Draws the trajectory of job `id` emphasised (-1, or a job that is not a trajectory: none).
   void highlightJob(int id);
-  /// Whether job `id` is a trajectory of the map.
-  bool isTrajectory(int id) const;
-  /// Where trajectory `id` starts, in map coordinates ("(x, y)": the click, else its first map point; empty
-  /// before it has one or for no trajectory): what tells trajectories apart in the tool manager.
-  QString trajectoryStart(int id) const;
-  /// The colour of a trajectory's points (manual §2.1: colour of output); false when `id` is not a
-  /// trajectory.
-  bool setJobColor(int id, const Rgb& color);
-  /// Which of a trajectory's points show (manual §2.1: Set range): the `first`-th to the `last`-th (1-based,
-  /// inclusive; last <= 0: to the end). False when `id` is not a trajectory.
-  bool setJobRange(int id, long first, long last);
-  /// The points of trajectory `id` shown now (tests).
-  long shownPoints(int id) const;
-  /// The map points trajectory `id` has drawn so far, x and y (empty for no trajectory).
-  std::pair<std::vector<double>, std::vector<double>> trajectoryPoints(int id) const;
   /// Colours every trajectory, those running and those to come, by its MEGNO <Y> (a MEGNO job each, under
   /// the trajectory's job, started once); off gives back their own colours.
   void setColourByMegno(bool on);
-  bool colourByMegno() const { return colourByMegno_; }
-  /// The MEGNO <Y> of trajectory `id` once its job has finished; nothing before, or for no trajectory.
-  std::optional<double> trajectoryMegno(int id) const;
-  /// The colour trajectory `id` is drawn in now (its own, or its MEGNO's); black for no trajectory.
-  Rgb shownColour(int id) const;
-  /// The colour of a MEGNO <Y>: hue from blue (2 and below) to red (8 and above).
-  static Rgb megnoColour(double megno);
+  bool colourByMegno() const { return trajectories_.colourByMegno(); }
   /// Opens (or shows) the Map3D window of a 3D map (manual §2.1: the full map beside its projection), fed
   /// with the trajectories' points as they come; nullptr (with a message) for a 2D map.
   QWidget* openMap3D();
@@ -185,15 +154,15 @@ public:
   /// a trajectory is a point on the plane of first integrals), kept up to date as trajectories come, go and
   /// are edited.
   void addDiagramWindow(ChartWindow* window);
-  /// A tap on trajectory `id` (its job samples its own steps for it from now on); nullptr when `id` is not a
-  /// trajectory or the settings do not fit the problem.
-  std::shared_ptr<PlotTap> tapTrajectory(int id, const PlotSettings& settings);
   /// The open plot filters (the 3D view's run offers them its states too).
   std::vector<PlotWindow*> plotWindows();
   /// Points drawn in the Map3D window (tests).
   long map3DPoints() const;
   long points() const;
-  int trajectories() const { return static_cast<int>(series_.size()); }
+  /// The map's trajectories (app/gui/MapTrajectories.h): where they start, their points, colours, ranges,
+  /// MEGNO; saved and restored.
+  MapTrajectories& trajectories() { return trajectories_; }
+  const MapTrajectories& trajectories() const { return trajectories_; }
   /// Fixed-point searches started, and how many found a point.
   int searches() const { return static_cast<int>(searches_.size()); }
   int fixedPointsFound() const;
@@ -216,47 +185,14 @@ protected:
 private:
   std::function<nlohmann::json()> toolDocument_;
   nlohmann::json toolDocument() const { return toolDocument_ ? toolDocument_() : scene_->document; }
-  /// startAt for a flow without map coordinates: returns what it did, in words.
-  QString startOnSection(double x, double y);
-  struct Series {
-    Job* job;
-    PoincareTask* task;
-    std::vector<double> x, y, z; ///< z: the third coordinate of a 3D map
-    int plot;
-    Rgb colour;
-    long first = 1, last = 0; ///< the range shown (Set range)
-    Job* megnoJob = nullptr;  ///< the MEGNO job colouring it (under its job), once started
-    MegnoTask* megno = nullptr;
-    std::optional<double> megnoValue; ///< <Y> when that job has finished
-    QString origin;                   ///< where a click started it (map coordinates); else its first point
-    std::vector<MapPoint> pending;    ///< points taken from the job, drawn from pendingAt on
-    std::size_t pendingAt = 0;
-    QElapsedTimer since;         ///< since it started: a flow's orbit that never crosses the section
-    bool noCrossingSaid = false; ///< is said once that it has not crossed it yet
-  };
-  /// How long a trajectory of a flow may run without a point before the map says why it may stay empty.
-  static constexpr qint64 kNoCrossingMilliseconds = 4000;
-  /// The most points of one trajectory a drain draws: a job can hand over 2^18 at once, and copying and
-  /// drawing them in one turn would keep the window from answering for tens of milliseconds.
-  static constexpr std::size_t kDrainPerTick = 1 << 16;
-  static constexpr qint64 kDrainMilliseconds = 4; ///< the time a turn of the event loop spends taking points
-  void startMegno(Series& s);
-  /// Draws a trajectory in its own colour or its MEGNO's.
-  void applyColour(const Series& s);
-  bool colourByMegno_ = false;
+  /// startAt for a flow without map coordinates: returns what it did, in words, and the trajectory's job.
+  std::pair<QString, int> startOnSection(double x, double y);
+  /// Starts a trajectory at a full state, from `origin` (map coordinates; empty: its first point).
+  Job& start(const Eigen::VectorXd& state, const QString& origin = {});
   QCheckBox* megnoBox_;
   QLabel* megnoLegend_;
   QLabel* cursorLabel_; ///< the map coordinates under the cursor
   std::array<std::string, 2> axisNames_{"x", "y"};
-  /// Gives the trajectory's job a tap of each open plot filter.
-  void feedPlots(const Series& s);
-  /// The points of a trajectory its range shows: [first, second) of its indices.
-  static std::pair<long, long> shownSpan(const Series& s);
-  /// Draws the part of a trajectory its range shows.
-  void drawSeries(const Series& s);
-  /// Appends at most `most` of a trajectory's points not yet appended (taking the job's next ones when those
-  /// taken are used up); returns how many.
-  static std::size_t takePoints(Series& s, std::size_t most);
   struct Search {
     Job* job;
     ToolTask* task; ///< the fixedpoint tool's run; null for a restored record
@@ -273,7 +209,6 @@ private:
   bool drainSearches();
   /// The colour of a fixed-point search's path and point.
   static constexpr Rgb kSearchColour{0.9, 0.1, 0.1};
-  void start(const Eigen::VectorXd& state);
   std::vector<double> mapPoint(double x, double y) const;
   std::vector<Search> searches_;
   // the output of other tools drawn on the map: `pull` appends what arrived to x, y and says whether
@@ -312,15 +247,13 @@ private:
   ClickMode clickMode_ = ClickMode::Trajectory;
   QComboBox* modeBox_;
   std::unique_ptr<PoincareChart> chart_;
-  /// Every trajectory's points, for the Map3D window.
-  std::vector<Map3DWindow::Track> map3DTracks() const;
   /// Drops the Map3D chart (its series follow the trajectories); draws it again if `reopen` and it shows.
   void resetMap3D(bool reopen);
   std::unique_ptr<Map3DWindow> map3D_;
   const Scene* scene_ = nullptr;
   int sceneStart_ = -1; ///< the job of the trajectory setScene started
   JobTree jobs_;
-  std::vector<Series> series_;
+  MapTrajectories trajectories_;
 };
 
 } // namespace rv

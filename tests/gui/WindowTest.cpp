@@ -164,11 +164,11 @@ bool finishDrawing(MapPanel* map, const std::vector<int>& ids, std::size_t point
     map->drain();
     bool done = true;
     for (int id : ids)
-      done = done && map->trajectoryPoints(id).first.size() >= points &&
+      done = done && map->trajectories().points(id).first.size() >= points &&
              map->jobs().find(id)->status() == Job::Status::Finished;
     if (done) {
       for (int id : ids)
-        if (map->trajectoryPoints(id).first.size() != points) return false;
+        if (map->trajectories().points(id).first.size() != points) return false;
       return true;
     }
     QTest::qWait(20);
@@ -862,21 +862,21 @@ private slots:
     QVERIFY(window_->runDocument(doc));
     MapPanel* map = window_->mapPanel();
     // Tools tab: Create a Poincare map (a trajectory from the scene's initial point)
-    const int created = map->trajectories();
+    const int created = map->trajectories().count();
     window_->controlPanel()->selectTool("poincare");
     QTest::mouseClick(window_->controlPanel()->findChild<QPushButton*>("create"), Qt::LeftButton);
-    QCOMPARE(map->trajectories(), created + 1);
+    QCOMPARE(map->trajectories().count(), created + 1);
     QTRY_VERIFY_WITH_TIMEOUT(map->points() > 20, 60000); // the chart's ranges follow the points
     auto* mapView = map->findChild<QtVtkWidget*>();
     QVERIFY(mapView);
     mapView->grabFramebuffer(); // a frame drawn with those points: the click below lands in their ranges
-    const int before = map->trajectories();
+    const int before = map->trajectories().count();
     // Ctrl+click in the middle of the map (Henon-Heiles: (y, py) near (0, 0), inside the region at E = 1/12)
     // (a plain click in the default mode; Ctrl+click in any mode)
     QTest::mouseClick(mapView, Qt::LeftButton,
                       problem == "henon_heiles" ? Qt::ControlModifier : Qt::NoModifier,
                       mapView->rect().center());
-    QTRY_COMPARE_WITH_TIMEOUT(map->trajectories(), before + 1, 60000);
+    QTRY_COMPARE_WITH_TIMEOUT(map->trajectories().count(), before + 1, 60000);
     Job* job = map->jobs().jobs().back();
     QTRY_VERIFY_WITH_TIMEOUT(dynamic_cast<PoincareTask&>(job->task()).points().total() > 5, 60000);
     ToolManager* tools = window_->toolManager();
@@ -915,9 +915,9 @@ private slots:
     tools->colourSelected(Rgb{0.0, 1.0, 0.0});
     QTRY_VERIFY_WITH_TIMEOUT(green(mapView->grabFramebuffer()) > 20, 60000);
     tools->rangeSelected(5, 10);
-    QCOMPARE(map->shownPoints(job->id()), 6L);
+    QCOMPARE(map->trajectories().shownPoints(job->id()), 6L);
     tools->rangeSelected(3, 0);
-    QVERIFY(map->shownPoints(job->id()) > 6);
+    QVERIFY(map->trajectories().shownPoints(job->id()) > 6);
     // File > Export map: its points as CSV (a header, a row per point shown)
     const QString csv = dir_.filePath("map_" + problem + ".csv");
     QVERIFY(saveChartCsv(map->chart(), csv));
@@ -925,16 +925,16 @@ private slots:
     QVERIFY(!rows.isEmpty() && rows.first().startsWith("series,"));
     QVERIFY2(rows.size() > 20, qPrintable(QString("%1 rows").arg(rows.size())));
     tools->deleteSelected();
-    QCOMPARE(map->trajectories(), before);
+    QCOMPARE(map->trajectories().count(), before);
     // the click modes: pan / zoom starts nothing, fixed points searches from the point
     map->setClickMode(MapPanel::ClickMode::Navigate);
     QTest::mouseClick(mapView, Qt::LeftButton, Qt::NoModifier, mapView->rect().center());
-    QCOMPARE(map->trajectories(), before);
+    QCOMPARE(map->trajectories().count(), before);
     const int searches = map->searches();
     map->setClickMode(MapPanel::ClickMode::FixedPoint);
     QTest::mouseClick(mapView, Qt::LeftButton, Qt::NoModifier, mapView->rect().center());
     QCOMPARE(map->searches(), searches + 1);
-    QCOMPARE(map->trajectories(), before);
+    QCOMPARE(map->trajectories().count(), before);
     map->setClickMode(MapPanel::ClickMode::Trajectory);
   }
 
@@ -1003,7 +1003,7 @@ private slots:
     // a filter gets what the tools compute while it is open)
     QVERIFY(map->startAt(0.05, 0.1));
     QVERIFY(map->startAt(-0.1, 0.05));
-    QCOMPARE(map->trajectories(), 3);
+    QCOMPARE(map->trajectories().count(), 3);
     std::vector<int> ids;
     for (Job* j : map->jobs().jobs())
       ids.push_back(j->id());
@@ -1052,15 +1052,15 @@ private slots:
     for (Job* j : map->jobs().jobs())
       if (!j->parent() && dynamic_cast<PoincareTask*>(&j->task())) ids.push_back(j->id());
     QCOMPARE(ids.size(), std::size_t(2));
-    const Rgb own = map->shownColour(ids[1]);
+    const Rgb own = map->trajectories().shownColour(ids[1]);
     auto* box = map->findChild<QCheckBox*>("colour_by_megno");
     QVERIFY(box);
     box->click();
     QVERIFY(map->colourByMegno());
     for (int id : ids) // one MEGNO job under each trajectory, listed in the tool manager
       QCOMPARE(map->jobs().children(*map->jobs().find(id)).size(), std::size_t(1));
-    QTRY_VERIFY_WITH_TIMEOUT(map->trajectoryMegno(ids[0]) && map->trajectoryMegno(ids[1]), 60000);
-    const double torus = *map->trajectoryMegno(ids[0]), chaos = *map->trajectoryMegno(ids[1]);
+    QTRY_VERIFY_WITH_TIMEOUT(map->trajectories().megno(ids[0]) && map->trajectories().megno(ids[1]), 60000);
+    const double torus = *map->trajectories().megno(ids[0]), chaos = *map->trajectories().megno(ids[1]);
     // each <Y> is said in the Results dock with its trajectory's number
     const int megnoJob = map->jobs().children(*map->jobs().find(ids[0])).front()->id();
     QVERIFY2(window_->results().contains(QString("MEGNO (tool #%1) of trajectory #%2: <Y> = %3")
@@ -1070,18 +1070,18 @@ private slots:
              qPrintable(window_->results()));
     QVERIFY2(std::abs(torus - 2) < 0.1, qPrintable(QString::number(torus)));
     QVERIFY2(chaos > 50, qPrintable(QString::number(chaos)));
-    const Rgb blue = map->shownColour(ids[0]), red = map->shownColour(ids[1]);
-    QVERIFY(blue == MapPanel::megnoColour(torus) && blue[2] > 2 * blue[0]);
-    QVERIFY(red == MapPanel::megnoColour(chaos) && red[0] > 2 * red[2]);
+    const Rgb blue = map->trajectories().shownColour(ids[0]), red = map->trajectories().shownColour(ids[1]);
+    QVERIFY(blue == MapTrajectories::megnoColour(torus) && blue[2] > 2 * blue[0]);
+    QVERIFY(red == MapTrajectories::megnoColour(chaos) && red[0] > 2 * red[2]);
     QVERIFY(QTest::qWaitForWindowExposed(map->window()));
     QVERIFY(keep(map->grab().toImage(), "window_map_megno.png"));
     // deleting a MEGNO job gives its trajectory back its own colour; so does switching the colouring off
     map->removeJob(*map->jobs().children(*map->jobs().find(ids[1])).front());
-    QVERIFY(!map->trajectoryMegno(ids[1]));
-    QVERIFY(map->shownColour(ids[1]) == own);
+    QVERIFY(!map->trajectories().megno(ids[1]));
+    QVERIFY(map->trajectories().shownColour(ids[1]) == own);
     box->click();
     QVERIFY(!map->colourByMegno());
-    QVERIFY(map->shownColour(ids[0]) != blue);
+    QVERIFY(map->trajectories().shownColour(ids[0]) != blue);
   }
 
   // The map holds still while the user clicks: a new trajectory does not rescale the axes (Fit does); the
@@ -1481,7 +1481,8 @@ private slots:
     QCOMPARE(window_->resumeSavedJobs(), 2);
     QVERIFY(!QFile::exists(MainWindow::savedJobsPath())); // offered once
     QCOMPARE(window_->scene()->model->info().id, std::string("henon_heiles"));
-    QCOMPARE(map->trajectories(), 2); // the two continued (the scene's own among them: not started twice)
+    QCOMPARE(map->trajectories().count(),
+             2); // the two continued (the scene's own among them: not started twice)
     map->drain();
     QVERIFY2(map->points() >= shown, qPrintable(QString("%1 < %2").arg(map->points()).arg(shown)));
     QTRY_VERIFY_WITH_TIMEOUT(map->points() > shown + 100, 60000); // they go on
@@ -1608,7 +1609,7 @@ private slots:
     const std::vector<int> ids = map->sceneJobs();
     QCOMPARE(ids.size(), 3u);
     QVERIFY(finishDrawing(map, ids, 300));
-    const auto first = map->trajectoryPoints(ids[1]);
+    const auto first = map->trajectories().points(ids[1]);
     // Apply with nothing changed: the same jobs, nothing asked
     QVERIFY(window_->applyDocument(window_->controlPanel()->editedDocument()));
     QCOMPARE(map->sceneJobs(), ids);
@@ -1623,11 +1624,11 @@ private slots:
     doc["parameters"]["energy"] = 0.1;
     answerNextQuestion(QMessageBox::No);
     QVERIFY(!window_->applyDocument(doc));
-    QCOMPARE(map->trajectories(), 4);
+    QCOMPARE(map->trajectories().count(), 4);
     QCOMPARE(window_->scene()->model->parameters()["energy"], 0.125);
     answerNextQuestion(QMessageBox::Yes);
     QVERIFY(window_->applyDocument(doc));
-    QCOMPARE(map->trajectories(), 1);
+    QCOMPARE(map->trajectories().count(), 1);
     QCOMPARE(window_->scene()->model->parameters()["energy"], 0.1);
     QVERIFY2(window_->undoText().contains("4 trajectories"), qPrintable(window_->undoText()));
     // Undo (the Edit menu's action, Ctrl+Z): the energy and the four trajectories with their points
@@ -1636,32 +1637,32 @@ private slots:
     QCOMPARE(undo->shortcut(), QKeySequence(QKeySequence::Undo));
     undo->trigger();
     QCOMPARE(window_->scene()->model->parameters()["energy"], 0.125);
-    QCOMPARE(map->trajectories(), 4);
+    QCOMPARE(map->trajectories().count(), 4);
     const std::vector<int> back = map->sceneJobs();
-    QVERIFY(map->trajectoryPoints(back[1]) == first);
-    QCOMPARE(map->trajectoryPoints(back[3]).first.size(), 100u);
+    QVERIFY(map->trajectories().points(back[1]) == first);
+    QCOMPARE(map->trajectories().points(back[3]).first.size(), 100u);
     // a deleted trajectory comes back too (Delete in the tool manager)
     ToolManager* tools = window_->toolManager();
     tools->refresh();
     tools->select(back[1]);
     tools->deleteSelected();
-    QCOMPARE(map->trajectories(), 3);
+    QCOMPARE(map->trajectories().count(), 3);
     QVERIFY2(window_->undoText().contains("1 trajectory"), qPrintable(window_->undoText()));
     QVERIFY(window_->undo());
-    QCOMPARE(map->trajectories(), 4);
-    QVERIFY(map->trajectoryPoints(back[1]) == first); // under its number (issue 61 (3))
+    QCOMPARE(map->trajectories().count(), 4);
+    QVERIFY(map->trajectories().points(back[1]) == first); // under its number (issue 61 (3))
     // Redo (Edit > Redo, Ctrl+Shift+Z) deletes it again, Undo brings it back once more
     auto* redo = window_->findChild<QAction*>("redo");
     QVERIFY(redo && redo->isEnabled());
     QCOMPARE(redo->shortcut(), QKeySequence(QKeySequence::Redo));
     QVERIFY2(window_->redoText().contains("1 trajectory"), qPrintable(window_->redoText()));
     redo->trigger();
-    QCOMPARE(map->trajectories(), 3);
+    QCOMPARE(map->trajectories().count(), 3);
     QVERIFY(!redo->isEnabled());
     QVERIFY(window_->undo());
-    QCOMPARE(map->trajectories(), 4);
-    QVERIFY(map->trajectoryPoints(back[1]) == first); // under its number (issue 61 (3))
-    QVERIFY(redo->isEnabled());                       // the delete, to do again
+    QCOMPARE(map->trajectories().count(), 4);
+    QVERIFY(map->trajectories().points(back[1]) == first); // under its number (issue 61 (3))
+    QVERIFY(redo->isEnabled());                            // the delete, to do again
     // a new change forgets what was undone
     tools->refresh();
     tools->select(map->sceneJobs().front());
@@ -1678,14 +1679,14 @@ private slots:
     doc["poincare"]["points"] = 30;
     QVERIFY(window_->runDocument(doc));
     MapPanel* map = window_->mapPanel();
-    const int before = map->trajectories();
+    const int before = map->trajectories().count();
     QVERIFY(map->startAt(-6.5, 3.25));
-    QCOMPARE(map->trajectories(), before + 1);
+    QCOMPARE(map->trajectories().count(), before + 1);
     const int id = map->sceneJobs().back();
     QVERIFY2(window_->results().contains("x = -6.5, y = 3.25, z = 27 (the section)"),
              qPrintable(window_->results()));
     QVERIFY(finishDrawing(map, {id}, 30)); // it crosses the section: its points are drawn
-    const auto points = map->trajectoryPoints(id);
+    const auto points = map->trajectories().points(id);
     QCOMPARE(points.first.size(), std::size_t(30));
   }
 
@@ -1777,7 +1778,7 @@ private slots:
     QVERIFY(finishDrawing(map, ids, 300));
     std::vector<std::pair<std::vector<double>, std::vector<double>>> saved;
     for (int id : ids)
-      saved.push_back(map->trajectoryPoints(id));
+      saved.push_back(map->trajectories().points(id));
     window_->report("a line the session keeps");
     ChartWindow* chart = window_->openChart("poincare"); // an open chart window is part of the session
     QVERIFY(chart);
@@ -1803,7 +1804,7 @@ private slots:
     const std::vector<int> opened = map->sceneJobs();
     QCOMPARE(opened.size(), saved.size());
     for (std::size_t k = 0; k < saved.size(); ++k)
-      QVERIFY(map->trajectoryPoints(opened[k]) == saved[k]);
+      QVERIFY(map->trajectories().points(opened[k]) == saved[k]);
     // Start on the finished trajectory: 300 more points
     ToolManager* tools = window_->toolManager();
     QTRY_VERIFY_WITH_TIMEOUT(map->jobs().find(opened[1])->status() == Job::Status::Finished, 60000);
@@ -1813,13 +1814,13 @@ private slots:
     QVERIFY2(start->isEnabled(), qPrintable(start->toolTip()));
     start->click();
     QVERIFY(finishDrawing(map, {opened[1]}, 600));
-    const auto continued = map->trajectoryPoints(opened[1]);
+    const auto continued = map->trajectories().points(opened[1]);
     // the reference: one run of 600 points from the same click
     doc["poincare"]["points"] = 600;
     QVERIFY(window_->runDocument(doc));
     QVERIFY(map->startAt(0.05, 0.1));
     QVERIFY(finishDrawing(map, {map->sceneJobs().back()}, 600));
-    QVERIFY(map->trajectoryPoints(map->sceneJobs().back()) == continued);
+    QVERIFY(map->trajectories().points(map->sceneJobs().back()) == continued);
   }
 
   // Issue 43: the fixed points and families found on the map are kept -- a session saved and opened draws
@@ -1896,7 +1897,7 @@ private slots:
     const std::vector<int> ids = map->sceneJobs();
     QCOMPARE(ids.size(), 3u);
     QVERIFY(finishDrawing(map, ids, 100));
-    const auto second = map->trajectoryPoints(ids[1]);
+    const auto second = map->trajectories().points(ids[1]);
     // a failing tool: the failure said once, with its number
     map->startContinuation();
     const int failed = map->jobs().jobs().back()->id();
@@ -1908,7 +1909,7 @@ private slots:
     // trajectory's
     map->setColourByMegno(true);
     const int megno = map->jobs().children(*map->jobs().find(ids[0])).front()->id();
-    QTRY_VERIFY_WITH_TIMEOUT(map->trajectoryMegno(ids[0]).has_value(), 60000);
+    QTRY_VERIFY_WITH_TIMEOUT(map->trajectories().megno(ids[0]).has_value(), 60000);
     QVERIFY2(window_->results().contains(
                  QString("MEGNO (tool #%1) of trajectory #%2: <Y> = ").arg(megno).arg(ids[0])),
              qPrintable(window_->results()));
@@ -1920,8 +1921,8 @@ private slots:
     QVERIFY(!map->jobs().find(ids[1]));
     QVERIFY(window_->undo());
     QCOMPARE(map->sceneJobs().size(), 4u);
-    QVERIFY(map->jobs().find(ids[1]) && map->isTrajectory(ids[1]));
-    QVERIFY(map->trajectoryPoints(ids[1]) == second);
+    QVERIFY(map->jobs().find(ids[1]) && map->trajectories().contains(ids[1]));
+    QVERIFY(map->trajectories().points(ids[1]) == second);
     tools->refresh();
     std::vector<int> rows; // listed where it was: the tool manager's rows by number
     for (int i = 0; i < tools->tree()->topLevelItemCount(); ++i)
@@ -1935,7 +1936,7 @@ private slots:
     QVERIFY(window_->applyDocument(doc));
     QVERIFY(window_->undo());
     QCOMPARE(map->sceneJobs(), before);
-    QVERIFY(map->trajectoryPoints(ids[1]) == second);
+    QVERIFY(map->trajectories().points(ids[1]) == second);
     // the failed record stays failed (its own thread decides: waited for), and is not said failed again
     QTRY_COMPARE_WITH_TIMEOUT(map->jobs().find(failed)->status(), Job::Status::Failed, 60000);
     tools->refresh();
@@ -1947,7 +1948,7 @@ private slots:
     QVERIFY(map->startAt(1.0, 1.0)); // numbers taken in between
     QVERIFY(window_->openScene(path));
     QCOMPARE(map->sceneJobs(), before);
-    QVERIFY(map->trajectoryPoints(ids[1]) == second);
+    QVERIFY(map->trajectories().points(ids[1]) == second);
     QTRY_COMPARE_WITH_TIMEOUT(map->jobs().find(failed)->status(), Job::Status::Failed, 60000);
     QCOMPARE(map->jobs().find(failed)->task().name(), std::string("Continuation"));
     tools->refresh();
@@ -2028,9 +2029,9 @@ private slots:
   void theScenesTrajectoryStartsAtItsInitialMapPoint() {
     QVERIFY(window_->openScene(QString::fromStdString(defaultScenePath("standard_map"))));
     MapPanel* map = window_->mapPanel();
-    QCOMPARE(map->trajectoryStart(map->sceneJobs().front()), QString("(3, 1.9)"));
+    QCOMPARE(map->trajectories().origin(map->sceneJobs().front()), QString("(3, 1.9)"));
     QVERIFY(map->startAt(1.5, 0.25));
-    QCOMPARE(map->trajectoryStart(map->sceneJobs().back()), QString("(1.5, 0.25)"));
+    QCOMPARE(map->trajectories().origin(map->sceneJobs().back()), QString("(1.5, 0.25)"));
   }
 
   // Issue 61 (6): the Chaplygin sleigh's map stayed empty ("running 0 %") with no word why: its spin dies out
@@ -2173,7 +2174,7 @@ private slots:
     auto* dock = window_->findChild<QDockWidget*>("map");
     QVERIFY(dock);
     // the map's picture: its points' colour (the first series') covers a good part of it
-    const Rgb c = map->shownColour(map->sceneJobs().front());
+    const Rgb c = map->trajectories().shownColour(map->sceneJobs().front());
     const auto pointsIn = [](const QImage& img, const Rgb& colour) { // pixels of the points' colour
       const QColor want = QColor::fromRgbF(static_cast<float>(colour[0]), static_cast<float>(colour[1]),
                                            static_cast<float>(colour[2]));
@@ -2205,7 +2206,7 @@ private slots:
     // and it still works: a new trajectory shows in its own colour
     QVERIFY(map->startAt(1.0, 0.5));
     QVERIFY(finishDrawing(map, {map->sceneJobs().back()}, 3000));
-    const Rgb d = map->shownColour(map->sceneJobs().back());
+    const Rgb d = map->trajectories().shownColour(map->sceneJobs().back());
     QVERIFY(d != c);
     const long shown = pointsIn(map->view()->grabFramebuffer(), d);
     QVERIFY2(shown > 50, qPrintable(QString::number(shown)));
@@ -2503,9 +2504,9 @@ private slots:
       QVERIFY2(!added.empty(), tool.id.c_str());
       for (Job* j : added) {
         const int id = j->id();
-        if (map->isTrajectory(id)) { // the map's points: it draws them as they come
+        if (map->trajectories().contains(id)) { // the map's points: it draws them as they come
           QTRY_VERIFY_WITH_TIMEOUT(j->status() == Job::Status::Failed ||
-                                       !map->saveTrajectories({id}, false, true).front().x.empty(),
+                                       !map->trajectories().save({id}, false, true).front().x.empty(),
                                    120000);
         } else { // a search, a family, a branch, a tree: it ends with what it drew (the frame timer drains
                  // it)
