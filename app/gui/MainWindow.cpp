@@ -12,13 +12,13 @@
 #include "app/gui/QtVtkWidget.h"
 #include "app/gui/SweepWindow.h"
 #include "app/gui/ToolManager.h"
+#include "app/gui/ViewRecorder.h"
 #include "app/gui/VisualizerSettings.h"
 #include "dynamics/core/Errors.h"
 #include "dynamics/io/AtomicFile.h"
 #include "dynamics/jobs/PoincareTask.h"
 #include "dynamics/tools/ToolRegistry.h"
 #include "render/charts/PoincareChart.h"
-#include "render/video/ScreenRecorder.h"
 #include "render/video/VideoExport.h"
 #include "scenes/ModelFile.h"
 #include "scenes/SceneCharts.h"
@@ -47,7 +47,6 @@
 #include <QSignalBlocker>
 #include <QStandardPaths>
 #include <QStatusBar>
-#include <QThread>
 #include <QTime>
 #include <QVBoxLayout>
 #include <algorithm>
@@ -78,15 +77,6 @@ QString numbersOf(const Chart& chart) {
   return QString::fromStdString(plane->legendOrder()) + ": " + named.join(", ");
 }
 } // namespace
-
-// A recording takes the pictures the 3D view paints (QtVtkWidget's frame tap) with their wall-clock times;
-// ScreenRecorder encodes them on its own thread.
-struct MainWindow::Recording {
-  std::shared_ptr<ScreenRecorder> video;
-  QElapsedTimer clock;
-  QString path;
-  QString error; // the first encoder failure while recording
-};
 
 void MainWindow::report(const QString& text, int timeoutMs) {
   statusBar()->showMessage(text, timeoutMs);
@@ -131,6 +121,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   connect(tools_, &ToolManager::message, this, [this](const QString& m) { report(m, 8000); });
   connect(tools_, &ToolManager::selectedJob, map_, &MapPanel::highlightJob);
   apex_ = std::make_unique<ApexWindow>(this, [this](QWidget* w) { placeWindow(w); });
+  recorder_ = new ViewRecorder(view_, this);
+  connect(recorder_, &ViewRecorder::finished, this, &MainWindow::recordingWritten);
   connect(tools_, &ToolManager::selectedJob, this, [this](int id) {
     if (scene_ && apex_) apex_->follow(id, *map_, *scene_, shownTime_);
   });
@@ -221,14 +213,8 @@ MainWindow::~MainWindow() {
   timer_.stop();
   qDeleteAll(findChildren<ChartWindow*>()); // their jobs live in the map's job tree, which goes first
   qDeleteAll(findChildren<SweepWindow*>());
-  if (finisher_) finisher_->wait(); // a video being finished is written whole
-  if (recorder_) {                  // a recording in progress is kept: its video is finished here
-    view_->setFrameTap({});
-    try {
-      recorder_->video->finish(recorder_->clock.elapsed() / 1000.0);
-    } catch (const std::exception&) { // nothing to tell any more; the writer leaves no half-written file
-    }
-  }
+  delete recorder_; // a recording in progress is finished, a video being finished written whole
+  recorder_ = nullptr;
   map_->stopAll();
   stream_.reset();
   if (visual_) view_->renderWindow()->RemoveRenderer(visual_->renderer());
@@ -546,37 +532,23 @@ bool MainWindow::snapshotTo(const QString& path) {
   return true;
 }
 
+bool MainWindow::recording() const {
+  return recorder_ && recorder_->recording();
+}
+
 bool MainWindow::startRecording(const QString& path, int fps) {
-  if (recorder_) return false;
-  auto r = std::make_unique<Recording>();
+  if (recorder_->recording()) return false;
   const qreal dpr = view_->devicePixelRatioF();
   const QSize shown(static_cast<int>(std::lround(view_->width() * dpr)),
                     static_cast<int>(std::lround(view_->height() * dpr)));
   const QSize size = PictureSize::current().of(shown); // File > Picture size: each frame rendered at it
-  try {
-    // the scene's video section: its frame rate unless one is given, its quality and preset
-    const VideoSpec settings = scene_ ? videoSpec(scene_->tool("video"), 1) : VideoSpec{};
-    r->video = std::make_shared<ScreenRecorder>(path.toStdString(), size.width(), size.height(),
-                                                fps > 0 ? fps : settings.fps, settings.encoder);
-  } catch (const std::exception& e) {
-    report("Cannot record: " + QString::fromUtf8(e.what()), 8000);
+  // the scene's video section: its frame rate unless one is given, its quality and preset
+  const VideoSpec settings = scene_ ? videoSpec(scene_->tool("video"), 1) : VideoSpec{};
+  const QString why = recorder_->start(path, fps > 0 ? fps : settings.fps, settings.encoder, size, shown);
+  if (!why.isEmpty()) {
+    report("Cannot record: " + why, 8000);
     return false;
   }
-  r->path = path;
-  r->clock.start();
-  recorder_ = std::move(r);
-  view_->setFrameTap(
-      [this](const Image& picture) {
-        if (!recorder_ || !recorder_->error.isEmpty()) return;
-        try {
-          recorder_->video->add(picture, recorder_->clock.elapsed() / 1000.0);
-        } catch (const std::exception& e) { // the disk is full, say: stop, and say why
-          recorder_->error = QString::fromUtf8(e.what());
-          QTimer::singleShot(0, this, &MainWindow::stopRecording);
-        }
-      },
-      size == shown ? QSize() : size);
-  view_->update(); // the picture on screen now is the first frame
   recordAction_->setText("Stop recording");
   report(QString("recording %1 at %2x%3 (press Stop recording to end)")
              .arg(path)
@@ -586,37 +558,20 @@ bool MainWindow::startRecording(const QString& path, int fps) {
 }
 
 void MainWindow::stopRecording() {
-  if (!recorder_) return;
-  view_->setFrameTap({});
-  const auto done = std::move(recorder_);
+  if (!recorder_->recording()) return;
+  recorder_->stop();
   recordAction_->setText("Record…");
   recordAction_->setEnabled(false); // until the file is written
-  const double seconds = done->clock.elapsed() / 1000.0;
-  const QString path = done->path, error = done->error;
-  // the encoder drains its queue on a thread of its own: the window stays responsive meanwhile
-  QThread* finisher = QThread::create([this, video = done->video, seconds, path, error] {
-    QString why = error;
-    long frames = 0;
-    if (why.isEmpty()) {
-      try {
-        frames = video->finish(seconds);
-        if (frames == 0) why = "the view painted nothing";
-      } catch (const std::exception& e) {
-        why = QString::fromUtf8(e.what());
-      }
-    }
-    QMetaObject::invokeMethod(this, [this, path, why, frames, seconds] {
-      recordAction_->setEnabled(true);
-      if (why.isEmpty())
-        report(QString("wrote %1 (%2 s, %3 frames)").arg(path).arg(seconds, 0, 'f', 1).arg(frames), 8000);
-      else
-        report("recording failed: " + why, 8000);
-      emit recordingFinished(why.isEmpty(), path);
-    });
-  });
-  connect(finisher, &QThread::finished, finisher, &QObject::deleteLater);
-  finisher_ = finisher;
-  finisher->start();
+}
+
+void MainWindow::recordingWritten(bool ok, const QString& path, const QString& why, double seconds,
+                                  long frames) {
+  recordAction_->setEnabled(true);
+  if (ok)
+    report(QString("wrote %1 (%2 s, %3 frames)").arg(path).arg(seconds, 0, 'f', 1).arg(frames), 8000);
+  else
+    report("recording failed: " + why, 8000);
+  emit recordingFinished(ok, path);
 }
 
 nlohmann::json MainWindow::documentWithEdits() const {

@@ -1,9 +1,9 @@
 // MainWindow.h -- the main window: the 3D view of a scene with play / pause, reset and speed, and the docks
 // around it (control panel, map, tool manager, Results). The motion is integrated on a TrajectoryStream
-// thread; the GUI thread only draws. Its rooms: MainWindow.cpp (the scene, its run, pictures and videos, the
-// windows it opens), MainWindowMenus.cpp (toolbars, menus and their dialogs), MainWindowSession.cpp (scenes
-// and sessions saved and opened, Undo, the jobs kept at exit); beside it ApexWindow (the apex motion window)
-// and MapHistory (Undo's and Redo's steps).
+// thread; the GUI thread only draws. Its rooms: MainWindow.cpp (the scene, its run, the windows it opens),
+// MainWindowMenus.cpp (toolbars, menus and their dialogs), MainWindowSession.cpp (scenes and sessions saved
+// and opened, Undo, the jobs kept at exit); and the classes it holds: ApexWindow (the apex motion window),
+// MapHistory (Undo's and Redo's steps), ViewEdits (the user's appearance edits), ViewRecorder (Record…).
 #pragma once
 #include "app/gui/MapHistory.h"
 #include "app/gui/ViewEdits.h"
@@ -18,9 +18,7 @@
 #include <QElapsedTimer>
 #include <QFileSystemWatcher>
 #include <QMainWindow>
-#include <QPointer>
 #include <QStandardPaths>
-#include <QThread>
 #include <QTimer>
 #include <memory>
 #include <optional>
@@ -39,6 +37,7 @@ class QPlainTextEdit;
 namespace rv {
 
 class ApexWindow;
+class ViewRecorder;
 class QtVtkWidget;
 class ChartWindow;
 class SweepWindow;
@@ -144,7 +143,7 @@ public:
   bool startRecording(const QString& path, int fps = 0);
   /// Ends a recording; the file is finished on a worker thread, then recordingFinished().
   void stopRecording();
-  bool recording() const { return recorder_ != nullptr; }
+  bool recording() const;
   /// Opens a filter window with a chart view of the scene (computed on a worker thread); `diagram` picks the
   /// bifurcation view's diagram (empty: the problem's first).
   ChartWindow* openChart(const std::string& view, const std::string& diagram = "");
@@ -268,10 +267,10 @@ private:
   ViewEdits edits_; ///< the appearance edits kept over re-runs (settings panel, toolbar)
   QAction* followAction_ = nullptr;
   std::unique_ptr<ApexWindow> apex_;
-  // a recording in progress: the view's pictures into a ScreenRecorder, timed by a wall clock
-  struct Recording;
-  std::unique_ptr<Recording> recorder_;
-  QPointer<QThread> finisher_; ///< finishing the last recording's file
+  /// Record… (app/gui/ViewRecorder.h): the view's pictures into a video.
+  ViewRecorder* recorder_ = nullptr;
+  /// A stopped recording's file is written (or why not): said in Results, recordingFinished().
+  void recordingWritten(bool ok, const QString& path, const QString& why, double seconds, long frames);
   MapPanel* map_;
   ControlPanel* control_;
   ToolManager* tools_;

@@ -12,6 +12,7 @@ namespace {
 template <class W> std::vector<W*> open(std::vector<QPointer<W>>& windows) {
   std::erase_if(windows, [](const QPointer<W>& w) { return w.isNull(); });
   std::vector<W*> out;
+  out.reserve(windows.size());
   for (auto& w : windows)
     out.push_back(w.data());
   return out;
