@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 namespace rv {
@@ -116,6 +117,66 @@ void readParameters(const json& j, const Where& w, ParameterValues& values,
       (w / k).fail(msg.substr(msg.find(": ") == std::string::npos ? 0 : msg.find(": ") + 2));
     }
   }
+}
+
+nlohmann::json parseSceneJson(std::istream& in, const std::string& source) {
+  // the parser's events keep the path to the current value and each open object's keys: a key written twice
+  // is bad input (JSON leaves it undefined; nlohmann would silently keep the last)
+  struct Level {
+    bool object;
+    std::set<std::string> keys;
+    std::string key; ///< the object's current key
+    long index = 0;  ///< the array's current element
+  };
+  std::vector<Level> levels;
+  std::string duplicate;
+  const auto pathTo = [&](const std::string& last) {
+    std::string path;
+    for (std::size_t i = 0; i + 1 < levels.size(); ++i)
+      path +=
+          (path.empty() ? "" : ".") + (levels[i].object ? levels[i].key : std::to_string(levels[i].index));
+    return path.empty() ? last : path + "." + last;
+  };
+  const auto ended = [&] { // a value is complete: the enclosing array moves to its next element
+    if (!levels.empty() && !levels.back().object) ++levels.back().index;
+  };
+  const json::parser_callback_t callback = [&](int, json::parse_event_t event, json& parsed) {
+    using E = json::parse_event_t;
+    switch (event) {
+    case E::object_start:
+    case E::array_start:
+      levels.push_back({event == E::object_start, {}, {}, 0});
+      break;
+    case E::key: {
+      Level& level = levels.back();
+      level.key = parsed.get<std::string>();
+      if (!level.keys.insert(level.key).second && duplicate.empty()) duplicate = pathTo(level.key);
+      break;
+    }
+    case E::object_end:
+    case E::array_end:
+      levels.pop_back();
+      ended();
+      break;
+    case E::value:
+      ended();
+      break;
+    }
+    return true;
+  };
+  json doc;
+  try {
+    doc = json::parse(in, callback);
+  } catch (const json::exception& e) {
+    // parse errors, and numbers beyond a double (out_of_range 406, found by fuzzing)
+    std::string reason = e.what();
+    if (const auto p = reason.find("] "); p != std::string::npos) reason = reason.substr(p + 2);
+    throw InputError(source + ":$: malformed JSON: " + reason);
+  } catch (const std::ios_base::failure& e) {
+    throw InputError(source + ": cannot read: " + e.what());
+  }
+  if (!duplicate.empty()) throw InputError(source + ":" + duplicate + ": key written twice");
+  return doc;
 }
 
 } // namespace rv

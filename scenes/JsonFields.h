@@ -1,9 +1,10 @@
-// JsonFields.h -- reading the fields of the project's JSON files (scenes, sweeps) with every error naming
-// "file:json.path: reason" (InputError).
+// JsonFields.h -- parsing the project's JSON files (scenes, models, sessions, sweeps) and reading their
+// fields, with every error naming "file:json.path: reason" (InputError).
 #pragma once
 #include "dynamics/core/ParameterTable.h"
 
 #include <initializer_list>
+#include <istream>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -38,5 +39,9 @@ std::string readInputFile(const std::string& path, const std::string& what);
 /// (or true/false for no/yes).
 void readParameters(const nlohmann::json& j, const Where& w, ParameterValues& values,
                     const std::vector<std::string>& skip = {});
+
+/// Parses a rollviz JSON file (a scene, model, session or sweep file); InputError "source:path: ..." when it
+/// is malformed or writes a key twice in one object (JSON leaves that undefined).
+nlohmann::json parseSceneJson(std::istream& in, const std::string& source);
 
 } // namespace rv

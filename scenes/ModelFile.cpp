@@ -5,7 +5,6 @@
 #include "scenes/JsonFields.h"
 #include "scenes/ModelCompiler.h"
 #include "scenes/RollingModel.h"
-#include "scenes/SceneLoader.h"
 
 #include <algorithm>
 #include <atomic>

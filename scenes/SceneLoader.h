@@ -23,10 +23,6 @@ SceneOverride parseOverride(const std::string& text);
 /// The top-level keys of a scene besides the tools' settings sections (ToolRegistry.h toolSections()).
 const std::set<std::string>& sceneKeys();
 
-/// Parses a scene's JSON; InputError "source:path: ..." when it is malformed or writes a key twice in one
-/// object.
-nlohmann::json parseSceneJson(std::istream& in, const std::string& source);
-
 /// Loads and validates a scene file (a folder, an unreadable or empty file: InputError naming it); a GUI
 /// session file (scenes/Session.h) gives its scene.
 Scene loadScene(const std::string& path, const std::vector<SceneOverride>& overrides = {});

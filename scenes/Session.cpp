@@ -2,7 +2,6 @@
 
 #include "dynamics/core/Errors.h"
 #include "dynamics/io/AtomicFile.h"
-#include "scenes/SceneLoader.h"
 #include "scenes/SnapshotJson.h"
 
 #include <algorithm>

@@ -5,6 +5,7 @@
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/ExplainsNonFinite.h"
 #include "dynamics/integrators/Integrator.h"
+#include "scenes/JsonFields.h"
 #include "scenes/ModelFile.h"
 #include "scenes/SceneLoader.h"
 

@@ -2,6 +2,7 @@
 // integration steps) or fails with InputError / ComputationError; any other exception, a crash, a sanitizer
 // report, a hang or unbounded memory is a bug. Seeded with scenes/ (tests/fuzz/run.sh).
 #include "dynamics/core/Errors.h"
+#include "scenes/JsonFields.h"
 #include "scenes/SceneLoader.h"
 
 #include <cstddef>

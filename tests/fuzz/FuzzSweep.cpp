@@ -4,6 +4,7 @@
 // a sanitizer report, a hang or unbounded memory is a bug. No point is computed: that is the tools' own
 // fuzzing.
 #include "dynamics/core/Errors.h"
+#include "scenes/JsonFields.h"
 #include "scenes/SceneLoader.h"
 #include "scenes/Sweep.h"
 
