@@ -7,6 +7,7 @@
 #include "scenes/RollingModel.h"
 #include "dynamics/core/BodyShapes.h"
 #include "dynamics/core/Errors.h"
+#include "dynamics/tools/FixedPoint.h"
 #include "scenes/ModelFile.h"
 #include "tests/scenes/ModelFileSupport.h"
 
@@ -270,6 +271,74 @@ TEST(RollingModel, MarbleAndRubberRollingKeepTheirEnergyAndRubberNeverSpinsAbout
   for (double z : along(disk, "Z"))
     lowest = std::min(lowest, z);
   EXPECT_GT(lowest, 0.3); // it leans into its turn and rolls on, never falling flat
+}
+
+// The rolling disk's steady circular motion, derived by hand from Newton-Euler in the Euler angles' (Resal)
+// frame (E. J. Routh, Advanced Dynamics of a System of Rigid Bodies (1905) §244; O. M. O'Reilly, The
+// dynamics of rolling disks and sliding disks, Nonlinear Dyn. 10 (1996) 287-305). The symmetry axis e3 is at
+// theta from the upward vertical k; e1 = k x e3 / sin(theta) is horizontal, e2 = e3 x e1 lies in the disk's
+// plane with k = sin(theta) e2 + cos(theta) e3, and the contact (the rim's lowest point) is r = -R e2 from
+// the centre G. With psi the heading and n = omega3 the spin about the axis, omega = theta' e1 + psi'
+// sin(theta) e2 + n e3. A steady motion has theta' = 0, psi' = Omega and n constant:
+//  - no slip: v_G = omega x (R e2) = -R n e1; the frame turns at Omega k, so a_G = -R n Omega k x e1 =
+//    R n Omega (sin(theta) e3 - cos(theta) e2): G circles at radius R n / Omega;
+//  - the contact force F = m a_G + m g k;
+//  - H_G = I1 Omega sin(theta) e2 + I3 n e3 is constant in the frame: dH_G/dt = Omega k x H_G =
+//    Omega sin(theta) (I3 n - I1 Omega cos(theta)) e1, and the torque of F about G is
+//    -R e2 x F = -R (m R n Omega sin(theta) + m g cos(theta)) e1; so
+//      I1 Omega^2 sin(theta) cos(theta) - (I3 + m R^2) n Omega sin(theta) = m g R cos(theta).
+// (n = 0, the centre at rest, gives I1 Omega^2 sin(theta) = m g R: Euler's disk, Omega^2 = 4 g / (R
+// sin(theta)) for a uniform disk.) In the model's body variables cos(theta) = gamma3, n = omega3 and, from
+// (omega, k) = psi' sin^2(theta) + n cos(theta), Omega = ((omega, gamma) - omega3 gamma3) / (1 - gamma3^2).
+// In (M, gamma) a steady motion is a periodic orbit (gamma turns about e3) of a two-parameter family (the
+// disk's energy and Chaplygin's two integrals), so a fixed point of the map on gamma1 = 0 where D Map - I has
+// rank 2 of 4: the search takes least-norm steps and ends at the family's point nearest a perturbed guess.
+TEST(RollingModel, TheRollingDisksSteadyMotionIsAFixedPointWithRouthsRelation) {
+  const double R = 1, m = 1, I1 = 0.25, I3 = 0.5, g = 1; // disk.json's defaults: a uniform disk
+  const auto disk = instance(modelFileEntry(examples("disk.json", "rolling")));
+  const ReturnMap map(
+      *disk, [] { return verner(1e-13); }, SectionSettings{});
+  const auto relation = [&](double cosTheta, double n, double Omega) {
+    const double sinTheta = std::sqrt(1 - cosTheta * cosTheta);
+    return I1 * Omega * Omega * sinTheta * cosTheta - (I3 + m * R * R) * n * Omega * sinTheta -
+           m * g * R * cosTheta;
+  };
+  for (const double sinTheta : {0.9, 0.8}) {
+    SCOPED_TRACE(sinTheta);
+    // a steady motion to start near: on the section e1, e2 are body axes 1, 2, omega = (0, Omega sin, n)
+    // and M = A omega with A = diag(I1 + m R^2, I1, I3 + m R^2) about the contact (0, -R, 0); Omega the
+    // slow root of the relation for a spin n
+    const double cosTheta = std::sqrt(1 - sinTheta * sinTheta), n = 2 * sinTheta;
+    const double a = I1 * sinTheta * cosTheta, b = -(I3 + m * R * R) * n * sinTheta,
+                 c = -m * g * R * cosTheta;
+    const double Omega = (-b - std::sqrt(b * b - 4 * a * c)) / (2 * a);
+    ASSERT_NEAR(relation(cosTheta, n, Omega), 0, 1e-14);
+    const Eigen::Vector4d steady(0, I1 * Omega * sinTheta, (I3 + m * R * R) * n, sinTheta);
+    const Eigen::Vector4d guess = steady + Eigen::Vector4d(0.02, 0.03, -0.04, -0.015);
+    FixedPointSettings settings;
+    settings.accuracy = 1e-10;
+    const FixedPointResult r = findFixedPoint(map, guess, settings);
+    EXPECT_EQ(r.family, 2);
+    EXPECT_EQ(r.type, FixedPointType::Elliptic) << toString(r.type);
+    EXPECT_LT(r.residual, 1e-10);
+    EXPECT_LT((r.point - guess).norm(), 0.06);  // the family's point nearest the guess, not one far along it
+    EXPECT_GT((r.point - steady).norm(), 1e-3); // another steady motion than the one perturbed
+    // the motion found keeps its tilt, spin and turning rate, and they obey the relation
+    const Eigen::VectorXd x = map.stateOf(r.point);
+    const ExampleRun run = runModel(
+        instance(modelFileEntry(examples("disk.json", "rolling"))),
+        {{"M1", x[0]}, {"M2", x[1]}, {"M3", x[2]}, {"gamma1", x[3]}, {"gamma2", x[4]}, {"gamma3", x[5]}}, 10,
+        0.5);
+    for (const Eigen::VectorXd& y : run.states) {
+      const double cosY = y[5], nY = observable(*run.model, "omega3", y.data());
+      const double OmegaY = (observable(*run.model, "omega1", y.data()) * y[3] +
+                             observable(*run.model, "omega2", y.data()) * y[4]) /
+                            (1 - cosY * cosY);
+      EXPECT_NEAR(cosY, x[5], 1e-9);
+      EXPECT_NEAR(nY, observable(*disk, "omega3", x.data()), 1e-9);
+      EXPECT_NEAR(relation(cosY, nY, OmegaY), 0, 1e-9);
+    }
+  }
 }
 
 TEST(RollingModel, AnEllipsoidGivenByItsImplicitSurfaceRollsAsTheClosedFormEllipsoid) {
