@@ -293,7 +293,8 @@ private:
       if (b.contains(key) && !out_["definitions"].contains(std::string("body_") + key))
         (w / key).fail("a " + shape_ + " has no \"" + key + "\"");
     if (b.contains("F") && shape_ != "implicit") (w / "F").fail("only an \"implicit\" body has \"F\"");
-    if (b.contains("centre"))
+    centred_ = b.contains("centre");
+    if (centred_)
       userExpression("body_centre", b["centre"], w / "centre");
     else
       define("body_centre", "[0, 0, 0]");
@@ -495,6 +496,12 @@ private:
       // gamma
       define("spin_gauge", "dot(gamma, omega_free)/dot(gamma, A_gamma)");
       eq["M"] = "dM_free + spin_couple*gamma + spin_gauge*dgamma";
+      // a balanced ball: (J omega)' = J omega x omega + lambda gamma with J = I + m R^2 E (Veselova's
+      // system), whose invariant measure in (M, gamma) has the density (gamma, J^-1 gamma)^(-1/2)
+      // (docs/rolling.md)
+      if (shape_ == "sphere" && !centred_ && !gyrostat_ && !potential_ && !doc_.contains("measure"))
+        out_["measure"] = "dot(gamma, inverse(body_inertia + body_mass*body_radius^2*dot(gamma, gamma)*"
+                          "identity())*gamma)^(-1/2)";
     }
     define("v", "-cross(omega, r)");
     frameEquations(eq);
@@ -727,6 +734,8 @@ private:
   std::string shape_, shapeContact_, energy_;
   ordered_json shapeView_;
   bool potential_ = false, gyrostat_ = false, axis_ = false;
+  bool centred_ =
+      false; ///< the body gives its shape's centre (else the centre of mass is the shape's origin)
   std::optional<expr::Expression> implicit_; ///< an implicit body's F
   std::string support_, supportContact_;     ///< a curved support ("" for the plane), its inverse Gauss map
   ordered_json supportView_;
