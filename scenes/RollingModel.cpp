@@ -54,6 +54,7 @@ public:
     RollingEquations r;
     r.model = out_.dump();
     r.origins = std::move(origins_);
+    r.shapes = std::move(shapes_);
     return r;
   }
 
@@ -64,8 +65,19 @@ private:
     return ordered_json::parse(doc_[key].dump());
   }
 
-  /// An expression the user wrote (a string, or a number), under a generated definition `name`.
-  void userExpression(const std::string& name, const json& j, const Where& w) {
+  static RequiredShape scalar(std::string what) { return {1, 1, std::move(what)}; }
+  static RequiredShape vector3(std::string what) { return {3, 1, std::move(what)}; }
+  static RequiredShape matrix3(std::string what) { return {3, 3, std::move(what)}; }
+  /// What a size of a shape is, and its shape (the semi-axes a 3-vector, the others scalars).
+  static RequiredShape sizeShape(const std::string& key) {
+    if (key == "semi_axes") return vector3("the semi-axes");
+    if (key == "p" || key == "q") return scalar("a radius of curvature");
+    return scalar("the " + key);
+  }
+
+  /// An expression the user wrote (a string, or a number), under a generated definition `name`, which must
+  /// have `shape` (a wrong one is named at the user's field).
+  void userExpression(const std::string& name, const json& j, const Where& w, RequiredShape shape) {
     std::string e;
     if (j.is_number())
       e = j.dump();
@@ -75,6 +87,7 @@ private:
       w.fail("expected an expression (a string or a number)");
     define(name, e);
     origins_.emplace_back("definitions." + name, w.path);
+    shapes_[name] = std::move(shape);
   }
 
   void define(const std::string& name, const std::string& expression) {
@@ -98,13 +111,14 @@ private:
       if (!doc_.contains("friction"))
         root_.fail("missing \"friction\": a sliding contact needs its viscous friction coefficient mu "
                    "(the force -mu v at the contact point)");
-      userExpression("friction_mu", doc_["friction"], root_ / "friction");
+      userExpression("friction_mu", doc_["friction"], root_ / "friction", scalar("the friction coefficient"));
     } else if (doc_.contains("friction")) {
       (root_ / "friction").fail("only a \"sliding\" contact has friction (a rolling one does no work)");
     }
-    userExpression("gravity_g", doc_.contains("gravity") ? doc_["gravity"] : json(0), root_ / "gravity");
+    userExpression("gravity_g", doc_.contains("gravity") ? doc_["gravity"] : json(0), root_ / "gravity",
+                   scalar("the gravity"));
     if (doc_.contains("potential")) {
-      userExpression("potential_U", doc_["potential"], root_ / "potential");
+      userExpression("potential_U", doc_["potential"], root_ / "potential", scalar("the potential"));
       potential_ = true;
     }
   }
@@ -132,7 +146,7 @@ private:
     }
     const auto need = [&](const char* key, const std::string& name) {
       if (!s.contains(key)) w.fail("a " + support_ + " support needs \"" + key + "\"");
-      userExpression(name, s[key], w / key);
+      userExpression(name, s[key], w / key, sizeShape(key));
     };
     const std::string describes = s.contains("describes") ? text(s["describes"], w / "describes") : "support";
     if (describes != "support" && describes != "centre")
@@ -243,7 +257,7 @@ private:
     shape_ = text(b["shape"], w / "shape");
     const auto need = [&](const char* key, const std::string& name) {
       if (!b.contains(key)) w.fail("a " + shape_ + " needs \"" + key + "\"");
-      userExpression(name, b[key], w / key);
+      userExpression(name, b[key], w / key, sizeShape(key));
     };
     // the contact point s(gamma) relative to the shape's own origin, where the body's outward normal is
     // -gamma (the inverse Gauss map), and how the 3D view draws the shape
@@ -268,7 +282,7 @@ private:
       shapeContact_ += " + [0, 0, turns_over]";
       shapeView_ = {{"body", "paraboloid"}, {"p", "body_p"}, {"q", "body_q"}};
       if (b.contains("height")) {
-        userExpression("body_height", b["height"], w / "height");
+        userExpression("body_height", b["height"], w / "height", sizeShape("height"));
         shapeView_["height"] = "body_height";
       } else {
         shapeView_["height"] = "2*max(body_p, body_q)";
@@ -281,7 +295,7 @@ private:
       if (!b.contains("F")) w.fail("an implicit body needs \"F\": its surface F(x, y, z) = 0, F < 0 inside");
       readImplicit(b["F"], w / "F");
       if (b.contains("size"))
-        userExpression("body_size", b["size"], w / "size");
+        userExpression("body_size", b["size"], w / "size", sizeShape("size"));
       else
         define("body_size", "1");
       shapeContact_ = "contact_newton";
@@ -295,11 +309,11 @@ private:
     if (b.contains("F") && shape_ != "implicit") (w / "F").fail("only an \"implicit\" body has \"F\"");
     centred_ = b.contains("centre");
     if (centred_)
-      userExpression("body_centre", b["centre"], w / "centre");
+      userExpression("body_centre", b["centre"], w / "centre", vector3("the shape's centre"));
     else
       define("body_centre", "[0, 0, 0]");
     if (!b.contains("mass")) w.fail("missing \"mass\"");
-    userExpression("body_mass", b["mass"], w / "mass");
+    userExpression("body_mass", b["mass"], w / "mass", scalar("the mass"));
     if (!b.contains("inertia"))
       w.fail("missing \"inertia\" (the central principal moments [I1, I2, I3], or the tensor as a matrix)");
     const json& I = b["inertia"];
@@ -319,17 +333,19 @@ private:
       }
       if (b.contains("principal_axes"))
         (w / "principal_axes").fail("principal axes go with three principal moments, not a full tensor");
-      userExpression("body_inertia", json(matrix + "]"), w / "inertia");
+      userExpression("body_inertia", json(matrix + "]"), w / "inertia", matrix3("the inertia tensor"));
     } else if (I.is_array()) { // principal moments, along the body axes or along the rows of principal_axes
       if (I.size() != 3) (w / "inertia").fail("expected three principal moments");
       std::string moments;
       for (std::size_t i = 0; i < 3; ++i) {
         const std::string name = "body_I" + std::to_string(i + 1);
-        userExpression(name, I[i], w / "inertia" / std::to_string(i));
+        userExpression(name, I[i], w / "inertia" / std::to_string(i),
+                       scalar("a principal moment of inertia"));
         moments += (i ? ", " : "") + name;
       }
       if (b.contains("principal_axes")) {
-        userExpression("body_principal_axes", b["principal_axes"], w / "principal_axes");
+        userExpression("body_principal_axes", b["principal_axes"], w / "principal_axes",
+                       matrix3("the principal axes (rows)"));
         define("body_inertia", "transpose(body_principal_axes)*diag(" + moments + ")*body_principal_axes");
       } else {
         define("body_inertia", "diag(" + moments + ")");
@@ -337,14 +353,16 @@ private:
     } else {
       if (b.contains("principal_axes"))
         (w / "principal_axes").fail("principal axes go with three principal moments, not a full tensor");
-      userExpression("body_inertia", I, w / "inertia");
+      userExpression("body_inertia", I, w / "inertia",
+                     support_.empty() ? matrix3("the inertia tensor")
+                                      : scalar("the ball's central moment of inertia"));
     }
     if (b.contains("gyrostat")) {
-      userExpression("body_gyrostat", b["gyrostat"], w / "gyrostat");
+      userExpression("body_gyrostat", b["gyrostat"], w / "gyrostat", vector3("the gyrostat"));
       gyrostat_ = true;
     }
     if (b.contains("axis")) {
-      userExpression("body_axis", b["axis"], w / "axis");
+      userExpression("body_axis", b["axis"], w / "axis", vector3("the axis"));
       axis_ = true;
     }
     if (!support_.empty()) { // a ball on a curved support: balanced and dynamically symmetric, so far
@@ -729,6 +747,7 @@ private:
   Where root_;
   ordered_json out_;
   std::vector<std::pair<std::string, std::string>> origins_;
+  std::map<std::string, RequiredShape> shapes_;
   std::set<std::string> generated_;
   Contact contact_ = Contact::Marble;
   std::string shape_, shapeContact_, energy_;

@@ -599,6 +599,28 @@ TEST(RollingModel, AMalformedBodyIsNamedAtTheFieldTheUserWrote) {
   bad = top;
   bad["body"]["semi_axes"] = "[1, 2, 3]";
   expect(bad, "<bad>:body.semi_axes: a sphere has no \"semi_axes\"");
+  // a value of the wrong size, named at the field that holds it (not where the derivation first uses it)
+  bad = top;
+  bad["body"]["centre"] = "[0, 0.1]";
+  expect(bad, "<bad>:body.centre: the shape's centre must be a 3-vector, not a 2-vector");
+  bad = top;
+  bad["body"]["axis"] = "[0, 1]";
+  expect(bad, "<bad>:body.axis: the axis must be a 3-vector, not a 2-vector");
+  bad = top;
+  bad["body"]["inertia"] = json::array({1, "[1, 2, 3]", 1});
+  expect(bad, "<bad>:body.inertia.1: a principal moment of inertia must be a scalar, not a 3-vector");
+  bad = top;
+  bad["body"]["inertia"] = "diag(1, 2)";
+  expect(bad, "<bad>:body.inertia: the inertia tensor must be a 3x3 matrix, not a 2x2 matrix");
+  bad = top;
+  bad["body"]["radius"] = "[R, R]";
+  expect(bad, "<bad>:body.radius: the radius must be a scalar, not a 2-vector");
+  bad = top;
+  bad["body"] = {{"shape", "ellipsoid"}, {"semi_axes", "R"}, {"mass", 1}, {"inertia", {1, 1, 1}}};
+  expect(bad, "<bad>:body.semi_axes: the semi-axes must be a 3-vector, not a scalar");
+  bad = top;
+  bad["gravity"] = "[0, 0, 1]";
+  expect(bad, "<bad>:gravity: the gravity must be a scalar, not a 3-vector");
 }
 
 } // namespace
