@@ -2,10 +2,14 @@
 
 #include "dynamics/core/Errors.h"
 #include "dynamics/expr/Expression.h"
+#include "dynamics/expr/Graph.h"
+#include "dynamics/expr/Lowering.h"
 #include "scenes/JsonFields.h"
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <initializer_list>
 #include <optional>
 #include <set>
@@ -640,6 +644,71 @@ private:
     energy_ = "dot(M, omega)/2 + potential";
   }
 
+  /// The value of a generated definition at the parameter values `p`, when it depends on parameters and
+  /// definitions only (nothing otherwise: a name of the state, an error).
+  std::optional<Eigen::MatrixXd> valueAt(const std::string& name,
+                                         const std::map<std::string, double>& p) const {
+    expr::Graph graph;
+    std::set<std::string> open; // the definitions being lowered (a circle is an error, reported elsewhere)
+    std::function<std::optional<expr::Value>(const std::string&, int)> resolve =
+        [&](const std::string& n, int) -> std::optional<expr::Value> {
+      if (const auto it = p.find(n); it != p.end()) return expr::Value::of(graph.constant(it->second));
+      const json& defs = out_["definitions"];
+      if (!defs.contains(n) || !defs[n].is_string() || !open.insert(n).second) return std::nullopt;
+      const expr::Expression e = expr::parse(defs[n].get<std::string>());
+      const expr::Value v = expr::Lowering(graph, resolve, {}).lower(e);
+      open.erase(n);
+      return v;
+    };
+    try {
+      const std::optional<expr::Value> v = resolve(name, 1);
+      if (!v) return std::nullopt;
+      const expr::Program program(graph, v->n);
+      Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> out(v->rows, v->cols);
+      const double none = 0;
+      program.evaluate(&none, out.data());
+      return out;
+    } catch (const InputError&) {
+      return std::nullopt;
+    }
+  }
+
+  /// Whether the body is symmetric about its `axis` as Jellett's integral needs: its inertia tensor (about
+  /// the centre of mass) has the axis as a principal axis and equal moments across it, and the centre of mass
+  /// lies on the axis (the sphere is a body of revolution about any axis through its centre) -- for every
+  /// value of the parameters, so checked at the defaults and at two generic perturbations of them.
+  bool symmetricAboutTheAxis() const {
+    std::map<std::string, double> defaults;
+    if (doc_.contains("parameters") && doc_["parameters"].is_object())
+      for (const auto& [name, value] : doc_["parameters"].items()) {
+        if (value.is_number())
+          defaults[name] = value.get<double>();
+        else if (value.is_object() && value.contains("default") && value["default"].is_number())
+          defaults[name] = value["default"].get<double>();
+      }
+    for (int sample = 0; sample < 3; ++sample) {
+      std::map<std::string, double> p = defaults;
+      double k = 0;
+      for (auto& [name, value] : p) { // generic values: each moved by its own irrational factor
+        value = value * (1 + 0.1 * sample * std::sqrt(2 + k)) + 0.01 * sample * std::sqrt(5 + k);
+        ++k;
+      }
+      const auto I = valueAt("body_inertia", p), axis = valueAt("body_axis", p),
+                 centre = valueAt("body_centre", p);
+      if (!I || !axis || !centre || I->rows() != 3 || I->cols() != 3 || axis->size() != 3 ||
+          centre->size() != 3 || !(axis->norm() > 0))
+        return false;
+      const Eigen::Vector3d a = Eigen::Map<const Eigen::Vector3d>(axis->data()).normalized(),
+                            c = Eigen::Map<const Eigen::Vector3d>(centre->data());
+      const Eigen::Matrix3d P = Eigen::Matrix3d::Identity() - a * a.transpose(), PIP = P * *I * P;
+      const double tolerance = 1e-12 * (1 + I->norm());
+      if ((P * *I * a).norm() > tolerance || (PIP - (PIP.trace() / 2) * P).norm() > tolerance ||
+          (P * c).norm() > 1e-12 * (1 + c.norm()))
+        return false;
+    }
+    return true;
+  }
+
   void planeObservables(ordered_json& o) const {
     const bool conservative = contact_ != Contact::Sliding;
     o["E"] = {{"value", energy_},
@@ -669,7 +738,9 @@ private:
                       {"description",
                        "Jellett's quantity (L, r): L about the centre of mass, r to the contact; "
                        "an integral for an axisymmetric body with its centre of mass on the axis"}};
-      if (axis_ && !gyrostat_ && !potential_ && contact_ != Contact::Rubber) o["jellett"]["integral"] = true;
+      // an integral only where its proof holds: otherwise it stays an observable to watch
+      if (axis_ && !gyrostat_ && !potential_ && contact_ != Contact::Rubber && symmetricAboutTheAxis())
+        o["jellett"]["integral"] = true;
     }
     if (contact_ == Contact::Sliding) {
       o["normal_force"] = {{"value", "normal_force"}, {"description", "the plane's normal reaction"}};
@@ -797,19 +868,32 @@ ordered_json rollingModelDocument(const RollingBodyForm& f) {
     body["F"] = f.surface;
     body["size"] = f.size;
   }
+  // a body symmetric about axis 3 says so in its description (one moment across the axis, the centre on
+  // it), so that it stays symmetric whatever the parameters -- what Jellett's integral needs
+  const bool onTheAxis = f.symmetryAxis && f.centre[0] == 0 && f.centre[1] == 0;
+  const bool equalMoments = f.symmetryAxis && f.inertia[0] == f.inertia[1];
   std::string centre;
   for (int i = 0; i < 3; ++i)
-    centre += (i ? ", " : "") +
-              parameter("c" + std::to_string(i + 1), f.centre[static_cast<std::size_t>(i)],
-                        "the shape's centre seen from the centre of mass, body axis " + std::to_string(i + 1),
-                        false);
+    centre +=
+        (i ? ", " : "") + (onTheAxis && i < 2
+                               ? std::string("0")
+                               : parameter("c" + std::to_string(i + 1), f.centre[static_cast<std::size_t>(i)],
+                                           "the shape's centre seen from the centre of mass, body axis " +
+                                               std::to_string(i + 1),
+                                           false));
   body["centre"] = "[" + centre + "]";
   body["mass"] = parameter("m", f.mass, "mass", true);
   body["inertia"] = ordered_json::array();
   for (int i = 0; i < 3; ++i)
     body["inertia"].push_back(
-        parameter("I" + std::to_string(i + 1), f.inertia[static_cast<std::size_t>(i)],
-                  "central principal moment of inertia, body axis " + std::to_string(i + 1), true));
+        equalMoments && i == 1
+            ? std::string("I1")
+            : parameter("I" + std::to_string(i + 1), f.inertia[static_cast<std::size_t>(i)],
+                        equalMoments && i == 0
+                            ? std::string("central moment of inertia across the axis (body "
+                                          "axes 1 and 2)")
+                            : "central principal moment of inertia, body axis " + std::to_string(i + 1),
+                        true));
   if (f.symmetryAxis) body["axis"] = "[0, 0, 1]";
   doc["body"] = body;
   doc["gravity"] = parameter("g", f.gravity, "acceleration of gravity", true);

@@ -541,6 +541,62 @@ TEST(RollingModel, TheTippeTopTurnsOverOnlyInsideItsInertiaWindowAndKeepsJellett
   }
 }
 
+// Jellett's quantity is marked an integral only for a body symmetric about its `axis` (the inertia's axis,
+// equal moments across it, the centre of mass on it) for every value of the parameters; otherwise it stays
+// an observable -- and then it is not conserved.
+TEST(RollingModel, JellettIsAnIntegralOnlyOfABodySymmetricAboutItsAxis) {
+  const json top = json::parse(std::ifstream(examples("tippe_top.json", "rolling")));
+  int variant = 0;
+  const auto jellettIsAnIntegral = [&](const json& doc) {
+    json d = doc;
+    d["id"] = "jellett_variant_" + std::to_string(variant++);
+    const ModelEntry& e = modelEntryFromJson(d, "<jellett>");
+    const auto& observables = instance(e)->observables();
+    EXPECT_TRUE(std::any_of(observables.begin(), observables.end(),
+                            [](const Observable& o) { return o.id == "jellett"; })); // always offered
+    const auto& integrals = e.info->integralNames;
+    return std::find(integrals.begin(), integrals.end(), "jellett") != integrals.end();
+  };
+  EXPECT_TRUE(jellettIsAnIntegral(top));
+  json tilted = top; // the same top with its axis along (1, 1, 0)/sqrt(2): a tensor through principal axes
+  tilted["body"]["axis"] = "[1, 1, 0]";
+  tilted["body"]["centre"] = "(offset*R/sqrt(2))*[1, 1, 0]";
+  tilted["body"]["principal_axes"] = "[[0, 0, 1], [1/sqrt(2), -1/sqrt(2), 0], [1/sqrt(2), 1/sqrt(2), 0]]";
+  EXPECT_TRUE(jellettIsAnIntegral(tilted));
+  json asymmetric = top; // equal moments at the defaults only: not for every value of the parameters
+  asymmetric["parameters"]["I2"] = asymmetric["parameters"]["I1"];
+  asymmetric["body"]["inertia"] = json::array({"I1", "I2", "I3"});
+  EXPECT_FALSE(jellettIsAnIntegral(asymmetric));
+  json offAxis = top;
+  offAxis["body"]["centre"] = "[0.05, 0, offset*R]";
+  EXPECT_FALSE(jellettIsAnIntegral(offAxis));
+  json otherAxis = top;
+  otherAxis["body"]["axis"] = "[1, 0, 0]";
+  EXPECT_FALSE(jellettIsAnIntegral(otherAxis));
+  // File > New rolling body: a sphere declared symmetric about axis 3 says so in its description
+  RollingBodyForm form;
+  form.shape = "sphere";
+  form.sizes = {1, 0, 0};
+  form.centre = {0, 0, 0.3};
+  form.inertia = {0.35, 0.35, 0.4};
+  form.contact = "sliding";
+  form.symmetryAxis = true;
+  EXPECT_TRUE(jellettIsAnIntegral(json::parse(rollingModelDocument(form).dump())));
+  form.inertia = {0.35, 0.3, 0.4};
+  EXPECT_FALSE(jellettIsAnIntegral(json::parse(rollingModelDocument(form).dump())));
+  // and rightly: with unequal moments across the axis Jellett's quantity drifts
+  asymmetric["id"] = "jellett_asymmetric_run";
+  const ExampleRun run = runModel(instance(modelEntryFromJson(asymmetric, "<asymmetric>"), {{"I2", 0.3}}),
+                                  {{"omega1", 0},
+                                   {"omega2", 0},
+                                   {"omega3", 6},
+                                   {"gamma1", std::sin(0.1)},
+                                   {"gamma2", 0},
+                                   {"gamma3", std::cos(0.1)}},
+                                  50, 0.5);
+  EXPECT_GT(relativeDrift(along(run, "jellett")), 1e-4); // the symmetric top keeps it to 1e-10 (above)
+}
+
 TEST(RollingModel, ATopThatWouldLeaveThePlaneStopsTheRunSayingSo) {
   // weightless, the spinning top's plane would have to pull (N < 0): the sliding model no longer holds
   const std::map<std::string, double> spun{{"omega1", 0}, {"omega2", 0},
