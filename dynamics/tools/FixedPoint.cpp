@@ -77,13 +77,15 @@ T classifyPair(std::complex<double> a, std::complex<double> b, double tol) {
 /// the residual |F|: a map that keeps integrals C has dC (D Map - I) = dC(x) - dC(Map(x)) = O(|F|), so off
 /// its family of fixed points the matrix is singular but for O(|F|), which is also the size of the linear
 /// model's own error there; at a regular point those singular values stay finite while |F| -> 0, so the
-/// steps become Newton's.
+/// steps become Newton's. A singular value above a tenth of the largest always counts (far from any fixed
+/// point, where |F| exceeds them all, the step stays Newton's).
 class NewtonStep {
 public:
+  static constexpr double kResolved = 0.1;
   NewtonStep(const Eigen::MatrixXd& A, double tolerance, double residual)
       : svd_(A, Eigen::ComputeThinU | Eigen::ComputeThinV) {
     const double largest = svd_.singularValues().size() ? svd_.singularValues()[0] : 0.0;
-    svd_.setThreshold(largest > 0 ? std::max(tolerance, residual / largest) : tolerance);
+    svd_.setThreshold(largest > 0 ? std::max(tolerance, std::min(residual / largest, kResolved)) : tolerance);
     if (svd_.rank() == A.cols()) lu_.compute(A);
   }
   int rank() const { return static_cast<int>(svd_.rank()); }

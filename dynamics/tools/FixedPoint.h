@@ -30,10 +30,10 @@ struct FixedPointSettings {
   bool section2D = false;   ///< 3D maps: search on the plane z = const (z of the guess)
   DerivativeSettings derivatives;
   double typeTolerance = 1e-6; ///< how close to the unit circle (or to +-1) a multiplier counts as on it
-  /// Below this fraction of the largest (or below |Map^n(x) - x|), a singular value of D Map^n - I counts as
-  /// zero: the point lies on a family of fixed points (a map with integrals: a flow's relative equilibria),
-  /// and Newton's step is the one of least norm, towards the nearest point of the family. Derivatives must
-  /// be better than this (variational ones are; differences seldom).
+  /// Below this fraction of the largest (or below |Map^n(x) - x|, up to a tenth of the largest), a singular
+  /// value of D Map^n - I counts as zero: the point lies on a family of fixed points (a map with integrals: a
+  /// flow's relative equilibria), and Newton's step is the one of least norm, towards the nearest point of
+  /// the family. Derivatives must be better than this (variational ones are; differences seldom).
   double rankTolerance = 1e-8;
 };
 
