@@ -77,6 +77,7 @@ json fixedPointFields(const FixedPointResult& r, const ReturnMap& map) {
           {"multipliers", multipliersJson(r.multipliers)},
           {"type", toString(r.type)},
           {"residual", r.residual},
+          {"family", r.family},
           {"iterations", r.iterations},
           {"evaluations", r.evaluations},
           {"order", map.order()}};
@@ -145,8 +146,14 @@ std::string describeFixedPoint(const ToolResult& r) {
     const double re = z[0], im = z[1];
     text += fmt::format("multiplier: {:.15g} {:+.15g} i  (|m| = {:.15g})\n", re, im, std::hypot(re, im));
   }
-  text += fmt::format("type: {}\nresidual: {:.3g}\niterations: {}\nmap evaluations: {}\n",
-                      f["type"].get<std::string>(), f["residual"].get<double>(), f["iterations"].get<int>(),
+  text +=
+      fmt::format("type: {}\nresidual: {:.3g}\n", f["type"].get<std::string>(), f["residual"].get<double>());
+  if (const int family = f.value("family", 0); family > 0)
+    text += fmt::format("family: the point lies on a {}-dimensional family of fixed points (D Map^n - I has "
+                        "lost rank; integrals): the search ends at the family's point nearest the guess, and "
+                        "the type is of the multipliers off it\n",
+                        family);
+  text += fmt::format("iterations: {}\nmap evaluations: {}\n", f["iterations"].get<int>(),
                       f["evaluations"].get<long>());
   return text;
 }

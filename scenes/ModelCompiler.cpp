@@ -18,8 +18,10 @@
 #include <fcntl.h>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <mutex>
+#include <set>
 #include <spawn.h>
 #include <sstream>
 #include <sys/file.h>
@@ -255,8 +257,40 @@ CacheFiles cacheFiles(const fs::path& dir, const std::string& key) {
   return {dir, dir / (key + ".cpp"), dir / (key + ".so"), dir / (key + ".sum"), dir / (key + ".log")};
 }
 
+/// The rollviz headers the code includes (#include "..."), and theirs, found in the toolchain's include
+/// directories. They belong to a library's identity: a class the code reaches into (EquationSystem,
+/// ModelWithField) may change its layout between builds of one version, and a library compiled against the
+/// old one would then read the wrong members.
+std::string includedHeaders(const Toolchain& t, const std::string& code) {
+  std::set<fs::path> seen;
+  std::string all;
+  std::function<void(const std::string&)> scan = [&](const std::string& text) {
+    for (std::size_t at = text.find("#include \""); at != std::string::npos;
+         at = text.find("#include \"", at + 1)) {
+      const std::size_t from = at + 10, to = text.find('"', from);
+      if (to == std::string::npos) break;
+      const std::string name = text.substr(from, to - from);
+      for (const auto& dir : t.includes) {
+        std::error_code ec;
+        const fs::path header = fs::path(dir) / name;
+        if (!fs::is_regular_file(header, ec)) continue;
+        if (seen.insert(header).second) {
+          const std::string content = readAll(header);
+          all += name + "\n" + content + "\n";
+          scan(content);
+        }
+        break;
+      }
+    }
+  };
+  scan(code);
+  return all;
+}
+
 std::string cacheKey(const Toolchain& t, const std::string& code) {
-  std::string identity = code + "\n" + ROLLVIZ_ABI_STAMP;
+  // the headers' part, once: every model's code includes the same ones
+  static const std::string headers = contentHash(includedHeaders(t, code));
+  std::string identity = code + "\n" + ROLLVIZ_ABI_STAMP + "\n" + headers;
   for (const auto& a : compileArguments(t, "SOURCE", "OUT"))
     identity += "\n" + a;
   return contentHash(identity);

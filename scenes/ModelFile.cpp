@@ -387,7 +387,9 @@ const ModelEntry& entryOf(const std::string& key, const std::string& file, const
       return what;
     };
     try {
-      system = EquationSystem::build(Reader(derived, &order, source).read());
+      EquationModelSpec spec = Reader(derived, &order, source).read();
+      spec.definitionShapes = rolling.shapes;
+      system = EquationSystem::build(std::move(spec));
     } catch (const InputError& e) {
       const std::string what = e.what();
       throw InputError(atTheUsersField(what.rfind(source + ":", 0) == 0 ? what : source + ":" + what));

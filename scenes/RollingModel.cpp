@@ -2,10 +2,14 @@
 
 #include "dynamics/core/Errors.h"
 #include "dynamics/expr/Expression.h"
+#include "dynamics/expr/Graph.h"
+#include "dynamics/expr/Lowering.h"
 #include "scenes/JsonFields.h"
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <initializer_list>
 #include <optional>
 #include <set>
@@ -54,6 +58,7 @@ public:
     RollingEquations r;
     r.model = out_.dump();
     r.origins = std::move(origins_);
+    r.shapes = std::move(shapes_);
     return r;
   }
 
@@ -64,8 +69,19 @@ private:
     return ordered_json::parse(doc_[key].dump());
   }
 
-  /// An expression the user wrote (a string, or a number), under a generated definition `name`.
-  void userExpression(const std::string& name, const json& j, const Where& w) {
+  static RequiredShape scalar(std::string what) { return {1, 1, std::move(what)}; }
+  static RequiredShape vector3(std::string what) { return {3, 1, std::move(what)}; }
+  static RequiredShape matrix3(std::string what) { return {3, 3, std::move(what)}; }
+  /// What a size of a shape is, and its shape (the semi-axes a 3-vector, the others scalars).
+  static RequiredShape sizeShape(const std::string& key) {
+    if (key == "semi_axes") return vector3("the semi-axes");
+    if (key == "p" || key == "q") return scalar("a radius of curvature");
+    return scalar("the " + key);
+  }
+
+  /// An expression the user wrote (a string, or a number), under a generated definition `name`, which must
+  /// have `shape` (a wrong one is named at the user's field).
+  void userExpression(const std::string& name, const json& j, const Where& w, RequiredShape shape) {
     std::string e;
     if (j.is_number())
       e = j.dump();
@@ -75,6 +91,7 @@ private:
       w.fail("expected an expression (a string or a number)");
     define(name, e);
     origins_.emplace_back("definitions." + name, w.path);
+    shapes_[name] = std::move(shape);
   }
 
   void define(const std::string& name, const std::string& expression) {
@@ -98,13 +115,14 @@ private:
       if (!doc_.contains("friction"))
         root_.fail("missing \"friction\": a sliding contact needs its viscous friction coefficient mu "
                    "(the force -mu v at the contact point)");
-      userExpression("friction_mu", doc_["friction"], root_ / "friction");
+      userExpression("friction_mu", doc_["friction"], root_ / "friction", scalar("the friction coefficient"));
     } else if (doc_.contains("friction")) {
       (root_ / "friction").fail("only a \"sliding\" contact has friction (a rolling one does no work)");
     }
-    userExpression("gravity_g", doc_.contains("gravity") ? doc_["gravity"] : json(0), root_ / "gravity");
+    userExpression("gravity_g", doc_.contains("gravity") ? doc_["gravity"] : json(0), root_ / "gravity",
+                   scalar("the gravity"));
     if (doc_.contains("potential")) {
-      userExpression("potential_U", doc_["potential"], root_ / "potential");
+      userExpression("potential_U", doc_["potential"], root_ / "potential", scalar("the potential"));
       potential_ = true;
     }
   }
@@ -132,7 +150,7 @@ private:
     }
     const auto need = [&](const char* key, const std::string& name) {
       if (!s.contains(key)) w.fail("a " + support_ + " support needs \"" + key + "\"");
-      userExpression(name, s[key], w / key);
+      userExpression(name, s[key], w / key, sizeShape(key));
     };
     const std::string describes = s.contains("describes") ? text(s["describes"], w / "describes") : "support";
     if (describes != "support" && describes != "centre")
@@ -243,7 +261,7 @@ private:
     shape_ = text(b["shape"], w / "shape");
     const auto need = [&](const char* key, const std::string& name) {
       if (!b.contains(key)) w.fail("a " + shape_ + " needs \"" + key + "\"");
-      userExpression(name, b[key], w / key);
+      userExpression(name, b[key], w / key, sizeShape(key));
     };
     // the contact point s(gamma) relative to the shape's own origin, where the body's outward normal is
     // -gamma (the inverse Gauss map), and how the 3D view draws the shape
@@ -268,7 +286,7 @@ private:
       shapeContact_ += " + [0, 0, turns_over]";
       shapeView_ = {{"body", "paraboloid"}, {"p", "body_p"}, {"q", "body_q"}};
       if (b.contains("height")) {
-        userExpression("body_height", b["height"], w / "height");
+        userExpression("body_height", b["height"], w / "height", sizeShape("height"));
         shapeView_["height"] = "body_height";
       } else {
         shapeView_["height"] = "2*max(body_p, body_q)";
@@ -281,7 +299,7 @@ private:
       if (!b.contains("F")) w.fail("an implicit body needs \"F\": its surface F(x, y, z) = 0, F < 0 inside");
       readImplicit(b["F"], w / "F");
       if (b.contains("size"))
-        userExpression("body_size", b["size"], w / "size");
+        userExpression("body_size", b["size"], w / "size", sizeShape("size"));
       else
         define("body_size", "1");
       shapeContact_ = "contact_newton";
@@ -293,12 +311,13 @@ private:
       if (b.contains(key) && !out_["definitions"].contains(std::string("body_") + key))
         (w / key).fail("a " + shape_ + " has no \"" + key + "\"");
     if (b.contains("F") && shape_ != "implicit") (w / "F").fail("only an \"implicit\" body has \"F\"");
-    if (b.contains("centre"))
-      userExpression("body_centre", b["centre"], w / "centre");
+    centred_ = b.contains("centre");
+    if (centred_)
+      userExpression("body_centre", b["centre"], w / "centre", vector3("the shape's centre"));
     else
       define("body_centre", "[0, 0, 0]");
     if (!b.contains("mass")) w.fail("missing \"mass\"");
-    userExpression("body_mass", b["mass"], w / "mass");
+    userExpression("body_mass", b["mass"], w / "mass", scalar("the mass"));
     if (!b.contains("inertia"))
       w.fail("missing \"inertia\" (the central principal moments [I1, I2, I3], or the tensor as a matrix)");
     const json& I = b["inertia"];
@@ -318,17 +337,19 @@ private:
       }
       if (b.contains("principal_axes"))
         (w / "principal_axes").fail("principal axes go with three principal moments, not a full tensor");
-      userExpression("body_inertia", json(matrix + "]"), w / "inertia");
+      userExpression("body_inertia", json(matrix + "]"), w / "inertia", matrix3("the inertia tensor"));
     } else if (I.is_array()) { // principal moments, along the body axes or along the rows of principal_axes
       if (I.size() != 3) (w / "inertia").fail("expected three principal moments");
       std::string moments;
       for (std::size_t i = 0; i < 3; ++i) {
         const std::string name = "body_I" + std::to_string(i + 1);
-        userExpression(name, I[i], w / "inertia" / std::to_string(i));
+        userExpression(name, I[i], w / "inertia" / std::to_string(i),
+                       scalar("a principal moment of inertia"));
         moments += (i ? ", " : "") + name;
       }
       if (b.contains("principal_axes")) {
-        userExpression("body_principal_axes", b["principal_axes"], w / "principal_axes");
+        userExpression("body_principal_axes", b["principal_axes"], w / "principal_axes",
+                       matrix3("the principal axes (rows)"));
         define("body_inertia", "transpose(body_principal_axes)*diag(" + moments + ")*body_principal_axes");
       } else {
         define("body_inertia", "diag(" + moments + ")");
@@ -336,14 +357,16 @@ private:
     } else {
       if (b.contains("principal_axes"))
         (w / "principal_axes").fail("principal axes go with three principal moments, not a full tensor");
-      userExpression("body_inertia", I, w / "inertia");
+      userExpression("body_inertia", I, w / "inertia",
+                     support_.empty() ? matrix3("the inertia tensor")
+                                      : scalar("the ball's central moment of inertia"));
     }
     if (b.contains("gyrostat")) {
-      userExpression("body_gyrostat", b["gyrostat"], w / "gyrostat");
+      userExpression("body_gyrostat", b["gyrostat"], w / "gyrostat", vector3("the gyrostat"));
       gyrostat_ = true;
     }
     if (b.contains("axis")) {
-      userExpression("body_axis", b["axis"], w / "axis");
+      userExpression("body_axis", b["axis"], w / "axis", vector3("the axis"));
       axis_ = true;
     }
     if (!support_.empty()) { // a ball on a curved support: balanced and dynamically symmetric, so far
@@ -495,6 +518,12 @@ private:
       // gamma
       define("spin_gauge", "dot(gamma, omega_free)/dot(gamma, A_gamma)");
       eq["M"] = "dM_free + spin_couple*gamma + spin_gauge*dgamma";
+      // a balanced ball: (J omega)' = J omega x omega + lambda gamma with J = I + m R^2 E (Veselova's
+      // system), whose invariant measure in (M, gamma) has the density (gamma, J^-1 gamma)^(-1/2)
+      // (docs/rolling.md)
+      if (shape_ == "sphere" && !centred_ && !gyrostat_ && !potential_ && !doc_.contains("measure"))
+        out_["measure"] = "dot(gamma, inverse(body_inertia + body_mass*body_radius^2*dot(gamma, gamma)*"
+                          "identity())*gamma)^(-1/2)";
     }
     define("v", "-cross(omega, r)");
     frameEquations(eq);
@@ -615,6 +644,71 @@ private:
     energy_ = "dot(M, omega)/2 + potential";
   }
 
+  /// The value of a generated definition at the parameter values `p`, when it depends on parameters and
+  /// definitions only (nothing otherwise: a name of the state, an error).
+  std::optional<Eigen::MatrixXd> valueAt(const std::string& name,
+                                         const std::map<std::string, double>& p) const {
+    expr::Graph graph;
+    std::set<std::string> open; // the definitions being lowered (a circle is an error, reported elsewhere)
+    std::function<std::optional<expr::Value>(const std::string&, int)> resolve =
+        [&](const std::string& n, int) -> std::optional<expr::Value> {
+      if (const auto it = p.find(n); it != p.end()) return expr::Value::of(graph.constant(it->second));
+      const json& defs = out_["definitions"];
+      if (!defs.contains(n) || !defs[n].is_string() || !open.insert(n).second) return std::nullopt;
+      const expr::Expression e = expr::parse(defs[n].get<std::string>());
+      const expr::Value v = expr::Lowering(graph, resolve, {}).lower(e);
+      open.erase(n);
+      return v;
+    };
+    try {
+      const std::optional<expr::Value> v = resolve(name, 1);
+      if (!v) return std::nullopt;
+      const expr::Program program(graph, v->n);
+      Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> out(v->rows, v->cols);
+      const double none = 0;
+      program.evaluate(&none, out.data());
+      return out;
+    } catch (const InputError&) {
+      return std::nullopt;
+    }
+  }
+
+  /// Whether the body is symmetric about its `axis` as Jellett's integral needs: its inertia tensor (about
+  /// the centre of mass) has the axis as a principal axis and equal moments across it, and the centre of mass
+  /// lies on the axis (the sphere is a body of revolution about any axis through its centre) -- for every
+  /// value of the parameters, so checked at the defaults and at two generic perturbations of them.
+  bool symmetricAboutTheAxis() const {
+    std::map<std::string, double> defaults;
+    if (doc_.contains("parameters") && doc_["parameters"].is_object())
+      for (const auto& [name, value] : doc_["parameters"].items()) {
+        if (value.is_number())
+          defaults[name] = value.get<double>();
+        else if (value.is_object() && value.contains("default") && value["default"].is_number())
+          defaults[name] = value["default"].get<double>();
+      }
+    for (int sample = 0; sample < 3; ++sample) {
+      std::map<std::string, double> p = defaults;
+      double k = 0;
+      for (auto& [name, value] : p) { // generic values: each moved by its own irrational factor
+        value = value * (1 + 0.1 * sample * std::sqrt(2 + k)) + 0.01 * sample * std::sqrt(5 + k);
+        ++k;
+      }
+      const auto I = valueAt("body_inertia", p), axis = valueAt("body_axis", p),
+                 centre = valueAt("body_centre", p);
+      if (!I || !axis || !centre || I->rows() != 3 || I->cols() != 3 || axis->size() != 3 ||
+          centre->size() != 3 || !(axis->norm() > 0))
+        return false;
+      const Eigen::Vector3d a = Eigen::Map<const Eigen::Vector3d>(axis->data()).normalized(),
+                            c = Eigen::Map<const Eigen::Vector3d>(centre->data());
+      const Eigen::Matrix3d P = Eigen::Matrix3d::Identity() - a * a.transpose(), PIP = P * *I * P;
+      const double tolerance = 1e-12 * (1 + I->norm());
+      if ((P * *I * a).norm() > tolerance || (PIP - (PIP.trace() / 2) * P).norm() > tolerance ||
+          (P * c).norm() > 1e-12 * (1 + c.norm()))
+        return false;
+    }
+    return true;
+  }
+
   void planeObservables(ordered_json& o) const {
     const bool conservative = contact_ != Contact::Sliding;
     o["E"] = {{"value", energy_},
@@ -644,7 +738,9 @@ private:
                       {"description",
                        "Jellett's quantity (L, r): L about the centre of mass, r to the contact; "
                        "an integral for an axisymmetric body with its centre of mass on the axis"}};
-      if (axis_ && !gyrostat_ && !potential_ && contact_ != Contact::Rubber) o["jellett"]["integral"] = true;
+      // an integral only where its proof holds: otherwise it stays an observable to watch
+      if (axis_ && !gyrostat_ && !potential_ && contact_ != Contact::Rubber && symmetricAboutTheAxis())
+        o["jellett"]["integral"] = true;
     }
     if (contact_ == Contact::Sliding) {
       o["normal_force"] = {{"value", "normal_force"}, {"description", "the plane's normal reaction"}};
@@ -722,11 +818,14 @@ private:
   Where root_;
   ordered_json out_;
   std::vector<std::pair<std::string, std::string>> origins_;
+  std::map<std::string, RequiredShape> shapes_;
   std::set<std::string> generated_;
   Contact contact_ = Contact::Marble;
   std::string shape_, shapeContact_, energy_;
   ordered_json shapeView_;
   bool potential_ = false, gyrostat_ = false, axis_ = false;
+  bool centred_ =
+      false; ///< the body gives its shape's centre (else the centre of mass is the shape's origin)
   std::optional<expr::Expression> implicit_; ///< an implicit body's F
   std::string support_, supportContact_;     ///< a curved support ("" for the plane), its inverse Gauss map
   ordered_json supportView_;
@@ -769,19 +868,32 @@ ordered_json rollingModelDocument(const RollingBodyForm& f) {
     body["F"] = f.surface;
     body["size"] = f.size;
   }
+  // a body symmetric about axis 3 says so in its description (one moment across the axis, the centre on
+  // it), so that it stays symmetric whatever the parameters -- what Jellett's integral needs
+  const bool onTheAxis = f.symmetryAxis && f.centre[0] == 0 && f.centre[1] == 0;
+  const bool equalMoments = f.symmetryAxis && f.inertia[0] == f.inertia[1];
   std::string centre;
   for (int i = 0; i < 3; ++i)
-    centre += (i ? ", " : "") +
-              parameter("c" + std::to_string(i + 1), f.centre[static_cast<std::size_t>(i)],
-                        "the shape's centre seen from the centre of mass, body axis " + std::to_string(i + 1),
-                        false);
+    centre +=
+        (i ? ", " : "") + (onTheAxis && i < 2
+                               ? std::string("0")
+                               : parameter("c" + std::to_string(i + 1), f.centre[static_cast<std::size_t>(i)],
+                                           "the shape's centre seen from the centre of mass, body axis " +
+                                               std::to_string(i + 1),
+                                           false));
   body["centre"] = "[" + centre + "]";
   body["mass"] = parameter("m", f.mass, "mass", true);
   body["inertia"] = ordered_json::array();
   for (int i = 0; i < 3; ++i)
     body["inertia"].push_back(
-        parameter("I" + std::to_string(i + 1), f.inertia[static_cast<std::size_t>(i)],
-                  "central principal moment of inertia, body axis " + std::to_string(i + 1), true));
+        equalMoments && i == 1
+            ? std::string("I1")
+            : parameter("I" + std::to_string(i + 1), f.inertia[static_cast<std::size_t>(i)],
+                        equalMoments && i == 0
+                            ? std::string("central moment of inertia across the axis (body "
+                                          "axes 1 and 2)")
+                            : "central principal moment of inertia, body axis " + std::to_string(i + 1),
+                        true));
   if (f.symmetryAxis) body["axis"] = "[0, 0, 1]";
   doc["body"] = body;
   doc["gravity"] = parameter("g", f.gravity, "acceleration of gravity", true);

@@ -23,7 +23,10 @@
 //    L. A. Romero, Tippe top inversion as a dissipation-induced instability, SIAM J. Appl. Dyn. Syst. 3
 //    (2004) 352-377; S. Rauch-Wojciechowski, N. Rutstam, SIGMA 10 (2014) 017).
 #pragma once
+#include "dynamics/models/EquationModel.h"
+
 #include <array>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <utility>
@@ -40,6 +43,9 @@ bool isRollingModel(const nlohmann::json& doc);
 struct RollingEquations {
   std::string model; ///< the equation model's JSON text, keys in the order written (parameters, observables)
   std::vector<std::pair<std::string, std::string>> origins;
+  /// The shape each definition holding a user's expression must have (EquationModelSpec::definitionShapes):
+  /// a centre given as a 2-vector is named at body.centre, not where the derivation first uses it.
+  std::map<std::string, RequiredShape> shapes;
 };
 
 /// Derives the equations of the rolling body `doc` (with its key order from `ordered` when given). Throws

@@ -89,6 +89,12 @@ private:
     }
     stack_.push_back(name);
     const Value v = lower(def->second);
+    if (const auto shape = system_.spec().definitionShapes.find(name);
+        shape != system_.spec().definitionShapes.end() &&
+        (v.rows != shape->second.rows || v.cols != shape->second.cols))
+      throw InputError(def->second.where + ": " + shape->second.what + " must be " +
+                       expr::shapeName(Value{shape->second.rows, shape->second.cols, {}}) + ", not " +
+                       expr::shapeName(v));
     stack_.pop_back();
     done_.emplace(name, v);
     return v;

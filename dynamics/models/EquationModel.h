@@ -11,6 +11,7 @@
 #include "dynamics/expr/Expression.h"
 #include "dynamics/expr/Graph.h"
 
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -25,6 +26,13 @@ struct ExprText {
   std::string where;
 };
 
+/// The shape a definition must have (rows x cols; cols 1: a vector; 1 x 1: a scalar) and what it is, for the
+/// message: a value of the wrong size is then named at the definition, not where it is first used.
+struct RequiredShape {
+  int rows = 1, cols = 1;
+  std::string what;
+};
+
 /// Everything a model file declares, with the texts not yet parsed.
 struct EquationModelSpec {
   /// id, title, reference, parameters, stateNames, kind, mapCoordinates, section; the rest is derived.
@@ -33,6 +41,8 @@ struct EquationModelSpec {
   std::vector<std::pair<std::string, std::vector<std::string>>> vectors;
   /// Intermediate definitions (name, expression), in any order: each may use the ones it needs.
   std::vector<std::pair<std::string, ExprText>> definitions;
+  /// Shapes some definitions must have, by name (a rolling model's: the user's sizes, scenes/RollingModel.h).
+  std::map<std::string, RequiredShape> definitionShapes;
   /// d(variable)/dt of a flow or the next value of a map, by state variable or state vector name.
   std::vector<std::pair<std::string, ExprText>> equations;
   struct ObservableText {

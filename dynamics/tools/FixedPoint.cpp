@@ -5,6 +5,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
+#include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
 
@@ -67,9 +68,45 @@ T classifyPair(std::complex<double> a, std::complex<double> b, double tol) {
   return std::abs(big) < 1 ? T::StableNode : T::UnstableNode;
 }
 
+/// The step of Newton's method for F(x) = 0 with the derivative A: A^-1 F where A is regular; where it has
+/// lost rank, the least-squares step of least norm A^+ F with A's smaller singular values taken as zero --
+/// the Gauss-Newton step of an underdetermined system, which converges quadratically to the point of a
+/// family of solutions nearest the guess (Deuflhard, Newton Methods for Nonlinear Problems (2004) §4.4;
+/// Ben-Israel, J. Math. Anal. Appl. 15 (1966) 243-252), where the inverse would step along the family as far
+/// as the rounding dictates. A singular value counts as zero below `tolerance` times the largest, or below
+/// the residual |F|: a map that keeps integrals C has dC (D Map - I) = dC(x) - dC(Map(x)) = O(|F|), so off
+/// its family of fixed points the matrix is singular but for O(|F|), which is also the size of the linear
+/// model's own error there; at a regular point those singular values stay finite while |F| -> 0, so the
+/// steps become Newton's. A singular value above a tenth of the largest always counts (far from any fixed
+/// point, where |F| exceeds them all, the step stays Newton's).
+class NewtonStep {
+public:
+  static constexpr double kResolved = 0.1;
+  NewtonStep(const Eigen::MatrixXd& A, double tolerance, double residual)
+      : svd_(A, Eigen::ComputeThinU | Eigen::ComputeThinV) {
+    const double largest = svd_.singularValues().size() ? svd_.singularValues()[0] : 0.0;
+    svd_.setThreshold(largest > 0 ? std::max(tolerance, std::min(residual / largest, kResolved)) : tolerance);
+    if (svd_.rank() == A.cols()) lu_.compute(A);
+  }
+  int rank() const { return static_cast<int>(svd_.rank()); }
+  Eigen::VectorXd solve(const Eigen::VectorXd& F) const {
+    return rank() == svd_.cols() ? Eigen::VectorXd(lu_.solve(F)) : Eigen::VectorXd(svd_.solve(F));
+  }
+
+private:
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd_;
+  Eigen::FullPivLU<Eigen::MatrixXd> lu_;
+};
+
 } // namespace
 
-FixedPointType classifyFixedPoint(const std::vector<std::complex<double>>& m, double tol) {
+FixedPointType classifyFixedPoint(const std::vector<std::complex<double>>& multipliers, double tol,
+                                  int family) {
+  std::vector<std::complex<double>> m = multipliers;
+  // along a family of fixed points the map is the identity: its unit multipliers say nothing of the type
+  for (int k = 0; k < family && m.size() > 1; ++k)
+    m.erase(std::min_element(m.begin(), m.end(),
+                             [](auto a, auto b) { return std::abs(a - 1.0) < std::abs(b - 1.0); }));
   if (m.size() == 1) {
     const double r = std::abs(m[0]);
     return std::abs(r - 1) <= tol ? T::Parabolic : r < 1 ? T::Stable : T::Unstable;
@@ -142,13 +179,13 @@ FixedPointResult findFixedPoint(const ReturnMap& map, const Eigen::VectorXd& gue
     const Eigen::MatrixXd A = lin.jacobian.topLeftCorner(k, k) - Eigen::MatrixXd::Identity(k, k);
     double residual = F.norm();
     record(x, residual);
-    Eigen::FullPivLU<Eigen::MatrixXd> lu(A);
+    const NewtonStep newton(A, s.rankTolerance, residual);
     if (residual <= s.accuracy) {
       // converged: up to two more Newton steps, kept only while they reduce the residual
-      for (int polish = 0; polish < 2 && s.method == FixedPointMethod::Newton && lu.isInvertible();
+      for (int polish = 0; polish < 2 && s.method == FixedPointMethod::Newton && newton.rank() > 0;
            ++polish) {
         Eigen::VectorXd y = x;
-        y.head(k) -= lu.solve(map.difference(map(x, control), x).head(k));
+        y.head(k) -= newton.solve(map.difference(map(x, control), x).head(k));
         const double ry = residualAt(y);
         if (!(ry < residual)) break;
         x = y, residual = ry;
@@ -159,6 +196,7 @@ FixedPointResult findFixedPoint(const ReturnMap& map, const Eigen::VectorXd& gue
       r.residual = residual;
       r.iterations = it;
       r.jacobian = lin.jacobian;
+      r.family = k - newton.rank();
       break;
     }
     if (it >= s.maxIterations)
@@ -167,10 +205,10 @@ FixedPointResult findFixedPoint(const ReturnMap& map, const Eigen::VectorXd& gue
                                     s.maxIterations, map.order(), residual, s.accuracy));
     Eigen::VectorXd dx;
     if (s.method == FixedPointMethod::Newton) {
-      if (!lu.isInvertible())
-        throw ComputationError(
-            "fixed point: D Map^n - I is singular; try the gradient method or the 2D section");
-      dx = -lu.solve(F);
+      if (newton.rank() == 0)
+        throw ComputationError("fixed point: D Map^n - I vanishes (Map^n is the identity to first order "
+                               "here); try the gradient method");
+      dx = -newton.solve(F);
     } else {
       // steepest descent on |F|^2 / 2, the step where its linear model vanishes, halved until it decreases
       const Eigen::VectorXd g = A.transpose() * F;
@@ -194,7 +232,7 @@ FixedPointResult findFixedPoint(const ReturnMap& map, const Eigen::VectorXd& gue
     x.head(k) += dx;
   }
   r.multipliers = multipliersOf(r.jacobian);
-  r.type = classifyFixedPoint(r.multipliers, s.typeTolerance);
+  r.type = classifyFixedPoint(r.multipliers, s.typeTolerance, r.family);
   r.evaluations = map.evaluations() - evaluationsBefore;
   return r;
 }

@@ -5,7 +5,10 @@
 // multipliers (eigenvalues of D Map^n) and the point's type.
 //
 // Newton with a bounded step: Dennis & Schnabel, Numerical Methods for Unconstrained Optimization and
-// Nonlinear Equations (1983) ch. 6; classification of fixed points of maps: Kuznetsov, Elements of Applied
+// Nonlinear Equations (1983) ch. 6; where D Map^n - I has lost rank (a family of fixed points, as a map with
+// integrals has them) the least-norm Gauss-Newton step of an underdetermined system (Deuflhard, Newton
+// Methods for Nonlinear Problems (2004) §4.4; Ben-Israel 1966), which ends at the point of the family
+// nearest the guess; classification of fixed points of maps: Kuznetsov, Elements of Applied
 // Bifurcation Theory (2004) §1.5.
 #pragma once
 #include "dynamics/tools/ReturnMap.h"
@@ -27,6 +30,11 @@ struct FixedPointSettings {
   bool section2D = false;   ///< 3D maps: search on the plane z = const (z of the guess)
   DerivativeSettings derivatives;
   double typeTolerance = 1e-6; ///< how close to the unit circle (or to +-1) a multiplier counts as on it
+  /// Below this fraction of the largest (or below |Map^n(x) - x|, up to a tenth of the largest), a singular
+  /// value of D Map^n - I counts as zero: the point lies on a family of fixed points (a map with integrals: a
+  /// flow's relative equilibria), and Newton's step is the one of least norm, towards the nearest point of
+  /// the family. Derivatives must be better than this (variational ones are; differences seldom).
+  double rankTolerance = 1e-8;
 };
 
 /// One point of the search path.
@@ -62,6 +70,9 @@ struct FixedPointResult {
   Eigen::MatrixXd jacobian;                       ///< D Map^n at the point
   FixedPointType type = FixedPointType::Elliptic; ///< see classifyFixedPoint
   double residual = 0;
+  /// The dimension of the family of fixed points the point lies on (the rank defect of D Map^n - I, see
+  /// FixedPointSettings::rankTolerance); 0 for an isolated point.
+  int family = 0;
   int iterations = 0;
   long evaluations = 0; ///< map evaluations spent
   std::vector<SearchPoint> path;
@@ -70,8 +81,11 @@ struct FixedPointResult {
 /// The type of a fixed point from its multipliers: 2D maps elliptic, hyperbolic, hyperbolic with reflection,
 /// parabolic (a multiplier +-1), and for maps that do not preserve area stable / unstable node or focus. 3D
 /// maps: a multiplier equal to 1 (an integral) is set aside and the other two classified as above; otherwise
-/// elliptic (all on the unit circle), hyperbolic (some inside, some outside), stable or unstable.
-FixedPointType classifyFixedPoint(const std::vector<std::complex<double>>& multipliers, double tolerance);
+/// elliptic (all on the unit circle), hyperbolic (some inside, some outside), stable or unstable. A point on
+/// a `family` of fixed points of that dimension has as many unit multipliers along it: the `family`
+/// multipliers nearest 1 are set aside first.
+FixedPointType classifyFixedPoint(const std::vector<std::complex<double>>& multipliers, double tolerance,
+                                  int family = 0);
 
 /// Eigenvalues of a square matrix, sorted by decreasing modulus (then by imaginary part).
 std::vector<std::complex<double>> multipliersOf(const Eigen::MatrixXd& jacobian);

@@ -166,6 +166,9 @@ ToolRegistry& ToolRegistry::mutableGlobal() {
                      {"type", "elliptic, hyperbolic, ..."},
                      {"multipliers", "the eigenvalues of D(Map^n), [re, im] each (complex in Python)"},
                      {"residual", "|Map^n(x) - x|"},
+                     {"family",
+                      "the dimension of the family of fixed points it lies on (0: isolated; a map with "
+                      "integrals has families: the search ends at the point nearest the guess)"},
                      {"iterations", "the search's iterations"},
                      {"evaluations", "the map evaluations it spent"},
                      {"order", "n"},

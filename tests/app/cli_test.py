@@ -554,6 +554,22 @@ class Cli(unittest.TestCase):
         self.assertIn("type: elliptic", t.stdout)
         self.assertIn("search:", t.stdout)
 
+    def test_fixedpoint_on_a_family_of_steady_motions(self):
+        # the rolling disk's steady motion (a two-parameter family of fixed points of its map; the relation
+        # between tilt, spin and turning rate is checked in tests/scenes/RollingModelTest.cpp): the search
+        # ends near the guess and says it lies on a family
+        scene = os.path.join(SRC, "examples", "rolling", "disk_steady.scene.json")
+        r = run("fixedpoint", scene, "--json", env={"ROLLVIZ_COMPILE_MODELS": "0"})
+        self.assertEqual(r.returncode, 0, r.stderr)
+        j = json.loads(r.stdout)
+        self.assertEqual(j["family"], 2)
+        self.assertEqual(j["type"], "elliptic")
+        self.assertLess(j["residual"], 1e-9)
+        guess = [0.02, -0.03, 2.03, 0.88]
+        self.assertLess(sum((a - b) ** 2 for a, b in zip(j["point"], guess)) ** 0.5, 0.06)
+        t = run("fixedpoint", scene, env={"ROLLVIZ_COMPILE_MODELS": "0"})
+        self.assertIn("family: the point lies on a 2-dimensional family", t.stdout)
+
     def test_fixedpoint_failures(self):
         hm = os.path.join(SRC, "scenes", "henon_map.json")
         r = run("fixedpoint", hm, "--guess", "0.2,0", "--set", "fixedpoint.max_iterations=1",

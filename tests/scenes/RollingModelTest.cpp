@@ -7,6 +7,7 @@
 #include "scenes/RollingModel.h"
 #include "dynamics/core/BodyShapes.h"
 #include "dynamics/core/Errors.h"
+#include "dynamics/tools/FixedPoint.h"
 #include "scenes/ModelFile.h"
 #include "tests/scenes/ModelFileSupport.h"
 
@@ -272,6 +273,128 @@ TEST(RollingModel, MarbleAndRubberRollingKeepTheirEnergyAndRubberNeverSpinsAbout
   EXPECT_GT(lowest, 0.3); // it leans into its turn and rolls on, never falling flat
 }
 
+// The rolling disk's steady circular motion, derived by hand from Newton-Euler in the Euler angles' (Resal)
+// frame (E. J. Routh, Advanced Dynamics of a System of Rigid Bodies (1905) §244; O. M. O'Reilly, The
+// dynamics of rolling disks and sliding disks, Nonlinear Dyn. 10 (1996) 287-305). The symmetry axis e3 is at
+// theta from the upward vertical k; e1 = k x e3 / sin(theta) is horizontal, e2 = e3 x e1 lies in the disk's
+// plane with k = sin(theta) e2 + cos(theta) e3, and the contact (the rim's lowest point) is r = -R e2 from
+// the centre G. With psi the heading and n = omega3 the spin about the axis, omega = theta' e1 + psi'
+// sin(theta) e2 + n e3. A steady motion has theta' = 0, psi' = Omega and n constant:
+//  - no slip: v_G = omega x (R e2) = -R n e1; the frame turns at Omega k, so a_G = -R n Omega k x e1 =
+//    R n Omega (sin(theta) e3 - cos(theta) e2): G circles at radius R n / Omega;
+//  - the contact force F = m a_G + m g k;
+//  - H_G = I1 Omega sin(theta) e2 + I3 n e3 is constant in the frame: dH_G/dt = Omega k x H_G =
+//    Omega sin(theta) (I3 n - I1 Omega cos(theta)) e1, and the torque of F about G is
+//    -R e2 x F = -R (m R n Omega sin(theta) + m g cos(theta)) e1; so
+//      I1 Omega^2 sin(theta) cos(theta) - (I3 + m R^2) n Omega sin(theta) = m g R cos(theta).
+// (n = 0, the centre at rest, gives I1 Omega^2 sin(theta) = m g R: Euler's disk, Omega^2 = 4 g / (R
+// sin(theta)) for a uniform disk.) In the model's body variables cos(theta) = gamma3, n = omega3 and, from
+// (omega, k) = psi' sin^2(theta) + n cos(theta), Omega = ((omega, gamma) - omega3 gamma3) / (1 - gamma3^2).
+// In (M, gamma) a steady motion is a periodic orbit (gamma turns about e3) of a two-parameter family (the
+// disk's energy and Chaplygin's two integrals), so a fixed point of the map on gamma1 = 0 where D Map - I has
+// rank 2 of 4: the search takes least-norm steps and ends at the family's point nearest a perturbed guess.
+TEST(RollingModel, TheRollingDisksSteadyMotionIsAFixedPointWithRouthsRelation) {
+  const double R = 1, m = 1, I1 = 0.25, I3 = 0.5, g = 1; // disk.json's defaults: a uniform disk
+  const auto disk = instance(modelFileEntry(examples("disk.json", "rolling")));
+  const ReturnMap map(
+      *disk, [] { return verner(1e-13); }, SectionSettings{});
+  const auto relation = [&](double cosTheta, double n, double Omega) {
+    const double sinTheta = std::sqrt(1 - cosTheta * cosTheta);
+    return I1 * Omega * Omega * sinTheta * cosTheta - (I3 + m * R * R) * n * Omega * sinTheta -
+           m * g * R * cosTheta;
+  };
+  for (const double sinTheta : {0.9, 0.8}) {
+    SCOPED_TRACE(sinTheta);
+    // a steady motion to start near: on the section e1, e2 are body axes 1, 2, omega = (0, Omega sin, n)
+    // and M = A omega with A = diag(I1 + m R^2, I1, I3 + m R^2) about the contact (0, -R, 0); Omega the
+    // slow root of the relation for a spin n
+    const double cosTheta = std::sqrt(1 - sinTheta * sinTheta), n = 2 * sinTheta;
+    const double a = I1 * sinTheta * cosTheta, b = -(I3 + m * R * R) * n * sinTheta,
+                 c = -m * g * R * cosTheta;
+    const double Omega = (-b - std::sqrt(b * b - 4 * a * c)) / (2 * a);
+    ASSERT_NEAR(relation(cosTheta, n, Omega), 0, 1e-14);
+    const Eigen::Vector4d steady(0, I1 * Omega * sinTheta, (I3 + m * R * R) * n, sinTheta);
+    const Eigen::Vector4d guess = steady + Eigen::Vector4d(0.02, 0.03, -0.04, -0.015);
+    FixedPointSettings settings;
+    settings.accuracy = 1e-10;
+    const FixedPointResult r = findFixedPoint(map, guess, settings);
+    EXPECT_EQ(r.family, 2);
+    EXPECT_EQ(r.type, FixedPointType::Elliptic) << toString(r.type);
+    EXPECT_LT(r.residual, 1e-10);
+    EXPECT_LT((r.point - guess).norm(), 0.06);  // the family's point nearest the guess, not one far along it
+    EXPECT_GT((r.point - steady).norm(), 1e-3); // another steady motion than the one perturbed
+    // the motion found keeps its tilt, spin and turning rate, and they obey the relation
+    const Eigen::VectorXd x = map.stateOf(r.point);
+    const ExampleRun run = runModel(
+        instance(modelFileEntry(examples("disk.json", "rolling"))),
+        {{"M1", x[0]}, {"M2", x[1]}, {"M3", x[2]}, {"gamma1", x[3]}, {"gamma2", x[4]}, {"gamma3", x[5]}}, 10,
+        0.5);
+    for (const Eigen::VectorXd& y : run.states) {
+      const double cosY = y[5], nY = observable(*run.model, "omega3", y.data());
+      const double OmegaY = (observable(*run.model, "omega1", y.data()) * y[3] +
+                             observable(*run.model, "omega2", y.data()) * y[4]) /
+                            (1 - cosY * cosY);
+      EXPECT_NEAR(cosY, x[5], 1e-9);
+      EXPECT_NEAR(nY, observable(*disk, "omega3", x.data()), 1e-9);
+      EXPECT_NEAR(relation(cosY, nY, OmegaY), 0, 1e-9);
+    }
+  }
+}
+
+// The balanced, dynamically asymmetric ball rubber-rolling on a plane has an invariant measure (A. V.
+// Borisov, I. S. Mamaev, I. A. Bizyaev, Nelin. Dinam. 9 (2013) 141-202; J. Koiller, K. M. Ehlers, Rubber
+// rolling over a sphere, Regul. Chaotic Dyn. 12 (2007) 127-152: a power of the reduced Legendre transform's
+// determinant). Derived here: r = -R gamma and omega normal to gamma make the momentum about the contact A
+// omega = (I + m R^2 E) omega = J omega, with J constant, and the contact's rate term m R^2 gamma' x (omega x
+// gamma) = m R^2 (gamma x omega) x (omega x gamma) vanishes, so (J omega)' = J omega x omega + lambda gamma,
+// gamma' = gamma x omega, lambda = -(J^-1 gamma, J omega x omega) / (gamma, J^-1 gamma) keeping (omega,
+// gamma) = 0 -- Veselova's system (L. E. Veselova, 1986). In (omega, gamma) the Euler part is free of
+// divergence (tr of J^-1 times a skew matrix) and the couple's part has divergence (grad_omega lambda, J^-1
+// gamma) = -(J^-1 gamma, gamma x omega) / (gamma, J^-1 gamma) = -(1/2) d/dt ln (gamma, J^-1 gamma), so the
+// density is (gamma, J^-1 gamma)^(1/2) = (det of J restricted to gamma's normal plane / det J)^(1/2). The
+// model's state is (M, gamma) with M = A omega + sigma gamma: sigma (the constraint's gauge) is constant
+// along the motion and the map (omega, sigma) -> M has determinant det J (gamma, J^-1 gamma), so in the
+// model's own variables the density is rho = (gamma, J^-1 gamma)^(-1/2) (with J = I + m R^2 |gamma|^2 E, the
+// ball the model describes off |gamma| = 1), and div(rho f) = rho (tr Df - (J^-1 gamma, gamma') / (gamma,
+// J^-1 gamma)) must vanish: tr Df from the model's exact Jacobian, at random states and gauges.
+TEST(RollingModel, TheBalancedRubberBallKeepsItsInvariantMeasure) {
+  const json ball = json::parse(R"({"kind": "rolling", "id": "balanced_rubber_ball",
+      "parameters": {"R": 0.7, "m": 1.3, "I1": 0.2, "I2": 0.35, "I3": 0.5},
+      "body": {"shape": "sphere", "radius": "R", "mass": "m", "inertia": ["I1", "I2", "I3"]},
+      "gravity": 9.81, "contact": "rubber"})");
+  const auto model = instance(modelEntryFromJson(ball, "<rubber ball>"));
+  const double R = 0.7, m = 1.3;
+  const Eigen::Matrix3d I = Eigen::Vector3d(0.2, 0.35, 0.5).asDiagonal();
+  const int n = model->dimension();
+  std::srand(62);
+  for (int k = 0; k < 8; ++k) {
+    SCOPED_TRACE(k);
+    const Eigen::Vector3d gamma = Eigen::Vector3d::Random().normalized();
+    const Eigen::Vector3d w = gamma.cross(Eigen::Vector3d::Random()) * 3;
+    const Eigen::Matrix3d A = I + m * R * R * (Eigen::Matrix3d::Identity() - gamma * gamma.transpose());
+    const Eigen::Vector3d M = A * w + 0.5 * Eigen::Vector3d::Random()[0] * gamma; // any gauge
+    const Eigen::VectorXd x = named(*model, {{"M1", M[0]},
+                                             {"M2", M[1]},
+                                             {"M3", M[2]},
+                                             {"gamma1", gamma[0]},
+                                             {"gamma2", gamma[1]},
+                                             {"gamma3", gamma[2]}});
+    EXPECT_NEAR(observable(*model, "omega1", x.data()), w[0], 1e-13); // the motion meant
+    Eigen::VectorXd f(n);
+    model->rhs(x.data(), f.data());
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> Df(n, n);
+    model->jacobian(x.data(), Df.data());
+    const Eigen::Matrix3d J = I + m * R * R * gamma.squaredNorm() * Eigen::Matrix3d::Identity();
+    const Eigen::Vector3d Jg = J.inverse() * gamma, dgamma = f.segment<3>(3);
+    const double densityRate = Jg.dot(dgamma) / gamma.dot(Jg); // -d/dt ln rho
+    EXPECT_GT(std::abs(densityRate), 1e-2);                    // not a check that holds for any density
+    EXPECT_NEAR(Df.trace() - densityRate, 0, 1e-12 * (1 + Df.diagonal().cwiseAbs().sum()));
+    // the model offers it as its invariant measure
+    EXPECT_NEAR(model->measureDensity(x.data()), 1 / std::sqrt(gamma.dot(Jg)), 1e-14);
+  }
+  EXPECT_TRUE(model->hasInvariantMeasure());
+}
+
 TEST(RollingModel, AnEllipsoidGivenByItsImplicitSurfaceRollsAsTheClosedFormEllipsoid) {
   // the rattleback's ellipsoid as F = (x/b1)^2 + (y/b2)^2 + (z/b3)^2 - 1: the contact by Newton's method,
   // carried in the state, against the closed-form inverse Gauss map
@@ -418,6 +541,62 @@ TEST(RollingModel, TheTippeTopTurnsOverOnlyInsideItsInertiaWindowAndKeepsJellett
   }
 }
 
+// Jellett's quantity is marked an integral only for a body symmetric about its `axis` (the inertia's axis,
+// equal moments across it, the centre of mass on it) for every value of the parameters; otherwise it stays
+// an observable -- and then it is not conserved.
+TEST(RollingModel, JellettIsAnIntegralOnlyOfABodySymmetricAboutItsAxis) {
+  const json top = json::parse(std::ifstream(examples("tippe_top.json", "rolling")));
+  int variant = 0;
+  const auto jellettIsAnIntegral = [&](const json& doc) {
+    json d = doc;
+    d["id"] = "jellett_variant_" + std::to_string(variant++);
+    const ModelEntry& e = modelEntryFromJson(d, "<jellett>");
+    const auto& observables = instance(e)->observables();
+    EXPECT_TRUE(std::any_of(observables.begin(), observables.end(),
+                            [](const Observable& o) { return o.id == "jellett"; })); // always offered
+    const auto& integrals = e.info->integralNames;
+    return std::find(integrals.begin(), integrals.end(), "jellett") != integrals.end();
+  };
+  EXPECT_TRUE(jellettIsAnIntegral(top));
+  json tilted = top; // the same top with its axis along (1, 1, 0)/sqrt(2): a tensor through principal axes
+  tilted["body"]["axis"] = "[1, 1, 0]";
+  tilted["body"]["centre"] = "(offset*R/sqrt(2))*[1, 1, 0]";
+  tilted["body"]["principal_axes"] = "[[0, 0, 1], [1/sqrt(2), -1/sqrt(2), 0], [1/sqrt(2), 1/sqrt(2), 0]]";
+  EXPECT_TRUE(jellettIsAnIntegral(tilted));
+  json asymmetric = top; // equal moments at the defaults only: not for every value of the parameters
+  asymmetric["parameters"]["I2"] = asymmetric["parameters"]["I1"];
+  asymmetric["body"]["inertia"] = json::array({"I1", "I2", "I3"});
+  EXPECT_FALSE(jellettIsAnIntegral(asymmetric));
+  json offAxis = top;
+  offAxis["body"]["centre"] = "[0.05, 0, offset*R]";
+  EXPECT_FALSE(jellettIsAnIntegral(offAxis));
+  json otherAxis = top;
+  otherAxis["body"]["axis"] = "[1, 0, 0]";
+  EXPECT_FALSE(jellettIsAnIntegral(otherAxis));
+  // File > New rolling body: a sphere declared symmetric about axis 3 says so in its description
+  RollingBodyForm form;
+  form.shape = "sphere";
+  form.sizes = {1, 0, 0};
+  form.centre = {0, 0, 0.3};
+  form.inertia = {0.35, 0.35, 0.4};
+  form.contact = "sliding";
+  form.symmetryAxis = true;
+  EXPECT_TRUE(jellettIsAnIntegral(json::parse(rollingModelDocument(form).dump())));
+  form.inertia = {0.35, 0.3, 0.4};
+  EXPECT_FALSE(jellettIsAnIntegral(json::parse(rollingModelDocument(form).dump())));
+  // and rightly: with unequal moments across the axis Jellett's quantity drifts
+  asymmetric["id"] = "jellett_asymmetric_run";
+  const ExampleRun run = runModel(instance(modelEntryFromJson(asymmetric, "<asymmetric>"), {{"I2", 0.3}}),
+                                  {{"omega1", 0},
+                                   {"omega2", 0},
+                                   {"omega3", 6},
+                                   {"gamma1", std::sin(0.1)},
+                                   {"gamma2", 0},
+                                   {"gamma3", std::cos(0.1)}},
+                                  50, 0.5);
+  EXPECT_GT(relativeDrift(along(run, "jellett")), 1e-4); // the symmetric top keeps it to 1e-10 (above)
+}
+
 TEST(RollingModel, ATopThatWouldLeaveThePlaneStopsTheRunSayingSo) {
   // weightless, the spinning top's plane would have to pull (N < 0): the sliding model no longer holds
   const std::map<std::string, double> spun{{"omega1", 0}, {"omega2", 0},
@@ -476,6 +655,28 @@ TEST(RollingModel, AMalformedBodyIsNamedAtTheFieldTheUserWrote) {
   bad = top;
   bad["body"]["semi_axes"] = "[1, 2, 3]";
   expect(bad, "<bad>:body.semi_axes: a sphere has no \"semi_axes\"");
+  // a value of the wrong size, named at the field that holds it (not where the derivation first uses it)
+  bad = top;
+  bad["body"]["centre"] = "[0, 0.1]";
+  expect(bad, "<bad>:body.centre: the shape's centre must be a 3-vector, not a 2-vector");
+  bad = top;
+  bad["body"]["axis"] = "[0, 1]";
+  expect(bad, "<bad>:body.axis: the axis must be a 3-vector, not a 2-vector");
+  bad = top;
+  bad["body"]["inertia"] = json::array({1, "[1, 2, 3]", 1});
+  expect(bad, "<bad>:body.inertia.1: a principal moment of inertia must be a scalar, not a 3-vector");
+  bad = top;
+  bad["body"]["inertia"] = "diag(1, 2)";
+  expect(bad, "<bad>:body.inertia: the inertia tensor must be a 3x3 matrix, not a 2x2 matrix");
+  bad = top;
+  bad["body"]["radius"] = "[R, R]";
+  expect(bad, "<bad>:body.radius: the radius must be a scalar, not a 2-vector");
+  bad = top;
+  bad["body"] = {{"shape", "ellipsoid"}, {"semi_axes", "R"}, {"mass", 1}, {"inertia", {1, 1, 1}}};
+  expect(bad, "<bad>:body.semi_axes: the semi-axes must be a 3-vector, not a scalar");
+  bad = top;
+  bad["gravity"] = "[0, 0, 1]";
+  expect(bad, "<bad>:gravity: the gravity must be a scalar, not a 3-vector");
 }
 
 } // namespace
