@@ -23,6 +23,9 @@ namespace {
 
 enum class Contact { Marble, Rubber, Sliding };
 
+constexpr const char* kShapes =
+    "\"sphere\", \"ellipsoid\", \"paraboloid\", \"disk\", \"superellipsoid\", \"revolution\" or \"implicit\"";
+
 class Generator {
 public:
   Generator(const json& doc, const ordered_json* ordered, std::string source)
@@ -174,58 +177,191 @@ private:
     if (s.contains("side") && support_ != "sphere") (w / "side").fail("only a sphere has a side");
   }
 
-  /// An implicit surface's F: parsed here, so that an error is named at body.F, and its names checked (x, y,
-  /// z, the parameters, the user's definitions).
-  void readImplicit(const json& j, const Where& w) {
-    if (!j.is_string()) w.fail("expected an expression of x, y, z (a string)");
+  /// A user's expression of some of x, y, z (an implicit surface's F, a profile's radius of z): parsed
+  /// here, so that an error is named at its field, and its names checked (those point coordinates, the
+  /// parameters, the user's definitions).
+  expr::Expression userFunction(const json& j, const Where& w, const std::vector<std::string>& point) const {
+    std::string of;
+    for (const std::string& c : point)
+      of += (of.empty() ? "" : ", ") + c;
+    if (!j.is_string()) w.fail("expected an expression of " + of + " (a string)");
+    std::optional<expr::Expression> e;
     try {
-      implicit_ = expr::parse(j.get<std::string>());
-    } catch (const expr::ExprError& e) {
-      w.fail(e.what());
+      e = expr::parse(j.get<std::string>());
+    } catch (const expr::ExprError& error) {
+      w.fail(error.what());
     }
-    std::vector<std::string> known{"x", "y", "z", "pi"};
+    std::vector<std::string> known = point;
+    known.push_back("pi");
     for (const char* section : {"parameters", "definitions"})
       if (doc_.contains(section) && doc_[section].is_object())
         for (const auto& [name, value] : doc_[section].items())
           known.push_back(name);
-    for (const std::string& name : expr::namesUsed(*implicit_))
+    for (const std::string& name : expr::namesUsed(*e))
       if (std::find(known.begin(), known.end(), name) == known.end()) {
         const std::string near = expr::nearestName(name, known);
-        w.fail("unknown name '" + name + "' (F reads x, y, z, the parameters and your definitions" +
+        w.fail("unknown name '" + name + "' (this reads " + of + ", the parameters and your definitions" +
                (near.empty() ? ")" : "; did you mean '" + near + "'?)"));
       }
+    return *e;
+  }
+
+  /// The body's surface as F(x, y, z) = 0 (F < 0 inside), rolled by the implicit machinery; `start`, when
+  /// given, is an F with the same zeros near the body that is defined everywhere (the contact's first
+  /// Newton steps begin far from it) and is also the one the 3D view samples.
+  void implicitSurface(const std::string& F, const std::string& start = "") {
+    implicit_ = expr::parse(F);
+    implicitStart_ = expr::parse(start.empty() ? F : start);
+    shapeView_ = {{"body", "implicit"}, {"F", start.empty() ? F : start}, {"size", "body_size"}};
+    shapeContact_ = "contact_newton";
   }
 
   /// F at the point named `p` (a 3-vector expression).
-  std::string implicitAt(const std::string& p) const {
-    return expr::renamed(*implicit_, {{"x", p + "[1]"}, {"y", p + "[2]"}, {"z", p + "[3]"}});
+  static std::string implicitAt(const expr::Expression& F, const std::string& p) {
+    return expr::renamed(F, {{"x", p + "[1]"}, {"y", p + "[2]"}, {"z", p + "[3]"}});
+  }
+
+  /// A size of the shape the user may give: theirs, or `otherwise`.
+  void sizeOr(const json& b, const Where& w, const char* key, const std::string& name,
+              const std::string& otherwise) {
+    if (b.contains(key))
+      userExpression(name, b[key], w / key);
+    else
+      define(name, otherwise);
+  }
+
+  /// A definition that is 0 where `ok` (an expression) is positive and not finite elsewhere: added to the
+  /// contact, it stops the run where the model stops holding, naming `name` (as `turns_over` does).
+  void guard(const std::string& name, const std::string& ok) {
+    define(name, "(1 - max(0, sign(" + ok + ")))/max(0, sign(" + ok + "))");
+  }
+
+  /// |x/a1|^p + |y/a2|^p + |z/a3|^p + bulge ((x/a1)^2 + (y/a2)^2 + (z/a3)^2 - 1) = 1 (A. H. Barr,
+  /// Superquadrics and angle-preserving transformations, IEEE Computer Graphics and Applications 1 (1981)
+  /// 11-23, with one exponent). For p > 2 the pure superellipsoid is flat (zero normal curvature) along its
+  /// three mid-curves x_i = 0 -- the face centres among them -- so there the shape operator is singular and
+  /// the contact's rate infinite: the bulge, a multiple of the ellipsoid through the same vertices, keeps the
+  /// Hessian of F positive definite, hence the surface strictly convex with the semi-axes unchanged. Below
+  /// p = 2 the curvature is infinite along the mid-curves (edges towards an octahedron): not offered.
+  /// |u|^p is written (u^2 + 1e-100)^(p/2): the same number to rounding for |u| > 1e-42, with derivatives
+  /// of every order the Newton step and the Jacobian take finite at u = 0 (|u|^p's are 0 * inf there for a
+  /// p given as a parameter).
+  void superellipsoid(const json& b, const Where& w) {
+    for (const char* key : {"semi_axes", "exponent"})
+      if (!b.contains(key)) w.fail(std::string("a superellipsoid needs \"") + key + "\"");
+    userExpression("body_semi_axes", b["semi_axes"], w / "semi_axes");
+    userExpression("body_exponent", b["exponent"], w / "exponent");
+    sizeOr(b, w, "bulge", "body_bulge", "0");
+    sizeOr(b, w, "size", "body_size", "norm(body_semi_axes)");
+    // numbers are checked now (exit 2), expressions of parameters when the model runs (the guard)
+    const json& p = b["exponent"];
+    if (p.is_number() && p.get<double>() < 2)
+      (w / "exponent")
+          .fail("expected an exponent of at least 2 (2: the ellipsoid; above 2 the faces flatten towards a "
+                "box's); below 2 the surface has edges of infinite curvature along its mid-curves");
+    const bool flat = p.is_number() && p.get<double>() > 2;
+    if (flat && (!b.contains("bulge") || (b["bulge"].is_number() && b["bulge"].get<double>() <= 0)))
+      (b.contains("bulge") ? w / "bulge" : w)
+          .fail("a superellipsoid with an exponent above 2 is flat along its mid-curves x_i = 0 (the face "
+                "centres among them): there the contact's rate is infinite. Give \"bulge\" > 0 (e.g. 0.05), "
+                "the weight of the ellipsoid through the same vertices that keeps it strictly convex");
+    guard("not_strictly_convex", "(1 - abs(sign(body_exponent - 2))) + "
+                                 "max(0, sign(body_exponent - 2))*max(0, sign(body_bulge)) - 1/2");
+    std::string F, quadric;
+    for (int i = 0; i < 3; ++i) {
+      const std::string u = std::string("(") + "xyz"[i] + "/body_semi_axes[" + std::to_string(i + 1) + "])^2";
+      F += "(" + u + " + 1e-100)^(body_exponent/2) + ";
+      quadric += (i ? " + " : "") + u;
+    }
+    implicitSurface(F + "body_bulge*(" + quadric + " - 1) - 1");
+    // the first contact's steps begin at the contact without the bulge, in closed form: s = -grad h(gamma),
+    // h(gamma) = (sum |a_i gamma_i|^q)^(1/q), q = p/(p - 1), the support function (the dual norm); Newton
+    // from a point far off diverges on flat faces
+    define("superellipsoid_q", "body_exponent/(body_exponent - 1)");
+    std::string guess, sum;
+    for (int i = 1; i <= 3; ++i) {
+      const std::string a = "body_semi_axes[" + std::to_string(i) + "]",
+                        g = "gamma[" + std::to_string(i) + "]";
+      guess += (i > 1 ? ", " : "") + a + "*sign(" + g + ")*abs(" + a + "*" + g + ")^(superellipsoid_q - 1)";
+      sum += (i > 1 ? " + " : "") + std::string("abs(") + a + "*" + g + ")^superellipsoid_q";
+    }
+    contactGuess_ = "-[" + guess + "]/(" + sum + ")^(1/body_exponent)";
+    shapeContact_ += " + [0, 0, not_strictly_convex]";
+  }
+
+  /// A body of revolution about body axis 3: its radius rho(z) at the height z (or rho(z)^2), from the
+  /// bottom to the top of the profile: F = x^2 + y^2 - rho(z)^2. Newton's first steps and the 3D view take
+  /// the profile's radius at z clamped to just inside the ends and close it beyond them; where the radius
+  /// does not fall to zero at an end the body has an edge or a flat cap there, and a contact that reaches it
+  /// stops the run (the guard `leaves_the_profile`).
+  void revolution(const json& b, const Where& w) {
+    if (b.contains("profile") == b.contains("profile_squared"))
+      w.fail("a revolution body gives its profile as \"profile\" (the radius rho(z) at the height z along "
+             "body axis 3) or as \"profile_squared\" (rho(z)^2), one of them");
+    const bool squared = b.contains("profile_squared");
+    const char* key = squared ? "profile_squared" : "profile";
+    const expr::Expression profile = userFunction(b[key], w / key, {"z"});
+    if (!b.contains("heights"))
+      w.fail("a revolution body needs \"heights\": \"[bottom, top]\", the profile's ends on its axis");
+    userExpression("body_heights", b["heights"], w / "heights");
+    const auto radius2 = [&](const std::string& z) {
+      const std::string r = expr::renamed(profile, {{"z", z}});
+      return squared ? "(" + r + ")" : "(" + r + ")^2";
+    };
+    // clamped a millionth of the length inside the ends: at an end rho' may be infinite (a pole, rho(z)^2
+    // smooth there), and 0 * inf is not 0
+    const std::string inset = "1e-6*(body_heights[2] - body_heights[1])";
+    const std::string clamped =
+        "min(max(z, body_heights[1] + " + inset + "), body_heights[2] - " + inset + ")";
+    std::string widest = "max(abs(body_heights[1]), abs(body_heights[2]))";
+    constexpr int kSamples = 16; // the widest radius, sampled, for the default size
+    for (int k = 1; k < kSamples; ++k)
+      widest = "max(" + widest + ", sqrt(max(0, " +
+               radius2("body_heights[1] + " + std::to_string(k) + "/" + std::to_string(kSamples) +
+                       "*(body_heights[2] - body_heights[1])") +
+               ")))";
+    sizeOr(b, w, "size", "body_size", "1.1*" + widest);
+    implicitSurface("x^2 + y^2 - " + radius2("z"),
+                    "x^2 + y^2 - " + radius2(clamped) +
+                        " + max(0, (z - body_heights[1])*(z - body_heights[2]))");
+    guard("leaves_the_profile", "(contact_newton[3] - body_heights[1])*(body_heights[2] - contact_newton[3])"
+                                "/(body_heights[2] - body_heights[1])^2 + 1e-9");
+    shapeContact_ += " + [0, 0, leaves_the_profile]";
   }
 
   /// One Newton step `to` from the point `from` towards the contact: onto F = 0 along the gradient, then
   /// along the surface so that the outward normal turns to -gamma (the shape operator's inverse, from the
   /// Hessian, as the closed forms' contact rate uses it). Quadratic from a point near the contact.
-  void newtonStep(const std::string& from, const std::string& to) {
-    define(to + "_F0", implicitAt(from));
+  void newtonStep(const expr::Expression& F, const std::string& from, const std::string& to, bool damped) {
+    define(to + "_F0", implicitAt(F, from));
     define(to + "_g0", "gradient(" + to + "_F0, " + from + ")");
     define(to + "_on", from + " - (" + to + "_F0/dot(" + to + "_g0, " + to + "_g0))*" + to + "_g0");
-    define(to + "_F", implicitAt(to + "_on"));
+    define(to + "_F", implicitAt(F, to + "_on"));
     define(to + "_g", "gradient(" + to + "_F, " + to + "_on)");
     define(to + "_n", "normalize(" + to + "_g)");
     define(to + "_P", "identity() - outer(" + to + "_n, " + to + "_n)");
     define(to + "_K", to + "_P*jacobian(" + to + "_g, " + to + "_on)*" + to + "_P/norm(" + to +
                           "_g) + outer(" + to + "_n, " + to + "_n)");
-    define(to, to + "_on - inverse(" + to + "_K)*(" + to + "_P*gamma)");
+    if (!damped) {
+      define(to, to + "_on - inverse(" + to + "_K)*(" + to + "_P*gamma)");
+      return;
+    }
+    // far from the contact, where the curvature of a flat-faced body changes fast, a full step overshoots:
+    // at most 0.3 size along the surface (then full steps, quadratic, once near)
+    define(to + "_step", "inverse(" + to + "_K)*(" + to + "_P*gamma)");
+    define(to, to + "_on - min(1, 0.3*body_size/norm(" + to + "_step))*" + to + "_step");
   }
 
   /// The implicit body's contact: one Newton step from the one carried in the state, which follows the
   /// contact's rate (so it is off by the integration's error, squared by the step), and a start for it from
   /// gamma alone.
   void implicitContact() {
-    newtonStep("contact", "contact_newton");
-    define("contact_start_0", "-body_size*normalize(gamma)");
+    newtonStep(*implicit_, "contact", "contact_newton", false);
+    define("contact_start_0", contactGuess_);
     constexpr int kStartSteps = 16;
     for (int k = 1; k <= kStartSteps; ++k)
-      newtonStep("contact_start_" + std::to_string(k - 1), "contact_start_" + std::to_string(k));
+      newtonStep(*implicitStart_, "contact_start_" + std::to_string(k - 1),
+                 "contact_start_" + std::to_string(k), true);
     for (int i = 1; i <= 3; ++i)
       out_["complete"]["contact" + std::to_string(i)] =
           "contact_start_" + std::to_string(kStartSteps) + "[" + std::to_string(i) + "]";
@@ -237,9 +373,10 @@ private:
     if (!doc_.contains("body")) root_.fail("missing \"body\" (its shape, sizes, mass and inertia)");
     const json& b = requireObject(doc_["body"], w);
     onlyKeys(b, w,
-             {"shape", "radius", "semi_axes", "p", "q", "height", "F", "size", "centre", "mass", "inertia",
-              "principal_axes", "gyrostat", "axis"});
-    if (!b.contains("shape")) w.fail("missing \"shape\" (sphere, ellipsoid, paraboloid or disk)");
+             {"shape", "radius", "semi_axes", "p", "q", "height", "F", "size", "exponent", "bulge", "profile",
+              "profile_squared", "heights", "centre", "mass", "inertia", "principal_axes", "gyrostat",
+              "axis"});
+    if (!b.contains("shape")) w.fail("missing \"shape\" (" + std::string(kShapes) + ")");
     shape_ = text(b["shape"], w / "shape");
     const auto need = [&](const char* key, const std::string& name) {
       if (!b.contains(key)) w.fail("a " + shape_ + " needs \"" + key + "\"");
@@ -279,20 +416,26 @@ private:
       shapeView_ = {{"body", "ellipsoid"}, {"semi_axes", "[body_radius, body_radius, body_radius/40]"}};
     } else if (shape_ == "implicit") { // F(x, y, z) = 0, F < 0 inside: the contact found by Newton's method
       if (!b.contains("F")) w.fail("an implicit body needs \"F\": its surface F(x, y, z) = 0, F < 0 inside");
-      readImplicit(b["F"], w / "F");
+      implicitSurface(userFunction(b["F"], w / "F", {"x", "y", "z"}).text);
       if (b.contains("size"))
         userExpression("body_size", b["size"], w / "size");
       else
         define("body_size", "1");
-      shapeContact_ = "contact_newton";
-      shapeView_ = {{"body", "implicit"}, {"F", b["F"]}, {"size", "body_size"}};
+    } else if (shape_ == "superellipsoid") {
+      superellipsoid(b, w);
+    } else if (shape_ == "revolution") {
+      revolution(b, w);
     } else {
-      (w / "shape").fail("expected \"sphere\", \"ellipsoid\", \"paraboloid\", \"disk\" or \"implicit\"");
+      (w / "shape").fail("expected " + std::string(kShapes));
     }
-    for (const char* key : {"radius", "semi_axes", "p", "q", "height", "size"})
+    for (const char* key : {"radius", "semi_axes", "p", "q", "height", "exponent", "bulge", "heights"})
       if (b.contains(key) && !out_["definitions"].contains(std::string("body_") + key))
         (w / key).fail("a " + shape_ + " has no \"" + key + "\"");
+    if (b.contains("size") && !implicit_) (w / "size").fail("a " + shape_ + " has no \"size\"");
     if (b.contains("F") && shape_ != "implicit") (w / "F").fail("only an \"implicit\" body has \"F\"");
+    for (const char* key : {"profile", "profile_squared"})
+      if (b.contains(key) && shape_ != "revolution")
+        (w / key).fail(std::string("only a \"revolution\" body has \"") + key + "\"");
     if (b.contains("centre"))
       userExpression("body_centre", b["centre"], w / "centre");
     else
@@ -727,8 +870,10 @@ private:
   std::string shape_, shapeContact_, energy_;
   ordered_json shapeView_;
   bool potential_ = false, gyrostat_ = false, axis_ = false;
-  std::optional<expr::Expression> implicit_; ///< an implicit body's F
-  std::string support_, supportContact_;     ///< a curved support ("" for the plane), its inverse Gauss map
+  std::optional<expr::Expression> implicit_;      ///< an implicit body's F
+  std::optional<expr::Expression> implicitStart_; ///< F for the first contact's Newton steps and the view
+  std::string contactGuess_ = "-body_size*normalize(gamma)"; ///< where the first contact's steps begin
+  std::string support_, supportContact_; ///< a curved support ("" for the plane), its inverse Gauss map
   ordered_json supportView_;
   bool centreSurface_ = false, inside_ = false;
 };

@@ -8,7 +8,11 @@
 // The derivation (written out in docs/rolling.md). Body axes; gamma is the upward vertical, so the body's
 // outward normal at the contact is -gamma and the contact point s(gamma) is the inverse Gauss map of the
 // surface (closed form for the named shapes); r = s + centre is the contact relative to the centre of mass
-// and r' = (dr/dgamma) gamma' its rate, taken exactly by derivative() (expr/Derivative.h).
+// and r' = (dr/dgamma) gamma' its rate, taken exactly by derivative() (expr/Derivative.h). A surface with no
+// closed form -- implicit F(x, y, z) = 0, a superellipsoid (A. H. Barr, Superquadrics and angle-preserving
+// transformations, IEEE Computer Graphics and Applications 1 (1981) 11-23) made strictly convex by a bulge,
+// a body of revolution by its profile rho(z) -- carries its contact in the state and takes one Newton step
+// per evaluation onto F = 0 with the normal turned to -gamma through the shape operator.
 //  - marble (no slip): M = A omega, A = I + m (|r|^2 E - r r^T) (the angular momentum about the contact),
 //    M' = (M + k) x omega + m r' x (omega x r) + m g r x gamma + gamma x dU/dgamma, gamma' = gamma x omega
 //    (A. V. Borisov, I. S. Mamaev, Rolling of a rigid body on a plane and sphere. Hierarchy of dynamics,

@@ -307,23 +307,141 @@ TEST(RollingModel, ARoundedCubeGivenOnlyByItsSurfaceKeepsItsEnergy) {
     EXPECT_LT(d, 1e-9);
 }
 
-TEST(RollingModel, AnImplicitBodyIsDrawnFromItsOwnSurfaceThroughTheContact) {
-  const auto cube = instance(modelFileEntry(examples("rounded_cube.json", "rolling")), {{"h", 0.2}});
-  const auto* drawn = dynamic_cast<const DrawnFromMesh*>(cube.get());
+/// The contact of `body` at the state `start`, in the body's frame about the pose's centre (the centre of
+/// mass), lies on the surface the 3D view samples, with the centre of mass inside it at the height the pose
+/// puts it.
+void expectDrawnThroughTheContact(const Model& body, const std::map<std::string, double>& start) {
+  const auto* drawn = dynamic_cast<const DrawnFromMesh*>(&body);
   ASSERT_TRUE(drawn && drawn->bodySurface());
   const ImplicitSurface surface = *drawn->bodySurface();
-  const Eigen::VectorXd x = named(
-      *cube,
-      {{"M1", 0.4}, {"M2", 0.1}, {"M3", 0.6}, {"gamma1", 0.2}, {"gamma2", 0.1}, {"gamma3", std::sqrt(0.95)}});
-  const auto pose = cube->pose(x.data());
+  const Eigen::VectorXd x = named(body, start);
+  const auto pose = body.pose(x.data());
   ASSERT_TRUE(pose);
-  // the contact, in the body's frame about the pose's centre (the centre of mass), is on the drawn surface
   const Eigen::Vector3d contact = pose->rotation.transpose() * (pose->contact - pose->center);
   EXPECT_NEAR(surface.F(contact), 0, 1e-12);
   EXPECT_LT(surface.F(Eigen::Vector3d::Zero()), 0); // the centre of mass inside
   EXPECT_GE(surface.size, contact.norm());
-  EXPECT_NEAR(contact.dot(Eigen::Vector3d(0.2, 0.1, std::sqrt(0.95))), -(pose->center[2] - pose->contact[2]),
-              1e-12);
+  const Eigen::Vector3d gamma =
+      Eigen::Vector3d(start.at("gamma1"), start.at("gamma2"), start.at("gamma3")).normalized();
+  EXPECT_NEAR(contact.dot(gamma), -(pose->center[2] - pose->contact[2]), 1e-12);
+}
+
+TEST(RollingModel, AnImplicitBodyIsDrawnFromItsOwnSurfaceThroughTheContact) {
+  const auto cube = instance(modelFileEntry(examples("rounded_cube.json", "rolling")), {{"h", 0.2}});
+  expectDrawnThroughTheContact(
+      *cube,
+      {{"M1", 0.4}, {"M2", 0.1}, {"M3", 0.6}, {"gamma1", 0.2}, {"gamma2", 0.1}, {"gamma3", std::sqrt(0.95)}});
+}
+
+/// Each observable `ids` of two runs, sample by sample, within `tolerance`.
+void expectTheSameRun(const ExampleRun& a, const ExampleRun& b, std::initializer_list<const char*> ids,
+                      double tolerance, double every) {
+  for (const char* id : ids) {
+    const std::vector<double> x = along(a, id), y = along(b, id);
+    ASSERT_EQ(x.size(), y.size());
+    for (std::size_t i = 0; i < x.size(); ++i)
+      EXPECT_NEAR(x[i], y[i], tolerance) << id << " at t = " << every * static_cast<double>(i);
+  }
+}
+
+const std::map<std::string, double> kRattlebackStart{{"M1", 0.1},      {"M2", 0.05},
+                                                     {"M3", 0.3},      {"gamma1", 0.05},
+                                                     {"gamma2", 0.05}, {"gamma3", std::sqrt(1 - 0.005)}};
+
+TEST(RollingModel, ASuperellipsoidOfExponentTwoRollsAsTheClosedFormEllipsoid) {
+  // |x/a1|^p + |y/a2|^p + |z/a3|^p = 1 at p = 2 (a parameter: the general power's derivatives at 0), no
+  // bulge: the contact by Newton's method against the closed-form inverse Gauss map
+  json named = json::parse(std::ifstream(examples("ellipsoid_on_plane.json", "rolling")));
+  named["id"] = "superellipsoid_rattleback";
+  named["parameters"]["p"] = {{"default", 2}};
+  named["body"]["shape"] = "superellipsoid";
+  named["body"]["exponent"] = "p";
+  const std::map<std::string, double> set{{"a1", 0.05}, {"B11", 0.1}, {"B12", 0.02}};
+  const ExampleRun a = runModel(instance(modelFileEntry(examples("ellipsoid_on_plane.json", "rolling")), set),
+                                kRattlebackStart, 10, 0.5);
+  const ExampleRun b =
+      runModel(instance(modelEntryFromJson(named, "<named>"), set), kRattlebackStart, 10, 0.5);
+  expectTheSameRun(a, b, {"omega1", "omega2", "omega3", "gamma1", "gamma2", "gamma3", "Z", "E"}, 1e-9, 0.5);
+  for (double d : along(b, "contact_drift"))
+    EXPECT_LT(d, 1e-9);
+}
+
+TEST(RollingModel, ASpheroidGivenByItsProfileRollsAsTheClosedFormSpheroid) {
+  // a top-heavy oblate spheroid: semi-axes [a, a, c], and its profile rho(z) = a sqrt(1 - z^2/c^2) (or
+  // rho^2) about body axis 3
+  const json closed = json::parse(R"({"kind": "rolling", "id": "spheroid_closed",
+      "parameters": {"a": 0.6, "c": 0.35, "h": 0.08, "m": 1, "I1": 0.1, "I3": 0.14, "g": 1},
+      "body": {"shape": "ellipsoid", "semi_axes": "[a, a, c]", "centre": "[0, 0, h]", "mass": "m",
+               "inertia": ["I1", "I1", "I3"]}, "gravity": "g"})");
+  json profile = closed, squared = closed;
+  profile["id"] = "spheroid_profile";
+  profile["body"].erase("semi_axes");
+  profile["body"]["shape"] = "revolution";
+  profile["body"]["heights"] = "[-c, c]";
+  squared = profile;
+  squared["id"] = "spheroid_squared";
+  profile["body"]["profile"] = "a*sqrt(1 - z^2/c^2)";
+  squared["body"]["profile_squared"] = "a^2*(1 - (z/c)^2)";
+  const std::map<std::string, double> start{{"M1", 0.1},     {"M2", 0.05},    {"M3", 0.5},
+                                            {"gamma1", 0.3}, {"gamma2", 0.1}, {"gamma3", std::sqrt(0.9)}};
+  const ExampleRun a = runModel(instance(modelEntryFromJson(closed, "<closed>")), start, 10, 0.5);
+  for (const json& revolution : {profile, squared}) {
+    SCOPED_TRACE(revolution["id"].get<std::string>());
+    const auto model = instance(modelEntryFromJson(revolution, "<revolution>"));
+    expectDrawnThroughTheContact(*model, start);
+    const ExampleRun b = runModel(instance(modelEntryFromJson(revolution, "<revolution>")), start, 10, 0.5);
+    expectTheSameRun(a, b, {"omega1", "omega2", "omega3", "gamma1", "gamma2", "gamma3", "Z", "E"}, 1e-9, 0.5);
+    for (double d : along(b, "contact_drift"))
+      EXPECT_LT(d, 1e-9);
+  }
+}
+
+TEST(RollingModel, ASuperellipsoidKeepsItsEnergyAndIsDrawnThroughItsContact) {
+  // a rounded brick, exponent 6: energy and the contact carried in the state, over many rockings
+  const std::map<std::string, double> start{{"M1", 0.3},     {"M2", 0.2},     {"M3", 0.8},
+                                            {"gamma1", 0.2}, {"gamma2", 0.1}, {"gamma3", std::sqrt(0.95)}};
+  const ExampleRun brick = runExample("superellipsoid.json", {}, start, 20, 0.5);
+  EXPECT_LT(relativeDrift(along(brick, "E")), 1e-10);
+  for (double d : along(brick, "contact_drift"))
+    EXPECT_LT(d, 1e-9);
+  expectDrawnThroughTheContact(*brick.model, start);
+  // the rounded cube written by name is the one written as F = x^4 + y^4 + z^4 + c (x^2 + y^2 + z^2 - 1) - 1
+  json cube = json::parse(std::ifstream(examples("rounded_cube.json", "rolling")));
+  const ExampleRun implicit = runModel(instance(modelEntryFromJson(cube, "<implicit>")), start, 10, 0.5);
+  cube["id"] = "rounded_cube_by_name";
+  cube["body"].erase("F");
+  cube["body"].erase("size");
+  cube["body"]["shape"] = "superellipsoid";
+  cube["body"]["semi_axes"] = "[1, 1, 1]";
+  cube["body"]["exponent"] = 4;
+  cube["body"]["bulge"] = "c";
+  const ExampleRun byName = runModel(instance(modelEntryFromJson(cube, "<by name>")), start, 10, 0.5);
+  expectTheSameRun(implicit, byName, {"omega1", "omega2", "omega3", "gamma1", "gamma2", "gamma3", "Z", "E"},
+                   1e-9, 0.5);
+}
+
+TEST(RollingModel, AShapeThatIsNotStrictlyConvexWhereItTouchesStopsTheRunSayingWhy) {
+  const std::map<std::string, double> start{{"M1", 0.3},     {"M2", 0.2},     {"M3", 0.8},
+                                            {"gamma1", 0.2}, {"gamma2", 0.1}, {"gamma3", std::sqrt(0.95)}};
+  const auto stops = [&](std::unique_ptr<Model> model, const std::string& why) {
+    try {
+      runModel(std::move(model), start, 2, 1);
+      ADD_FAILURE() << "the run went on";
+    } catch (const ComputationError& e) {
+      EXPECT_NE(std::string(e.what()).find(why), std::string::npos) << e.what();
+    }
+  };
+  // flat face centres: an exponent above 2 with no bulge
+  stops(instance(modelFileEntry(examples("superellipsoid.json", "rolling")), {{"bulge", 0}}),
+        "definitions.not_strictly_convex");
+  // a ball cut flat below z = -0.5 (the profile's radius does not fall to zero there), standing on its cut
+  const json cut = json::parse(R"j({"kind": "rolling", "id": "cut_ball",
+      "body": {"shape": "revolution", "profile": "sqrt(1 - z^2)", "heights": "[-0.5, 1]", "mass": 1,
+               "inertia": [0.4, 0.4, 0.4]
+}
+, "gravity" : 1
+})j");
+  stops(instance(modelEntryFromJson(cut, "<cut>")), "definitions.leaves_the_profile");
 }
 
 TEST(RollingModel, ABallInASphericalBowlFromItsGeometryFollowsTheBowlWrittenByHand) {
@@ -476,6 +594,39 @@ TEST(RollingModel, AMalformedBodyIsNamedAtTheFieldTheUserWrote) {
   bad = top;
   bad["body"]["semi_axes"] = "[1, 2, 3]";
   expect(bad, "<bad>:body.semi_axes: a sphere has no \"semi_axes\"");
+  const json brick = {{"shape", "superellipsoid"},
+                      {"semi_axes", "[1, 0.8, 0.6]"},
+                      {"exponent", 4},
+                      {"bulge", 0.05},
+                      {"mass", 1},
+                      {"inertia", {1, 1, 1}}};
+  bad = top;
+  bad["body"] = brick;
+  EXPECT_EQ(errorOf(bad), "");
+  bad["body"]["exponent"] = 1.5;
+  expect(bad, "<bad>:body.exponent: expected an exponent of at least 2");
+  bad["body"]["exponent"] = 4;
+  bad["body"].erase("bulge");
+  expect(bad, "<bad>:body: a superellipsoid with an exponent above 2 is flat along its mid-curves");
+  bad["body"]["bulge"] = 0;
+  expect(bad, "<bad>:body.bulge: a superellipsoid with an exponent above 2 is flat");
+  bad["body"] = brick;
+  bad["body"]["radius"] = 1;
+  expect(bad, "<bad>:body.radius: a superellipsoid has no \"radius\"");
+  bad["body"] = brick;
+  bad["body"]["profile"] = "1 - z^2";
+  expect(bad, "<bad>:body.profile: only a \"revolution\" body has \"profile\"");
+  bad["body"] = {{"shape", "revolution"},
+                 {"profile", "sqrt(1 - x^2)"},
+                 {"heights", "[-1, 1]"},
+                 {"mass", 1},
+                 {"inertia", {1, 1, 1}}};
+  expect(bad, "<bad>:body.profile: unknown name 'x' (this reads z,");
+  bad["body"].erase("heights");
+  bad["body"]["profile"] = "sqrt(1 - z^2)";
+  expect(bad, "<bad>:body: a revolution body needs \"heights\"");
+  bad["body"]["profile_squared"] = "1 - z^2";
+  expect(bad, "<bad>:body: a revolution body gives its profile as \"profile\"");
 }
 
 } // namespace
