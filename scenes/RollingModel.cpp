@@ -23,6 +23,11 @@ namespace {
 
 enum class Contact { Marble, Rubber, Sliding };
 
+/// The rotation of the unit quaternion q0..q3 (body to fixed axes).
+constexpr const char* kRotation = "[[q0^2 + q1^2 - q2^2 - q3^2, 2*(q1*q2 - q0*q3), 2*(q1*q3 + q0*q2)], "
+                                  "[2*(q1*q2 + q0*q3), q0^2 - q1^2 + q2^2 - q3^2, 2*(q2*q3 - q0*q1)], "
+                                  "[2*(q1*q3 - q0*q2), 2*(q2*q3 + q0*q1), q0^2 - q1^2 - q2^2 + q3^2]]";
+
 constexpr const char* kShapes =
     "\"sphere\", \"ellipsoid\", \"paraboloid\", \"disk\", \"superellipsoid\", \"revolution\" or \"implicit\"";
 
@@ -46,8 +51,10 @@ public:
     readSupport();
     readBody();
     userDefinitions();
-    if (!support_.empty())
+    if (!support_.empty() && balancedBall_)
       ballOnSupport();
+    else if (!support_.empty())
+      bodyOnSupport();
     else if (contact_ == Contact::Sliding)
       sliding();
     else
@@ -489,15 +496,38 @@ private:
       userExpression("body_axis", b["axis"], w / "axis");
       axis_ = true;
     }
-    if (!support_.empty()) { // a ball on a curved support: balanced and dynamically symmetric, so far
-      if (shape_ != "sphere") (w / "shape").fail("on a curved support the body is a \"sphere\" (so far)");
-      if (b.contains("centre") || b.contains("gyrostat") || b.contains("principal_axes"))
-        w.fail("on a curved support the ball is balanced (no \"centre\") and has no gyrostat (so far)");
-      if (I.is_array())
-        (w / "inertia").fail("on a curved support give the ball's one central moment of inertia (so far)");
-      if (contact_ == Contact::Sliding)
-        (root_ / "contact").fail("on a curved support the contact is \"marble\" or \"rubber\" (so far)");
+    // a balanced ball (a sphere with no centre, gyrostat or principal axes, one central moment) on a curved
+    // support rolls in the fixed frame, marble or rubber; any other body in body axes, marble only
+    balancedBall_ = shape_ == "sphere" && !b.contains("centre") && !b.contains("gyrostat") &&
+                    !b.contains("principal_axes") && !I.is_array();
+    if (support_.empty() || balancedBall_) {
+      if (!support_.empty() && contact_ == Contact::Sliding)
+        (root_ / "contact")
+            .fail("on a curved support the contact is \"marble\" or \"rubber\" (a balanced ball) or "
+                  "\"marble\" (any other body); \"sliding\" is on the plane only");
+      return;
     }
+    const std::string which =
+        "a body other than a balanced ball (a \"sphere\" with no \"centre\", gyrostat or "
+        "principal axes and one central moment of inertia)";
+    if (contact_ != Contact::Marble)
+      (root_ / "contact")
+          .fail("on a curved support " + which +
+                " rolls without slipping only: \"marble\" (\"rubber\" and \"sliding\" are on the plane; "
+                "\"rubber\" also for a balanced ball on a curved support)");
+    if (support_ == "graph")
+      (root_ / "support" / "surface")
+          .fail("a \"graph\" support carries a balanced ball only (it gives the surface its centre moves "
+                "on); " +
+                which + " rolls on a \"sphere\", \"ellipsoid\" or \"paraboloid\"");
+    if (centreSurface_)
+      (root_ / "support" / "describes")
+          .fail("\"centre\" describes the surface a balanced ball's centre moves on; for " + which +
+                " give the support's own sizes (\"describes\": \"support\")");
+    if (potential_)
+      (root_ / "potential")
+          .fail("on a curved support a potential is for a balanced ball only (U of its centre); " + which +
+                " rolls under gravity alone");
   }
 
   /// The user's definitions, after checking none takes a name the derivation uses.
@@ -536,7 +566,8 @@ private:
       for (const char* v : {"M", "gamma", "alpha", "beta", "omega", "v", "contact"})
         for (const char* i : {"1", "2", "3"})
           if (name == std::string(v) + i) return true;
-      return name == "s_plane" || name == "s_body";
+      return name == "s_plane" || name == "s_body" || name == "q0" || name == "q1" || name == "q2" ||
+             name == "q3";
     };
     const auto taken = [&](const std::string& name) {
       return names.count(name) || generated_.count(name) || component(name);
@@ -726,9 +757,7 @@ private:
     define("force", "-body_mass*gravity_g*[0, 0, 1]" +
                         std::string(potential_ ? " - gradient(potential_U, [x[1], x[2], x[3]])" : ""));
     define("potential", "body_mass*gravity_g*x[3]" + std::string(potential_ ? " + potential_U" : ""));
-    define("rotation", "[[q0^2 + q1^2 - q2^2 - q3^2, 2*(q1*q2 - q0*q3), 2*(q1*q3 + q0*q2)], "
-                       "[2*(q1*q2 + q0*q3), q0^2 - q1^2 + q2^2 - q3^2, 2*(q2*q3 - q0*q1)], "
-                       "[2*(q1*q3 - q0*q2), 2*(q2*q3 + q0*q1), q0^2 - q1^2 - q2^2 + q3^2]]");
+    define("rotation", kRotation);
     ordered_json& eq = out_["equations"];
     const std::string rolling =
         "ball_D*cross(dgamma, cross(omega, gamma)) + body_radius*cross(gamma, force)"; // M' of a marble ball
@@ -755,6 +784,68 @@ private:
     c["q0"] = "1";
     for (const char* n : {"q1", "q2", "q3", "s_surface", "s_ball"})
       c[n] = "0";
+    energy_ = "dot(M, omega)/2 + potential";
+  }
+
+  /// Any body rolling without slipping on a fixed curved support, in body axes (docs/rolling.md, "A body on
+  /// a curved support"). gamma is the support's unit normal at the contact, pointing into the body, in body
+  /// axes, so the body's contact point is its s(gamma) as on the plane; q0..q3 the body's orientation, N =
+  /// rotation gamma the normal in fixed axes and sigma(N) the support's point there. The contact is at rest:
+  /// v = -omega x r, and the angular momentum about it, M = A omega, obeys the plane's equation (its
+  /// derivation uses v = -omega x r alone, not how r changes): M' = (M + k) x omega + m r' x (omega x r) +
+  /// m g r x e, e the upward vertical in body axes. The contact moves on both surfaces alike, sigma'(N) N' =
+  /// rotation r' (no slip), so with S = ds/dgamma and Sigma = rotation^T sigma'(N) rotation (the inverse
+  /// shape operators; their sum is the relative curvature's inverse) and gamma' = N'_body + gamma x omega:
+  /// (Sigma - S) N'_body = S (gamma x omega) on the tangent plane (D. J. Montana, The kinematics of contact
+  /// and grasp, Int. J. Robotics Research 7(3) (1988) 17-32; Ju. I. Neimark, N. A. Fufaev, Dynamics of
+  /// Nonholonomic Systems (1972) ch. III). A balanced ball is the fixed-frame ballOnSupport(), which this
+  /// reproduces; a support of radius a -> infinity gives the plane.
+  void bodyOnSupport() {
+    ordered_json state = ordered_json::array(), vectors;
+    addVectors(state, vectors,
+               implicit_ ? std::initializer_list<const char*>{"M", "gamma", "contact"}
+                         : std::initializer_list<const char*>{"M", "gamma"});
+    for (const char* n : {"q0", "q1", "q2", "q3"})
+      state.push_back(n);
+    out_["state"] = state;
+    out_["vectors"] = vectors;
+    if (implicit_) implicitContact();
+    define("contact_s", shapeContact_);
+    define("r", "contact_s + body_centre");
+    define("rotation", kRotation);
+    define("N", "rotation*gamma");
+    define("vertical", "transpose(rotation)*[0, 0, 1]");
+    define("support_point", expr::renamed(expr::parse(supportContact_), {{"gamma", "N"}}));
+    define("A", "body_inertia + body_mass*(dot(r, r)*identity() - outer(r, r))");
+    define("omega", "inverse(A)*M");
+    define("tangent", "identity() - outer(gamma, gamma)");
+    define("body_turning", "tangent*jacobian(r, gamma)*tangent");                                    // S
+    define("support_turning", "tangent*transpose(rotation)*jacobian(support_point, gamma)*tangent"); // Sigma
+    define("relative_turning", "support_turning - body_turning + outer(gamma, gamma)");
+    define("dN", "inverse(relative_turning)*(body_turning*cross(gamma, omega))");
+    // the body touches at one point while the relative curvature is definite there (on a convex support
+    // always; in a bowl while the body is more curved than the bowl both ways): det > 0 on the tangent
+    // plane. Towards det = 0 it comes to touch along a curve (the contact's rate grows without bound) and
+    // past it would cut into the bowl: the run stops once one principal value is 1e-4 of the other
+    // (det < 1e-4 trace^2 on the tangent plane), naming this
+    guard("flatter_than_the_support", "det(relative_turning) - 1e-4*(trace(relative_turning) - 1)^2");
+    define("dgamma", "dN + cross(gamma, omega) + [0, 0, flatter_than_the_support]");
+    define("dr", "derivative(r, gamma, dgamma)");
+    define("x", "support_point - rotation*r"); // the centre of mass, fixed axes
+    define("potential", "body_mass*gravity_g*x[3]");
+    ordered_json& eq = out_["equations"];
+    eq["M"] = "cross(M" + gyrostat() +
+              ", omega) + body_mass*cross(dr, cross(omega, r)) + body_mass*gravity_g*cross(r, vertical)";
+    eq["gamma"] = "dgamma";
+    eq["q0"] = "-(q1*omega[1] + q2*omega[2] + q3*omega[3])/2"; // q' = q (0, omega)/2, omega in body axes
+    eq["q1"] = "(q0*omega[1] + q2*omega[3] - q3*omega[2])/2";
+    eq["q2"] = "(q0*omega[2] + q3*omega[1] - q1*omega[3])/2";
+    eq["q3"] = "(q0*omega[3] + q1*omega[2] - q2*omega[1])/2";
+    // a start that gives no orientation turns gamma to the fixed vertical: the body on top of a sphere or
+    // ellipsoid, at the bottom of a bowl
+    define("q_start", "normalize([1 + normalize(gamma)[3], normalize(gamma)[2], -normalize(gamma)[1], 0])");
+    for (int i = 0; i < 4; ++i)
+      out_["complete"]["q" + std::to_string(i)] = "q_start[" + std::to_string(i + 1) + "]";
     energy_ = "dot(M, omega)/2 + potential";
   }
 
@@ -797,7 +888,29 @@ private:
 
   void observables() {
     ordered_json o;
-    if (!support_.empty()) { // a ball on a curved support
+    if (!support_.empty() && !balancedBall_) { // any other body on a curved support
+      o["E"] = {{"value", energy_}, {"description", "energy"}, {"integral", true}};
+      o["geometric"] = {
+          {"value", "dot(gamma, gamma)"}, {"description", "geometric integral"}, {"integral", true}};
+      for (int i = 1; i <= 3; ++i) {
+        const std::string k = std::to_string(i);
+        o["omega" + k] = {{"value", "omega[" + k + "]"}, {"description", "angular velocity, body axis " + k}};
+        o["x" + k] = {{"value", "x[" + k + "]"}, {"description", "centre of mass, fixed axis " + k}};
+      }
+      o["spin_normal"] = {{"value", "dot(omega, gamma)"},
+                          {"description", "spin about the normal at the contact"}};
+      o["orientation"] = {{"value", "q0^2 + q1^2 + q2^2 + q3^2"},
+                          {"description", "the orientation quaternion's squared norm"},
+                          {"integral", true}};
+      if (implicit_)
+        o["contact_drift"] = {{"value", "norm(contact - contact_s)"},
+                              {"description",
+                               "how far the contact carried in the state is from the one solved "
+                               "for (Newton's method corrects it at every step)"}};
+      if (axis_)
+        o["axis_up"] = {{"value", "dot(vertical, normalize(body_axis))"},
+                        {"description", "cosine between the body's axis and the upward vertical"}};
+    } else if (!support_.empty()) { // a ball on a curved support
       o["E"] = {{"value", energy_}, {"description", "energy"}, {"integral", true}};
       if (support_ != "graph")
         o["geometric"] = {
@@ -837,6 +950,11 @@ private:
       v["rotation"] = "rows(alpha, beta, gamma)";
       v["position"] = "[x, y, -dot(r, gamma)]";
       v["contact"] = "[x, y, -dot(r, gamma)] + rows(alpha, beta, gamma)*r";
+    } else if (!balancedBall_) {
+      v["rotation"] = "rotation";
+      v["position"] = "x";
+      v["contact"] = "support_point";
+      if (!supportView_.is_null()) v["support"] = supportView_;
     } else {
       v["rotation"] = "rotation";
       v["position"] = "x";
@@ -876,6 +994,7 @@ private:
   std::string support_, supportContact_; ///< a curved support ("" for the plane), its inverse Gauss map
   ordered_json supportView_;
   bool centreSurface_ = false, inside_ = false;
+  bool balancedBall_ = false; ///< a sphere with no centre, gyrostat or principal axes and one moment
 };
 
 } // namespace

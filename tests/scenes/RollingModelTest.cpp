@@ -420,6 +420,17 @@ TEST(RollingModel, ASuperellipsoidKeepsItsEnergyAndIsDrawnThroughItsContact) {
                    1e-9, 0.5);
 }
 
+/// The rattleback's ellipsoid (examples/rolling/ellipsoid_on_plane.json without its extra potential) on
+/// `support` (none: the plane).
+json rattlebackOn(const json& support) {
+  json body = json::parse(std::ifstream(examples("ellipsoid_on_plane.json", "rolling")));
+  body.erase("potential");
+  body["id"] =
+      "rattleback_on_" + (support.is_null() ? std::string("plane") : support["surface"].get<std::string>());
+  if (!support.is_null()) body["support"] = support;
+  return body;
+}
+
 TEST(RollingModel, AShapeThatIsNotStrictlyConvexWhereItTouchesStopsTheRunSayingWhy) {
   const std::map<std::string, double> start{{"M1", 0.3},     {"M2", 0.2},     {"M3", 0.8},
                                             {"gamma1", 0.2}, {"gamma2", 0.1}, {"gamma3", std::sqrt(0.95)}};
@@ -435,13 +446,15 @@ TEST(RollingModel, AShapeThatIsNotStrictlyConvexWhereItTouchesStopsTheRunSayingW
   stops(instance(modelFileEntry(examples("superellipsoid.json", "rolling")), {{"bulge", 0}}),
         "definitions.not_strictly_convex");
   // a ball cut flat below z = -0.5 (the profile's radius does not fall to zero there), standing on its cut
-  const json cut = json::parse(R"j({"kind": "rolling", "id": "cut_ball",
+  const json cut = json::parse(R"j({"kind": "rolling", "id": "cut_ball", "gravity": 1,
       "body": {"shape": "revolution", "profile": "sqrt(1 - z^2)", "heights": "[-0.5, 1]", "mass": 1,
-               "inertia": [0.4, 0.4, 0.4]
-}
-, "gravity" : 1
-})j");
+               "inertia": [0.4, 0.4, 0.4]}})j");
   stops(instance(modelEntryFromJson(cut, "<cut>")), "definitions.leaves_the_profile");
+  // the rattleback (radii of curvature up to b1^2/b3 = 10) in a bowl of radius 2: where it is flatter than
+  // the bowl it would touch it along a curve, then cut into it
+  stops(instance(modelEntryFromJson(rattlebackOn({{"surface", "sphere"}, {"radius", 2}, {"side", "inside"}}),
+                                    "<bowl>")),
+        "definitions.flatter_than_the_support");
 }
 
 TEST(RollingModel, ABallInASphericalBowlFromItsGeometryFollowsTheBowlWrittenByHand) {
@@ -508,6 +521,90 @@ TEST(RollingModel, ARubberBallInASphericalBowlRollsAsTheMarbleOneThatDoesNotSpin
   EXPECT_LT(relativeDrift(along(c, "E")), 1e-11);
   for (double s : along(c, "spin_normal"))
     EXPECT_LT(std::abs(s), 1e-13);
+}
+
+TEST(RollingModel, AnyBodyOnACurvedSupportRollsAsTheBalancedBallWhenItIsOne) {
+  // the general path (any body, in body axes: a sphere given three moments takes it) against the balanced
+  // ball's fixed-frame equations, in a spherical bowl and on an ellipsoid; started with the body axes along
+  // the fixed ones (q = 1), so M, gamma and the ball's fixed-frame M, gamma start alike
+  for (const char* support : {R"({"surface": "sphere", "radius": 1, "side": "inside"})",
+                              R"({"surface": "ellipsoid", "semi_axes": "[1.2, 1, 0.8]"})"}) {
+    SCOPED_TRACE(support);
+    json ball = json::parse(R"({"kind": "rolling", "id": "balanced_ball",
+        "body": {"shape": "sphere", "radius": 0.2, "mass": 1, "inertia": "0.4*0.2^2"}, "gravity": 9.81})");
+    ball["support"] = json::parse(support);
+    json body = ball;
+    body["id"] = "any_body";
+    body["body"]["inertia"] = {"0.4*0.2^2", "0.4*0.2^2", "0.4*0.2^2"};
+    for (int i = 1; i <= 3; ++i) // the angular velocity in fixed axes, as the ball's omega is
+      body["observables"]["omega" + std::to_string(i)] = "(rotation*omega)[" + std::to_string(i) + "]";
+    const Eigen::Vector3d w(1, 4, 2),
+        gamma = Eigen::Vector3d(-std::sin(0.5), 0.1, std::cos(0.5)).normalized();
+    const Eigen::Vector3d M = 0.016 * w + 0.04 * gamma.cross(w.cross(gamma));
+    std::map<std::string, double> start{{"M1", M[0]},         {"M2", M[1]},         {"M3", M[2]},
+                                        {"gamma1", gamma[0]}, {"gamma2", gamma[1]}, {"gamma3", gamma[2]}};
+    const ExampleRun a = runModel(instance(modelEntryFromJson(ball, "<ball>")), start, 10, 0.5);
+    start.insert({{"q0", 1}, {"q1", 0}, {"q2", 0}, {"q3", 0}});
+    const ExampleRun b = runModel(instance(modelEntryFromJson(body, "<body>")), start, 10, 0.5);
+    expectTheSameRun(a, b, {"omega1", "omega2", "omega3", "x1", "x2", "x3", "E", "spin_normal"}, 1e-9, 0.5);
+  }
+}
+
+TEST(RollingModel, ABodyOnASphereOfGrowingRadiusTendsToTheSameBodyOnThePlane) {
+  // on top of a sphere of radius a the support's curvature 1/a is all that differs from the plane: the
+  // motion from the same start (gamma along the fixed vertical) tends to the plane's as a grows
+  const ExampleRun plane =
+      runModel(instance(modelEntryFromJson(rattlebackOn(nullptr), "<plane>")), kRattlebackStart, 10, 0.5);
+  std::vector<double> gap;
+  for (const double a : {100.0, 1000.0}) {
+    const ExampleRun sphere = runModel(
+        instance(modelEntryFromJson(rattlebackOn({{"surface", "sphere"}, {"radius", a}}), "<sphere>")),
+        kRattlebackStart, 10, 0.5);
+    double worst = 0;
+    for (const char* id : {"omega1", "omega2", "omega3", "gamma1", "gamma2", "gamma3"}) {
+      const std::vector<double> x = along(plane, id), y = along(sphere, id);
+      for (std::size_t i = 0; i < x.size(); ++i)
+        worst = std::max(worst, std::abs(x[i] - y[i]));
+    }
+    gap.push_back(worst);
+  }
+  EXPECT_LT(gap[0], 0.5);
+  EXPECT_GT(gap[0], 1e-4);       // the curvature shows
+  EXPECT_LT(gap[1], gap[0] / 5); // like 1/a
+}
+
+TEST(RollingModel, AnyBodyOnACurvedSupportKeepsItsEnergy) {
+  // the rattleback in a spherical bowl, and the superellipsoid brick (its contact by Newton's method) on an
+  // ellipsoid
+  // (the rattleback's semi-axis b1 = 0.6 instead of 2: its radii of curvature, at most b1^2/b3, stay below
+  // the bowl's 2, so it touches at one point wherever it rolls)
+  const ExampleRun bowl = runModel(
+      instance(modelEntryFromJson(rattlebackOn({{"surface", "sphere"}, {"radius", 2}, {"side", "inside"}}),
+                                  "<bowl>"),
+               {{"b1", 0.6}}),
+      {{"M1", 0.1},
+       {"M2", 0.05},
+       {"M3", 0.3},
+       {"gamma1", 0.3},
+       {"gamma2", 0.05},
+       {"gamma3", std::sqrt(0.9075)}},
+      20, 0.5);
+  json brick = json::parse(std::ifstream(examples("superellipsoid.json", "rolling")));
+  brick["id"] = "brick_on_an_ellipsoid";
+  brick["support"] = {{"surface", "ellipsoid"}, {"semi_axes", "[3, 2.5, 2]"}};
+  const ExampleRun onEllipsoid = runModel(
+      instance(modelEntryFromJson(brick, "<brick>")),
+      {{"M1", 0.3}, {"M2", 0.2}, {"M3", 0.8}, {"gamma1", 0.2}, {"gamma2", 0.1}, {"gamma3", std::sqrt(0.95)}},
+      20, 0.5);
+  for (const ExampleRun* run : {&bowl, &onEllipsoid}) {
+    EXPECT_LT(relativeDrift(along(*run, "E")), 1e-10);
+    EXPECT_LT(relativeDrift(along(*run, "orientation")), 1e-12);
+    const std::vector<double> x1 = along(*run, "x1");
+    EXPECT_GT(*std::max_element(x1.begin(), x1.end()) - *std::min_element(x1.begin(), x1.end()),
+              0.05); // moves
+  }
+  for (double d : along(onEllipsoid, "contact_drift"))
+    EXPECT_LT(d, 1e-9);
 }
 
 TEST(RollingModel, TheTippeTopTurnsOverOnlyInsideItsInertiaWindowAndKeepsJellettsIntegral) {
@@ -590,7 +687,21 @@ TEST(RollingModel, AMalformedBodyIsNamedAtTheFieldTheUserWrote) {
   expect(bad, "<bad>:support.surface: expected \"plane\", \"sphere\"");
   bad = top;
   bad["support"] = {{"surface", "sphere"}, {"radius", 2}};
-  expect(bad, "<bad>:body.inertia: on a curved support give the ball's one central moment of inertia");
+  EXPECT_EQ(errorOf(bad), ""); // three moments: any body on a curved support
+  bad["contact"] = "rubber";
+  expect(bad, "<bad>:contact: on a curved support a body other than a balanced ball");
+  bad["contact"] = "marble";
+  bad["potential"] = "gamma1";
+  expect(bad, "<bad>:potential: on a curved support a potential is for a balanced ball only");
+  bad.erase("potential");
+  bad["support"]["describes"] = "centre";
+  expect(bad, "<bad>:support.describes: \"centre\" describes the surface a balanced ball's centre moves on");
+  bad["support"] = {{"surface", "graph"}, {"height", "x1^2"}, {"describes", "centre"}};
+  expect(bad, "<bad>:support.surface: a \"graph\" support carries a balanced ball only");
+  bad["body"]["inertia"] = 1;
+  bad["contact"] = "sliding";
+  bad["friction"] = 1;
+  expect(bad, "<bad>:contact: on a curved support the contact is \"marble\" or \"rubber\" (a balanced ball)");
   bad = top;
   bad["body"]["semi_axes"] = "[1, 2, 3]";
   expect(bad, "<bad>:body.semi_axes: a sphere has no \"semi_axes\"");
