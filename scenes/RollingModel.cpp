@@ -510,11 +510,10 @@ private:
     const std::string which =
         "a body other than a balanced ball (a \"sphere\" with no \"centre\", gyrostat or "
         "principal axes and one central moment of inertia)";
-    if (contact_ != Contact::Marble)
+    if (contact_ == Contact::Sliding)
       (root_ / "contact")
           .fail("on a curved support " + which +
-                " rolls without slipping only: \"marble\" (\"rubber\" and \"sliding\" are on the plane; "
-                "\"rubber\" also for a balanced ball on a curved support)");
+                " rolls \"marble\" or \"rubber\" (\"sliding\" is on the plane only)");
     if (support_ == "graph")
       (root_ / "support" / "surface")
           .fail("a \"graph\" support carries a balanced ball only (it gives the surface its centre moves "
@@ -658,17 +657,8 @@ private:
     if (contact_ == Contact::Marble) {
       define("omega", "inverse(A)*M");
       eq["M"] = "cross(M" + gyrostat() + ", omega) + " + forces;
-    } else { // rubber: omega normal to gamma by construction, the couple lambda gamma keeps M = A omega
-      define("omega_free", "inverse(A)*M");
-      define("A_gamma", "inverse(A)*gamma");
-      define("omega", "omega_free - (dot(gamma, omega_free)/dot(gamma, A_gamma))*A_gamma");
-      define("dM_free", "cross(A*omega" + gyrostat() + ", omega) + " + forces);
-      define("dA_omega", "body_mass*(2*dot(r, dr)*omega - dot(r, omega)*dr - dot(dr, omega)*r)");
-      define("spin_couple", "-dot(A_gamma, dM_free - dA_omega)/dot(gamma, A_gamma)");
-      // A omega = M - spin_gauge*gamma: the part of M along gamma that the projection removes turns with
-      // gamma
-      define("spin_gauge", "dot(gamma, omega_free)/dot(gamma, A_gamma)");
-      eq["M"] = "dM_free + spin_couple*gamma + spin_gauge*dgamma";
+    } else {
+      rubber(forces, false);
     }
     define("v", "-cross(omega, r)");
     frameEquations(eq);
@@ -678,6 +668,23 @@ private:
     out_["complete"]["s_body"] = "0";
     energy_ =
         contact_ == Contact::Marble ? "dot(M, omega)/2 + potential" : "dot(omega, A*omega)/2 + potential";
+  }
+
+  /// Rubber rolling about the contact: omega normal to gamma by construction, the couple lambda gamma keeps
+  /// M = A omega (Borisov, Mamaev & Bizyaev 2013), lambda from d/dt (omega, gamma) = 0. On the plane
+  /// (omega, gamma') = (omega, gamma x omega) = 0; on a curved support gamma' turns with the support too
+  /// (`curved`), and that term stays.
+  void rubber(const std::string& forces, bool curved) {
+    define("omega_free", "inverse(A)*M");
+    define("A_gamma", "inverse(A)*gamma");
+    define("omega", "omega_free - (dot(gamma, omega_free)/dot(gamma, A_gamma))*A_gamma");
+    define("dM_free", "cross(A*omega" + gyrostat() + ", omega) + " + forces);
+    define("dA_omega", "body_mass*(2*dot(r, dr)*omega - dot(r, omega)*dr - dot(dr, omega)*r)");
+    define("spin_couple", "-(dot(A_gamma, dM_free - dA_omega)" +
+                              std::string(curved ? " + dot(omega, dgamma)" : "") + ")/dot(gamma, A_gamma)");
+    // A omega = M - spin_gauge*gamma: the part of M along gamma that the projection removes turns with gamma
+    define("spin_gauge", "dot(gamma, omega_free)/dot(gamma, A_gamma)");
+    out_["equations"]["M"] = "dM_free + spin_couple*gamma + spin_gauge*dgamma";
   }
 
   void sliding() {
@@ -787,7 +794,8 @@ private:
     energy_ = "dot(M, omega)/2 + potential";
   }
 
-  /// Any body rolling without slipping on a fixed curved support, in body axes (docs/rolling.md, "A body on
+  /// Any body rolling without slipping (marble, or rubber: rubber() with the support's turning of gamma) on
+  /// a fixed curved support, in body axes (docs/rolling.md, "A body on
   /// a curved support"). gamma is the support's unit normal at the contact, pointing into the body, in body
   /// axes, so the body's contact point is its s(gamma) as on the plane; q0..q3 the body's orientation, N =
   /// rotation gamma the normal in fixed axes and sigma(N) the support's point there. The contact is at rest:
@@ -817,7 +825,7 @@ private:
     define("vertical", "transpose(rotation)*[0, 0, 1]");
     define("support_point", expr::renamed(expr::parse(supportContact_), {{"gamma", "N"}}));
     define("A", "body_inertia + body_mass*(dot(r, r)*identity() - outer(r, r))");
-    define("omega", "inverse(A)*M");
+    if (contact_ == Contact::Marble) define("omega", "inverse(A)*M");
     define("tangent", "identity() - outer(gamma, gamma)");
     define("body_turning", "tangent*jacobian(r, gamma)*tangent");                                    // S
     define("support_turning", "tangent*transpose(rotation)*jacobian(support_point, gamma)*tangent"); // Sigma
@@ -834,8 +842,12 @@ private:
     define("x", "support_point - rotation*r"); // the centre of mass, fixed axes
     define("potential", "body_mass*gravity_g*x[3]");
     ordered_json& eq = out_["equations"];
-    eq["M"] = "cross(M" + gyrostat() +
-              ", omega) + body_mass*cross(dr, cross(omega, r)) + body_mass*gravity_g*cross(r, vertical)";
+    const std::string forces =
+        "body_mass*cross(dr, cross(omega, r)) + body_mass*gravity_g*cross(r, vertical)";
+    if (contact_ == Contact::Marble)
+      eq["M"] = "cross(M" + gyrostat() + ", omega) + " + forces;
+    else
+      rubber(forces, true);
     eq["gamma"] = "dgamma";
     eq["q0"] = "-(q1*omega[1] + q2*omega[2] + q3*omega[3])/2"; // q' = q (0, omega)/2, omega in body axes
     eq["q1"] = "(q0*omega[1] + q2*omega[3] - q3*omega[2])/2";
@@ -846,7 +858,8 @@ private:
     define("q_start", "normalize([1 + normalize(gamma)[3], normalize(gamma)[2], -normalize(gamma)[1], 0])");
     for (int i = 0; i < 4; ++i)
       out_["complete"]["q" + std::to_string(i)] = "q_start[" + std::to_string(i + 1) + "]";
-    energy_ = "dot(M, omega)/2 + potential";
+    energy_ =
+        contact_ == Contact::Marble ? "dot(M, omega)/2 + potential" : "dot(omega, A*omega)/2 + potential";
   }
 
   void planeObservables(ordered_json& o) const {
@@ -898,7 +911,8 @@ private:
         o["x" + k] = {{"value", "x[" + k + "]"}, {"description", "centre of mass, fixed axis " + k}};
       }
       o["spin_normal"] = {{"value", "dot(omega, gamma)"},
-                          {"description", "spin about the normal at the contact"}};
+                          {"description", "spin about the normal at the contact (zero in rubber rolling)"}};
+      if (contact_ == Contact::Rubber) o["spin_normal"]["integral"] = true;
       o["orientation"] = {{"value", "q0^2 + q1^2 + q2^2 + q3^2"},
                           {"description", "the orientation quaternion's squared norm"},
                           {"integral", true}};

@@ -27,12 +27,12 @@
 //    L. A. Romero, Tippe top inversion as a dissipation-induced instability, SIAM J. Appl. Dyn. Syst. 3
 //    (2004) 352-377; S. Rauch-Wojciechowski, N. Rutstam, SIGMA 10 (2014) 017).
 //  - on a curved support: a balanced ball in the fixed frame (the manual's section 3.3); any other body in
-//    body axes, marble: gamma the support's normal at the contact (into the body), q the orientation, the
-//    plane's M' with the vertical e = Q^T e3 (its derivation uses only that the contact is at rest), and the
-//    contact's motion from the relative curvature, (Sigma - S) N' = S (gamma x omega) with S, Sigma the
-//    inverse shape operators of body and support (D. J. Montana, The kinematics of contact and grasp, Int.
-//    J. Robotics Research 7(3) (1988) 17-32; Ju. I. Neimark, N. A. Fufaev, Dynamics of Nonholonomic Systems
-//    (1972) ch. III).
+//    body axes, marble or rubber: gamma the support's normal at the contact (into the body), q the
+//    orientation, the plane's M' with the vertical e = Q^T e3 (its derivation uses only that the contact is
+//    at rest), and the contact's motion from the relative curvature, (Sigma - S) N' = S (gamma x omega) with
+//    S, Sigma the inverse shape operators of body and support (D. J. Montana, The kinematics of contact and
+//    grasp, Int. J. Robotics Research 7(3) (1988) 17-32; Ju. I. Neimark, N. A. Fufaev, Dynamics of
+//    Nonholonomic Systems (1972) ch. III).
 #pragma once
 #include <array>
 #include <nlohmann/json.hpp>

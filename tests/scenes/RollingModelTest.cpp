@@ -527,12 +527,17 @@ TEST(RollingModel, AnyBodyOnACurvedSupportRollsAsTheBalancedBallWhenItIsOne) {
   // the general path (any body, in body axes: a sphere given three moments takes it) against the balanced
   // ball's fixed-frame equations, in a spherical bowl and on an ellipsoid; started with the body axes along
   // the fixed ones (q = 1), so M, gamma and the ball's fixed-frame M, gamma start alike
-  for (const char* support : {R"({"surface": "sphere", "radius": 1, "side": "inside"})",
-                              R"({"surface": "ellipsoid", "semi_axes": "[1.2, 1, 0.8]"})"}) {
-    SCOPED_TRACE(support);
+  // the same for rubber rolling (the couple that stops the spin: M's part along gamma is the constraint's)
+  for (const auto& [support, contact] : std::vector<std::pair<const char*, const char*>>{
+           {R"({"surface": "sphere", "radius": 1, "side": "inside"})", "marble"},
+           {R"({"surface": "ellipsoid", "semi_axes": "[1.2, 1, 0.8]"})", "marble"},
+           {R"({"surface": "sphere", "radius": 1, "side": "inside"})", "rubber"},
+           {R"({"surface": "ellipsoid", "semi_axes": "[1.2, 1, 0.8]"})", "rubber"}}) {
+    SCOPED_TRACE(std::string(support) + " " + contact);
     json ball = json::parse(R"({"kind": "rolling", "id": "balanced_ball",
         "body": {"shape": "sphere", "radius": 0.2, "mass": 1, "inertia": "0.4*0.2^2"}, "gravity": 9.81})");
     ball["support"] = json::parse(support);
+    ball["contact"] = contact;
     json body = ball;
     body["id"] = "any_body";
     body["body"]["inertia"] = {"0.4*0.2^2", "0.4*0.2^2", "0.4*0.2^2"};
@@ -605,6 +610,21 @@ TEST(RollingModel, AnyBodyOnACurvedSupportKeepsItsEnergy) {
   }
   for (double d : along(onEllipsoid, "contact_drift"))
     EXPECT_LT(d, 1e-9);
+  // rubber: the rattleback in the bowl keeps its energy and never spins about the normal
+  json rubber = rattlebackOn({{"surface", "sphere"}, {"radius", 2}, {"side", "inside"}});
+  rubber["id"] = "rubber_rattleback_in_a_bowl";
+  rubber["contact"] = "rubber";
+  const ExampleRun rubberBowl = runModel(instance(modelEntryFromJson(rubber, "<rubber>"), {{"b1", 0.6}}),
+                                         {{"M1", 0.1},
+                                          {"M2", 0.05},
+                                          {"M3", 0.3},
+                                          {"gamma1", 0.3},
+                                          {"gamma2", 0.05},
+                                          {"gamma3", std::sqrt(0.9075)}},
+                                         20, 0.5);
+  EXPECT_LT(relativeDrift(along(rubberBowl, "E")), 1e-10);
+  for (double spin : along(rubberBowl, "spin_normal"))
+    EXPECT_LT(std::abs(spin), 1e-13);
 }
 
 TEST(RollingModel, TheTippeTopTurnsOverOnlyInsideItsInertiaWindowAndKeepsJellettsIntegral) {
@@ -688,9 +708,11 @@ TEST(RollingModel, AMalformedBodyIsNamedAtTheFieldTheUserWrote) {
   bad = top;
   bad["support"] = {{"surface", "sphere"}, {"radius", 2}};
   EXPECT_EQ(errorOf(bad), ""); // three moments: any body on a curved support
-  bad["contact"] = "rubber";
+  bad["contact"] = "sliding";
+  bad["friction"] = 1;
   expect(bad, "<bad>:contact: on a curved support a body other than a balanced ball");
   bad["contact"] = "marble";
+  bad.erase("friction");
   bad["potential"] = "gamma1";
   expect(bad, "<bad>:potential: on a curved support a potential is for a balanced ball only");
   bad.erase("potential");
