@@ -862,6 +862,22 @@ private:
         contact_ == Contact::Marble ? "dot(M, omega)/2 + potential" : "dot(omega, A*omega)/2 + potential";
   }
 
+  /// The spin about the normal gamma (an integral in rubber rolling), an implicit body's contact drift and
+  /// the body's axis against the upward vertical (`vertical` in body axes), where there is one.
+  void contactObservables(ordered_json& o, const std::string& vertical) const {
+    o["spin_normal"] = {{"value", "dot(omega, gamma)"},
+                        {"description", "spin about the normal at the contact (zero in rubber rolling)"}};
+    if (contact_ == Contact::Rubber) o["spin_normal"]["integral"] = true;
+    if (implicit_)
+      o["contact_drift"] = {{"value", "norm(contact - contact_s)"},
+                            {"description",
+                             "how far the contact carried in the state is from the one solved for "
+                             "(Newton's method corrects it at every step)"}};
+    if (axis_)
+      o["axis_up"] = {{"value", "dot(" + vertical + ", normalize(body_axis))"},
+                      {"description", "cosine between the body's axis and the upward vertical"}};
+  }
+
   void planeObservables(ordered_json& o) const {
     const bool conservative = contact_ != Contact::Sliding;
     o["E"] = {{"value", energy_},
@@ -874,18 +890,8 @@ private:
         o["omega" + std::to_string(i)] = {
             {"value", "omega[" + std::to_string(i) + "]"},
             {"description", "angular velocity, body axis " + std::to_string(i)}};
-    o["spin_normal"] = {{"value", "dot(omega, gamma)"},
-                        {"description", "spin about the normal at the contact (zero in rubber rolling)"}};
-    if (contact_ == Contact::Rubber) o["spin_normal"]["integral"] = true;
     o["Z"] = {{"value", "-dot(r, gamma)"}, {"description", "height of the centre of mass above the plane"}};
-    if (implicit_)
-      o["contact_drift"] = {{"value", "norm(contact - contact_s)"},
-                            {"description",
-                             "how far the contact carried in the state is from the one solved for "
-                             "(Newton's method corrects it at every step)"}};
-    if (axis_)
-      o["axis_up"] = {{"value", "dot(gamma, normalize(body_axis))"},
-                      {"description", "cosine between the body's axis and the upward vertical"}};
+    contactObservables(o, "gamma");
     if (shape_ == "sphere") { // Jellett (1872): (L, r) for a sphere whose centre of mass is on its axis
       o["jellett"] = {{"value", "dot(body_inertia*omega" + gyrostat() + ", r)"},
                       {"description",
@@ -910,20 +916,10 @@ private:
         o["omega" + k] = {{"value", "omega[" + k + "]"}, {"description", "angular velocity, body axis " + k}};
         o["x" + k] = {{"value", "x[" + k + "]"}, {"description", "centre of mass, fixed axis " + k}};
       }
-      o["spin_normal"] = {{"value", "dot(omega, gamma)"},
-                          {"description", "spin about the normal at the contact (zero in rubber rolling)"}};
-      if (contact_ == Contact::Rubber) o["spin_normal"]["integral"] = true;
       o["orientation"] = {{"value", "q0^2 + q1^2 + q2^2 + q3^2"},
                           {"description", "the orientation quaternion's squared norm"},
                           {"integral", true}};
-      if (implicit_)
-        o["contact_drift"] = {{"value", "norm(contact - contact_s)"},
-                              {"description",
-                               "how far the contact carried in the state is from the one solved "
-                               "for (Newton's method corrects it at every step)"}};
-      if (axis_)
-        o["axis_up"] = {{"value", "dot(vertical, normalize(body_axis))"},
-                        {"description", "cosine between the body's axis and the upward vertical"}};
+      contactObservables(o, "vertical");
     } else if (!support_.empty()) { // a ball on a curved support
       o["E"] = {{"value", energy_}, {"description", "energy"}, {"integral", true}};
       if (support_ != "graph")

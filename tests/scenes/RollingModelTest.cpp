@@ -344,6 +344,10 @@ void expectTheSameRun(const ExampleRun& a, const ExampleRun& b, std::initializer
   }
 }
 
+/// The superellipsoid brick (examples/rolling/superellipsoid.json) rocking on a face, spinning.
+const std::map<std::string, double> kBrickStart{
+    {"M1", 0.3}, {"M2", 0.2}, {"M3", 0.8}, {"gamma1", 0.2}, {"gamma2", 0.1}, {"gamma3", std::sqrt(0.95)}};
+
 const std::map<std::string, double> kRattlebackStart{{"M1", 0.1},      {"M2", 0.05},
                                                      {"M3", 0.3},      {"gamma1", 0.05},
                                                      {"gamma2", 0.05}, {"gamma3", std::sqrt(1 - 0.005)}};
@@ -398,16 +402,15 @@ TEST(RollingModel, ASpheroidGivenByItsProfileRollsAsTheClosedFormSpheroid) {
 
 TEST(RollingModel, ASuperellipsoidKeepsItsEnergyAndIsDrawnThroughItsContact) {
   // a rounded brick, exponent 6: energy and the contact carried in the state, over many rockings
-  const std::map<std::string, double> start{{"M1", 0.3},     {"M2", 0.2},     {"M3", 0.8},
-                                            {"gamma1", 0.2}, {"gamma2", 0.1}, {"gamma3", std::sqrt(0.95)}};
-  const ExampleRun brick = runExample("superellipsoid.json", {}, start, 20, 0.5);
+  const ExampleRun brick = runExample("superellipsoid.json", {}, kBrickStart, 20, 0.5);
   EXPECT_LT(relativeDrift(along(brick, "E")), 1e-10);
   for (double d : along(brick, "contact_drift"))
     EXPECT_LT(d, 1e-9);
-  expectDrawnThroughTheContact(*brick.model, start);
+  expectDrawnThroughTheContact(*brick.model, kBrickStart);
   // the rounded cube written by name is the one written as F = x^4 + y^4 + z^4 + c (x^2 + y^2 + z^2 - 1) - 1
   json cube = json::parse(std::ifstream(examples("rounded_cube.json", "rolling")));
-  const ExampleRun implicit = runModel(instance(modelEntryFromJson(cube, "<implicit>")), start, 10, 0.5);
+  const ExampleRun implicit =
+      runModel(instance(modelEntryFromJson(cube, "<implicit>")), kBrickStart, 10, 0.5);
   cube["id"] = "rounded_cube_by_name";
   cube["body"].erase("F");
   cube["body"].erase("size");
@@ -415,7 +418,7 @@ TEST(RollingModel, ASuperellipsoidKeepsItsEnergyAndIsDrawnThroughItsContact) {
   cube["body"]["semi_axes"] = "[1, 1, 1]";
   cube["body"]["exponent"] = 4;
   cube["body"]["bulge"] = "c";
-  const ExampleRun byName = runModel(instance(modelEntryFromJson(cube, "<by name>")), start, 10, 0.5);
+  const ExampleRun byName = runModel(instance(modelEntryFromJson(cube, "<by name>")), kBrickStart, 10, 0.5);
   expectTheSameRun(implicit, byName, {"omega1", "omega2", "omega3", "gamma1", "gamma2", "gamma3", "Z", "E"},
                    1e-9, 0.5);
 }
@@ -432,11 +435,9 @@ json rattlebackOn(const json& support) {
 }
 
 TEST(RollingModel, AShapeThatIsNotStrictlyConvexWhereItTouchesStopsTheRunSayingWhy) {
-  const std::map<std::string, double> start{{"M1", 0.3},     {"M2", 0.2},     {"M3", 0.8},
-                                            {"gamma1", 0.2}, {"gamma2", 0.1}, {"gamma3", std::sqrt(0.95)}};
   const auto stops = [&](std::unique_ptr<Model> model, const std::string& why) {
     try {
-      runModel(std::move(model), start, 2, 1);
+      runModel(std::move(model), kBrickStart, 2, 1);
       ADD_FAILURE() << "the run went on";
     } catch (const ComputationError& e) {
       EXPECT_NE(std::string(e.what()).find(why), std::string::npos) << e.what();
@@ -583,24 +584,25 @@ TEST(RollingModel, AnyBodyOnACurvedSupportKeepsItsEnergy) {
   // ellipsoid
   // (the rattleback's semi-axis b1 = 0.6 instead of 2: its radii of curvature, at most b1^2/b3, stay below
   // the bowl's 2, so it touches at one point wherever it rolls)
-  const ExampleRun bowl = runModel(
-      instance(modelEntryFromJson(rattlebackOn({{"surface", "sphere"}, {"radius", 2}, {"side", "inside"}}),
-                                  "<bowl>"),
-               {{"b1", 0.6}}),
-      {{"M1", 0.1},
-       {"M2", 0.05},
-       {"M3", 0.3},
-       {"gamma1", 0.3},
-       {"gamma2", 0.05},
-       {"gamma3", std::sqrt(0.9075)}},
-      20, 0.5);
+  const auto inTheBowl = [](const char* contact) {
+    json body = rattlebackOn({{"surface", "sphere"}, {"radius", 2}, {"side", "inside"}});
+    body["id"] = std::string(contact) + "_rattleback_in_a_bowl";
+    body["contact"] = contact;
+    return runModel(instance(modelEntryFromJson(body, "<bowl>"), {{"b1", 0.6}}),
+                    {{"M1", 0.1},
+                     {"M2", 0.05},
+                     {"M3", 0.3},
+                     {"gamma1", 0.3},
+                     {"gamma2", 0.05},
+                     {"gamma3", std::sqrt(0.9075)}},
+                    20, 0.5);
+  };
+  const ExampleRun bowl = inTheBowl("marble");
   json brick = json::parse(std::ifstream(examples("superellipsoid.json", "rolling")));
   brick["id"] = "brick_on_an_ellipsoid";
   brick["support"] = {{"surface", "ellipsoid"}, {"semi_axes", "[3, 2.5, 2]"}};
-  const ExampleRun onEllipsoid = runModel(
-      instance(modelEntryFromJson(brick, "<brick>")),
-      {{"M1", 0.3}, {"M2", 0.2}, {"M3", 0.8}, {"gamma1", 0.2}, {"gamma2", 0.1}, {"gamma3", std::sqrt(0.95)}},
-      20, 0.5);
+  const ExampleRun onEllipsoid =
+      runModel(instance(modelEntryFromJson(brick, "<brick>")), kBrickStart, 20, 0.5);
   for (const ExampleRun* run : {&bowl, &onEllipsoid}) {
     EXPECT_LT(relativeDrift(along(*run, "E")), 1e-10);
     EXPECT_LT(relativeDrift(along(*run, "orientation")), 1e-12);
@@ -611,17 +613,7 @@ TEST(RollingModel, AnyBodyOnACurvedSupportKeepsItsEnergy) {
   for (double d : along(onEllipsoid, "contact_drift"))
     EXPECT_LT(d, 1e-9);
   // rubber: the rattleback in the bowl keeps its energy and never spins about the normal
-  json rubber = rattlebackOn({{"surface", "sphere"}, {"radius", 2}, {"side", "inside"}});
-  rubber["id"] = "rubber_rattleback_in_a_bowl";
-  rubber["contact"] = "rubber";
-  const ExampleRun rubberBowl = runModel(instance(modelEntryFromJson(rubber, "<rubber>"), {{"b1", 0.6}}),
-                                         {{"M1", 0.1},
-                                          {"M2", 0.05},
-                                          {"M3", 0.3},
-                                          {"gamma1", 0.3},
-                                          {"gamma2", 0.05},
-                                          {"gamma3", std::sqrt(0.9075)}},
-                                         20, 0.5);
+  const ExampleRun rubberBowl = inTheBowl("rubber");
   EXPECT_LT(relativeDrift(along(rubberBowl, "E")), 1e-10);
   for (double spin : along(rubberBowl, "spin_normal"))
     EXPECT_LT(std::abs(spin), 1e-13);
