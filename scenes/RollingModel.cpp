@@ -27,6 +27,14 @@ namespace {
 
 enum class Contact { Marble, Rubber, Sliding };
 
+/// The rotation of the unit quaternion q0..q3 (body to fixed axes).
+constexpr const char* kRotation = "[[q0^2 + q1^2 - q2^2 - q3^2, 2*(q1*q2 - q0*q3), 2*(q1*q3 + q0*q2)], "
+                                  "[2*(q1*q2 + q0*q3), q0^2 - q1^2 + q2^2 - q3^2, 2*(q2*q3 - q0*q1)], "
+                                  "[2*(q1*q3 - q0*q2), 2*(q2*q3 + q0*q1), q0^2 - q1^2 - q2^2 + q3^2]]";
+
+constexpr const char* kShapes =
+    "\"sphere\", \"ellipsoid\", \"paraboloid\", \"disk\", \"superellipsoid\", \"revolution\" or \"implicit\"";
+
 class Generator {
 public:
   Generator(const json& doc, const ordered_json* ordered, std::string source)
@@ -47,8 +55,10 @@ public:
     readSupport();
     readBody();
     userDefinitions();
-    if (!support_.empty())
+    if (!support_.empty() && balancedBall_)
       ballOnSupport();
+    else if (!support_.empty())
+      bodyOnSupport();
     else if (contact_ == Contact::Sliding)
       sliding();
     else
@@ -76,6 +86,7 @@ private:
   static RequiredShape sizeShape(const std::string& key) {
     if (key == "semi_axes") return vector3("the semi-axes");
     if (key == "p" || key == "q") return scalar("a radius of curvature");
+    if (key == "heights") return {2, 1, "the profile's ends on its axis"};
     return scalar("the " + key);
   }
 
@@ -192,58 +203,191 @@ private:
     if (s.contains("side") && support_ != "sphere") (w / "side").fail("only a sphere has a side");
   }
 
-  /// An implicit surface's F: parsed here, so that an error is named at body.F, and its names checked (x, y,
-  /// z, the parameters, the user's definitions).
-  void readImplicit(const json& j, const Where& w) {
-    if (!j.is_string()) w.fail("expected an expression of x, y, z (a string)");
+  /// A user's expression of some of x, y, z (an implicit surface's F, a profile's radius of z): parsed
+  /// here, so that an error is named at its field, and its names checked (those point coordinates, the
+  /// parameters, the user's definitions).
+  expr::Expression userFunction(const json& j, const Where& w, const std::vector<std::string>& point) const {
+    std::string of;
+    for (const std::string& c : point)
+      of += (of.empty() ? "" : ", ") + c;
+    if (!j.is_string()) w.fail("expected an expression of " + of + " (a string)");
+    std::optional<expr::Expression> e;
     try {
-      implicit_ = expr::parse(j.get<std::string>());
-    } catch (const expr::ExprError& e) {
-      w.fail(e.what());
+      e = expr::parse(j.get<std::string>());
+    } catch (const expr::ExprError& error) {
+      w.fail(error.what());
     }
-    std::vector<std::string> known{"x", "y", "z", "pi"};
+    std::vector<std::string> known = point;
+    known.push_back("pi");
     for (const char* section : {"parameters", "definitions"})
       if (doc_.contains(section) && doc_[section].is_object())
         for (const auto& [name, value] : doc_[section].items())
           known.push_back(name);
-    for (const std::string& name : expr::namesUsed(*implicit_))
+    for (const std::string& name : expr::namesUsed(*e))
       if (std::find(known.begin(), known.end(), name) == known.end()) {
         const std::string near = expr::nearestName(name, known);
-        w.fail("unknown name '" + name + "' (F reads x, y, z, the parameters and your definitions" +
+        w.fail("unknown name '" + name + "' (this reads " + of + ", the parameters and your definitions" +
                (near.empty() ? ")" : "; did you mean '" + near + "'?)"));
       }
+    return *e;
+  }
+
+  /// The body's surface as F(x, y, z) = 0 (F < 0 inside), rolled by the implicit machinery; `start`, when
+  /// given, is an F with the same zeros near the body that is defined everywhere (the contact's first
+  /// Newton steps begin far from it) and is also the one the 3D view samples.
+  void implicitSurface(const std::string& F, const std::string& start = "") {
+    implicit_ = expr::parse(F);
+    implicitStart_ = expr::parse(start.empty() ? F : start);
+    shapeView_ = {{"body", "implicit"}, {"F", start.empty() ? F : start}, {"size", "body_size"}};
+    shapeContact_ = "contact_newton";
   }
 
   /// F at the point named `p` (a 3-vector expression).
-  std::string implicitAt(const std::string& p) const {
-    return expr::renamed(*implicit_, {{"x", p + "[1]"}, {"y", p + "[2]"}, {"z", p + "[3]"}});
+  static std::string implicitAt(const expr::Expression& F, const std::string& p) {
+    return expr::renamed(F, {{"x", p + "[1]"}, {"y", p + "[2]"}, {"z", p + "[3]"}});
+  }
+
+  /// A size of the shape the user may give: theirs, or `otherwise`.
+  void sizeOr(const json& b, const Where& w, const char* key, const std::string& name,
+              const std::string& otherwise) {
+    if (b.contains(key))
+      userExpression(name, b[key], w / key, sizeShape(key));
+    else
+      define(name, otherwise);
+  }
+
+  /// A definition that is 0 where `ok` (an expression) is positive and not finite elsewhere: added to the
+  /// contact, it stops the run where the model stops holding, naming `name` (as `turns_over` does).
+  void guard(const std::string& name, const std::string& ok) {
+    define(name, "(1 - max(0, sign(" + ok + ")))/max(0, sign(" + ok + "))");
+  }
+
+  /// |x/a1|^p + |y/a2|^p + |z/a3|^p + bulge ((x/a1)^2 + (y/a2)^2 + (z/a3)^2 - 1) = 1 (A. H. Barr,
+  /// Superquadrics and angle-preserving transformations, IEEE Computer Graphics and Applications 1 (1981)
+  /// 11-23, with one exponent). For p > 2 the pure superellipsoid is flat (zero normal curvature) along its
+  /// three mid-curves x_i = 0 -- the face centres among them -- so there the shape operator is singular and
+  /// the contact's rate infinite: the bulge, a multiple of the ellipsoid through the same vertices, keeps the
+  /// Hessian of F positive definite, hence the surface strictly convex with the semi-axes unchanged. Below
+  /// p = 2 the curvature is infinite along the mid-curves (edges towards an octahedron): not offered.
+  /// |u|^p is written (u^2 + 1e-100)^(p/2): the same number to rounding for |u| > 1e-42, with derivatives
+  /// of every order the Newton step and the Jacobian take finite at u = 0 (|u|^p's are 0 * inf there for a
+  /// p given as a parameter).
+  void superellipsoid(const json& b, const Where& w) {
+    for (const char* key : {"semi_axes", "exponent"})
+      if (!b.contains(key)) w.fail(std::string("a superellipsoid needs \"") + key + "\"");
+    userExpression("body_semi_axes", b["semi_axes"], w / "semi_axes", sizeShape("semi_axes"));
+    userExpression("body_exponent", b["exponent"], w / "exponent", sizeShape("exponent"));
+    sizeOr(b, w, "bulge", "body_bulge", "0");
+    sizeOr(b, w, "size", "body_size", "norm(body_semi_axes)");
+    // numbers are checked now (exit 2), expressions of parameters when the model runs (the guard)
+    const json& p = b["exponent"];
+    if (p.is_number() && p.get<double>() < 2)
+      (w / "exponent")
+          .fail("expected an exponent of at least 2 (2: the ellipsoid; above 2 the faces flatten towards a "
+                "box's); below 2 the surface has edges of infinite curvature along its mid-curves");
+    const bool flat = p.is_number() && p.get<double>() > 2;
+    if (flat && (!b.contains("bulge") || (b["bulge"].is_number() && b["bulge"].get<double>() <= 0)))
+      (b.contains("bulge") ? w / "bulge" : w)
+          .fail("a superellipsoid with an exponent above 2 is flat along its mid-curves x_i = 0 (the face "
+                "centres among them): there the contact's rate is infinite. Give \"bulge\" > 0 (e.g. 0.05), "
+                "the weight of the ellipsoid through the same vertices that keeps it strictly convex");
+    guard("not_strictly_convex", "(1 - abs(sign(body_exponent - 2))) + "
+                                 "max(0, sign(body_exponent - 2))*max(0, sign(body_bulge)) - 1/2");
+    std::string F, quadric;
+    for (int i = 0; i < 3; ++i) {
+      const std::string u = std::string("(") + "xyz"[i] + "/body_semi_axes[" + std::to_string(i + 1) + "])^2";
+      F += "(" + u + " + 1e-100)^(body_exponent/2) + ";
+      quadric += (i ? " + " : "") + u;
+    }
+    implicitSurface(F + "body_bulge*(" + quadric + " - 1) - 1");
+    // the first contact's steps begin at the contact without the bulge, in closed form: s = -grad h(gamma),
+    // h(gamma) = (sum |a_i gamma_i|^q)^(1/q), q = p/(p - 1), the support function (the dual norm); Newton
+    // from a point far off diverges on flat faces
+    define("superellipsoid_q", "body_exponent/(body_exponent - 1)");
+    std::string guess, sum;
+    for (int i = 1; i <= 3; ++i) {
+      const std::string a = "body_semi_axes[" + std::to_string(i) + "]",
+                        g = "gamma[" + std::to_string(i) + "]";
+      guess += (i > 1 ? ", " : "") + a + "*sign(" + g + ")*abs(" + a + "*" + g + ")^(superellipsoid_q - 1)";
+      sum += (i > 1 ? " + " : "") + std::string("abs(") + a + "*" + g + ")^superellipsoid_q";
+    }
+    contactGuess_ = "-[" + guess + "]/(" + sum + ")^(1/body_exponent)";
+    shapeContact_ += " + [0, 0, not_strictly_convex]";
+  }
+
+  /// A body of revolution about body axis 3: its radius rho(z) at the height z (or rho(z)^2), from the
+  /// bottom to the top of the profile: F = x^2 + y^2 - rho(z)^2. Newton's first steps and the 3D view take
+  /// the profile's radius at z clamped to just inside the ends and close it beyond them; where the radius
+  /// does not fall to zero at an end the body has an edge or a flat cap there, and a contact that reaches it
+  /// stops the run (the guard `leaves_the_profile`).
+  void revolution(const json& b, const Where& w) {
+    if (b.contains("profile") == b.contains("profile_squared"))
+      w.fail("a revolution body gives its profile as \"profile\" (the radius rho(z) at the height z along "
+             "body axis 3) or as \"profile_squared\" (rho(z)^2), one of them");
+    const bool squared = b.contains("profile_squared");
+    const char* key = squared ? "profile_squared" : "profile";
+    const expr::Expression profile = userFunction(b[key], w / key, {"z"});
+    if (!b.contains("heights"))
+      w.fail("a revolution body needs \"heights\": \"[bottom, top]\", the profile's ends on its axis");
+    userExpression("body_heights", b["heights"], w / "heights", sizeShape("heights"));
+    const auto radius2 = [&](const std::string& z) {
+      const std::string r = expr::renamed(profile, {{"z", z}});
+      return squared ? "(" + r + ")" : "(" + r + ")^2";
+    };
+    // clamped a millionth of the length inside the ends: at an end rho' may be infinite (a pole, rho(z)^2
+    // smooth there), and 0 * inf is not 0
+    const std::string inset = "1e-6*(body_heights[2] - body_heights[1])";
+    const std::string clamped =
+        "min(max(z, body_heights[1] + " + inset + "), body_heights[2] - " + inset + ")";
+    std::string widest = "max(abs(body_heights[1]), abs(body_heights[2]))";
+    constexpr int kSamples = 16; // the widest radius, sampled, for the default size
+    for (int k = 1; k < kSamples; ++k)
+      widest = "max(" + widest + ", sqrt(max(0, " +
+               radius2("body_heights[1] + " + std::to_string(k) + "/" + std::to_string(kSamples) +
+                       "*(body_heights[2] - body_heights[1])") +
+               ")))";
+    sizeOr(b, w, "size", "body_size", "1.1*" + widest);
+    implicitSurface("x^2 + y^2 - " + radius2("z"),
+                    "x^2 + y^2 - " + radius2(clamped) +
+                        " + max(0, (z - body_heights[1])*(z - body_heights[2]))");
+    guard("leaves_the_profile", "(contact_newton[3] - body_heights[1])*(body_heights[2] - contact_newton[3])"
+                                "/(body_heights[2] - body_heights[1])^2 + 1e-9");
+    shapeContact_ += " + [0, 0, leaves_the_profile]";
   }
 
   /// One Newton step `to` from the point `from` towards the contact: onto F = 0 along the gradient, then
   /// along the surface so that the outward normal turns to -gamma (the shape operator's inverse, from the
   /// Hessian, as the closed forms' contact rate uses it). Quadratic from a point near the contact.
-  void newtonStep(const std::string& from, const std::string& to) {
-    define(to + "_F0", implicitAt(from));
+  void newtonStep(const expr::Expression& F, const std::string& from, const std::string& to, bool damped) {
+    define(to + "_F0", implicitAt(F, from));
     define(to + "_g0", "gradient(" + to + "_F0, " + from + ")");
     define(to + "_on", from + " - (" + to + "_F0/dot(" + to + "_g0, " + to + "_g0))*" + to + "_g0");
-    define(to + "_F", implicitAt(to + "_on"));
+    define(to + "_F", implicitAt(F, to + "_on"));
     define(to + "_g", "gradient(" + to + "_F, " + to + "_on)");
     define(to + "_n", "normalize(" + to + "_g)");
     define(to + "_P", "identity() - outer(" + to + "_n, " + to + "_n)");
     define(to + "_K", to + "_P*jacobian(" + to + "_g, " + to + "_on)*" + to + "_P/norm(" + to +
                           "_g) + outer(" + to + "_n, " + to + "_n)");
-    define(to, to + "_on - inverse(" + to + "_K)*(" + to + "_P*gamma)");
+    if (!damped) {
+      define(to, to + "_on - inverse(" + to + "_K)*(" + to + "_P*gamma)");
+      return;
+    }
+    // far from the contact, where the curvature of a flat-faced body changes fast, a full step overshoots:
+    // at most 0.3 size along the surface (then full steps, quadratic, once near)
+    define(to + "_step", "inverse(" + to + "_K)*(" + to + "_P*gamma)");
+    define(to, to + "_on - min(1, 0.3*body_size/norm(" + to + "_step))*" + to + "_step");
   }
 
   /// The implicit body's contact: one Newton step from the one carried in the state, which follows the
   /// contact's rate (so it is off by the integration's error, squared by the step), and a start for it from
   /// gamma alone.
   void implicitContact() {
-    newtonStep("contact", "contact_newton");
-    define("contact_start_0", "-body_size*normalize(gamma)");
+    newtonStep(*implicit_, "contact", "contact_newton", false);
+    define("contact_start_0", contactGuess_);
     constexpr int kStartSteps = 16;
     for (int k = 1; k <= kStartSteps; ++k)
-      newtonStep("contact_start_" + std::to_string(k - 1), "contact_start_" + std::to_string(k));
+      newtonStep(*implicitStart_, "contact_start_" + std::to_string(k - 1),
+                 "contact_start_" + std::to_string(k), true);
     for (int i = 1; i <= 3; ++i)
       out_["complete"]["contact" + std::to_string(i)] =
           "contact_start_" + std::to_string(kStartSteps) + "[" + std::to_string(i) + "]";
@@ -255,9 +399,10 @@ private:
     if (!doc_.contains("body")) root_.fail("missing \"body\" (its shape, sizes, mass and inertia)");
     const json& b = requireObject(doc_["body"], w);
     onlyKeys(b, w,
-             {"shape", "radius", "semi_axes", "p", "q", "height", "F", "size", "centre", "mass", "inertia",
-              "principal_axes", "gyrostat", "axis"});
-    if (!b.contains("shape")) w.fail("missing \"shape\" (sphere, ellipsoid, paraboloid or disk)");
+             {"shape", "radius", "semi_axes", "p", "q", "height", "F", "size", "exponent", "bulge", "profile",
+              "profile_squared", "heights", "centre", "mass", "inertia", "principal_axes", "gyrostat",
+              "axis"});
+    if (!b.contains("shape")) w.fail("missing \"shape\" (" + std::string(kShapes) + ")");
     shape_ = text(b["shape"], w / "shape");
     const auto need = [&](const char* key, const std::string& name) {
       if (!b.contains(key)) w.fail("a " + shape_ + " needs \"" + key + "\"");
@@ -297,20 +442,26 @@ private:
       shapeView_ = {{"body", "ellipsoid"}, {"semi_axes", "[body_radius, body_radius, body_radius/40]"}};
     } else if (shape_ == "implicit") { // F(x, y, z) = 0, F < 0 inside: the contact found by Newton's method
       if (!b.contains("F")) w.fail("an implicit body needs \"F\": its surface F(x, y, z) = 0, F < 0 inside");
-      readImplicit(b["F"], w / "F");
+      implicitSurface(userFunction(b["F"], w / "F", {"x", "y", "z"}).text);
       if (b.contains("size"))
         userExpression("body_size", b["size"], w / "size", sizeShape("size"));
       else
         define("body_size", "1");
-      shapeContact_ = "contact_newton";
-      shapeView_ = {{"body", "implicit"}, {"F", b["F"]}, {"size", "body_size"}};
+    } else if (shape_ == "superellipsoid") {
+      superellipsoid(b, w);
+    } else if (shape_ == "revolution") {
+      revolution(b, w);
     } else {
-      (w / "shape").fail("expected \"sphere\", \"ellipsoid\", \"paraboloid\", \"disk\" or \"implicit\"");
+      (w / "shape").fail("expected " + std::string(kShapes));
     }
-    for (const char* key : {"radius", "semi_axes", "p", "q", "height", "size"})
+    for (const char* key : {"radius", "semi_axes", "p", "q", "height", "exponent", "bulge", "heights"})
       if (b.contains(key) && !out_["definitions"].contains(std::string("body_") + key))
         (w / key).fail("a " + shape_ + " has no \"" + key + "\"");
+    if (b.contains("size") && !implicit_) (w / "size").fail("a " + shape_ + " has no \"size\"");
     if (b.contains("F") && shape_ != "implicit") (w / "F").fail("only an \"implicit\" body has \"F\"");
+    for (const char* key : {"profile", "profile_squared"})
+      if (b.contains(key) && shape_ != "revolution")
+        (w / key).fail(std::string("only a \"revolution\" body has \"") + key + "\"");
     centred_ = b.contains("centre");
     if (centred_)
       userExpression("body_centre", b["centre"], w / "centre", vector3("the shape's centre"));
@@ -369,15 +520,37 @@ private:
       userExpression("body_axis", b["axis"], w / "axis", vector3("the axis"));
       axis_ = true;
     }
-    if (!support_.empty()) { // a ball on a curved support: balanced and dynamically symmetric, so far
-      if (shape_ != "sphere") (w / "shape").fail("on a curved support the body is a \"sphere\" (so far)");
-      if (b.contains("centre") || b.contains("gyrostat") || b.contains("principal_axes"))
-        w.fail("on a curved support the ball is balanced (no \"centre\") and has no gyrostat (so far)");
-      if (I.is_array())
-        (w / "inertia").fail("on a curved support give the ball's one central moment of inertia (so far)");
-      if (contact_ == Contact::Sliding)
-        (root_ / "contact").fail("on a curved support the contact is \"marble\" or \"rubber\" (so far)");
+    // a balanced ball (a sphere with no centre, gyrostat or principal axes, one central moment) on a curved
+    // support rolls in the fixed frame, marble or rubber; any other body in body axes, marble only
+    balancedBall_ = shape_ == "sphere" && !b.contains("centre") && !b.contains("gyrostat") &&
+                    !b.contains("principal_axes") && !I.is_array();
+    if (support_.empty() || balancedBall_) {
+      if (!support_.empty() && contact_ == Contact::Sliding)
+        (root_ / "contact")
+            .fail("on a curved support the contact is \"marble\" or \"rubber\" (a balanced ball) or "
+                  "\"marble\" (any other body); \"sliding\" is on the plane only");
+      return;
     }
+    const std::string which =
+        "a body other than a balanced ball (a \"sphere\" with no \"centre\", gyrostat or "
+        "principal axes and one central moment of inertia)";
+    if (contact_ == Contact::Sliding)
+      (root_ / "contact")
+          .fail("on a curved support " + which +
+                " rolls \"marble\" or \"rubber\" (\"sliding\" is on the plane only)");
+    if (support_ == "graph")
+      (root_ / "support" / "surface")
+          .fail("a \"graph\" support carries a balanced ball only (it gives the surface its centre moves "
+                "on); " +
+                which + " rolls on a \"sphere\", \"ellipsoid\" or \"paraboloid\"");
+    if (centreSurface_)
+      (root_ / "support" / "describes")
+          .fail("\"centre\" describes the surface a balanced ball's centre moves on; for " + which +
+                " give the support's own sizes (\"describes\": \"support\")");
+    if (potential_)
+      (root_ / "potential")
+          .fail("on a curved support a potential is for a balanced ball only (U of its centre); " + which +
+                " rolls under gravity alone");
   }
 
   /// The user's definitions, after checking none takes a name the derivation uses.
@@ -416,7 +589,8 @@ private:
       for (const char* v : {"M", "gamma", "alpha", "beta", "omega", "v", "contact"})
         for (const char* i : {"1", "2", "3"})
           if (name == std::string(v) + i) return true;
-      return name == "s_plane" || name == "s_body";
+      return name == "s_plane" || name == "s_body" || name == "q0" || name == "q1" || name == "q2" ||
+             name == "q3";
     };
     const auto taken = [&](const std::string& name) {
       return names.count(name) || generated_.count(name) || component(name);
@@ -507,17 +681,8 @@ private:
     if (contact_ == Contact::Marble) {
       define("omega", "inverse(A)*M");
       eq["M"] = "cross(M" + gyrostat() + ", omega) + " + forces;
-    } else { // rubber: omega normal to gamma by construction, the couple lambda gamma keeps M = A omega
-      define("omega_free", "inverse(A)*M");
-      define("A_gamma", "inverse(A)*gamma");
-      define("omega", "omega_free - (dot(gamma, omega_free)/dot(gamma, A_gamma))*A_gamma");
-      define("dM_free", "cross(A*omega" + gyrostat() + ", omega) + " + forces);
-      define("dA_omega", "body_mass*(2*dot(r, dr)*omega - dot(r, omega)*dr - dot(dr, omega)*r)");
-      define("spin_couple", "-dot(A_gamma, dM_free - dA_omega)/dot(gamma, A_gamma)");
-      // A omega = M - spin_gauge*gamma: the part of M along gamma that the projection removes turns with
-      // gamma
-      define("spin_gauge", "dot(gamma, omega_free)/dot(gamma, A_gamma)");
-      eq["M"] = "dM_free + spin_couple*gamma + spin_gauge*dgamma";
+    } else {
+      rubber(forces, false);
       // a balanced ball: (J omega)' = J omega x omega + lambda gamma with J = I + m R^2 E (Veselova's
       // system), whose invariant measure in (M, gamma) has the density (gamma, J^-1 gamma)^(-1/2)
       // (docs/rolling.md)
@@ -533,6 +698,23 @@ private:
     out_["complete"]["s_body"] = "0";
     energy_ =
         contact_ == Contact::Marble ? "dot(M, omega)/2 + potential" : "dot(omega, A*omega)/2 + potential";
+  }
+
+  /// Rubber rolling about the contact: omega normal to gamma by construction, the couple lambda gamma keeps
+  /// M = A omega (Borisov, Mamaev & Bizyaev 2013), lambda from d/dt (omega, gamma) = 0. On the plane
+  /// (omega, gamma') = (omega, gamma x omega) = 0; on a curved support gamma' turns with the support too
+  /// (`curved`), and that term stays.
+  void rubber(const std::string& forces, bool curved) {
+    define("omega_free", "inverse(A)*M");
+    define("A_gamma", "inverse(A)*gamma");
+    define("omega", "omega_free - (dot(gamma, omega_free)/dot(gamma, A_gamma))*A_gamma");
+    define("dM_free", "cross(A*omega" + gyrostat() + ", omega) + " + forces);
+    define("dA_omega", "body_mass*(2*dot(r, dr)*omega - dot(r, omega)*dr - dot(dr, omega)*r)");
+    define("spin_couple", "-(dot(A_gamma, dM_free - dA_omega)" +
+                              std::string(curved ? " + dot(omega, dgamma)" : "") + ")/dot(gamma, A_gamma)");
+    // A omega = M - spin_gauge*gamma: the part of M along gamma that the projection removes turns with gamma
+    define("spin_gauge", "dot(gamma, omega_free)/dot(gamma, A_gamma)");
+    out_["equations"]["M"] = "dM_free + spin_couple*gamma + spin_gauge*dgamma";
   }
 
   void sliding() {
@@ -612,9 +794,7 @@ private:
     define("force", "-body_mass*gravity_g*[0, 0, 1]" +
                         std::string(potential_ ? " - gradient(potential_U, [x[1], x[2], x[3]])" : ""));
     define("potential", "body_mass*gravity_g*x[3]" + std::string(potential_ ? " + potential_U" : ""));
-    define("rotation", "[[q0^2 + q1^2 - q2^2 - q3^2, 2*(q1*q2 - q0*q3), 2*(q1*q3 + q0*q2)], "
-                       "[2*(q1*q2 + q0*q3), q0^2 - q1^2 + q2^2 - q3^2, 2*(q2*q3 - q0*q1)], "
-                       "[2*(q1*q3 - q0*q2), 2*(q2*q3 + q0*q1), q0^2 - q1^2 - q2^2 + q3^2]]");
+    define("rotation", kRotation);
     ordered_json& eq = out_["equations"];
     const std::string rolling =
         "ball_D*cross(dgamma, cross(omega, gamma)) + body_radius*cross(gamma, force)"; // M' of a marble ball
@@ -709,6 +889,90 @@ private:
     return true;
   }
 
+  /// Any body rolling without slipping (marble, or rubber: rubber() with the support's turning of gamma) on
+  /// a fixed curved support, in body axes (docs/rolling.md, "A body on
+  /// a curved support"). gamma is the support's unit normal at the contact, pointing into the body, in body
+  /// axes, so the body's contact point is its s(gamma) as on the plane; q0..q3 the body's orientation, N =
+  /// rotation gamma the normal in fixed axes and sigma(N) the support's point there. The contact is at rest:
+  /// v = -omega x r, and the angular momentum about it, M = A omega, obeys the plane's equation (its
+  /// derivation uses v = -omega x r alone, not how r changes): M' = (M + k) x omega + m r' x (omega x r) +
+  /// m g r x e, e the upward vertical in body axes. The contact moves on both surfaces alike, sigma'(N) N' =
+  /// rotation r' (no slip), so with S = ds/dgamma and Sigma = rotation^T sigma'(N) rotation (the inverse
+  /// shape operators; their sum is the relative curvature's inverse) and gamma' = N'_body + gamma x omega:
+  /// (Sigma - S) N'_body = S (gamma x omega) on the tangent plane (D. J. Montana, The kinematics of contact
+  /// and grasp, Int. J. Robotics Research 7(3) (1988) 17-32; Ju. I. Neimark, N. A. Fufaev, Dynamics of
+  /// Nonholonomic Systems (1972) ch. III). A balanced ball is the fixed-frame ballOnSupport(), which this
+  /// reproduces; a support of radius a -> infinity gives the plane.
+  void bodyOnSupport() {
+    ordered_json state = ordered_json::array(), vectors;
+    addVectors(state, vectors,
+               implicit_ ? std::initializer_list<const char*>{"M", "gamma", "contact"}
+                         : std::initializer_list<const char*>{"M", "gamma"});
+    for (const char* n : {"q0", "q1", "q2", "q3"})
+      state.push_back(n);
+    out_["state"] = state;
+    out_["vectors"] = vectors;
+    if (implicit_) implicitContact();
+    define("contact_s", shapeContact_);
+    define("r", "contact_s + body_centre");
+    define("rotation", kRotation);
+    define("N", "rotation*gamma");
+    define("vertical", "transpose(rotation)*[0, 0, 1]");
+    define("support_point", expr::renamed(expr::parse(supportContact_), {{"gamma", "N"}}));
+    define("A", "body_inertia + body_mass*(dot(r, r)*identity() - outer(r, r))");
+    if (contact_ == Contact::Marble) define("omega", "inverse(A)*M");
+    define("tangent", "identity() - outer(gamma, gamma)");
+    define("body_turning", "tangent*jacobian(r, gamma)*tangent");                                    // S
+    define("support_turning", "tangent*transpose(rotation)*jacobian(support_point, gamma)*tangent"); // Sigma
+    define("relative_turning", "support_turning - body_turning + outer(gamma, gamma)");
+    define("dN", "inverse(relative_turning)*(body_turning*cross(gamma, omega))");
+    // the body touches at one point while the relative curvature is definite there (on a convex support
+    // always; in a bowl while the body is more curved than the bowl both ways): det > 0 on the tangent
+    // plane. Towards det = 0 it comes to touch along a curve (the contact's rate grows without bound) and
+    // past it would cut into the bowl: the run stops once one principal value is 1e-4 of the other
+    // (det < 1e-4 trace^2 on the tangent plane), naming this
+    guard("flatter_than_the_support", "det(relative_turning) - 1e-4*(trace(relative_turning) - 1)^2");
+    define("dgamma", "dN + cross(gamma, omega) + [0, 0, flatter_than_the_support]");
+    define("dr", "derivative(r, gamma, dgamma)");
+    define("x", "support_point - rotation*r"); // the centre of mass, fixed axes
+    define("potential", "body_mass*gravity_g*x[3]");
+    ordered_json& eq = out_["equations"];
+    const std::string forces =
+        "body_mass*cross(dr, cross(omega, r)) + body_mass*gravity_g*cross(r, vertical)";
+    if (contact_ == Contact::Marble)
+      eq["M"] = "cross(M" + gyrostat() + ", omega) + " + forces;
+    else
+      rubber(forces, true);
+    eq["gamma"] = "dgamma";
+    eq["q0"] = "-(q1*omega[1] + q2*omega[2] + q3*omega[3])/2"; // q' = q (0, omega)/2, omega in body axes
+    eq["q1"] = "(q0*omega[1] + q2*omega[3] - q3*omega[2])/2";
+    eq["q2"] = "(q0*omega[2] + q3*omega[1] - q1*omega[3])/2";
+    eq["q3"] = "(q0*omega[3] + q1*omega[2] - q2*omega[1])/2";
+    // a start that gives no orientation turns gamma to the fixed vertical: the body on top of a sphere or
+    // ellipsoid, at the bottom of a bowl
+    define("q_start", "normalize([1 + normalize(gamma)[3], normalize(gamma)[2], -normalize(gamma)[1], 0])");
+    for (int i = 0; i < 4; ++i)
+      out_["complete"]["q" + std::to_string(i)] = "q_start[" + std::to_string(i + 1) + "]";
+    energy_ =
+        contact_ == Contact::Marble ? "dot(M, omega)/2 + potential" : "dot(omega, A*omega)/2 + potential";
+  }
+
+  /// The spin about the normal gamma (an integral in rubber rolling), an implicit body's contact drift and
+  /// the body's axis against the upward vertical (`vertical` in body axes), where there is one.
+  void contactObservables(ordered_json& o, const std::string& vertical) const {
+    o["spin_normal"] = {{"value", "dot(omega, gamma)"},
+                        {"description", "spin about the normal at the contact (zero in rubber rolling)"}};
+    if (contact_ == Contact::Rubber) o["spin_normal"]["integral"] = true;
+    if (implicit_)
+      o["contact_drift"] = {{"value", "norm(contact - contact_s)"},
+                            {"description",
+                             "how far the contact carried in the state is from the one solved for "
+                             "(Newton's method corrects it at every step)"}};
+    if (axis_)
+      o["axis_up"] = {{"value", "dot(" + vertical + ", normalize(body_axis))"},
+                      {"description", "cosine between the body's axis and the upward vertical"}};
+  }
+
   void planeObservables(ordered_json& o) const {
     const bool conservative = contact_ != Contact::Sliding;
     o["E"] = {{"value", energy_},
@@ -721,18 +985,8 @@ private:
         o["omega" + std::to_string(i)] = {
             {"value", "omega[" + std::to_string(i) + "]"},
             {"description", "angular velocity, body axis " + std::to_string(i)}};
-    o["spin_normal"] = {{"value", "dot(omega, gamma)"},
-                        {"description", "spin about the normal at the contact (zero in rubber rolling)"}};
-    if (contact_ == Contact::Rubber) o["spin_normal"]["integral"] = true;
     o["Z"] = {{"value", "-dot(r, gamma)"}, {"description", "height of the centre of mass above the plane"}};
-    if (implicit_)
-      o["contact_drift"] = {{"value", "norm(contact - contact_s)"},
-                            {"description",
-                             "how far the contact carried in the state is from the one solved for "
-                             "(Newton's method corrects it at every step)"}};
-    if (axis_)
-      o["axis_up"] = {{"value", "dot(gamma, normalize(body_axis))"},
-                      {"description", "cosine between the body's axis and the upward vertical"}};
+    contactObservables(o, "gamma");
     if (shape_ == "sphere") { // Jellett (1872): (L, r) for a sphere whose centre of mass is on its axis
       o["jellett"] = {{"value", "dot(body_inertia*omega" + gyrostat() + ", r)"},
                       {"description",
@@ -750,7 +1004,20 @@ private:
 
   void observables() {
     ordered_json o;
-    if (!support_.empty()) { // a ball on a curved support
+    if (!support_.empty() && !balancedBall_) { // any other body on a curved support
+      o["E"] = {{"value", energy_}, {"description", "energy"}, {"integral", true}};
+      o["geometric"] = {
+          {"value", "dot(gamma, gamma)"}, {"description", "geometric integral"}, {"integral", true}};
+      for (int i = 1; i <= 3; ++i) {
+        const std::string k = std::to_string(i);
+        o["omega" + k] = {{"value", "omega[" + k + "]"}, {"description", "angular velocity, body axis " + k}};
+        o["x" + k] = {{"value", "x[" + k + "]"}, {"description", "centre of mass, fixed axis " + k}};
+      }
+      o["orientation"] = {{"value", "q0^2 + q1^2 + q2^2 + q3^2"},
+                          {"description", "the orientation quaternion's squared norm"},
+                          {"integral", true}};
+      contactObservables(o, "vertical");
+    } else if (!support_.empty()) { // a ball on a curved support
       o["E"] = {{"value", energy_}, {"description", "energy"}, {"integral", true}};
       if (support_ != "graph")
         o["geometric"] = {
@@ -790,6 +1057,11 @@ private:
       v["rotation"] = "rows(alpha, beta, gamma)";
       v["position"] = "[x, y, -dot(r, gamma)]";
       v["contact"] = "[x, y, -dot(r, gamma)] + rows(alpha, beta, gamma)*r";
+    } else if (!balancedBall_) {
+      v["rotation"] = "rotation";
+      v["position"] = "x";
+      v["contact"] = "support_point";
+      if (!supportView_.is_null()) v["support"] = supportView_;
     } else {
       v["rotation"] = "rotation";
       v["position"] = "x";
@@ -826,10 +1098,13 @@ private:
   bool potential_ = false, gyrostat_ = false, axis_ = false;
   bool centred_ =
       false; ///< the body gives its shape's centre (else the centre of mass is the shape's origin)
-  std::optional<expr::Expression> implicit_; ///< an implicit body's F
-  std::string support_, supportContact_;     ///< a curved support ("" for the plane), its inverse Gauss map
+  std::optional<expr::Expression> implicit_;      ///< an implicit body's F
+  std::optional<expr::Expression> implicitStart_; ///< F for the first contact's Newton steps and the view
+  std::string contactGuess_ = "-body_size*normalize(gamma)"; ///< where the first contact's steps begin
+  std::string support_, supportContact_; ///< a curved support ("" for the plane), its inverse Gauss map
   ordered_json supportView_;
   bool centreSurface_ = false, inside_ = false;
+  bool balancedBall_ = false; ///< a sphere with no centre, gyrostat or principal axes and one moment
 };
 
 } // namespace

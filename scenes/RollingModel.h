@@ -8,7 +8,11 @@
 // The derivation (written out in docs/rolling.md). Body axes; gamma is the upward vertical, so the body's
 // outward normal at the contact is -gamma and the contact point s(gamma) is the inverse Gauss map of the
 // surface (closed form for the named shapes); r = s + centre is the contact relative to the centre of mass
-// and r' = (dr/dgamma) gamma' its rate, taken exactly by derivative() (expr/Derivative.h).
+// and r' = (dr/dgamma) gamma' its rate, taken exactly by derivative() (expr/Derivative.h). A surface with no
+// closed form -- implicit F(x, y, z) = 0, a superellipsoid (A. H. Barr, Superquadrics and angle-preserving
+// transformations, IEEE Computer Graphics and Applications 1 (1981) 11-23) made strictly convex by a bulge,
+// a body of revolution by its profile rho(z) -- carries its contact in the state and takes one Newton step
+// per evaluation onto F = 0 with the normal turned to -gamma through the shape operator.
 //  - marble (no slip): M = A omega, A = I + m (|r|^2 E - r r^T) (the angular momentum about the contact),
 //    M' = (M + k) x omega + m r' x (omega x r) + m g r x gamma + gamma x dU/dgamma, gamma' = gamma x omega
 //    (A. V. Borisov, I. S. Mamaev, Rolling of a rigid body on a plane and sphere. Hierarchy of dynamics,
@@ -22,6 +26,13 @@
 //    (the contact stays on the plane): the classical smooth tippe top (N. M. Bou-Rabee, J. E. Marsden,
 //    L. A. Romero, Tippe top inversion as a dissipation-induced instability, SIAM J. Appl. Dyn. Syst. 3
 //    (2004) 352-377; S. Rauch-Wojciechowski, N. Rutstam, SIGMA 10 (2014) 017).
+//  - on a curved support: a balanced ball in the fixed frame (the manual's section 3.3); any other body in
+//    body axes, marble or rubber: gamma the support's normal at the contact (into the body), q the
+//    orientation, the plane's M' with the vertical e = Q^T e3 (its derivation uses only that the contact is
+//    at rest), and the contact's motion from the relative curvature, (Sigma - S) N' = S (gamma x omega) with
+//    S, Sigma the inverse shape operators of body and support (D. J. Montana, The kinematics of contact and
+//    grasp, Int. J. Robotics Research 7(3) (1988) 17-32; Ju. I. Neimark, N. A. Fufaev, Dynamics of
+//    Nonholonomic Systems (1972) ch. III).
 #pragma once
 #include "dynamics/models/EquationModel.h"
 

@@ -337,6 +337,10 @@ std::string Program::firstNonFinite(const double* in, const std::vector<std::str
     if (std::isfinite(reg[i]) || c.op == Op::Input || !finite(c.a) || !finite(c.b)) continue;
     std::ostringstream os;
     if (c.origin >= 0) os << origins[static_cast<std::size_t>(c.origin)] << ": ";
+    if (c.op == Op::Const) { // folded: an expression of constants and parameters alone
+      os << "is " << reg[i] << " whatever the state (it depends on the parameters alone)";
+      return os.str();
+    }
     os << "'" << opName(c.op) << "' of";
     for (int r : {c.a, c.b})
       if (r >= 0) os << " " << reg[static_cast<std::size_t>(r)];

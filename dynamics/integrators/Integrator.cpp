@@ -79,10 +79,14 @@ void Integrator::checkFinite() const {
 std::string Integrator::nonFiniteField() const {
   Eigen::VectorXd f(x_.size());
   model_->rhs(x_.data(), f.data());
-  if (std::isfinite(f.sum())) return "";
+  const bool here = !std::isfinite(f.sum());
+  // not finite at the step's start, or at a stage within the step (what shortened it: a model written as
+  // equations remembers where its field last stopped being finite)
   const auto* explains = dynamic_cast<const ExplainsNonFinite*>(model_);
   const std::string cause = explains ? explains->nonFiniteCause(x_.data()) : "";
-  return "; the field is not finite there" + (cause.empty() ? std::string() : ": " + cause);
+  if (!here && cause.empty()) return "";
+  return std::string(here ? "; the field is not finite there" : "; the field is not finite within the step") +
+         (cause.empty() ? std::string() : ": " + cause);
 }
 
 void Integrator::advanceCompensated(double h, const Eigen::VectorXd& increment,

@@ -106,9 +106,10 @@ protected:
   }
   /// Throws ComputationError if x_ holds a NaN or an infinity.
   void checkFinite() const;
-  /// Why the step could not be made, when the field itself stops being finite at the current state: "; " and
-  /// the expression that went non-finite (a model written as equations), or "" (then the cause is the
-  /// tolerance or a true singularity). Appended to an adaptive method's "the step fell" message.
+  /// Why the step could not be made, when the field itself stops being finite at the current state or at a
+  /// stage within the step: "; " and the expression that went non-finite (a model written as equations), or
+  /// "" (then the cause is the tolerance or a true singularity). Appended to an adaptive method's "the step
+  /// fell" message.
   std::string nonFiniteField() const;
   /// Throws InputError for a map (for the methods that only integrate flows).
   static void requireFlow(const Model& model);

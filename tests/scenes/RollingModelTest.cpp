@@ -430,23 +430,155 @@ TEST(RollingModel, ARoundedCubeGivenOnlyByItsSurfaceKeepsItsEnergy) {
     EXPECT_LT(d, 1e-9);
 }
 
-TEST(RollingModel, AnImplicitBodyIsDrawnFromItsOwnSurfaceThroughTheContact) {
-  const auto cube = instance(modelFileEntry(examples("rounded_cube.json", "rolling")), {{"h", 0.2}});
-  const auto* drawn = dynamic_cast<const DrawnFromMesh*>(cube.get());
+/// The contact of `body` at the state `start`, in the body's frame about the pose's centre (the centre of
+/// mass), lies on the surface the 3D view samples, with the centre of mass inside it at the height the pose
+/// puts it.
+void expectDrawnThroughTheContact(const Model& body, const std::map<std::string, double>& start) {
+  const auto* drawn = dynamic_cast<const DrawnFromMesh*>(&body);
   ASSERT_TRUE(drawn && drawn->bodySurface());
   const ImplicitSurface surface = *drawn->bodySurface();
-  const Eigen::VectorXd x = named(
-      *cube,
-      {{"M1", 0.4}, {"M2", 0.1}, {"M3", 0.6}, {"gamma1", 0.2}, {"gamma2", 0.1}, {"gamma3", std::sqrt(0.95)}});
-  const auto pose = cube->pose(x.data());
+  const Eigen::VectorXd x = named(body, start);
+  const auto pose = body.pose(x.data());
   ASSERT_TRUE(pose);
-  // the contact, in the body's frame about the pose's centre (the centre of mass), is on the drawn surface
   const Eigen::Vector3d contact = pose->rotation.transpose() * (pose->contact - pose->center);
   EXPECT_NEAR(surface.F(contact), 0, 1e-12);
   EXPECT_LT(surface.F(Eigen::Vector3d::Zero()), 0); // the centre of mass inside
   EXPECT_GE(surface.size, contact.norm());
-  EXPECT_NEAR(contact.dot(Eigen::Vector3d(0.2, 0.1, std::sqrt(0.95))), -(pose->center[2] - pose->contact[2]),
-              1e-12);
+  const Eigen::Vector3d gamma =
+      Eigen::Vector3d(start.at("gamma1"), start.at("gamma2"), start.at("gamma3")).normalized();
+  EXPECT_NEAR(contact.dot(gamma), -(pose->center[2] - pose->contact[2]), 1e-12);
+}
+
+TEST(RollingModel, AnImplicitBodyIsDrawnFromItsOwnSurfaceThroughTheContact) {
+  const auto cube = instance(modelFileEntry(examples("rounded_cube.json", "rolling")), {{"h", 0.2}});
+  expectDrawnThroughTheContact(
+      *cube,
+      {{"M1", 0.4}, {"M2", 0.1}, {"M3", 0.6}, {"gamma1", 0.2}, {"gamma2", 0.1}, {"gamma3", std::sqrt(0.95)}});
+}
+
+/// Each observable `ids` of two runs, sample by sample, within `tolerance`.
+void expectTheSameRun(const ExampleRun& a, const ExampleRun& b, std::initializer_list<const char*> ids,
+                      double tolerance, double every) {
+  for (const char* id : ids) {
+    const std::vector<double> x = along(a, id), y = along(b, id);
+    ASSERT_EQ(x.size(), y.size());
+    for (std::size_t i = 0; i < x.size(); ++i)
+      EXPECT_NEAR(x[i], y[i], tolerance) << id << " at t = " << every * static_cast<double>(i);
+  }
+}
+
+/// The superellipsoid brick (examples/rolling/superellipsoid.json) rocking on a face, spinning.
+const std::map<std::string, double> kBrickStart{
+    {"M1", 0.3}, {"M2", 0.2}, {"M3", 0.8}, {"gamma1", 0.2}, {"gamma2", 0.1}, {"gamma3", std::sqrt(0.95)}};
+
+const std::map<std::string, double> kRattlebackStart{{"M1", 0.1},      {"M2", 0.05},
+                                                     {"M3", 0.3},      {"gamma1", 0.05},
+                                                     {"gamma2", 0.05}, {"gamma3", std::sqrt(1 - 0.005)}};
+
+TEST(RollingModel, ASuperellipsoidOfExponentTwoRollsAsTheClosedFormEllipsoid) {
+  // |x/a1|^p + |y/a2|^p + |z/a3|^p = 1 at p = 2 (a parameter: the general power's derivatives at 0), no
+  // bulge: the contact by Newton's method against the closed-form inverse Gauss map
+  json named = json::parse(std::ifstream(examples("ellipsoid_on_plane.json", "rolling")));
+  named["id"] = "superellipsoid_rattleback";
+  named["parameters"]["p"] = {{"default", 2}};
+  named["body"]["shape"] = "superellipsoid";
+  named["body"]["exponent"] = "p";
+  const std::map<std::string, double> set{{"a1", 0.05}, {"B11", 0.1}, {"B12", 0.02}};
+  const ExampleRun a = runModel(instance(modelFileEntry(examples("ellipsoid_on_plane.json", "rolling")), set),
+                                kRattlebackStart, 10, 0.5);
+  const ExampleRun b =
+      runModel(instance(modelEntryFromJson(named, "<named>"), set), kRattlebackStart, 10, 0.5);
+  expectTheSameRun(a, b, {"omega1", "omega2", "omega3", "gamma1", "gamma2", "gamma3", "Z", "E"}, 1e-9, 0.5);
+  for (double d : along(b, "contact_drift"))
+    EXPECT_LT(d, 1e-9);
+}
+
+TEST(RollingModel, ASpheroidGivenByItsProfileRollsAsTheClosedFormSpheroid) {
+  // a top-heavy oblate spheroid: semi-axes [a, a, c], and its profile rho(z) = a sqrt(1 - z^2/c^2) (or
+  // rho^2) about body axis 3
+  const json closed = json::parse(R"({"kind": "rolling", "id": "spheroid_closed",
+      "parameters": {"a": 0.6, "c": 0.35, "h": 0.08, "m": 1, "I1": 0.1, "I3": 0.14, "g": 1},
+      "body": {"shape": "ellipsoid", "semi_axes": "[a, a, c]", "centre": "[0, 0, h]", "mass": "m",
+               "inertia": ["I1", "I1", "I3"]}, "gravity": "g"})");
+  json profile = closed, squared = closed;
+  profile["id"] = "spheroid_profile";
+  profile["body"].erase("semi_axes");
+  profile["body"]["shape"] = "revolution";
+  profile["body"]["heights"] = "[-c, c]";
+  squared = profile;
+  squared["id"] = "spheroid_squared";
+  profile["body"]["profile"] = "a*sqrt(1 - z^2/c^2)";
+  squared["body"]["profile_squared"] = "a^2*(1 - (z/c)^2)";
+  const std::map<std::string, double> start{{"M1", 0.1},     {"M2", 0.05},    {"M3", 0.5},
+                                            {"gamma1", 0.3}, {"gamma2", 0.1}, {"gamma3", std::sqrt(0.9)}};
+  const ExampleRun a = runModel(instance(modelEntryFromJson(closed, "<closed>")), start, 10, 0.5);
+  for (const json& revolution : {profile, squared}) {
+    SCOPED_TRACE(revolution["id"].get<std::string>());
+    const auto model = instance(modelEntryFromJson(revolution, "<revolution>"));
+    expectDrawnThroughTheContact(*model, start);
+    const ExampleRun b = runModel(instance(modelEntryFromJson(revolution, "<revolution>")), start, 10, 0.5);
+    expectTheSameRun(a, b, {"omega1", "omega2", "omega3", "gamma1", "gamma2", "gamma3", "Z", "E"}, 1e-9, 0.5);
+    for (double d : along(b, "contact_drift"))
+      EXPECT_LT(d, 1e-9);
+  }
+}
+
+TEST(RollingModel, ASuperellipsoidKeepsItsEnergyAndIsDrawnThroughItsContact) {
+  // a rounded brick, exponent 6: energy and the contact carried in the state, over many rockings
+  const ExampleRun brick = runExample("superellipsoid.json", {}, kBrickStart, 20, 0.5);
+  EXPECT_LT(relativeDrift(along(brick, "E")), 1e-10);
+  for (double d : along(brick, "contact_drift"))
+    EXPECT_LT(d, 1e-9);
+  expectDrawnThroughTheContact(*brick.model, kBrickStart);
+  // the rounded cube written by name is the one written as F = x^4 + y^4 + z^4 + c (x^2 + y^2 + z^2 - 1) - 1
+  json cube = json::parse(std::ifstream(examples("rounded_cube.json", "rolling")));
+  const ExampleRun implicit =
+      runModel(instance(modelEntryFromJson(cube, "<implicit>")), kBrickStart, 10, 0.5);
+  cube["id"] = "rounded_cube_by_name";
+  cube["body"].erase("F");
+  cube["body"].erase("size");
+  cube["body"]["shape"] = "superellipsoid";
+  cube["body"]["semi_axes"] = "[1, 1, 1]";
+  cube["body"]["exponent"] = 4;
+  cube["body"]["bulge"] = "c";
+  const ExampleRun byName = runModel(instance(modelEntryFromJson(cube, "<by name>")), kBrickStart, 10, 0.5);
+  expectTheSameRun(implicit, byName, {"omega1", "omega2", "omega3", "gamma1", "gamma2", "gamma3", "Z", "E"},
+                   1e-9, 0.5);
+}
+
+/// The rattleback's ellipsoid (examples/rolling/ellipsoid_on_plane.json without its extra potential) on
+/// `support` (none: the plane).
+json rattlebackOn(const json& support) {
+  json body = json::parse(std::ifstream(examples("ellipsoid_on_plane.json", "rolling")));
+  body.erase("potential");
+  body["id"] =
+      "rattleback_on_" + (support.is_null() ? std::string("plane") : support["surface"].get<std::string>());
+  if (!support.is_null()) body["support"] = support;
+  return body;
+}
+
+TEST(RollingModel, AShapeThatIsNotStrictlyConvexWhereItTouchesStopsTheRunSayingWhy) {
+  const auto stops = [&](std::unique_ptr<Model> model, const std::string& why) {
+    try {
+      runModel(std::move(model), kBrickStart, 2, 1);
+      ADD_FAILURE() << "the run went on";
+    } catch (const ComputationError& e) {
+      EXPECT_NE(std::string(e.what()).find(why), std::string::npos) << e.what();
+    }
+  };
+  // flat face centres: an exponent above 2 with no bulge
+  stops(instance(modelFileEntry(examples("superellipsoid.json", "rolling")), {{"bulge", 0}}),
+        "definitions.not_strictly_convex");
+  // a ball cut flat below z = -0.5 (the profile's radius does not fall to zero there), standing on its cut
+  const json cut = json::parse(R"j({"kind": "rolling", "id": "cut_ball", "gravity": 1,
+      "body": {"shape": "revolution", "profile": "sqrt(1 - z^2)", "heights": "[-0.5, 1]", "mass": 1,
+               "inertia": [0.4, 0.4, 0.4]}})j");
+  stops(instance(modelEntryFromJson(cut, "<cut>")), "definitions.leaves_the_profile");
+  // the rattleback (radii of curvature up to b1^2/b3 = 10) in a bowl of radius 2: where it is flatter than
+  // the bowl it would touch it along a curve, then cut into it
+  stops(instance(modelEntryFromJson(rattlebackOn({{"surface", "sphere"}, {"radius", 2}, {"side", "inside"}}),
+                                    "<bowl>")),
+        "definitions.flatter_than_the_support");
 }
 
 TEST(RollingModel, ABallInASphericalBowlFromItsGeometryFollowsTheBowlWrittenByHand) {
@@ -513,6 +645,101 @@ TEST(RollingModel, ARubberBallInASphericalBowlRollsAsTheMarbleOneThatDoesNotSpin
   EXPECT_LT(relativeDrift(along(c, "E")), 1e-11);
   for (double s : along(c, "spin_normal"))
     EXPECT_LT(std::abs(s), 1e-13);
+}
+
+TEST(RollingModel, AnyBodyOnACurvedSupportRollsAsTheBalancedBallWhenItIsOne) {
+  // the general path (any body, in body axes: a sphere given three moments takes it) against the balanced
+  // ball's fixed-frame equations, in a spherical bowl and on an ellipsoid; started with the body axes along
+  // the fixed ones (q = 1), so M, gamma and the ball's fixed-frame M, gamma start alike
+  // the same for rubber rolling (the couple that stops the spin: M's part along gamma is the constraint's)
+  for (const auto& [support, contact] : std::vector<std::pair<const char*, const char*>>{
+           {R"({"surface": "sphere", "radius": 1, "side": "inside"})", "marble"},
+           {R"({"surface": "ellipsoid", "semi_axes": "[1.2, 1, 0.8]"})", "marble"},
+           {R"({"surface": "sphere", "radius": 1, "side": "inside"})", "rubber"},
+           {R"({"surface": "ellipsoid", "semi_axes": "[1.2, 1, 0.8]"})", "rubber"}}) {
+    SCOPED_TRACE(std::string(support) + " " + contact);
+    json ball = json::parse(R"({"kind": "rolling", "id": "balanced_ball",
+        "body": {"shape": "sphere", "radius": 0.2, "mass": 1, "inertia": "0.4*0.2^2"}, "gravity": 9.81})");
+    ball["support"] = json::parse(support);
+    ball["contact"] = contact;
+    json body = ball;
+    body["id"] = "any_body";
+    body["body"]["inertia"] = {"0.4*0.2^2", "0.4*0.2^2", "0.4*0.2^2"};
+    for (int i = 1; i <= 3; ++i) // the angular velocity in fixed axes, as the ball's omega is
+      body["observables"]["omega" + std::to_string(i)] = "(rotation*omega)[" + std::to_string(i) + "]";
+    const Eigen::Vector3d w(1, 4, 2),
+        gamma = Eigen::Vector3d(-std::sin(0.5), 0.1, std::cos(0.5)).normalized();
+    const Eigen::Vector3d M = 0.016 * w + 0.04 * gamma.cross(w.cross(gamma));
+    std::map<std::string, double> start{{"M1", M[0]},         {"M2", M[1]},         {"M3", M[2]},
+                                        {"gamma1", gamma[0]}, {"gamma2", gamma[1]}, {"gamma3", gamma[2]}};
+    const ExampleRun a = runModel(instance(modelEntryFromJson(ball, "<ball>")), start, 10, 0.5);
+    start.insert({{"q0", 1}, {"q1", 0}, {"q2", 0}, {"q3", 0}});
+    const ExampleRun b = runModel(instance(modelEntryFromJson(body, "<body>")), start, 10, 0.5);
+    expectTheSameRun(a, b, {"omega1", "omega2", "omega3", "x1", "x2", "x3", "E", "spin_normal"}, 1e-9, 0.5);
+  }
+}
+
+TEST(RollingModel, ABodyOnASphereOfGrowingRadiusTendsToTheSameBodyOnThePlane) {
+  // on top of a sphere of radius a the support's curvature 1/a is all that differs from the plane: the
+  // motion from the same start (gamma along the fixed vertical) tends to the plane's as a grows
+  const ExampleRun plane =
+      runModel(instance(modelEntryFromJson(rattlebackOn(nullptr), "<plane>")), kRattlebackStart, 10, 0.5);
+  std::vector<double> gap;
+  for (const double a : {100.0, 1000.0}) {
+    const ExampleRun sphere = runModel(
+        instance(modelEntryFromJson(rattlebackOn({{"surface", "sphere"}, {"radius", a}}), "<sphere>")),
+        kRattlebackStart, 10, 0.5);
+    double worst = 0;
+    for (const char* id : {"omega1", "omega2", "omega3", "gamma1", "gamma2", "gamma3"}) {
+      const std::vector<double> x = along(plane, id), y = along(sphere, id);
+      for (std::size_t i = 0; i < x.size(); ++i)
+        worst = std::max(worst, std::abs(x[i] - y[i]));
+    }
+    gap.push_back(worst);
+  }
+  EXPECT_LT(gap[0], 0.5);
+  EXPECT_GT(gap[0], 1e-4);       // the curvature shows
+  EXPECT_LT(gap[1], gap[0] / 5); // like 1/a
+}
+
+TEST(RollingModel, AnyBodyOnACurvedSupportKeepsItsEnergy) {
+  // the rattleback in a spherical bowl, and the superellipsoid brick (its contact by Newton's method) on an
+  // ellipsoid
+  // (the rattleback's semi-axis b1 = 0.6 instead of 2: its radii of curvature, at most b1^2/b3, stay below
+  // the bowl's 2, so it touches at one point wherever it rolls)
+  const auto inTheBowl = [](const char* contact) {
+    json body = rattlebackOn({{"surface", "sphere"}, {"radius", 2}, {"side", "inside"}});
+    body["id"] = std::string(contact) + "_rattleback_in_a_bowl";
+    body["contact"] = contact;
+    return runModel(instance(modelEntryFromJson(body, "<bowl>"), {{"b1", 0.6}}),
+                    {{"M1", 0.1},
+                     {"M2", 0.05},
+                     {"M3", 0.3},
+                     {"gamma1", 0.3},
+                     {"gamma2", 0.05},
+                     {"gamma3", std::sqrt(0.9075)}},
+                    20, 0.5);
+  };
+  const ExampleRun bowl = inTheBowl("marble");
+  json brick = json::parse(std::ifstream(examples("superellipsoid.json", "rolling")));
+  brick["id"] = "brick_on_an_ellipsoid";
+  brick["support"] = {{"surface", "ellipsoid"}, {"semi_axes", "[3, 2.5, 2]"}};
+  const ExampleRun onEllipsoid =
+      runModel(instance(modelEntryFromJson(brick, "<brick>")), kBrickStart, 20, 0.5);
+  for (const ExampleRun* run : {&bowl, &onEllipsoid}) {
+    EXPECT_LT(relativeDrift(along(*run, "E")), 1e-10);
+    EXPECT_LT(relativeDrift(along(*run, "orientation")), 1e-12);
+    const std::vector<double> x1 = along(*run, "x1");
+    EXPECT_GT(*std::max_element(x1.begin(), x1.end()) - *std::min_element(x1.begin(), x1.end()),
+              0.05); // moves
+  }
+  for (double d : along(onEllipsoid, "contact_drift"))
+    EXPECT_LT(d, 1e-9);
+  // rubber: the rattleback in the bowl keeps its energy and never spins about the normal
+  const ExampleRun rubberBowl = inTheBowl("rubber");
+  EXPECT_LT(relativeDrift(along(rubberBowl, "E")), 1e-10);
+  for (double spin : along(rubberBowl, "spin_normal"))
+    EXPECT_LT(std::abs(spin), 1e-13);
 }
 
 TEST(RollingModel, TheTippeTopTurnsOverOnlyInsideItsInertiaWindowAndKeepsJellettsIntegral) {
@@ -651,7 +878,23 @@ TEST(RollingModel, AMalformedBodyIsNamedAtTheFieldTheUserWrote) {
   expect(bad, "<bad>:support.surface: expected \"plane\", \"sphere\"");
   bad = top;
   bad["support"] = {{"surface", "sphere"}, {"radius", 2}};
-  expect(bad, "<bad>:body.inertia: on a curved support give the ball's one central moment of inertia");
+  EXPECT_EQ(errorOf(bad), ""); // three moments: any body on a curved support
+  bad["contact"] = "sliding";
+  bad["friction"] = 1;
+  expect(bad, "<bad>:contact: on a curved support a body other than a balanced ball");
+  bad["contact"] = "marble";
+  bad.erase("friction");
+  bad["potential"] = "gamma1";
+  expect(bad, "<bad>:potential: on a curved support a potential is for a balanced ball only");
+  bad.erase("potential");
+  bad["support"]["describes"] = "centre";
+  expect(bad, "<bad>:support.describes: \"centre\" describes the surface a balanced ball's centre moves on");
+  bad["support"] = {{"surface", "graph"}, {"height", "x1^2"}, {"describes", "centre"}};
+  expect(bad, "<bad>:support.surface: a \"graph\" support carries a balanced ball only");
+  bad["body"]["inertia"] = 1;
+  bad["contact"] = "sliding";
+  bad["friction"] = 1;
+  expect(bad, "<bad>:contact: on a curved support the contact is \"marble\" or \"rubber\" (a balanced ball)");
   bad = top;
   bad["body"]["semi_axes"] = "[1, 2, 3]";
   expect(bad, "<bad>:body.semi_axes: a sphere has no \"semi_axes\"");
@@ -677,6 +920,42 @@ TEST(RollingModel, AMalformedBodyIsNamedAtTheFieldTheUserWrote) {
   bad = top;
   bad["gravity"] = "[0, 0, 1]";
   expect(bad, "<bad>:gravity: the gravity must be a scalar, not a 3-vector");
+  const json brick = {{"shape", "superellipsoid"},
+                      {"semi_axes", "[1, 0.8, 0.6]"},
+                      {"exponent", 4},
+                      {"bulge", 0.05},
+                      {"mass", 1},
+                      {"inertia", {1, 1, 1}}};
+  bad = top;
+  bad["body"] = brick;
+  EXPECT_EQ(errorOf(bad), "");
+  bad["body"]["exponent"] = 1.5;
+  expect(bad, "<bad>:body.exponent: expected an exponent of at least 2");
+  bad["body"]["exponent"] = 4;
+  bad["body"].erase("bulge");
+  expect(bad, "<bad>:body: a superellipsoid with an exponent above 2 is flat along its mid-curves");
+  bad["body"]["bulge"] = 0;
+  expect(bad, "<bad>:body.bulge: a superellipsoid with an exponent above 2 is flat");
+  bad["body"] = brick;
+  bad["body"]["radius"] = 1;
+  expect(bad, "<bad>:body.radius: a superellipsoid has no \"radius\"");
+  bad["body"] = brick;
+  bad["body"]["profile"] = "1 - z^2";
+  expect(bad, "<bad>:body.profile: only a \"revolution\" body has \"profile\"");
+  bad["body"] = {{"shape", "revolution"},
+                 {"profile", "sqrt(1 - x^2)"},
+                 {"heights", "[-1, 1]"},
+                 {"mass", 1},
+                 {"inertia", {1, 1, 1}}};
+  expect(bad, "<bad>:body.profile: unknown name 'x' (this reads z,");
+  bad["body"].erase("heights");
+  bad["body"]["profile"] = "sqrt(1 - z^2)";
+  expect(bad, "<bad>:body: a revolution body needs \"heights\"");
+  bad["body"]["profile_squared"] = "1 - z^2";
+  expect(bad, "<bad>:body: a revolution body gives its profile as \"profile\"");
+  bad["body"].erase("profile_squared");
+  bad["body"]["heights"] = "[1, 2, 3]";
+  expect(bad, "<bad>:body.heights: the profile's ends on its axis must be a 2-vector, not a 3-vector");
 }
 
 } // namespace
