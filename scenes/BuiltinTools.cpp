@@ -42,7 +42,8 @@ bool startsCurve(const TypeChange& change, CurveKind kind) {
 ToolResult runBifurcationCurve(const Scene& scene, const ToolControl& control) {
   const SceneMap s(scene);
   const ContinuationSettings c = s.continuation();
-  BifurcationCurveSettings cs = bifurcationCurveSettings(scene.tool("bifurcation_curve"), s.search());
+  BifurcationCurveSettings cs = bifurcationCurveSettingsTable().read(scene.tool("bifurcation_curve"));
+  cs.search = s.search();
   cs.first = c.parameter;
   cs.eventAccuracy = c.bifurcationAccuracy;
   const auto& doc = scene.document;

@@ -85,7 +85,7 @@ class GridRun final : public ToolRun {
 public:
   GridRun(const Scene& scene, MapGrid::Kind kind)
       : kind_(kind), sceneMap_(Scene(scene), {}, false), map_(sceneMap_.map()),
-        grid_(map_, kind, gridSettings(scene.tool("grid")),
+        grid_(map_, kind, gridSettingsTable().read(scene.tool("grid")),
               scene.document.value("grid", nlohmann::json::object()).value("level", std::string())),
         searches_(kind == MapGrid::Kind::Surface && !scene.guess.empty()) {}
 

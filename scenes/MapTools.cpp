@@ -316,7 +316,8 @@ ToolResult runSeparatrix(const Scene& scene, const ToolControl& control) {
   result.table.values.assign(result.table.names.size(), {});
   json branches = json::array(), python = json::object();
   for (int b : list) {
-    SeparatrixSettings ss = separatrixSettings(scene.tool("separatrix"), s.search());
+    SeparatrixSettings ss = separatrixSettingsTable().read(scene.tool("separatrix"));
+    ss.fixedPointAccuracy = s.search().accuracy;
     ss.branch = b;
     // each level's points as they are grown, for a front end drawing them (their parameters come with the
     // table, once the branch is grown)
@@ -373,7 +374,10 @@ ToolResult runSeparatrix(const Scene& scene, const ToolControl& control) {
 ToolResult runBifurcationTree(const Scene& scene, const ToolControl& control) {
   const SceneMap s(scene);
   const ContinuationSettings c = s.continuation();
-  const BifurcationTreeSettings t = bifurcationTreeSettings(scene.tool("bifurcation_tree"), c);
+  BifurcationTreeSettings settings;
+  settings.continuation = c;
+  const BifurcationTreeSettings t =
+      bifurcationTreeSettingsTable().read(scene.tool("bifurcation_tree"), settings);
   const double start = s.spec().modelParameters[c.parameter];
   const ReturnMap map = s.map();
   ToolResult result;

@@ -489,9 +489,9 @@ Scene sceneFromJson(json doc, const std::string& source, const std::vector<Scene
 
   readToolSections(doc, root, scene);
   scene.poincare = poincareSettings(scene.tool("poincare"), scene.poincare.observable);
-  scene.lyapunov = lyapunovSettings(scene.tool("lyapunov"));
-  scene.megno = megnoSettings(scene.tool("megno"));
-  scene.spectrum = spectrumSettings(scene.tool("spectrum"), scene.spectrum.function);
+  scene.lyapunov = lyapunovSettingsTable().read(scene.tool("lyapunov"));
+  scene.megno = megnoSettingsTable().read(scene.tool("megno"));
+  scene.spectrum = spectrumSettingsTable().read(scene.tool("spectrum"), scene.spectrum);
   applyPlotTable(scene.tool("plot"), scene.plot);
   if (!scene.poincare.observable.empty() && !scene.model->isMap() &&
       scene.model->findObservable(scene.poincare.observable) < 0)

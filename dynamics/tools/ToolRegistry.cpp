@@ -14,16 +14,16 @@ namespace {
 std::vector<ToolSection>& sections() {
   static std::vector<ToolSection> s{
       {"poincare", "Poincaré map", &poincareTable(), "section"},
-      {"spectrum", "Fourier spectrum", &spectrumTable(), "function"},
-      {"fixedpoint", "Fixed point finding", &fixedPointTable()},
-      {"continuation", "Fixed point continuation", &continuationTable()},
-      {"separatrix", "Separatrix", &separatrixTable()},
-      {"bifurcation_tree", "Bifurcating tree", &bifurcationTreeTable()},
-      {"bifurcation_curve", "Bifurcation curve", &bifurcationCurveTable()},
-      {"grid", "Surface |Map(x) - x| and region of allowed motion", &gridTable()},
+      {"spectrum", "Fourier spectrum", &spectrumSettingsTable().table(), "function"},
+      {"fixedpoint", "Fixed point finding", &fixedPointSettingsTable().table()},
+      {"continuation", "Fixed point continuation", &continuationSettingsTable().table()},
+      {"separatrix", "Separatrix", &separatrixSettingsTable().table()},
+      {"bifurcation_tree", "Bifurcating tree", &bifurcationTreeSettingsTable().table()},
+      {"bifurcation_curve", "Bifurcation curve", &bifurcationCurveSettingsTable().table()},
+      {"grid", "Surface |Map(x) - x| and region of allowed motion", &gridSettingsTable().table()},
       {"diagram", "Topological analysis", &diagramTable()},
-      {"lyapunov", "Lyapunov exponents", &lyapunovTable()},
-      {"megno", "MEGNO and FLI", &megnoTable()},
+      {"lyapunov", "Lyapunov exponents", &lyapunovSettingsTable().table()},
+      {"megno", "MEGNO and FLI", &megnoSettingsTable().table()},
       {"plot", "2D / 3D plot", &plotTable()},
   };
   return s;
