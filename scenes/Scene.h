@@ -40,20 +40,25 @@ struct Scene {
   const IntegratorEntry* integratorEntry = nullptr;
   std::shared_ptr<const ParameterValues> integratorParameters;
   Eigen::VectorXd initialState;
-  SectionSettings poincare;  ///< "poincare": section, value, direction, points (maxPoints), ...
-  LyapunovSettings lyapunov; ///< "lyapunov"
-  MegnoSettings megno;       ///< "megno"
-  SpectrumSettings spectrum; ///< "spectrum"
-  PlotView plot;             ///< "plot"
+  SectionSettings poincare; ///< "poincare": section, value, direction, points (maxPoints), ...
+  PlotView plot;            ///< "plot"
+  /// "megno" as its struct, for the map window's MEGNO colours (app/gui/MapPanel.cpp); a tool reads
+  /// settings(megnoSettingsTable(), "megno") as every other section's.
+  MegnoSettings megno;
   ViewOptions view;
-  /// The fixed-point family's settings by section key ("fixedpoint", "continuation", ...; see
-  /// ToolSettings.h).
+  /// Every tool section's settings by key ("lyapunov", "fixedpoint", ...; dynamics/tools/ToolRegistry.h
+  /// toolSections()), a tool's defaults where the scene gives none.
   std::map<std::string, std::shared_ptr<const ParameterValues>> tools;
   std::vector<double> guess;         ///< "fixedpoint": {"guess": [...]} (empty: none)
   std::string continuationParameter; ///< "continuation": {"parameter": ...}
   std::optional<double> continuationTo;
   /// The settings of a tool section (defaults when the scene has none).
   const ParameterValues& tool(const std::string& key) const { return *tools.at(key); }
+  /// The same as the struct its table fills (dynamics/core/SettingsTable.h), e.g.
+  /// settings(lyapunovSettingsTable(), "lyapunov").
+  template <class S> S settings(const SettingsTable<S>& table, const std::string& key) const {
+    return table.read(tool(key));
+  }
 
   /// A fresh integrator of the scene's method, started at t = 0 from the initial state.
   std::unique_ptr<Integrator> startIntegrator() const;

@@ -1,4 +1,5 @@
 #include "scenes/SceneLoader.h"
+#include "scenes/BuiltinTools.h"
 #include "scenes/SectionTextKeys.h"
 #include "scenes/Session.h"
 
@@ -239,7 +240,7 @@ const TextKey textKeys[] = {
      "the starting point of the search in map coordinates (default: the scene's initial map point)",
      "numbers"},
     {"branches", "separatrix", "belongs to the \"separatrix\" section",
-     // read where it is used (scenes/MapTools.cpp), from the document; checked here
+     // read where it is used (scenes/builtin/MapTools.cpp), from the document; checked here
      [](const json& j, const Where& w, Scene&) {
        if (j.is_string() && j.get<std::string>() == "all") return;
        for (double b : numbers(j, w))
@@ -257,7 +258,7 @@ const TextKey textKeys[] = {
      [](const json& j, const Where& w, Scene& scene) { scene.continuationTo = number(j, w); },
      "the finite value of the parameter", "number"},
     {"second_parameter", "bifurcation_curve", "belongs to the \"bifurcation_curve\" section",
-     // read where it is used (scenes/BuiltinTools.cpp), from the document; checked here
+     // read where it is used (scenes/builtin/BifurcationCurveTool.cpp), from the document; checked here
      [](const json& j, const Where& w, Scene& scene) {
        const std::string id = text(j, w);
        if (scene.model->info().parameters.find(id) < 0)
@@ -265,14 +266,14 @@ const TextKey textKeys[] = {
      },
      "the second parameter of the curve (the first is continuation.parameter)", "text", true, true},
     {"level", "grid", "belongs to the \"grid\" section",
-     // read where it is used (scenes/GridTools.cpp), from the document; checked here
+     // read where it is used (scenes/builtin/GridTools.cpp), from the document; checked here
      [](const json& j, const Where& w, Scene& scene) {
        const std::string id = text(j, w);
        if (scene.model->findObservable(id) < 0) w.fail("not an observable of " + scene.model->info().id);
      },
      "2D maps, region of allowed motion: the observable giving the energy level's height above the region"},
     {"diagram", "diagram", "",
-     // read where it is used (scenes/BuiltinTools.cpp), from the document; checked here
+     // read where it is used (scenes/builtin/DiagramTool.cpp), from the document; checked here
      [](const json& j, const Where& w, Scene& scene) {
        const std::string id = text(j, w);
        std::string known;
@@ -293,7 +294,8 @@ const TextKey textKeys[] = {
     {"step", "diagram", "", [](const json& j, const Where& w, Scene&) { (void)number(j, w); },
      "the step of the branch parameter (default: the branch's)", "number", true},
     {"function", "spectrum", "",
-     [](const json& j, const Where& w, Scene& scene) { scene.spectrum.function = text(j, w); },
+     // read where it is used (scenes/builtin/SpectrumTool.cpp), from the document; checked here
+     [](const json& j, const Where& w, Scene&) { (void)text(j, w); },
      "the observable whose spectrum is taken", "text", true},
     {"x", "plot", "",
      [](const json& j, const Where& w, Scene& scene) { scene.plot.settings.axes[0] = text(j, w); },
@@ -433,14 +435,19 @@ const std::set<std::string>& sceneKeys() {
 }
 
 namespace {
-// the render layer's settings section (the video encoder's, render/video/VideoSettings.h) joins the tools'
-// when this library loads, before any thread reads the sections; sceneFromJson makes sure of it again
-const bool videoSectionRegistered = (registerVideoSection(), true);
+// rollviz's own tools (scenes/BuiltinTools.h), then the render layer's settings section (the video encoder's,
+// render/video/VideoSettings.h), register when this library loads, before any thread reads the registry or
+// the sections; sceneFromJson makes sure of it again
+void registerSections() {
+  registerBuiltinTools();
+  registerVideoSection();
+}
+const bool sectionsRegistered = (registerSections(), true);
 } // namespace
 
 Scene sceneFromJson(json doc, const std::string& source, const std::vector<SceneOverride>& overrides) {
-  registerVideoSection();
-  (void)videoSectionRegistered;
+  registerSections();
+  (void)sectionsRegistered;
   const Where root{source, ""};
   requireObject(doc, root);
   applyOverrides(doc, overrides, source);
@@ -489,10 +496,8 @@ Scene sceneFromJson(json doc, const std::string& source, const std::vector<Scene
 
   readToolSections(doc, root, scene);
   scene.poincare = poincareSettings(scene.tool("poincare"), scene.poincare.observable);
-  scene.lyapunov = lyapunovSettings(scene.tool("lyapunov"));
-  scene.megno = megnoSettings(scene.tool("megno"));
-  scene.spectrum = spectrumSettings(scene.tool("spectrum"), scene.spectrum.function);
   applyPlotTable(scene.tool("plot"), scene.plot);
+  scene.megno = scene.settings(megnoSettingsTable(), "megno");
   if (!scene.poincare.observable.empty() && !scene.model->isMap() &&
       scene.model->findObservable(scene.poincare.observable) < 0)
     (root / "poincare" / "section")

@@ -14,7 +14,7 @@ SceneMap::SceneMap(Scene scene, const MapToolOverrides& o, bool needGuess)
   if (o.order < 0) throw InputError("--order: must be at least 1");
   if (o.order > 0) fp.set("order", o.order, "--order");
   if (!o.method.empty()) fp.setChoice("method", o.method, "--method");
-  search_ = fixedPointSettings(fp);
+  search_ = fixedPointSettingsTable().read(fp);
   section_ = scene_.poincare;
   section_.order = static_cast<int>(fp["order"]);
   const ReturnMap probe = map(); // validates the map (coordinates, section)
@@ -48,7 +48,9 @@ ReturnMap SceneMap::map() const {
 ContinuationSettings SceneMap::continuation() const {
   ParameterValues cv = scene_.tool("continuation");
   if (overrides_.step) cv.set("step", *overrides_.step, "--step");
-  ContinuationSettings c = continuationSettings(cv, search_);
+  ContinuationSettings c;
+  c.search = search_;
+  c = continuationSettingsTable().read(cv, c);
   c.parameter = overrides_.parameter.empty() ? scene_.continuationParameter : overrides_.parameter;
   if (c.parameter.empty()) throw InputError("--param: give the parameter to continue in");
   if (scene_.model->info().parameters.find(c.parameter) < 0)

@@ -87,8 +87,13 @@ struct SweepQuantity {
   std::function<void(Scene&)> narrow = {};
 };
 
-/// Every quantity a sweep can chart.
+/// Every quantity a sweep can chart: those the tools add (addSweepQuantity), then a number for each output
+/// marked `quantity` (ToolEntry::outputs) of every tool with a runner.
 const std::vector<SweepQuantity>& sweepQuantities();
+/// Adds a quantity its tool computes otherwise than by reading a number of its result (a count of
+/// exponents, a fixed point's type code, an orbit diagram): a built-in tool registers its own
+/// (scenes/builtin/BuiltinTool.h), before the first sweep. InputError when the id is taken.
+void addSweepQuantity(SweepQuantity quantity);
 
 /// A validated sweep.
 struct SweepSpec {

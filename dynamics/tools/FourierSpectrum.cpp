@@ -18,45 +18,33 @@ std::mutex& plannerMutex() { // FFTW's planner is not thread-safe; execution is
 }
 } // namespace
 
-const ParameterTable& spectrumTable() {
-  const SpectrumSettings d;
-  static const ParameterTable t{
-      {.id = "samples",
-       .label = "Number of samples",
-       .defaultValue = static_cast<double>(d.samples),
-       .min = 8,
-       .max = 1e9,
-       .description = "integration steps sampled (a fixed-step method; the step is the sampling interval)",
-       .integer = true},
-      {.id = "max_frequency",
-       .label = "Max. frequency",
-       .defaultValue = d.maxFrequency,
-       .min = 0,
-       .description = "frequencies above are not shown (0: up to the Nyquist frequency)"},
-      {.id = "peaks",
-       .label = "Number of peaks",
-       .defaultValue = static_cast<double>(d.peaks),
-       .min = 0,
-       .max = 1000,
-       .description = "how many of the strongest peaks are reported",
-       .integer = true},
-      {.id = "min_peak_distance",
-       .label = "Min. distance between peaks",
-       .defaultValue = d.minPeakDistance,
-       .min = 0,
-       .description = "peaks closer than this in frequency count as one"},
+const SettingsTable<SpectrumSettings>& spectrumSettingsTable() {
+  using S = SpectrumSettings;
+  using T = SettingsTable<S>;
+  static const T t{
+      T::number(&S::samples,
+                {.id = "samples",
+                 .label = "Number of samples",
+                 .min = 8,
+                 .max = 1e9,
+                 .description =
+                     "integration steps sampled (a fixed-step method; the step is the sampling interval)"}),
+      T::number(&S::maxFrequency,
+                {.id = "max_frequency",
+                 .label = "Max. frequency",
+                 .min = 0,
+                 .description = "frequencies above are not shown (0: up to the Nyquist frequency)"}),
+      T::number(&S::peaks, {.id = "peaks",
+                            .label = "Number of peaks",
+                            .min = 0,
+                            .max = 1000,
+                            .description = "how many of the strongest peaks are reported"}),
+      T::number(&S::minPeakDistance, {.id = "min_peak_distance",
+                                      .label = "Min. distance between peaks",
+                                      .min = 0,
+                                      .description = "peaks closer than this in frequency count as one"}),
   };
   return t;
-}
-
-SpectrumSettings spectrumSettings(const ParameterValues& v, std::string function) {
-  SpectrumSettings s;
-  s.function = std::move(function);
-  s.samples = static_cast<long>(v["samples"]);
-  s.maxFrequency = v["max_frequency"];
-  s.peaks = static_cast<int>(v["peaks"]);
-  s.minPeakDistance = v["min_peak_distance"];
-  return s;
 }
 
 SpectrumResult spectrumOf(const std::vector<double>& x, double step, const SpectrumSettings& s) {

@@ -3,7 +3,7 @@
 // design and implementation of FFTW3, Proc. IEEE 93 (2005) 216), with its strongest peaks located by
 // parabolic interpolation of the log amplitude around each local maximum.
 #pragma once
-#include "dynamics/core/ParameterTable.h"
+#include "dynamics/core/SettingsTable.h"
 #include "dynamics/integrators/Integrator.h"
 #include "dynamics/tools/ToolControl.h"
 
@@ -20,11 +20,9 @@ struct SpectrumSettings {
   double minPeakDistance = 0; ///< peaks closer than this (in frequency) count as one
 };
 
-/// The settings of the "spectrum" scene section (samples, max_frequency, peaks, min_peak_distance), declared
-/// once; the observable, "function", is text and read beside the table.
-const ParameterTable& spectrumTable();
-/// The settings from the table's values and the observable to expand.
-SpectrumSettings spectrumSettings(const ParameterValues& v, std::string function);
+/// The settings of the "spectrum" scene section (samples, max_frequency, peaks, min_peak_distance), each
+/// beside its member; the observable, "function", is text and read beside the table.
+const SettingsTable<SpectrumSettings>& spectrumSettingsTable();
 
 struct SpectrumPeak {
   double frequency = 0; ///< cycles per unit time

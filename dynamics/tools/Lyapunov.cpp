@@ -13,120 +13,98 @@
 
 namespace rv {
 
-const ParameterTable& lyapunovTable() {
-  const LyapunovSettings d; // the defaults
-  static const ParameterTable t{
-      {.id = "mode",
-       .label = "Method",
-       .defaultValue = d.mode == LyapunovSettings::Mode::Tangent ? 0.0 : 1.0,
-       .min = 0,
-       .max = 1,
-       .description = "tangent (variational equations, exact Jacobian) or perturbed (nearby trajectories)",
-       .integer = true,
-       .choices = {"tangent", "perturbed"}},
-      {.id = "count",
-       .label = "Number of exponents",
-       .defaultValue = static_cast<double>(d.count),
-       .min = 0,
-       .max = 1e6,
-       .description = "how many of the largest exponents; 0: as many as the dimension",
-       .integer = true},
-      {.id = "interval",
-       .label = "Orthonormalisation interval",
-       .defaultValue = d.interval,
-       .min = 1e-300,
-       .max = 1e300,
-       .description = "the longest time between re-orthonormalisations (tangent method: shorter where the "
-                      "vectors spread beyond `spread`; maps: iterations)"},
-      {.id = "spread",
-       .label = "Largest spread in an interval",
-       .defaultValue = d.spread,
-       .min = 0,
-       .max = 1e12,
-       .description = "tangent method: an interval in which a vector shrinks or cancels by more than this "
-                      "factor is taken again at half the length (and grows back to the interval where they "
-                      "keep within); 0: every interval as set"},
-      {.id = "transient",
-       .label = "Transient",
-       .defaultValue = d.transient,
-       .min = 0,
-       .max = 1e300,
-       .description = "time integrated first and discarded (the vectors align with the directions of "
-                      "growth); the exponents are averaged over the time after it"},
-      {.id = "perturbation",
-       .label = "Initial perturbation",
-       .defaultValue = d.perturbation,
-       .min = 1e-300,
-       .max = 1e300,
-       .description = "distance of the nearby trajectories (perturbed method)"},
-      {.id = "max_perturbation",
-       .label = "Max. perturbation",
-       .defaultValue = d.maxPerturbation,
-       .min = 1e-300,
-       .max = 1e300,
-       .description = "perturbed method: an interval is halved while a perturbation grows beyond this"},
-      {.id = "estimate_every",
-       .label = "Iterations between estimates",
-       .defaultValue = static_cast<double>(d.estimateEvery),
-       .min = 1,
-       .max = 1e9,
-       .description = "estimates this many intervals apart are compared for the stopping rule",
-       .integer = true},
-      {.id = "accuracy",
-       .label = "Accuracy",
-       .defaultValue = d.accuracy,
-       .min = 1e-300,
-       .max = 1e300,
-       .description = "compared estimates this close count as a success"},
-      {.id = "successes",
-       .label = "Successful comparisons",
-       .defaultValue = static_cast<double>(d.successes),
-       .min = 0,
-       .max = 1e9,
-       .description = "stop after this many successes in a row (0: run to the time)",
-       .integer = true},
-      {.id = "output_period",
-       .label = "Output period",
-       .defaultValue = d.outputPeriod,
-       .min = 1e-300,
-       .max = 1e300,
-       .description = "time between the estimates streamed to charts"},
-      {.id = "renormalize",
-       .label = "Keep to the integrals' level",
-       .defaultValue = d.renormalizeIntegrals ? 1.0 : 0.0,
-       .min = 0,
-       .max = 1,
-       .description = "project the tangent vectors on the level set of the first integrals (the trivial "
-                      "exponents vanish)",
-       .integer = true,
-       .choices = {"no", "yes"}},
-      {.id = "time",
-       .label = "Time",
-       .defaultValue = d.maxTime,
-       .min = 1e-300,
-       .max = 1e300,
-       .description = "time over which the exponents are averaged, after the transient (maps: iterations)"},
+const SettingsTable<LyapunovSettings>& lyapunovSettingsTable() {
+  using S = LyapunovSettings;
+  using T = SettingsTable<S>;
+  static const T t{
+      T::choice(&S::mode,
+                {.id = "mode",
+                 .label = "Method",
+                 .description =
+                     "tangent (variational equations, exact Jacobian) or perturbed (nearby trajectories)",
+                 .choices = {"tangent", "perturbed"}},
+                std::vector{S::Mode::Tangent, S::Mode::Perturbed}),
+      T::number(&S::count, {.id = "count",
+                            .label = "Number of exponents",
+                            .min = 0,
+                            .max = 1e6,
+                            .description = "how many of the largest exponents; 0: as many as the dimension"}),
+      T::number(&S::interval,
+                {.id = "interval",
+                 .label = "Orthonormalisation interval",
+                 .min = 1e-300,
+                 .max = 1e300,
+                 .description =
+                     "the longest time between re-orthonormalisations (tangent method: shorter where the "
+                     "vectors spread beyond `spread`; maps: iterations)"}),
+      T::number(&S::spread,
+                {.id = "spread",
+                 .label = "Largest spread in an interval",
+                 .min = 0,
+                 .max = 1e12,
+                 .description =
+                     "tangent method: an interval in which a vector shrinks or cancels by more than this "
+                     "factor is taken again at half the length (and grows back to the interval where they "
+                     "keep within); 0: every interval as set"}),
+      T::number(&S::transient,
+                {.id = "transient",
+                 .label = "Transient",
+                 .min = 0,
+                 .max = 1e300,
+                 .description =
+                     "time integrated first and discarded (the vectors align with the directions of "
+                     "growth); the exponents are averaged over the time after it"}),
+      T::number(&S::perturbation, {.id = "perturbation",
+                                   .label = "Initial perturbation",
+                                   .min = 1e-300,
+                                   .max = 1e300,
+                                   .description = "distance of the nearby trajectories (perturbed method)"}),
+      T::number(
+          &S::maxPerturbation,
+          {.id = "max_perturbation",
+           .label = "Max. perturbation",
+           .min = 1e-300,
+           .max = 1e300,
+           .description = "perturbed method: an interval is halved while a perturbation grows beyond this"}),
+      T::number(&S::estimateEvery,
+                {.id = "estimate_every",
+                 .label = "Iterations between estimates",
+                 .min = 1,
+                 .max = 1e9,
+                 .description = "estimates this many intervals apart are compared for the stopping rule"}),
+      T::number(&S::accuracy, {.id = "accuracy",
+                               .label = "Accuracy",
+                               .min = 1e-300,
+                               .max = 1e300,
+                               .description = "compared estimates this close count as a success"}),
+      T::number(&S::successes,
+                {.id = "successes",
+                 .label = "Successful comparisons",
+                 .min = 0,
+                 .max = 1e9,
+                 .description = "stop after this many successes in a row (0: run to the time)"}),
+      T::number(&S::outputPeriod, {.id = "output_period",
+                                   .label = "Output period",
+                                   .min = 1e-300,
+                                   .max = 1e300,
+                                   .description = "time between the estimates streamed to charts"}),
+      T::choice(&S::renormalizeIntegrals,
+                {.id = "renormalize",
+                 .label = "Keep to the integrals' level",
+                 .description =
+                     "project the tangent vectors on the level set of the first integrals (the trivial "
+                     "exponents vanish)",
+                 .choices = {"no", "yes"}},
+                std::vector{false, true}),
+      T::number(&S::maxTime,
+                {.id = "time",
+                 .label = "Time",
+                 .min = 1e-300,
+                 .max = 1e300,
+                 .description =
+                     "time over which the exponents are averaged, after the transient (maps: iterations)"}),
   };
   return t;
-}
-
-LyapunovSettings lyapunovSettings(const ParameterValues& v) {
-  LyapunovSettings l;
-  l.mode =
-      v.choice("mode") == "tangent" ? LyapunovSettings::Mode::Tangent : LyapunovSettings::Mode::Perturbed;
-  l.count = static_cast<int>(v["count"]);
-  l.interval = v["interval"];
-  l.spread = v["spread"];
-  l.transient = v["transient"];
-  l.perturbation = v["perturbation"];
-  l.maxPerturbation = v["max_perturbation"];
-  l.estimateEvery = static_cast<int>(v["estimate_every"]);
-  l.accuracy = v["accuracy"];
-  l.successes = static_cast<int>(v["successes"]);
-  l.outputPeriod = v["output_period"];
-  l.renormalizeIntegrals = v.choice("renormalize") == "yes";
-  l.maxTime = v["time"];
-  return l;
 }
 
 double LyapunovEstimate::sum() const {

@@ -11,7 +11,7 @@
 // exponents span tens per unit time stays finite and right with no setting (Geist, Parlitz, Lauterborn,
 // Prog. Theor. Phys. 83 (1990) 875: re-orthonormalise before the vectors' ratio nears the precision).
 #pragma once
-#include "dynamics/core/ParameterTable.h"
+#include "dynamics/core/SettingsTable.h"
 #include "dynamics/integrators/Integrator.h"
 #include "dynamics/tools/ToolControl.h"
 
@@ -41,9 +41,8 @@ struct LyapunovSettings {
   double maxTime = 1000; ///< time over which the exponents are averaged, after the transient
 };
 
-/// The scene section "lyapunov" (the one declaration of the settings' defaults and ranges).
-const ParameterTable& lyapunovTable();
-LyapunovSettings lyapunovSettings(const ParameterValues& v);
+/// The scene section "lyapunov", each parameter beside its member.
+const SettingsTable<LyapunovSettings>& lyapunovSettingsTable();
 
 struct LyapunovEstimate {
   double time = 0;

@@ -19,7 +19,7 @@ struct GridAxis {
   double at(int i) const { return min + i * step; }
 };
 
-/// A grid's settings; a default-constructed one holds the defaults of gridTable() (ToolSettings.h).
+/// A grid's settings; a default-constructed one holds the defaults of gridSettingsTable() (ToolSettings.h).
 struct GridSettings {
   /// the map coordinates in order; the third only for 3D grids
   std::array<GridAxis, 3> axes{GridAxis{-1, 1, 0.02}, GridAxis{-1, 1, 0.02}, GridAxis{0, 1, 0.05}};

@@ -6,36 +6,30 @@
 
 namespace rv {
 
-const ParameterTable& megnoTable() {
-  const MegnoSettings d; // the defaults
-  static const ParameterTable t{
-      {.id = "time",
-       .label = "Time",
-       .defaultValue = d.maxTime,
-       .min = 1e-300,
-       .max = 1e300,
-       .description = "integration time (maps: iterations)"},
-      {.id = "output_period",
-       .label = "Output period",
-       .defaultValue = d.outputPeriod,
-       .min = 1e-300,
-       .max = 1e300,
-       .description =
-           "time between the estimates streamed to charts (given at the ends of the renormalisation "
-           "intervals)"},
-      {.id = "interval",
-       .label = "Renormalisation interval",
-       .defaultValue = d.interval,
-       .min = 1e-300,
-       .max = 1e300,
-       .description = "the tangent vector is scaled back to length 1 this often (flows); the logarithms add "
-                      "up in the FLI"},
+const SettingsTable<MegnoSettings>& megnoSettingsTable() {
+  using T = SettingsTable<MegnoSettings>;
+  static const T t{
+      T::number(&MegnoSettings::maxTime, {.id = "time",
+                                          .label = "Time",
+                                          .min = 1e-300,
+                                          .max = 1e300,
+                                          .description = "integration time (maps: iterations)"}),
+      T::number(&MegnoSettings::outputPeriod,
+                {.id = "output_period",
+                 .label = "Output period",
+                 .min = 1e-300,
+                 .max = 1e300,
+                 .description = "time between the estimates streamed to charts (given at the ends of the "
+                                "renormalisation intervals)"}),
+      T::number(&MegnoSettings::interval,
+                {.id = "interval",
+                 .label = "Renormalisation interval",
+                 .min = 1e-300,
+                 .max = 1e300,
+                 .description = "the tangent vector is scaled back to length 1 this often (flows); the "
+                                "logarithms add up in the FLI"}),
   };
   return t;
-}
-
-MegnoSettings megnoSettings(const ParameterValues& v) {
-  return {.maxTime = v["time"], .outputPeriod = v["output_period"], .interval = v["interval"]};
 }
 
 namespace detail {

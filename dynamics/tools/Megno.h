@@ -12,7 +12,7 @@
 // FLI (Fast Lyapunov Indicator): ln |w(t)| of the tangent vector (Froeschle, Lega, Gonczi, Celest. Mech.
 // Dyn. Astron. 67 (1997) 41-62), kept finite by renormalising w and adding up the logarithms.
 #pragma once
-#include "dynamics/core/ParameterTable.h"
+#include "dynamics/core/SettingsTable.h"
 #include "dynamics/core/Snapshot.h"
 #include "dynamics/tools/Lyapunov.h"
 
@@ -48,9 +48,8 @@ struct MegnoSettings {
   double interval = 10;     ///< the tangent vector is renormalised (and flows restarted) this often
 };
 
-/// The scene section "megno": time, output_period, interval (the one declaration of the defaults).
-const ParameterTable& megnoTable();
-MegnoSettings megnoSettings(const ParameterValues& v);
+/// The scene section "megno": time, output_period, interval, each beside its member.
+const SettingsTable<MegnoSettings>& megnoSettingsTable();
 
 struct MegnoEstimate {
   double time = 0;

@@ -3,7 +3,8 @@
 // holds its settings (one declaration: default, range, description, scene key, `--set SECTION.ID=VALUE`, GUI
 // field and `rollviz describe-tool` line), the CLI command and chart view that run it, and what it outputs.
 // The CLI's `list tools` / `describe-tool`, the GUI's tool tree and settings tabs and the scene loader's
-// sections iterate it.
+// sections iterate it. It holds what is registered: rollviz's own tools register from the scenes layer, each
+// with its runner (scenes/BuiltinTools.h), as a module's do (scenes/Module.h).
 #pragma once
 #include "dynamics/core/ParameterTable.h"
 
@@ -61,7 +62,7 @@ class ToolRegistry {
 public:
   /// Every tool: rollviz's own and those the loaded modules added (scenes/ModuleLoader.h).
   static const ToolRegistry& global();
-  /// The same registry, for the module loader to add to (before any other use).
+  /// The same registry, for the built-in tools (scenes/BuiltinTools.h) and the module loader to add to.
   static ToolRegistry& mutableGlobal();
   /// Adds an entry (its parent, when it names one, must be registered); throws InputError naming both origins
   /// when the id or the command is taken.

@@ -1,11 +1,11 @@
 // TrajectoryLanes.h -- the plain orbits of up to 8 points of a flow integrated at once, one per SIMD lane
 // (dynamics/core/Lanes.h): what a sweep of a trajectory quantity (an observable's value or time average, the
-// rattleback's reversal; scenes/Sweep.cpp) reads step by step, and where each crosses a Poincare section (an
-// orbit diagram), located lane by lane. The orbits' fields are stacked component-major
-// into one system whose right-hand side is the models' lane kernel, stepped by a method that steps each lane
-// as alone with one time for all (Integrator::stepLanesAlone: rk4, everhart at a fixed step, adams): each
-// lane's steps are those of its orbit integrated alone, bit for bit, so what a sweep reads of a point cannot
-// depend on the points beside it.
+// rattleback's reversal; scenes/builtin/SweepTool.cpp) reads step by step, and where each crosses a Poincare
+// section (an orbit diagram), located lane by lane. The orbits' fields are stacked component-major into one
+// system whose right-hand side is the models' lane kernel, stepped by a method that steps each lane as alone
+// with one time for all (Integrator::stepLanesAlone: rk4, everhart at a fixed step, adams): each lane's steps
+// are those of its orbit integrated alone, bit for bit, so what a sweep reads of a point cannot depend on the
+// points beside it.
 #pragma once
 #include "dynamics/integrators/Integrator.h"
 #include "dynamics/tools/PoincareMap.h"

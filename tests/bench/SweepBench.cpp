@@ -60,7 +60,7 @@ void sweepOnOneThread(const SweepSpec& spec) {
 // MEGNO over initial points, one thread: several points at once on SIMD lanes (0: the CPU's width; 4; 8)
 // against one at a time (1). With rk4 (h = 0.01) each lane is the scalar run bit for bit; with the scene's
 // Everhart 15 (h = 0.05) and adams (order 12, h = 0.05) a sweep runs one point at a time either way
-// (scenes/Sweep.cpp says why): their rows show that it costs nothing
+// (scenes/builtin/MegnoTool.cpp says why): their rows show that it costs nothing
 void SweepLanes(benchmark::State& state) {
   const char* method = state.range(1) == 0 ? "everhart" : state.range(1) == 1 ? "rk4" : "adams";
   nlohmann::json doc{{"scene", defaultScenePath("henon_heiles")},

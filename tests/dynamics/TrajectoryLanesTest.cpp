@@ -1,8 +1,8 @@
 // Plain orbits on lanes (dynamics/tools/TrajectoryLanes.h): every step of every orbit, as integrating that
-// orbit alone gives it (the loop of a sweep's trajectory quantity, scenes/Sweep.cpp's integrateTo), bit for
-// bit -- rattlebacks of eight shapes with rk4, everhart at a fixed step and adams; what cannot go on lanes
-// says so; a batch with an orbit that blows up fails, for its orbits to be integrated alone. Their Poincare
-// points, each orbit's map alone's.
+// orbit alone gives it (the loop of a sweep's trajectory quantity, scenes/builtin/SweepTool.cpp's
+// integrateTo), bit for bit -- rattlebacks of eight shapes with rk4, everhart at a fixed step and adams; what
+// cannot go on lanes says so; a batch with an orbit that blows up fails, for its orbits to be integrated
+// alone. Their Poincare points, each orbit's map alone's.
 #include "dynamics/tools/TrajectoryLanes.h"
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/LaneField.h"

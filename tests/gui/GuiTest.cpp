@@ -69,7 +69,9 @@ private slots:
     function->setCurrentText(QString::fromStdString(scene.model->observables().back().id));
     QCOMPARE(panel.editedDocument()["spectrum"]["function"].get<std::string>(),
              scene.model->observables().back().id);
-    QCOMPARE(sceneFromJson(panel.editedDocument(), "edited.json").spectrum.function,
+    QCOMPARE(sceneFromJson(panel.editedDocument(), "edited.json")
+                 .document["spectrum"]["function"]
+                 .get<std::string>(),
              scene.model->observables().back().id);
   }
 

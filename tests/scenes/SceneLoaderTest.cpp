@@ -230,9 +230,10 @@ TEST(SceneLoader, LyapunovAndMegnoSettingsComeFromTheirTables) {
   const Scene s = sceneFromJson(ball(), "s.json",
                                 {parseOverride("lyapunov.mode=perturbed"), parseOverride("lyapunov.time=77"),
                                  parseOverride("lyapunov.renormalize=true"), parseOverride("megno.time=5")});
-  EXPECT_EQ(s.lyapunov.mode, LyapunovSettings::Mode::Perturbed);
-  EXPECT_EQ(s.lyapunov.maxTime, 77);
-  EXPECT_TRUE(s.lyapunov.renormalizeIntegrals);
+  const LyapunovSettings lyapunov = s.settings(lyapunovSettingsTable(), "lyapunov");
+  EXPECT_EQ(lyapunov.mode, LyapunovSettings::Mode::Perturbed);
+  EXPECT_EQ(lyapunov.maxTime, 77);
+  EXPECT_TRUE(lyapunov.renormalizeIntegrals);
   EXPECT_EQ(s.tool("megno")["time"], 5);
   EXPECT_NE(errorOf(ball(), {parseOverride("lyapunov.interval=-1")}).find("lyapunov.interval"),
             std::string::npos)
@@ -247,9 +248,10 @@ TEST(SceneLoader, SpectrumAndPlotSettingsComeFromTheirTablesBesideTheirTextKeys)
       {"x", "t"},          {"y", "M1"},  {"z", "M2"},   {"condition", "t"},    {"period", 0.5},
       {"max_points", 300}, {"x_min", 0}, {"x_max", 10}, {"point_type", "big"}, {"hold_proportions", true}};
   const Scene s = sceneFromJson(j, "s.json");
-  EXPECT_EQ(s.spectrum.function, "M1");
-  EXPECT_EQ(s.spectrum.samples, 512);
-  EXPECT_EQ(s.spectrum.peaks, 3);
+  const SpectrumSettings spectrum = s.settings(spectrumSettingsTable(), "spectrum");
+  EXPECT_EQ(s.document["spectrum"]["function"], "M1");
+  EXPECT_EQ(spectrum.samples, 512);
+  EXPECT_EQ(spectrum.peaks, 3);
   EXPECT_EQ(s.plot.settings.axes, (std::vector<std::string>{"t", "M1", "M2"}));
   EXPECT_EQ(s.plot.settings.period, 0.5);
   EXPECT_EQ(s.plot.settings.maxPoints, 300);
@@ -260,7 +262,7 @@ TEST(SceneLoader, SpectrumAndPlotSettingsComeFromTheirTablesBesideTheirTextKeys)
   EXPECT_TRUE(s.plot.chart.holdProportions);
   // the defaults are the structs' own (one declaration)
   const Scene d = sceneFromJson(ball(), "s.json");
-  EXPECT_EQ(d.spectrum.samples, SpectrumSettings{}.samples);
+  EXPECT_EQ(d.settings(spectrumSettingsTable(), "spectrum").samples, SpectrumSettings{}.samples);
   EXPECT_EQ(d.plot.settings.period, PlotSettings{}.period);
   EXPECT_EQ(d.plot.chart.pointSize, PlotChartOptions{}.pointSize);
   // bad values are named by their path; an unknown key is told the section's keys, text keys included

@@ -139,7 +139,8 @@ TEST(Sweep, LorenzLargestExponentKnownAnswers) {
   const Scene scene = loadScene(defaultScenePath("lorenz"), {{"lyapunov.time", "300"}, {"rho", "28"}});
   const RunSpec spec = scene.runSpec();
   LyapunovRun run(
-      *scene.model, [&] { return spec.makeIntegrator(*scene.model); }, scene.initialState, scene.lyapunov);
+      *scene.model, [&] { return spec.makeIntegrator(*scene.model); }, scene.initialState,
+      scene.settings(lyapunovSettingsTable(), "lyapunov"));
   ASSERT_TRUE(run.run());
   const SweepRecord at28 = evaluate(s, 1);
   // (the sweep follows L1's vector alone, whose intervals need not shorten for L3's contraction: to rounding)
@@ -554,7 +555,7 @@ TEST(Sweep, TheLargestExponentAloneIsTheWholeSpectrumsFirst) {
       for (long i = 0; i < s.points(); ++i) {
         Scene narrowed = sweepPointScene(s, i);
         s.quantity->narrow(narrowed);
-        EXPECT_EQ(narrowed.lyapunov.count, 1);
+        EXPECT_EQ(narrowed.settings(lyapunovSettingsTable(), "lyapunov").count, 1);
         const ToolResult whole = runTool(lyapunov, sweepPointScene(s, i), {});
         const auto& l = whole.fields.at("exponents");
         ASSERT_EQ(static_cast<int>(l.size()), exponents) << problem;
@@ -589,14 +590,14 @@ TEST(Sweep, TheLargestExponentAloneIsTheWholeSpectrumsFirst) {
         sweepFromJson(sweep("lorenz", json::array({axis("rho", 10, 28, 2)}), "lyapunov.max", set), "sw.json");
     Scene scene = sweepPointScene(s, 0);
     s.quantity->narrow(scene);
-    EXPECT_EQ(scene.lyapunov.count, 0) << set.dump();
+    EXPECT_EQ(scene.settings(lyapunovSettingsTable(), "lyapunov").count, 0) << set.dump();
   }
   // and the other outputs need every exponent
   const SweepSpec sum =
       sweepFromJson(sweep("lorenz", json::array({axis("rho", 10, 28, 2)}), "lyapunov.positive"), "sw.json");
   Scene scene = sweepPointScene(sum, 0);
   if (sum.quantity->narrow) sum.quantity->narrow(scene);
-  EXPECT_EQ(scene.lyapunov.count, 0);
+  EXPECT_EQ(scene.settings(lyapunovSettingsTable(), "lyapunov").count, 0);
 }
 
 // The trajectory quantities (observable.NAME, reversal) on lanes: a batch of points' orbits integrated at

@@ -1,4 +1,4 @@
-// MapTools.cpp -- the runners of the fixed-point family (scenes/ToolRunner.h): fixedpoint, continuation,
+// MapTools.cpp -- the tools of the fixed-point family (BuiltinTool.h): fixedpoint, continuation,
 // multipliers, separatrix, bifurcation_tree, on the scene's map. Every front end derives its part from them
 // -- the CLI command (flags, --json, -o, what it says on the way), the Python method (its result's shape is
 // written here, `python`), the chart of a continuation, and the GUI's map window, which draws a family's,
@@ -7,11 +7,10 @@
 #include "dynamics/core/Errors.h"
 #include "dynamics/tools/BifurcationTree.h"
 #include "dynamics/tools/ToolSettings.h"
-#include "scenes/BuiltinTools.h"
 #include "scenes/FixedPointJson.h"
 #include "scenes/JsonFields.h"
 #include "scenes/SceneTools.h"
-#include "scenes/ToolRunner.h"
+#include "scenes/builtin/BuiltinTool.h"
 
 #include <fmt/core.h>
 #include <fmt/format.h>
@@ -323,7 +322,8 @@ ToolResult runSeparatrix(const Scene& scene, const ToolControl& control) {
   result.table.values.assign(result.table.names.size(), {});
   json branches = json::array(), python = json::object();
   for (int b : list) {
-    SeparatrixSettings ss = separatrixSettings(scene.tool("separatrix"), s.search());
+    SeparatrixSettings ss = separatrixSettingsTable().read(scene.tool("separatrix"));
+    ss.fixedPointAccuracy = s.search().accuracy;
     ss.branch = b;
     // each level's points as they are grown, for a front end drawing them (their parameters come with the
     // table, once the branch is grown)
@@ -380,7 +380,10 @@ ToolResult runSeparatrix(const Scene& scene, const ToolControl& control) {
 ToolResult runBifurcationTree(const Scene& scene, const ToolControl& control) {
   const SceneMap s(scene);
   const ContinuationSettings c = s.continuation();
-  const BifurcationTreeSettings t = bifurcationTreeSettings(scene.tool("bifurcation_tree"), c);
+  BifurcationTreeSettings settings;
+  settings.continuation = c;
+  const BifurcationTreeSettings t =
+      bifurcationTreeSettingsTable().read(scene.tool("bifurcation_tree"), settings);
   const double start = s.spec().modelParameters[c.parameter];
   const ReturnMap map = s.map();
   ToolResult result;
@@ -475,52 +478,256 @@ ToolArgument flagArgument(const std::string& name, const std::string& key, const
           .flag = true};
 }
 
+// the smallest d dividing n with |Map^d(x) - x| small: the least period of a point of Map^n
+int leastPeriod(const Scene& scene, const Eigen::VectorXd& x, int n, double tolerance,
+                const ToolControl& control) {
+  for (int d = 1; d < n; ++d) {
+    if (n % d) continue;
+    MapToolOverrides o;
+    o.order = d;
+    const SceneMap m(scene, o, false);
+    const ReturnMap map = m.map();
+    if (map.difference(map(x, control), x).norm() < tolerance) return d;
+  }
+  return n;
+}
+
+// "0 elliptic, 1 hyperbolic, ...": the codes of FixedPointType in the CSV
+std::string typeCodes() {
+  std::string codes;
+  for (int k = 0; k <= static_cast<int>(FixedPointType::Unstable); ++k)
+    codes += fmt::format("{}{} {}", k ? ", " : "", k, toString(static_cast<FixedPointType>(k)));
+  return codes;
+}
+
+// fixedpoint.type: the type of the fixed point found from the grid point
+SweepQuantity fixedPointType() {
+  SweepQuantity q{"fixedpoint.type",
+                  "fixedpoint",
+                  "the type of the fixed point of order fixedpoint.order found from the point: " +
+                      typeCodes(),
+                  [](const SweepSpec&) { return std::vector<std::string>{"fixedpoint.type"}; },
+                  [](const SweepSpec&, const Scene& s, const ToolControl& c) {
+                    const SceneMap m(s);
+                    const ReturnMap map = m.map();
+                    const FixedPointResult r = findFixedPoint(map, m.guess(), m.search(), c);
+                    return std::vector<double>{static_cast<double>(r.type)};
+                  },
+                  /*needsMap=*/true};
+  q.categorical = true;
+  return q;
+}
+
+// fixedpoint.order: the least period of a periodic point near the grid point, and its type
+SweepQuantity fixedPointOrder() {
+  SweepQuantity q{
+      "fixedpoint.order",
+      "fixedpoint",
+      "the least period (1..options.max_order) of a periodic point found within options.radius of "
+      "the point, and its type (as fixedpoint.type)",
+      [](const SweepSpec&) {
+        return std::vector<std::string>{"fixedpoint.order", "fixedpoint.type"};
+      },
+      [](const SweepSpec& sp, const Scene& s, const ToolControl& c) {
+        const int maxOrder = static_cast<int>(sp.options->get("max_order"));
+        const double radius = sp.options->get("radius");
+        std::string last = "no periodic point of order <= " + std::to_string(maxOrder);
+        for (int n = 1; n <= maxOrder; ++n) {
+          MapToolOverrides o;
+          o.order = n;
+          const SceneMap m(s, o);
+          const ReturnMap map = m.map();
+          FixedPointResult r;
+          try {
+            r = findFixedPoint(map, m.guess(), m.search(), c);
+          } catch (const ComputationError& e) {
+            last = e.what();
+            continue;
+          }
+          if (map.difference(r.point, m.guess()).norm() > radius) continue;
+          const int period = leastPeriod(s, r.point, n, 1e3 * m.search().accuracy + 1e-9, c);
+          return std::vector<double>{static_cast<double>(period), static_cast<double>(r.type)};
+        }
+        throw ComputationError(fmt::format("within radius {}: {}", radius, last));
+      },
+      /*needsMap=*/true};
+  q.categorical = true;
+  return q;
+}
+
+// --step STEP: continuation.step
+ToolArgument stepArgument() {
+  return settingArgument("step", "continuation.step", "STEP",
+                         "signed step of the parameter (default: continuation.step)");
+}
+
 } // namespace
 
-void registerMapTools() {
-  addToolRunner(
-      "fixedpoint",
-      {.run = runFixedPoint,
-       .arguments = {guessArgument(), flagArgument("path", "fixedpoint.path", "\"yes\"",
-                                                   "also give the whole search path (the manual's \"show "
-                                                   "all points\"; fixedpoint.path = yes)")},
-       .describe = describeFixedPoint,
-       .complexFields = {"multipliers"},
-       .window = ToolWindow::MapSearch});
-  auto continuation = continuationArguments();
-  continuation.push_back(
-      flagArgument("arclength", "continuation.method", "\"arclength\"",
-                   "pseudo-arclength continuation, which passes folds (continuation.method = "
-                   "arclength)"));
-  continuation.push_back(flagArgument("doubled", "continuation.switch", "1",
-                                      "branch switching: the family of doubled order born at the first "
-                                      "period doubling instead, continued to the "
-                                      "end of [start, --to] on its side (continuation.switch = 1)"));
-  addToolRunner("continuation", {.run = runContinuation,
-                                 .arguments = continuation,
-                                 .tableIsResult = true,
-                                 .complexFields = {"multipliers"},
-                                 .window = ToolWindow::MapRows});
-  auto separatrix = searchArguments();
-  separatrix.push_back(branchArgument());
-  addToolRunner("separatrix", {.run = runSeparatrix,
-                               .arguments = separatrix,
-                               .tableIsResult = true,
-                               .complexFields = {"multipliers"},
-                               .window = ToolWindow::MapRows});
-  auto tree = continuationArguments();
-  tree.push_back(searchArguments()[2]); // --method: the search's (the tree's section has none)
-  tree.push_back(settingArgument("step", "continuation.step", "STEP",
-                                 "signed step of the parameter (default: continuation.step)"));
-  auto multipliers = continuationArguments();
-  multipliers.push_back(tree.back()); // --step
-  addToolRunner("multipliers",
-                {.run = runMultipliers, .arguments = multipliers, .complexFields = {"multipliers"}});
-  addToolRunner("bifurcation_tree", {.run = runBifurcationTree,
-                                     .arguments = tree,
-                                     .tableIsResult = true,
-                                     .window = ToolWindow::MapRows,
-                                     .ellipticMultipliersEachRow = true});
+BuiltinTool fixedPointTool() {
+  return {
+      .entry = {.id = "fixedpoint",
+                .title = "Fixed points",
+                .description = "Newton (or gradient) search from fixedpoint.guess; its type and multipliers",
+                .section = "fixedpoint",
+                .command = "fixedpoint",
+                .commandHelp = "a fixed point of order n of the scene's map, its multipliers and type",
+                .outputs = {{"point", "the fixed point"},
+                            {"coordinates", "the names of its coordinates"},
+                            {"type", "elliptic, hyperbolic, ..."},
+                            {"multipliers", "the eigenvalues of D(Map^n), [re, im] each (complex in Python)"},
+                            {"residual", "|Map^n(x) - x|"},
+                            {"family",
+                             "the dimension of the family of fixed points it lies on (0: isolated; a map with "
+                             "integrals has families: the search ends at the point nearest the guess)"},
+                            {"iterations", "the search's iterations"},
+                            {"evaluations", "the map evaluations it spent"},
+                            {"order", "n"},
+                            {"<path>",
+                             "with fixedpoint.path = yes (--path): each point of the search and its residual "
+                             "(always in Python, as rows)"}},
+                .reference = "manual §2.3.4",
+                .computation =
+                    "dynamics/tools/FixedPoint.h (findFixedPoint); its runner scenes/builtin/MapTools.cpp"},
+      .settings = ToolSection{.title = "Fixed point finding", .table = &fixedPointSettingsTable().table()},
+      .runner = ToolRunner{.run = runFixedPoint,
+                           .arguments = {guessArgument(),
+                                         flagArgument("path", "fixedpoint.path", "\"yes\"",
+                                                      "also give the whole search path (the manual's \"show "
+                                                      "all points\"; fixedpoint.path = yes)")},
+                           .describe = describeFixedPoint,
+                           .complexFields = {"multipliers"},
+                           .window = ToolWindow::MapSearch},
+      .quantities = {fixedPointType(), fixedPointOrder()}};
+}
+
+BuiltinTool continuationTool() {
+  auto arguments = continuationArguments();
+  arguments.push_back(flagArgument("arclength", "continuation.method", "\"arclength\"",
+                                   "pseudo-arclength continuation, which passes folds (continuation.method = "
+                                   "arclength)"));
+  arguments.push_back(flagArgument("doubled", "continuation.switch", "1",
+                                   "branch switching: the family of doubled order born at the first "
+                                   "period doubling instead, continued to the "
+                                   "end of [start, --to] on its side (continuation.switch = 1)"));
+  return {
+      .entry = {.id = "continuation",
+                .title = "Continuation",
+                .parent = "fixedpoint",
+                .description =
+                    "the family of the fixed point in continuation.parameter up to continuation.to",
+                .section = "continuation",
+                .command = "continue",
+                .commandHelp = "continue a fixed point in a parameter: the family, its multipliers and where "
+                               "its type changes",
+                .chartView = "continuation",
+                .outputs = {{"parameter",
+                             "the continued parameter: its name (JSON), its value at each point (a column)"},
+                            {"<map coordinates>", "the fixed point"},
+                            {"<re1, im1, ...>", "its multipliers"},
+                            {"residual", "|Map^n(x) - x| at each point"},
+                            {"type", "its type"},
+                            {"changes", "JSON: where the type changes"},
+                            {"points", "JSON: how many points the family has"},
+                            {"end", "JSON: why the family ends"},
+                            {"<doubled>",
+                             "JSON, with continuation.switch: the family of doubled order followed instead "
+                             "(its points are the table)"}},
+                .reference = "manual §2.3.5",
+                .computation =
+                    "dynamics/tools/Continuation.h (Continuation); its runner scenes/builtin/MapTools.cpp"},
+      .settings =
+          ToolSection{.title = "Fixed point continuation", .table = &continuationSettingsTable().table()},
+      .runner = ToolRunner{.run = runContinuation,
+                           .arguments = arguments,
+                           .tableIsResult = true,
+                           .complexFields = {"multipliers"},
+                           .window = ToolWindow::MapRows}};
+}
+
+BuiltinTool multipliersTool() {
+  auto arguments = continuationArguments();
+  arguments.push_back(stepArgument());
+  return {
+      .entry = {.id = "multipliers",
+                .title = "Multipliers",
+                .parent = "continuation",
+                .description = "the multipliers of the continued fixed point on the complex plane",
+                .command = "multipliers",
+                .commandHelp =
+                    "the multipliers of a fixed point along its continuation (or of the point alone), as CSV",
+                .chartView = "multipliers",
+                .outputs = {{"step", "the continuation's step (a column, beside re1, im1, re2, im2, ...)"},
+                            {"multipliers",
+                             "JSON: each step's multipliers, [re, im] each (complex in Python)"}},
+                .reference = "manual §2.4.3",
+                .computation = "dynamics/tools/Continuation.h (Continuation)"},
+      .runner = ToolRunner{.run = runMultipliers, .arguments = arguments, .complexFields = {"multipliers"}}};
+}
+
+BuiltinTool separatrixTool() {
+  auto arguments = searchArguments();
+  arguments.push_back(branchArgument());
+  return {
+      .entry = {.id = "separatrix",
+                .title = "Separatrices",
+                .parent = "fixedpoint",
+                .description = "the branches of the invariant manifolds of a hyperbolic point",
+                .section = "separatrix",
+                .command = "separatrix",
+                .commandHelp = "the separatrices of a hyperbolic fixed point of a 2D map, as CSV",
+                .outputs = {{"branch", "1..4, each point's branch"},
+                            {"<map coordinates>", "the points of the branch"},
+                            {"parameter",
+                             "each point's k + s: the image F^k of the linear segment's point s"},
+                            {"fixedpoint", "JSON: the hyperbolic point (as the fixedpoint tool gives it)"},
+                            {"branches",
+                             "JSON: each branch grown: its multiplier, direction (outgoing or incoming), "
+                             "linear region and why it ended"}},
+                .reference = "manual §2.3.6",
+                .computation =
+                    "dynamics/tools/Separatrix.h (growSeparatrix); its runner scenes/builtin/MapTools.cpp"},
+      .settings = ToolSection{.title = "Separatrix", .table = &separatrixSettingsTable().table()},
+      .runner = ToolRunner{.run = runSeparatrix,
+                           .arguments = arguments,
+                           .tableIsResult = true,
+                           .complexFields = {"multipliers"},
+                           .window = ToolWindow::MapRows}};
+}
+
+BuiltinTool bifurcationTreeTool() {
+  auto arguments = continuationArguments();
+  arguments.push_back(searchArguments()[2]); // --method: the search's (the tree's section has none)
+  arguments.push_back(stepArgument());
+  return {
+      .entry =
+          {.id = "bifurcation_tree",
+           .title = "Bifurcation tree",
+           .parent = "fixedpoint",
+           .description = "period doublings along the continuation",
+           .section = "bifurcation_tree",
+           .command = "bifurcation-tree",
+           .commandHelp = "the period-doubling cascade of an elliptic fixed point",
+           .outputs = {{"level", "the level of each point's branch in the tree (0: the starting family)"},
+                       {"order", "the order of each point's branch"},
+                       {"<parameter>", "the continued parameter's value at each point"},
+                       {"<map coordinates>", "the fixed point"},
+                       {"<re1, im1, ...>", "its multipliers"},
+                       {"type", "each point's type"},
+                       {"doublings", "JSON: each period doubling (level, order, parameter)"},
+                       {"ratios", "JSON: the Feigenbaum ratios"},
+                       {"end",
+                        "why the tree ended (levels reached, the finite value, a family that could not be "
+                        "followed, ...)"}},
+           .reference = "manual §2.3.7",
+           .computation =
+               "dynamics/tools/BifurcationTree.h (bifurcationTree); its runner scenes/builtin/MapTools.cpp",
+           .alsoSections = {"continuation"}},
+      .settings = ToolSection{.title = "Bifurcating tree", .table = &bifurcationTreeSettingsTable().table()},
+      .runner = ToolRunner{.run = runBifurcationTree,
+                           .arguments = arguments,
+                           .tableIsResult = true,
+                           .window = ToolWindow::MapRows,
+                           .ellipticMultipliersEachRow = true}};
 }
 
 } // namespace rv

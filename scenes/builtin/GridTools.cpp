@@ -1,19 +1,17 @@
-// GridTools.cpp -- the surface |Map^n(x) - x| and the region of allowed motion (manual §2.3.8-9) as runnable
-// tools (scenes/ToolRunner.h): a grid of the map's plane (or space) evaluated by dynamics/tools/MapGrid.h,
-// resumable, its rows the grid's nodes (ToolResult::grid), so the CLI writes CSV or .vti, Python gives shaped
-// arrays and the chart window draws the grid -- all derived from the entry. Their call arguments (--x
-// MIN,MAX,
-// --z, --step, --order, --level) are scene settings of the grid and fixedpoint sections. Free of VTK.
+// GridTools.cpp -- the surface |Map^n(x) - x| and the region of allowed motion (manual §2.3.8-9) as tools
+// (BuiltinTool.h): a grid of the map's plane (or space) evaluated by dynamics/tools/MapGrid.h, resumable, its
+// rows the grid's nodes (ToolResult::grid), so the CLI writes CSV or .vti, Python gives shaped arrays and the
+// chart window draws the grid -- all derived from the entry. Their call arguments (--x MIN,MAX, --z, --step,
+// --order, --level) are scene settings of the grid and fixedpoint sections. Free of VTK.
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/Format.h"
 #include "dynamics/tools/FixedPoint.h"
 #include "dynamics/tools/MapGrid.h"
 #include "dynamics/tools/ToolSettings.h"
-#include "scenes/BuiltinTools.h"
 #include "scenes/FixedPointJson.h"
 #include "scenes/JsonFields.h"
 #include "scenes/SceneTools.h"
-#include "scenes/ToolRunner.h"
+#include "scenes/builtin/BuiltinTool.h"
 
 #include <cmath>
 #include <limits>
@@ -85,7 +83,7 @@ class GridRun final : public ToolRun {
 public:
   GridRun(const Scene& scene, MapGrid::Kind kind)
       : kind_(kind), sceneMap_(Scene(scene), {}, false), map_(sceneMap_.map()),
-        grid_(map_, kind, gridSettings(scene.tool("grid")),
+        grid_(map_, kind, gridSettingsTable().read(scene.tool("grid")),
               scene.document.value("grid", nlohmann::json::object()).value("level", std::string())),
         searches_(kind == MapGrid::Kind::Surface && !scene.guess.empty()) {}
 
@@ -179,9 +177,54 @@ ToolRunner gridRunner(MapGrid::Kind kind) {
 
 } // namespace
 
-void registerGridTools() {
-  addToolRunner("surface", gridRunner(MapGrid::Kind::Surface));
-  addToolRunner("ram", gridRunner(MapGrid::Kind::AllowedRegion));
+BuiltinTool surfaceTool() {
+  return {
+      .entry = {.id = "surface",
+                .title = "Surface |Map(x) - x|",
+                .description = "on the grid section's rectangle (a chart window)",
+                .section = "grid",
+                .command = "surface",
+                .commandHelp = "the surface z = |Map^n(x) - x| on a grid: CSV or .vti image data",
+                .chartView = "surface",
+                .outputs =
+                    {{"<map coordinates>", "the grid's node (x fastest)"},
+                     {"distance",
+                      "|Map^n(x) - x| at the node: zeros are fixed points (NaN: the map is undefined)"},
+                     {"least", "the node of the least distance: distance, at (a guess for a fixed point)"},
+                     {"nodes", "how many nodes the grid has"},
+                     {"done", "how many of them are evaluated"},
+                     {"search_path",
+                      "with fixedpoint.guess: the search's path from it, drawn on the surface (else empty)"}},
+                .reference = "manual §2.3.8",
+                .computation = "dynamics/tools/MapGrid.h (MapGrid); runner scenes/builtin/GridTools.cpp",
+                .alsoSections = {"fixedpoint"}},
+      .settings = ToolSection{.title = "Surface |Map(x) - x| and region of allowed motion",
+                              .table = &gridSettingsTable().table()},
+      .runner = gridRunner(MapGrid::Kind::Surface)};
+}
+
+BuiltinTool ramTool() {
+  return {
+      .entry = {.id = "ram",
+                .title = "Region of allowed motion",
+                .description = "on the grid section's rectangle (a chart window)",
+                .section = "grid",
+                .command = "ram",
+                .commandHelp =
+                    "the region of allowed motion on a grid of the map's plane: CSV or .vti image data",
+                .chartView = "ram",
+                .outputs = {{"<map coordinates>", "the grid's node (x fastest)"},
+                            {"allowed", "1 where motion is allowed at the node, 0 where not"},
+                            {"level",
+                             "2D maps: the height of the energy level above the region (NaN elsewhere)"},
+                            {"level_name", "the observable whose value `level` is (grid.level)"},
+                            {"allowed_fraction", "the share of the evaluated nodes where motion is allowed"},
+                            {"nodes", "how many nodes the grid has"},
+                            {"done", "how many of them are evaluated"}},
+                .reference = "manual §2.3.9",
+                .computation = "dynamics/tools/MapGrid.h (MapGrid); runner scenes/builtin/GridTools.cpp",
+                .alsoSections = {"fixedpoint"}}, // its settings: the surface's section
+      .runner = gridRunner(MapGrid::Kind::AllowedRegion)};
 }
 
 } // namespace rv

@@ -1,5 +1,6 @@
-// BuiltinCharts.cpp -- how the results of rollviz's own runnable tools (scenes/BuiltinTools.cpp) are drawn,
-// bound to their runners once, before the first chart is drawn (SceneCharts.cpp).
+// BuiltinCharts.cpp -- how the results of rollviz's own runnable tools (BuiltinTool.h) are drawn, bound to
+// their runners by id once, before the first chart is drawn (scenes/SceneCharts.cpp). Apart from the tools'
+// files because it needs VTK (the fuzzers link the tools without it).
 #include "dynamics/core/Diagram.h"
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/Format.h"
@@ -166,7 +167,7 @@ std::unique_ptr<Chart> historyChart(const ToolResult& r, const std::string& titl
   return chart;
 }
 
-// a grid tool's result (scenes/GridTools.cpp) as an image over its plane -- the surface as log10 of the
+// a grid tool's result (GridTools.cpp) as an image over its plane -- the surface as log10 of the
 // distance (the zeros, fixed points, are the darkest spots) with the search path from fixedpoint.guess, the
 // region of allowed motion as two shades; of a 3D grid the layer nearest grid.z
 std::unique_ptr<Chart> gridChart(const Scene& scene, const ToolResult& r) {
