@@ -42,9 +42,6 @@ struct Scene {
   Eigen::VectorXd initialState;
   SectionSettings poincare; ///< "poincare": section, value, direction, points (maxPoints), ...
   PlotView plot;            ///< "plot"
-  /// "megno" as its struct, for the map window's MEGNO colours (app/gui/MapPanel.cpp); a tool reads
-  /// settings(megnoSettingsTable(), "megno") as every other section's.
-  MegnoSettings megno;
   ViewOptions view;
   /// Every tool section's settings by key ("lyapunov", "fixedpoint", ...; dynamics/tools/ToolRegistry.h
   /// toolSections()), a tool's defaults where the scene gives none.

@@ -497,7 +497,6 @@ Scene sceneFromJson(json doc, const std::string& source, const std::vector<Scene
   readToolSections(doc, root, scene);
   scene.poincare = poincareSettings(scene.tool("poincare"), scene.poincare.observable);
   applyPlotTable(scene.tool("plot"), scene.plot);
-  scene.megno = scene.settings(megnoSettingsTable(), "megno");
   if (!scene.poincare.observable.empty() && !scene.model->isMap() &&
       scene.model->findObservable(scene.poincare.observable) < 0)
     (root / "poincare" / "section")

@@ -314,7 +314,7 @@ Rgb MapTrajectories::megnoColour(double megno) {
 
 void MapTrajectories::startMegno(Series& s) {
   if (s.megnoJob) return;
-  auto task = std::make_unique<MegnoTask>(s.task->spec(), scene_->megno);
+  auto task = std::make_unique<MegnoTask>(s.task->spec(), scene_->settings(megnoSettingsTable(), "megno"));
   s.megno = task.get();
   s.megnoJob = &jobs_.add(std::move(task), s.job);
   s.megnoJob->start();
