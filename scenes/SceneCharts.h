@@ -1,9 +1,7 @@
-// SceneCharts.h -- every chart view of a scene (manual §2.4.1-§2.4.4), computed and drawn: the Poincare map,
-// the multipliers of the continued fixed point, the bifurcation diagram, the continuation family, the
-// Fourier spectrum, the Lyapunov exponents and MEGNO against time, the |Map(x) - x| surface and the region of
-// allowed motion, Map3D (the 3D map, or a 2D map's points on its energy level in the first three state
-// variables) and the 2D / 3D plot filter (scene section "plot"). One definition for `rollviz chart`, the
-// image tests and the GUI.
+// SceneCharts.h -- every chart view of a scene (manual §2.4.1-§2.4.4), computed and drawn: one per
+// registered tool that has a chart (its ToolEntry::chartView; chartViews() lists them in menu order,
+// `rollviz chart --help` names them; the 2D / 3D plot filter, scene section "plot", among them). One
+// definition for `rollviz chart`, the image tests and the GUI.
 #pragma once
 #include "render/charts/Chart3D.h"
 #include "render/charts/PlotChart.h"
