@@ -565,29 +565,30 @@ ToolArgument stepArgument() {
 
 BuiltinTool fixedPointTool() {
   return {
-      .entry = {.id = "fixedpoint",
-                .title = "Fixed points",
-                .description = "Newton (or gradient) search from fixedpoint.guess; its type and multipliers",
-                .section = "fixedpoint",
-                .command = "fixedpoint",
-                .commandHelp = "a fixed point of order n of the scene's map, its multipliers and type",
-                .outputs = {{"point", "the fixed point"},
-                            {"coordinates", "the names of its coordinates"},
-                            {"type", "elliptic, hyperbolic, ..."},
-                            {"multipliers", "the eigenvalues of D(Map^n), [re, im] each (complex in Python)"},
-                            {"residual", "|Map^n(x) - x|"},
-                            {"family",
-                             "the dimension of the family of fixed points it lies on (0: isolated; a map with "
-                             "integrals has families: the search ends at the point nearest the guess)"},
-                            {"iterations", "the search's iterations"},
-                            {"evaluations", "the map evaluations it spent"},
-                            {"order", "n"},
-                            {"<path>",
-                             "with fixedpoint.path = yes (--path): each point of the search and its residual "
-                             "(always in Python, as rows)"}},
-                .reference = "manual §2.3.4",
-                .computation =
-                    "dynamics/tools/FixedPoint.h (findFixedPoint); its runner scenes/builtin/MapTools.cpp"},
+      .entry =
+          {.id = "fixedpoint",
+           .title = "Fixed points",
+           .description = "Newton (or gradient) search from fixedpoint.guess; its type and multipliers",
+           .section = "fixedpoint",
+           .command = "fixedpoint",
+           .commandHelp = "a fixed point of order n of the scene's map, its multipliers and type",
+           .outputs = {{"point", "the fixed point"},
+                       {"coordinates", "the names of its coordinates"},
+                       {"type", "elliptic, hyperbolic, ..."},
+                       {"multipliers", "the eigenvalues of D(Map^n), [re, im] each (complex in Python)"},
+                       {"residual", "|Map^n(x) - x|"},
+                       {"family",
+                        "the dimension of the family of fixed points it lies on (0: isolated; a map with "
+                        "integrals has families: the search ends at the point nearest the guess)"},
+                       {"iterations", "the search's iterations"},
+                       {"evaluations", "the map evaluations it spent"},
+                       {"order", "n"},
+                       {"<path>",
+                        "with fixedpoint.path = yes (--path): each point of the search and its residual "
+                        "(always in Python, as rows)"}},
+           .reference = "manual §2.3.4",
+           .computation =
+               "dynamics/tools/FixedPoint.h (findFixedPoint); its runner scenes/builtin/MapTools.cpp"},
       .settings = ToolSection{.title = "Fixed point finding", .table = &fixedPointSettingsTable().table()},
       .runner = ToolRunner{.run = runFixedPoint,
                            .arguments = {guessArgument(),
