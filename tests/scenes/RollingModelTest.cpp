@@ -778,7 +778,8 @@ TEST(RollingModel, JellettIsAnIntegralOnlyOfABodySymmetricAboutItsAxis) {
     json d = doc;
     d["id"] = "jellett_variant_" + std::to_string(variant++);
     const ModelEntry& e = modelEntryFromJson(d, "<jellett>");
-    const auto& observables = instance(e)->observables();
+    const auto model = instance(e); // the observables live in the model: keep it alive while they are read
+    const auto& observables = model->observables();
     EXPECT_TRUE(std::any_of(observables.begin(), observables.end(),
                             [](const Observable& o) { return o.id == "jellett"; })); // always offered
     const auto& integrals = e.info->integralNames;
