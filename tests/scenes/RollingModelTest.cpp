@@ -742,6 +742,124 @@ TEST(RollingModel, AnyBodyOnACurvedSupportKeepsItsEnergy) {
     EXPECT_LT(std::abs(spin), 1e-13);
 }
 
+TEST(RollingModel, AnImplicitSupportRollsAsTheSameSupportInClosedForm) {
+  // the support's contact by Newton's method from F alone against the closed-form inverse Gauss maps: a
+  // spherical bowl (marble and rubber), a paraboloid bowl and, under the implicit brick (two Newton solves),
+  // an ellipsoid from outside; the support's contact completed from the state's normal by damped steps
+  struct Case {
+    json body, closed, implicit;
+    std::map<std::string, double> set, start;
+  };
+  json rattleback = rattlebackOn(nullptr),
+       brick = json::parse(std::ifstream(examples("superellipsoid.json", "rolling")));
+  json rubberRattleback = rattleback;
+  rubberRattleback["contact"] = "rubber";
+  const std::vector<Case> cases{
+      {rattleback,
+       {{"surface", "sphere"}, {"radius", 2}, {"side", "inside"}},
+       {{"surface", "implicit"}, {"F", "4 - x^2 - y^2 - z^2"}, {"size", 2.2}, {"point", "[0, 0, -2]"}},
+       {{"b1", 0.6}},
+       kRattlebackStart},
+      {rubberRattleback,
+       {{"surface", "sphere"}, {"radius", 2}, {"side", "inside"}},
+       {{"surface", "implicit"}, {"F", "4 - x^2 - y^2 - z^2"}, {"size", 2.2}, {"point", "[0, 0, -2]"}},
+       {{"b1", 0.6}},
+       kRattlebackStart},
+      {rattleback,
+       {{"surface", "paraboloid"}, {"p", 3}, {"q", 2}},
+       {{"surface", "implicit"}, {"F", "z - x^2/6 - y^2/4"}, {"size", 3}},
+       {{"b1", 0.6}},
+       kRattlebackStart},
+      {brick,
+       {{"surface", "ellipsoid"}, {"semi_axes", "[3, 2.5, 2]"}},
+       {{"surface", "implicit"},
+        {"F", "x^2/9 + y^2/6.25 + z^2/4 - 1"},
+        {"size", 3.5},
+        {"point", "[0, 0, 2]"}},
+       {},
+       kBrickStart}};
+  int k = 0;
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.closed.dump() + " " + c.body["contact"].dump());
+    json closed = c.body, implicit = c.body;
+    closed["id"] = "closed_support_" + std::to_string(k);
+    closed["support"] = c.closed;
+    implicit["id"] = "implicit_support_" + std::to_string(k++);
+    implicit["support"] = c.implicit;
+    const ExampleRun a = runModel(instance(modelEntryFromJson(closed, "<closed>"), c.set), c.start, 10, 0.5);
+    const ExampleRun b =
+        runModel(instance(modelEntryFromJson(implicit, "<implicit>"), c.set), c.start, 10, 0.5);
+    expectTheSameRun(a, b, {"omega1", "omega2", "omega3", "x1", "x2", "x3", "E", "spin_normal"}, 1e-9, 0.5);
+    for (double d : along(b, "support_drift"))
+      EXPECT_LT(d, 1e-9);
+  }
+}
+
+TEST(RollingModel, ABallOnAnImplicitSupportRollsAsTheBallOnItsClosedForm) {
+  // a balanced ball's one moment: on an implicit support it rolls in body axes (the general path) and
+  // follows the fixed-frame equations of the ball on the same sphere
+  json ball = json::parse(R"({"kind": "rolling", "id": "ball_on_a_sphere",
+      "body": {"shape": "sphere", "radius": 0.3, "mass": 1, "inertia": "0.4*0.3^2"}, "gravity": 9.81,
+      "support": {"surface": "sphere", "radius": 1.5, "side": "inside"}})");
+  json onImplicit = ball;
+  onImplicit["id"] = "ball_on_an_implicit_sphere";
+  onImplicit["support"] = {
+      {"surface", "implicit"}, {"F", "2.25 - x^2 - y^2 - z^2"}, {"size", 1.6}, {"point", "[0, 0, -1.5]"}};
+  const Eigen::Vector3d gamma = Eigen::Vector3d(0.3, -0.2, 1).normalized();
+  const std::map<std::string, double> start{{"M1", 0.02},         {"M2", 0.05},         {"M3", 0.01},
+                                            {"gamma1", gamma[0]}, {"gamma2", gamma[1]}, {"gamma3", gamma[2]}};
+  std::map<std::string, double> withQ = start;
+  withQ.insert({{"q0", 1}, {"q1", 0}, {"q2", 0}, {"q3", 0}});
+  const ExampleRun a = runModel(instance(modelEntryFromJson(ball, "<ball>")), start, 10, 0.5);
+  const ExampleRun b = runModel(instance(modelEntryFromJson(onImplicit, "<implicit>")), withQ, 10, 0.5);
+  expectTheSameRun(a, b, {"x1", "x2", "x3", "E"}, 1e-9, 0.5);
+}
+
+TEST(RollingModel, ABodyOnAnImplicitBowlKeepsItsEnergyAndIsDrawnOnIt) {
+  // a bowl with no closed form: z = (x^2 + y^2)/4 + (x^4 + y^4)/20, convex everywhere
+  json body =
+      rattlebackOn({{"surface", "implicit"}, {"F", "z - (x^2 + y^2)/4 - (x^4 + y^4)/20"}, {"size", 2.5}});
+  body["id"] = "rattleback_in_a_quartic_bowl";
+  const ExampleRun run = runModel(instance(modelEntryFromJson(body, "<quartic>"), {{"b1", 0.6}}),
+                                  {{"M1", 0.1},
+                                   {"M2", 0.05},
+                                   {"M3", 0.3},
+                                   {"gamma1", 0.3},
+                                   {"gamma2", 0.05},
+                                   {"gamma3", std::sqrt(0.9075)}},
+                                  20, 0.5);
+  EXPECT_LT(relativeDrift(along(run, "E")), 1e-10);
+  for (double d : along(run, "support_drift"))
+    EXPECT_LT(d, 1e-9);
+  const std::vector<double> x1 = along(run, "x1");
+  EXPECT_GT(*std::max_element(x1.begin(), x1.end()) - *std::min_element(x1.begin(), x1.end()), 0.05);
+  // the view: the sampled bowl passes through the contact, where F = 0 and its gradient is the normal
+  const auto* drawn = dynamic_cast<const DrawnFromMesh*>(run.model.get());
+  ASSERT_NE(drawn, nullptr);
+  const auto surface = drawn->supportSurface();
+  ASSERT_TRUE(surface);
+  for (const Eigen::VectorXd& x : run.states) {
+    const auto pose = run.model->pose(x.data());
+    ASSERT_TRUE(pose);
+    EXPECT_NEAR(surface->F(pose->contact), 0, 1e-9);
+  }
+  // bad supports are named at their fields
+  json noF = body;
+  noF["support"].erase("F");
+  EXPECT_NE(errorOf(noF).find("<bad>:support: an implicit support needs \"F\""), std::string::npos)
+      << errorOf(noF);
+  json sized = body;
+  sized["support"] = {{"surface", "sphere"}, {"radius", 2}, {"size", 3}};
+  EXPECT_NE(errorOf(sized).find("<bad>:support.size: only an \"implicit\" support has \"size\""),
+            std::string::npos)
+      << errorOf(sized);
+  json taken = body;
+  taken["definitions"]["support_point"] = "[0, 0, 0]";
+  EXPECT_NE(errorOf(taken).find("<bad>:definitions.support_point: 'support_point' is a name"),
+            std::string::npos)
+      << errorOf(taken);
+}
+
 TEST(RollingModel, TheTippeTopTurnsOverOnlyInsideItsInertiaWindowAndKeepsJellettsIntegral) {
   // offset 0.3, I3 = 0.4: inversion needs 0.7 < I1/I3 < 1.3
   const std::map<std::string, double> spun{{"omega1", 0}, {"omega2", 0},
