@@ -32,6 +32,9 @@ constexpr const char* kRotation = "[[q0^2 + q1^2 - q2^2 - q3^2, 2*(q1*q2 - q0*q3
                                   "[2*(q1*q2 + q0*q3), q0^2 - q1^2 + q2^2 - q3^2, 2*(q2*q3 - q0*q1)], "
                                   "[2*(q1*q3 - q0*q2), 2*(q2*q3 + q0*q1), q0^2 - q1^2 - q2^2 + q3^2]]";
 
+/// A sliding body's energy (v the centre of mass's velocity, body axes).
+constexpr const char* kSlidingEnergy = "body_mass*dot(v, v)/2 + dot(omega, body_inertia*omega)/2 + potential";
+
 constexpr const char* kShapes =
     "\"sphere\", \"ellipsoid\", \"paraboloid\", \"disk\", \"superellipsoid\", \"revolution\" or \"implicit\"";
 
@@ -555,7 +558,8 @@ private:
     } else {
       if (b.contains("principal_axes"))
         (w / "principal_axes").fail("principal axes go with three principal moments, not a full tensor");
-      if (supportImplicit_) { // a ball's one central moment: it rolls in body axes like any other body
+      if (!support_.empty() && (supportImplicit_ || contact_ == Contact::Sliding)) {
+        // a ball's one central moment: it moves in body axes like any other body
         userExpression("body_moment", I, w / "inertia", scalar("the ball's central moment of inertia"));
         define("body_inertia", "body_moment*identity()");
       } else {
@@ -572,30 +576,23 @@ private:
       userExpression("body_axis", b["axis"], w / "axis", vector3("the axis"));
       axis_ = true;
     }
-    // a balanced ball (a sphere with no centre, gyrostat or principal axes, one central moment) on a curved
-    // support rolls in the fixed frame, marble or rubber; any other body in body axes, marble only
+    // a balanced ball (a sphere with no centre, gyrostat or principal axes, one central moment) rolling on a
+    // closed-form curved support moves in the fixed frame; any other body, and any body sliding or on an
+    // implicit support, in body axes
     balancedBall_ = shape_ == "sphere" && !b.contains("centre") && !b.contains("gyrostat") &&
-                    !b.contains("principal_axes") && !I.is_array() && !supportImplicit_;
-    if (support_.empty() || balancedBall_) {
-      if (!support_.empty() && contact_ == Contact::Sliding)
-        (root_ / "contact")
-            .fail("on a curved support the contact is \"marble\" or \"rubber\" (a balanced ball) or "
-                  "\"marble\" (any other body); \"sliding\" is on the plane only");
-      return;
-    }
-    const std::string which = supportImplicit_
-                                  ? std::string("a body on an implicit support")
-                                  : "a body other than a balanced ball (a \"sphere\" with no \"centre\", "
-                                    "gyrostat or principal axes and one central moment of inertia)";
-    if (contact_ == Contact::Sliding)
-      (root_ / "contact")
-          .fail("on a curved support " + which +
-                " rolls \"marble\" or \"rubber\" (\"sliding\" is on the plane only)");
+                    !b.contains("principal_axes") && !I.is_array() && !supportImplicit_ &&
+                    contact_ != Contact::Sliding;
+    if (support_.empty() || balancedBall_) return;
+    const std::string which =
+        supportImplicit_ || contact_ == Contact::Sliding
+            ? std::string("a body ") + (supportImplicit_ ? "on an implicit support" : "sliding")
+            : "a body other than a balanced ball (a \"sphere\" with no \"centre\", "
+              "gyrostat or principal axes and one central moment of inertia)";
     if (support_ == "graph")
       (root_ / "support" / "surface")
           .fail("a \"graph\" support carries a balanced ball only (it gives the surface its centre moves "
                 "on); " +
-                which + " rolls on a \"sphere\", \"ellipsoid\" or \"paraboloid\"");
+                which + " moves on a \"sphere\", \"ellipsoid\", \"paraboloid\" or \"implicit\" support");
     if (centreSurface_)
       (root_ / "support" / "describes")
           .fail("\"centre\" describes the surface a balanced ball's centre moves on; for " + which +
@@ -678,8 +675,7 @@ private:
   }
 
   /// State vectors v1, v2, v3 for each name, in order.
-  static void addVectors(ordered_json& state, ordered_json& vectors,
-                         std::initializer_list<const char*> names) {
+  static void addVectors(ordered_json& state, ordered_json& vectors, const std::vector<const char*>& names) {
     for (const char* v : names) {
       ordered_json components = ordered_json::array();
       for (int i = 1; i <= 3; ++i) {
@@ -786,26 +782,41 @@ private:
     out_["state"] = state;
     out_["vectors"] = vectors;
     common();
+    slipVelocity();
+    slidingForces("gamma", "leaves_the_plane");
+    frameEquations(out_["equations"]);
+    energy_ = kSlidingEnergy;
+  }
+
+  /// The velocity of the body's point at the contact (v the centre of mass's, body axes) and its part
+  /// along the support (the normal part is kept zero by the normal force); a start that gives no velocity
+  /// rolls: the contact at rest.
+  void slipVelocity() {
     define("v_contact", "v + cross(omega, r)");
     define("v_slip", "v_contact - dot(v_contact, gamma)*gamma");
+    for (int i = 1; i <= 3; ++i)
+      out_["complete"]["v" + std::to_string(i)] = "-cross(omega, r)[" + std::to_string(i) + "]";
+  }
+
+  /// Newton-Euler for a body sliding with viscous friction F = -mu v_slip at the contact, under gravity
+  /// along -`vertical` (body axes): the normal force N gamma from d/dt (v_contact, gamma) = 0 with the
+  /// contact's rates dr and dgamma (the support's turning is in them); where N would turn negative the
+  /// body leaves the support and the run stops, naming `leaves`.
+  void slidingForces(const std::string& vertical, const std::string& leaves) {
     define("friction_force", "-friction_mu*v_slip");
     define("L", "body_inertia*omega" + gyrostat());
     define("I_inverse", "inverse(body_inertia)");
     define("omega_free", "I_inverse*(cross(r, friction_force) - cross(omega, L)" + potentialTorque() + ")");
-    define("v_free", "friction_force/body_mass - gravity_g*gamma - cross(omega, v)");
+    define("v_free", "friction_force/body_mass - gravity_g*" + vertical + " - cross(omega, v)");
     define("omega_per_N", "I_inverse*cross(r, gamma)");
     define("normal_force", "-(dot(v_free + cross(omega_free, r) + cross(omega, dr), gamma) + "
                            "dot(v_contact, dgamma))/(1/body_mass + dot(omega_per_N, cross(r, gamma)))");
     ordered_json& eq = out_["equations"];
     eq["omega"] = "omega_free + normal_force*omega_per_N";
-    // where the plane would have to pull (N < 0) the body leaves it: the model no longer holds, so the run
-    // stops there (a non-finite rate, named after this definition)
-    define("leaves_the_plane", "(1 - max(0, sign(normal_force)))/max(0, sign(normal_force))");
-    eq["v"] = "v_free + (normal_force/body_mass + leaves_the_plane)*gamma";
-    frameEquations(eq);
-    for (int i = 1; i <= 3; ++i) // a start that gives no velocity rolls: the contact at rest
-      out_["complete"]["v" + std::to_string(i)] = "-cross(omega, r)[" + std::to_string(i) + "]";
-    energy_ = "body_mass*dot(v, v)/2 + dot(omega, body_inertia*omega)/2 + potential";
+    // where the support would have to pull (N < 0) the body leaves it: the model no longer holds, so the
+    // run stops there (a non-finite rate, named after this definition)
+    define(leaves, "(1 - max(0, sign(normal_force)))/max(0, sign(normal_force))");
+    eq["v"] = "v_free + (normal_force/body_mass + " + leaves + ")*gamma";
   }
 
   /// A balanced ball (central moment mu, D = m R^2) rolling without slipping on a fixed surface, in the
@@ -962,10 +973,12 @@ private:
   /// Nonholonomic Systems (1972) ch. III). A balanced ball is the fixed-frame ballOnSupport(), which this
   /// reproduces; a support of radius a -> infinity gives the plane.
   void bodyOnSupport() {
+    const bool sliding = contact_ == Contact::Sliding;
     ordered_json state = ordered_json::array(), vectors;
-    addVectors(state, vectors,
-               implicit_ ? std::initializer_list<const char*>{"M", "gamma", "contact"}
-                         : std::initializer_list<const char*>{"M", "gamma"});
+    std::vector<const char*> vectorStates =
+        sliding ? std::vector<const char*>{"omega", "v", "gamma"} : std::vector<const char*>{"M", "gamma"};
+    if (implicit_) vectorStates.push_back("contact");
+    addVectors(state, vectors, vectorStates);
     for (const char* n : {"q0", "q1", "q2", "q3"})
       state.push_back(n);
     if (supportImplicit_) addVectors(state, vectors, {"support_contact"});
@@ -981,13 +994,16 @@ private:
       implicitSupportContact();
     else
       define("support_point", expr::renamed(expr::parse(supportContact_), {{"gamma", "N"}}));
-    define("A", "body_inertia + body_mass*(dot(r, r)*identity() - outer(r, r))");
+    if (!sliding) define("A", "body_inertia + body_mass*(dot(r, r)*identity() - outer(r, r))");
     if (contact_ == Contact::Marble) define("omega", "inverse(A)*M");
     define("tangent", "identity() - outer(gamma, gamma)");
     define("body_turning", "tangent*jacobian(r, gamma)*tangent");                                    // S
     define("support_turning", "tangent*transpose(rotation)*jacobian(support_point, gamma)*tangent"); // Sigma
     define("relative_turning", "support_turning - body_turning + outer(gamma, gamma)");
-    define("dN", "inverse(relative_turning)*(body_turning*cross(gamma, omega))");
+    // sliding, the contact moves on the support by the slip too: (Sigma - S) N' = S (gamma x omega) + v_slip
+    if (sliding) slipVelocity();
+    define("dN", "inverse(relative_turning)*(body_turning*cross(gamma, omega)" +
+                     std::string(sliding ? " + v_slip" : "") + ")");
     // the body touches at one point while the relative curvature is definite there (on a convex support
     // always; in a bowl while the body is more curved than the bowl both ways): det > 0 on the tangent
     // plane. Towards det = 0 it comes to touch along a curve (the contact's rate grows without bound) and
@@ -1003,8 +1019,10 @@ private:
         "body_mass*cross(dr, cross(omega, r)) + body_mass*gravity_g*cross(r, vertical)";
     if (contact_ == Contact::Marble)
       eq["M"] = "cross(M" + gyrostat() + ", omega) + " + forces;
-    else
+    else if (contact_ == Contact::Rubber)
       rubber(forces, true);
+    else
+      slidingForces("vertical", "leaves_the_support");
     eq["gamma"] = "dgamma";
     // the support's contact moves by its inverse shape operator: sigma'(N) N', N' = rotation dN
     if (supportImplicit_) eq["support_contact"] = "jacobian(support_point, gamma)*dN";
@@ -1018,8 +1036,9 @@ private:
     for (int i = 0; i < 4; ++i)
       out_["complete"]["q" + std::to_string(i)] = "q_start[" + std::to_string(i + 1) + "]";
     if (supportImplicit_) completeSupportContact();
-    energy_ =
-        contact_ == Contact::Marble ? "dot(M, omega)/2 + potential" : "dot(omega, A*omega)/2 + potential";
+    energy_ = contact_ == Contact::Marble   ? "dot(M, omega)/2 + potential"
+              : contact_ == Contact::Rubber ? "dot(omega, A*omega)/2 + potential"
+                                            : kSlidingEnergy;
   }
 
   /// The spin about the normal gamma (an integral in rubber rolling), an implicit body's contact drift and
@@ -1061,23 +1080,31 @@ private:
       if (axis_ && !gyrostat_ && !potential_ && contact_ != Contact::Rubber && symmetricAboutTheAxis())
         o["jellett"]["integral"] = true;
     }
-    if (contact_ == Contact::Sliding) {
-      o["normal_force"] = {{"value", "normal_force"}, {"description", "the plane's normal reaction"}};
-      o["slip"] = {{"value", "norm(v_slip)"}, {"description", "speed of the contact point along the plane"}};
-    }
+    if (contact_ == Contact::Sliding) slidingObservables(o, "the plane's normal reaction");
+  }
+
+  static void slidingObservables(ordered_json& o, const std::string& reaction) {
+    o["normal_force"] = {{"value", "normal_force"}, {"description", reaction}};
+    o["slip"] = {{"value", "norm(v_slip)"}, {"description", "speed of the contact point along the support"}};
   }
 
   void observables() {
     ordered_json o;
     if (!support_.empty() && !balancedBall_) { // any other body on a curved support
-      o["E"] = {{"value", energy_}, {"description", "energy"}, {"integral", true}};
+      const bool sliding = contact_ == Contact::Sliding;
+      o["E"] = {{"value", energy_},
+                {"description", sliding ? "energy (friction at the contact dissipates it)" : "energy"}};
+      if (!sliding) o["E"]["integral"] = true;
       o["geometric"] = {
           {"value", "dot(gamma, gamma)"}, {"description", "geometric integral"}, {"integral", true}};
       for (int i = 1; i <= 3; ++i) {
         const std::string k = std::to_string(i);
-        o["omega" + k] = {{"value", "omega[" + k + "]"}, {"description", "angular velocity, body axis " + k}};
+        if (!sliding) // sliding, omega is the state
+          o["omega" + k] = {{"value", "omega[" + k + "]"},
+                            {"description", "angular velocity, body axis " + k}};
         o["x" + k] = {{"value", "x[" + k + "]"}, {"description", "centre of mass, fixed axis " + k}};
       }
+      if (sliding) slidingObservables(o, "the support's normal reaction");
       o["orientation"] = {{"value", "q0^2 + q1^2 + q2^2 + q3^2"},
                           {"description", "the orientation quaternion's squared norm"},
                           {"integral", true}};
