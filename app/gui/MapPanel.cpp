@@ -203,13 +203,21 @@ void MapPanel::setMapRanges(const std::array<double, 4>& r) {
 }
 
 std::vector<double> MapPanel::mapPoint(double x, double y) const {
+  // the click names the first two coordinates; a map of more (a 3D map, the rolling disk's four) takes the
+  // rest from the scene's initial map point, else its fixed point guess, so that a search or a start from a
+  // click lies near the scene's motion
   std::vector<double> point{x, y};
-  if (scene_->model->info().mapCoordinates.size() == 3) { // a 3D map: Z from the scene's initial point
-    const auto& doc = scene_->document;
-    const bool hasZ =
-        doc.contains("initial") && doc["initial"].contains("map") && doc["initial"]["map"].size() == 3;
-    point.push_back(hasZ ? doc["initial"]["map"][2].get<double>() : 0.0);
-  }
+  const std::size_t n = scene_->model->info().mapCoordinates.size();
+  const auto& doc = scene_->document;
+  const auto full = [&](const char* section, const char* key) -> const nlohmann::json* {
+    if (!doc.contains(section) || !doc[section].is_object() || !doc[section].contains(key)) return nullptr;
+    const nlohmann::json& p = doc[section][key];
+    return p.is_array() && p.size() == n ? &p : nullptr;
+  };
+  const nlohmann::json* from = full("initial", "map");
+  if (!from) from = full("fixedpoint", "guess");
+  for (std::size_t k = 2; k < n; ++k)
+    point.push_back(from && (*from)[k].is_number() ? (*from)[k].get<double>() : 0.0);
   return point;
 }
 

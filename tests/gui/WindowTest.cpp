@@ -2034,6 +2034,26 @@ private slots:
     QCOMPARE(map->trajectories().origin(map->sceneJobs().back()), QString("(1.5, 0.25)"));
   }
 
+  // Issue 62: Shift+click on a map of four coordinates (the rolling disk's M1, M2, M3, gamma2) searches from
+  // the two clicked and the rest of the scene's initial map point (it gave two coordinates, and the search
+  // failed): the disk's steady motion is found near the scene's
+  void aShiftClickOnAFourCoordinateMapSearchesFromAFullPoint() {
+    QVERIFY(window_->openScene(QString(qgetenv("ROLLVIZ_SOURCE_DIR")) +
+                               "/examples/rolling/disk_steady.scene.json"));
+    MapPanel* map = window_->mapPanel();
+    const int found = map->fixedPointsFound();
+    map->searchFixedPointAt(0.025, -0.025);
+    QTRY_COMPARE_WITH_TIMEOUT(map->fixedPointsFound(), found + 1, 120000);
+    const QString results = window_->results();
+    const QString head = "fixed point (";
+    const int at = static_cast<int>(results.lastIndexOf(head));
+    QVERIFY2(at >= 0, qPrintable(results));
+    const int from = at + static_cast<int>(head.size());
+    const QStringList coordinates = results.mid(from, results.indexOf(')', from) - from).split(", ");
+    QCOMPARE(coordinates.size(), 4);
+    QVERIFY2(std::abs(coordinates[2].toDouble() - 2.03) < 0.1, qPrintable(coordinates.join(", "))); // M3
+  }
+
   // Issue 61 (6): the Chaplygin sleigh's map stayed empty ("running 0 %") with no word why: its spin dies out
   // and never crosses the section omega = 0. The map says so, once.
   void aMapWhoseOrbitNeverCrossesTheSectionSaysSo() {
