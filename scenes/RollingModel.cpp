@@ -179,17 +179,20 @@ private:
                 "surface the ball's centre moves on)");
     centreSurface_ = describes == "centre";
     const std::string side = s.contains("side") ? text(s["side"], w / "side") : "";
+    if (!side.empty() && side != "outside" && side != "inside")
+      (w / "side")
+          .fail("expected \"outside\" (the body rolls on the " + support_ + ") or \"inside\" (in it)");
+    inside_ = side == "inside";
     if (support_ == "sphere") {
       need("radius", "support_radius");
-      if (!side.empty() && side != "outside" && side != "inside")
-        (w / "side").fail("expected \"outside\" (the ball rolls on the sphere) or \"inside\" (in it)");
-      inside_ = side == "inside";
       supportContact_ = inside_ ? "-support_radius*gamma" : "support_radius*gamma";
       supportView_ = {{"surface", "sphere"}, {"radius", "support_radius"}};
     } else if (support_ == "ellipsoid") {
       need("semi_axes", "support_semi_axes");
       define("support_axes_squared", "diag(support_semi_axes)*diag(support_semi_axes)");
-      supportContact_ = "(support_axes_squared*gamma)/sqrt(dot(gamma, support_axes_squared*gamma))";
+      // the point whose outward normal is gamma (outside) or -gamma (inside: a bowl)
+      supportContact_ = std::string(inside_ ? "-" : "") +
+                        "(support_axes_squared*gamma)/sqrt(dot(gamma, support_axes_squared*gamma))";
       supportView_ = {{"surface", "ellipsoid"}, {"semi_axes", "support_semi_axes"}};
     } else if (support_ == "paraboloid") { // a bowl z = x^2/(2p) + y^2/(2q); gamma its upward normal
       need("p", "support_p");
@@ -228,7 +231,8 @@ private:
     for (const char* key : {"radius", "semi_axes", "p", "q", "height"})
       if (s.contains(key) && !out_["definitions"].contains(std::string("support_") + key))
         (w / key).fail("a " + support_ + " support has no \"" + key + "\"");
-    if (s.contains("side") && support_ != "sphere") (w / "side").fail("only a sphere has a side");
+    if (s.contains("side") && support_ != "sphere" && support_ != "ellipsoid")
+      (w / "side").fail("only a sphere or an ellipsoid has a side");
   }
 
   /// A user's expression of some of x, y, z (an implicit surface's F, a profile's radius of z): parsed
@@ -1170,7 +1174,8 @@ private:
         if (centreSurface_ && support_ == "sphere")
           s["radius"] = inside_ ? "support_radius + body_radius" : "support_radius - body_radius";
         if (centreSurface_ && support_ == "ellipsoid")
-          s["semi_axes"] = "support_semi_axes - body_radius*[1, 1, 1]";
+          s["semi_axes"] =
+              std::string("support_semi_axes ") + (inside_ ? "+" : "-") + " body_radius*[1, 1, 1]";
         v["support"] = s;
       }
     }

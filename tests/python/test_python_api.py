@@ -464,3 +464,35 @@ def test_a_rolling_body_described_in_python_turns_over_as_the_tippe_top_does():
     # outside the inertia window (I1/I3 > 1 + 0.3) the same top never stands on its stem
     tilted = scene.set(I1=0.6).integrate(50, 0.5, columns=["t", "axis_up"])
     assert np.asarray(tilted["axis_up"]).min() > -0.8
+
+
+def test_rolling_body_builds_the_description_from_keywords():
+    """rollviz.rolling_body: the same tippe top from keywords (vectors as sequences) runs as the dict's."""
+    described = rollviz.Model({
+        "kind": "rolling", "id": "dict_top",
+        "parameters": {"I1": {"default": 0.35}, "mu": {"default": 1.0}},
+        "body": {"shape": "sphere", "radius": 1, "centre": "[0, 0, 0.3]", "axis": "[0, 0, 1]",
+                 "mass": 1, "inertia": ["I1", "I1", 0.4]},
+        "gravity": 1, "contact": "sliding", "friction": "mu"})
+    built = rollviz.rolling_body("sphere", id="built_top", radius=1, centre=[0, 0, 0.3], axis=np.array([0, 0, 1]),
+                                 mass=1, inertia=["I1", "I1", 0.4], contact="sliding", friction="mu",
+                                 parameters={"I1": 0.35, "mu": 1.0})
+    assert isinstance(built, rollviz.Model) and built.id == "built_top"
+    start = {"omega1": 0, "omega2": 0, "omega3": 6, "gamma1": np.sin(0.1), "gamma2": 0, "gamma3": np.cos(0.1)}
+    runs = [rollviz.Scene(m, **{"initial.state": start, "integrator.method": "verner9"}).integrate(
+        5, 0.5, columns=["t", "axis_up", "E"]) for m in (described, built)]
+    for c in ("axis_up", "E"):
+        assert np.array_equal(np.asarray(runs[0][c]), np.asarray(runs[1][c]))
+    # in a bowl given by its implicit surface, rolling
+    bowl = rollviz.rolling_body("ellipsoid", id="egg_in_a_bowl", semi_axes=[0.5, 0.4, 0.3], mass=1,
+                                inertia=[0.05, 0.06, 0.08], gravity=9.81,
+                                support={"surface": "implicit", "F": "z - (x^2 + y^2)/4", "size": 2},
+                                initial={"M1": 0.01, "M2": 0, "M3": 0.1, "gamma1": 0.1, "gamma2": 0,
+                                         "gamma3": np.sqrt(0.99)})
+    E = np.asarray(rollviz.Scene(bowl, **{"integrator.method": "verner9", "integrator.tolerance": 1e-12})
+                   .integrate(5, 0.5, columns=["t", "E"])["E"])
+    assert np.ptp(E) < 1e-9 * abs(E[0])
+    with pytest.raises(ValueError, match="body.semi_axes: a sphere has no \"semi_axes\""):
+        rollviz.rolling_body("sphere", radius=1, semi_axes=[1, 2, 3], mass=1, inertia=[1, 1, 1])
+    with pytest.raises(TypeError, match="rolling_body\\(\\): centre takes a number"):
+        rollviz.rolling_body("sphere", radius=1, centre={"x": 0}, mass=1, inertia=[1, 1, 1])

@@ -656,7 +656,8 @@ TEST(RollingModel, AnyBodyOnACurvedSupportRollsAsTheBalancedBallWhenItIsOne) {
            {R"({"surface": "sphere", "radius": 1, "side": "inside"})", "marble"},
            {R"({"surface": "ellipsoid", "semi_axes": "[1.2, 1, 0.8]"})", "marble"},
            {R"({"surface": "sphere", "radius": 1, "side": "inside"})", "rubber"},
-           {R"({"surface": "ellipsoid", "semi_axes": "[1.2, 1, 0.8]"})", "rubber"}}) {
+           {R"({"surface": "ellipsoid", "semi_axes": "[1.2, 1, 0.8]"})", "rubber"},
+           {R"({"surface": "ellipsoid", "semi_axes": "[1.2, 1, 0.8]", "side": "inside"})", "marble"}}) {
     SCOPED_TRACE(std::string(support) + " " + contact);
     json ball = json::parse(R"({"kind": "rolling", "id": "balanced_ball",
         "body": {"shape": "sphere", "radius": 0.2, "mass": 1, "inertia": "0.4*0.2^2"}, "gravity": 9.81})");
@@ -768,6 +769,14 @@ TEST(RollingModel, AnImplicitSupportRollsAsTheSameSupportInClosedForm) {
       {rattleback,
        {{"surface", "paraboloid"}, {"p", 3}, {"q", 2}},
        {{"surface", "implicit"}, {"F", "z - x^2/6 - y^2/4"}, {"size", 3}},
+       {{"b1", 0.6}},
+       kRattlebackStart},
+      {rattleback, // an ellipsoid bowl
+       {{"surface", "ellipsoid"}, {"semi_axes", "[3, 2.5, 2]"}, {"side", "inside"}},
+       {{"surface", "implicit"},
+        {"F", "1 - x^2/9 - y^2/6.25 - z^2/4"},
+        {"size", 3.5},
+        {"point", "[0, 0, -2]"}},
        {{"b1", 0.6}},
        kRattlebackStart},
       {brick,

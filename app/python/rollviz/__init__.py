@@ -51,7 +51,7 @@ from ._rollviz import sweep as _sweep_file
 
 __all__ = ["ComputationError", "Model", "PageView", "Result", "Scene", "Session", "SweepResult", "Table",
            "Trajectory", "__version__",
-           "describe", "integrators", "modules", "problems", "scenes_directory", "sweep", "tools"]
+           "describe", "integrators", "modules", "problems", "rolling_body", "scenes_directory", "sweep", "tools"]
 
 
 # ---------------------------------------------------------------------------------------------------- results
@@ -516,6 +516,71 @@ def _model_describe(self):
 Model.__init__ = _model_init
 Model.load = staticmethod(_model_load)
 Model.describe = _model_describe
+
+
+def _expression(value, where):
+    """A number, an expression (a string) or, for a vector or a matrix, a sequence of them, as a rolling
+    description's value: numbers stay numbers, sequences become the expression "[a, b, c]"."""
+    if isinstance(value, (str, _numbers.Real)) and not isinstance(value, bool):
+        return value
+    if isinstance(value, (_abc.Sequence, _np.ndarray)) and not isinstance(value, (str, bytes)):
+        parts = [_expression(v, where) for v in value]
+        return "[" + ", ".join(p if isinstance(p, str) else repr(float(p)) for p in parts) + "]"
+    raise TypeError(f"rolling_body(): {where} takes a number, an expression (a string) or a sequence of them, "
+                    f"not {type(value).__name__}")
+
+
+def rolling_body(shape, *, mass, inertia, id="rolling_body", title=None, centre=None, axis=None,
+                 principal_axes=None, gyrostat=None, support=None, contact="marble", friction=None, gravity=1,
+                 potential=None, parameters=None, definitions=None, observables=None, initial=None, **sizes):
+    """A rolling body from its geometry (docs/rolling.md): rollviz derives its equations. A Model.
+
+        top = rollviz.rolling_body("sphere", radius=1, centre=[0, 0, 0.3], axis=[0, 0, 1], mass=1,
+                                   inertia=["I1", "I1", 0.4], contact="sliding", friction="mu",
+                                   parameters={"I1": 0.35, "mu": 1.0})
+
+    `shape` is sphere, ellipsoid, paraboloid, disk, superellipsoid, revolution or implicit, its sizes given as
+    keywords (radius, semi_axes, p, q, height, exponent, bulge, profile, profile_squared, heights, F, size). A
+    value is a number, an expression of the parameters (a string) or, for a vector or a matrix, a sequence of
+    them; `inertia` three principal moments (along the body axes, or the rows of `principal_axes`), a 3x3
+    matrix or one expression. `support` "plane" (the default) or a dict such as {"surface": "sphere",
+    "radius": 5, "side": "inside"}; `contact` marble, rubber or sliding (with `friction`); `parameters`
+    {name: default} or {name: {"default": ..., "min": ..., "description": ...}}; `initial` a start {state
+    name: value}. A bad description raises ValueError naming the field."""
+    body = {"shape": shape}
+    for key, value in sizes.items():
+        body[key] = value if key in ("F", "profile", "profile_squared") else _expression(value, key)
+    for key, value in (("centre", centre), ("axis", axis), ("principal_axes", principal_axes),
+                       ("gyrostat", gyrostat)):
+        if value is not None:
+            body[key] = _expression(value, key)
+    body["mass"] = _expression(mass, "mass")
+    if isinstance(inertia, (_abc.Sequence, _np.ndarray)) and not isinstance(inertia, str):
+        body["inertia"] = [_expression(row, "inertia") if not isinstance(row, (_abc.Sequence, _np.ndarray))
+                           or isinstance(row, str) else [_expression(v, "inertia") for v in row]
+                           for row in inertia]
+    else:
+        body["inertia"] = _expression(inertia, "inertia")
+    doc = {"kind": "rolling", "id": id, "body": body, "contact": contact, "gravity": _expression(gravity, "gravity")}
+    if title is not None:
+        doc["title"] = title
+    if support is not None:
+        doc["support"] = support if isinstance(support, str) else {
+            k: v if k in ("surface", "side", "describes", "F", "height") else _expression(v, "support." + k)
+            for k, v in dict(support).items()}
+    if friction is not None:
+        doc["friction"] = _expression(friction, "friction")
+    if potential is not None:
+        doc["potential"] = potential
+    if parameters:
+        doc["parameters"] = {name: value if isinstance(value, _abc.Mapping) else {"default": value}
+                             for name, value in parameters.items()}
+    for key, value in (("definitions", definitions), ("observables", observables)):
+        if value:
+            doc[key] = dict(value)
+    if initial:
+        doc["initial"] = {"state": dict(initial)}
+    return Model(doc)
 
 
 # ------------------------------------------------------------------------------------------ scenes as values
