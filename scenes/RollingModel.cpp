@@ -1162,8 +1162,8 @@ ordered_json rollingModelDocument(const RollingBodyForm& f) {
     if (positive) p[id]["min"] = 0;
     return id;
   };
-  // "[x1, x2, x3]" of the parameters NAME1..NAME3, each described as `what` along its body axis
-  const auto vector = [&](const std::string& name, const std::array<double, 3>& values,
+  // "[NAME1, NAME2, NAME3]", three parameters, each described as `what` and its index
+  const auto triple = [&](const std::string& name, const std::array<double, 3>& values,
                           const std::string& what) {
     std::string v;
     for (int i = 0; i < 3; ++i)
@@ -1176,7 +1176,7 @@ ordered_json rollingModelDocument(const RollingBodyForm& f) {
   if (f.shape == "sphere" || f.shape == "disk") {
     body["radius"] = parameter("R", f.sizes[0], "radius", true);
   } else if (f.shape == "ellipsoid" || f.shape == "superellipsoid") {
-    body["semi_axes"] = vector("b", f.sizes, "semi-axis along body axis");
+    body["semi_axes"] = triple("b", f.sizes, "semi-axis along body axis");
     if (f.shape == "superellipsoid") {
       body["exponent"] = parameter(
           "p", f.exponent, "exponent: 2 is the ellipsoid, larger flattens the faces towards a box's", true);
@@ -1233,7 +1233,7 @@ ordered_json rollingModelDocument(const RollingBodyForm& f) {
                                     f.inside ? "radius of the spherical bowl" : "radius of the sphere", true);
       support["side"] = f.inside ? "inside" : "outside";
     } else if (f.support == "ellipsoid") {
-      support["semi_axes"] = vector("a", f.supportSizes, "semi-axis of the ellipsoid along fixed axis");
+      support["semi_axes"] = triple("a", f.supportSizes, "semi-axis of the ellipsoid along fixed axis");
     } else {
       support["p"] = parameter("bowl_p", f.supportSizes[0],
                                "the bowl's radius of curvature at its bottom along fixed axis 1", true);
