@@ -38,7 +38,10 @@ QDoubleSpinBox* number(QWidget* parent, const QString& name, double value, doubl
 /// than its bowl where it touches it (a brick's faces are flatter than any bowl), whose run would stop at
 /// once: said here instead, naming why.
 void checkStart(const ModelEntry& entry) {
-  const std::unique_ptr<Model> model = entry.create(ParameterValues(entry.info->parameters));
+  const ParameterValues defaults(entry.info->parameters);
+  // interpreted: a check starts no native compilation (the window's run of the file does)
+  const std::shared_ptr<const EquationSystem> system = equationSystemOf(entry);
+  const std::unique_ptr<Model> model = system ? system->create(defaults) : entry.create(defaults);
   const Eigen::VectorXd x = model->stateFromNamed(
       modelFileInitial(entry).at("state").get<std::map<std::string, double>>(), "initial.state");
   Eigen::VectorXd f(x.size());
