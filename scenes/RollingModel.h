@@ -90,8 +90,9 @@ struct RollingBodyForm {
   std::string support = "plane"; ///< plane, sphere, ellipsoid or paraboloid (a bowl)
   bool inside = false;           ///< sphere: the body rolls inside it (a spherical bowl), not on it
   /// sphere: its radius first; ellipsoid: its semi-axes; paraboloid: p, q, its radii of curvature at the
-  /// bottom. The defaults are flatter than the default body everywhere, so that it touches at one point.
-  std::array<double, 3> supportSizes{5, 4, 3};
+  /// bottom. The defaults are flatter than each shape's default body (but the superellipsoid's brick, whose
+  /// faces are flatter than any bowl), so that it touches a bowl at one point.
+  std::array<double, 3> supportSizes{8, 6, 4};
 };
 
 /// The rolling model file of a form, with a start that suits its shape (tilted from rest, spinning; on a
