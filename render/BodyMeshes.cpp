@@ -102,7 +102,7 @@ vtkSmartPointer<vtkPolyData> readBodyMesh(const BodyMeshFile& file) {
   return out;
 }
 
-vtkSmartPointer<vtkPolyData> sampleImplicitSurface(const ImplicitSurface& surface) {
+vtkSmartPointer<vtkPolyData> sampleImplicitSurface(const ImplicitSurface& surface, const std::string& what) {
   constexpr int kSamples = 56; // per axis: smooth enough at a body's size on screen, ~0.2 s
   const double reach = 1.25 * surface.size, step = 2 * reach / (kSamples - 1);
   vtkNew<vtkImageData> grid;
@@ -129,9 +129,24 @@ vtkSmartPointer<vtkPolyData> sampleImplicitSurface(const ImplicitSurface& surfac
   normals->Update();
   vtkSmartPointer<vtkPolyData> out = normals->GetOutput();
   if (out->GetNumberOfPolys() == 0)
-    throw InputError("the body's surface F = 0 is not within " + std::to_string(reach) +
+    throw InputError(what + " F = 0 is not within " + std::to_string(reach) +
                      " of its centre: give its \"size\"");
   return out;
+}
+
+vtkSmartPointer<vtkPolyData> sampleImplicitSupport(const ImplicitSurface& surface) {
+  vtkSmartPointer<vtkPolyData> mesh = sampleImplicitSurface(surface, "the support's surface");
+  vtkNew<vtkFloatArray> uv;
+  uv->SetNumberOfComponents(2);
+  uv->SetNumberOfTuples(mesh->GetNumberOfPoints());
+  const double period = 2.5 * surface.size / 8;
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i) {
+    double p[3];
+    mesh->GetPoint(i, p);
+    uv->SetTuple2(i, p[0] / period, p[1] / period);
+  }
+  mesh->GetPointData()->SetTCoords(uv);
+  return mesh;
 }
 
 BodyGeometry boundingGeometry(vtkPolyData* mesh) {

@@ -4,6 +4,7 @@
 #include "dynamics/core/BodyShapes.h"
 #include "dynamics/core/Model.h"
 
+#include <string>
 #include <vtkSmartPointer.h>
 
 class vtkPolyData;
@@ -28,9 +29,14 @@ vtkSmartPointer<vtkPolyData> readBodyMesh(const BodyMeshFile& file);
 /// The ellipsoid of a mesh's bounding box (centre, half-extents): the size and axes the view gives it.
 BodyGeometry boundingGeometry(vtkPolyData* mesh);
 
-/// The surface F = 0 of an implicit body sampled on a grid over [-1.25 size, 1.25 size]^3 (marching cubes,
-/// outward normals); InputError when F has no zero there.
-vtkSmartPointer<vtkPolyData> sampleImplicitSurface(const ImplicitSurface& surface);
+/// The surface F = 0 of an implicit body (or support: `what` names it in the message) sampled on a grid over
+/// [-1.25 size, 1.25 size]^3 (marching cubes, outward normals); InputError when F has no zero there.
+vtkSmartPointer<vtkPolyData> sampleImplicitSurface(const ImplicitSurface& surface,
+                                                   const std::string& what = "the body's surface");
+
+/// An implicit support's surface, sampled as sampleImplicitSurface does, with texture coordinates from the
+/// world's x and y (8 repeats across its size) for the support's pattern.
+vtkSmartPointer<vtkPolyData> sampleImplicitSupport(const ImplicitSurface& surface);
 
 /// A length that sets the scene's scale: the largest half-extent of the body.
 double bodySize(const BodyGeometry& geometry);

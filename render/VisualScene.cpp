@@ -53,13 +53,15 @@ VisualScene::VisualScene(const Model& model, const ViewOptions& options, const E
   const auto pose = model.pose(x0.data());
   const long cap = options.maxTracePoints;
   auto geometry = model.geometry();
-  vtkSmartPointer<vtkPolyData> mesh; // a body drawn from a file: its box sets the sizes and axes
+  vtkSmartPointer<vtkPolyData> mesh;        // a body drawn from a file: its box sets the sizes and axes
+  vtkSmartPointer<vtkPolyData> supportMesh; // an implicit support, sampled
   if (const auto* drawn = dynamic_cast<const DrawnFromMesh*>(&model)) {
     if (const auto file = drawn->bodyMesh())
       mesh = readBodyMesh(*file);
     else if (const auto surface = drawn->bodySurface())
       mesh = sampleImplicitSurface(*surface);
     if (mesh) geometry = boundingGeometry(mesh);
+    if (const auto surface = drawn->supportSurface()) supportMesh = sampleImplicitSupport(*surface);
   }
   std::array<double, 3> lo{}, hi{}; // where the scene axes go unless the scene gives their range
   if (geometry && pose && options.kind == ViewKind::Apex) {
@@ -96,8 +98,10 @@ VisualScene::VisualScene(const Model& model, const ViewOptions& options, const E
     }
   } else if (geometry && pose) {
     scale_ = bodySize(*geometry);
-    if (const auto support = model.support()) {
-      auto surface = std::make_unique<SurfaceObject>("surface", *support);
+    const auto support = model.support();
+    if (support || supportMesh) {
+      auto surface = support ? std::make_unique<SurfaceObject>("surface", *support)
+                             : std::make_unique<SurfaceObject>("surface", supportMesh);
       surface->hideTheFarSide(pose->contact, pose->center);
       add(std::move(surface));
     } else

@@ -278,12 +278,24 @@ private:
     if (j.contains("support")) {
       const Where ws = w / "support";
       const json& support = requireObject(j["support"], ws);
-      onlyKeys(support, ws, {"surface", "radius", "semi_axes", "centre", "p", "q", "height"});
+      onlyKeys(support, ws, {"surface", "radius", "semi_axes", "centre", "p", "q", "height", "F", "size"});
       v.support = readShape(support, ws, "surface",
                             {{"plane", BodyShape::None},
                              {"sphere", BodyShape::Ball},
                              {"ellipsoid", BodyShape::Ellipsoid},
-                             {"paraboloid", BodyShape::Paraboloid}});
+                             {"paraboloid", BodyShape::Paraboloid},
+                             {"implicit", BodyShape::None}});
+      const bool implicitSupport = support.contains("surface") && support["surface"] == "implicit";
+      if (implicitSupport != support.contains("F"))
+        (ws / (implicitSupport ? "surface" : "F"))
+            .fail("an implicit support gives its surface in \"F\": F(x, y, z) = 0 in world axes, F < 0 in "
+                  "the support (with \"surface\": \"implicit\")");
+      if (implicitSupport) {
+        v.supportSurface = exprText(support["F"], ws / "F");
+        if (support.contains("size")) v.supportSurfaceSize = exprText(support["size"], ws / "size");
+      } else if (support.contains("size")) {
+        (ws / "size").fail("only an implicit support has a \"size\"");
+      }
     }
     for (const char* key : {"rotation", "position", "contact"})
       if (!j.contains(key)) w.fail(std::string("missing \"") + key + "\" (an expression of the state)");

@@ -32,6 +32,9 @@ constexpr const char* kRotation = "[[q0^2 + q1^2 - q2^2 - q3^2, 2*(q1*q2 - q0*q3
                                   "[2*(q1*q2 + q0*q3), q0^2 - q1^2 + q2^2 - q3^2, 2*(q2*q3 - q0*q1)], "
                                   "[2*(q1*q3 - q0*q2), 2*(q2*q3 + q0*q1), q0^2 - q1^2 - q2^2 + q3^2]]";
 
+/// A sliding body's energy (v the centre of mass's velocity, body axes).
+constexpr const char* kSlidingEnergy = "body_mass*dot(v, v)/2 + dot(omega, body_inertia*omega)/2 + potential";
+
 constexpr const char* kShapes =
     "\"sphere\", \"ellipsoid\", \"paraboloid\", \"disk\", \"superellipsoid\", \"revolution\" or \"implicit\"";
 
@@ -106,6 +109,9 @@ private:
   }
 
   void define(const std::string& name, const std::string& expression) {
+    // a user's parameter or definition of a name the derivation takes later would be overwritten silently
+    if (const auto user = userNamed_.find(name); user != userNamed_.end())
+      user->second.fail("'" + name + "' is a name the rolling model's derivation uses: choose another");
     out_["definitions"][name] = expression;
     generated_.insert(name);
   }
@@ -151,8 +157,11 @@ private:
       w.fail("a curved support is an object: {\"surface\": \"sphere\", \"radius\": ...}");
     }
     requireObject(s, w);
-    onlyKeys(s, w, {"surface", "radius", "semi_axes", "p", "q", "side", "height", "describes"});
-    if (!s.contains("surface")) w.fail("missing \"surface\" (plane, sphere, ellipsoid, paraboloid or graph)");
+    onlyKeys(
+        s, w,
+        {"surface", "radius", "semi_axes", "p", "q", "side", "height", "describes", "F", "size", "point"});
+    if (!s.contains("surface"))
+      w.fail("missing \"surface\" (plane, sphere, ellipsoid, paraboloid, implicit or graph)");
     support_ = text(s["surface"], w / "surface");
     if (support_ == "plane") {
       if (s.size() > 1) w.fail("the plane has no sizes");
@@ -189,14 +198,33 @@ private:
       supportContact_ = "[-support_p*gamma[1]/gamma[3], -support_q*gamma[2]/gamma[3], "
                         "(support_p*gamma[1]^2 + support_q*gamma[2]^2)/(2*gamma[3]^2)]";
       supportView_ = {{"surface", "paraboloid"}, {"p", "support_p"}, {"q", "support_q"}};
+    } else if (support_ == "implicit") { // F(x, y, z) = 0 in fixed axes, F < 0 in the support's solid
+      if (!s.contains("F"))
+        w.fail("an implicit support needs \"F\": its surface F(x, y, z) = 0 in fixed axes, F < 0 inside the "
+               "support (the body rolls on the side where F > 0)");
+      const std::string F = userFunction(s["F"], w / "F", {"x", "y", "z"}).text;
+      supportImplicit_ = expr::parse(F);
+      if (!s.contains("size"))
+        w.fail("an implicit support needs \"size\": a length that bounds the part of it drawn around the "
+               "origin and the first contact's search");
+      userExpression("support_size", s["size"], w / "size", scalar("the support's size"));
+      if (s.contains("point"))
+        userExpression("support_start", s["point"], w / "point", vector3("a point of the support"));
+      else
+        define("support_start", "[0, 0, 0]");
+      supportView_ = {{"surface", "implicit"}, {"F", F}, {"size", "support_size"}};
     } else if (support_ == "graph") { // the centre's height over the plane, z = height(x1, x2)
       need("height", "support_height");
       if (!centreSurface_)
         (w / "describes")
             .fail("a graph gives the height of the surface the centre moves on: \"describes\": \"centre\"");
     } else {
-      (w / "surface").fail("expected \"plane\", \"sphere\", \"ellipsoid\", \"paraboloid\" or \"graph\"");
+      (w / "surface")
+          .fail("expected \"plane\", \"sphere\", \"ellipsoid\", \"paraboloid\", \"implicit\" or \"graph\"");
     }
+    if (!supportImplicit_)
+      for (const char* key : {"F", "size", "point"})
+        if (s.contains(key)) (w / key).fail(std::string("only an \"implicit\" support has \"") + key + "\"");
     for (const char* key : {"radius", "semi_axes", "p", "q", "height"})
       if (s.contains(key) && !out_["definitions"].contains(std::string("support_") + key))
         (w / key).fail("a " + support_ + " support has no \"" + key + "\"");
@@ -356,9 +384,11 @@ private:
   }
 
   /// One Newton step `to` from the point `from` towards the contact: onto F = 0 along the gradient, then
-  /// along the surface so that the outward normal turns to -gamma (the shape operator's inverse, from the
-  /// Hessian, as the closed forms' contact rate uses it). Quadratic from a point near the contact.
-  void newtonStep(const expr::Expression& F, const std::string& from, const std::string& to, bool damped) {
+  /// along the surface so that the unit gradient (the outward normal) turns to `normal` (the shape
+  /// operator's inverse, from the Hessian, as the closed forms' contact rate uses it). Quadratic from a
+  /// point near the contact; a damped step moves at most 0.3 `size` along the surface.
+  void newtonStep(const expr::Expression& F, const std::string& from, const std::string& to, bool damped,
+                  const std::string& normal = "-gamma", const std::string& size = "body_size") {
     define(to + "_F0", implicitAt(F, from));
     define(to + "_g0", "gradient(" + to + "_F0, " + from + ")");
     define(to + "_on", from + " - (" + to + "_F0/dot(" + to + "_g0, " + to + "_g0))*" + to + "_g0");
@@ -369,13 +399,13 @@ private:
     define(to + "_K", to + "_P*jacobian(" + to + "_g, " + to + "_on)*" + to + "_P/norm(" + to +
                           "_g) + outer(" + to + "_n, " + to + "_n)");
     if (!damped) {
-      define(to, to + "_on - inverse(" + to + "_K)*(" + to + "_P*gamma)");
+      define(to, to + "_on + inverse(" + to + "_K)*(" + to + "_P*(" + normal + "))");
       return;
     }
     // far from the contact, where the curvature of a flat-faced body changes fast, a full step overshoots:
     // at most 0.3 size along the surface (then full steps, quadratic, once near)
-    define(to + "_step", "inverse(" + to + "_K)*(" + to + "_P*gamma)");
-    define(to, to + "_on - min(1, 0.3*body_size/norm(" + to + "_step))*" + to + "_step");
+    define(to + "_step", "inverse(" + to + "_K)*(" + to + "_P*(" + normal + "))");
+    define(to, to + "_on + min(1, 0.3*" + size + "/norm(" + to + "_step))*" + to + "_step");
   }
 
   /// The implicit body's contact: one Newton step from the one carried in the state, which follows the
@@ -392,6 +422,26 @@ private:
       out_["complete"]["contact" + std::to_string(i)] =
           "contact_start_" + std::to_string(kStartSteps) + "[" + std::to_string(i) + "]";
     out_["equations"]["contact"] = "derivative(contact_s, gamma, dgamma)";
+  }
+
+  /// An implicit support's contact, in fixed axes: one Newton step from the one carried in the state onto
+  /// F = 0 with the unit gradient (out of the support, into the body) turned to N, as an implicit body's.
+  void implicitSupportContact() {
+    newtonStep(*supportImplicit_, "support_contact", "support_point", false, "N", "support_size");
+  }
+
+  /// Its start: damped Newton steps from the support's "point" (the origin by default) towards the normal
+  /// N of the state being completed (its q completed first when left out).
+  void completeSupportContact() {
+    // (nudged along the normal: a start that is a constant has no derivative for the steps to take)
+    define("support_start_0", "support_start + 1e-3*support_size*rotation*normalize(gamma)");
+    constexpr int kStartSteps = 24;
+    for (int k = 1; k <= kStartSteps; ++k)
+      newtonStep(*supportImplicit_, "support_start_" + std::to_string(k - 1),
+                 "support_start_" + std::to_string(k), true, "rotation*normalize(gamma)", "support_size");
+    for (int i = 1; i <= 3; ++i)
+      out_["complete"]["support_contact" + std::to_string(i)] =
+          "support_start_" + std::to_string(kStartSteps) + "[" + std::to_string(i) + "]";
   }
 
   void readBody() {
@@ -508,9 +558,15 @@ private:
     } else {
       if (b.contains("principal_axes"))
         (w / "principal_axes").fail("principal axes go with three principal moments, not a full tensor");
-      userExpression("body_inertia", I, w / "inertia",
-                     support_.empty() ? matrix3("the inertia tensor")
-                                      : scalar("the ball's central moment of inertia"));
+      if (!support_.empty() && (supportImplicit_ || contact_ == Contact::Sliding)) {
+        // a ball's one central moment: it moves in body axes like any other body
+        userExpression("body_moment", I, w / "inertia", scalar("the ball's central moment of inertia"));
+        define("body_inertia", "body_moment*identity()");
+      } else {
+        userExpression("body_inertia", I, w / "inertia",
+                       support_.empty() ? matrix3("the inertia tensor")
+                                        : scalar("the ball's central moment of inertia"));
+      }
     }
     if (b.contains("gyrostat")) {
       userExpression("body_gyrostat", b["gyrostat"], w / "gyrostat", vector3("the gyrostat"));
@@ -520,29 +576,23 @@ private:
       userExpression("body_axis", b["axis"], w / "axis", vector3("the axis"));
       axis_ = true;
     }
-    // a balanced ball (a sphere with no centre, gyrostat or principal axes, one central moment) on a curved
-    // support rolls in the fixed frame, marble or rubber; any other body in body axes, marble only
+    // a balanced ball (a sphere with no centre, gyrostat or principal axes, one central moment) rolling on a
+    // closed-form curved support moves in the fixed frame; any other body, and any body sliding or on an
+    // implicit support, in body axes
     balancedBall_ = shape_ == "sphere" && !b.contains("centre") && !b.contains("gyrostat") &&
-                    !b.contains("principal_axes") && !I.is_array();
-    if (support_.empty() || balancedBall_) {
-      if (!support_.empty() && contact_ == Contact::Sliding)
-        (root_ / "contact")
-            .fail("on a curved support the contact is \"marble\" or \"rubber\" (a balanced ball) or "
-                  "\"marble\" (any other body); \"sliding\" is on the plane only");
-      return;
-    }
+                    !b.contains("principal_axes") && !I.is_array() && !supportImplicit_ &&
+                    contact_ != Contact::Sliding;
+    if (support_.empty() || balancedBall_) return;
     const std::string which =
-        "a body other than a balanced ball (a \"sphere\" with no \"centre\", gyrostat or "
-        "principal axes and one central moment of inertia)";
-    if (contact_ == Contact::Sliding)
-      (root_ / "contact")
-          .fail("on a curved support " + which +
-                " rolls \"marble\" or \"rubber\" (\"sliding\" is on the plane only)");
+        supportImplicit_ || contact_ == Contact::Sliding
+            ? std::string("a body ") + (supportImplicit_ ? "on an implicit support" : "sliding")
+            : "a body other than a balanced ball (a \"sphere\" with no \"centre\", "
+              "gyrostat or principal axes and one central moment of inertia)";
     if (support_ == "graph")
       (root_ / "support" / "surface")
           .fail("a \"graph\" support carries a balanced ball only (it gives the surface its centre moves "
                 "on); " +
-                which + " rolls on a \"sphere\", \"ellipsoid\" or \"paraboloid\"");
+                which + " moves on a \"sphere\", \"ellipsoid\", \"paraboloid\" or \"implicit\" support");
     if (centreSurface_)
       (root_ / "support" / "describes")
           .fail("\"centre\" describes the surface a balanced ball's centre moves on; for " + which +
@@ -589,6 +639,8 @@ private:
       for (const char* v : {"M", "gamma", "alpha", "beta", "omega", "v", "contact"})
         for (const char* i : {"1", "2", "3"})
           if (name == std::string(v) + i) return true;
+      for (const char* i : {"1", "2", "3"})
+        if (name == std::string("support_contact") + i) return true;
       return name == "s_plane" || name == "s_body" || name == "q0" || name == "q1" || name == "q2" ||
              name == "q3";
     };
@@ -596,10 +648,12 @@ private:
       return names.count(name) || generated_.count(name) || component(name);
     };
     if (doc_.contains("parameters") && doc_["parameters"].is_object())
-      for (const auto& [name, value] : doc_["parameters"].items())
+      for (const auto& [name, value] : doc_["parameters"].items()) {
         if (taken(name))
           (root_ / "parameters" / name)
               .fail("'" + name + "' is a name the rolling model's derivation uses: choose another");
+        userNamed_.emplace(name, root_ / "parameters" / name);
+      }
     if (!doc_.contains("definitions")) return;
     const ordered_json defs = source("definitions");
     if (!defs.is_object()) (root_ / "definitions").fail("expected an object of named expressions");
@@ -608,6 +662,7 @@ private:
         (root_ / "definitions" / name)
             .fail("'" + name + "' is a name the rolling model's derivation uses: choose another");
       out_["definitions"][name] = value;
+      userNamed_.emplace(name, root_ / "definitions" / name);
     }
   }
 
@@ -620,8 +675,7 @@ private:
   }
 
   /// State vectors v1, v2, v3 for each name, in order.
-  static void addVectors(ordered_json& state, ordered_json& vectors,
-                         std::initializer_list<const char*> names) {
+  static void addVectors(ordered_json& state, ordered_json& vectors, const std::vector<const char*>& names) {
     for (const char* v : names) {
       ordered_json components = ordered_json::array();
       for (int i = 1; i <= 3; ++i) {
@@ -728,26 +782,41 @@ private:
     out_["state"] = state;
     out_["vectors"] = vectors;
     common();
+    slipVelocity();
+    slidingForces("gamma", "leaves_the_plane");
+    frameEquations(out_["equations"]);
+    energy_ = kSlidingEnergy;
+  }
+
+  /// The velocity of the body's point at the contact (v the centre of mass's, body axes) and its part
+  /// along the support (the normal part is kept zero by the normal force); a start that gives no velocity
+  /// rolls: the contact at rest.
+  void slipVelocity() {
     define("v_contact", "v + cross(omega, r)");
     define("v_slip", "v_contact - dot(v_contact, gamma)*gamma");
+    for (int i = 1; i <= 3; ++i)
+      out_["complete"]["v" + std::to_string(i)] = "-cross(omega, r)[" + std::to_string(i) + "]";
+  }
+
+  /// Newton-Euler for a body sliding with viscous friction F = -mu v_slip at the contact, under gravity
+  /// along -`vertical` (body axes): the normal force N gamma from d/dt (v_contact, gamma) = 0 with the
+  /// contact's rates dr and dgamma (the support's turning is in them); where N would turn negative the
+  /// body leaves the support and the run stops, naming `leaves`.
+  void slidingForces(const std::string& vertical, const std::string& leaves) {
     define("friction_force", "-friction_mu*v_slip");
     define("L", "body_inertia*omega" + gyrostat());
     define("I_inverse", "inverse(body_inertia)");
     define("omega_free", "I_inverse*(cross(r, friction_force) - cross(omega, L)" + potentialTorque() + ")");
-    define("v_free", "friction_force/body_mass - gravity_g*gamma - cross(omega, v)");
+    define("v_free", "friction_force/body_mass - gravity_g*" + vertical + " - cross(omega, v)");
     define("omega_per_N", "I_inverse*cross(r, gamma)");
     define("normal_force", "-(dot(v_free + cross(omega_free, r) + cross(omega, dr), gamma) + "
                            "dot(v_contact, dgamma))/(1/body_mass + dot(omega_per_N, cross(r, gamma)))");
     ordered_json& eq = out_["equations"];
     eq["omega"] = "omega_free + normal_force*omega_per_N";
-    // where the plane would have to pull (N < 0) the body leaves it: the model no longer holds, so the run
-    // stops there (a non-finite rate, named after this definition)
-    define("leaves_the_plane", "(1 - max(0, sign(normal_force)))/max(0, sign(normal_force))");
-    eq["v"] = "v_free + (normal_force/body_mass + leaves_the_plane)*gamma";
-    frameEquations(eq);
-    for (int i = 1; i <= 3; ++i) // a start that gives no velocity rolls: the contact at rest
-      out_["complete"]["v" + std::to_string(i)] = "-cross(omega, r)[" + std::to_string(i) + "]";
-    energy_ = "body_mass*dot(v, v)/2 + dot(omega, body_inertia*omega)/2 + potential";
+    // where the support would have to pull (N < 0) the body leaves it: the model no longer holds, so the
+    // run stops there (a non-finite rate, named after this definition)
+    define(leaves, "(1 - max(0, sign(normal_force)))/max(0, sign(normal_force))");
+    eq["v"] = "v_free + (normal_force/body_mass + " + leaves + ")*gamma";
   }
 
   /// A balanced ball (central moment mu, D = m R^2) rolling without slipping on a fixed surface, in the
@@ -904,12 +973,15 @@ private:
   /// Nonholonomic Systems (1972) ch. III). A balanced ball is the fixed-frame ballOnSupport(), which this
   /// reproduces; a support of radius a -> infinity gives the plane.
   void bodyOnSupport() {
+    const bool sliding = contact_ == Contact::Sliding;
     ordered_json state = ordered_json::array(), vectors;
-    addVectors(state, vectors,
-               implicit_ ? std::initializer_list<const char*>{"M", "gamma", "contact"}
-                         : std::initializer_list<const char*>{"M", "gamma"});
+    std::vector<const char*> vectorStates =
+        sliding ? std::vector<const char*>{"omega", "v", "gamma"} : std::vector<const char*>{"M", "gamma"};
+    if (implicit_) vectorStates.push_back("contact");
+    addVectors(state, vectors, vectorStates);
     for (const char* n : {"q0", "q1", "q2", "q3"})
       state.push_back(n);
+    if (supportImplicit_) addVectors(state, vectors, {"support_contact"});
     out_["state"] = state;
     out_["vectors"] = vectors;
     if (implicit_) implicitContact();
@@ -918,14 +990,20 @@ private:
     define("rotation", kRotation);
     define("N", "rotation*gamma");
     define("vertical", "transpose(rotation)*[0, 0, 1]");
-    define("support_point", expr::renamed(expr::parse(supportContact_), {{"gamma", "N"}}));
-    define("A", "body_inertia + body_mass*(dot(r, r)*identity() - outer(r, r))");
+    if (supportImplicit_)
+      implicitSupportContact();
+    else
+      define("support_point", expr::renamed(expr::parse(supportContact_), {{"gamma", "N"}}));
+    if (!sliding) define("A", "body_inertia + body_mass*(dot(r, r)*identity() - outer(r, r))");
     if (contact_ == Contact::Marble) define("omega", "inverse(A)*M");
     define("tangent", "identity() - outer(gamma, gamma)");
     define("body_turning", "tangent*jacobian(r, gamma)*tangent");                                    // S
     define("support_turning", "tangent*transpose(rotation)*jacobian(support_point, gamma)*tangent"); // Sigma
     define("relative_turning", "support_turning - body_turning + outer(gamma, gamma)");
-    define("dN", "inverse(relative_turning)*(body_turning*cross(gamma, omega))");
+    // sliding, the contact moves on the support by the slip too: (Sigma - S) N' = S (gamma x omega) + v_slip
+    if (sliding) slipVelocity();
+    define("dN", "inverse(relative_turning)*(body_turning*cross(gamma, omega)" +
+                     std::string(sliding ? " + v_slip" : "") + ")");
     // the body touches at one point while the relative curvature is definite there (on a convex support
     // always; in a bowl while the body is more curved than the bowl both ways): det > 0 on the tangent
     // plane. Towards det = 0 it comes to touch along a curve (the contact's rate grows without bound) and
@@ -941,9 +1019,13 @@ private:
         "body_mass*cross(dr, cross(omega, r)) + body_mass*gravity_g*cross(r, vertical)";
     if (contact_ == Contact::Marble)
       eq["M"] = "cross(M" + gyrostat() + ", omega) + " + forces;
-    else
+    else if (contact_ == Contact::Rubber)
       rubber(forces, true);
+    else
+      slidingForces("vertical", "leaves_the_support");
     eq["gamma"] = "dgamma";
+    // the support's contact moves by its inverse shape operator: sigma'(N) N', N' = rotation dN
+    if (supportImplicit_) eq["support_contact"] = "jacobian(support_point, gamma)*dN";
     eq["q0"] = "-(q1*omega[1] + q2*omega[2] + q3*omega[3])/2"; // q' = q (0, omega)/2, omega in body axes
     eq["q1"] = "(q0*omega[1] + q2*omega[3] - q3*omega[2])/2";
     eq["q2"] = "(q0*omega[2] + q3*omega[1] - q1*omega[3])/2";
@@ -953,8 +1035,10 @@ private:
     define("q_start", "normalize([1 + normalize(gamma)[3], normalize(gamma)[2], -normalize(gamma)[1], 0])");
     for (int i = 0; i < 4; ++i)
       out_["complete"]["q" + std::to_string(i)] = "q_start[" + std::to_string(i + 1) + "]";
-    energy_ =
-        contact_ == Contact::Marble ? "dot(M, omega)/2 + potential" : "dot(omega, A*omega)/2 + potential";
+    if (supportImplicit_) completeSupportContact();
+    energy_ = contact_ == Contact::Marble   ? "dot(M, omega)/2 + potential"
+              : contact_ == Contact::Rubber ? "dot(omega, A*omega)/2 + potential"
+                                            : kSlidingEnergy;
   }
 
   /// The spin about the normal gamma (an integral in rubber rolling), an implicit body's contact drift and
@@ -996,27 +1080,40 @@ private:
       if (axis_ && !gyrostat_ && !potential_ && contact_ != Contact::Rubber && symmetricAboutTheAxis())
         o["jellett"]["integral"] = true;
     }
-    if (contact_ == Contact::Sliding) {
-      o["normal_force"] = {{"value", "normal_force"}, {"description", "the plane's normal reaction"}};
-      o["slip"] = {{"value", "norm(v_slip)"}, {"description", "speed of the contact point along the plane"}};
-    }
+    if (contact_ == Contact::Sliding) slidingObservables(o, "the plane's normal reaction");
+  }
+
+  static void slidingObservables(ordered_json& o, const std::string& reaction) {
+    o["normal_force"] = {{"value", "normal_force"}, {"description", reaction}};
+    o["slip"] = {{"value", "norm(v_slip)"}, {"description", "speed of the contact point along the support"}};
   }
 
   void observables() {
     ordered_json o;
     if (!support_.empty() && !balancedBall_) { // any other body on a curved support
-      o["E"] = {{"value", energy_}, {"description", "energy"}, {"integral", true}};
+      const bool sliding = contact_ == Contact::Sliding;
+      o["E"] = {{"value", energy_},
+                {"description", sliding ? "energy (friction at the contact dissipates it)" : "energy"}};
+      if (!sliding) o["E"]["integral"] = true;
       o["geometric"] = {
           {"value", "dot(gamma, gamma)"}, {"description", "geometric integral"}, {"integral", true}};
       for (int i = 1; i <= 3; ++i) {
         const std::string k = std::to_string(i);
-        o["omega" + k] = {{"value", "omega[" + k + "]"}, {"description", "angular velocity, body axis " + k}};
+        if (!sliding) // sliding, omega is the state
+          o["omega" + k] = {{"value", "omega[" + k + "]"},
+                            {"description", "angular velocity, body axis " + k}};
         o["x" + k] = {{"value", "x[" + k + "]"}, {"description", "centre of mass, fixed axis " + k}};
       }
+      if (sliding) slidingObservables(o, "the support's normal reaction");
       o["orientation"] = {{"value", "q0^2 + q1^2 + q2^2 + q3^2"},
                           {"description", "the orientation quaternion's squared norm"},
                           {"integral", true}};
       contactObservables(o, "vertical");
+      if (supportImplicit_)
+        o["support_drift"] = {{"value", "norm(support_contact - support_point)"},
+                              {"description",
+                               "how far the support's contact carried in the state is from the one solved "
+                               "for (Newton's method corrects it at every step)"}};
     } else if (!support_.empty()) { // a ball on a curved support
       o["E"] = {{"value", energy_}, {"description", "energy"}, {"integral", true}};
       if (support_ != "graph")
@@ -1062,6 +1159,7 @@ private:
       v["position"] = "x";
       v["contact"] = "support_point";
       if (!supportView_.is_null()) v["support"] = supportView_;
+      if (supportImplicit_) v["normal"] = "N"; // the trace lifted off it: no shape to take its normal from
     } else {
       v["rotation"] = "rotation";
       v["position"] = "x";
@@ -1092,14 +1190,16 @@ private:
   std::vector<std::pair<std::string, std::string>> origins_;
   std::map<std::string, RequiredShape> shapes_;
   std::set<std::string> generated_;
+  std::map<std::string, Where> userNamed_; ///< the user's parameters and definitions, where each is given
   Contact contact_ = Contact::Marble;
   std::string shape_, shapeContact_, energy_;
   ordered_json shapeView_;
   bool potential_ = false, gyrostat_ = false, axis_ = false;
   bool centred_ =
       false; ///< the body gives its shape's centre (else the centre of mass is the shape's origin)
-  std::optional<expr::Expression> implicit_;      ///< an implicit body's F
-  std::optional<expr::Expression> implicitStart_; ///< F for the first contact's Newton steps and the view
+  std::optional<expr::Expression> implicit_;        ///< an implicit body's F
+  std::optional<expr::Expression> implicitStart_;   ///< F for the first contact's Newton steps and the view
+  std::optional<expr::Expression> supportImplicit_; ///< an implicit support's F (fixed axes)
   std::string contactGuess_ = "-body_size*normalize(gamma)"; ///< where the first contact's steps begin
   std::string support_, supportContact_; ///< a curved support ("" for the plane), its inverse Gauss map
   ordered_json supportView_;

@@ -42,6 +42,8 @@ public:
   virtual std::optional<BodyMeshFile> bodyMesh() const = 0;
   /// The body's implicit surface; nullopt when it has none.
   virtual std::optional<ImplicitSurface> bodySurface() const { return std::nullopt; }
+  /// The support's implicit surface in world axes (F < 0 in the support); nullopt when it has none.
+  virtual std::optional<ImplicitSurface> supportSurface() const { return std::nullopt; }
 };
 
 } // namespace rv

@@ -230,7 +230,8 @@ EquationSystem::EquationSystem(EquationModelSpec spec) : spec_(std::move(spec)),
     for (const EquationModelSpec::Shape* shape : {&v.body, &v.support})
       for (const auto* t : {&shape->semiAxes, &shape->centre, &shape->p, &shape->q, &shape->height})
         if (*t) parse(**t);
-    for (const auto* t : {&v.meshScale, &v.normal, &v.surface, &v.surfaceSize})
+    for (const auto* t :
+         {&v.meshScale, &v.normal, &v.surface, &v.surfaceSize, &v.supportSurface, &v.supportSurfaceSize})
       if (*t) parse(**t);
     for (const ExprText* t : {&v.rotation, &v.position, &v.contact})
       parse(*t);
@@ -556,7 +557,8 @@ EquationModel::EquationModel(std::shared_ptr<const EquationSystem> system, const
     if (support_ && support_->shape != BodyShape::Paraboloid && v.support.height) // a bowl: the lower part
       supportCap_ = constant(v.support.height, 1, "the height", 1)[0];
     if (!v.mesh.empty()) mesh_ = BodyMeshFile{v.mesh, constant(v.meshScale, 1, "the mesh's scale", 1)[0]};
-    if (v.surface) { // F of the point (x, y, z) alone, the parameters folded in: a scope of its own
+    // F of the point (x, y, z) alone, the parameters folded in: a scope of its own
+    const auto implicitSurface = [&](const ExprText& F, const char* what) {
       std::map<std::string, Value> point;
       for (int i = 0; i < 3; ++i)
         point[std::string(1, "xyz"[i])] = Value::of(graph_.input(i));
@@ -564,8 +566,15 @@ EquationModel::EquationModel(std::shared_ptr<const EquationSystem> system, const
       for (std::size_t i = 0; i < specs.size(); ++i)
         point[specs[i].id] = Value::of(graph_.constant(params.values()[i]));
       Scope local(sys, graph_, std::move(point));
-      surface_ = expr::Program(graph_, local.lower(*v.surface, 1, 1, "the surface F").n);
+      return expr::Program(graph_, local.lower(F, 1, 1, what).n);
+    };
+    if (v.surface) {
+      surface_ = implicitSurface(*v.surface, "the surface F");
       surfaceSize_ = constant(v.surfaceSize, 1, "the surface's size", 1)[0];
+    }
+    if (v.supportSurface) {
+      supportSurface_ = implicitSurface(*v.supportSurface, "the support's surface F");
+      supportSurfaceSize_ = constant(v.supportSurfaceSize, 1, "the support's size", 1)[0];
     }
   }
 }
@@ -580,6 +589,16 @@ std::optional<ImplicitSurface> EquationModel::bodySurface() const {
                            return F;
                          },
                          surfaceSize_ + centre.norm()};
+}
+
+std::optional<ImplicitSurface> EquationModel::supportSurface() const {
+  if (!supportSurface_) return std::nullopt;
+  return ImplicitSurface{[program = *supportSurface_](const Eigen::Vector3d& p) {
+                           double F = 0;
+                           program.evaluate(p.data(), &F);
+                           return F;
+                         },
+                         supportSurfaceSize_};
 }
 
 namespace {

@@ -82,15 +82,17 @@ struct EquationModelSpec {
   /// The body drawn in the 3D view and what it rolls on.
   struct View {
     Shape body;
-    std::string mesh;                    ///< or a mesh file (STL, OBJ) for the body: its absolute path
-    std::optional<ExprText> meshScale;   ///< the mesh's coordinates are multiplied by it
-    std::optional<ExprText> surface;     ///< or the body's implicit surface F(x, y, z) = 0 about `centre`
-    std::optional<ExprText> surfaceSize; ///< a length that bounds that surface
-    Shape support;                       ///< the fixed surface (None: the plane z = 0)
-    ExprText rotation;                   ///< body -> world, a 3x3 matrix of the state
-    ExprText position;                   ///< the pose's centre in the world
-    ExprText contact;                    ///< the contact point in the world
-    std::optional<ExprText> normal;      ///< the support's normal at the contact (else from its shape)
+    std::string mesh;                       ///< or a mesh file (STL, OBJ) for the body: its absolute path
+    std::optional<ExprText> meshScale;      ///< the mesh's coordinates are multiplied by it
+    std::optional<ExprText> surface;        ///< or the body's implicit surface F(x, y, z) = 0 about `centre`
+    std::optional<ExprText> surfaceSize;    ///< a length that bounds that surface
+    Shape support;                          ///< the fixed surface (None: the plane z = 0)
+    std::optional<ExprText> supportSurface; ///< or the support's implicit surface F(x, y, z) = 0, world axes
+    std::optional<ExprText> supportSurfaceSize; ///< a length that bounds the part of it drawn
+    ExprText rotation;                          ///< body -> world, a 3x3 matrix of the state
+    ExprText position;                          ///< the pose's centre in the world
+    ExprText contact;                           ///< the contact point in the world
+    std::optional<ExprText> normal;             ///< the support's normal at the contact (else from its shape)
   };
   std::optional<View> view;
   std::string source; ///< the file, for messages
@@ -141,6 +143,7 @@ public:
   std::optional<SupportSurface> support() const override;
   std::optional<BodyMeshFile> bodyMesh() const override { return mesh_; }
   std::optional<ImplicitSurface> bodySurface() const override;
+  std::optional<ImplicitSurface> supportSurface() const override;
   Eigen::VectorXd stateFromNamed(const std::map<std::string, double>& named,
                                  const std::string& context) const override;
   Eigen::VectorXd stateFromMap(const std::vector<double>& point, const MapPointSpec& spec,
@@ -165,6 +168,8 @@ private:
   std::optional<BodyMeshFile> mesh_;
   std::optional<expr::Program> surface_; ///< the implicit body's F of inputs 0..2, about the shape's centre
   double surfaceSize_ = 1;
+  std::optional<expr::Program> supportSurface_; ///< the implicit support's F of inputs 0..2, world axes
+  double supportSurfaceSize_ = 1;
   bool poseHasNormal_ = false; // the pose program's last three outputs are the normal
   int unknownObservable_ = -1; // the observable holding the map completion's unknown, if any
 };

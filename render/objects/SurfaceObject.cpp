@@ -16,10 +16,13 @@
 namespace rv {
 
 SurfaceObject::SurfaceObject(std::string name, const SupportSurface& surface)
-    : VisualObject(std::move(name)) {
-  mesh_ = makeSurfaceMesh(surface);
+    : SurfaceObject(std::move(name), makeSurfaceMesh(surface)) {}
+
+SurfaceObject::SurfaceObject(std::string name, vtkSmartPointer<vtkPolyData> mesh)
+    : VisualObject(std::move(name)), mesh_(std::move(mesh)) {
   vtkNew<vtkPolyDataMapper> mapper;
   mapper->SetInputData(mesh_);
+  mapper->ScalarVisibilityOff(); // a sampled surface carries F's values: the colour is the options
   actor_ = vtkSmartPointer<vtkActor>::New();
   actor_->SetMapper(mapper);
   actor_->GetProperty()->BackfaceCullingOff();
