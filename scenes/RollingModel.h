@@ -84,7 +84,7 @@ struct RollingBodyForm {
   std::array<double, 3> centre{0, 0, 0};    ///< the shape's origin seen from the centre of mass
   double mass = 1;
   std::array<double, 3> inertia{0.2, 0.3, 0.4}; ///< central principal moments along the body axes
-  std::string contact = "marble";               ///< marble, rubber or sliding (sliding: on the plane only)
+  std::string contact = "marble";               ///< marble, rubber or sliding
   double friction = 0.3, gravity = 1;
   bool symmetryAxis = false;     ///< body axis 3 is an axis of symmetry (axis_up, Jellett)
   std::string support = "plane"; ///< plane, sphere, ellipsoid or paraboloid (a bowl)
@@ -97,8 +97,8 @@ struct RollingBodyForm {
 
 /// The rolling model file of a form, with a start that suits its shape (tilted from rest, spinning; on a
 /// curved support on top of the sphere or ellipsoid, at the bottom of a bowl). Throws InputError naming the
-/// field for a form that makes no model (sliding on a curved support, a superellipsoid's exponent below 2 or
-/// without bulge above 2, a profile's bottom not below its top).
+/// field for a form that makes no model (a superellipsoid's exponent below 2 or without bulge above 2, a
+/// profile's bottom not below its top).
 nlohmann::ordered_json rollingModelDocument(const RollingBodyForm& form);
 
 } // namespace rv

@@ -16,7 +16,6 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
-#include <QStandardItemModel>
 #include <QVBoxLayout>
 #include <fstream>
 #include <map>
@@ -35,8 +34,8 @@ QDoubleSpinBox* number(QWidget* parent, const QString& name, double value, doubl
 }
 
 /// The body must roll from the start the form writes: its field finite there. Not so, say, for a body flatter
-/// than its bowl where it touches it (a brick's faces are flatter than any bowl), whose run would stop at
-/// once: said here instead, naming why.
+/// than its bowl where it touches it (a brick's faces are flatter than any bowl), or for one sliding that the
+/// support would have to pull, whose run would stop at once: said here instead, naming why.
 void checkStart(const ModelEntry& entry) {
   const ParameterValues defaults(entry.info->parameters);
   // interpreted: a check starts no native compilation (the window's run of the file does)
@@ -54,6 +53,9 @@ void checkStart(const ModelEntry& entry) {
       (cause.find("flatter_than_the_support") != std::string::npos
            ? std::string(": there it is flatter than the bowl, so it would touch it along a curve; a larger "
                          "bowl, or a more curved body, rolls")
+       : cause.find("definitions.leaves_the_") != std::string::npos
+           ? std::string(": started so, sliding, it would have to be pulled onto what it slides on (the "
+                         "normal force would be negative)")
            : std::string()) +
       (cause.empty() ? "" : " (" + cause + ")"));
 }
@@ -102,7 +104,7 @@ RollingBodyDialog::RollingBodyDialog(QWidget* parent, std::function<void(const Q
   contact_->setObjectName("contact");
   contact_->addItems({"marble", "rubber", "sliding"});
   contact_->setToolTip("marble: rolling without slipping; rubber: also without spinning about the normal; "
-                       "sliding: viscous friction at the contact (the tippe top; on the plane only)");
+                       "sliding: viscous friction at the contact (the tippe top)");
   axis_->setObjectName("axis");
   error_->setObjectName("error");
   error_->setWordWrap(true);
@@ -179,10 +181,8 @@ RollingBodyDialog::RollingBodyDialog(QWidget* parent, std::function<void(const Q
   layout->addWidget(buttons);
   for (QComboBox* choice : {shape_, support_, side_})
     connect(choice, &QComboBox::currentTextChanged, this, [this] { showFields(); });
-  connect(contact_, &QComboBox::currentTextChanged, this, [this](const QString& c) {
-    friction_->setEnabled(c == "sliding");
-    error_->clear(); // a note on the contact chosen before
-  });
+  connect(contact_, &QComboBox::currentTextChanged, this,
+          [this](const QString& c) { friction_->setEnabled(c == "sliding"); });
   friction_->setEnabled(false);
   showFields();
 }
@@ -230,18 +230,6 @@ void RollingBodyDialog::showFields() {
     supportLabels_[i]->setText(supportLabels[i]);
     supportLabels_[i]->setVisible(!supportLabels[i].isEmpty());
     supportSizes_[i]->setVisible(!supportLabels[i].isEmpty());
-  }
-  // sliding is derived on the plane only: on a curved support it is not offered
-  const bool curved = support != "plane";
-  if (auto* contacts = qobject_cast<QStandardItemModel*>(contact_->model()))
-    if (QStandardItem* sliding = contacts->item(contact_->findText("sliding"))) {
-      sliding->setEnabled(!curved);
-      sliding->setToolTip(curved ? "sliding with friction is derived on the plane only" : "");
-    }
-  if (curved && contact_->currentText() == "sliding") {
-    contact_->setCurrentText("marble");
-    error_->setText("On a curved support the body rolls, marble or rubber (sliding with friction is derived "
-                    "on the plane only): the contact is now marble.");
   }
 }
 

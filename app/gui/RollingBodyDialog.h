@@ -29,7 +29,7 @@ public:
   bool create();
 
 private:
-  /// Shows the fields the shape and the support chosen have, and offers only the contacts they allow.
+  /// Shows the fields the shape and the support chosen have.
   void showFields();
   /// Shows or hides a row of the form: `field` and its label.
   void showRow(QWidget* field, bool visible);

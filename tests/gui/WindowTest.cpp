@@ -62,7 +62,6 @@
 #include <QScopeGuard>
 #include <QSignalSpy>
 #include <QSpinBox>
-#include <QStandardItemModel>
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QStyle>
@@ -2673,9 +2672,9 @@ private slots:
     QVERIFY(window_->scene()->model->findObservable("axis_up") >= 0);
   }
 
-  // File > New rolling body on a curved support: the fields follow the shape and the support chosen, sliding
-  // is not offered there (and a sliding body is turned to marble, saying why), and the model written has the
-  // body's profile, the bowl's sizes as parameters and a title that names the bowl
+  // File > New rolling body on a curved support: the fields follow the shape and the support chosen; a body
+  // that cannot roll from its start is refused saying why; the model written has the body's profile, the
+  // bowl's sizes as parameters, the contact (sliding, with its friction) and a title that names the bowl
   void aRollingBodyInABowlDescribedInTheFormOpens() {
     setModelCompilation(ModelCompilation::Off); // the compiled path has its own tests
     QString opened;
@@ -2697,14 +2696,8 @@ private slots:
     QVERIFY(!shown("size1") && !shown("exponent") && shown("profile") && shown("profile_squared") &&
             shown("z_bottom") && shown("z_top"));
     QVERIFY(!shown("side") && !shown("support1")); // the plane has no sizes
-    contact->setCurrentText("sliding");
     support->setCurrentText("sphere");
     QVERIFY(shown("side") && shown("support1") && !shown("support2"));
-    QCOMPARE(contact->currentText(), QString("marble"));
-    QVERIFY(dialog.findChild<QLabel*>("error")->text().contains("sliding with friction is derived on the "
-                                                                "plane only"));
-    const auto* contacts = qobject_cast<QStandardItemModel*>(contact->model());
-    QVERIFY(contacts && !contacts->item(contact->findText("sliding"))->isEnabled());
     // a brick in a spherical bowl: its faces are flatter than the bowl, so it cannot roll from its start --
     // said in the dialog, nothing written
     const QString file = dir_.filePath("gui_lens_in_a_bowl.json");
@@ -2720,7 +2713,9 @@ private slots:
     support->setCurrentText("paraboloid");
     QVERIFY(!shown("side") && shown("support1") && shown("support2") && !shown("support3"));
     box("support1")->setValue(6);
-    contact->setCurrentText("rubber");
+    contact->setCurrentText("sliding");
+    QVERIFY(box("friction")->isEnabled());
+    box("friction")->setValue(0.2);
     dialog.show();
     QVERIFY(QTest::qWaitForWindowExposed(&dialog));
     QVERIFY(keep(dialog.grab().toImage(), "window_new_rolling_body_in_a_bowl.png"));
@@ -2733,11 +2728,12 @@ private slots:
     QCOMPARE(written["body"]["profile_squared"].get<std::string>(), RollingBodyForm{}.profile);
     QCOMPARE(written["body"]["heights"].get<std::string>(), std::string("[z_bottom, z_top]"));
     QCOMPARE(written["support"].dump(), std::string(R"({"p":"bowl_p","q":"bowl_q","surface":"paraboloid"})"));
-    QCOMPARE(written["contact"].get<std::string>(), std::string("rubber"));
+    QCOMPARE(written["contact"].get<std::string>(), std::string("sliding"));
     QCOMPARE(window_->scene()->model->info().id, std::string("gui_lens_in_a_bowl"));
     const ParameterValues& p = window_->scene()->model->parameters();
     QCOMPARE(p["bowl_p"], 6.0);
     QCOMPARE(p["z_bottom"], -0.5);
+    QCOMPARE(p["mu"], 0.2);
     QVERIFY(window_->scene()->model->findObservable("x1") >= 0); // the body's place on the bowl
   }
 
