@@ -193,6 +193,7 @@ void RollingBodyDialog::showRow(QWidget* field, bool visible) {
 }
 
 void RollingBodyDialog::showFields() {
+  error_->clear(); // a reason given for another shape or support
   const QString s = shape_->currentText();
   const std::array<QString, 3> labels =
       s == "ellipsoid" || s == "superellipsoid"

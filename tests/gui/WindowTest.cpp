@@ -2710,6 +2710,7 @@ private slots:
              qPrintable(why));
     QVERIFY(!QFile::exists(file));
     shape->setCurrentText("revolution");
+    QVERIFY(dialog.findChild<QLabel*>("error")->text().isEmpty()); // the reason was the brick's
     support->setCurrentText("paraboloid");
     QVERIFY(!shown("side") && shown("support1") && shown("support2") && !shown("support3"));
     box("support1")->setValue(6);
