@@ -1218,11 +1218,44 @@ RollingEquations rollingEquations(const json& doc, const ordered_json* ordered, 
   return Generator(doc, ordered, source).run();
 }
 
+namespace {
+/// What a form describes, for its title: "a superellipsoid rolling in a spherical bowl".
+std::string formTitle(const RollingBodyForm& f) {
+  const std::string body = f.shape == "revolution" ? "body of revolution"
+                           : f.shape == "implicit" ? "body given by its surface"
+                                                   : f.shape;
+  const std::string on = f.support == "sphere"       ? (f.inside ? "in a spherical bowl" : "on a sphere")
+                         : f.support == "ellipsoid"  ? "on an ellipsoid"
+                         : f.support == "paraboloid" ? "in a paraboloid bowl"
+                                                     : "on a plane";
+  const bool vowel = std::string("aeiou").find(body.front()) != std::string::npos;
+  return (vowel ? "An " : "A ") + body + " rolling " + on + " (File > New rolling body)";
+}
+
+/// A form that makes no model, refused before it is written, naming the form's field.
+void checkForm(const RollingBodyForm& f) {
+  const auto fail = [](const std::string& field, const std::string& what) {
+    throw InputError("the form's " + field + ": " + what);
+  };
+  if (f.support != "plane" && f.support != "sphere" && f.support != "ellipsoid" && f.support != "paraboloid")
+    fail("support", "expected plane, sphere, ellipsoid or paraboloid, not \"" + f.support + "\"");
+  if (f.shape == "superellipsoid" && f.exponent < 2)
+    fail("exponent", "a superellipsoid's exponent is at least 2 (below 2 it has edges of infinite "
+                     "curvature)");
+  if (f.shape == "superellipsoid" && f.exponent > 2 && f.bulge <= 0)
+    fail("bulge", "a superellipsoid with an exponent above 2 needs a bulge > 0 (e.g. 0.05): without it its "
+                  "faces are flat along their mid-lines, where it cannot roll");
+  if (f.shape == "revolution" && !(f.heights[0] < f.heights[1]))
+    fail("heights", "the profile's bottom must lie below its top");
+}
+} // namespace
+
 ordered_json rollingModelDocument(const RollingBodyForm& f) {
+  checkForm(f);
   ordered_json doc;
   doc["kind"] = "rolling";
   doc["id"] = f.id;
-  doc["title"] = f.title.empty() ? "A " + f.shape + " rolling on a plane (File > New rolling body)" : f.title;
+  doc["title"] = f.title.empty() ? formTitle(f) : f.title;
   doc["parameters"] =
       ordered_json::object(); // filled last: a reference into doc would not outlive its growth
   ordered_json p;
@@ -1231,19 +1264,38 @@ ordered_json rollingModelDocument(const RollingBodyForm& f) {
     if (positive) p[id]["min"] = 0;
     return id;
   };
+  // "[NAME1, NAME2, NAME3]", three parameters, each described as `what` and its index
+  const auto triple = [&](const std::string& name, const std::array<double, 3>& values,
+                          const std::string& what) {
+    std::string v;
+    for (int i = 0; i < 3; ++i)
+      v += (i ? ", " : "") + parameter(name + std::to_string(i + 1), values[static_cast<std::size_t>(i)],
+                                       what + " " + std::to_string(i + 1), true);
+    return "[" + v + "]";
+  };
   ordered_json body;
   body["shape"] = f.shape;
   if (f.shape == "sphere" || f.shape == "disk") {
     body["radius"] = parameter("R", f.sizes[0], "radius", true);
-  } else if (f.shape == "ellipsoid") {
-    std::string axes;
-    for (int i = 0; i < 3; ++i)
-      axes += (i ? ", " : "") + parameter("b" + std::to_string(i + 1), f.sizes[static_cast<std::size_t>(i)],
-                                          "semi-axis along body axis " + std::to_string(i + 1), true);
-    body["semi_axes"] = "[" + axes + "]";
+  } else if (f.shape == "ellipsoid" || f.shape == "superellipsoid") {
+    body["semi_axes"] = triple("b", f.sizes, "semi-axis along body axis");
+    if (f.shape == "superellipsoid") {
+      body["exponent"] = parameter(
+          "p", f.exponent, "exponent: 2 is the ellipsoid, larger flattens the faces towards a box's", true);
+      p["p"]["min"] = 2;
+      body["bulge"] = parameter(
+          "bulge", f.bulge,
+          "weight of the ellipsoid through the same vertices that keeps the faces curved (> 0 when p > 2)",
+          true);
+    }
   } else if (f.shape == "paraboloid") {
     body["p"] = parameter("p", f.sizes[0], "radius of curvature at the vertex along body axis 1", true);
     body["q"] = parameter("q", f.sizes[1], "radius of curvature at the vertex along body axis 2", true);
+  } else if (f.shape == "revolution") {
+    body[f.profileSquared ? "profile_squared" : "profile"] = f.profile;
+    body["heights"] =
+        "[" + parameter("z_bottom", f.heights[0], "the profile's bottom on body axis 3", false) + ", " +
+        parameter("z_top", f.heights[1], "the profile's top on body axis 3", false) + "]";
   } else if (f.shape == "implicit") {
     body["F"] = f.surface;
     body["size"] = f.size;
@@ -1276,18 +1328,37 @@ ordered_json rollingModelDocument(const RollingBodyForm& f) {
                         true));
   if (f.symmetryAxis) body["axis"] = "[0, 0, 1]";
   doc["body"] = body;
+  if (f.support != "plane") { // fixed, so its sizes are along the fixed axes
+    ordered_json support{{"surface", f.support}};
+    if (f.support == "sphere") {
+      support["radius"] = parameter("a", f.supportSizes[0],
+                                    f.inside ? "radius of the spherical bowl" : "radius of the sphere", true);
+      support["side"] = f.inside ? "inside" : "outside";
+    } else if (f.support == "ellipsoid") {
+      support["semi_axes"] = triple("a", f.supportSizes, "semi-axis of the ellipsoid along fixed axis");
+    } else {
+      support["p"] = parameter("bowl_p", f.supportSizes[0],
+                               "the bowl's radius of curvature at its bottom along fixed axis 1", true);
+      support["q"] = parameter("bowl_q", f.supportSizes[1],
+                               "the bowl's radius of curvature at its bottom along fixed axis 2", true);
+    }
+    doc["support"] = support;
+  }
   doc["gravity"] = parameter("g", f.gravity, "acceleration of gravity", true);
   doc["contact"] = f.contact;
   if (f.contact == "sliding")
     doc["friction"] = parameter("mu", f.friction, "viscous friction at the contact", true);
-  // a start tilted from rest, spinning about body axis 3 (a disk stands on its edge)
+  // a start tilted from rest, spinning about body axis 3 (a disk stands on its edge); on a curved support
+  // the orientation is completed from gamma (bodyOnSupport's q_start): on top of the sphere or ellipsoid, at
+  // the bottom of the bowl. A sliding sphere spins fast, as a tippe top must to turn over; any other sliding
+  // body at 2 (faster, a long body's contact sweeps round so fast that the plane would have to pull it)
   const double tilt = 0.2;
   const std::array<double, 3> gamma = f.shape == "disk"
                                           ? std::array<double, 3>{0, std::cos(tilt), std::sin(tilt)}
                                           : std::array<double, 3>{std::sin(tilt), 0, std::cos(tilt)};
   ordered_json start;
   const char* spin = f.contact == "sliding" ? "omega" : "M";
-  const double spinValue = f.contact == "sliding" ? 5.0 : 2.0 * f.inertia[2];
+  const double spinValue = f.contact != "sliding" ? 2.0 * f.inertia[2] : f.shape == "sphere" ? 5.0 : 2.0;
   for (int i = 0; i < 3; ++i)
     start[spin + std::to_string(i + 1)] = i == 2 ? spinValue : 0.0;
   for (int i = 0; i < 3; ++i)

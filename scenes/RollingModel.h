@@ -64,24 +64,41 @@ struct RollingEquations {
 RollingEquations rollingEquations(const nlohmann::json& doc, const nlohmann::ordered_json* ordered,
                                   const std::string& source);
 
-/// What File > New rolling body asks of a body on the plane. Every number becomes a parameter of the model
-/// written (so the GUI's fields, --set, sweeps and continuation reach it).
+/// What File > New rolling body asks of a body and what it rolls on. Every number becomes a parameter of the
+/// model written (so the GUI's fields, --set, sweeps and continuation reach it).
 struct RollingBodyForm {
   std::string id = "my_body", title;
-  std::string shape = "ellipsoid"; ///< sphere, ellipsoid, paraboloid, disk or implicit
-  std::array<double, 3> sizes{1, 0.6,
-                              0.4};      ///< sphere, disk: the radius first; ellipsoid: the semi-axes; p, q
-  std::string surface;                   ///< implicit: F(x, y, z), F < 0 inside
-  double size = 1;                       ///< implicit: a length that bounds the surface
-  std::array<double, 3> centre{0, 0, 0}; ///< the shape's origin seen from the centre of mass
+  /// sphere, ellipsoid, paraboloid, disk, superellipsoid, revolution or implicit
+  std::string shape = "ellipsoid";
+  /// sphere, disk: the radius first; ellipsoid, superellipsoid: the semi-axes; paraboloid: p, q
+  std::array<double, 3> sizes{1, 0.6, 0.4};
+  double exponent = 4, bulge = 0.05; ///< superellipsoid: p >= 2, and the bulge (> 0 when p > 2)
+  /// revolution: the radius rho(z) about body axis 3 at the height z (rho(z)^2 when profileSquared), an
+  /// expression of z and the parameters (z_bottom, z_top among them); by default a lens wider above its
+  /// middle
+  std::string profile = "(z - z_bottom)*(z_top - z)*(1.6 + 0.4*z)";
+  bool profileSquared = true;
+  std::array<double, 2> heights{-0.5, 0.5}; ///< revolution: the profile's ends on the axis, bottom and top
+  std::string surface;                      ///< implicit: F(x, y, z), F < 0 inside
+  double size = 1;                          ///< implicit: a length that bounds the surface
+  std::array<double, 3> centre{0, 0, 0};    ///< the shape's origin seen from the centre of mass
   double mass = 1;
   std::array<double, 3> inertia{0.2, 0.3, 0.4}; ///< central principal moments along the body axes
   std::string contact = "marble";               ///< marble, rubber or sliding
   double friction = 0.3, gravity = 1;
-  bool symmetryAxis = false; ///< body axis 3 is an axis of symmetry (axis_up, Jellett)
+  bool symmetryAxis = false;     ///< body axis 3 is an axis of symmetry (axis_up, Jellett)
+  std::string support = "plane"; ///< plane, sphere, ellipsoid or paraboloid (a bowl)
+  bool inside = false;           ///< sphere: the body rolls inside it (a spherical bowl), not on it
+  /// sphere: its radius first; ellipsoid: its semi-axes; paraboloid: p, q, its radii of curvature at the
+  /// bottom. The defaults are flatter than each shape's default body (but the superellipsoid's brick, whose
+  /// faces are flatter than any bowl), so that it touches a bowl at one point.
+  std::array<double, 3> supportSizes{8, 6, 4};
 };
 
-/// The rolling model file of a form, with a start that suits its shape (tilted from rest, spinning).
+/// The rolling model file of a form, with a start that suits its shape (tilted from rest, spinning; on a
+/// curved support on top of the sphere or ellipsoid, at the bottom of a bowl). Throws InputError naming the
+/// field for a form that makes no model (a superellipsoid's exponent below 2 or without bulge above 2, a
+/// profile's bottom not below its top).
 nlohmann::ordered_json rollingModelDocument(const RollingBodyForm& form);
 
 } // namespace rv

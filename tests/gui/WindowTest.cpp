@@ -76,6 +76,7 @@
 #include <cstdio>
 #include <fstream>
 #include <functional>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <vtkCamera.h>
 #include <vtkChartXY.h>
@@ -2689,6 +2690,72 @@ private slots:
     QCOMPARE(p["c3"], 0.3);
     QVERIFY(window_->scene()->model->findObservable("jellett") >= 0);
     QVERIFY(window_->scene()->model->findObservable("axis_up") >= 0);
+  }
+
+  // File > New rolling body on a curved support: the fields follow the shape and the support chosen; a body
+  // that cannot roll from its start is refused saying why; the model written has the body's profile, the
+  // bowl's sizes as parameters, the contact (sliding, with its friction) and a title that names the bowl
+  void aRollingBodyInABowlDescribedInTheFormOpens() {
+    setModelCompilation(ModelCompilation::Off); // the compiled path has its own tests
+    QString opened;
+    RollingBodyDialog dialog(window_, [&](const QString& path) {
+      opened = path;
+      window_->openModel(path);
+    });
+    const auto box = [&](const char* name) { return dialog.findChild<QDoubleSpinBox*>(name); };
+    const auto shown = [&](const char* name) {
+      return dialog.findChild<QWidget*>(name)->isVisibleTo(&dialog);
+    };
+    auto* shape = dialog.findChild<QComboBox*>("shape");
+    auto* support = dialog.findChild<QComboBox*>("support");
+    auto* contact = dialog.findChild<QComboBox*>("contact");
+    dialog.findChild<QLineEdit*>("id")->setText("gui_lens_in_a_bowl");
+    shape->setCurrentText("superellipsoid");
+    QVERIFY(shown("size3") && shown("exponent") && shown("bulge") && !shown("profile") && !shown("F"));
+    shape->setCurrentText("revolution");
+    QVERIFY(!shown("size1") && !shown("exponent") && shown("profile") && shown("profile_squared") &&
+            shown("z_bottom") && shown("z_top"));
+    QVERIFY(!shown("side") && !shown("support1")); // the plane has no sizes
+    support->setCurrentText("sphere");
+    QVERIFY(shown("side") && shown("support1") && !shown("support2"));
+    // a brick in a spherical bowl: its faces are flatter than the bowl, so it cannot roll from its start --
+    // said in the dialog, nothing written
+    const QString file = dir_.filePath("gui_lens_in_a_bowl.json");
+    dialog.findChild<QLineEdit*>("file")->setText(file);
+    dialog.findChild<QComboBox*>("side")->setCurrentText("inside");
+    shape->setCurrentText("superellipsoid");
+    QVERIFY(!dialog.create());
+    const QString why = dialog.findChild<QLabel*>("error")->text();
+    QVERIFY2(why.contains("flatter than the bowl") && why.contains("definitions.flatter_than_the_support"),
+             qPrintable(why));
+    QVERIFY(!QFile::exists(file));
+    shape->setCurrentText("revolution");
+    QVERIFY(dialog.findChild<QLabel*>("error")->text().isEmpty()); // the reason was the brick's
+    support->setCurrentText("paraboloid");
+    QVERIFY(!shown("side") && shown("support1") && shown("support2") && !shown("support3"));
+    box("support1")->setValue(6);
+    contact->setCurrentText("sliding");
+    QVERIFY(box("friction")->isEnabled());
+    box("friction")->setValue(0.2);
+    dialog.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&dialog));
+    QVERIFY(keep(dialog.grab().toImage(), "window_new_rolling_body_in_a_bowl.png"));
+    QVERIFY2(dialog.create(), qPrintable(dialog.findChild<QLabel*>("error")->text()));
+    QCOMPARE(opened, file);
+    std::ifstream in(file.toStdString());
+    const nlohmann::json written = nlohmann::json::parse(in);
+    QCOMPARE(written["title"].get<std::string>(),
+             std::string("A body of revolution rolling in a paraboloid bowl (File > New rolling body)"));
+    QCOMPARE(written["body"]["profile_squared"].get<std::string>(), RollingBodyForm{}.profile);
+    QCOMPARE(written["body"]["heights"].get<std::string>(), std::string("[z_bottom, z_top]"));
+    QCOMPARE(written["support"].dump(), std::string(R"({"p":"bowl_p","q":"bowl_q","surface":"paraboloid"})"));
+    QCOMPARE(written["contact"].get<std::string>(), std::string("sliding"));
+    QCOMPARE(window_->scene()->model->info().id, std::string("gui_lens_in_a_bowl"));
+    const ParameterValues& p = window_->scene()->model->parameters();
+    QCOMPARE(p["bowl_p"], 6.0);
+    QCOMPARE(p["z_bottom"], -0.5);
+    QCOMPARE(p["mu"], 0.2);
+    QVERIFY(window_->scene()->model->findObservable("x1") >= 0); // the body's place on the bowl
   }
 
   void aModelFileOpensAndReloadsWhenSaved() {

@@ -1042,6 +1042,143 @@ TEST(RollingModel, JellettIsAnIntegralOnlyOfABodySymmetricAboutItsAxis) {
   EXPECT_GT(relativeDrift(along(run, "jellett")), 1e-4); // the symmetric top keeps it to 1e-10 (above)
 }
 
+/// The model File > New rolling body writes for `form` (its id made unique), run from the start it writes.
+ExampleRun runForm(RollingBodyForm form, double T) {
+  static int made = 0;
+  form.id = "form_" + form.shape + "_" + form.support + "_" + std::to_string(made++);
+  const ModelEntry& e = modelEntryFromJson(json::parse(rollingModelDocument(form).dump()), "<form>");
+  return runModel(instance(e), modelFileInitial(e).at("state").get<std::map<std::string, double>>(), T, 0.5);
+}
+
+// File > New rolling body: each shape and each support it offers makes a model that runs from the start the
+// form writes -- on a curved support the body on top of the sphere or ellipsoid, at the bottom of the bowl --
+// keeps its energy and moves
+TEST(RollingModel, EveryShapeAndSupportOfTheNewBodyFormRollsFromItsStartKeepingItsEnergy) {
+  struct Case {
+    const char *shape, *support;
+    bool inside;
+    const char* contact;
+  };
+  for (const Case& c : std::vector<Case>{{"superellipsoid", "plane", false, "marble"},
+                                         {"revolution", "plane", false, "rubber"},
+                                         {"ellipsoid", "sphere", false, "marble"},
+                                         {"ellipsoid", "sphere", true, "rubber"},
+                                         {"ellipsoid", "ellipsoid", false, "marble"},
+                                         {"ellipsoid", "paraboloid", false, "marble"},
+                                         {"superellipsoid", "sphere", false, "marble"},
+                                         {"revolution", "paraboloid", false, "rubber"}}) {
+    SCOPED_TRACE(std::string(c.shape) + " " + c.support + (c.inside ? " inside " : " ") + c.contact);
+    RollingBodyForm form; // the form's defaults but for these
+    form.shape = c.shape;
+    form.support = c.support;
+    form.inside = c.inside;
+    form.contact = c.contact;
+    const ExampleRun run = runForm(form, 5);
+    EXPECT_LT(relativeDrift(along(run, "E")), 1e-10);
+    const std::vector<double> g1 = along(run, "gamma1");
+    EXPECT_GT(*std::max_element(g1.begin(), g1.end()) - *std::min_element(g1.begin(), g1.end()), 0.05);
+    if (std::string(c.contact) == "rubber") {
+      for (double spin : along(run, "spin_normal"))
+        EXPECT_LT(std::abs(spin), 1e-12);
+    }
+  }
+}
+
+// The form writes each shape's and support's sizes where the rolling model reads them: the same body given
+// two ways rolls the same, through the form -- a superellipsoid of exponent 2 (its contact by Newton's
+// method) as the closed-form ellipsoid in a spherical bowl, a spheroid by its profile as the closed-form one
+// on an ellipsoid, and an ellipsoid of equal semi-axes as the sphere it is
+TEST(RollingModel, TheNewBodyFormWritesEachShapeAndSupportItOffers) {
+  RollingBodyForm ellipsoid;
+  ellipsoid.sizes = {0.6, 0.6, 0.4};
+  ellipsoid.support = "sphere";
+  ellipsoid.inside = true;
+  RollingBodyForm superellipsoid = ellipsoid;
+  superellipsoid.shape = "superellipsoid";
+  superellipsoid.exponent = 2;
+  superellipsoid.bulge = 0;
+  expectTheSameRun(runForm(ellipsoid, 5), runForm(superellipsoid, 5),
+                   {"omega1", "omega2", "omega3", "gamma1", "gamma2", "gamma3", "x1", "x2", "x3", "E"}, 1e-9,
+                   0.5);
+  ellipsoid.support = "ellipsoid";
+  ellipsoid.supportSizes = {3, 2.5, 2};
+  RollingBodyForm spheroid = ellipsoid;
+  spheroid.shape = "revolution";
+  spheroid.profile = "0.36*(1 - (z/0.4)^2)";
+  spheroid.heights = {-0.4, 0.4};
+  expectTheSameRun(runForm(ellipsoid, 5), runForm(spheroid, 5),
+                   {"omega1", "omega2", "omega3", "gamma1", "gamma2", "gamma3", "x1", "x2", "x3", "E"}, 1e-9,
+                   0.5);
+  ellipsoid.supportSizes = {3, 3, 3};
+  RollingBodyForm onASphere = ellipsoid;
+  onASphere.support = "sphere";
+  onASphere.inside = false;
+  expectTheSameRun(runForm(ellipsoid, 5), runForm(onASphere, 5),
+                   {"omega1", "omega2", "omega3", "gamma1", "gamma2", "gamma3", "x1", "x2", "x3", "E"}, 1e-12,
+                   0.5);
+  // the title names the body and what it rolls on
+  EXPECT_EQ(rollingModelDocument(superellipsoid)["title"],
+            "A superellipsoid rolling in a spherical bowl (File > New rolling body)");
+  EXPECT_EQ(rollingModelDocument(spheroid)["title"],
+            "A body of revolution rolling on an ellipsoid (File > New rolling body)");
+}
+
+// A sliding body from the form on a curved support: the tippe top (a sphere, its centre of mass off centre)
+// in a spherical bowl and the ellipsoid in a paraboloid bowl; without friction they keep their energy, with
+// it friction only takes energy, and does take it (the form's mu reaches the model)
+TEST(RollingModel, ASlidingBodyFromTheNewBodyFormOnACurvedSupportLosesEnergyOnlyToFriction) {
+  RollingBodyForm top;
+  top.shape = "sphere";
+  top.sizes = {1, 0, 0};
+  top.centre = {0, 0, 0.3};
+  top.inertia = {0.35, 0.35, 0.4};
+  top.symmetryAxis = true;
+  top.support = "sphere";
+  top.inside = true;
+  RollingBodyForm ellipsoid;
+  ellipsoid.support = "paraboloid";
+  for (RollingBodyForm form : {top, ellipsoid}) {
+    SCOPED_TRACE(form.shape);
+    form.contact = "sliding";
+    form.friction = 0;
+    EXPECT_LT(relativeDrift(along(runForm(form, 5), "E")), 1e-10);
+    form.friction = 0.3;
+    const std::vector<double> E = along(runForm(form, 5), "E");
+    for (std::size_t i = 1; i < E.size(); ++i)
+      EXPECT_LE(E[i], E[i - 1] + 1e-12);
+    EXPECT_LT(E.back(), E.front() - 1e-3);
+  }
+}
+
+// What the form cannot make is refused before a file is written, naming the form's field: a superellipsoid
+// flat along its mid-lines or with edges, a profile upside down, a support it does not offer
+TEST(RollingModel, TheNewBodyFormRefusesWhatMakesNoModel) {
+  const auto refusal = [](const RollingBodyForm& form) -> std::string {
+    try {
+      rollingModelDocument(form);
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  RollingBodyForm form;
+  form.shape = "superellipsoid";
+  EXPECT_EQ(refusal(form), ""); // exponent 4, bulge 0.05
+  form.bulge = 0;
+  EXPECT_NE(refusal(form).find("the form's bulge:"), std::string::npos) << refusal(form);
+  form.exponent = 1.5;
+  EXPECT_NE(refusal(form).find("the form's exponent:"), std::string::npos) << refusal(form);
+  form.shape = "revolution";
+  EXPECT_EQ(refusal(form), "");
+  form.heights = {0.5, -0.5};
+  EXPECT_NE(refusal(form).find("the form's heights:"), std::string::npos) << refusal(form);
+  form.shape = "sphere";
+  form.support = "torus";
+  EXPECT_NE(refusal(form).find("the form's support: expected plane, sphere, ellipsoid or paraboloid"),
+            std::string::npos)
+      << refusal(form);
+}
+
 TEST(RollingModel, ATopThatWouldLeaveThePlaneStopsTheRunSayingSo) {
   // weightless, the spinning top's plane would have to pull (N < 0): the sliding model no longer holds
   const std::map<std::string, double> spun{{"omega1", 0}, {"omega2", 0},
