@@ -1225,7 +1225,7 @@ std::string formTitle(const RollingBodyForm& f) {
                            : f.shape == "implicit" ? "body given by its surface"
                                                    : f.shape;
   const std::string on = f.support == "sphere"       ? (f.inside ? "in a spherical bowl" : "on a sphere")
-                         : f.support == "ellipsoid"  ? "on an ellipsoid"
+                         : f.support == "ellipsoid"  ? (f.inside ? "in an ellipsoid bowl" : "on an ellipsoid")
                          : f.support == "paraboloid" ? "in a paraboloid bowl"
                                                      : "on a plane";
   const bool vowel = std::string("aeiou").find(body.front()) != std::string::npos;
@@ -1336,6 +1336,7 @@ ordered_json rollingModelDocument(const RollingBodyForm& f) {
       support["side"] = f.inside ? "inside" : "outside";
     } else if (f.support == "ellipsoid") {
       support["semi_axes"] = triple("a", f.supportSizes, "semi-axis of the ellipsoid along fixed axis");
+      support["side"] = f.inside ? "inside" : "outside";
     } else {
       support["p"] = parameter("bowl_p", f.supportSizes[0],
                                "the bowl's radius of curvature at its bottom along fixed axis 1", true);

@@ -88,7 +88,7 @@ struct RollingBodyForm {
   double friction = 0.3, gravity = 1;
   bool symmetryAxis = false;     ///< body axis 3 is an axis of symmetry (axis_up, Jellett)
   std::string support = "plane"; ///< plane, sphere, ellipsoid or paraboloid (a bowl)
-  bool inside = false;           ///< sphere: the body rolls inside it (a spherical bowl), not on it
+  bool inside = false;           ///< sphere, ellipsoid: the body rolls inside it (a bowl), not on it
   /// sphere: its radius first; ellipsoid: its semi-axes; paraboloid: p, q, its radii of curvature at the
   /// bottom. The defaults are flatter than each shape's default body (but the superellipsoid's brick, whose
   /// faces are flatter than any bowl), so that it touches a bowl at one point.

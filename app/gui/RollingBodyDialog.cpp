@@ -94,13 +94,13 @@ RollingBodyDialog::RollingBodyDialog(QWidget* parent, std::function<void(const Q
                      "(> 0 when the exponent is above 2)");
   support_->setObjectName("support");
   support_->addItems({"plane", "sphere", "ellipsoid", "paraboloid"});
-  support_->setToolTip(
-      "what the body rolls on: the plane; a sphere (on it, or inside it: a spherical bowl); "
-      "an ellipsoid (on it); a paraboloid bowl (in it). On a curved support the body must be "
-      "more curved than a bowl where it touches it");
+  support_->setToolTip("what the body rolls on: the plane; a sphere (on it, or inside it: a spherical bowl); "
+                       "an ellipsoid (on it, or inside it: an ellipsoid bowl); a paraboloid bowl (in it). On "
+                       "a curved support the body must be "
+                       "more curved than a bowl where it touches it");
   side_->setObjectName("side");
   side_->addItems({"outside", "inside"});
-  side_->setToolTip("outside: the body rolls on the sphere; inside: in it (a spherical bowl)");
+  side_->setToolTip("outside: the body rolls on the sphere or ellipsoid; inside: in it (a bowl)");
   contact_->setObjectName("contact");
   contact_->addItems({"marble", "rubber", "sliding"});
   contact_->setToolTip("marble: rolling without slipping; rubber: also without spinning about the normal; "
@@ -144,7 +144,7 @@ RollingBodyDialog::RollingBodyDialog(QWidget* parent, std::function<void(const Q
   form->addRow("Mass", mass_);
   row("Central principal moments", inertia_, "I", defaults.inertia, 1e-9);
   form->addRow("Rolls on", support_);
-  form->addRow("Side of the sphere", side_);
+  form->addRow("Side of the support", side_);
   for (std::size_t i = 0; i < 3; ++i) {
     supportSizes_[i] = number(this, QString("support%1").arg(i + 1), defaults.supportSizes[i], 1e-9);
     supportLabels_[i] = new QLabel(this);
@@ -216,7 +216,7 @@ void RollingBodyDialog::showFields() {
     showRow(field, s == "implicit");
 
   const QString support = support_->currentText();
-  showRow(side_, support == "sphere");
+  showRow(side_, support == "sphere" || support == "ellipsoid");
   const std::array<QString, 3> supportLabels =
       support == "sphere"
           ? std::array<QString, 3>{side_->currentText() == "inside" ? "Bowl's radius a" : "Sphere's radius a",

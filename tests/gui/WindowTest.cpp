@@ -2731,6 +2731,8 @@ private slots:
     QVERIFY(!QFile::exists(file));
     shape->setCurrentText("revolution");
     QVERIFY(dialog.findChild<QLabel*>("error")->text().isEmpty()); // the reason was the brick's
+    support->setCurrentText("ellipsoid");
+    QVERIFY(shown("side") && shown("support1") && shown("support2") && shown("support3")); // a bowl too
     support->setCurrentText("paraboloid");
     QVERIFY(!shown("side") && shown("support1") && shown("support2") && !shown("support3"));
     box("support1")->setValue(6);

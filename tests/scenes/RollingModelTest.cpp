@@ -1101,6 +1101,7 @@ TEST(RollingModel, TheNewBodyFormWritesEachShapeAndSupportItOffers) {
                    {"omega1", "omega2", "omega3", "gamma1", "gamma2", "gamma3", "x1", "x2", "x3", "E"}, 1e-9,
                    0.5);
   ellipsoid.support = "ellipsoid";
+  ellipsoid.inside = false;
   ellipsoid.supportSizes = {3, 2.5, 2};
   RollingBodyForm spheroid = ellipsoid;
   spheroid.shape = "revolution";
@@ -1116,6 +1117,12 @@ TEST(RollingModel, TheNewBodyFormWritesEachShapeAndSupportItOffers) {
   expectTheSameRun(runForm(ellipsoid, 5), runForm(onASphere, 5),
                    {"omega1", "omega2", "omega3", "gamma1", "gamma2", "gamma3", "x1", "x2", "x3", "E"}, 1e-12,
                    0.5);
+  ellipsoid.inside = onASphere.inside = true; // and inside: an ellipsoid bowl of equal semi-axes
+  expectTheSameRun(runForm(ellipsoid, 5), runForm(onASphere, 5),
+                   {"omega1", "omega2", "omega3", "gamma1", "gamma2", "gamma3", "x1", "x2", "x3", "E"}, 1e-12,
+                   0.5);
+  EXPECT_EQ(rollingModelDocument(ellipsoid)["title"],
+            "An ellipsoid rolling in an ellipsoid bowl (File > New rolling body)");
   // the title names the body and what it rolls on
   EXPECT_EQ(rollingModelDocument(superellipsoid)["title"],
             "A superellipsoid rolling in a spherical bowl (File > New rolling body)");
