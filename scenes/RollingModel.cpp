@@ -601,10 +601,17 @@ private:
       (root_ / "support" / "describes")
           .fail("\"centre\" describes the surface a balanced ball's centre moves on; for " + which +
                 " give the support's own sizes (\"describes\": \"support\")");
-    if (potential_)
-      (root_ / "potential")
-          .fail("on a curved support a potential is for a balanced ball only (U of its centre); " + which +
-                " rolls under gravity alone");
+    if (potential_) { // U(vertical, x): the vertical in body axes and the centre of mass in fixed axes
+      const std::vector<std::string> used =
+          expr::namesUsed(expr::parse(text(doc_["potential"], root_ / "potential")));
+      if (std::any_of(used.begin(), used.end(),
+                      [](const std::string& n) { return n.rfind("gamma", 0) == 0; }))
+        (root_ / "potential")
+            .fail(
+                "on a curved support " + which +
+                " has a potential U of `vertical` (the upward vertical in body axes) and `x` (its centre of "
+                "mass in fixed axes); `gamma` is the support's normal there");
+    }
   }
 
   /// The user's definitions, after checking none takes a name the derivation uses.
@@ -807,11 +814,15 @@ private:
   /// contact's rates dr and dgamma (the support's turning is in them); where N would turn negative the
   /// body leaves the support and the run stops, naming `leaves`.
   void slidingForces(const std::string& vertical, const std::string& leaves) {
+    const bool curved = vertical != "gamma"; // on a curved support U(vertical, x) has a force too
     define("friction_force", "-friction_mu*v_slip");
     define("L", "body_inertia*omega" + gyrostat());
     define("I_inverse", "inverse(body_inertia)");
-    define("omega_free", "I_inverse*(cross(r, friction_force) - cross(omega, L)" + potentialTorque() + ")");
-    define("v_free", "friction_force/body_mass - gravity_g*" + vertical + " - cross(omega, v)");
+    define("omega_free",
+           "I_inverse*(cross(r, friction_force) - cross(omega, L)" +
+               (curved ? std::string(potential_ ? " + potential_couple" : "") : potentialTorque()) + ")");
+    define("v_free", "friction_force/body_mass - gravity_g*" + vertical + " - cross(omega, v)" +
+                         (curved && potential_ ? " + potential_force/body_mass" : ""));
     define("omega_per_N", "I_inverse*cross(r, gamma)");
     define("normal_force", "-(dot(v_free + cross(omega_free, r) + cross(omega, dr), gamma) + "
                            "dot(v_contact, dgamma))/(1/body_mass + dot(omega_per_N, cross(r, gamma)))");
@@ -993,7 +1004,12 @@ private:
     define("r", "contact_s + body_centre");
     define("rotation", kRotation);
     define("N", "rotation*gamma");
-    define("vertical", "transpose(rotation)*[0, 0, 1]");
+    // with a potential U(vertical, x), vertical gets nodes of its own (normalized: the same value to
+    // rounding), so that U's partial derivatives in vertical and in x are taken apart (the derivatives are
+    // partial through the graph's nodes, and x = sigma(N) - rotation r holds rotation's third row, which
+    // transpose(rotation)*[0, 0, 1] is)
+    define("vertical",
+           potential_ ? "normalize(transpose(rotation)*[0, 0, 1])" : "transpose(rotation)*[0, 0, 1]");
     if (supportImplicit_)
       implicitSupportContact();
     else
@@ -1017,10 +1033,17 @@ private:
     define("dgamma", "dN + cross(gamma, omega) + [0, 0, flatter_than_the_support]");
     define("dr", "derivative(r, gamma, dgamma)");
     define("x", "support_point - rotation*r"); // the centre of mass, fixed axes
-    define("potential", "body_mass*gravity_g*x[3]");
+    define("potential", "body_mass*gravity_g*x[3]" + std::string(potential_ ? " + potential_U" : ""));
     ordered_json& eq = out_["equations"];
+    // an extra potential U(vertical, x): its force -dU/dx at the centre of mass, its couple
+    // vertical x dU/dvertical (the plane's gamma x dU/dgamma); about the contact, -r x force
+    if (potential_) {
+      define("potential_force", "-transpose(rotation)*gradient(potential_U, x)");
+      define("potential_couple", "cross(vertical, gradient(potential_U, vertical))");
+    }
     const std::string forces =
-        "body_mass*cross(dr, cross(omega, r)) + body_mass*gravity_g*cross(r, vertical)";
+        "body_mass*cross(dr, cross(omega, r)) + body_mass*gravity_g*cross(r, vertical)" +
+        std::string(potential_ ? " - cross(r, potential_force) + potential_couple" : "");
     if (contact_ == Contact::Marble)
       eq["M"] = "cross(M" + gyrostat() + ", omega) + " + forces;
     else if (contact_ == Contact::Rubber)

@@ -925,6 +925,48 @@ TEST(RollingModel, ABodySlidingOnACurvedSupportLosesExactlyWhatItsFrictionTakes)
   }
 }
 
+TEST(RollingModel, APotentialOnACurvedSupportActsByItsForceAndCouple) {
+  // U(vertical, x) of a body on a curved support: U = k x3 is gravity made stronger by k/m (the force
+  // through the centre of mass); a U of both the orientation and the position keeps the energy E + U for
+  // marble, rubber and frictionless sliding (a wrong couple or force would do work)
+  const auto bowl = [](const char* contact, const char* U, double g) {
+    json body = rattlebackOn({{"surface", "sphere"}, {"radius", 2}, {"side", "inside"}});
+    body["contact"] = contact;
+    if (std::string(contact) == "sliding") body["friction"] = 0;
+    if (U[0]) body["potential"] = U;
+    body["gravity"] = g;
+    body["id"] = std::string("potential_in_a_bowl_") + contact + "_" + std::to_string(U[0] ? 1 : 0) +
+                 std::to_string(static_cast<int>(g * 10));
+    return body;
+  };
+  const std::map<std::string, double> start{{"M1", 0.1},     {"M2", 0.05},     {"M3", 0.3},
+                                            {"gamma1", 0.3}, {"gamma2", 0.05}, {"gamma3", std::sqrt(0.9075)}};
+  std::map<std::string, double> slidingStart{{"omega1", 0.2}, {"omega2", 0.1}, {"omega3", 1}};
+  for (const char* g : {"gamma1", "gamma2", "gamma3"})
+    slidingStart[g] = start.at(g);
+  for (const char* contact : {"marble", "sliding"}) {
+    SCOPED_TRACE(contact);
+    const auto& from = std::string(contact) == "marble" ? start : slidingStart;
+    const ExampleRun heavier =
+        runModel(instance(modelEntryFromJson(bowl(contact, "", 1.5), "<g>"), {{"b1", 0.6}}), from, 10, 0.5);
+    const ExampleRun pushed = runModel(
+        instance(modelEntryFromJson(bowl(contact, "0.5*x[3]", 1), "<U>"), {{"b1", 0.6}}), from, 10, 0.5);
+    expectTheSameRun(heavier, pushed, {"x1", "x2", "x3", "gamma1", "gamma2", "gamma3"}, 1e-9, 0.5);
+  }
+  const char* U = "0.3*vertical[1]^2 + 0.2*x[1]^2 + 0.1*x[2]*vertical[2]";
+  for (const char* contact : {"marble", "rubber", "sliding"}) {
+    SCOPED_TRACE(contact);
+    const ExampleRun run = runModel(instance(modelEntryFromJson(bowl(contact, U, 1), "<U>"), {{"b1", 0.6}}),
+                                    std::string(contact) == "sliding" ? slidingStart : start, 20, 0.5);
+    EXPECT_LT(relativeDrift(along(run, "E")), 1e-10);
+    const std::vector<double> x1 = along(run, "x1");
+    EXPECT_GT(*std::max_element(x1.begin(), x1.end()) - *std::min_element(x1.begin(), x1.end()), 0.05);
+  }
+  EXPECT_NE(errorOf(bowl("marble", "gamma[1]^2", 1)).find("<bad>:potential: on a curved support"),
+            std::string::npos)
+      << errorOf(bowl("marble", "gamma[1]^2", 1));
+}
+
 TEST(RollingModel, ATopSlidingOnASphereOfGrowingRadiusTendsToTheTopOnThePlane) {
   const std::map<std::string, double> spun{{"omega1", 0}, {"omega2", 0},
                                            {"omega3", 6}, {"gamma1", std::sin(0.1)},
@@ -1247,7 +1289,9 @@ TEST(RollingModel, AMalformedBodyIsNamedAtTheFieldTheUserWrote) {
   bad["contact"] = "marble";
   bad.erase("friction");
   bad["potential"] = "gamma1";
-  expect(bad, "<bad>:potential: on a curved support a potential is for a balanced ball only");
+  expect(bad,
+         "has a potential U of `vertical` (the upward vertical in body axes) and `x` (its centre of mass "
+         "in fixed axes); `gamma` is the support's normal there");
   bad.erase("potential");
   bad["support"]["describes"] = "centre";
   expect(bad, "<bad>:support.describes: \"centre\" describes the surface a balanced ball's centre moves on");
