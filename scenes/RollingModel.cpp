@@ -1250,6 +1250,7 @@ std::string formTitle(const RollingBodyForm& f) {
   const std::string on = f.support == "sphere"       ? (f.inside ? "in a spherical bowl" : "on a sphere")
                          : f.support == "ellipsoid"  ? (f.inside ? "in an ellipsoid bowl" : "on an ellipsoid")
                          : f.support == "paraboloid" ? "in a paraboloid bowl"
+                         : f.support == "implicit"   ? "on a support given by its surface"
                                                      : "on a plane";
   const bool vowel = std::string("aeiou").find(body.front()) != std::string::npos;
   return (vowel ? "An " : "A ") + body + " rolling " + on + " (File > New rolling body)";
@@ -1260,8 +1261,9 @@ void checkForm(const RollingBodyForm& f) {
   const auto fail = [](const std::string& field, const std::string& what) {
     throw InputError("the form's " + field + ": " + what);
   };
-  if (f.support != "plane" && f.support != "sphere" && f.support != "ellipsoid" && f.support != "paraboloid")
-    fail("support", "expected plane, sphere, ellipsoid or paraboloid, not \"" + f.support + "\"");
+  if (f.support != "plane" && f.support != "sphere" && f.support != "ellipsoid" &&
+      f.support != "paraboloid" && f.support != "implicit")
+    fail("support", "expected plane, sphere, ellipsoid, paraboloid or implicit, not \"" + f.support + "\"");
   if (f.shape == "superellipsoid" && f.exponent < 2)
     fail("exponent", "a superellipsoid's exponent is at least 2 (below 2 it has edges of infinite "
                      "curvature)");
@@ -1360,6 +1362,11 @@ ordered_json rollingModelDocument(const RollingBodyForm& f) {
     } else if (f.support == "ellipsoid") {
       support["semi_axes"] = triple("a", f.supportSizes, "semi-axis of the ellipsoid along fixed axis");
       support["side"] = f.inside ? "inside" : "outside";
+    } else if (f.support == "implicit") {
+      support["F"] = f.supportSurface;
+      support["size"] =
+          parameter("extent", f.supportSizes[0],
+                    "a length that bounds the part of the support drawn about the origin", true);
     } else {
       support["p"] = parameter("bowl_p", f.supportSizes[0],
                                "the bowl's radius of curvature at its bottom along fixed axis 1", true);

@@ -87,12 +87,15 @@ struct RollingBodyForm {
   std::string contact = "marble";               ///< marble, rubber or sliding
   double friction = 0.3, gravity = 1;
   bool symmetryAxis = false;     ///< body axis 3 is an axis of symmetry (axis_up, Jellett)
-  std::string support = "plane"; ///< plane, sphere, ellipsoid or paraboloid (a bowl)
+  std::string support = "plane"; ///< plane, sphere, ellipsoid, paraboloid (a bowl) or implicit
   bool inside = false;           ///< sphere, ellipsoid: the body rolls inside it (a bowl), not on it
   /// sphere: its radius first; ellipsoid: its semi-axes; paraboloid: p, q, its radii of curvature at the
   /// bottom. The defaults are flatter than each shape's default body (but the superellipsoid's brick, whose
   /// faces are flatter than any bowl), so that it touches a bowl at one point.
   std::array<double, 3> supportSizes{8, 6, 4};
+  /// implicit: the support's F(x, y, z) in fixed axes, F < 0 in it (supportSizes[0] the size drawn); by
+  /// default a paraboloid bowl of radius 8 at its bottom, through the origin where the contact is sought
+  std::string supportSurface = "z - (x^2 + y^2)/16";
 };
 
 /// The rolling model file of a form, with a start that suits its shape (tilted from rest, spinning; on a

@@ -64,6 +64,7 @@ void checkStart(const ModelEntry& entry) {
 RollingBodyDialog::RollingBodyDialog(QWidget* parent, std::function<void(const QString&)> open)
     : QDialog(parent), rows_(new QFormLayout), id_(new QLineEdit("my_body", this)),
       surface_(new QLineEdit(this)), profile_(new QLineEdit(this)), file_(new QLineEdit(this)),
+      supportSurface_(new QLineEdit(QString::fromStdString(RollingBodyForm{}.supportSurface), this)),
       shape_(new QComboBox(this)), contact_(new QComboBox(this)), support_(new QComboBox(this)),
       side_(new QComboBox(this)), exponent_(number(this, "exponent", RollingBodyForm{}.exponent, 2)),
       bulge_(number(this, "bulge", RollingBodyForm{}.bulge, 0)), bound_(number(this, "size", 1, 1e-9)),
@@ -93,11 +94,16 @@ RollingBodyDialog::RollingBodyDialog(QWidget* parent, std::function<void(const Q
   bulge_->setToolTip("the weight of the ellipsoid through the same vertices that keeps the faces curved "
                      "(> 0 when the exponent is above 2)");
   support_->setObjectName("support");
-  support_->addItems({"plane", "sphere", "ellipsoid", "paraboloid"});
-  support_->setToolTip("what the body rolls on: the plane; a sphere (on it, or inside it: a spherical bowl); "
-                       "an ellipsoid (on it, or inside it: an ellipsoid bowl); a paraboloid bowl (in it). On "
-                       "a curved support the body must be "
-                       "more curved than a bowl where it touches it");
+  support_->addItems({"plane", "sphere", "ellipsoid", "paraboloid", "implicit"});
+  supportSurface_->setObjectName("support_F");
+  supportSurface_->setToolTip("the support's surface F(x, y, z) = 0 in fixed axes, F < 0 in the support (the "
+                              "body rolls where F > 0); the contact is first sought from the origin");
+  support_->setToolTip(
+      "what the body rolls on: the plane; a sphere (on it, or inside it: a spherical bowl); "
+      "an ellipsoid (on it, or inside it: an ellipsoid bowl); a paraboloid bowl (in it); any surface "
+      "F(x, y, z) = 0 (implicit). On "
+      "a curved support the body must be "
+      "more curved than a bowl where it touches it");
   side_->setObjectName("side");
   side_->addItems({"outside", "inside"});
   side_->setToolTip("outside: the body rolls on the sphere or ellipsoid; inside: in it (a bowl)");
@@ -145,6 +151,7 @@ RollingBodyDialog::RollingBodyDialog(QWidget* parent, std::function<void(const Q
   row("Central principal moments", inertia_, "I", defaults.inertia, 1e-9);
   form->addRow("Rolls on", support_);
   form->addRow("Side of the support", side_);
+  form->addRow("Support's F(x, y, z) = 0, F < 0 in it", supportSurface_);
   for (std::size_t i = 0; i < 3; ++i) {
     supportSizes_[i] = number(this, QString("support%1").arg(i + 1), defaults.supportSizes[i], 1e-9);
     supportLabels_[i] = new QLabel(this);
@@ -217,6 +224,7 @@ void RollingBodyDialog::showFields() {
 
   const QString support = support_->currentText();
   showRow(side_, support == "sphere" || support == "ellipsoid");
+  showRow(supportSurface_, support == "implicit");
   const std::array<QString, 3> supportLabels =
       support == "sphere"
           ? std::array<QString, 3>{side_->currentText() == "inside" ? "Bowl's radius a" : "Sphere's radius a",
@@ -226,7 +234,8 @@ void RollingBodyDialog::showFields() {
       : support == "paraboloid"
           ? std::array<QString, 3>{"Bowl's p (curvature radius at the bottom, axis 1)",
                                    "Bowl's q (curvature radius at the bottom, axis 2)", ""}
-          : std::array<QString, 3>{"", "", ""};
+      : support == "implicit" ? std::array<QString, 3>{"Its size (the part drawn about the origin)", "", ""}
+                              : std::array<QString, 3>{"", "", ""};
   for (std::size_t i = 0; i < 3; ++i) {
     supportLabels_[i]->setText(supportLabels[i]);
     supportLabels_[i]->setVisible(!supportLabels[i].isEmpty());
@@ -259,6 +268,7 @@ RollingBodyForm RollingBodyDialog::form() const {
   f.symmetryAxis = axis_->isChecked();
   f.support = support_->currentText().toStdString();
   f.inside = side_->currentText() == "inside";
+  f.supportSurface = supportSurface_->text().toStdString();
   return f;
 }
 

@@ -34,7 +34,7 @@ private:
   /// Shows or hides a row of the form: `field` and its label.
   void showRow(QWidget* field, bool visible);
   QFormLayout* rows_;
-  QLineEdit *id_, *surface_, *profile_, *file_;
+  QLineEdit *id_, *surface_, *profile_, *file_, *supportSurface_;
   QComboBox *shape_, *contact_, *support_, *side_;
   std::array<QDoubleSpinBox*, 3> sizes_{}, centre_{}, inertia_{}, supportSizes_{};
   std::array<QDoubleSpinBox*, 2> heights_{};

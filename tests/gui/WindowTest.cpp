@@ -2733,8 +2733,11 @@ private slots:
     QVERIFY(dialog.findChild<QLabel*>("error")->text().isEmpty()); // the reason was the brick's
     support->setCurrentText("ellipsoid");
     QVERIFY(shown("side") && shown("support1") && shown("support2") && shown("support3")); // a bowl too
+    support->setCurrentText("implicit");
+    QVERIFY(!shown("side") && shown("support_F") && shown("support1") && !shown("support2"));
     support->setCurrentText("paraboloid");
-    QVERIFY(!shown("side") && shown("support1") && shown("support2") && !shown("support3"));
+    QVERIFY(!shown("side") && !shown("support_F") && shown("support1") && shown("support2") &&
+            !shown("support3"));
     box("support1")->setValue(6);
     contact->setCurrentText("sliding");
     QVERIFY(box("friction")->isEnabled());

@@ -1165,6 +1165,17 @@ TEST(RollingModel, TheNewBodyFormWritesEachShapeAndSupportItOffers) {
                    0.5);
   EXPECT_EQ(rollingModelDocument(ellipsoid)["title"],
             "An ellipsoid rolling in an ellipsoid bowl (File > New rolling body)");
+  // an implicit support: the form's default F, the paraboloid bowl of radii 8, is the paraboloid support
+  RollingBodyForm inABowl = ellipsoid, onF = ellipsoid;
+  inABowl.support = "paraboloid";
+  inABowl.supportSizes = {8, 8, 0};
+  onF.support = "implicit";
+  onF.supportSizes = {8, 0, 0};
+  expectTheSameRun(runForm(inABowl, 5), runForm(onF, 5),
+                   {"omega1", "omega2", "omega3", "gamma1", "gamma2", "gamma3", "x1", "x2", "x3", "E"}, 1e-9,
+                   0.5);
+  EXPECT_EQ(rollingModelDocument(onF)["title"],
+            "An ellipsoid rolling on a support given by its surface (File > New rolling body)");
   // the title names the body and what it rolls on
   EXPECT_EQ(rollingModelDocument(superellipsoid)["title"],
             "A superellipsoid rolling in a spherical bowl (File > New rolling body)");
@@ -1223,8 +1234,9 @@ TEST(RollingModel, TheNewBodyFormRefusesWhatMakesNoModel) {
   EXPECT_NE(refusal(form).find("the form's heights:"), std::string::npos) << refusal(form);
   form.shape = "sphere";
   form.support = "torus";
-  EXPECT_NE(refusal(form).find("the form's support: expected plane, sphere, ellipsoid or paraboloid"),
-            std::string::npos)
+  EXPECT_NE(
+      refusal(form).find("the form's support: expected plane, sphere, ellipsoid, paraboloid or implicit"),
+      std::string::npos)
       << refusal(form);
 }
 
