@@ -601,9 +601,12 @@ private:
       (root_ / "support" / "describes")
           .fail("\"centre\" describes the surface a balanced ball's centre moves on; for " + which +
                 " give the support's own sizes (\"describes\": \"support\")");
-    if (potential_) { // U(vertical, x): the vertical in body axes and the centre of mass in fixed axes
-      const std::vector<std::string> used =
-          expr::namesUsed(expr::parse(text(doc_["potential"], root_ / "potential")));
+    if (potential_ && doc_["potential"].is_string()) { // U(vertical, x): body axes' vertical, fixed axes' x
+      std::vector<std::string> used;
+      try {
+        used = expr::namesUsed(expr::parse(doc_["potential"].get<std::string>()));
+      } catch (const expr::ExprError&) { // said at the field when the model is checked
+      }
       if (std::any_of(used.begin(), used.end(),
                       [](const std::string& n) { return n.rfind("gamma", 0) == 0; }))
         (root_ / "potential")
