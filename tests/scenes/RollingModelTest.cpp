@@ -482,6 +482,10 @@ double largestGap(const ExampleRun& a, const ExampleRun& b, std::initializer_lis
 const std::map<std::string, double> kBrickStart{
     {"M1", 0.3}, {"M2", 0.2}, {"M3", 0.8}, {"gamma1", 0.2}, {"gamma2", 0.1}, {"gamma3", std::sqrt(0.95)}};
 
+/// The rattleback (b1 = 0.6) tilted in a bowl, rocking and spinning.
+const std::map<std::string, double> kInTheBowlStart{
+    {"M1", 0.1}, {"M2", 0.05}, {"M3", 0.3}, {"gamma1", 0.3}, {"gamma2", 0.05}, {"gamma3", std::sqrt(0.9075)}};
+
 const std::map<std::string, double> kRattlebackStart{{"M1", 0.1},      {"M2", 0.05},
                                                      {"M3", 0.3},      {"gamma1", 0.05},
                                                      {"gamma2", 0.05}, {"gamma3", std::sqrt(1 - 0.005)}};
@@ -717,14 +721,7 @@ TEST(RollingModel, AnyBodyOnACurvedSupportKeepsItsEnergy) {
     json body = rattlebackOn({{"surface", "sphere"}, {"radius", 2}, {"side", "inside"}});
     body["id"] = std::string(contact) + "_rattleback_in_a_bowl";
     body["contact"] = contact;
-    return runModel(instance(modelEntryFromJson(body, "<bowl>"), {{"b1", 0.6}}),
-                    {{"M1", 0.1},
-                     {"M2", 0.05},
-                     {"M3", 0.3},
-                     {"gamma1", 0.3},
-                     {"gamma2", 0.05},
-                     {"gamma3", std::sqrt(0.9075)}},
-                    20, 0.5);
+    return runModel(instance(modelEntryFromJson(body, "<bowl>"), {{"b1", 0.6}}), kInTheBowlStart, 20, 0.5);
   };
   const ExampleRun bowl = inTheBowl("marble");
   json brick = json::parse(std::ifstream(examples("superellipsoid.json", "rolling")));
@@ -834,14 +831,8 @@ TEST(RollingModel, ABodyOnAnImplicitBowlKeepsItsEnergyAndIsDrawnOnIt) {
   json body =
       rattlebackOn({{"surface", "implicit"}, {"F", "z - (x^2 + y^2)/4 - (x^4 + y^4)/20"}, {"size", 2.5}});
   body["id"] = "rattleback_in_a_quartic_bowl";
-  const ExampleRun run = runModel(instance(modelEntryFromJson(body, "<quartic>"), {{"b1", 0.6}}),
-                                  {{"M1", 0.1},
-                                   {"M2", 0.05},
-                                   {"M3", 0.3},
-                                   {"gamma1", 0.3},
-                                   {"gamma2", 0.05},
-                                   {"gamma3", std::sqrt(0.9075)}},
-                                  20, 0.5);
+  const ExampleRun run =
+      runModel(instance(modelEntryFromJson(body, "<quartic>"), {{"b1", 0.6}}), kInTheBowlStart, 20, 0.5);
   EXPECT_LT(relativeDrift(along(run, "E")), 1e-10);
   for (double d : along(run, "support_drift"))
     EXPECT_LT(d, 1e-9);
@@ -944,8 +935,7 @@ TEST(RollingModel, APotentialOnACurvedSupportActsByItsForceAndCouple) {
                  std::to_string(static_cast<int>(g * 10));
     return body;
   };
-  const std::map<std::string, double> start{{"M1", 0.1},     {"M2", 0.05},     {"M3", 0.3},
-                                            {"gamma1", 0.3}, {"gamma2", 0.05}, {"gamma3", std::sqrt(0.9075)}};
+  const std::map<std::string, double>& start = kInTheBowlStart;
   std::map<std::string, double> slidingStart{{"omega1", 0.2}, {"omega2", 0.1}, {"omega3", 1}};
   for (const char* g : {"gamma1", "gamma2", "gamma3"})
     slidingStart[g] = start.at(g);
