@@ -163,9 +163,9 @@ void GrowingPolyline::rebuildCells() {
   data_->Modified();
 }
 
-void GrowingPolyline::setAppearance(const Rgb& color, double lineWidth, double opacity, bool visible) {
+void GrowingPolyline::setAppearance(const Rgb& colour, double lineWidth, double opacity, bool visible) {
   auto* p = actor_->GetProperty();
-  p->SetColor(color[0], color[1], color[2]);
+  p->SetColor(colour[0], colour[1], colour[2]);
   p->SetLineWidth(static_cast<float>(lineWidth));
   p->SetPointSize(static_cast<float>(lineWidth));
   p->SetOpacity(opacity);

@@ -41,7 +41,7 @@ public:
   GrowingPolyline& operator=(const GrowingPolyline&) = delete;
   /// Draws in `renderer`; the level of detail follows its camera (one renderer at a time).
   void attach(vtkRenderer* renderer);
-  void setAppearance(const Rgb& color, double lineWidth, double opacity, bool visible);
+  void setAppearance(const Rgb& colour, double lineWidth, double opacity, bool visible);
   void append(double x, double y, double z);
   void clear();
   /// Vertices of the simplified line (all of them, drawn or not).

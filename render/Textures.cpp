@@ -40,15 +40,15 @@ Rgb mix(const Rgb& a, const Rgb& b, double s) {
 }
 } // namespace
 
-vtkSmartPointer<vtkTexture> makeBallTexture(const Rgb& color) {
+vtkSmartPointer<vtkTexture> makeBallTexture(const Rgb& colour) {
   const int w = 1024, h = 512;
-  const Rgb light = mix(color, {1, 1, 1}, 0.75), dark = {0.08, 0.08, 0.1};
+  const Rgb light = mix(colour, {1, 1, 1}, 0.75), dark = {0.08, 0.08, 0.1};
   return textureFrom(
       w, h,
       [&](int i, int j) {
         const double lon = 360.0 * (i + 0.5) / w, lat = 180.0 * (j + 0.5) / h - 90;
         const bool sector = static_cast<int>(lon / 45) % 2 == 0, north = lat > 0;
-        Rgb c = (sector != north) ? color : light;
+        Rgb c = (sector != north) ? colour : light;
         // thin dark meridians and parallels every 30 degrees (about 1.5 texels wide)
         const double dl = std::abs(std::remainder(lon, 30.0)) * w / 360,
                      dp = std::abs(std::remainder(lat, 30.0)) * h / 180;

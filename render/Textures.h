@@ -12,7 +12,7 @@ namespace rv {
 
 /// Longitude-latitude map for vtkTexturedSphereSource: eight coloured sectors, two hemispheres in two
 /// tones, dark meridians and parallels every 30 degrees.
-vtkSmartPointer<vtkTexture> makeBallTexture(const Rgb& color);
+vtkSmartPointer<vtkTexture> makeBallTexture(const Rgb& colour);
 
 /// One checkerboard cell pair (2 x 2 cells) with grid lines on the cell edges; repeats.
 vtkSmartPointer<vtkTexture> makeCheckerTexture(const Rgb& light, const Rgb& dark, const Rgb& line);

@@ -4,7 +4,7 @@
 
 namespace rv {
 
-std::optional<Rgb> parseColor(const std::string& text) {
+std::optional<Rgb> parseColour(const std::string& text) {
   if (text.size() != 7 || text[0] != '#') return std::nullopt;
   Rgb c{};
   for (int i = 0; i < 3; ++i) {

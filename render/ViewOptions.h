@@ -11,7 +11,7 @@ namespace rv {
 using Rgb = std::array<double, 3>;
 
 /// Parses "#rrggbb"; returns nothing when the text is not such a colour.
-std::optional<Rgb> parseColor(const std::string& text);
+std::optional<Rgb> parseColour(const std::string& text);
 
 /// How a surface is drawn (manual §2.4.6 toolbar: grid, fill, both).
 enum class SurfaceStyle { Fill, Grid, Both };
@@ -19,15 +19,15 @@ enum class SurfaceStyle { Fill, Grid, Both };
 /// Appearance of one visual object.
 struct ObjectOptions {
   bool enabled = true;
-  std::optional<Rgb> color; ///< nothing: the object's default
+  std::optional<Rgb> colour; ///< nothing: the object's default
   std::optional<double>
       opacity; ///< 1 - transparency; nothing: the object's default (opaque but for the unit sphere)
   SurfaceStyle style = SurfaceStyle::Fill;
-  std::optional<Rgb> traceColor; ///< for objects that leave a trace
-  double lineWidth = 3.0;        ///< traces, in pixels
-  bool trace = true;             ///< apexes: leave a trace ("with trace") or not ("without trace")
-  double gridDensity = 1;        ///< grid lines (plane cells, surface grid) per the object's default spacing
-  std::string texture;           ///< "" the object's own, "none" plain colour, or a PNG file's path
+  std::optional<Rgb> traceColour; ///< for objects that leave a trace
+  double lineWidth = 3.0;         ///< traces, in pixels
+  bool trace = true;              ///< apexes: leave a trace ("with trace") or not ("without trace")
+  double gridDensity = 1;         ///< grid lines (plane cells, surface grid) per the object's default spacing
+  std::string texture;            ///< "" the object's own, "none" plain colour, or a PNG file's path
   std::optional<std::array<double, 3>> size;   ///< the body's box: edge lengths along the body's axes
   std::optional<std::array<double, 3>> vector; ///< the arbitrary vector at t = 0, in the frame looked in
 };

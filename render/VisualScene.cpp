@@ -87,7 +87,7 @@ VisualScene::VisualScene(const Model& model, const ViewOptions& options, const E
       key->SetInput(keyLines_.back().c_str());
       key->GetTextProperty()->SetFontSize(14);
       key->GetTextProperty()->SetBold(true);
-      const Rgb c = axisColor(i);
+      const Rgb c = axisColour(i);
       key->GetTextProperty()->SetColor(c[0], c[1], c[2]);
       key->GetTextProperty()->SetShadow(true); // legible over the blue sky too (a background box is not
                                                // rescaled in large snapshots)
@@ -102,7 +102,7 @@ VisualScene::VisualScene(const Model& model, const ViewOptions& options, const E
     if (support || supportMesh) {
       auto surface = support ? std::make_unique<SurfaceObject>("surface", *support)
                              : std::make_unique<SurfaceObject>("surface", supportMesh);
-      surface->hideTheFarSide(pose->contact, pose->center);
+      surface->hideTheFarSide(pose->contact, pose->centre);
       add(std::move(surface));
     } else
       add(std::make_unique<PlaneObject>("plane", scale_, 40 * scale_));
@@ -223,7 +223,7 @@ void VisualScene::show(double t, const Eigen::VectorXd& x) {
   const FrameState s{t, x.data(), model_, pose};
   for (auto& o : objects_)
     o->show(s);
-  const Eigen::Vector3d focus = pose ? pose->center : Eigen::Vector3d::Zero();
+  const Eigen::Vector3d focus = pose ? pose->centre : Eigen::Vector3d::Zero();
   if (options_.camera.follow && pose && options_.kind == ViewKind::Motion &&
       options_.lookingIn == LookingIn::Absolute) {
     // carry the camera along with the body, keeping whatever view the user has turned to
@@ -244,9 +244,9 @@ void VisualScene::show(double t, const Eigen::VectorXd& x) {
     const double az = options_.camera.azimuth * std::numbers::pi / 180;
     const Eigen::Vector3d dir(std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el));
     const double dist = options_.camera.distance > 0 ? options_.camera.distance : 5 * scale_;
-    const Eigen::Vector3d eye = pose->center + pose->rotation * (dist * dir);
+    const Eigen::Vector3d eye = pose->centre + pose->rotation * (dist * dir);
     const Eigen::Vector3d up = pose->rotation * Eigen::Vector3d::UnitZ();
-    cam->SetFocalPoint(pose->center[0], pose->center[1], pose->center[2]);
+    cam->SetFocalPoint(pose->centre[0], pose->centre[1], pose->centre[2]);
     cam->SetPosition(eye[0], eye[1], eye[2]);
     cam->SetViewUp(up[0], up[1], up[2]);
     renderer_->ResetCameraClippingRange();

@@ -1,11 +1,9 @@
 // Scene.h -- a scene file turned into a dynamics run (model, integrator, initial state) and render options.
 #pragma once
 #include "dynamics/core/ModelRegistry.h"
+#include "dynamics/core/SettingsTable.h"
 #include "dynamics/integrators/Integrator.h"
 #include "dynamics/jobs/RunSpec.h"
-#include "dynamics/tools/FourierSpectrum.h"
-#include "dynamics/tools/Lyapunov.h"
-#include "dynamics/tools/Megno.h"
 #include "dynamics/tools/PlotFilter.h"
 #include "dynamics/tools/PoincareMap.h"
 #include "render/ViewOptions.h"

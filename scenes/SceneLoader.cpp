@@ -53,15 +53,15 @@ ObjectOptions readObject(const json& j, const Where& w) {
            {"enabled", "color", "opacity", "style", "trace_color", "line_width", "trace", "grid_density",
             "texture", "size", "vector"});
   ObjectOptions o;
-  const auto color = [&](const char* key) {
+  const auto colour = [&](const char* key) {
     const std::string s = text(j[key], w / key);
-    const auto c = parseColor(s);
+    const auto c = parseColour(s);
     if (!c) (w / key).fail("expected a colour \"#rrggbb\", got \"" + s + "\"");
     return c;
   };
   if (j.contains("enabled")) o.enabled = boolean(j["enabled"], w / "enabled");
-  if (j.contains("color")) o.color = color("color");
-  if (j.contains("trace_color")) o.traceColor = color("trace_color");
+  if (j.contains("color")) o.colour = colour("color");
+  if (j.contains("trace_color")) o.traceColour = colour("trace_color");
   if (j.contains("opacity")) {
     o.opacity = number(j["opacity"], w / "opacity");
     if (*o.opacity < 0 || *o.opacity > 1) (w / "opacity").fail("must lie in [0, 1]");

@@ -135,7 +135,7 @@ void ChartWindow::drawMarks() {
   for (std::size_t i = 0; i < markSeries_.size(); ++i) {
     if (i < marks_.size()) {
       plane->setSeries(markSeries_[i], {marks_[i].x}, {marks_[i].y});
-      plane->setColor(markSeries_[i], marks_[i].colour);
+      plane->setColour(markSeries_[i], marks_[i].colour);
     } else {
       plane->setSeries(markSeries_[i], {}, {});
     }

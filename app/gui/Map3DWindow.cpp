@@ -47,7 +47,7 @@ void Map3DWindow::reset(bool keepShown) {
 void Map3DWindow::feed(const std::vector<Track>& tracks) {
   if (!chart_) return;
   for (; series_ < tracks.size(); ++series_)
-    chart_->addSeries({}, {}, {}, seriesColor(static_cast<int>(series_)), 3);
+    chart_->addSeries({}, {}, {}, seriesColour(static_cast<int>(series_)), 3);
   points_ = 0;
   for (std::size_t k = 0; k < tracks.size(); ++k) {
     const Track& t = tracks[k];

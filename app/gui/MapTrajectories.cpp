@@ -66,7 +66,7 @@ Job& MapTrajectories::start(const Eigen::VectorXd& state, const QString& origin)
   auto task = std::make_unique<PoincareTask>(spec, scene_->poincare);
   PoincareTask* raw = task.get();
   Job& job = jobs_.add(std::move(task));
-  Series& s = add(job, raw, seriesColor(static_cast<int>(series_.size())));
+  Series& s = add(job, raw, seriesColour(static_cast<int>(series_.size())));
   s.origin = origin;
   chart_->select(s.plot);
   job.start();
@@ -226,7 +226,7 @@ void MapTrajectories::remove(const std::function<bool(const Job*)>& isGone) {
   for (auto& s : series_)
     if (s.megnoJob && isGone(s.megnoJob) && !isGone(s.job)) { // its MEGNO alone: back to its own colour
       s.megnoJob = nullptr, s.megno = nullptr, s.megnoValue.reset();
-      chart_->setColor(s.plot, s.colour);
+      chart_->setColour(s.plot, s.colour);
     }
   for (auto it = series_.begin(); it != series_.end();)
     if (isGone(it->job)) {
@@ -285,7 +285,7 @@ bool MapTrajectories::setColour(int id, const Rgb& colour) {
   s->colour = colour;
   applyColour(*s); // its own colour shows unless it is coloured by its MEGNO
   for (PlotWindow* p : filters_.plots())
-    p->setColor(id, colour);
+    p->setColour(id, colour);
   return true;
 }
 
@@ -321,7 +321,7 @@ void MapTrajectories::startMegno(Series& s) {
 }
 
 void MapTrajectories::applyColour(const Series& s) {
-  chart_->setColor(s.plot, shownColour(s.job->id()));
+  chart_->setColour(s.plot, shownColour(s.job->id()));
   redraw_();
 }
 

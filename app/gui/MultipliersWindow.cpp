@@ -90,7 +90,7 @@ void MultipliersWindow::flush() {
         }
     }
   while (series_.size() < x.size())
-    series_.push_back(chart_->addSeries({}, {}, seriesColor(static_cast<int>(series_.size()))));
+    series_.push_back(chart_->addSeries({}, {}, seriesColour(static_cast<int>(series_.size()))));
   for (std::size_t k = 0; k < series_.size(); ++k)
     chart_->setSeries(series_[k], k < x.size() ? x[k] : std::vector<double>{},
                       k < y.size() ? y[k] : std::vector<double>{});

@@ -80,9 +80,9 @@ void PlotWindow::unfollow(int id) {
   view()->update();
 }
 
-void PlotWindow::setColor(int id, const Rgb& colour) {
+void PlotWindow::setColour(int id, const Rgb& colour) {
   if (const auto it = sources_.find(id); it != sources_.end()) {
-    chart_->setColor(it->second.series, colour);
+    chart_->setColour(it->second.series, colour);
     view()->update();
   }
 }

@@ -33,7 +33,7 @@ public:
   std::shared_ptr<PlotTap> follow(int id, const Rgb& colour);
   /// The trajectory was deleted: its points go.
   void unfollow(int id);
-  void setColor(int id, const Rgb& colour);
+  void setColour(int id, const Rgb& colour);
   /// Draws the source's points emphasised (an id it does not follow: none).
   void highlight(int id);
   /// Takes what the taps streamed, and draws what arrived since the last call.

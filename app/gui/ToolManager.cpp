@@ -273,10 +273,10 @@ void ToolManager::selectParent() {
   if (Job* j = selected(); j && j->parent()) select(j->parent()->id());
 }
 
-void ToolManager::colourSelected(std::optional<Rgb> color) {
+void ToolManager::colourSelected(std::optional<Rgb> colour) {
   Job* j = selected();
   if (!j || !colour_) return;
-  if (!color) {
+  if (!colour) {
     // the dialog starts at the colour the trajectory has now
     const auto now = look_ ? look_(j->id()).colour : std::nullopt;
     const QColor start = now ? QColor::fromRgbF(static_cast<float>((*now)[0]), static_cast<float>((*now)[1]),
@@ -284,9 +284,9 @@ void ToolManager::colourSelected(std::optional<Rgb> color) {
                              : QColor(Qt::blue);
     const QColor c = QColorDialog::getColor(start, this, "Colour of output");
     if (!c.isValid()) return;
-    color = Rgb{c.redF(), c.greenF(), c.blueF()};
+    colour = Rgb{c.redF(), c.greenF(), c.blueF()};
   }
-  if (!colour_(j->id(), *color)) emit message("only trajectories of the map can be recoloured");
+  if (!colour_(j->id(), *colour)) emit message("only trajectories of the map can be recoloured");
 }
 
 void ToolManager::rangeSelected(std::optional<long> first, long last) {

@@ -68,7 +68,7 @@ public:
   /// Enables the buttons that apply to the selected job (called on each refresh and selection change).
   void updateButtons();
   /// Colour of output for the selected job (a colour dialog unless `color` is given).
-  void colourSelected(std::optional<Rgb> color = std::nullopt);
+  void colourSelected(std::optional<Rgb> colour = std::nullopt);
   /// Set range for the selected job (a dialog unless `first` is given; last <= 0: to the end).
   void rangeSelected(std::optional<long> first = std::nullopt, long last = 0);
 

@@ -18,8 +18,8 @@ void ViewEdits::writeInto(nlohmann::json& doc) const {
   for (const auto& [name, o] : objects_) {
     auto& j = doc["view"]["objects"][name];
     j["enabled"] = o.enabled;
-    if (o.color) j["color"] = colorText(*o.color);
-    if (o.traceColor) j["trace_color"] = colorText(*o.traceColor);
+    if (o.colour) j["color"] = colourText(*o.colour);
+    if (o.traceColour) j["trace_color"] = colourText(*o.traceColour);
     if (o.opacity) j["opacity"] = *o.opacity;
     if (o.gridDensity != 1) j["grid_density"] = o.gridDensity;
     if (!o.trace) j["trace"] = false;

@@ -17,7 +17,7 @@
 
 namespace rv {
 
-std::string colorText(const Rgb& c) {
+std::string colourText(const Rgb& c) {
   char s[8];
   std::snprintf(s, sizeof s, "#%02x%02x%02x", int(std::lround(255 * c[0])), int(std::lround(255 * c[1])),
                 int(std::lround(255 * c[2])));
@@ -26,10 +26,10 @@ std::string colorText(const Rgb& c) {
 
 namespace {
 void paintButton(QPushButton* b, const std::optional<Rgb>& c) {
-  b->setText(c ? QString::fromStdString(colorText(*c)) : "default");
-  b->setStyleSheet(c ? QString("background: %1").arg(QString::fromStdString(colorText(*c))) : QString());
+  b->setText(c ? QString::fromStdString(colourText(*c)) : "default");
+  b->setStyleSheet(c ? QString("background: %1").arg(QString::fromStdString(colourText(*c))) : QString());
 }
-std::optional<Rgb> askColor(QWidget* parent, const std::optional<Rgb>& now) {
+std::optional<Rgb> askColour(QWidget* parent, const std::optional<Rgb>& now) {
   const QColor start = now ? QColor::fromRgbF((*now)[0], (*now)[1], (*now)[2]) : QColor(Qt::white);
   const QColor c = QColorDialog::getColor(start, parent, "Colour");
   if (!c.isValid()) return std::nullopt;
@@ -47,17 +47,17 @@ VisualizerSettings::VisualizerSettings(QWidget* parent) : QWidget(parent) {
   auto* of = new QFormLayout(objects);
   object_ = new QComboBox;
   enabled_ = new QCheckBox;
-  color_ = new QPushButton("default");
+  colour_ = new QPushButton("default");
   transparency_ = new QSlider(Qt::Horizontal);
   transparency_->setRange(0, 100);
   density_ = new QDoubleSpinBox;
   density_->setRange(0.05, 20);
   density_->setSingleStep(0.25);
   trace_ = new QCheckBox;
-  traceColor_ = new QPushButton("default");
+  traceColour_ = new QPushButton("default");
   of->addRow("Object", object_);
   of->addRow("Enabled", enabled_);
-  of->addRow("Object colour", color_);
+  of->addRow("Object colour", colour_);
   auto* transparencyRow = new QWidget;
   auto* tr = new QHBoxLayout(transparencyRow);
   tr->setContentsMargins(0, 0, 0, 0);
@@ -71,7 +71,7 @@ VisualizerSettings::VisualizerSettings(QWidget* parent) : QWidget(parent) {
   of->addRow("Transparency", transparencyRow);
   of->addRow("Grid density", density_);
   of->addRow("Trace enabled", trace_);
-  of->addRow("Trace colour", traceColor_);
+  of->addRow("Trace colour", traceColour_);
   enabled_->setToolTip("show or hide the object");
   transparency_->setToolTip("0: opaque, 100: invisible");
   density_->setToolTip("how often the grid (texture) repeats, relative to the object's own");
@@ -121,16 +121,16 @@ VisualizerSettings::VisualizerSettings(QWidget* parent) : QWidget(parent) {
   connect(trace_, &QCheckBox::toggled, this, [this] { emitObject(); });
   connect(transparency_, &QSlider::valueChanged, this, [this] { emitObject(); });
   connect(density_, &QDoubleSpinBox::valueChanged, this, [this] { emitObject(); });
-  connect(color_, &QPushButton::clicked, this, [this] {
-    if (const auto c = askColor(this, options_.object(object_->currentText().toStdString()).color))
-      pickColor(*c);
+  connect(colour_, &QPushButton::clicked, this, [this] {
+    if (const auto c = askColour(this, options_.object(object_->currentText().toStdString()).colour))
+      pickColour(*c);
   });
-  connect(traceColor_, &QPushButton::clicked, this, [this] {
+  connect(traceColour_, &QPushButton::clicked, this, [this] {
     const std::string name = object_->currentText().toStdString();
-    if (const auto c = askColor(this, options_.object(name).traceColor)) {
+    if (const auto c = askColour(this, options_.object(name).traceColour)) {
       options_.objects[name] = options_.object(name);
-      options_.objects[name].traceColor = c;
-      paintButton(traceColor_, c);
+      options_.objects[name].traceColour = c;
+      paintButton(traceColour_, c);
       emitObject();
     }
   });
@@ -167,11 +167,11 @@ void VisualizerSettings::selectObject(const std::string& name) {
   object_->setCurrentText(QString::fromStdString(name));
 }
 
-void VisualizerSettings::pickColor(const Rgb& color) {
+void VisualizerSettings::pickColour(const Rgb& colour) {
   const std::string name = object_->currentText().toStdString();
   options_.objects[name] = options_.object(name);
-  options_.objects[name].color = color;
-  paintButton(color_, color);
+  options_.objects[name].colour = colour;
+  paintButton(colour_, colour);
   emitObject();
 }
 
@@ -183,8 +183,8 @@ void VisualizerSettings::showObject() {
   trace_->setChecked(o.trace);
   transparency_->setValue(static_cast<int>(std::lround(100 * (1 - o.opacity.value_or(1.0)))));
   density_->setValue(o.gridDensity);
-  paintButton(color_, o.color);
-  paintButton(traceColor_, o.traceColor);
+  paintButton(colour_, o.colour);
+  paintButton(traceColour_, o.traceColour);
   blocked_ = wasBlocked;
 }
 

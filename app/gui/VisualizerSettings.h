@@ -27,7 +27,7 @@ public:
   /// Selects an object in the list (tests, and the toolbar).
   void selectObject(const std::string& name);
   /// Sets the chosen object's colour as if picked in the colour dialog.
-  void pickColor(const Rgb& color);
+  void pickColour(const Rgb& colour);
   QComboBox* objectBox() const { return object_; }
   QCheckBox* enabledBox() const { return enabled_; }
   QSlider* transparencySlider() const { return transparency_; }
@@ -45,7 +45,7 @@ private:
   bool blocked_ = false;
   QComboBox* object_;
   QCheckBox *enabled_, *trace_;
-  QPushButton *color_, *traceColor_;
+  QPushButton *colour_, *traceColour_;
   QSlider* transparency_;
   QDoubleSpinBox* density_;
   QComboBox* axesStyle_;
@@ -56,6 +56,6 @@ private:
 };
 
 /// "#rrggbb" of a colour, for buttons and scene files.
-std::string colorText(const Rgb& c);
+std::string colourText(const Rgb& c);
 
 } // namespace rv

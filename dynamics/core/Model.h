@@ -28,7 +28,7 @@ struct Observable {
 /// Where the body is, for drawing: rotation (body -> world), its centre and the contact point.
 struct BodyPose {
   Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
-  Eigen::Vector3d center = Eigen::Vector3d::Zero();
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
   Eigen::Vector3d contact = Eigen::Vector3d::Zero();
   Eigen::Vector3d supportNormal = Eigen::Vector3d::UnitZ(); ///< of the fixed surface at the contact, outward
 };

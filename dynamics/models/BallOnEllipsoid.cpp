@@ -183,8 +183,8 @@ std::optional<BodyPose> BallOnEllipsoid::pose(const double* s) const {
   const Eigen::Vector3d g = Eigen::Vector3d(s[3], s[4], s[5]).normalized();
   BodyPose p;
   p.rotation = ball_on_surface::rotation(s + 6);
-  p.center = centre(g);
-  p.contact = p.center - R_ * g;
+  p.centre = centre(g);
+  p.contact = p.centre - R_ * g;
   p.supportNormal = g;
   return p;
 }

@@ -150,9 +150,9 @@ double BallOnParaboloid::measureDensity(const double* s) const {
 std::optional<BodyPose> BallOnParaboloid::pose(const double* s) const {
   BodyPose p;
   p.rotation = ball_on_surface::rotation(s + 5);
-  p.center = centre(s[3], s[4]);
+  p.centre = centre(s[3], s[4]);
   p.supportNormal = normalAt(s[3], s[4]);
-  p.contact = p.center - R_ * p.supportNormal;
+  p.contact = p.centre - R_ * p.supportNormal;
   return p;
 }
 

@@ -127,7 +127,7 @@ std::optional<BodyPose> ChaplyginBall::pose(const double* x) const {
   BodyPose p;
   p.rotation = body_state::rotation(x);
   p.contact = {x[12], x[13], 0};
-  p.center = {x[12], x[13], R_};
+  p.centre = {x[12], x[13], R_};
   return p;
 }
 

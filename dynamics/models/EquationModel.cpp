@@ -698,13 +698,13 @@ std::optional<BodyPose> EquationModel::pose(const double* x) const {
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
       p.rotation(i, j) = out[i * 3 + j];
-  p.center = {out[9], out[10], out[11]};
+  p.centre = {out[9], out[10], out[11]};
   p.contact = {out[12], out[13], out[14]};
   if (poseHasNormal_)
     p.supportNormal = Eigen::Vector3d(out[15], out[16], out[17]).normalized();
   else if (support_) { // the surface's normal at the contact, on the body's side
     p.supportNormal = shapeNormal(*support_, p.contact);
-    if (p.supportNormal.dot(p.center - p.contact) < 0) p.supportNormal = -p.supportNormal;
+    if (p.supportNormal.dot(p.centre - p.contact) < 0) p.supportNormal = -p.supportNormal;
   }
   return p;
 }

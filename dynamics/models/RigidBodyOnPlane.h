@@ -139,8 +139,8 @@ public:
     const Eigen::Vector3d g(x[3], x[4], x[5]);
     p.rotation.row(2) = g.transpose();
     const Eigen::Vector3d r = self().template contact<double>(g);
-    p.center = {x[12], x[13], -r.dot(g)}; // the centre of mass
-    p.contact = p.center + p.rotation * r;
+    p.centre = {x[12], x[13], -r.dot(g)}; // the centre of mass
+    p.contact = p.centre + p.rotation * r;
     return p;
   }
 

@@ -33,8 +33,8 @@ Chart3D::Chart3D(std::array<std::string, 3> titles) : titles_(std::move(titles))
 Chart3D::~Chart3D() = default; // (no GL work here: the window's context may be gone already)
 
 int Chart3D::addSeries(const std::vector<double>& x, const std::vector<double>& y,
-                       const std::vector<double>& z, const Rgb& color, float pointSize) {
-  series_.push_back({x, y, z, color, pointSize});
+                       const std::vector<double>& z, const Rgb& colour, float pointSize) {
+  series_.push_back({x, y, z, colour, pointSize});
   return static_cast<int>(series_.size()) - 1;
 }
 
@@ -49,9 +49,9 @@ void Chart3D::setSeries(int index, const std::vector<double>& x, const std::vect
   dirty_ = true;
 }
 
-void Chart3D::setColor(int index, const Rgb& color) {
+void Chart3D::setColour(int index, const Rgb& colour) {
   if (index < 0 || index >= static_cast<int>(series_.size())) return;
-  series_[index].color = color;
+  series_[index].colour = colour;
   dirty_ = true;
 }
 
@@ -118,7 +118,7 @@ void Chart3D::rebuild() {
     mapper->SetInputData(data);
     vtkNew<vtkActor> actor;
     actor->SetMapper(mapper);
-    actor->GetProperty()->SetColor(s.color[0], s.color[1], s.color[2]);
+    actor->GetProperty()->SetColor(s.colour[0], s.colour[1], s.colour[2]);
     actor->GetProperty()->SetPointSize(static_cast<int>(i) == selected_ ? 2 * s.size : s.size);
     actor->GetProperty()->LightingOff();
     renderer_->AddActor(actor);

@@ -19,7 +19,7 @@ public:
   ~Chart3D() override;
   /// Adds points (x[i], y[i], z[i]) in one colour; returns its index.
   int addSeries(const std::vector<double>& x, const std::vector<double>& y, const std::vector<double>& z,
-                const Rgb& color, float pointSize = 3);
+                const Rgb& colour, float pointSize = 3);
   /// Replaces the points of series `index` (a live window: the box follows the data; the actors are rebuilt
   /// before the next frame).
   void setSeries(int index, const std::vector<double>& x, const std::vector<double>& y,
@@ -27,7 +27,7 @@ public:
   /// Draws series `index` emphasised, its points twice as big (-1: none).
   void select(int index);
   /// Recolours series `index`.
-  void setColor(int index, const Rgb& color);
+  void setColour(int index, const Rgb& colour);
   /// Fixes the box (otherwise it is the data's bounds); nothing in an entry keeps the data's value there.
   void setRanges(const std::array<std::optional<double>, 6>& range);
   /// Draws x, y and z at one scale (a cube of data is a cube) or each filling the box.
@@ -42,7 +42,7 @@ private:
   std::array<std::string, 3> titles_;
   struct Series {
     std::vector<double> x, y, z;
-    Rgb color;
+    Rgb colour;
     float size;
   };
   std::vector<Series> series_;

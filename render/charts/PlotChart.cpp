@@ -19,10 +19,10 @@ PlotChart::PlotChart(const std::vector<std::string>& axes, const PlotChartOption
 
 PlotChart::~PlotChart() = default;
 
-int PlotChart::addSeries(const Rgb& color) {
-  if (space_) return space_->addSeries({}, {}, {}, color, options_.pointSize);
+int PlotChart::addSeries(const Rgb& colour) {
+  if (space_) return space_->addSeries({}, {}, {}, colour, options_.pointSize);
   bounds_.push_back({1e300, -1e300, 1e300, -1e300});
-  return plane_->addSeries({}, {}, color);
+  return plane_->addSeries({}, {}, colour);
 }
 
 void PlotChart::setSeries(int index, const std::array<std::vector<double>, 3>& v) {
@@ -49,11 +49,11 @@ void PlotChart::fitRanges() {
                     r[3].value_or(all[3]));
 }
 
-void PlotChart::setColor(int index, const Rgb& color) {
+void PlotChart::setColour(int index, const Rgb& colour) {
   if (space_)
-    space_->setColor(index, color);
+    space_->setColour(index, colour);
   else
-    plane_->setColor(index, color);
+    plane_->setColour(index, colour);
 }
 
 void PlotChart::select(int index) {

@@ -21,10 +21,10 @@ public:
   ~PlotChart() override;
   int dimensions() const { return space_ ? 3 : 2; }
   /// A new (empty) series; returns its index.
-  int addSeries(const Rgb& color);
+  int addSeries(const Rgb& colour);
   /// Replaces the points of series `index`: values[i] along axis i (the third ignored in 2D).
   void setSeries(int index, const std::array<std::vector<double>, 3>& values);
-  void setColor(int index, const Rgb& color);
+  void setColour(int index, const Rgb& colour);
   /// Draws series `index` emphasised (-1: none).
   void select(int index);
   void attach(vtkRenderWindow* window) override;

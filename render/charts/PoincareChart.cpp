@@ -35,10 +35,10 @@ namespace rv {
 namespace {
 // A heat map's colour bar: the chart's colour legend kept just right of the plot area (the chart lays out
 // the plot area at each paint; vtkChartHistogram2D does the same for its own legend).
-class ColourBar final : public VectorColorLegend {
+class ColourBar final : public VectorColourLegend {
 public:
   static ColourBar* New();
-  vtkTypeMacro(ColourBar, VectorColorLegend);
+  vtkTypeMacro(ColourBar, VectorColourLegend);
   vtkChartXY* owner = nullptr; ///< the chart it stands beside (which owns it)
   ColourBar() { Axis->GetLabelProperties()->SetFontSize(12); }
   bool Paint(vtkContext2D* painter) override {
@@ -49,13 +49,13 @@ public:
                            static_cast<float>(p2[1] - p1[1])));
     }
     Update(); // the bar's picture of the colours (nothing calls it for an item added to a chart)
-    return VectorColorLegend::Paint(painter);
+    return VectorColourLegend::Paint(painter);
   }
 };
 vtkStandardNewMacro(ColourBar);
 } // namespace
 
-Rgb seriesColor(int i) {
+Rgb seriesColour(int i) {
   static const Rgb palette[] = {{0.12, 0.38, 0.85}, {0.85, 0.25, 0.15}, {0.15, 0.6, 0.25},  {0.6, 0.25, 0.7},
                                 {0.9, 0.55, 0.1},   {0.1, 0.6, 0.65},   {0.45, 0.45, 0.45}, {0.7, 0.55, 0.2}};
   return palette[i % 8];
@@ -275,20 +275,20 @@ void PoincareChart::addImage(int nx, int ny, double x0, double dx, double y0, do
   }
   image->GetPointData()->SetScalars(scalars);
   if (!(hi > lo)) hi = lo + 1;
-  vtkNew<vtkColorTransferFunction> colors;
-  colors->AddRGBPoint(lo, low[0], low[1], low[2]);
-  colors->AddRGBPoint(hi, high[0], high[1], high[2]);
-  colors->SetNanColor(1, 1, 1);
-  colors->SetNanOpacity(0);
+  vtkNew<vtkColorTransferFunction> colours;
+  colours->AddRGBPoint(lo, low[0], low[1], low[2]);
+  colours->AddRGBPoint(hi, high[0], high[1], high[2]);
+  colours->SetNanColor(1, 1, 1);
+  colours->SetNanOpacity(0);
   vtkNew<CellsPlot> plot; // its cells reach vector figures
   plot->SetInputData(image);
-  plot->SetTransferFunction(colors);
+  plot->SetTransferFunction(colours);
   plot->SetLegendVisibility(false);
   chart_->AddPlot(plot);
   chart_->RecalculateBounds();
   vtkNew<ColourBar> bar;
   bar->owner = chart_;
-  bar->SetTransferFunction(colors);
+  bar->SetTransferFunction(colours);
   bar->DrawBorderOn();
   chart_->AddItem(bar);
   chart_->SetHiddenAxisBorder(std::max(chart_->GetHiddenAxisBorder(), 72)); // room for the bar's numbers
@@ -357,7 +357,7 @@ void PoincareChart::setSeries(int index, const std::vector<double>& x, const std
   }
 }
 
-void PoincareChart::setColor(int index, const Rgb& c) {
+void PoincareChart::setColour(int index, const Rgb& c) {
   if (vtkPlot* plot = chart_->GetPlot(index))
     plot->SetColor(static_cast<unsigned char>(255 * c[0]), static_cast<unsigned char>(255 * c[1]),
                    static_cast<unsigned char>(255 * c[2]), 255);

@@ -26,12 +26,13 @@ public:
   /// 10^5 markers costs ~100 ms on software GL, thinning them a few.
   static constexpr std::size_t kThinAbove = 20000;
   /// Adds a trajectory's points (x[i], y[i]); returns its index.
-  int addSeries(const std::vector<double>& x, const std::vector<double>& y, const Rgb& color);
+  int addSeries(const std::vector<double>& x, const std::vector<double>& y, const Rgb& colour);
   /// Adds points drawn as large crosses, whatever is selected (a found fixed point: a marker of its own, not
   /// one more trajectory's dot); setSeries fills it as any series. Returns its index.
-  int addMarkers(const std::vector<double>& x, const std::vector<double>& y, const Rgb& color);
+  int addMarkers(const std::vector<double>& x, const std::vector<double>& y, const Rgb& colour);
   /// Adds a curve through (x[i], y[i]), broken where a value is NaN; returns the index of its first piece.
-  int addCurve(const std::vector<double>& x, const std::vector<double>& y, const Rgb& color, float width = 2);
+  int addCurve(const std::vector<double>& x, const std::vector<double>& y, const Rgb& colour,
+               float width = 2);
   /// A heat map of values on a regular grid (x fastest: values[j * nx + i] at (x0 + i dx, y0 + j dy)), each
   /// value filling the cell centred on its node, coloured from `low` (at the smallest value) to `high`; NaN
   /// is drawn transparent. A colour bar with the values' scale stands right of the plot.
@@ -51,7 +52,7 @@ public:
   /// Ranges around every point drawn now, held; the axes follow the data again while there is none.
   void fitToData();
   /// Recolours series `index`.
-  void setColor(int index, const Rgb& color);
+  void setColour(int index, const Rgb& colour);
   /// Replaces the points of series `index`.
   void setSeries(int index, const std::vector<double>& x, const std::vector<double>& y);
   /// Names the axes.
@@ -119,6 +120,6 @@ private:
 };
 
 /// Distinct colours for successive trajectories.
-Rgb seriesColor(int index);
+Rgb seriesColour(int index);
 
 } // namespace rv

@@ -60,13 +60,13 @@ public:
     image->GetPointData()->SetScalars(scalars);
     if (!std::isfinite(lo)) lo = 0, hi = 1;
     if (!(hi > lo)) hi = lo + 1;
-    vtkNew<vtkColorTransferFunction> colors;
+    vtkNew<vtkColorTransferFunction> colours;
     for (int k = 0; k < 5; ++k)
-      colors->AddRGBPoint(lo + (hi - lo) * k / 4, kViridis[k][0], kViridis[k][1], kViridis[k][2]);
-    colors->SetNanColor(0.85, 0.85, 0.85); // failed points: light grey
-    colors->Build();
+      colours->AddRGBPoint(lo + (hi - lo) * k / 4, kViridis[k][0], kViridis[k][1], kViridis[k][2]);
+    colours->SetNanColor(0.85, 0.85, 0.85); // failed points: light grey
+    colours->Build();
     chart_->SetInputData(image);
-    chart_->SetTransferFunction(colors);
+    chart_->SetTransferFunction(colours);
     chart_->GetAxis(vtkAxis::BOTTOM)->SetTitle(d.axes[0]);
     chart_->GetAxis(vtkAxis::LEFT)->SetTitle(d.axes[1]);
     for (int a : {vtkAxis::BOTTOM, vtkAxis::LEFT}) {
@@ -165,8 +165,8 @@ std::unique_ptr<Chart> makeSweepChart(const SweepChartData& d) {
       x.push_back(xAt(p));
       y.push_back(d.values[static_cast<std::size_t>(p) * stride]);
     }
-    chart->addCurve(x, y, seriesColor(l));
-    chart->addSeries(x, y, seriesColor(l));
+    chart->addCurve(x, y, seriesColour(l));
+    chart->addSeries(x, y, seriesColour(l));
   }
   return chart;
 }

@@ -32,7 +32,7 @@ void drawMultipliers(PoincareChart& chart, const std::vector<std::vector<std::co
         x.push_back(s[k].real()), y.push_back(s[k].imag());
         r = std::max({r, 1.1 * std::abs(s[k].real()), 1.1 * std::abs(s[k].imag())});
       }
-    chart.addSeries(x, y, seriesColor(static_cast<int>(k)));
+    chart.addSeries(x, y, seriesColour(static_cast<int>(k)));
   }
   chart.select(-1);
   chart.setRanges(-r, r, -r, r);
@@ -63,9 +63,9 @@ void drawDiagram(PoincareChart& chart, const Diagram& d, const std::vector<Diagr
         std::vector<double> x, y;
         for (std::size_t i = 0; i < xs[k].size(); ++i)
           if (!std::isnan(xs[k][i])) x.push_back(xs[k][i]), y.push_back(ys[k][i]);
-        const int i = chart.addSeries(x, y, seriesColor(colour));
+        const int i = chart.addSeries(x, y, seriesColour(colour));
         if (first < 0) first = i;
-      } else if (const int i = chart.addCurve(xs[k], ys[k], seriesColor(colour)); i >= 0 && first < 0) {
+      } else if (const int i = chart.addCurve(xs[k], ys[k], seriesColour(colour)); i >= 0 && first < 0) {
         first = i;
       }
     }
@@ -89,7 +89,7 @@ void drawCurves(PoincareChart& chart, const std::vector<double>& x,
                 const std::vector<std::vector<double>>& ys, const std::vector<std::array<double, 2>>& marks,
                 const std::vector<std::string>& names) {
   for (std::size_t k = 0; k < ys.size(); ++k) {
-    const int first = chart.addCurve(x, ys[k], seriesColor(static_cast<int>(k)));
+    const int first = chart.addCurve(x, ys[k], seriesColour(static_cast<int>(k)));
     if (first >= 0 && k < names.size()) chart.setLegend(first, names[k]);
   }
   if (!marks.empty()) {
@@ -101,7 +101,7 @@ void drawCurves(PoincareChart& chart, const std::vector<double>& x,
   }
 }
 
-Rgb typeColor(FixedPointType type) {
+Rgb typeColour(FixedPointType type) {
   switch (type) {
   case FixedPointType::Elliptic:
     return {0.12, 0.38, 0.85};
@@ -123,7 +123,7 @@ void drawFamily(PoincareChart& chart, const std::vector<double>& parameter,
     std::vector<double> x, y;
     for (std::size_t i = 0; i < types.size(); ++i)
       if (types[i] == t) x.push_back(parameter[i]), y.push_back(coordinate[i]);
-    const int k = chart.addSeries(x, y, typeColor(t));
+    const int k = chart.addSeries(x, y, typeColour(t));
     if (auto* p = vtkPlotPoints::SafeDownCast(chart.chart()->GetPlot(k))) p->SetMarkerSize(5);
   }
 }

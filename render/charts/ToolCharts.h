@@ -38,6 +38,6 @@ void drawFamily(PoincareChart& chart, const std::vector<double>& parameter,
                 const std::vector<double>& coordinate, const std::vector<FixedPointType>& types);
 
 /// The colour of a fixed point's type.
-Rgb typeColor(FixedPointType type);
+Rgb typeColour(FixedPointType type);
 
 } // namespace rv

@@ -67,9 +67,9 @@ bool CellsPlot::Paint(vtkContext2D* painter) {
   return true;
 }
 
-vtkStandardNewMacro(VectorColorLegend);
+vtkStandardNewMacro(VectorColourLegend);
 
-bool VectorColorLegend::Paint(vtkContext2D* painter) {
+bool VectorColourLegend::Paint(vtkContext2D* painter) {
   if (!capturingVectorFigure()) return vtkColorLegend::Paint(painter);
   if (!this->TransferFunction) return true;
   // as vtkColorLegend::Paint, with the bar as rectangles
@@ -92,7 +92,7 @@ CellsChart::CellsChart() {
   this->Histogram = vtkSmartPointer<CellsPlot>::New();
   this->AddPlot(this->Histogram);
   this->RemoveItem(this->Legend);
-  this->Legend = vtkSmartPointer<VectorColorLegend>::New();
+  this->Legend = vtkSmartPointer<VectorColourLegend>::New();
   this->AddItem(this->Legend);
   this->RemoveItem(this->Tooltip); // painted last, as the base class has it
   this->AddItem(this->Tooltip);

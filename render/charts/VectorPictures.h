@@ -39,19 +39,19 @@ private:
 };
 
 /// vtkColorLegend whose colour bar goes into vector figures as rectangles.
-class VectorColorLegend : public vtkColorLegend {
+class VectorColourLegend : public vtkColorLegend {
 public:
-  static VectorColorLegend* New();
-  vtkTypeMacro(VectorColorLegend, vtkColorLegend);
+  static VectorColourLegend* New();
+  vtkTypeMacro(VectorColourLegend, vtkColorLegend);
   bool Paint(vtkContext2D* painter) override;
 
 protected:
-  VectorColorLegend() = default;
-  ~VectorColorLegend() override = default;
+  VectorColourLegend() = default;
+  ~VectorColourLegend() override = default;
 
 private:
-  VectorColorLegend(const VectorColorLegend&) = delete;
-  void operator=(const VectorColorLegend&) = delete;
+  VectorColourLegend(const VectorColourLegend&) = delete;
+  void operator=(const VectorColourLegend&) = delete;
 };
 
 /// vtkChartHistogram2D with the two above as its plot and its legend.

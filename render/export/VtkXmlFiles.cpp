@@ -150,11 +150,11 @@ void writeSceneVtm(const VisualScene& scene, const std::string& path, const std:
       if (!out) continue;
       out = vtkSmartPointer<vtkDataSet>::Take(out->NewInstance());
       out->DeepCopy(moved->GetOutput());
-      auto color = vtkSmartPointer<vtkDoubleArray>::New();
-      color->SetName("color");
-      color->SetNumberOfComponents(3);
-      color->InsertNextTuple(actor->GetProperty()->GetColor());
-      out->GetFieldData()->AddArray(color);
+      auto colour = vtkSmartPointer<vtkDoubleArray>::New();
+      colour->SetName("color");
+      colour->SetNumberOfComponents(3);
+      colour->InsertNextTuple(actor->GetProperty()->GetColor());
+      out->GetFieldData()->AddArray(colour);
       blocks->SetBlock(block, out);
       const std::string name = piece ? object->name() + "_" + std::to_string(piece) : object->name();
       blocks->GetMetaData(block)->Set(vtkCompositeDataSet::NAME(), name.c_str());

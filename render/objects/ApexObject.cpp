@@ -10,7 +10,7 @@
 
 namespace rv {
 
-Rgb axisColor(int axis) {
+Rgb axisColour(int axis) {
   static const Rgb colours[3] = {{0.86, 0.16, 0.12}, {0.12, 0.63, 0.24}, {0.16, 0.31, 0.86}};
   return colours[axis];
 }
@@ -26,10 +26,10 @@ void ApexObject::attach(vtkRenderer* renderer) {
 }
 
 void ApexObject::apply(const ObjectOptions& o) {
-  const Rgb c = o.color.value_or(axisColor(axis_));
+  const Rgb c = o.colour.value_or(axisColour(axis_));
   dot_->GetProperty()->SetColor(c[0], c[1], c[2]);
   dot_->SetVisibility(o.enabled);
-  trace_.setAppearance(o.traceColor.value_or(c), o.lineWidth, o.opacity.value_or(1.0), o.enabled && o.trace);
+  trace_.setAppearance(o.traceColour.value_or(c), o.lineWidth, o.opacity.value_or(1.0), o.enabled && o.trace);
 }
 
 Eigen::Vector3d ApexObject::apexOf(const BodyPose& pose) const {

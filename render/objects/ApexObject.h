@@ -13,7 +13,7 @@ class vtkActor;
 namespace rv {
 
 /// The manual's X, Y, Z axis colours (red, green, blue), shared by apexes, the body's box and its axes.
-Rgb axisColor(int axis);
+Rgb axisColour(int axis);
 
 class ApexObject final : public VisualObject {
 public:

@@ -58,8 +58,8 @@ void BodyAxesObject::apply(const ObjectOptions& o) {
 void BodyAxesObject::show(const FrameState& s) {
   if (!s.pose) return;
   for (int i = 0; i < 3; ++i) {
-    tips_[i] = s.pose->center + lengths_[i] * s.pose->rotation.col(i);
-    points_->SetPoint(2 * i, s.pose->center.data());
+    tips_[i] = s.pose->centre + lengths_[i] * s.pose->rotation.col(i);
+    points_->SetPoint(2 * i, s.pose->centre.data());
     points_->SetPoint(2 * i + 1, tips_[i].data());
   }
   points_->Modified();

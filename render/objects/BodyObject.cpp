@@ -57,9 +57,9 @@ void BodyObject::attach(vtkRenderer* renderer) {
 }
 
 void BodyObject::apply(const ObjectOptions& o) {
-  const Rgb color = o.color.value_or(Rgb{0.19, 0.44, 1.0});
-  body_->SetTexture(textured_ ? textureFor(o, [&] { return makeBallTexture(color); }) : nullptr);
-  const Rgb base = body_->GetTexture() ? Rgb{1, 1, 1} : color; // a texture carries the colour itself
+  const Rgb colour = o.colour.value_or(Rgb{0.19, 0.44, 1.0});
+  body_->SetTexture(textured_ ? textureFor(o, [&] { return makeBallTexture(colour); }) : nullptr);
+  const Rgb base = body_->GetTexture() ? Rgb{1, 1, 1} : colour; // a texture carries the colour itself
   body_->GetProperty()->SetColor(base[0], base[1], base[2]);
   shadow_->SetVisibility(o.enabled);
   auto* p = body_->GetProperty();
@@ -67,7 +67,7 @@ void BodyObject::apply(const ObjectOptions& o) {
   body_->SetVisibility(o.enabled && o.style != SurfaceStyle::Grid);
   grid_->SetVisibility(o.enabled && o.style != SurfaceStyle::Fill);
   // alone, the grid has the body's colour; over the surface, dark lines
-  const Rgb line = o.style == SurfaceStyle::Grid ? color : Rgb{0.1, 0.1, 0.1};
+  const Rgb line = o.style == SurfaceStyle::Grid ? colour : Rgb{0.1, 0.1, 0.1};
   grid_->GetProperty()->SetColor(line[0], line[1], line[2]);
   grid_->GetProperty()->SetOpacity(o.opacity.value_or(1.0));
 }
@@ -78,7 +78,7 @@ void BodyObject::show(const FrameState& s) {
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j)
       m->SetElement(i, j, s.pose->rotation(i, j));
-    m->SetElement(i, 3, s.pose->center[i]);
+    m->SetElement(i, 3, s.pose->centre[i]);
   }
   body_->SetUserMatrix(m);
   grid_->SetUserMatrix(m);

@@ -39,7 +39,7 @@ void UnitSphereObject::attach(vtkRenderer* renderer) {
 }
 
 void UnitSphereObject::apply(const ObjectOptions& o) {
-  const Rgb c = o.color.value_or(Rgb{0.85, 0.87, 0.92});
+  const Rgb c = o.colour.value_or(Rgb{0.85, 0.87, 0.92});
   auto* p = sphere_->GetProperty();
   p->SetColor(c[0], c[1], c[2]);
   p->SetOpacity(o.opacity.value_or(0.3)); // see the apexes' traces on the far side through it
@@ -59,7 +59,7 @@ BodyBoxObject::BodyBoxObject(std::string name, LookingIn frame, const std::array
   vtkNew<vtkUnsignedCharArray> colours;
   colours->SetNumberOfComponents(3);
   for (int f = 0; f < 6; ++f) {
-    const Rgb c = axisColor(f / 2);
+    const Rgb c = axisColour(f / 2);
     const double shade = f % 2 ? 1.0 : 0.7; // the negative face darker
     const unsigned char rgb[3] = {static_cast<unsigned char>(255 * c[0] * shade),
                                   static_cast<unsigned char>(255 * c[1] * shade),
@@ -105,7 +105,7 @@ void VectorObject::attach(vtkRenderer* renderer) {
 
 void VectorObject::apply(const ObjectOptions& o) {
   if (o.vector) v0_ = Eigen::Vector3d((*o.vector)[0], (*o.vector)[1], (*o.vector)[2]);
-  const Rgb c = o.color.value_or(Rgb{0.95, 0.6, 0.05});
+  const Rgb c = o.colour.value_or(Rgb{0.95, 0.6, 0.05});
   actor_->GetProperty()->SetColor(c[0], c[1], c[2]);
   actor_->GetProperty()->SetOpacity(o.opacity.value_or(1.0));
   actor_->SetVisibility(o.enabled && v0_.norm() > 0);

@@ -28,7 +28,7 @@ void PhaseCurveObject::attach(vtkRenderer* renderer) {
 }
 
 void PhaseCurveObject::apply(const ObjectOptions& o) {
-  const Rgb c = o.traceColor.value_or(o.color.value_or(Rgb{0.1, 0.3, 0.75}));
+  const Rgb c = o.traceColour.value_or(o.colour.value_or(Rgb{0.1, 0.3, 0.75}));
   line_.setAppearance(c, std::max(1.0, o.lineWidth - 1), o.opacity.value_or(1.0), o.enabled);
   marker_->GetProperty()->SetColor(0.85, 0.15, 0.1);
   marker_->SetVisibility(o.enabled);

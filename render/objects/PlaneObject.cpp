@@ -111,7 +111,7 @@ void PlaneObject::afterFrame() {
 }
 
 void PlaneObject::apply(const ObjectOptions& o) {
-  const Rgb light = o.color.value_or(Rgb{0.92, 0.92, 0.89});
+  const Rgb light = o.colour.value_or(Rgb{0.92, 0.92, 0.89});
   const Rgb dark = {light[0] * 0.9, light[1] * 0.9, light[2] * 0.9};
   // "grid" (and "both") draw the plane's grid lines over the floor, on a plain sheet: a wireframe of the one
   // quad would be its four edges, the floor gone

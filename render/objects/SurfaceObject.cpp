@@ -59,7 +59,7 @@ void SurfaceObject::attach(vtkRenderer* renderer) {
 }
 
 void SurfaceObject::apply(const ObjectOptions& o) {
-  const Rgb light = o.color.value_or(Rgb{0.93, 0.9, 0.84});
+  const Rgb light = o.colour.value_or(Rgb{0.93, 0.9, 0.84});
   const Rgb dark = {light[0] * 0.88, light[1] * 0.88, light[2] * 0.88};
   actor_->SetTexture(textureFor(o, [&] { return makeCheckerTexture(light, dark, {0.55, 0.55, 0.6}); }));
   const Rgb base = actor_->GetTexture() ? Rgb{1, 1, 1} : light; // a texture carries the colour itself

@@ -39,7 +39,7 @@ std::unique_ptr<Chart> poincareChart(const Scene&, const ToolResult& r) {
   const auto& t = r.table;
   // the columns are the coordinates, t, sheet: a 1D map's second column is the time
   auto chart = std::make_unique<PoincareChart>(t.names.at(0), t.names.at(1));
-  chart->addSeries(t.values.at(0), t.values.at(1), seriesColor(0));
+  chart->addSeries(t.values.at(0), t.values.at(1), seriesColour(0));
   chart->select(0);
   chart->setTitle("Poincaré map");
   return chart;
@@ -50,7 +50,7 @@ std::unique_ptr<Chart> map3dChart(const Scene&, const ToolResult& r) {
   const auto& t = r.table;
   auto chart =
       std::make_unique<Chart3D>(std::array<std::string, 3>{t.names.at(0), t.names.at(1), t.names.at(2)});
-  chart->addSeries(t.values[0], t.values[1], t.values[2], seriesColor(0), 3);
+  chart->addSeries(t.values[0], t.values[1], t.values[2], seriesColour(0), 3);
   return chart;
 }
 
@@ -60,7 +60,7 @@ std::unique_ptr<Chart> plotChart(const Scene& scene, const ToolResult& r) {
   for (std::size_t i = 0; i < r.table.values.size() && i < 3; ++i)
     c[i] = r.table.values[i];
   auto plot = std::make_unique<PlotChart>(scene.plot.settings.axes, scene.plot.chart);
-  plot->setSeries(plot->addSeries(seriesColor(0)), c);
+  plot->setSeries(plot->addSeries(seriesColour(0)), c);
   return plot;
 }
 

@@ -92,7 +92,7 @@ void chartMillion(benchmark::State& state, bool multisampled) {
     x.push_back(std::remainder(th, 2 * M_PI)), y.push_back(std::remainder(p, 2 * M_PI));
   }
   PoincareChart chart("theta", "p");
-  chart.addSeries(x, y, seriesColor(0));
+  chart.addSeries(x, y, seriesColour(0));
   auto ctx = createHeadlessContext(800, 800);
   if (!multisampled) ctx->window()->SetMultiSamples(0); // as the GUI's charts on a CPU rasteriser
   chart.attach(ctx->window());

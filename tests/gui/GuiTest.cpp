@@ -350,7 +350,7 @@ private slots:
     const Scene scene = loadScene(defaultScenePath("ellipsoid_on_plane"));
     ViewEdits edits;
     ObjectOptions body = scene.view.object("body");
-    body.color = Rgb{0.2, 0.4, 0.6};
+    body.colour = Rgb{0.2, 0.4, 0.6};
     body.style = SurfaceStyle::Grid;
     body.opacity = 0.5;
     body.gridDensity = 2;
@@ -370,7 +370,7 @@ private slots:
     edits.writeInto(doc);
     const ViewOptions read = sceneFromJson(doc, "edited").view;
     const ObjectOptions& b = read.object("body");
-    QVERIFY(b.color && *b.color == *shown.object("body").color);
+    QVERIFY(b.colour && *b.colour == *shown.object("body").colour);
     QVERIFY(b.style == SurfaceStyle::Grid);
     QVERIFY(b.opacity && *b.opacity == 0.5);
     QCOMPARE(b.gridDensity, 2.0);

@@ -313,7 +313,7 @@ private slots:
     const QImage before = window_->view()->grabFramebuffer();
     PaintCounter painted(window_->view());
     window_->settings()->selectObject("ball");
-    window_->settings()->pickColor({1.0, 0.0, 0.0});
+    window_->settings()->pickColour({1.0, 0.0, 0.0});
     QTRY_VERIFY_WITH_TIMEOUT(painted.paints() > 0, 60000); // the next frame
     const QImage after = window_->view()->grabFramebuffer();
     QVERIFY(keep(after, "window_main_red_ball.png"));
@@ -321,7 +321,7 @@ private slots:
              qPrintable(QString("red pixels %1 -> %2").arg(redPixels(before)).arg(redPixels(after))));
     // the edit is kept when the scene runs again
     window_->restart();
-    QVERIFY(window_->visual()->options().object("ball").color == Rgb({1.0, 0.0, 0.0}));
+    QVERIFY(window_->visual()->options().object("ball").colour == Rgb({1.0, 0.0, 0.0}));
     window_->togglePlay();
   }
 
@@ -1580,7 +1580,7 @@ private slots:
     QCOMPARE(axes->currentIndex(), 1);
     style->setCurrentIndex(1); // grid
     settings->selectObject("ball");
-    settings->pickColor({0.2, 0.8, 0.2}); // a colour edit keeps the style the toolbar set
+    settings->pickColour({0.2, 0.8, 0.2}); // a colour edit keeps the style the toolbar set
     QVERIFY(window_->visual()->options().object("ball").style == SurfaceStyle::Grid);
     QCOMPARE(style->currentIndex(), 1);
     QCOMPARE(axes->currentIndex(), 1);

@@ -67,7 +67,7 @@ TEST(Render, TheBallIsDrawnWhereTheModelPutsIt) {
   hidden.enabled = false;
   visual.setOptions("ball", hidden);
   const Image without = capture(ctx->window());
-  const Eigen::Vector3d c = scene.model->pose(x.data())->center;
+  const Eigen::Vector3d c = scene.model->pose(x.data())->centre;
   vtkRenderer* ren = visual.renderer();
   ren->SetWorldPoint(c[0], c[1], c[2], 1);
   ren->WorldToDisplay();
@@ -124,7 +124,7 @@ TEST(Render, BodyAxesFollowTheOrientation) {
   const Eigen::VectorXd& x = played->x;
   const auto* shown = dynamic_cast<const BodyAxesObject*>(visual.find("axes"));
   ASSERT_NE(shown, nullptr);
-  const Eigen::Vector3d centre = scene.model->pose(x.data())->center;
+  const Eigen::Vector3d centre = scene.model->pose(x.data())->centre;
   for (int i = 0; i < 3; ++i)
     EXPECT_NEAR((shown->tip(i) - centre).normalized()[2], x[3 + i] / x.segment<3>(3).norm(), 1e-9)
         << "axis " << i;

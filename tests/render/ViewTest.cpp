@@ -560,7 +560,7 @@ void standardMapSea(int n, double th, double p, std::vector<double>& x, std::vec
 // labels now differ, and at ordinary ranges they are VTK's own
 TEST(Chart, TickLabelsTellTicksApartAtAnyZoom) {
   PoincareChart chart("theta", "p");
-  chart.addSeries({3.14159, 3.1416}, {0.5, 0.6}, seriesColor(0));
+  chart.addSeries({3.14159, 3.1416}, {0.5, 0.6}, seriesColour(0));
   auto ctx = createHeadlessContext(500, 400);
   chart.attach(ctx->window());
   const auto labels = [&](double x0, double x1) {
@@ -590,9 +590,9 @@ TEST(Chart, ALargeSeriesIsThinnedWithoutChangingThePicture) {
     if (split) {
       for (int part = 0; part < 10; ++part)
         chart.addSeries({x.begin() + 15000 * part, x.begin() + 15000 * (part + 1)},
-                        {y.begin() + 15000 * part, y.begin() + 15000 * (part + 1)}, seriesColor(0));
+                        {y.begin() + 15000 * part, y.begin() + 15000 * (part + 1)}, seriesColour(0));
     } else {
-      chart.addSeries(x, y, seriesColor(0));
+      chart.addSeries(x, y, seriesColour(0));
     }
     chart.setRanges(-1, 1, -1.5, 0.5); // zoomed in: the thinning follows the ranges
     auto ctx = createHeadlessContext(400, 400);
@@ -631,7 +631,7 @@ TEST(Chart, ASeriesThatGrowsEndsAsTheWholeSeries) {
     grown.attach(ctx->window());
     grown.setRanges(-3, 3, -3, 3);
     const int index =
-        grown.addSeries({x.begin(), x.begin() + 30000}, {y.begin(), y.begin() + 30000}, seriesColor(0));
+        grown.addSeries({x.begin(), x.begin() + 30000}, {y.begin(), y.begin() + 30000}, seriesColour(0));
     first = capture(ctx->window());
     for (std::ptrdiff_t n : {60000, 90000, 120000}) {
       grown.setSeries(index, {x.begin(), x.begin() + n}, {y.begin(), y.begin() + n});
@@ -643,7 +643,7 @@ TEST(Chart, ASeriesThatGrowsEndsAsTheWholeSeries) {
     auto ctx = createHeadlessContext(360, 360);
     whole.attach(ctx->window());
     whole.setRanges(-3, 3, -3, 3);
-    whole.addSeries(x, y, seriesColor(0));
+    whole.addSeries(x, y, seriesColour(0));
     capture(ctx->window()); // the first frame lays the plot out (thinned for the window's size until then)
     once = capture(ctx->window());
   }
@@ -664,7 +664,7 @@ TEST(Chart, AChangeIsPendingUntilTheNextFrame) {
   auto ctx = createHeadlessContext(300, 300);
   chart.attach(ctx->window());
   const int index =
-      chart.addSeries({x.begin(), x.begin() + 30000}, {y.begin(), y.begin() + 30000}, seriesColor(0));
+      chart.addSeries({x.begin(), x.begin() + 30000}, {y.begin(), y.begin() + 30000}, seriesColour(0));
   EXPECT_TRUE(chart.changedSincePainted());
   capture(ctx->window());
   EXPECT_FALSE(chart.changedSincePainted());

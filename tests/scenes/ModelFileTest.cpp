@@ -106,7 +106,7 @@ void expectTheBuiltInRattleback(const Model& builtin, const Model& file) {
   EXPECT_LT((a - b).cwiseAbs().maxCoeff(), 1e-12);
   const auto pa = builtin.pose(x.data()), pb = file.pose(x.data());
   ASSERT_TRUE(pa && pb);
-  EXPECT_LT((pa->center - pb->center).norm() + (pa->contact - pb->contact).norm(), 1e-14);
+  EXPECT_LT((pa->centre - pb->centre).norm() + (pa->contact - pb->contact).norm(), 1e-14);
   EXPECT_LT((builtin.geometry()->semiAxes - file.geometry()->semiAxes).norm(), 1e-15);
 }
 

@@ -185,7 +185,7 @@ TEST(RollingModel, EachBuiltInRollingBodyRestatedByItsGeometryIsTheBuiltInModel)
     EXPECT_LT(trajectoryDifference(*p.builtin, *p.file, x, 10), 1e-9);
     const auto pa = p.builtin->pose(x.data()), pb = p.file->pose(x.data());
     ASSERT_TRUE(pa && pb);
-    EXPECT_LT((pa->center - pb->center).norm() + (pa->contact - pb->contact).norm() +
+    EXPECT_LT((pa->centre - pb->centre).norm() + (pa->contact - pb->contact).norm() +
                   (pa->rotation - pb->rotation).norm(),
               1e-13);
     EXPECT_EQ(p.builtin->geometry()->shape, p.file->geometry()->shape);
@@ -440,13 +440,13 @@ void expectDrawnThroughTheContact(const Model& body, const std::map<std::string,
   const Eigen::VectorXd x = named(body, start);
   const auto pose = body.pose(x.data());
   ASSERT_TRUE(pose);
-  const Eigen::Vector3d contact = pose->rotation.transpose() * (pose->contact - pose->center);
+  const Eigen::Vector3d contact = pose->rotation.transpose() * (pose->contact - pose->centre);
   EXPECT_NEAR(surface.F(contact), 0, 1e-12);
   EXPECT_LT(surface.F(Eigen::Vector3d::Zero()), 0); // the centre of mass inside
   EXPECT_GE(surface.size, contact.norm());
   const Eigen::Vector3d gamma =
       Eigen::Vector3d(start.at("gamma1"), start.at("gamma2"), start.at("gamma3")).normalized();
-  EXPECT_NEAR(contact.dot(gamma), -(pose->center[2] - pose->contact[2]), 1e-12);
+  EXPECT_NEAR(contact.dot(gamma), -(pose->centre[2] - pose->contact[2]), 1e-12);
 }
 
 TEST(RollingModel, AnImplicitBodyIsDrawnFromItsOwnSurfaceThroughTheContact) {

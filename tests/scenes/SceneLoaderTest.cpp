@@ -1,6 +1,8 @@
 // Scene files: the shipped scenes load; every error names the file and the JSON path (or the flag).
 #include "scenes/SceneLoader.h"
 #include "dynamics/core/Errors.h"
+#include "dynamics/tools/FourierSpectrum.h"
+#include "dynamics/tools/Lyapunov.h"
 #include "dynamics/tools/ToolRegistry.h"
 
 #include <cmath>

@@ -5,6 +5,7 @@
 #include "scenes/Sweep.h"
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/Lanes.h"
+#include "dynamics/tools/Lyapunov.h"
 #include "scenes/SceneLoader.h"
 #include "scenes/SweepTask.h"
 #include "scenes/ToolRunner.h"
