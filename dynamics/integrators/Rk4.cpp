@@ -83,7 +83,9 @@ template <int D> void Rk4::stepWith() {
     ++evaluations_;
   };
   if constexpr (D == Eigen::Dynamic) {
-    if (n >= 16 && cpuHasAvx2()) {
+    // above 16 components: at 16 (the Chaplygin ball's state) the call into the AVX2 function cost more than
+    // it saved -- Rk4Chaplygin 1.05x odeint with it, 1.00-1.01x without (bench_dynamics, 2026-11-29)
+    if (n > 16 && cpuHasAvx2()) {
       rk4StepAvx2([&](const double* y, double* dy) { model_->rhs(y, dy), ++evaluations_; }, h, n, x0.data(),
                   f0.data(), k2.data(), k3.data(), k4.data(), tmp.data(), x.data());
     } else {
