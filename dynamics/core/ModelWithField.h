@@ -59,8 +59,9 @@ public:
   /// Jacobian, a recorded one in passes).
   void tangentRhs(const double* x, const double* V, int k, double* dx, double* dV) const final;
 
-  /// RK4 on (x, V) in one loop (JetEvaluator::rk4: the stages' arithmetic in AVX2 registers around one
-  /// compiled differentiation pass per stage), for 1 <= k <= min(M, kMaxFixedVectors).
+  /// RK4 on (x, V) in one loop, for 1 <= k <= min(M, kMaxFixedVectors): a small field inlined into steps of
+  /// fixed size; a recorded one by JetEvaluator::rk4 (the stages' arithmetic in AVX2 registers around one
+  /// compiled differentiation pass per stage).
   bool tangentRk4(double* x, double* V, int k, double h, long steps) const final;
 
   /// The lane kernel of 4 or 8 models of this class: their fields at once, in one AVX2 (4 lanes) or AVX-512
@@ -443,15 +444,6 @@ private:
   template <class Body> static bool withFixedVectors(int k, Body&& body) {
     return withCount<1, std::min(M, kMaxFixedVectors)>(k, std::forward<Body>(body));
   }
-  // every count of a small field compiled on one orbit (compiledOrbit), for its fused RK4
-  static constexpr std::array<CompiledJets, kJetDirections + 1> orbitCompiled() {
-    std::array<CompiledJets, kJetDirections + 1> compiled{};
-    [&]<int... K>(std::integer_sequence<int, K...>) {
-      ((compiled[K + 1] = &compiledOrbit<K + 1, Derived>), ...);
-    }
-    (std::make_integer_sequence<int, std::min(M, kMaxFixedVectors)>{});
-    return compiled;
-  }
   // jac[i * size + j] = d f_i / d x_j for i, j < size (N: the Jacobian; M: the core one), by the orbit's
   // evaluator along the unit vectors, in passes of directions
   template <int size> void recordedJacobian(const double* x, double* jac) const {
@@ -463,6 +455,43 @@ private:
     for (int i = 0; i < size; ++i)
       for (int j = 0; j < size; ++j)
         jac[i * size + j] = derivatives[static_cast<std::size_t>(j) * size + static_cast<std::size_t>(i)];
+  }
+  // `steps` RK4 steps of one orbit and its K vectors, all of fixed size with the field inlined (what a
+  // hand-written variational system compiles to): a small field's call per stage through JetEvaluator::rk4
+  // and its seeds' round trip through memory were three quarters of Lorenz's spectrum time (bench README,
+  // LorenzSpectrum). rk4Step's operations are rk4StepOnArrays's element by element: the same steps as
+  // JetEvaluator::rk4's and the lanes'.
+  template <int K> [[gnu::flatten]] void orbitRk4(double* x, double* V, double h, long steps) const {
+    using Y = Eigen::Matrix<double, N + M * K, 1>;
+    using Tangents = Eigen::Matrix<double, M * K, 1>;
+    Y y, f0, k2, k3, k4, tmp, y1;
+    y.template head<N>() = Eigen::Map<const Vec<double>>(x);
+    y.template tail<M * K>() = Eigen::Map<const Tangents>(V);
+    const auto field = [this](const Y& in, Y& out) {
+      if constexpr (requires { Derived::kLaneField; }) {
+        using J = Jet<double, K>; // AutoDiff's rules (Lanes.h) on scalars the compiler keeps in registers
+        Vec<J> xa, fa;
+        for (int i = 0; i < N; ++i)
+          xa[i] = J::with(in[i], [&](int c) { return i < M ? in[N + c * M + i] : 0.0; });
+        self().field(xa, fa);
+        for (int i = 0; i < N; ++i)
+          out[i] = fa[i].v;
+        for (int c = 0; c < K; ++c)
+          for (int i = 0; i < M; ++i)
+            out[N + c * M + i] = fa[i].d[static_cast<std::size_t>(c)];
+      } else { // a field that branches on a value (valueOf): on AutoDiff
+        compiledOrbit<K, Derived>(this, in.data(), in.data() + N, M, out.data(), out.data() + N, M);
+      }
+    };
+    for (long s = 0; s < steps; ++s) {
+      field(y, f0);
+      rk4Step(field, h, y, f0, k2, k3, k4, tmp, y1);
+      y = y1;
+    }
+    Eigen::Map<Vec<double>> xOut(x);
+    Eigen::Map<Tangents> vOut(V);
+    xOut = y.template head<N>();
+    vOut = y.template tail<M * K>();
   }
   // `steps` RK4 steps of one orbit and its k vectors with `orbit`'s passes (JetEvaluator::rk4, whose stages
   // are rk4StepOnArrays's: each lane of a lane kernel steps as this)
@@ -542,8 +571,9 @@ bool ModelWithField<Derived, N, M>::tangentRk4(double* x, double* V, int k, doub
     return true;
   } else {
     if (isMap() || k < 1 || k > std::min(M, kMaxFixedVectors)) return false;
-    stepOrbit({nullptr, nullptr, 1, orbitCompiled(), static_cast<const Derived*>(this), N}, x, V, k, h,
-              steps);
+    withFixedVectors(k, [&]<int K>() {
+      orbitRk4<K>(x, V, h, steps);
+    });
     return true;
   }
 }
