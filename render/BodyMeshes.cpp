@@ -2,7 +2,7 @@
 
 #include "dynamics/core/BodyShapes.h"
 #include "dynamics/core/Errors.h"
-#include "render/export/VtkXmlFiles.h"
+#include "dynamics/io/FileNames.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,10 +1,10 @@
 #include "scenes/ScenePage.h"
 
 #include "dynamics/core/Errors.h"
+#include "dynamics/io/FileNames.h"
 #include "dynamics/tools/PoincareMap.h"
-#include "render/VisualScene.h"
-#include "render/export/VtkXmlFiles.h"
 #include "render/video/VideoExport.h"
+#include "render/view/VisualScene.h"
 #include "scenes/SceneLoader.h"
 #include "scenes/Session.h"
 

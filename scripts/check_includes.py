@@ -16,12 +16,10 @@ from collections import defaultdict
 ROOTS = ["dynamics", "render", "scenes", "app"]  # in layer order, lowest first
 INCLUDE = re.compile(r'\s*#\s*include\s+"([^"]+)"')
 
-# cycles found on 2026-11-28, each the set of the nodes on it
-KNOWN = {
-    # render/'s root holds what export/ and objects/ build on, and the scene renderer that uses them: the
-    # root's VisualScene and BodyMeshes belong in a folder of their own above both
-    frozenset({"render", "render/export", "render/objects"}),
-}
+# cycles found on 2026-11-28, each the set of the nodes on it, with what breaks them. Empty since
+# 2026-11-29: render/'s root <-> export <-> objects was broken by VisualScene's own folder (render/view, above
+# objects) and hasExtension in dynamics/io/FileNames.h (BodyMeshes read a mesh's format from export/)
+KNOWN = set()
 
 
 def layer(path):

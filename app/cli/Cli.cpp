@@ -4,11 +4,11 @@
 #include "app/cli/Progress.h"
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/ModelRegistry.h"
+#include "dynamics/io/FileNames.h"
 #include "dynamics/tools/ToolRegistry.h"
 #include "scenes/ToolRunner.h"
 
 #include "render/context/HeadlessContext.h"
-#include "render/export/VtkXmlFiles.h"
 #include "scenes/ModelCompiler.h"
 #include "scenes/ModuleLoader.h"
 

@@ -3,6 +3,7 @@
 #include "app/cli/Progress.h"
 #include "dynamics/core/Errors.h"
 #include "dynamics/io/AtomicFile.h"
+#include "dynamics/io/FileNames.h"
 #include "render/export/VtkXmlFiles.h"
 
 #include <algorithm>

@@ -8,6 +8,7 @@
 #include "app/cli/SweepMpi.h"
 #include "dynamics/core/Errors.h"
 #include "dynamics/io/AtomicFile.h"
+#include "dynamics/io/FileNames.h"
 #include "dynamics/tools/ToolRegistry.h"
 #include "render/Snapshot.h"
 #include "render/charts/SweepChart.h"

@@ -7,6 +7,7 @@
 #include "app/cli/Progress.h"
 #include "dynamics/core/Errors.h"
 #include "dynamics/io/AtomicFile.h"
+#include "dynamics/io/FileNames.h"
 #include "render/export/VtkXmlFiles.h"
 #include "scenes/SectionTextKeys.h"
 #include "scenes/ToolRunner.h"

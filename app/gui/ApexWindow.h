@@ -4,7 +4,7 @@
 // The main window owns it and forwards the states; the window itself is made when first opened.
 #pragma once
 #include "dynamics/jobs/PlotTap.h"
-#include "render/VisualScene.h"
+#include "render/view/VisualScene.h"
 #include "scenes/Scene.h"
 
 #include <Eigen/Core>

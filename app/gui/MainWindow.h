@@ -9,7 +9,7 @@
 #include "app/gui/ViewEdits.h"
 #include "dynamics/jobs/PlotTap.h"
 #include "dynamics/jobs/TrajectoryStream.h"
-#include "render/VisualScene.h"
+#include "render/view/VisualScene.h"
 #include "scenes/Scene.h"
 #include "scenes/Session.h"
 

@@ -2,7 +2,7 @@
 
 #include "dynamics/core/Errors.h"
 #include "dynamics/io/AtomicFile.h"
-#include "render/export/VtkXmlFiles.h"
+#include "dynamics/io/FileNames.h"
 
 #include <filesystem>
 #include <mutex>

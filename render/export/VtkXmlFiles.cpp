@@ -2,7 +2,7 @@
 
 #include "dynamics/core/Errors.h"
 #include "dynamics/io/AtomicFile.h"
-#include "render/VisualScene.h"
+#include "render/view/VisualScene.h"
 
 #include <algorithm>
 #include <atomic>
@@ -58,12 +58,6 @@ void writeAtomically(Writer* writer, const std::string& path, const std::string&
 }
 
 } // namespace
-
-bool hasExtension(const std::string& path, const std::string& extension) {
-  if (path.size() < extension.size()) return false;
-  return std::equal(extension.rbegin(), extension.rend(), path.rbegin(),
-                    [](char a, char b) { return std::tolower(a) == std::tolower(b); });
-}
 
 void writePolyDataVtp(const std::string& path, const NamedColumns& columns, std::array<int, 3> xyz, bool line,
                       const std::string& what) {

@@ -11,9 +11,6 @@ namespace rv {
 
 class VisualScene;
 
-/// Whether `path` ends with `extension` (".vtp"), ignoring case.
-bool hasExtension(const std::string& path, const std::string& extension);
-
 /// Columns of samples of equal length, each named.
 struct NamedColumns {
   std::vector<std::string> names;

@@ -2,8 +2,8 @@
 
 #include "dynamics/core/Errors.h"
 #include "dynamics/io/AtomicFile.h"
-#include "render/VisualScene.h"
 #include "render/export/WebAssets.h"
+#include "render/view/VisualScene.h"
 
 #include <algorithm>
 #include <cmath>

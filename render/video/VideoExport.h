@@ -3,8 +3,8 @@
 // approach: offline, never by capturing the screen).
 #pragma once
 #include "dynamics/integrators/Integrator.h"
-#include "render/VisualScene.h"
 #include "render/video/Mp4Writer.h"
+#include "render/view/VisualScene.h"
 
 #include <functional>
 #include <memory>

@@ -2,11 +2,11 @@
 // Figures, not tests; see README.md. The frame cases render a default scene played to t = 2, with
 // multisampling off and on, and with a trace of 10^6 points (against the bare scene).
 #include "render/Snapshot.h"
-#include "render/VisualScene.h"
 #include "render/charts/PoincareChart.h"
 #include "render/context/HeadlessContext.h"
 #include "render/objects/ContactTraceObject.h"
 #include "render/video/VideoExport.h"
+#include "render/view/VisualScene.h"
 #include "scenes/SceneLoader.h"
 
 #include <benchmark/benchmark.h>

@@ -1,9 +1,9 @@
 // Play.h -- render tests' common start: a default scene (with --set overrides) played to a time.
 #pragma once
 #include "render/Snapshot.h"
-#include "render/VisualScene.h"
 #include "render/context/HeadlessContext.h"
 #include "render/video/VideoExport.h"
+#include "render/view/VisualScene.h"
 #include "scenes/SceneLoader.h"
 
 #include <memory>

@@ -2,11 +2,11 @@
 // baselines, so passing both also shows that the backends agree.
 #include "dynamics/integrators/TimeSampler.h"
 #include "render/Snapshot.h"
-#include "render/VisualScene.h"
 #include "render/context/HeadlessContext.h"
 #include "render/objects/BodyAxesObject.h"
 #include "render/objects/ContactTraceObject.h"
 #include "render/video/VideoExport.h"
+#include "render/view/VisualScene.h"
 #include "scenes/Gallery.h"
 #include "scenes/SceneCharts.h"
 #include "scenes/SceneLoader.h"

@@ -1,4 +1,4 @@
-#include "render/VisualScene.h"
+#include "render/view/VisualScene.h"
 
 #include "dynamics/core/Format.h"
 #include "render/BodyMeshes.h"
