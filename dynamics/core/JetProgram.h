@@ -187,10 +187,12 @@ using CompiledJets = void (*)(const void* context, const double* x, const double
 /// A program with its constants bound for `width` lanes (1, 4 or 8), and the counts of directions compiled
 /// from the field itself, which run in its place.
 struct JetEvaluator {
-  const JetProgram* program = nullptr; ///< null where every count asked is compiled
+  const JetProgram* program = nullptr; ///< null: compiled counts only
   const double* constants = nullptr;
   int width = 1;
-  std::array<CompiledJets, kJetDirections + 1> compiled{}; ///< by count of directions; null: the program
+  /// By count of directions; null: the program, or without one the next count compiled (zero directions
+  /// added, their derivatives dropped: the same bits).
+  std::array<CompiledJets, kJetDirections + 1> compiled{};
   const void* context = nullptr;
   int dimension = 0; ///< the field's components, where there is no program
 

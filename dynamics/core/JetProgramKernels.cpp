@@ -165,8 +165,23 @@ template <class T> void interpret(const JetProgram& program, int k, const Io& io
 void pass(const JetEvaluator& e, int k, const Io& io) {
   if (const CompiledJets compiled = e.compiled[static_cast<std::size_t>(k)])
     return compiled(e.context, io.x, io.V, io.seeded, io.dx, io.dV, io.differentiated);
-  if (!e.program)
+  if (!e.program) { // the next count compiled, with zero directions added and their derivatives dropped
+    for (int more = k + 1; more <= kJetDirections; ++more)
+      if (const CompiledJets compiled = e.compiled[static_cast<std::size_t>(more)]) {
+        const auto block = [&](int count, int per) {
+          return static_cast<std::size_t>(count) * static_cast<std::size_t>(per * e.width);
+        };
+        thread_local std::vector<double> seeds, derivatives;
+        seeds.assign(block(more, io.seeded), 0.0);
+        std::copy(io.V, io.V + block(k, io.seeded), seeds.begin());
+        derivatives.resize(block(more, io.differentiated));
+        compiled(e.context, io.x, seeds.data(), io.seeded, io.dx, derivatives.data(), io.differentiated);
+        std::copy(derivatives.begin(),
+                  derivatives.begin() + static_cast<std::ptrdiff_t>(block(k, io.differentiated)), io.dV);
+        return;
+      }
     throw std::logic_error("JetEvaluator: no program and no compiled form for " + std::to_string(k));
+  }
   if (e.width == 1)
     interpret<double>(*e.program, k, io);
   else if (e.width == 4)

@@ -444,23 +444,34 @@ private:
   template <class Body> static bool withFixedVectors(int k, Body&& body) {
     return withCount<1, std::min(M, kMaxFixedVectors)>(k, std::forward<Body>(body));
   }
+  // A large field compiled on AutoDiff (no recorded program: it branches on a value, as a model file's
+  // generated C++ or a test's model) is compiled for the recorded path's counts only, 1 and kCompiledVectors:
+  // other counts run the larger pass with zero directions added (JetEvaluator), Jacobians in passes -- two
+  // instantiations of the field's pass instead of eight (all counts 1..6, the Jacobian and the core one)
+  static constexpr bool kPlainLargeField = N > kInlinedFieldDimension;
+  JetEvaluator compiledEvaluator() const {
+    JetEvaluator e{nullptr, nullptr, 1, {}, static_cast<const Derived*>(this), N};
+    e.compiled[1] = &compiledOrbit<1, Derived>;
+    e.compiled[kCompiledVectors] = &compiledOrbit<kCompiledVectors, Derived>;
+    return e;
+  }
   // jac[i * size + j] = d f_i / d x_j for i, j < size (N: the Jacobian; M: the core one), by the orbit's
   // evaluator along the unit vectors, in passes of directions
-  template <int size> void recordedJacobian(const double* x, double* jac) const {
+  template <int size> static void jacobianInPasses(const JetEvaluator& orbit, const double* x, double* jac) {
     std::array<double, size * size> seeds{}, derivatives;
     std::array<double, N> values;
     for (int j = 0; j < size; ++j)
       seeds[static_cast<std::size_t>(j) * size + static_cast<std::size_t>(j)] = 1;
-    recorded().orbit.run(size, x, seeds.data(), size, values.data(), derivatives.data(), size);
+    orbit.run(size, x, seeds.data(), size, values.data(), derivatives.data(), size);
     for (int i = 0; i < size; ++i)
       for (int j = 0; j < size; ++j)
         jac[i * size + j] = derivatives[static_cast<std::size_t>(j) * size + static_cast<std::size_t>(i)];
   }
-  // `steps` RK4 steps of one orbit and its K vectors, all of fixed size with the field inlined (what a
-  // hand-written variational system compiles to): a small field's call per stage through JetEvaluator::rk4
-  // and its seeds' round trip through memory were three quarters of Lorenz's spectrum time (bench README,
-  // LorenzSpectrum). rk4Step's operations are rk4StepOnArrays's element by element: the same steps as
-  // JetEvaluator::rk4's and the lanes'.
+  // `steps` RK4 steps of one orbit and its K vectors, all of fixed size with a small field (at most
+  // kInlinedFieldDimension components) inlined (what a hand-written variational system compiles to): its call
+  // per stage through JetEvaluator::rk4 and its seeds' round trip through memory were three quarters of
+  // Lorenz's spectrum time (bench README, LorenzSpectrum). rk4Step's operations are rk4StepOnArrays's element
+  // by element: the same steps as JetEvaluator::rk4's and the lanes'.
   template <int K> [[gnu::flatten]] void orbitRk4(double* x, double* V, double h, long steps) const {
     using Y = Eigen::Matrix<double, N + M * K, 1>;
     using Tangents = Eigen::Matrix<double, M * K, 1>;
@@ -522,7 +533,9 @@ void ModelWithField<Derived, N, M>::rhs(const double* x, double* dx) const {
 template <class Derived, int N, int M>
 void ModelWithField<Derived, N, M>::jacobian(const double* x, double* jac) const {
   if constexpr (recordedField()) {
-    recordedJacobian<N>(x, jac);
+    jacobianInPasses<N>(recorded().orbit, x, jac);
+  } else if constexpr (kPlainLargeField) {
+    jacobianInPasses<N>(compiledEvaluator(), x, jac);
   } else {
     using AD = Eigen::AutoDiffScalar<Eigen::Matrix<double, N, 1>>;
     Vec<AD> xa, fa;
@@ -538,7 +551,9 @@ void ModelWithField<Derived, N, M>::jacobian(const double* x, double* jac) const
 template <class Derived, int N, int M>
 void ModelWithField<Derived, N, M>::coreJacobian(const double* x, double* jac) const {
   if constexpr (recordedField()) {
-    recordedJacobian<M>(x, jac);
+    jacobianInPasses<M>(recorded().orbit, x, jac);
+  } else if constexpr (kPlainLargeField) {
+    jacobianInPasses<M>(compiledEvaluator(), x, jac);
   } else {
     using D = Eigen::Matrix<double, M, 1>; // M derivatives, fixed size: no heap, unrolled
     using AD = Eigen::AutoDiffScalar<D>;
@@ -557,6 +572,8 @@ void ModelWithField<Derived, N, M>::tangentRhs(const double* x, const double* V,
                                                double* dV) const {
   if constexpr (recordedField()) {
     recorded().orbit.run(k, x, V, M, dx, dV, M); // any k, in passes
+  } else if constexpr (kPlainLargeField) {
+    compiledEvaluator().run(k, x, V, M, dx, dV, M); // any k, in passes
   } else {
     if (!withFixedVectors(k, [&]<int K>() { compiledOrbit<K, Derived>(this, x, V, M, dx, dV, M); }))
       Model::tangentRhs(x, V, k, dx, dV);
@@ -571,9 +588,10 @@ bool ModelWithField<Derived, N, M>::tangentRk4(double* x, double* V, int k, doub
     return true;
   } else {
     if (isMap() || k < 1 || k > std::min(M, kMaxFixedVectors)) return false;
-    withFixedVectors(k, [&]<int K>() {
-      orbitRk4<K>(x, V, h, steps);
-    });
+    if constexpr (kPlainLargeField) // its passes called per stage, not inlined four times over
+      stepOrbit(compiledEvaluator(), x, V, k, h, steps);
+    else
+      withFixedVectors(k, [&]<int K>() { orbitRk4<K>(x, V, h, steps); });
     return true;
   }
 }

@@ -6,10 +6,12 @@
 // - the rattleback reverses a spin in one direction only.
 #include "dynamics/core/Errors.h"
 #include "dynamics/integrators/Everhart.h"
+#include "dynamics/integrators/Rk4.h"
 #include "dynamics/kinematics/AndoyerDeprit.h"
 #include "dynamics/models/BodyState.h"
 #include "dynamics/models/EllipsoidOnPlane.h"
 #include "dynamics/models/ParaboloidOnPlane.h"
+#include "dynamics/tools/TangentSystem.h"
 #include "tests/dynamics/TestSupport.h"
 
 #include <gtest/gtest.h>
@@ -137,6 +139,65 @@ TEST(RigidBodyOnPlane, ABallMovesAsTheChaplyginBall) {
     a.step(), b.step();
   EXPECT_LT((a.state() - b.state()).norm(), 1e-10) << "t = 50";
   EXPECT_GT((a.state() - x0).norm(), 0.5) << "and it did move";
+}
+
+// The sphere's field is large and has no recorded program (no kLaneField): ModelWithField compiles its pass
+// for 1 and 6 directions only; every other count runs the 6-direction pass with zero directions added, and
+// the Jacobians go in passes of it. Each count must give the derivatives a finite difference of the field
+// gives, and the same bits whatever the count (a direction's arithmetic does not depend on the others).
+TEST(RigidBodyOnPlane, APlainFieldsDerivativesAreRightForEveryCount) {
+  RigidBodyConstants c;
+  c.inertia = Eigen::Vector3d(1.0, 1.4, 1.9).asDiagonal();
+  c.mass = 1.3, c.gravity = 9.8;
+  const SphereOnPlane sphere(0.8, c);
+  const Eigen::VectorXd x =
+      body_state::fromMomentumAndVertical(Eigen::Vector3d(0.7, -0.4, 0.9), Eigen::Vector3d(0.3, 0.5, 0.8));
+  const int n = sphere.dimension(), m = sphere.info().coreDimension;
+  Eigen::MatrixXd V(m, 13);
+  for (Eigen::Index i = 0; i < V.size(); ++i)
+    V.data()[i] = std::sin(1.7 * static_cast<double>(i) + 0.3);
+  const auto derivatives = [&](int k) {
+    Eigen::VectorXd dx(n);
+    Eigen::MatrixXd dV(m, k);
+    sphere.tangentRhs(x.data(), V.data(), k, dx.data(), dV.data());
+    return dV;
+  };
+  const Eigen::MatrixXd all = derivatives(13); // passes of 6, 6 and 1
+  for (int j = 0; j < 13; ++j) {               // each column against a central difference of the field
+    const double h = 1e-6;
+    Eigen::VectorXd plus = x, minus = x, fPlus(n), fMinus(n);
+    plus.head(m) += h * V.col(j), minus.head(m) -= h * V.col(j);
+    sphere.rhs(plus.data(), fPlus.data());
+    sphere.rhs(minus.data(), fMinus.data());
+    const Eigen::VectorXd difference = (fPlus - fMinus).head(m) / (2 * h);
+    EXPECT_LT((all.col(j) - difference).cwiseAbs().maxCoeff(), 1e-7 * std::max(1.0, difference.norm()))
+        << "direction " << j;
+  }
+  EXPECT_GT(all.cwiseAbs().maxCoeff(), 1e-3) << "the derivatives are not all zero";
+  for (const int k : {1, 2, 3, 5, 6, 7}) // compiled, padded, and two passes
+    EXPECT_EQ(derivatives(k), all.leftCols(k)) << "k = " << k;
+  using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  RowMajor J(n, n), core(m, m);
+  sphere.jacobian(x.data(), J.data());
+  sphere.coreJacobian(x.data(), core.data());
+  EXPECT_EQ(core, J.topLeftCorner(m, m)) << "the core block of the Jacobian, bit for bit";
+  const Eigen::MatrixXd JV = core * V;
+  EXPECT_LT((JV - all).cwiseAbs().maxCoeff(), 1e-13 * std::max(1.0, all.cwiseAbs().maxCoeff()));
+  // the fused steps of a count not compiled (4) are the rk4 integrator's on the variational system
+  TangentSystem tangent(sphere, 4);
+  Eigen::VectorXd state(tangent.dimension());
+  state.head(n) = x;
+  for (Eigen::Index i = n; i < state.size(); ++i)
+    state[i] = std::cos(0.9 * static_cast<double>(i));
+  Eigen::VectorXd fused = state;
+  ASSERT_TRUE(tangent.rk4Steps(fused, 0.01, 25));
+  Rk4 rk4(0.01);
+  rk4.start(tangent, 0, state);
+  for (int s = 0; s < 25; ++s)
+    rk4.step();
+  EXPECT_LT((fused - rk4.state()).cwiseAbs().maxCoeff(),
+            1e-14 * std::max(1.0, rk4.state().cwiseAbs().maxCoeff()));
+  EXPECT_GT((fused - state).cwiseAbs().maxCoeff(), 1e-6) << "it moved";
 }
 
 TEST(RigidBodyOnPlane, GaussMapsPutTheContactOnTheSurfaceWithNormalMinusGamma) {
