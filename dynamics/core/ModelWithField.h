@@ -56,7 +56,7 @@ public:
 
   /// One pass of forward differentiation seeded with the tangent vectors: the values are f, the derivatives
   /// J V (compiled counts, or the recorded program; a small field beyond kMaxFixedVectors goes through the
-  /// Jacobian, a recorded one in passes).
+  /// Jacobian, a recorded one and a large one in passes).
   void tangentRhs(const double* x, const double* V, int k, double* dx, double* dV) const final;
 
   /// RK4 on (x, V) in one loop, for 1 <= k <= min(M, kMaxFixedVectors): a small field inlined into steps of
@@ -448,7 +448,7 @@ private:
   // generated C++ or a test's model) is compiled for the recorded path's counts only, 1 and kCompiledVectors:
   // other counts run the larger pass with zero directions added (JetEvaluator), Jacobians in passes -- two
   // instantiations of the field's pass instead of eight (all counts 1..6, the Jacobian and the core one)
-  static constexpr bool kPlainLargeField = N > kInlinedFieldDimension;
+  static constexpr bool plainLargeField() { return !recordedField() && N > kInlinedFieldDimension; }
   JetEvaluator compiledEvaluator() const {
     JetEvaluator e{nullptr, nullptr, 1, {}, static_cast<const Derived*>(this), N};
     e.compiled[1] = &compiledOrbit<1, Derived>;
@@ -534,7 +534,7 @@ template <class Derived, int N, int M>
 void ModelWithField<Derived, N, M>::jacobian(const double* x, double* jac) const {
   if constexpr (recordedField()) {
     jacobianInPasses<N>(recorded().orbit, x, jac);
-  } else if constexpr (kPlainLargeField) {
+  } else if constexpr (plainLargeField()) {
     jacobianInPasses<N>(compiledEvaluator(), x, jac);
   } else {
     using AD = Eigen::AutoDiffScalar<Eigen::Matrix<double, N, 1>>;
@@ -552,7 +552,7 @@ template <class Derived, int N, int M>
 void ModelWithField<Derived, N, M>::coreJacobian(const double* x, double* jac) const {
   if constexpr (recordedField()) {
     jacobianInPasses<M>(recorded().orbit, x, jac);
-  } else if constexpr (kPlainLargeField) {
+  } else if constexpr (plainLargeField()) {
     jacobianInPasses<M>(compiledEvaluator(), x, jac);
   } else {
     using D = Eigen::Matrix<double, M, 1>; // M derivatives, fixed size: no heap, unrolled
@@ -572,7 +572,7 @@ void ModelWithField<Derived, N, M>::tangentRhs(const double* x, const double* V,
                                                double* dV) const {
   if constexpr (recordedField()) {
     recorded().orbit.run(k, x, V, M, dx, dV, M); // any k, in passes
-  } else if constexpr (kPlainLargeField) {
+  } else if constexpr (plainLargeField()) {
     compiledEvaluator().run(k, x, V, M, dx, dV, M); // any k, in passes
   } else {
     if (!withFixedVectors(k, [&]<int K>() { compiledOrbit<K, Derived>(this, x, V, M, dx, dV, M); }))
@@ -588,7 +588,7 @@ bool ModelWithField<Derived, N, M>::tangentRk4(double* x, double* V, int k, doub
     return true;
   } else {
     if (isMap() || k < 1 || k > std::min(M, kMaxFixedVectors)) return false;
-    if constexpr (kPlainLargeField) // its passes called per stage, not inlined four times over
+    if constexpr (plainLargeField()) // its passes called per stage, not inlined four times over
       stepOrbit(compiledEvaluator(), x, V, k, h, steps);
     else
       withFixedVectors(k, [&]<int K>() { orbitRk4<K>(x, V, h, steps); });
