@@ -122,23 +122,25 @@ void PoincareCost(benchmark::State& state, bool withSection) {
         benchmark::Counter(static_cast<double>(crossings), benchmark::Counter::kIsRate);
 }
 
-LyapunovSettings lorenzSettings(LyapunovSettings::Mode mode) {
+// adaptive: the interval adapts to the vectors' spread (the default, 1e3: Lorenz's intervals go to 0.25,
+// bench README); otherwise every interval is 0.5, as the peer's
+LyapunovSettings lorenzSettings(LyapunovSettings::Mode mode, bool adaptive = false) {
   LyapunovSettings s;
   s.mode = mode;
   s.interval = mode == LyapunovSettings::Mode::Tangent ? 0.5 : 0.1;
-  s.spread = 0; // every interval 0.5, as the peer's: the default (1e3) retakes some at 0.25 (bench README)
+  if (!adaptive) s.spread = 0;
   s.maxTime = 2000;
   return s;
 }
 
-void LorenzSpectrum(benchmark::State& state, LyapunovSettings::Mode mode) {
+void LorenzSpectrum(benchmark::State& state, LyapunovSettings::Mode mode, bool adaptive = false) {
   const auto m = make("lorenz");
   Eigen::VectorXd x0(3);
   x0 << 1, 1, 20;
   double l1 = 0;
   for (auto _ : state) {
     const auto r = lyapunovExponents(
-        *m, [] { return std::make_unique<Rk4>(0.005); }, x0, lorenzSettings(mode));
+        *m, [] { return std::make_unique<Rk4>(0.005); }, x0, lorenzSettings(mode, adaptive));
     l1 = r.last.exponents[0];
   }
   state.counters["lambda1"] = l1;
@@ -290,6 +292,9 @@ BENCHMARK_CAPTURE(PoincareCost, section, true)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(LorenzSpectrum, tangent, LyapunovSettings::Mode::Tangent)
     ->Name("LorenzSpectrum/rollviz_tangent")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(LorenzSpectrum, tangent_adaptive, LyapunovSettings::Mode::Tangent, true)
+    ->Name("LorenzSpectrum/rollviz_tangent_default_spread")
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(LorenzSpectrum, perturbed, LyapunovSettings::Mode::Perturbed)
     ->Name("LorenzSpectrum/rollviz_perturbed")
