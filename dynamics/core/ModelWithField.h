@@ -482,12 +482,16 @@ private:
       if constexpr (requires { Derived::kLaneField; }) {
         using J = Jet<double, K>; // AutoDiff's rules (Lanes.h) on scalars the compiler keeps in registers
         Vec<J> xa, fa;
+#pragma GCC unroll 16 // unrolled at -O2 too: the jets then stay in registers (bench README)
         for (int i = 0; i < N; ++i)
           xa[i] = J::with(in[i], [&](int c) { return i < M ? in[N + c * M + i] : 0.0; });
         self().field(xa, fa);
+#pragma GCC unroll 16
         for (int i = 0; i < N; ++i)
           out[i] = fa[i].v;
+#pragma GCC unroll 16
         for (int c = 0; c < K; ++c)
+#pragma GCC unroll 16
           for (int i = 0; i < M; ++i)
             out[N + c * M + i] = fa[i].d[static_cast<std::size_t>(c)];
       } else { // a field that branches on a value (valueOf): on AutoDiff
