@@ -1018,10 +1018,12 @@ class Cli(unittest.TestCase):
             self.assertEqual(again.returncode, 0, again.stderr)
             return json.loads(whole.stdout), json.loads(again.stdout)
 
-        whole, again = killed_and_resumed(["megno", lorenz, "--time", "20000", "--json"], self.path("megno.ck"))
+        # each run takes ~5 s in the dev build, five times the first save's period (app/cli/Checkpoint.cpp): a
+        # shorter one (Lorenz's fused RK4 made 20000 take 1.2 s) may end before it saves on a busy machine
+        whole, again = killed_and_resumed(["megno", lorenz, "--time", "40000", "--json"], self.path("megno.ck"))
         self.assertEqual(whole, again)
         ck2 = self.path("lyap.ck")
-        args = ["lyapunov", lorenz, "--time", "20000", "--json"]
+        args = ["lyapunov", lorenz, "--time", "100000", "--json"]
         whole, again = killed_and_resumed(args, ck2)
         self.assertEqual(whole["exponents"], again["exponents"])
 
