@@ -10,6 +10,7 @@ with a closing line 'tidy: N passed, N failed'."""
 import hashlib
 import json
 import os
+import re
 import subprocess
 import sys
 from concurrent.futures import ThreadPoolExecutor
@@ -57,8 +58,10 @@ def main():
         own = sorted({str(Path(build, d).resolve()) for d in deps.get(obj, [])} | {str(ROOT / rel)})
         own = [p for p in own if p.startswith(str(ROOT) + "/") and "/build" not in p[len(str(ROOT)):]]
         h = hashlib.sha256(config)
-        # the command with the checkout's path taken out: clones elsewhere (CI) share the cache
-        h.update(json.dumps(c.get("command") or c.get("arguments")).replace(str(ROOT), "<root>").encode())
+        # the command with the checkout's path taken out: clones elsewhere (CI) share the cache; the level of
+        # debug information (-g, -g1) says nothing to clang-tidy
+        h.update(json.dumps(debug_level_alike(c.get("command") or c.get("arguments"))).replace(
+            str(ROOT), "<root>").encode())
         for p in own:
             h.update(Path(p).relative_to(ROOT).as_posix().encode() + digest(p).encode())
         key = h.hexdigest()
@@ -92,6 +95,13 @@ def main():
                     print("  " + f.replace(str(ROOT) + "/", ""))
     print(f"tidy: {len(units) - failed} passed, {failed} failed")
     return 1 if failed else 0
+
+
+def debug_level_alike(command):
+    """the compile command (a string or a list) with any -g<level> written as -g"""
+    if isinstance(command, str):
+        return re.sub(r"(?<=\s)-g[0-3]?(?=\s|$)", "-g", command)
+    return ["-g" if re.fullmatch(r"-g[0-3]?", a) else a for a in command]
 
 
 def object_of(command):
