@@ -342,7 +342,7 @@ std::mutex& loadedMutex() {
   static std::mutex m;
   return m;
 }
-std::list<Loaded>& loaded() { // a list: entries never move (scenes keep pointers to them)
+std::list<Loaded>& modelFileList() { // a list: entries never move (scenes keep pointers to them)
   static std::list<Loaded> l;
   return l;
 }
@@ -376,7 +376,7 @@ std::atomic<ModelCompilation>& compilationPolicy() {
 /// only the walk over the list needs the lock.
 const Loaded* loadedOf(const ModelEntry& entry) {
   const std::lock_guard lock(loadedMutex());
-  for (const Loaded& l : loaded())
+  for (const Loaded& l : modelFileList())
     if (&l.entry == &entry) return &l;
   return nullptr;
 }
@@ -384,7 +384,7 @@ const Loaded* loadedOf(const ModelEntry& entry) {
 const ModelEntry& entryOf(const std::string& key, const std::string& file, const json& doc,
                           const ordered_json* ordered, const std::string& source) {
   const std::lock_guard lock(loadedMutex());
-  for (const Loaded& l : loaded())
+  for (const Loaded& l : modelFileList())
     if (l.key == key) return l.entry;
   std::shared_ptr<const EquationSystem> system;
   if (isRollingModel(doc)) { // derived equations (RollingModel.h); errors named at the field the user wrote
@@ -414,7 +414,7 @@ const ModelEntry& entryOf(const std::string& key, const std::string& file, const
       throw InputError(source + ":" + e.what());
     }
   }
-  Loaded& l = loaded().emplace_back(Loaded{key, file, system, {}, doc.value("initial", json())});
+  Loaded& l = modelFileList().emplace_back(Loaded{key, file, system, {}, doc.value("initial", json())});
   l.entry.info = &system->info();
   l.entry.origin = file.empty() ? source : file;
   // compiled on the first instance (ModelCompiler.h), interpreted when that is off, not ready or fails
@@ -535,7 +535,7 @@ const ModelEntry& modelEntryByName(const std::string& idOrPath) {
 std::vector<const ModelEntry*> loadedModelFiles() {
   const std::lock_guard lock(loadedMutex());
   std::vector<const ModelEntry*> out;
-  for (const Loaded& l : loaded())
+  for (const Loaded& l : modelFileList())
     out.push_back(&l.entry);
   return out;
 }

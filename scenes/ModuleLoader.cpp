@@ -17,7 +17,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::vector<LoadedModule>& loaded() {
+std::vector<LoadedModule>& moduleList() {
   static std::vector<LoadedModule> m;
   return m;
 }
@@ -90,7 +90,7 @@ std::vector<std::string> moduleSearchPath() {
 
 void loadModule(const std::string& given) {
   const std::string path = realPath(given);
-  for (const auto& m : loaded())
+  for (const auto& m : moduleList())
     if (m.path == path) return;
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) throw InputError(given + ": no such module file");
@@ -137,7 +137,7 @@ void loadModule(const std::string& given) {
     ToolRegistry::mutableGlobal().add(std::move(t.entry));
     addToolRunner(id, std::move(t.runner));
   }
-  loaded().push_back(std::move(m));
+  moduleList().push_back(std::move(m));
 }
 
 void loadModules(const std::vector<std::string>& files, const ModuleWarning& warn) {
@@ -166,7 +166,7 @@ void loadModules(const std::vector<std::string>& files, const ModuleWarning& war
 }
 
 const std::vector<LoadedModule>& loadedModules() {
-  return loaded();
+  return moduleList();
 }
 
 } // namespace rv

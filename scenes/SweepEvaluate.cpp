@@ -2,6 +2,7 @@
 // SIMD lanes where the quantity can (its tool's batch evaluation), each point's record as alone.
 #include "dynamics/core/Errors.h"
 #include "dynamics/core/Lanes.h"
+#include "dynamics/core/NaN.h"
 #include "dynamics/tools/ReturnMap.h"
 #include "scenes/Sweep.h"
 
@@ -13,8 +14,6 @@
 namespace rv {
 
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // grid point `index`'s scene as the quantity computes on it (narrowed to what it needs)
 Scene evaluatedScene(const SweepSpec& spec, long index) {

@@ -1,6 +1,7 @@
 // SweepOutput.cpp -- what a sweep writes and reads back (scenes/Sweep.h): its CSV (header, rows, a finished
 // file read back) and the chart's description of it.
 #include "dynamics/core/Errors.h"
+#include "dynamics/core/NaN.h"
 #include "scenes/SweepGrid.h"
 
 #include <cmath>
@@ -13,8 +14,6 @@
 namespace rv {
 
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 std::string csvField(const std::string& s) {
   if (s.find_first_of(",\"\n") == std::string::npos) return s;

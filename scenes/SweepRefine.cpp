@@ -1,5 +1,6 @@
 // SweepRefine.cpp -- a sweep refined where its regimes meet (scenes/Sweep.h): the levels of the grid, the
 // cells each level halves, the levels run in turn, and the grid's values painted from the points computed.
+#include "dynamics/core/NaN.h"
 #include "scenes/SweepGrid.h"
 
 #include <algorithm>
@@ -9,8 +10,6 @@
 namespace rv {
 
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // calls visit(k) for every point from `from` to `to` (per axis, inclusive) in steps of `step`
 template <class Visit>

@@ -3,6 +3,7 @@
 
 Usage: scripts/tidy.py [BUILD_DIR] [-j N]   (BUILD_DIR: a configured and built tree, default build/dev)
 
+A unity build's batches (cmake/Unity.cmake) are checked file by file, each with its batch's command and dependencies.
 A translation unit found clean is remembered in ~/.cache/rollviz-tidy under a key made of the contents of every
 project file it depends on (ninja's dependency list), the compile command and .clang-tidy -- so, like ccache, a
 clone or a later run checks again only what changed. Prints each finding; exits 1 when there is any, 0 when none,
@@ -30,7 +31,11 @@ def main():
     build = Path(args[0] if args else ROOT / "build" / "dev").resolve()
     cache = Path(os.environ.get("ROLLVIZ_TIDY_CACHE", Path.home() / ".cache" / "rollviz-tidy"))
     cache.mkdir(parents=True, exist_ok=True)
-    commands = json.loads((build / "compile_commands.json").read_text())
+    commands = expand_unity_batches(json.loads((build / "compile_commands.json").read_text()))
+    # clang-tidy reads each file's command from this database: the build's, with the batches expanded
+    database = build / "tidy"
+    database.mkdir(exist_ok=True)
+    (database / "compile_commands.json").write_text(json.dumps(commands, indent=1))
     units = {}
     for c in commands:
         src = Path(c["directory"], c["file"]).resolve()
@@ -74,7 +79,7 @@ def main():
 
     def check(item):
         rel, key = item
-        r = subprocess.run(["clang-tidy", "-p", str(build), "--quiet", str(ROOT / rel)], capture_output=True,
+        r = subprocess.run(["clang-tidy", "-p", str(database), "--quiet", str(ROOT / rel)], capture_output=True,
                            text=True)
         findings = [line for line in r.stdout.splitlines() if ": warning: " in line or ": error: " in line]
         if r.returncode == 0 and not findings:
@@ -95,6 +100,29 @@ def main():
                     print("  " + f.replace(str(ROOT) + "/", ""))
     print(f"tidy: {len(units) - failed} passed, {failed} failed")
     return 1 if failed else 0
+
+
+def expand_unity_batches(commands):
+    """the compile commands with each unity batch (cmake/Unity.cmake: a unit that #includes a target's .cpp files)
+    written as one command per file it includes; the object, and so the dependencies, stay the batch's"""
+    out = []
+    for c in commands:
+        path = Path(c["directory"], c["file"])
+        if path.parent.name != "unity" or not path.name.endswith(".cpp"):
+            out.append(c)
+            continue
+        for line in path.read_text().splitlines():
+            m = re.fullmatch(r'#include "(.+)"', line)
+            if m:
+                e = dict(c, file=str(ROOT / m.group(1)))
+                if "command" in c:
+                    e["command"] = c["command"].replace(c["file"], e["file"])
+                if "arguments" in c:
+                    e["arguments"] = [e["file"] if a == c["file"] else a for a in c["arguments"]]
+                if "output" not in c:
+                    e["output"] = object_of(c)
+                out.append(e)
+    return out
 
 
 def debug_level_alike(command):

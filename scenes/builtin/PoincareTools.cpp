@@ -3,6 +3,7 @@
 // dimensions) and plot (the plot section's observables along the trajectory). Their charts are
 // BuiltinCharts.cpp's.
 #include "dynamics/core/Errors.h"
+#include "dynamics/core/NaN.h"
 #include "dynamics/tools/PlotFilter.h"
 #include "dynamics/tools/TrajectoryLanes.h"
 #include "scenes/SceneTools.h"
@@ -85,8 +86,6 @@ ToolResult runPlot(const Scene& scene, const ToolControl& control) {
   r.stopped = control.stopRequested();
   return r;
 }
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // orbit: how many map points an orbit diagram's point computes (the transient, then those it keeps)
 long orbitLength(const SweepSpec& sp) {

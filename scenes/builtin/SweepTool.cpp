@@ -3,6 +3,7 @@
 // ends are written by hand (app/cli/SweepCommand.cpp, the GUI's sweep window), so it has no runner; its
 // settings are a sweep file's "options" (sweepOptionsTable), not a scene section.
 #include "dynamics/core/Errors.h"
+#include "dynamics/core/NaN.h"
 #include "dynamics/tools/ToolSettings.h"
 #include "dynamics/tools/TrajectoryLanes.h"
 #include "scenes/builtin/BuiltinTool.h"
@@ -14,8 +15,6 @@
 namespace rv {
 
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // the observable named after a quantity's prefix, or the default
 const Observable& namedObservable(const Scene& scene, const std::string& name) {

@@ -9,6 +9,8 @@
 #include "dynamics/integrators/Taylor.h"
 #include "dynamics/integrators/Verner9.h"
 
+#include "tests/dynamics/TestSupport.h"
+
 #include <benchmark/benchmark.h>
 #include <boost/numeric/odeint.hpp>
 #include <cmath>
@@ -19,11 +21,6 @@ namespace {
 
 using namespace rv;
 namespace odeint = boost::numeric::odeint;
-
-std::unique_ptr<Model> make(const std::string& id) {
-  const auto& e = ModelRegistry::global().get(id);
-  return e.create(ParameterValues(e.info->parameters));
-}
 
 // the default scene's start of chaplygin_ball: map point (0.5, 0.2) at E = 0.5, c = 0.3, K = (0.2, 0.1, 0.3)
 std::unique_ptr<Model> chaplygin() {
@@ -45,7 +42,7 @@ Eigen::VectorXd startOf(const Model& m) {
 }
 
 void RightHandSide(benchmark::State& state, const std::string& id) {
-  const auto m = make(id);
+  const auto m = test::makeModel(id);
   const Eigen::VectorXd x = startOf(*m);
   Eigen::VectorXd dx(x.size());
   for (auto _ : state) {

@@ -14,8 +14,10 @@
 #include "dynamics/tools/PoincareMap.h"
 #include "dynamics/tools/TangentSystem.h"
 
+#include "tests/dynamics/TestSupport.h"
 #include <Eigen/QR>
 #include <array>
+
 #include <benchmark/benchmark.h>
 #include <boost/numeric/odeint.hpp>
 #include <chrono>
@@ -26,31 +28,22 @@ namespace {
 
 using namespace rv;
 
-std::unique_ptr<Model> make(const std::string& id,
-                            std::initializer_list<std::pair<const char*, double>> set = {}) {
-  const auto& e = ModelRegistry::global().get(id);
-  ParameterValues p(e.info->parameters);
-  for (const auto& [k, v] : set)
-    p.set(k, v);
-  return e.create(p);
-}
-
 // a fixed point to |Map(x) - x| <= 1e-10 from a guess ~0.3 away: finite differences against variational
 // derivatives; counters give the map evaluations (a variational evaluation integrates 2-3 tangent vectors
 // too)
 void FixedPointSearch(benchmark::State& state, const char* which, DerivativeMethod method) {
   const bool ball = std::string(which) == "chaplygin_ball";
-  const auto m = ball ? make("chaplygin_ball", {{"K1", 0.2}, {"K2", 0.1}, {"K3", 0.3}})
-                      : make("ellipsoid_on_plane", {{"I1", 1.0},
-                                                    {"I2", 1.4},
-                                                    {"I3", 1.9},
-                                                    {"g", 0.0},
-                                                    {"b1", 1.0},
-                                                    {"b2", 1.0},
-                                                    {"b3", 1.0},
-                                                    {"a3", 0.0},
-                                                    {"psi", 0.0},
-                                                    {"energy", 0.5}});
+  const auto m = ball ? test::makeModel("chaplygin_ball", {{"K1", 0.2}, {"K2", 0.1}, {"K3", 0.3}})
+                      : test::makeModel("ellipsoid_on_plane", {{"I1", 1.0},
+                                                               {"I2", 1.4},
+                                                               {"I3", 1.9},
+                                                               {"g", 0.0},
+                                                               {"b1", 1.0},
+                                                               {"b2", 1.0},
+                                                               {"b3", 1.0},
+                                                               {"a3", 0.0},
+                                                               {"psi", 0.0},
+                                                               {"energy", 0.5}});
   const ReturnMap map(
       *m, [] { return std::make_unique<Everhart>(0.02, 15, 12); }, SectionSettings{});
   FixedPointSettings s;
@@ -81,7 +74,7 @@ BENCHMARK_CAPTURE(FixedPointSearch, ellipsoid_on_plane_variational, "ellipsoid_o
 
 // the |Map(x) - x| surface of Henon-Heiles (61 x 61 Poincare returns) on 1 and 2 threads
 void SurfaceGrid(benchmark::State& state) {
-  const auto m = make("henon_heiles", {{"energy", 0.125}});
+  const auto m = test::makeModel("henon_heiles", {{"energy", 0.125}});
   const ReturnMap map(
       *m, [] { return std::make_unique<Everhart>(0.05, 15, 12); }, SectionSettings{});
   GridSettings g;
@@ -100,7 +93,7 @@ BENCHMARK(SurfaceGrid)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTi
 
 // chaplygin_ball over t = 200 (Everhart 15, h = 0.1): plain, and with every crossing of g = 0 located
 void PoincareCost(benchmark::State& state, bool withSection) {
-  const auto m = make("chaplygin_ball", {{"K1", 0.2}, {"K2", 0.1}, {"K3", 0.3}});
+  const auto m = test::makeModel("chaplygin_ball", {{"K1", 0.2}, {"K2", 0.1}, {"K3", 0.3}});
   const Eigen::VectorXd x0 = m->stateFromMap({0.5, 0.2}, {}, "bench");
   long crossings = 0;
   for (auto _ : state) {
@@ -134,7 +127,7 @@ LyapunovSettings lorenzSettings(LyapunovSettings::Mode mode, bool adaptive = fal
 }
 
 void LorenzSpectrum(benchmark::State& state, LyapunovSettings::Mode mode, bool adaptive = false) {
-  const auto m = make("lorenz");
+  const auto m = test::makeModel("lorenz");
   Eigen::VectorXd x0(3);
   x0 << 1, 1, 20;
   double l1 = 0;
@@ -201,7 +194,7 @@ const Eigen::VectorXd& chaplyginStart(const Model& m) {
 }
 
 void ChaplyginSpectrum(benchmark::State& state) {
-  const auto m = make("chaplygin_ball", {{"K1", 0.2}, {"K2", 0.1}, {"K3", 0.3}});
+  const auto m = test::makeModel("chaplygin_ball", {{"K1", 0.2}, {"K2", 0.1}, {"K3", 0.3}});
   LyapunovSettings s;
   s.interval = 1;
   s.maxTime = 200;
@@ -216,7 +209,7 @@ void ChaplyginSpectrum(benchmark::State& state) {
 }
 
 void ChaplyginSpectrum_odeint(benchmark::State& state) {
-  const auto m = make("chaplygin_ball", {{"K1", 0.2}, {"K2", 0.1}, {"K3", 0.3}});
+  const auto m = test::makeModel("chaplygin_ball", {{"K1", 0.2}, {"K2", 0.1}, {"K3", 0.3}});
   const TangentSystem tangent(*m, 6);
   const int n = m->dimension();
   using State = std::vector<double>;
@@ -244,7 +237,7 @@ void ChaplyginSpectrum_odeint(benchmark::State& state) {
 // MEGNO of one orbit as the Henon-Heiles sweep computes it (scenes/sweeps/henon_heiles_megno.json: E = 1/8,
 // everhart 15, h = 0.05, t = 400), on a torus and in the chaotic sea
 void MegnoHenonHeiles(benchmark::State& state, double x, double y) {
-  const auto m = make("henon_heiles", {{"energy", 0.125}});
+  const auto m = test::makeModel("henon_heiles", {{"energy", 0.125}});
   const Eigen::VectorXd x0 = m->stateFromMap({x, y}, {}, "bench");
   MegnoSettings s;
   s.maxTime = 400;

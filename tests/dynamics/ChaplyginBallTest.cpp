@@ -30,7 +30,7 @@ std::unique_ptr<Model> asymmetricBall() {
                                             {"K3", 0.3}});
 }
 
-Eigen::VectorXd genericState(const Model& m) {
+Eigen::VectorXd genericBallState(const Model& m) {
   return m.stateFromNamed(
       {{"M1", 0.7}, {"M2", -0.4}, {"M3", 0.9}, {"gamma1", 0.3}, {"gamma2", 0.5}, {"gamma3", 0.8}}, "test");
 }
@@ -44,7 +44,7 @@ Eigen::Matrix3d spaceFrame(const Eigen::VectorXd& x) { // rows: alpha, beta, gam
 
 TEST(ChaplyginBall, Rk4ConservesAllFourIntegralsOverT100) {
   const auto model = asymmetricBall();
-  const Eigen::VectorXd x0 = genericState(*model);
+  const Eigen::VectorXd x0 = genericBallState(*model);
   const Eigen::VectorXd I0 = model->integrals(x0.data());
   ASSERT_EQ(I0.size(), 4);
   for (int k = 0; k < 4; ++k)
@@ -67,7 +67,7 @@ TEST(ChaplyginBall, Rk4ConservesAllFourIntegralsOverT100) {
 
 TEST(ChaplyginBall, MomentumPlusGyrostatIsFixedInSpace) {
   const auto model = asymmetricBall();
-  const Eigen::VectorXd x0 = genericState(*model);
+  const Eigen::VectorXd x0 = genericBallState(*model);
   const Eigen::Vector3d K(0.2, -0.1, 0.3);
   const Eigen::Vector3d P0 = spaceFrame(x0) * (x0.head<3>() + K);
   Rk4 rk4(1e-3);
@@ -88,7 +88,7 @@ TEST(ChaplyginBall, MomentumPlusGyrostatIsFixedInSpace) {
 TEST(ChaplyginBall, TracesOnPlaneAndBallHaveEqualLength) {
   const auto model = asymmetricBall();
   Rk4 rk4(1e-3);
-  rk4.start(*model, 0, genericState(*model));
+  rk4.start(*model, 0, genericBallState(*model));
   while (rk4.time() < 20 - 1e-9)
     rk4.step();
   const double* x = rk4.state().data();
@@ -112,13 +112,13 @@ TEST(ChaplyginBall, InvariantMeasureHasZeroDivergence) {
 TEST(ChaplyginBall, WithoutTheDensityTheFlowIsNotDivergenceFree) {
   // the test above has teeth: the plain volume is not preserved (D != 0)
   const auto model = asymmetricBall();
-  const Eigen::VectorXd x = genericState(*model);
+  const Eigen::VectorXd x = genericBallState(*model);
   EXPECT_GT(std::abs(test::divergenceOfDensityFlow(*model, x, 1e-6, false)), 1e-3);
 }
 
 TEST(ChaplyginBall, AutoDiffJacobianMatchesFiniteDifferences) {
   const auto model = asymmetricBall();
-  const Eigen::VectorXd x = genericState(*model);
+  const Eigen::VectorXd x = genericBallState(*model);
   const int n = model->dimension();
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> J(n, n);
   model->jacobian(x.data(), J.data());

@@ -3,7 +3,6 @@
 // variational equations.
 #include "dynamics/tools/FixedPoint.h"
 #include "dynamics/core/Errors.h"
-#include "dynamics/integrators/Everhart.h"
 #include "dynamics/tools/BifurcationCurve.h"
 #include "dynamics/tools/BifurcationTree.h"
 #include "tests/dynamics/TestSupport.h"
@@ -17,10 +16,6 @@ namespace {
 
 constexpr double pi = std::numbers::pi;
 
-IntegratorFactory everhart(double h = 0.05) {
-  return [h] { return std::make_unique<Everhart>(h, 15, 12); };
-}
-
 SectionSettings order(int n) {
   SectionSettings s;
   s.order = n;
@@ -30,7 +25,7 @@ SectionSettings order(int n) {
 TEST(FixedPoint, HenonMapBothPointsAreAnalyticAndHyperbolic) {
   const double a = 1.4, b = 0.3;
   const auto m = test::makeModel("henon_map", {{"a", a}, {"b", b}});
-  const ReturnMap map(*m, everhart(), order(1));
+  const ReturnMap map(*m, test::everhartFactory(), order(1));
   for (double sign : {+1.0, -1.0}) {
     const double x = (-(1 - b) + sign * std::sqrt((1 - b) * (1 - b) + 4 * a)) / (2 * a);
     for (auto method : {DerivativeMethod::FiniteDifferences, DerivativeMethod::Variational}) {
@@ -54,7 +49,7 @@ TEST(FixedPoint, HenonMapBothPointsAreAnalyticAndHyperbolic) {
 
 TEST(FixedPoint, GradientDescentFindsTheHenonPointToo) {
   const auto m = test::makeModel("henon_map", {});
-  const ReturnMap map(*m, everhart(), order(1));
+  const ReturnMap map(*m, test::everhartFactory(), order(1));
   FixedPointSettings s;
   s.method = FixedPointMethod::Gradient;
   s.maxIterations = 5000;
@@ -74,7 +69,7 @@ TEST(FixedPoint, GradientDescentFindsTheHenonPointToo) {
 TEST(FixedPoint, StandardMapCentreIsEllipticWithTraceTwoMinusK) {
   for (double K : {0.5, 1.5, 3.0, 3.9}) {
     const auto m = test::makeModel("standard_map", {{"K", K}});
-    const ReturnMap map(*m, everhart(), order(1));
+    const ReturnMap map(*m, test::everhartFactory(), order(1));
     const auto r = findFixedPoint(map, Eigen::Vector2d(3.1, 0.05), {});
     EXPECT_NEAR(r.point[0], pi, 1e-12);
     EXPECT_NEAR(std::remainder(r.point[1], 2 * pi), 0, 1e-12);
@@ -83,11 +78,13 @@ TEST(FixedPoint, StandardMapCentreIsEllipticWithTraceTwoMinusK) {
     EXPECT_NEAR(std::abs(r.multipliers[0]), 1, 1e-9);
   }
   const auto m = test::makeModel("standard_map", {{"K", 4.5}});
-  const auto r = findFixedPoint(ReturnMap(*m, everhart(), order(1)), Eigen::Vector2d(3.1, 0.05), {});
+  const auto r =
+      findFixedPoint(ReturnMap(*m, test::everhartFactory(), order(1)), Eigen::Vector2d(3.1, 0.05), {});
   EXPECT_EQ(r.type, FixedPointType::HyperbolicWithReflection);
   // the saddle at the origin, approached across the seam of the torus
   const auto m1 = test::makeModel("standard_map", {{"K", 1.5}});
-  const auto o = findFixedPoint(ReturnMap(*m1, everhart(), order(1)), Eigen::Vector2d(6.2, 0.05), {});
+  const auto o =
+      findFixedPoint(ReturnMap(*m1, test::everhartFactory(), order(1)), Eigen::Vector2d(6.2, 0.05), {});
   EXPECT_NEAR(std::remainder(o.point[0], 2 * pi), 0, 1e-12);
   EXPECT_EQ(o.type, FixedPointType::Hyperbolic);
   EXPECT_NEAR((o.multipliers[0] + o.multipliers[1]).real(), 2 + 1.5, 1e-9);
@@ -95,7 +92,7 @@ TEST(FixedPoint, StandardMapCentreIsEllipticWithTraceTwoMinusK) {
 
 TEST(FixedPoint, HenonHeilesStraightLineOrbitByNewton) {
   const auto m = test::makeModel("henon_heiles", {{"energy", 0.125}});
-  const ReturnMap map(*m, everhart(), order(1));
+  const ReturnMap map(*m, test::everhartFactory(), order(1));
   FixedPointSettings fd, var;
   var.derivatives.method = DerivativeMethod::Variational;
   const auto a = findFixedPoint(map, Eigen::Vector2d(0.03, 0.22), fd);
@@ -120,7 +117,7 @@ TEST(ReturnMap, VariationalDerivativeMatchesFiniteDifferences) {
   };
   for (const Case& c : {Case{"chaplygin_ball", {0.5, 0.2}}, Case{"ellipsoid_on_plane", {0.3, 0.4, 0.2}}}) {
     const auto m = test::makeModel(c.id, {});
-    const ReturnMap map(*m, everhart(0.02), order(1));
+    const ReturnMap map(*m, test::everhartFactory(0.02), order(1));
     const Eigen::VectorXd x = Eigen::Map<const Eigen::VectorXd>(c.point.data(), c.point.size());
     DerivativeSettings fd;
     fd.linearRegion = 1e-4;
@@ -136,7 +133,7 @@ TEST(ReturnMap, VariationalDerivativeMatchesFiniteDifferences) {
 
 TEST(FixedPoint, FailuresSayWhy) {
   const auto m = test::makeModel("henon_map", {});
-  const ReturnMap map(*m, everhart(), order(1));
+  const ReturnMap map(*m, test::everhartFactory(), order(1));
   FixedPointSettings s;
   s.maxIterations = 2;
   s.maxDistance = 1e-3;
@@ -165,7 +162,7 @@ TEST(Continuation, StandardMapPeriodDoublingAtKEqualsFour) {
   s.to = 4.5;
   s.step = 0.05;
   const Continuation::ModelAt at = [](double K) { return test::makeModel("standard_map", {{"K", K}}); };
-  Continuation c(at, everhart(), order(1), 1.5, Eigen::Vector2d(3.14159, 0), s);
+  Continuation c(at, test::everhartFactory(), order(1), 1.5, Eigen::Vector2d(3.14159, 0), s);
   ASSERT_TRUE(c.run({}));
   ASSERT_EQ(c.points().size(), 61u);
   for (const auto& p : c.points())
@@ -187,11 +184,12 @@ TEST(Continuation, StopsAtTypeChangeAndRejectsAWrongDirection) {
   s.step = 0.1;
   s.stopAtTypeChange = true;
   const Continuation::ModelAt at = [](double K) { return test::makeModel("standard_map", {{"K", K}}); };
-  Continuation c(at, everhart(), order(1), 3.0, Eigen::Vector2d(3.1, 0), s);
+  Continuation c(at, test::everhartFactory(), order(1), 3.0, Eigen::Vector2d(3.1, 0), s);
   ASSERT_TRUE(c.run({}));
   EXPECT_NEAR(c.points().back().parameter, 4.1, 1e-12);
   s.step = -0.1;
-  EXPECT_THROW(Continuation(at, everhart(), order(1), 3.0, Eigen::Vector2d(3.1, 0), s), InputError);
+  EXPECT_THROW(Continuation(at, test::everhartFactory(), order(1), 3.0, Eigen::Vector2d(3.1, 0), s),
+               InputError);
 }
 
 // The Henon map x' = 1 - a x^2 + y, y' = b x has its fixed points on a x^2 + (1 - b) x - 1 = 0, y = b x: two
@@ -216,7 +214,7 @@ TEST(Continuation, ArclengthPassesTheHenonFoldAndLocatesIt) {
     ContinuationSettings s = henonFamily(-2, -0.05, ContinuationMethod::Arclength);
     s.maxPoints = 120;
     const double x0 = 1 / (1 - b); // the point at a = 0
-    Continuation c(henonAt(b), everhart(), order(1), 0.0, Eigen::Vector2d(x0, b * x0), s);
+    Continuation c(henonAt(b), test::everhartFactory(), order(1), 0.0, Eigen::Vector2d(x0, b * x0), s);
     ASSERT_TRUE(c.run({}));
     // every point is a fixed point of its a; the family goes down to the fold, then up on the other root
     double lowest = 0;
@@ -255,7 +253,7 @@ TEST(Continuation, ArclengthPassesTheHenonFoldAndLocatesIt) {
 
 TEST(Continuation, NaturalStopsAtTheHenonFoldWhereArclengthGoesOn) {
   const double b = 0.3, x0 = 1 / (1 - b);
-  Continuation natural(henonAt(b), everhart(), order(1), 0.0, Eigen::Vector2d(x0, b * x0),
+  Continuation natural(henonAt(b), test::everhartFactory(), order(1), 0.0, Eigen::Vector2d(x0, b * x0),
                        henonFamily(-0.5, -0.01, ContinuationMethod::Natural));
   EXPECT_THROW(natural.run({}), ComputationError);
   EXPECT_LT(natural.points().back().parameter, -0.12);
@@ -267,7 +265,7 @@ TEST(Continuation, BothMethodsLocateTheHenonPeriodDoubling) {
     for (const auto method : {ContinuationMethod::Natural, ContinuationMethod::Arclength}) {
       SCOPED_TRACE(b);
       const double x0 = 1 / (1 - b);
-      Continuation c(henonAt(b), everhart(), order(1), 0.0, Eigen::Vector2d(x0, b * x0),
+      Continuation c(henonAt(b), test::everhartFactory(), order(1), 0.0, Eigen::Vector2d(x0, b * x0),
                      henonFamily(3.5, 0.05, method));
       ASSERT_TRUE(c.run({}));
       ASSERT_EQ(c.changes().size(), 1u);
@@ -285,7 +283,7 @@ TEST(Continuation, TheDoubledFamilyStartsAtALocatedPeriodDoubling) {
   // family is continued back up to the parent's start
   const double b = 0.3;
   for (const auto method : {ContinuationMethod::Natural, ContinuationMethod::Arclength}) {
-    Continuation parent(henonAt(b), everhart(), order(1), 1.4, Eigen::Vector2d(0.63, 0.19),
+    Continuation parent(henonAt(b), test::everhartFactory(), order(1), 1.4, Eigen::Vector2d(0.63, 0.19),
                         henonFamily(0, -0.05, method));
     ASSERT_TRUE(parent.run({}));
     ASSERT_EQ(parent.changes().size(), 1u);
@@ -321,7 +319,7 @@ TEST(Continuation, ArclengthReachesTheFiniteValueAlongAStraightFamily) {
   s.to = 3;
   s.step = 0.2;
   s.method = ContinuationMethod::Arclength;
-  Continuation c(at, everhart(), order(1), 1.0, Eigen::Vector2d(3.1, 0.01), s);
+  Continuation c(at, test::everhartFactory(), order(1), 1.0, Eigen::Vector2d(3.1, 0.01), s);
   ASSERT_TRUE(c.run({}));
   for (const auto& p : c.points()) {
     EXPECT_NEAR(p.fixedPoint.point[0], pi, 1e-10);
@@ -330,14 +328,15 @@ TEST(Continuation, ArclengthReachesTheFiniteValueAlongAStraightFamily) {
   EXPECT_NEAR(c.points().back().parameter, 3, 1e-15);
   EXPECT_GE(c.points().size(), 11u);
   s.maxPoints = 1;
-  EXPECT_THROW(Continuation(at, everhart(), order(1), 1.0, Eigen::Vector2d(3.1, 0.01), s), InputError);
+  EXPECT_THROW(Continuation(at, test::everhartFactory(), order(1), 1.0, Eigen::Vector2d(3.1, 0.01), s),
+               InputError);
 }
 
 TEST(Continuation, ArclengthEndsWhereTheFamilyTurnsBackToTheStartValue) {
   // b = 0.3 from the point x = 2 at a = -0.1 down toward a = -0.5: the family turns at the fold a = -0.1225
   // and comes back to a = -0.1 on the other root, x = 5, where it ends
   const double b = 0.3;
-  Continuation c(henonAt(b), everhart(), order(1), -0.1, Eigen::Vector2d(2, 2 * b),
+  Continuation c(henonAt(b), test::everhartFactory(), order(1), -0.1, Eigen::Vector2d(2, 2 * b),
                  henonFamily(-0.5, -0.005, ContinuationMethod::Arclength));
   ASSERT_TRUE(c.run({}));
   EXPECT_NEAR(c.points().back().parameter, -0.1, 1e-15);
@@ -367,7 +366,7 @@ TEST(BifurcationCurve, HenonFoldAndPeriodDoublingCurvesFollowTheirFormulas) {
     // a start slightly off the curve is corrected onto it
     const Eigen::Vector2d guess(xOf(b0) + 0.01, b0 * xOf(b0));
     const BifurcationCurveResult r =
-        bifurcationCurve(at, everhart(), order(1), aOf(b0) + 0.001, b0, guess, s);
+        bifurcationCurve(at, test::everhartFactory(), order(1), aOf(b0) + 0.001, b0, guess, s);
     ASSERT_GT(r.points.size(), 30u);
     for (const auto& p : r.points) {
       EXPECT_NEAR(p.first, aOf(p.second), 1e-8) << p.second;
@@ -400,7 +399,7 @@ TEST(BifurcationCurve, RefusesAStartOffAnyCurveAndBadSettings) {
   // no Neimark-Sacker curve to start on
   s.kind = CurveKind::NeimarkSacker;
   try {
-    bifurcationCurve(at, everhart(), order(1), 1.4, 0.3, Eigen::Vector2d(0.63, 0.19), s);
+    bifurcationCurve(at, test::everhartFactory(), order(1), 1.4, 0.3, Eigen::Vector2d(0.63, 0.19), s);
     ADD_FAILURE() << "a Neimark-Sacker curve of the Henon map at b = 0.3";
   } catch (const ComputationError& e) {
     EXPECT_NE(std::string(e.what()).find("no Neimark-Sacker curve through a = 1.4, b = 0.3"),
@@ -409,12 +408,14 @@ TEST(BifurcationCurve, RefusesAStartOffAnyCurveAndBadSettings) {
   }
   s.kind = CurveKind::PeriodDoubling;
   s.second = "a";
-  EXPECT_THROW(bifurcationCurve(at, everhart(), order(1), 0.3675, 0.3, Eigen::Vector2d(0.95, 0.29), s),
-               InputError);
+  EXPECT_THROW(
+      bifurcationCurve(at, test::everhartFactory(), order(1), 0.3675, 0.3, Eigen::Vector2d(0.95, 0.29), s),
+      InputError);
   s.second = "b";
   s.step = 0;
-  EXPECT_THROW(bifurcationCurve(at, everhart(), order(1), 0.3675, 0.3, Eigen::Vector2d(0.95, 0.29), s),
-               InputError);
+  EXPECT_THROW(
+      bifurcationCurve(at, test::everhartFactory(), order(1), 0.3675, 0.3, Eigen::Vector2d(0.95, 0.29), s),
+      InputError);
 }
 
 } // namespace
@@ -443,7 +444,7 @@ BifurcationTreeSettings henonTree(double to, int levels) {
 TEST(BifurcationTree, AreaPreservingHenonCascadeMatchesTheAnalyticFirstTwoDoublings) {
   const BifurcationTreeSettings s = henonTree(4.2, 2);
   const Continuation::ModelAt& at = areaPreservingHenon;
-  const auto r = bifurcationTree(at, everhart(), order(1), 2.0, Eigen::Vector2d(0.4, -0.4), s);
+  const auto r = bifurcationTree(at, test::everhartFactory(), order(1), 2.0, Eigen::Vector2d(0.4, -0.4), s);
   ASSERT_GE(r.doublings.size(), 2u);
   EXPECT_NEAR(r.doublings[0].parameter, 3.0, 1e-8);
   EXPECT_EQ(r.doublings[0].order, 1);
@@ -470,7 +471,7 @@ TEST(BifurcationTree, AreaPreservingHenonCascadeMatchesTheAnalyticFirstTwoDoubli
 TEST(BifurcationTree, AreaPreservingHenonCascadeReachesOrder64AndFeigenbaumsRatio) {
   const BifurcationTreeSettings s = henonTree(5, 6);
   const Continuation::ModelAt& at = areaPreservingHenon;
-  const auto r = bifurcationTree(at, everhart(), order(1), 2.5, Eigen::Vector2d(0.35, -0.35), s);
+  const auto r = bifurcationTree(at, test::everhartFactory(), order(1), 2.5, Eigen::Vector2d(0.35, -0.35), s);
   const double reference[] = {3.0,
                               4.0,
                               4.1204524973184659888,
@@ -493,7 +494,7 @@ TEST(BifurcationTree, AreaPreservingHenonCascadeReachesOrder64AndFeigenbaumsRati
     SectionSettings half = order(b.order / 2);
     for (const auto& p : b.points) {
       const auto m = at(p.parameter);
-      const ReturnMap map(*m, everhart(), half);
+      const ReturnMap map(*m, test::everhartFactory(), half);
       EXPECT_GT(map.difference(map(p.fixedPoint.point), p.fixedPoint.point).norm(), 1e-8)
           << "order " << b.order << " at a = " << p.parameter;
     }
@@ -507,7 +508,7 @@ TEST(BifurcationTree, RefusesAHyperbolicStart) {
   s.continuation.step = 0.1;
   const Continuation::ModelAt at = [](double K) { return test::makeModel("standard_map", {{"K", K}}); };
   try {
-    bifurcationTree(at, everhart(), order(1), 1.0, Eigen::Vector2d(0.01, 0.01), s);
+    bifurcationTree(at, test::everhartFactory(), order(1), 1.0, Eigen::Vector2d(0.01, 0.01), s);
     FAIL();
   } catch (const ComputationError& e) {
     EXPECT_NE(std::string(e.what()).find("not elliptic"), std::string::npos) << e.what();
@@ -527,7 +528,7 @@ namespace {
 TEST(FixedPoint, SectionModeOnA3DMapMatchesTheChaplyginBallsFixedPoint) {
   const auto ball =
       test::makeModel("chaplygin_ball", {{"K1", 0}, {"K2", 0}, {"K3", 0}, {"c", 0.3}, {"energy", 0.5}});
-  const ReturnMap map2(*ball, everhart(0.02), order(1));
+  const ReturnMap map2(*ball, test::everhartFactory(0.02), order(1));
   const auto a = findFixedPoint(map2, Eigen::Vector2d(4.5, 0.0), {});
   ASSERT_EQ(a.type, FixedPointType::Elliptic);
   const Eigen::VectorXd s = ball->stateFromMap({a.point[0], a.point[1]}, {}, "test");
@@ -549,7 +550,7 @@ TEST(FixedPoint, SectionModeOnA3DMapMatchesTheChaplyginBallsFixedPoint) {
                                                            {"theta", 0.0},
                                                            {"psi", 0.0},
                                                            {"energy", 0.5}});
-  const ReturnMap map3(*body, everhart(0.02), order(1));
+  const ReturnMap map3(*body, test::everhartFactory(0.02), order(1));
   ASSERT_EQ(map3.dimension(), 3);
   FixedPointSettings sec;
   sec.section2D = true;

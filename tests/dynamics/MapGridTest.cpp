@@ -2,7 +2,6 @@
 // analytic regions, thread counts giving identical grids, and resumption after a stop.
 #include "dynamics/tools/MapGrid.h"
 #include "dynamics/core/Errors.h"
-#include "dynamics/integrators/Everhart.h"
 #include "tests/dynamics/TestSupport.h"
 
 #include <atomic>
@@ -11,10 +10,6 @@
 
 namespace rv {
 namespace {
-
-IntegratorFactory everhart() {
-  return [] { return std::make_unique<Everhart>(0.05, 15, 12); };
-}
 
 GridSettings grid(double x0, double x1, double dx, double y0, double y1, double dy, int threads) {
   GridSettings g;
@@ -26,7 +21,7 @@ GridSettings grid(double x0, double x1, double dx, double y0, double y1, double 
 
 TEST(MapGrid, SurfaceVanishesAtTheHenonFixedPointAndMatchesDirectEvaluation) {
   const auto m = test::makeModel("henon_map", {});
-  const ReturnMap map(*m, everhart(), {});
+  const ReturnMap map(*m, test::everhartFactory(), {});
   const double xf = (-0.7 + std::sqrt(0.49 + 5.6)) / 2.8;
   MapGrid one(map, MapGrid::Kind::Surface,
               grid(xf - 0.5, xf + 0.5, 0.01, 0.3 * xf - 0.5, 0.3 * xf + 0.5, 0.01, 1));
@@ -53,7 +48,7 @@ TEST(MapGrid, SurfaceVanishesAtTheHenonFixedPointAndMatchesDirectEvaluation) {
 TEST(MapGrid, HenonHeilesAllowedRegionIsTheEnergyDisc) {
   const double E = 0.125;
   const auto m = test::makeModel("henon_heiles", {{"energy", E}});
-  const ReturnMap map(*m, everhart(), {});
+  const ReturnMap map(*m, test::everhartFactory(), {});
   MapGrid ram(map, MapGrid::Kind::AllowedRegion, grid(-0.6, 0.8, 0.02, -0.6, 0.6, 0.02, 2));
   ASSERT_TRUE(ram.run());
   EXPECT_EQ(ram.levelName(), "px");
@@ -77,7 +72,7 @@ TEST(MapGrid, HenonHeilesAllowedRegionIsTheEnergyDisc) {
 
 TEST(MapGrid, StopsAndResumesToTheSameGrid) {
   const auto m = test::makeModel("henon_heiles", {{"energy", 0.125}});
-  const ReturnMap map(*m, everhart(), {});
+  const ReturnMap map(*m, test::everhartFactory(), {});
   const GridSettings g = grid(-0.3, 0.3, 0.05, -0.3, 0.3, 0.05, 2);
   MapGrid whole(map, MapGrid::Kind::Surface, g);
   ASSERT_TRUE(whole.run());

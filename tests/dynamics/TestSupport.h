@@ -2,6 +2,7 @@
 #pragma once
 #include "dynamics/core/Model.h"
 #include "dynamics/core/ModelRegistry.h"
+#include "dynamics/integrators/Everhart.h"
 
 #include <cstdlib>
 #include <memory>
@@ -15,9 +16,14 @@ inline double tol(double t) {
   return t * (s ? std::atof(s) : 1.0);
 }
 
+/// Everhart's 15th order with 12 iterations at the fixed step h: the maps' integrator in the tool tests.
+inline IntegratorFactory everhartFactory(double h = 0.05) {
+  return [h] { return std::make_unique<Everhart>(h, 15, 12); };
+}
+
 /// A model by id with some parameters changed from their defaults.
 inline std::unique_ptr<Model> makeModel(const std::string& id,
-                                        std::initializer_list<std::pair<const char*, double>> set) {
+                                        std::initializer_list<std::pair<const char*, double>> set = {}) {
   const ModelEntry& e = ModelRegistry::global().get(id);
   ParameterValues p(e.info->parameters);
   for (const auto& [k, v] : set)

@@ -1,6 +1,7 @@
 // ModelFileSupport.h -- what the model-file tests share: the examples folder, a built-in model paired with
 // the file that restates it, and comparisons of their fields and trajectories.
 #pragma once
+#include "dynamics/core/Errors.h"
 #include "dynamics/core/ModelRegistry.h"
 #include "dynamics/integrators/Integrator.h"
 #include "scenes/ModelFile.h"
@@ -19,6 +20,16 @@ namespace rv::testing_model_files {
 inline std::string examples(const std::string& file, const std::string& folder = "models") {
   const char* root = std::getenv("ROLLVIZ_SOURCE_DIR");
   return std::string(root ? root : ".") + "/examples/" + folder + "/" + file;
+}
+
+/// What loading `model`, as if read from the file `source`, reports as bad input; "" when it loads.
+inline std::string modelFileError(const nlohmann::json& model, const std::string& source = "m.json") {
+  try {
+    modelEntryFromJson(model, source);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
 }
 
 struct Pair {

@@ -427,14 +427,7 @@ TEST(ModelFile, AViewDrawsAMeshOnAFixedSurface) {
 TEST(ModelFileErrors, AViewsMeshAndSupportAreChecked) {
   const auto dir = meshFolder();
   const std::string source = (dir / "m.json").string();
-  const auto errorIn = [&](const json& model) {
-    try {
-      modelEntryFromJson(model, source);
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string("(no error)");
-  };
+  const auto errorIn = [&](const json& model) { return modelFileError(model, source); };
   json m = cubeOnASphere("R + s");
   m["view"]["mesh"] = "cube.ply";
   EXPECT_NE(errorIn(m).find("view.mesh: a mesh is an STL or OBJ file"), std::string::npos) << errorIn(m);
@@ -455,16 +448,7 @@ TEST(ModelFileErrors, AViewsMeshAndSupportAreChecked) {
 // ---------------------------------------------------------------------------------------------------------
 // errors
 
-std::string errorOf(const json& model) {
-  try {
-    modelEntryFromJson(model, "m.json");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
-
-json lorenz() {
+json lorenzCopy() {
   std::ifstream in(examples("lorenz.json"));
   json j = json::parse(in);
   j["id"] = "lorenz_test_copy";
@@ -472,13 +456,13 @@ json lorenz() {
 }
 
 json withX(const std::string& equation) {
-  json j = lorenz();
+  json j = lorenzCopy();
   j["equations"]["x"] = equation;
   return j;
 }
 
 void expectError(const json& model, const std::vector<std::string>& parts) {
-  const std::string e = errorOf(model);
+  const std::string e = modelFileError(model);
   for (const auto& part : parts)
     EXPECT_NE(e.find(part), std::string::npos) << "'" << part << "' not in: " << e;
 }
@@ -499,25 +483,25 @@ TEST(ModelFileErrors, NameTheFileThePathTheColumnAndWhatIsWrong) {
   std::string sum = "x";
   for (int i = 0; i < 200000; ++i) // a long (generated) equation is wide, not deep: it is accepted
     sum += "+x";
-  EXPECT_EQ(errorOf(withX(sum)), "(no error)");
+  EXPECT_EQ(modelFileError(withX(sum)), "");
 
-  json j = lorenz();
+  json j = lorenzCopy();
   j["definitions"] = {{"a", "b + 1"}, {"b", "2*a"}};
   j["equations"]["x"] = "a";
   expectError(j, {"refer to each other in a circle", "a -> b -> a"});
-  j = lorenz();
+  j = lorenzCopy();
   j["equations"].erase("z");
   expectError(j, {"m.json:equations: the state variable 'z' has no equation"});
-  j = lorenz();
+  j = lorenzCopy();
   j["definitions"] = {{"rho", "1"}};
   expectError(j, {"definitions.rho: the name 'rho' is defined twice"});
-  j = lorenz();
+  j = lorenzCopy();
   j["id"] = "lorenz";
   expectError(j, {"m.json:id: the id 'lorenz' is taken by a built-in model"});
-  j = lorenz();
+  j = lorenzCopy();
   j["parameters"]["sigma"] = "ten";
   expectError(j, {"m.json:parameters.sigma: expected an object"});
-  j = lorenz();
+  j = lorenzCopy();
   j["equations"]["w"] = "1";
   expectError(j, {"m.json:equations.w: 'w' is not a state variable or vector"});
 }
@@ -536,8 +520,8 @@ std::string blowUp(const json& scene) {
 }
 
 TEST(ModelFileErrors, ABlowUpNamesTheExpressionThatWentNonFinite) {
-  const std::string e =
-      blowUp({{"model", lorenz()}, {"initial", {{"state", {{"x", 1e300}, {"y", -1e300}, {"z", 1e300}}}}}});
+  const std::string e = blowUp(
+      {{"model", lorenzCopy()}, {"initial", {{"state", {{"x", 1e300}, {"y", -1e300}, {"z", 1e300}}}}}});
   EXPECT_NE(e.find("stopped being finite"), std::string::npos) << e;
   EXPECT_NE(e.find("equations."), std::string::npos) << e;
 }

@@ -69,33 +69,24 @@ TEST(ModelLanguage, DerivativeGradientAndJacobianAreTheDerivativesTakenByHand) {
   }
 }
 
-std::string errorOf(const json& model) {
-  try {
-    modelEntryFromJson(model, "<bad>");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
-
 TEST(ModelLanguage, ADerivativeNeedsVariablesAndARateOfTheirShape) {
   json model = {{"id", "bad_derivative"}, {"state", {"x", "y"}}, {"equations", {{"x", "y"}, {"y", ""}}}};
   model["equations"]["y"] = "derivative(x^2, 2, 1)";
-  EXPECT_NE(errorOf(model).find("argument 2 of 'derivative' must be variables"), std::string::npos)
-      << errorOf(model);
+  EXPECT_NE(modelFileError(model).find("argument 2 of 'derivative' must be variables"), std::string::npos)
+      << modelFileError(model);
   model["equations"]["y"] = "derivative(x^2, x, [1, 2])";
-  EXPECT_NE(errorOf(model).find("argument 3 of 'derivative' must be the shape of argument 2"),
+  EXPECT_NE(modelFileError(model).find("argument 3 of 'derivative' must be the shape of argument 2"),
             std::string::npos)
-      << errorOf(model);
+      << modelFileError(model);
   // derivatives of derivatives grow geometrically: an error naming where, not a hang
   json nested = {{"id", "nested_derivatives"}, {"state", {"x", "y"}}};
   nested["definitions"]["f1"] = "sin(x*y)*exp(x)/(1 + y^2)";
   for (int k = 2; k <= 30; ++k)
     nested["definitions"]["f" + std::to_string(k)] = "gradient(f" + std::to_string(k - 1) + ", [x, y])[1]";
   nested["equations"] = {{"x", "f30"}, {"y", "x"}};
-  EXPECT_NE(errorOf(nested).find("operations (derivatives of derivatives grow geometrically)"),
+  EXPECT_NE(modelFileError(nested).find("operations (derivatives of derivatives grow geometrically)"),
             std::string::npos)
-      << errorOf(nested);
+      << modelFileError(nested);
 }
 
 /// The built-in and the restated field agree where the motion lives (|gamma| = 1; off it the two may extend
@@ -851,18 +842,18 @@ TEST(RollingModel, ABodyOnAnImplicitBowlKeepsItsEnergyAndIsDrawnOnIt) {
   // bad supports are named at their fields
   json noF = body;
   noF["support"].erase("F");
-  EXPECT_NE(errorOf(noF).find("<bad>:support: an implicit support needs \"F\""), std::string::npos)
-      << errorOf(noF);
+  EXPECT_NE(modelFileError(noF).find("m.json:support: an implicit support needs \"F\""), std::string::npos)
+      << modelFileError(noF);
   json sized = body;
   sized["support"] = {{"surface", "sphere"}, {"radius", 2}, {"size", 3}};
-  EXPECT_NE(errorOf(sized).find("<bad>:support.size: only an \"implicit\" support has \"size\""),
+  EXPECT_NE(modelFileError(sized).find("m.json:support.size: only an \"implicit\" support has \"size\""),
             std::string::npos)
-      << errorOf(sized);
+      << modelFileError(sized);
   json taken = body;
   taken["definitions"]["support_point"] = "[0, 0, 0]";
-  EXPECT_NE(errorOf(taken).find("<bad>:definitions.support_point: 'support_point' is a name"),
+  EXPECT_NE(modelFileError(taken).find("m.json:definitions.support_point: 'support_point' is a name"),
             std::string::npos)
-      << errorOf(taken);
+      << modelFileError(taken);
 }
 
 TEST(RollingModel, TheTippeTopTurnsOverOnlyInsideItsInertiaWindowAndKeepsJellettsIntegral) {
@@ -957,11 +948,11 @@ TEST(RollingModel, APotentialOnACurvedSupportActsByItsForceAndCouple) {
     const std::vector<double> x1 = along(run, "x1");
     EXPECT_GT(*std::max_element(x1.begin(), x1.end()) - *std::min_element(x1.begin(), x1.end()), 0.05);
   }
-  EXPECT_NE(errorOf(bowl("marble", "gamma[1]^2", 1)).find("<bad>:potential: on a curved support"),
+  EXPECT_NE(modelFileError(bowl("marble", "gamma[1]^2", 1)).find("m.json:potential: on a curved support"),
             std::string::npos)
-      << errorOf(bowl("marble", "gamma[1]^2", 1));
-  EXPECT_NE(errorOf(bowl("marble", "x[3] +", 1)).find("<bad>:potential: column"), std::string::npos)
-      << errorOf(bowl("marble", "x[3] +", 1));
+      << modelFileError(bowl("marble", "gamma[1]^2", 1));
+  EXPECT_NE(modelFileError(bowl("marble", "x[3] +", 1)).find("m.json:potential: column"), std::string::npos)
+      << modelFileError(bowl("marble", "x[3] +", 1));
 }
 
 TEST(RollingModel, ATopSlidingOnASphereOfGrowingRadiusTendsToTheTopOnThePlane) {
@@ -1247,48 +1238,48 @@ TEST(RollingModel, ATopThatWouldLeaveThePlaneStopsTheRunSayingSo) {
 TEST(RollingModel, AMalformedBodyIsNamedAtTheFieldTheUserWrote) {
   const json top = json::parse(R"({"kind": "rolling", "id": "bad_top", "parameters": {"R": {"default": 1}},
       "body": {"shape": "sphere", "radius": "R", "mass": 1, "inertia": [1, 1, 1]}, "contact": "marble"})");
-  EXPECT_EQ(errorOf(top), ""); // the good one loads
+  EXPECT_EQ(modelFileError(top), ""); // the good one loads
   json tensor = top;
   tensor["id"] = "tensor_top";
   tensor["body"]["inertia"] = json::parse(R"([[1, 0, 0], [0, "R", 0], [0, 0, 1]])");
-  EXPECT_EQ(errorOf(tensor), ""); // the full tensor as a JSON matrix
+  EXPECT_EQ(modelFileError(tensor), ""); // the full tensor as a JSON matrix
   const auto expect = [&](const json& bad, const std::string& part) {
-    const std::string what = errorOf(bad);
+    const std::string what = modelFileError(bad);
     EXPECT_NE(what.find(part), std::string::npos) << what;
   };
   json bad = top;
   bad["id"] = "bad_top2";
   bad["body"]["radius"] = "Rr";
-  expect(bad, "<bad>:body.radius: column 1: unknown name 'Rr' (did you mean 'R'?)");
+  expect(bad, "m.json:body.radius: column 1: unknown name 'Rr' (did you mean 'R'?)");
   bad = top;
   bad["body"]["shape"] = "cube";
-  expect(bad, "<bad>:body.shape: expected \"sphere\"");
+  expect(bad, "m.json:body.shape: expected \"sphere\"");
   bad = top;
   bad["contact"] = "sliding";
   expect(bad, "missing \"friction\"");
   bad = top;
   bad["parameters"]["omega"] = {{"default", 1}};
-  expect(bad, "<bad>:parameters.omega: 'omega' is a name the rolling model's derivation uses");
+  expect(bad, "m.json:parameters.omega: 'omega' is a name the rolling model's derivation uses");
   bad = top;
   bad["parameters"]["gamma1"] = {{"default", 1}};
-  expect(bad, "<bad>:parameters.gamma1: 'gamma1' is a name the rolling model's derivation uses");
+  expect(bad, "m.json:parameters.gamma1: 'gamma1' is a name the rolling model's derivation uses");
   bad = top;
   bad["support"] = {{"surface", "plane"}, {"centre", "[0, 0, 1]"}};
-  expect(bad, "<bad>:support");
+  expect(bad, "m.json:support");
   bad = top;
   bad["body"] = {{"shape", "implicit"}, {"F", "x^2 + y^2 + w^2 - 1"}, {"mass", 1}, {"inertia", {1, 1, 1}}};
-  expect(bad, "<bad>:body.F: unknown name 'w'");
+  expect(bad, "m.json:body.F: unknown name 'w'");
   bad["body"]["F"] = "x^2 + (y";
-  expect(bad, "<bad>:body.F: column");
+  expect(bad, "m.json:body.F: column");
   bad = top;
   bad["support"] = {{"surface", "cube"}};
-  expect(bad, "<bad>:support.surface: expected \"plane\", \"sphere\"");
+  expect(bad, "m.json:support.surface: expected \"plane\", \"sphere\"");
   bad = top;
   bad["support"] = {{"surface", "sphere"}, {"radius", 2}};
-  EXPECT_EQ(errorOf(bad), ""); // three moments: any body on a curved support
+  EXPECT_EQ(modelFileError(bad), ""); // three moments: any body on a curved support
   bad["contact"] = "sliding";
   bad["friction"] = 1;
-  EXPECT_EQ(errorOf(bad), ""); // and slides on it
+  EXPECT_EQ(modelFileError(bad), ""); // and slides on it
   bad["contact"] = "marble";
   bad.erase("friction");
   bad["potential"] = "gamma1";
@@ -1297,39 +1288,40 @@ TEST(RollingModel, AMalformedBodyIsNamedAtTheFieldTheUserWrote) {
          "in fixed axes); `gamma` is the support's normal there");
   bad.erase("potential");
   bad["support"]["describes"] = "centre";
-  expect(bad, "<bad>:support.describes: \"centre\" describes the surface a balanced ball's centre moves on");
+  expect(bad, "m.json:support.describes: \"centre\" describes the surface a balanced ball's centre moves on");
   bad["support"] = {{"surface", "graph"}, {"height", "x1^2"}, {"describes", "centre"}};
-  expect(bad, "<bad>:support.surface: a \"graph\" support carries a balanced ball only");
+  expect(bad, "m.json:support.surface: a \"graph\" support carries a balanced ball only");
   bad["body"]["inertia"] = 1;
   bad["contact"] = "sliding";
   bad["friction"] = 1;
-  expect(bad, "<bad>:support.surface: a \"graph\" support carries a balanced ball only (it gives the surface "
-              "its centre moves on); a body sliding moves on");
+  expect(bad,
+         "m.json:support.surface: a \"graph\" support carries a balanced ball only (it gives the surface "
+         "its centre moves on); a body sliding moves on");
   bad = top;
   bad["body"]["semi_axes"] = "[1, 2, 3]";
-  expect(bad, "<bad>:body.semi_axes: a sphere has no \"semi_axes\"");
+  expect(bad, "m.json:body.semi_axes: a sphere has no \"semi_axes\"");
   // a value of the wrong size, named at the field that holds it (not where the derivation first uses it)
   bad = top;
   bad["body"]["centre"] = "[0, 0.1]";
-  expect(bad, "<bad>:body.centre: the shape's centre must be a 3-vector, not a 2-vector");
+  expect(bad, "m.json:body.centre: the shape's centre must be a 3-vector, not a 2-vector");
   bad = top;
   bad["body"]["axis"] = "[0, 1]";
-  expect(bad, "<bad>:body.axis: the axis must be a 3-vector, not a 2-vector");
+  expect(bad, "m.json:body.axis: the axis must be a 3-vector, not a 2-vector");
   bad = top;
   bad["body"]["inertia"] = json::array({1, "[1, 2, 3]", 1});
-  expect(bad, "<bad>:body.inertia.1: a principal moment of inertia must be a scalar, not a 3-vector");
+  expect(bad, "m.json:body.inertia.1: a principal moment of inertia must be a scalar, not a 3-vector");
   bad = top;
   bad["body"]["inertia"] = "diag(1, 2)";
-  expect(bad, "<bad>:body.inertia: the inertia tensor must be a 3x3 matrix, not a 2x2 matrix");
+  expect(bad, "m.json:body.inertia: the inertia tensor must be a 3x3 matrix, not a 2x2 matrix");
   bad = top;
   bad["body"]["radius"] = "[R, R]";
-  expect(bad, "<bad>:body.radius: the radius must be a scalar, not a 2-vector");
+  expect(bad, "m.json:body.radius: the radius must be a scalar, not a 2-vector");
   bad = top;
   bad["body"] = {{"shape", "ellipsoid"}, {"semi_axes", "R"}, {"mass", 1}, {"inertia", {1, 1, 1}}};
-  expect(bad, "<bad>:body.semi_axes: the semi-axes must be a 3-vector, not a scalar");
+  expect(bad, "m.json:body.semi_axes: the semi-axes must be a 3-vector, not a scalar");
   bad = top;
   bad["gravity"] = "[0, 0, 1]";
-  expect(bad, "<bad>:gravity: the gravity must be a scalar, not a 3-vector");
+  expect(bad, "m.json:gravity: the gravity must be a scalar, not a 3-vector");
   const json brick = {{"shape", "superellipsoid"},
                       {"semi_axes", "[1, 0.8, 0.6]"},
                       {"exponent", 4},
@@ -1338,34 +1330,34 @@ TEST(RollingModel, AMalformedBodyIsNamedAtTheFieldTheUserWrote) {
                       {"inertia", {1, 1, 1}}};
   bad = top;
   bad["body"] = brick;
-  EXPECT_EQ(errorOf(bad), "");
+  EXPECT_EQ(modelFileError(bad), "");
   bad["body"]["exponent"] = 1.5;
-  expect(bad, "<bad>:body.exponent: expected an exponent of at least 2");
+  expect(bad, "m.json:body.exponent: expected an exponent of at least 2");
   bad["body"]["exponent"] = 4;
   bad["body"].erase("bulge");
-  expect(bad, "<bad>:body: a superellipsoid with an exponent above 2 is flat along its mid-curves");
+  expect(bad, "m.json:body: a superellipsoid with an exponent above 2 is flat along its mid-curves");
   bad["body"]["bulge"] = 0;
-  expect(bad, "<bad>:body.bulge: a superellipsoid with an exponent above 2 is flat");
+  expect(bad, "m.json:body.bulge: a superellipsoid with an exponent above 2 is flat");
   bad["body"] = brick;
   bad["body"]["radius"] = 1;
-  expect(bad, "<bad>:body.radius: a superellipsoid has no \"radius\"");
+  expect(bad, "m.json:body.radius: a superellipsoid has no \"radius\"");
   bad["body"] = brick;
   bad["body"]["profile"] = "1 - z^2";
-  expect(bad, "<bad>:body.profile: only a \"revolution\" body has \"profile\"");
+  expect(bad, "m.json:body.profile: only a \"revolution\" body has \"profile\"");
   bad["body"] = {{"shape", "revolution"},
                  {"profile", "sqrt(1 - x^2)"},
                  {"heights", "[-1, 1]"},
                  {"mass", 1},
                  {"inertia", {1, 1, 1}}};
-  expect(bad, "<bad>:body.profile: unknown name 'x' (this reads z,");
+  expect(bad, "m.json:body.profile: unknown name 'x' (this reads z,");
   bad["body"].erase("heights");
   bad["body"]["profile"] = "sqrt(1 - z^2)";
-  expect(bad, "<bad>:body: a revolution body needs \"heights\"");
+  expect(bad, "m.json:body: a revolution body needs \"heights\"");
   bad["body"]["profile_squared"] = "1 - z^2";
-  expect(bad, "<bad>:body: a revolution body gives its profile as \"profile\"");
+  expect(bad, "m.json:body: a revolution body gives its profile as \"profile\"");
   bad["body"].erase("profile_squared");
   bad["body"]["heights"] = "[1, 2, 3]";
-  expect(bad, "<bad>:body.heights: the profile's ends on its axis must be a 2-vector, not a 3-vector");
+  expect(bad, "m.json:body.heights: the profile's ends on its axis must be a 2-vector, not a 3-vector");
 }
 
 } // namespace

@@ -13,7 +13,7 @@ namespace {
 
 using nlohmann::json;
 
-std::string errorOf(const json& doc, const std::vector<SceneOverride>& sets = {}) {
+std::string sceneError(const json& doc, const std::vector<SceneOverride>& sets = {}) {
   try {
     sceneFromJson(doc, "s.json", sets);
   } catch (const InputError& e) {
@@ -38,34 +38,37 @@ TEST(SceneLoader, ShippedScenesLoad) {
 TEST(SceneLoader, ErrorsNameFileAndJsonPath) {
   json j = ball();
   j["parameters"]["I9"] = 1;
-  EXPECT_NE(errorOf(j).find("s.json:parameters.I9: unknown parameter"), std::string::npos) << errorOf(j);
+  EXPECT_NE(sceneError(j).find("s.json:parameters.I9: unknown parameter"), std::string::npos)
+      << sceneError(j);
   j = ball();
   j["parameters"]["m"] = "heavy";
-  EXPECT_NE(errorOf(j).find("s.json:parameters.m: expected a number"), std::string::npos) << errorOf(j);
+  EXPECT_NE(sceneError(j).find("s.json:parameters.m: expected a number"), std::string::npos) << sceneError(j);
   j = ball();
   j["problem"] = "no_such_problem";
-  EXPECT_NE(errorOf(j).find("s.json:problem: unknown problem 'no_such_problem'"), std::string::npos)
-      << errorOf(j);
+  EXPECT_NE(sceneError(j).find("s.json:problem: unknown problem 'no_such_problem'"), std::string::npos)
+      << sceneError(j);
   j = ball();
   j["integrator"] = {{"method", "rk5"}};
-  EXPECT_NE(errorOf(j).find("s.json:integrator.method: unknown integrator 'rk5'"), std::string::npos)
-      << errorOf(j);
+  EXPECT_NE(sceneError(j).find("s.json:integrator.method: unknown integrator 'rk5'"), std::string::npos)
+      << sceneError(j);
   j = ball();
   j["integrator"] = {{"step", -1}};
-  EXPECT_NE(errorOf(j).find("s.json:integrator.step"), std::string::npos) << errorOf(j);
+  EXPECT_NE(sceneError(j).find("s.json:integrator.step"), std::string::npos) << sceneError(j);
   j = ball();
   j["view"] = {{"objects", {{"ball", {{"color", "blue"}}}}}};
-  EXPECT_NE(errorOf(j).find("s.json:view.objects.ball.color: expected a colour"), std::string::npos)
-      << errorOf(j);
+  EXPECT_NE(sceneError(j).find("s.json:view.objects.ball.color: expected a colour"), std::string::npos)
+      << sceneError(j);
   j = ball();
   j["initial"] = {{"map", {0.5, 5.0}}};
-  EXPECT_NE(errorOf(j).find("s.json:initial.map: L/G must lie in [-1, 1]"), std::string::npos) << errorOf(j);
+  EXPECT_NE(sceneError(j).find("s.json:initial.map: L/G must lie in [-1, 1]"), std::string::npos)
+      << sceneError(j);
   j = ball();
   j["parameters"]["I3"] = 5;
-  EXPECT_NE(errorOf(j).find("s.json:parameters: I3 = 5 exceeds I1 + I2"), std::string::npos) << errorOf(j);
+  EXPECT_NE(sceneError(j).find("s.json:parameters: I3 = 5 exceeds I1 + I2"), std::string::npos)
+      << sceneError(j);
   j = ball();
   j["colour"] = 1;
-  EXPECT_NE(errorOf(j).find("s.json:colour: unknown key"), std::string::npos) << errorOf(j);
+  EXPECT_NE(sceneError(j).find("s.json:colour: unknown key"), std::string::npos) << sceneError(j);
 }
 
 TEST(SceneLoader, ViewOptionsAreCheckedAndKept) {
@@ -88,7 +91,7 @@ TEST(SceneLoader, ViewOptionsAreCheckedAndKept) {
   const auto fails = [&](const json& view, const std::string& what) {
     json k = ball();
     k["view"] = view;
-    EXPECT_NE(errorOf(k).find(what), std::string::npos) << errorOf(k);
+    EXPECT_NE(sceneError(k).find(what), std::string::npos) << sceneError(k);
   };
   fails({{"kind", "sideways"}}, "s.json:view.kind: expected motion or apex");
   fails({{"axes", {{"style", "fancy"}}}}, "s.json:view.axes.style: expected none, normal or box");
@@ -107,9 +110,9 @@ TEST(SceneLoader, OverridesSetParametersAndFields) {
   EXPECT_EQ((*s.integratorParameters)["step"], 0.002);
   EXPECT_NEAR(s.model->integrals(s.initialState.data())[0], 0.4, 1e-12);
   EXPECT_NE(
-      errorOf(ball(), {parseOverride("no_such_param=1")}).find("--set no_such_param: unknown parameter"),
+      sceneError(ball(), {parseOverride("no_such_param=1")}).find("--set no_such_param: unknown parameter"),
       std::string::npos);
-  EXPECT_NE(errorOf(ball(), {parseOverride("bogus.x=1")}).find("--set bogus.x: unknown scene field"),
+  EXPECT_NE(sceneError(ball(), {parseOverride("bogus.x=1")}).find("--set bogus.x: unknown scene field"),
             std::string::npos);
   EXPECT_THROW(parseOverride("energy"), InputError);
 }
@@ -175,9 +178,9 @@ TEST(SceneLoader, ANumberBeyondADoubleIsMalformedJson) {
 TEST(SceneLoader, ASetValueThatIsNotUtf8IsBadInput) {
   // found by tests/fuzz: writing the message (or the document) threw nlohmann's type_error
   EXPECT_NE(
-      errorOf(ball(), {parseOverride("energy=\x9a")}).find("--set energy: the value is not valid UTF-8"),
+      sceneError(ball(), {parseOverride("energy=\x9a")}).find("--set energy: the value is not valid UTF-8"),
       std::string::npos)
-      << errorOf(ball(), {parseOverride("energy=\x9a")});
+      << sceneError(ball(), {parseOverride("energy=\x9a")});
 }
 
 TEST(SceneLoader, FolderEmptyAndMissingScenePathsArePlainInputErrors) {
@@ -237,10 +240,11 @@ TEST(SceneLoader, LyapunovAndMegnoSettingsComeFromTheirTables) {
   EXPECT_EQ(lyapunov.maxTime, 77);
   EXPECT_TRUE(lyapunov.renormalizeIntegrals);
   EXPECT_EQ(s.tool("megno")["time"], 5);
-  EXPECT_NE(errorOf(ball(), {parseOverride("lyapunov.interval=-1")}).find("lyapunov.interval"),
+  EXPECT_NE(sceneError(ball(), {parseOverride("lyapunov.interval=-1")}).find("lyapunov.interval"),
             std::string::npos)
-      << errorOf(ball(), {parseOverride("lyapunov.interval=-1")});
-  EXPECT_NE(errorOf(ball(), {parseOverride("megno.nonsense=1")}).find("megno.nonsense"), std::string::npos);
+      << sceneError(ball(), {parseOverride("lyapunov.interval=-1")});
+  EXPECT_NE(sceneError(ball(), {parseOverride("megno.nonsense=1")}).find("megno.nonsense"),
+            std::string::npos);
 }
 
 TEST(SceneLoader, SpectrumAndPlotSettingsComeFromTheirTablesBesideTheirTextKeys) {
@@ -269,7 +273,7 @@ TEST(SceneLoader, SpectrumAndPlotSettingsComeFromTheirTablesBesideTheirTextKeys)
   EXPECT_EQ(d.plot.chart.pointSize, PlotChartOptions{}.pointSize);
   // bad values are named by their path; an unknown key is told the section's keys, text keys included
   const auto bad = [](const char* set, const char* expected) {
-    const std::string e = errorOf(ball(), {parseOverride(set)});
+    const std::string e = sceneError(ball(), {parseOverride(set)});
     EXPECT_NE(e.find(expected), std::string::npos) << set << ": " << e;
   };
   bad("spectrum.samples=4", "s.json:spectrum.samples");
@@ -279,7 +283,7 @@ TEST(SceneLoader, SpectrumAndPlotSettingsComeFromTheirTablesBesideTheirTextKeys)
   bad("plot.x=3", "s.json:plot.x: expected");
   json r = ball();
   r["plot"] = {{"y_min", 2}, {"y_max", 1}};
-  EXPECT_NE(errorOf(r).find("s.json:plot.y_max: must exceed y_min"), std::string::npos) << errorOf(r);
+  EXPECT_NE(sceneError(r).find("s.json:plot.y_max: must exceed y_min"), std::string::npos) << sceneError(r);
 }
 
 } // namespace

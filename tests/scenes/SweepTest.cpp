@@ -38,7 +38,7 @@ json axis(const std::string& id, double min, double max, int count) {
   return {{"id", id}, {"min", min}, {"max", max}, {"count", count}};
 }
 
-std::string errorOf(const json& doc) {
+std::string sweepError(const json& doc) {
   try {
     (void)sweepFromJson(doc, "sw.json");
   } catch (const InputError& e) {
@@ -55,9 +55,9 @@ SweepRecord evaluate(const SweepSpec& s, long i) {
 
 TEST(Sweep, BadFilesNameTheField) {
   const json good = sweep("lorenz", json::array({axis("rho", 5, 30, 3)}), "lyapunov.max");
-  EXPECT_EQ(errorOf(good), "(no error)");
+  EXPECT_EQ(sweepError(good), "(no error)");
   const auto expectError = [&](json doc, const std::string& where) {
-    const std::string e = errorOf(doc);
+    const std::string e = sweepError(doc);
     EXPECT_NE(e.find("sw.json:" + where + ":"), std::string::npos) << where << " -> " << e;
   };
   json j = good;
@@ -252,7 +252,7 @@ TEST(Sweep, PointLevelsOfARefinedGrid) {
     EXPECT_EQ(sweepPointLevel(s, i), levels[static_cast<std::size_t>(i)]) << i;
   json bad =
       sweep("henon_map", json::array({axis("map.0", -1, 1, 3)}), "orbit", json::object(), {{"refine", 1}});
-  EXPECT_NE(errorOf(bad).find("sw.json:options.refine:"), std::string::npos) << errorOf(bad);
+  EXPECT_NE(sweepError(bad).find("sw.json:options.refine:"), std::string::npos) << sweepError(bad);
 }
 
 // Runs a sweep level after level on a store in `path`; `stopAfter` points (0: never) stops it there.
@@ -407,8 +407,8 @@ TEST(Sweep, RefiningByAValueFollowsOnlyWhereTheQuantityCrossesIt) {
   EXPECT_TRUE(all.done(byChange.points() - 2)) << "x0 = 1 - 1/32, where x1 falls fastest";
   all.remove();
   // a categorical quantity has no value to refine across
-  EXPECT_NE(errorOf(sweep("henon_map", json::array({axis("map.0", 0, 1, 5)}), "fixedpoint.type",
-                          json::object(), {{"refine", 1}, {"refine_by", "value"}}))
+  EXPECT_NE(sweepError(sweep("henon_map", json::array({axis("map.0", 0, 1, 5)}), "fixedpoint.type",
+                             json::object(), {{"refine", 1}, {"refine_by", "value"}}))
                 .find("options.refine_by"),
             std::string::npos);
 }
@@ -530,8 +530,8 @@ TEST(Sweep, LorenzExponentOverRhoOnLanesIsTheScalarOne) {
     a->remove();
   }
   b->remove();
-  EXPECT_NE(errorOf(sweep("lorenz", json::array({axis("rho", 4, 28, 7)}), "lyapunov.max", json::object(),
-                          {{"lanes", 3}}))
+  EXPECT_NE(sweepError(sweep("lorenz", json::array({axis("rho", 4, 28, 7)}), "lyapunov.max", json::object(),
+                             {{"lanes", 3}}))
                 .find("options.lanes"),
             std::string::npos);
 }
